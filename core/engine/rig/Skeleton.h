@@ -1,0 +1,120 @@
+// A skeleton (paper section 2.3): joints connected by bones, meant to form a
+// tree hanging from a root joint. Joints and bones carry stable ids drawn from
+// per-skeleton counters: an id is never reused, and the ids of surviving
+// joints and bones never change when others are removed or collapsed. Dense
+// indices (indexOfJoint/indexOfBone) are what solvers use; they follow the
+// stable order of joints() and bones() and do change on removal.
+//
+// Structural edits may leave the skeleton in any shape; validate() says what
+// keeps it from being a tree, and reorient() makes every bone point away from
+// the root once it is one.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "base/Types.h"
+
+namespace rigmesh {
+
+using JointId = std::uint32_t;
+using BoneId = std::uint32_t;
+
+inline constexpr JointId kNoJoint = std::numeric_limits<JointId>::max();
+
+struct Joint {
+    JointId id;
+    Vec3 position;
+};
+
+// After reorient(), head is the joint nearer the root.
+struct Bone {
+    BoneId id;
+    JointId head, tail;
+};
+
+class Skeleton {
+  public:
+    // Rebuilds a skeleton from stored parts (file loading, undo) keeping their
+    // ids. Nothing is checked here: call validate() on the result.
+    static Skeleton restore(std::vector<Joint> joints, std::vector<Bone> bones, JointId root);
+
+    // The first joint added becomes the root until setRoot() says otherwise.
+    JointId addJoint(const Vec3& position);
+    // Throws Error if either joint is unknown or head == tail.
+    BoneId addBone(JointId head, JointId tail);
+
+    void setJointPosition(JointId id, const Vec3& position);
+
+    // Removes the bone only; its joints stay, possibly splitting the tree.
+    void removeBone(BoneId id);
+    // Removes the joint and every bone touching it. If it was the root, the
+    // first remaining joint becomes the root.
+    void removeJoint(JointId id);
+    // Merges the bone's two joints into its head, moved to mergedPosition:
+    // bones touching the tail are rewired to the head, the bone itself (and
+    // any other bone between the same two joints) disappears. Used to remove
+    // short bones inside connecting regions (paper 2.3, Fig. 6 (b)).
+    void collapseBone(BoneId id, const Vec3& mergedPosition);
+
+    void setRoot(JointId id);
+    JointId root() const { return root_; }  // kNoJoint only when there are no joints
+    // Flips bones so that every head is nearer the root than its tail (by
+    // breadth-first order from the root). Bones not reachable from the root
+    // keep their direction. Call after structural edits.
+    void reorient();
+    bool isOrientedFromRoot() const;
+
+    const std::vector<Joint>& joints() const { return joints_; }  // in order of creation
+    const std::vector<Bone>& bones() const { return bones_; }     // in order of creation
+    int jointCount() const { return static_cast<int>(joints_.size()); }
+    int boneCount() const { return static_cast<int>(bones_.size()); }
+    bool hasJoint(JointId id) const { return jointIndex_.contains(id); }
+    bool hasBone(BoneId id) const { return boneIndex_.contains(id); }
+    // The lookups below throw Error on an unknown id.
+    const Joint& joint(JointId id) const { return joints_[indexOfJoint(id)]; }
+    const Bone& bone(BoneId id) const { return bones_[indexOfBone(id)]; }
+    int indexOfJoint(JointId id) const;
+    int indexOfBone(BoneId id) const;
+
+    // The bone whose tail is this bone's head; none for bones at the root.
+    std::optional<BoneId> parentBone(BoneId id) const;
+    // The bones whose head is this joint (their tails are its child joints).
+    std::vector<BoneId> childrenOf(JointId id) const;
+    // Every bone touching this joint, whatever its direction.
+    std::vector<BoneId> bonesAt(JointId id) const;
+    int degree(JointId id) const;
+    double boneLength(BoneId id) const;
+    // Bones reachable from the root, each after the bone leading to it
+    // (breadth first): the order forward kinematics needs.
+    std::vector<BoneId> bonesInHierarchyOrder() const;
+
+    // Human-readable problems keeping this from being a valid tree: no
+    // joints, missing or duplicate ids, a bad root, non-finite positions,
+    // self-loops, zero-length bones (relative to the skeleton's size),
+    // cycles, more than one connected component. Empty means a valid tree.
+    std::vector<std::string> validate() const;
+
+  private:
+    void rebuildIndex();
+
+    std::vector<Joint> joints_;
+    std::vector<Bone> bones_;
+    std::unordered_map<JointId, int> jointIndex_;
+    std::unordered_map<BoneId, int> boneIndex_;
+    JointId root_ = kNoJoint;
+    JointId nextJointId_ = 0;
+    BoneId nextBoneId_ = 0;
+};
+
+// The graph centre by bone lengths: the joint minimising the longest path to
+// any other joint. Ties prefer joints of degree >= 3, then the earlier joint.
+// On a disconnected skeleton, the centre of the component with the most
+// joints. Throws Error on an empty skeleton.
+JointId chooseCentralRoot(const Skeleton& skeleton);
+
+}  // namespace rigmesh
