@@ -1,0 +1,249 @@
+#include "mesh/MeshChecks.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <string>
+
+#include "base/Error.h"
+#include "mesh/MeshSelfIntersections.h"
+
+namespace rigmesh {
+
+namespace {
+
+constexpr double kDegenerateAreaFactor = 1e-12;  // times the squared bounding-box diagonal
+
+// Union-find with path halving; small and fast for the sizes we see.
+class DisjointSets {
+  public:
+    explicit DisjointSets(std::size_t n) : parent_(n) {
+        for (std::size_t i = 0; i < n; ++i)
+            parent_[i] = static_cast<int>(i);
+    }
+    int find(int x) {
+        while (parent_[x] != x)
+            x = parent_[x] = parent_[parent_[x]];
+        return x;
+    }
+    void unite(int a, int b) { parent_[find(a)] = find(b); }
+
+  private:
+    std::vector<int> parent_;
+};
+
+// One face's use of an undirected edge. Sorting by `key` groups the faces of each edge.
+struct EdgeUse {
+    std::uint64_t key;  // (smaller vertex << 32) | larger vertex
+    int face;
+    int corner;    // position in the face of the edge's first vertex in face order
+    bool forward;  // the face goes from the smaller to the larger vertex
+};
+
+// Positions in the face of the edge's smaller and larger vertex.
+int loCorner(const EdgeUse& use) {
+    return use.forward ? use.corner : (use.corner + 1) % 3;
+}
+int hiCorner(const EdgeUse& use) {
+    return use.forward ? (use.corner + 1) % 3 : use.corner;
+}
+
+bool hasRepeatedIndex(const std::array<int, 3>& f) {
+    return f[0] == f[1] || f[1] == f[2] || f[2] == f[0];
+}
+
+void validate(const TriMesh& mesh) {
+    for (const Vec3& v : mesh.vertices)
+        if (!v.allFinite())
+            throw Error("The mesh has a vertex with a non-finite coordinate.");
+    for (int i = 0; i < mesh.faceCount(); ++i)
+        for (const int index : mesh.faces[i])
+            if (index < 0 || index >= mesh.vertexCount())
+                throw Error("Face " + std::to_string(i) + " refers to vertex " +
+                            std::to_string(index) + " but the mesh has " +
+                            std::to_string(mesh.vertexCount()) + " vertices.");
+}
+
+// The edge uses of every face without a repeated vertex, grouped by edge.
+std::vector<EdgeUse> sortedEdgeUses(const TriMesh& mesh) {
+    std::vector<EdgeUse> uses;
+    uses.reserve(mesh.faces.size() * 3);
+    for (int f = 0; f < mesh.faceCount(); ++f) {
+        const auto& face = mesh.faces[f];
+        if (hasRepeatedIndex(face))
+            continue;
+        for (int k = 0; k < 3; ++k) {
+            const auto from = static_cast<std::uint64_t>(face[k]);
+            const auto to = static_cast<std::uint64_t>(face[(k + 1) % 3]);
+            const bool forward = from < to;
+            const std::uint64_t key = forward ? (from << 32) | to : (to << 32) | from;
+            uses.push_back({key, f, k, forward});
+        }
+    }
+    std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) {
+        return a.key != b.key ? a.key < b.key : a.face < b.face;
+    });
+    return uses;
+}
+
+// Calls visit(first, last) for each run of uses of one edge.
+template <class Visit>
+void forEachEdge(const std::vector<EdgeUse>& uses, Visit visit) {
+    for (std::size_t begin = 0; begin < uses.size();) {
+        std::size_t end = begin + 1;
+        while (end < uses.size() && uses[end].key == uses[begin].key)
+            ++end;
+        visit(begin, end);
+        begin = end;
+    }
+}
+
+double bboxDiagonalSquared(const TriMesh& mesh) {
+    if (mesh.vertices.empty())
+        return 0;
+    Vec3 lo = mesh.vertices.front(), hi = lo;
+    for (const Vec3& v : mesh.vertices) {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+    }
+    return (hi - lo).squaredNorm();
+}
+
+// Topology from the edge map: boundary, non-manifold and mis-oriented edges,
+// fans around vertices, components and the Euler characteristic.
+void analyseTopology(const TriMesh& mesh, MeshReport& report) {
+    const std::vector<EdgeUse> uses = sortedEdgeUses(mesh);
+    // Corners (face * 3 + position) around a vertex join into one fan when
+    // their faces share an edge at that vertex.
+    DisjointSets fans(mesh.faces.size() * 3);
+    int edges = 0;
+    forEachEdge(uses, [&](std::size_t begin, std::size_t end) {
+        ++edges;
+        const std::size_t count = end - begin;
+        if (count == 1)
+            ++report.boundaryEdges;
+        else if (count > 2)
+            ++report.nonManifoldEdges;
+        else if (uses[begin].forward == uses[begin + 1].forward)
+            ++report.inconsistentlyOrientedEdges;
+        const EdgeUse& first = uses[begin];
+        for (std::size_t i = begin + 1; i < end; ++i) {
+            const EdgeUse& other = uses[i];
+            // Match the corner of each edge endpoint in both faces.
+            const int firstLo = loCorner(first), firstHi = hiCorner(first);
+            const int otherLo = loCorner(other), otherHi = hiCorner(other);
+            fans.unite(first.face * 3 + firstLo, other.face * 3 + otherLo);
+            fans.unite(first.face * 3 + firstHi, other.face * 3 + otherHi);
+        }
+    });
+
+    // A vertex is non-manifold when its corners fall into more than one fan.
+    std::vector<int> fanOfVertex(mesh.vertices.size(), -1);
+    std::vector<char> nonManifold(mesh.vertices.size(), 0);
+    DisjointSets components(mesh.vertices.size());
+    int validFaces = 0;
+    for (int f = 0; f < mesh.faceCount(); ++f) {
+        const auto& face = mesh.faces[f];
+        if (hasRepeatedIndex(face))
+            continue;
+        ++validFaces;
+        components.unite(face[0], face[1]);
+        components.unite(face[0], face[2]);
+        for (int k = 0; k < 3; ++k) {
+            const int fan = fans.find(f * 3 + k);
+            int& seen = fanOfVertex[face[k]];
+            if (seen < 0)
+                seen = fan;
+            else if (seen != fan)
+                nonManifold[face[k]] = 1;
+        }
+    }
+    int referencedVertices = 0;
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+        if (fanOfVertex[v] < 0)
+            continue;
+        ++referencedVertices;
+        report.nonManifoldVertices += nonManifold[v];
+        if (components.find(static_cast<int>(v)) == static_cast<int>(v))
+            ++report.components;
+    }
+
+    report.eulerCharacteristic = referencedVertices - edges + validFaces;
+    const int twiceGenus = 2 - report.eulerCharacteristic;
+    const bool closedManifold = validFaces > 0 && report.boundaryEdges == 0 &&
+                                report.nonManifoldEdges == 0 && report.nonManifoldVertices == 0;
+    report.genus =
+        closedManifold && report.components == 1 && twiceGenus >= 0 && twiceGenus % 2 == 0
+            ? twiceGenus / 2
+            : -1;
+}
+
+// Degenerate faces, angles, area and signed volume.
+void analyseGeometry(const TriMesh& mesh, MeshReport& report) {
+    const double minArea = kDegenerateAreaFactor * bboxDiagonalSquared(mesh);
+    double minAngle = 180, maxAngle = 0;
+    bool anyAngle = false;
+    for (const auto& face : mesh.faces) {
+        if (hasRepeatedIndex(face)) {
+            ++report.degenerateFaces;
+            continue;
+        }
+        const Vec3& a = mesh.vertices[face[0]];
+        const Vec3& b = mesh.vertices[face[1]];
+        const Vec3& c = mesh.vertices[face[2]];
+        const double area = 0.5 * (b - a).cross(c - a).norm();
+        report.area += area;
+        // Divergence theorem: each face adds the signed volume of its cone to the origin.
+        report.volume += a.dot(b.cross(c)) / 6;
+        if (area <= minArea) {
+            ++report.degenerateFaces;
+            continue;
+        }
+        const std::array<Vec3, 3> corners{a, b, c};
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 u = corners[(k + 1) % 3] - corners[k];
+            const Vec3 w = corners[(k + 2) % 3] - corners[k];
+            // atan2 stays accurate for angles near 0 and 180 degrees, unlike acos.
+            const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180 / std::numbers::pi;
+            minAngle = std::min(minAngle, angle);
+            maxAngle = std::max(maxAngle, angle);
+            anyAngle = true;
+        }
+    }
+    if (anyAngle) {
+        report.minAngleDegrees = minAngle;
+        report.maxAngleDegrees = maxAngle;
+    }
+}
+
+}  // namespace
+
+MeshReport analyseMesh(const TriMesh& mesh, bool checkSelfIntersections) {
+    validate(mesh);
+    MeshReport report;
+    report.vertices = mesh.vertexCount();
+    report.faces = mesh.faceCount();
+    analyseTopology(mesh, report);
+    analyseGeometry(mesh, report);
+    report.selfIntersectingFacePairs =
+        checkSelfIntersections ? countSelfIntersectingFacePairs(mesh) : -1;
+    return report;
+}
+
+std::vector<std::array<int, 2>> boundaryEdgeList(const TriMesh& mesh) {
+    validate(mesh);
+    const std::vector<EdgeUse> uses = sortedEdgeUses(mesh);
+    std::vector<std::array<int, 2>> result;
+    forEachEdge(uses, [&](std::size_t begin, std::size_t end) {
+        if (end - begin != 1)
+            return;
+        const auto& face = mesh.faces[uses[begin].face];
+        const int k = uses[begin].corner;
+        result.push_back({face[k], face[(k + 1) % 3]});
+    });
+    return result;
+}
+
+}  // namespace rigmesh

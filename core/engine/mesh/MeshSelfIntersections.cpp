@@ -1,0 +1,197 @@
+#include "mesh/MeshSelfIntersections.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/box_intersection_d.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <iterator>
+#include <utility>
+#include <vector>
+
+namespace rigmesh {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Triangle = Kernel::Triangle_3;
+using Segment = Kernel::Segment_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using Polygon = std::array<std::size_t, 3>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+std::vector<Point> toPoints(const TriMesh& mesh) {
+    std::vector<Point> points;
+    points.reserve(mesh.vertices.size());
+    for (const Vec3& v : mesh.vertices)
+        points.emplace_back(v.x(), v.y(), v.z());
+    return points;
+}
+
+// Pairs counted by PMP on a halfedge mesh, or -1 if the soup does not convert
+// to one without duplicating vertices (non-orientable surfaces).
+int countWithSurfaceMesh(const TriMesh& mesh) {
+    for (const auto& [a, b, c] : mesh.faces)
+        if (a == b || b == c || c == a)
+            return -1;  // not a polygon mesh; orient_polygon_soup expects none
+    std::vector<Point> points = toPoints(mesh);
+    std::vector<Polygon> polygons;
+    polygons.reserve(mesh.faces.size());
+    for (const auto& [a, b, c] : mesh.faces)
+        polygons.push_back({static_cast<std::size_t>(a), static_cast<std::size_t>(b),
+                            static_cast<std::size_t>(c)});
+    // Surface_mesh needs consistent orientation; flipping faces does not move them.
+    if (!PMP::orient_polygon_soup(points, polygons) ||
+        !PMP::is_polygon_soup_a_polygon_mesh(polygons))
+        return -1;
+
+    SurfaceMesh surface;
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, surface);
+    std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> pairs;
+    PMP::self_intersections(surface, std::back_inserter(pairs));
+    // PMP reports a collinear face as a pair with itself; those are degenerate
+    // faces, which the report counts separately.
+    return static_cast<int>(std::count_if(pairs.begin(), pairs.end(),
+                                          [](const auto& p) { return p.first != p.second; }));
+}
+
+// Relative margin for the floating-point rejection tests below: far above
+// their rounding error (about 1e-15), so a rejection is never wrong.
+constexpr double kRejectMargin = 1e-10;
+
+// True only when every point in `points` certainly lies outside the triangle
+// (a, b, c): strictly beyond its plane, or strictly beyond one of its edges
+// within that plane's perpendicular slab. Cheap and conservative, it spares
+// the exact predicates the many flat, coplanar neighbours of meshes made of
+// strips, where CGAL's filters fail and fall back to exact arithmetic.
+template <std::size_t N>
+bool certainlyOutside(const Vec3& a, const Vec3& b, const Vec3& c,
+                      const std::array<Vec3, N>& points) {
+    const std::array<Vec3, 3> corner{a, b, c};
+    const Vec3 n = (b - a).cross(c - a);
+    double extent = std::max((b - a).norm(), (c - a).norm());
+    for (const Vec3& q : points)
+        extent = std::max(extent, (q - a).norm());
+    const double margin = kRejectMargin * extent * extent * extent;
+    // Beyond the plane: all points on one side.
+    bool above = true, below = true;
+    for (const Vec3& q : points) {
+        const double d = n.dot(q - a);
+        above = above && d > margin;
+        below = below && d < -margin;
+    }
+    if (above || below)
+        return true;
+    // Beyond an edge: n x edge points into the triangle.
+    for (int k = 0; k < 3; ++k) {
+        const Vec3& from = corner[k];
+        const Vec3 inward = n.cross(corner[(k + 1) % 3] - from);
+        bool outside = true;
+        for (const Vec3& q : points)
+            outside = outside && inward.dot(q - from) < -margin * extent;
+        if (outside)
+            return true;
+    }
+    return false;
+}
+
+// PMP's "does not merely share a vertex or edge" rule, with sharing decided by
+// vertex index so that it works on non-manifold soups.
+bool facesIntersect(const TriMesh& mesh, const std::vector<Point>& points,
+                    const std::array<int, 3>& f, const std::array<int, 3>& g) {
+    std::array<int, 3> sharedInF{}, sharedInG{};  // positions of shared vertices
+    int shared = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (f[i] == g[j] && shared < 3) {
+                sharedInF[shared] = i;
+                sharedInG[shared] = j;
+                ++shared;
+            }
+    const auto p = [&](int index) -> const Point& { return points[index]; };
+
+    if (shared >= 2) {
+        // A shared edge (a, b): the faces overlap only if they are coplanar and
+        // their third vertices lie on the same side of the edge.
+        // Third vertices clearly on opposite sides of the edge cannot overlap.
+        const Vec3& va = mesh.vertices[f[sharedInF[0]]];
+        const Vec3 edge = mesh.vertices[f[sharedInF[1]]] - va;
+        const auto across = [&](const Vec3& q) {
+            const Vec3 d = q - va;
+            return Vec3(d - edge * (d.dot(edge) / edge.squaredNorm()));
+        };
+        if (shared == 2) {
+            const Vec3 u = across(mesh.vertices[f[3 - sharedInF[0] - sharedInF[1]]]);
+            const Vec3 w = across(mesh.vertices[g[3 - sharedInG[0] - sharedInG[1]]]);
+            if (u.dot(w) < -kRejectMargin * u.norm() * w.norm())
+                return false;
+        }
+        const Point& a = p(f[sharedInF[0]]);
+        const Point& b = p(f[sharedInF[1]]);
+        const Point& thirdF = p(f[3 - sharedInF[0] - sharedInF[1]]);
+        const Point& thirdG = shared == 3 ? thirdF : p(g[3 - sharedInG[0] - sharedInG[1]]);
+        return CGAL::coplanar(a, b, thirdF, thirdG) &&
+               CGAL::coplanar_orientation(a, b, thirdF, thirdG) == CGAL::POSITIVE;
+    }
+    const Triangle tf(p(f[0]), p(f[1]), p(f[2]));
+    const Triangle tg(p(g[0]), p(g[1]), p(g[2]));
+    if (shared == 1) {
+        // A shared vertex: intersect each face with the other's opposite edge.
+        const int i = sharedInF[0], j = sharedInG[0];
+        const auto& v = mesh.vertices;
+        const bool gMissesF = certainlyOutside(
+            v[f[0]], v[f[1]], v[f[2]], std::array<Vec3, 2>{v[g[(j + 1) % 3]], v[g[(j + 2) % 3]]});
+        const bool fMissesG = certainlyOutside(
+            v[g[0]], v[g[1]], v[g[2]], std::array<Vec3, 2>{v[f[(i + 1) % 3]], v[f[(i + 2) % 3]]});
+        if (gMissesF && fMissesG)
+            return false;
+        const Segment oppositeF(p(f[(i + 1) % 3]), p(f[(i + 2) % 3]));
+        const Segment oppositeG(p(g[(j + 1) % 3]), p(g[(j + 2) % 3]));
+        return CGAL::do_intersect(tf, oppositeG) || CGAL::do_intersect(tg, oppositeF);
+    }
+    const auto& v = mesh.vertices;
+    if (certainlyOutside(v[f[0]], v[f[1]], v[f[2]],
+                         std::array<Vec3, 3>{v[g[0]], v[g[1]], v[g[2]]}) ||
+        certainlyOutside(v[g[0]], v[g[1]], v[g[2]], std::array<Vec3, 3>{v[f[0]], v[f[1]], v[f[2]]}))
+        return false;
+    return CGAL::do_intersect(tf, tg);
+}
+
+// The same test as PMP::self_intersections, run on the soup itself.
+int countOnSoup(const TriMesh& mesh) {
+    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
+    const std::vector<Point> points = toPoints(mesh);
+    std::vector<Box> boxes;
+    boxes.reserve(mesh.faces.size());
+    for (int i = 0; i < mesh.faceCount(); ++i) {
+        const auto& [a, b, c] = mesh.faces[i];
+        if (!CGAL::collinear(points[a], points[b], points[c]))
+            boxes.emplace_back(points[a].bbox() + points[b].bbox() + points[c].bbox(), i);
+    }
+    int count = 0;
+    const auto callback = [&](const Box& x, const Box& y) {
+        if (facesIntersect(mesh, points, mesh.faces[x.info()], mesh.faces[y.info()]))
+            ++count;
+    };
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), callback);
+    return count;
+}
+
+}  // namespace
+
+int countSelfIntersectingFacePairs(const TriMesh& mesh) {
+    return countOnSoup(mesh);
+}
+
+int countSelfIntersectingFacePairsWithSurfaceMesh(const TriMesh& mesh) {
+    return countWithSurfaceMesh(mesh);
+}
+
+}  // namespace rigmesh

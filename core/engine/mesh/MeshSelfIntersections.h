@@ -1,0 +1,24 @@
+// Counting self-intersecting face pairs with CGAL, kept behind a CGAL-free
+// interface so that only MeshSelfIntersections.cpp pays CGAL's compile time.
+#pragma once
+
+#include "mesh/TriMesh.h"
+
+namespace rigmesh {
+
+// Number of pairs of distinct faces that intersect other than in a shared
+// vertex or edge, by the rule of CGAL::Polygon_mesh_processing::
+// self_intersections (exact predicates, CGAL box intersection) applied to the
+// triangle soup directly: sharing is decided by vertex index, so non-manifold
+// and non-orientable input works, and no halfedge mesh has to be built.
+// Faces whose corners are collinear are skipped, as CGAL does (they are
+// degenerate faces). Indices must be in range and coordinates finite.
+int countSelfIntersectingFacePairs(const TriMesh& mesh);
+
+// The same count from PMP::self_intersections itself on a CGAL::Surface_mesh
+// (after orienting the soup), or -1 when the soup is not an orientable
+// manifold. Two to three times slower; the reference the soup count is
+// checked against.
+int countSelfIntersectingFacePairsWithSurfaceMesh(const TriMesh& mesh);
+
+}  // namespace rigmesh

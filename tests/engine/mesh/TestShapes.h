@@ -1,0 +1,49 @@
+// Small hand-built meshes with known topology for the mesh tests.
+#pragma once
+
+#include <cmath>
+#include <numbers>
+
+#include "mesh/TriMesh.h"
+
+namespace rigmesh::testshapes {
+
+// A closed, outward torus around the z axis: genus 1.
+inline TriMesh torus(int around, int tube, double majorRadius, double minorRadius) {
+    TriMesh mesh;
+    for (int i = 0; i < around; ++i) {
+        const double u = 2 * std::numbers::pi * i / around;
+        for (int j = 0; j < tube; ++j) {
+            const double v = 2 * std::numbers::pi * j / tube;
+            const double ring = majorRadius + minorRadius * std::cos(v);
+            mesh.vertices.emplace_back(ring * std::cos(u), ring * std::sin(u),
+                                       minorRadius * std::sin(v));
+        }
+    }
+    const auto at = [&](int i, int j) { return (i % around) * tube + (j % tube); };
+    for (int i = 0; i < around; ++i)
+        for (int j = 0; j < tube; ++j) {
+            mesh.faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            mesh.faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    return mesh;
+}
+
+// A closed, outward tetrahedron with corners at `origin` and origin + unit axes.
+inline TriMesh tetrahedron(const Vec3& origin = Vec3::Zero()) {
+    TriMesh mesh;
+    mesh.vertices = {origin, origin + Vec3::UnitX(), origin + Vec3::UnitY(),
+                     origin + Vec3::UnitZ()};
+    mesh.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    return mesh;
+}
+
+// Appends `part` to `mesh` as a separate piece of the same soup.
+inline void append(TriMesh& mesh, const TriMesh& part) {
+    const int offset = mesh.vertexCount();
+    mesh.vertices.insert(mesh.vertices.end(), part.vertices.begin(), part.vertices.end());
+    for (const auto& [a, b, c] : part.faces)
+        mesh.faces.push_back({a + offset, b + offset, c + offset});
+}
+
+}  // namespace rigmesh::testshapes
