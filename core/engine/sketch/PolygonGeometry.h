@@ -1,0 +1,32 @@
+// Basic measures and operations on 2D polylines and closed polygons (a closed
+// polygon lists each vertex once; the last connects back to the first).
+#pragma once
+
+#include <cstddef>
+
+#include "base/Types.h"
+
+namespace rigmesh {
+
+// The shoelace area of a closed polygon, positive when counter-clockwise.
+double signedArea(const Polyline2& polygon);
+
+// Area of the convex hull of `points` (zero for fewer than three).
+double convexHullArea(Polyline2 points);
+
+// Diagonal of the axis-aligned bounding box (zero when empty).
+double boundingBoxDiagonal(const Polyline2& points);
+
+// Length of the polyline, plus the closing segment when `closed`.
+double polylineLength(const Polyline2& points, bool closed);
+
+// `count` points at equal arc-length steps along the closed polygon, starting
+// at its first vertex.
+Polyline2 resampleClosed(const Polyline2& polygon, std::size_t count);
+
+// Taubin lambda/mu smoothing of a closed polygon: `iterations` pairs of a
+// shrinking and an inflating Laplacian step, which damp jitter without
+// shrinking the shape.
+Polyline2 taubinSmoothClosed(Polyline2 polygon, int iterations);
+
+}  // namespace rigmesh

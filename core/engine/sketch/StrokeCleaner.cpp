@@ -1,0 +1,250 @@
+#include "sketch/StrokeCleaner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "base/Error.h"
+#include "sketch/PolygonGeometry.h"
+#include "sketch/SegmentCrossings.h"
+#include "sketch/StrokeClosing.h"
+
+namespace rigmesh {
+
+namespace {
+
+// Points closer than this fraction of the stroke's size count as one.
+constexpr double kDuplicateTolerance = 1e-9;
+// A stroke whose (hull or final) area is below this fraction of its squared
+// bounding-box diagonal encloses no area worth modelling.
+constexpr double kMinRelativeArea = 1e-4;
+// With at most this many distinct points left after dropping at least as many
+// repeated ones, the input is repeated clicks rather than a drawn stroke.
+constexpr std::size_t kFewDistinctPoints = 8;
+// Bounds on the number of points of the cleaned polygon.
+constexpr std::size_t kMinSamples = 12;
+constexpr std::size_t kMaxSamples = 200000;
+
+// Coordinates below `negligible` in size print as 0 instead of as rounding noise.
+std::string formatPoint(const Vec2& p, double negligible = 0.0) {
+    const auto shown = [negligible](double v) { return std::abs(v) <= negligible ? 0.0 : v; };
+    std::ostringstream out;
+    out.precision(4);
+    out << "(" << shown(p.x()) << ", " << shown(p.y()) << ")";
+    return out.str();
+}
+
+// Maps the stroke into [-1, 1]^2 and back, so that every tolerance below is
+// relative to the stroke's size and huge or tiny coordinates stay finite.
+struct Normalization {
+    Vec2 centre;
+    double scale;  // half the larger side of the bounding box
+
+    Vec2 toUnit(const Vec2& p) const { return (p - centre) / scale; }
+    Vec2 fromUnit(const Vec2& p) const { return p * scale + centre; }
+};
+
+Normalization normalizationOf(const std::vector<Vec2>& raw) {
+    Vec2 low = raw.front();
+    Vec2 high = low;
+    for (const Vec2& p : raw) {
+        low = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+    // Halving before subtracting avoids overflow near the largest doubles.
+    const Vec2 half = high / 2.0 - low / 2.0;
+    return {low / 2.0 + high / 2.0, half.maxCoeff()};
+}
+
+void checkFinite(const std::vector<Vec2>& raw) {
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+        if (!raw[i].allFinite()) {
+            throw Error("Point " + std::to_string(i) + " of the stroke (counting from 0) is " +
+                        formatPoint(raw[i]) +
+                        ", which is not a finite number: the sketch data is corrupt. Redraw the "
+                        "stroke.");
+        }
+    }
+}
+
+// Drops consecutive points closer than `tolerance`, and final points that
+// repeat the first one (an explicitly closed stroke).
+Polyline2 withoutRepeats(const Polyline2& points, double tolerance) {
+    Polyline2 kept;
+    for (const Vec2& p : points) {
+        if (kept.empty() || (p - kept.back()).norm() > tolerance) {
+            kept.push_back(p);
+        }
+    }
+    while (kept.size() > 1 && (kept.back() - kept.front()).norm() <= tolerance) {
+        kept.pop_back();
+    }
+    return kept;
+}
+
+void checkEnoughPoints(std::size_t rawCount, std::size_t distinct) {
+    if (distinct < 3) {
+        throw Error("The stroke has only " + std::to_string(distinct) + " distinct point" +
+                    (distinct == 1 ? "" : "s") +
+                    "; a silhouette needs at least 3 points that enclose an area. Draw a closed "
+                    "outline.");
+    }
+    const std::size_t repeated = rawCount - distinct;
+    if (distinct <= kFewDistinctPoints && repeated >= distinct) {
+        throw Error("The stroke has " + std::to_string(rawCount) + " points but only " +
+                    std::to_string(distinct) + " distinct positions; the other " +
+                    std::to_string(repeated) +
+                    " repeat the same positions, which is too little to describe a silhouette. "
+                    "Draw the outline as one continuous stroke.");
+    }
+}
+
+// Keeps points at least `minStep` apart (always keeping both ends), so later
+// steps cost time in proportion to the stroke's shape, not its raw density.
+Polyline2 decimate(const Polyline2& points, double minStep) {
+    Polyline2 kept{points.front()};
+    for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+        if ((points[i] - kept.back()).norm() >= minStep) {
+            kept.push_back(points[i]);
+        }
+    }
+    if (kept.size() > 1 && (points.back() - kept.back()).norm() < minStep) {
+        kept.pop_back();
+    }
+    kept.push_back(points.back());
+    return kept;
+}
+
+std::optional<Vec2> firstSelfCrossing(const Polyline2& polygon) {
+    const std::size_t n = polygon.size();
+    std::vector<Segment2> segments;
+    segments.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        segments.push_back({polygon[i], polygon[(i + 1) % n]});
+    }
+    const auto crossings = findSegmentCrossings(
+        segments,
+        [n](std::size_t a, std::size_t b) {
+            // Neighbouring edges share a vertex; that is not a crossing.
+            return b != a + 1 && !(a == 0 && b == n - 1);
+        },
+        true);
+    if (crossings.empty()) {
+        return std::nullopt;
+    }
+    return crossings.front().point;
+}
+
+void orientCounterClockwise(Polyline2& polygon) {
+    if (signedArea(polygon) < 0.0) {
+        std::reverse(polygon.begin() + 1, polygon.end());
+    }
+}
+
+double unitSpacing(const StrokeCleanOptions& options, const Normalization& unit,
+                   double unitDiagonal) {
+    if (options.spacing > 0.0 && std::isfinite(options.spacing)) {
+        return options.spacing / unit.scale;
+    }
+    if (!(options.relativeSpacing > 0.0) || !std::isfinite(options.relativeSpacing)) {
+        throw Error(
+            "The stroke spacing must be positive: set a relative spacing above 0 or an "
+            "absolute spacing.");
+    }
+    return options.relativeSpacing * unitDiagonal;
+}
+
+std::size_t sampleCount(double length, double spacing) {
+    const double count = std::round(length / spacing);
+    if (!(count <= static_cast<double>(kMaxSamples))) {
+        throw Error("The stroke is too long for its size: sampling it every " +
+                    std::to_string(spacing) + " of its size would need more than " +
+                    std::to_string(kMaxSamples) +
+                    " points. Draw a simpler outline or use a larger spacing.");
+    }
+    return std::max(kMinSamples, static_cast<std::size_t>(count));
+}
+
+}  // namespace
+
+CleanPolygon cleanStroke(const std::vector<Vec2>& raw, const StrokeCleanOptions& options) {
+    if (options.smoothingIterations < 0) {
+        throw Error("The number of smoothing iterations cannot be negative.");
+    }
+    checkFinite(raw);
+    if (raw.empty()) {
+        checkEnoughPoints(0, 0);
+    }
+    const Normalization unit = normalizationOf(raw);
+    if (!(unit.scale > 0.0)) {
+        checkEnoughPoints(raw.size(), 1);
+    }
+    Polyline2 stroke;
+    stroke.reserve(raw.size());
+    for (const Vec2& p : raw) {
+        stroke.push_back(unit.toUnit(p));
+    }
+    const double diagonal = boundingBoxDiagonal(stroke);
+    stroke = withoutRepeats(stroke, kDuplicateTolerance * diagonal);
+    checkEnoughPoints(raw.size(), stroke.size());
+    if (convexHullArea(stroke) < kMinRelativeArea * diagonal * diagonal) {
+        throw Error(
+            "All points of the stroke lie on (nearly) one straight line, so it encloses "
+            "no area. Draw a closed silhouette.");
+    }
+
+    // Bound the work before anything costlier than linear time.
+    const double rawSpacing = unitSpacing(options, unit, diagonal);
+    sampleCount(polylineLength(stroke, true), rawSpacing);
+    stroke = withoutRepeats(closeStroke(decimate(stroke, rawSpacing / 4.0)),
+                            kDuplicateTolerance * diagonal);
+    if (stroke.size() < 3) {
+        checkEnoughPoints(raw.size(), stroke.size());
+    }
+
+    // Uniform arc-length samples, relative to the closed outline's own size.
+    const double closedDiagonal = boundingBoxDiagonal(stroke);
+    const double spacing = unitSpacing(options, unit, closedDiagonal);
+    const std::size_t count = sampleCount(polylineLength(stroke, true), spacing);
+    Polyline2 polygon = resampleClosed(stroke, count);
+    orientCounterClockwise(polygon);
+
+    // Smoothing moves the samples slightly apart or together; resampling the
+    // smoothed outline restores uniform spacing. Should smoothing make a thin
+    // part touch itself, the unsmoothed outline is kept.
+    Polyline2 smoothed = polygon;
+    if (options.smoothingIterations > 0) {
+        smoothed = resampleClosed(taubinSmoothClosed(polygon, options.smoothingIterations), count);
+    }
+    if (firstSelfCrossing(smoothed)) {
+        if (const auto crossing = firstSelfCrossing(polygon)) {
+            throw Error("The stroke crosses itself near " +
+                        formatPoint(unit.fromUnit(*crossing), 1e-9 * unit.scale) +
+                        ": draw a silhouette that does not cross itself.");
+        }
+    } else {
+        polygon = std::move(smoothed);
+    }
+    if (std::abs(signedArea(polygon)) < kMinRelativeArea * closedDiagonal * closedDiagonal) {
+        throw Error(
+            "The stroke encloses almost no area (it runs back along itself). Draw a "
+            "silhouette with some width.");
+    }
+
+    CleanPolygon result;
+    result.points.reserve(polygon.size());
+    for (const Vec2& p : polygon) {
+        result.points.push_back(unit.fromUnit(p));
+        if (!result.points.back().allFinite()) {
+            throw Error(
+                "The stroke's coordinates are too large to process; scale the sketch "
+                "down.");
+        }
+    }
+    result.spacing = polylineLength(polygon, true) / static_cast<double>(count) * unit.scale;
+    return result;
+}
+
+}  // namespace rigmesh
