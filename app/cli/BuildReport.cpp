@@ -1,0 +1,54 @@
+#include "BuildReport.h"
+
+#include <cstdio>
+
+namespace rigmesh::cli {
+
+nlohmann::json buildStatistics(const std::string& name, const SketchToSurfaceResult& result,
+                               const MeshReport& report) {
+    const StageTimings& ms = result.milliseconds;
+    nlohmann::json stats;
+    stats["sketch"] = name;
+    stats["vertices"] = result.surface.mesh.vertexCount();
+    stats["faces"] = result.surface.mesh.faceCount();
+    stats["outline_points"] = result.polygon.points.size();
+    stats["target_edge_length"] = result.targetEdgeLength;
+    stats["cylindrical_regions"] = result.decomposition.cylinders.size();
+    stats["connecting_regions"] = result.decomposition.connecting.size();
+    stats["ms_total"] = ms.total;
+    stats["ms_stages"] = {{"clean", ms.clean},
+                          {"triangulate", ms.triangulate},
+                          {"chordal_axis", ms.chordalAxis},
+                          {"decompose", ms.decompose},
+                          {"cross_sections", ms.crossSections},
+                          {"surface", ms.surface}};
+    stats["mesh"] = {{"closed", report.isClosed()},
+                     {"manifold", report.isManifold()},
+                     {"outward", report.isOutwardOriented()},
+                     {"components", report.components},
+                     {"genus", report.genus},
+                     {"self_intersecting_face_pairs", report.selfIntersectingFacePairs},
+                     {"degenerate_faces", report.degenerateFaces},
+                     {"min_angle_degrees", report.minAngleDegrees},
+                     {"volume", report.volume},
+                     {"area", report.area}};
+    return stats;
+}
+
+std::string buildSummary(const nlohmann::json& s) {
+    char text[1024];
+    const auto& mesh = s["mesh"];
+    std::snprintf(text, sizeof text,
+                  "%s: %d vertices, %d faces, %d cylindrical + %d connecting regions\n"
+                  "  surface: %s, %s, genus %d, %d self-intersecting face pairs, min angle %.1f deg\n"
+                  "  time: %.2f ms total\n",
+                  s["sketch"].get<std::string>().c_str(), s["vertices"].get<int>(), s["faces"].get<int>(),
+                  s["cylindrical_regions"].get<int>(), s["connecting_regions"].get<int>(),
+                  mesh["closed"].get<bool>() ? "closed" : "OPEN",
+                  mesh["manifold"].get<bool>() ? "manifold" : "NON-MANIFOLD", mesh["genus"].get<int>(),
+                  mesh["self_intersecting_face_pairs"].get<int>(),
+                  mesh["min_angle_degrees"].get<double>(), s["ms_total"].get<double>());
+    return text;
+}
+
+}  // namespace rigmesh::cli

@@ -1,0 +1,53 @@
+// rigmesh: the command-line face of RigMesh Studio. It links the engine and
+// the document model only, and runs what the studio runs, headless.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "BuildCommand.h"
+#include "base/Error.h"
+#include "model/ModelInfo.h"
+
+namespace {
+
+const char* kUsage = R"(usage: rigmesh COMMAND [ARGS]
+
+commands:
+  build SKETCH [-o OUT.obj|.ply|.off] [--stats FILE.json] [--debug-svg FILE.svg]
+                [--edge-length L] [--no-smoothing]
+      Turns a sketched silhouette (.json or .svg) into a closed 3D surface and
+      prints its statistics. SKETCH may be "example" for the embedded example.
+  example
+      Builds the embedded example sketch and prints its statistics.
+  version
+      Prints the version.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> arguments(argv + 1, argv + argc);
+    if (arguments.empty() || arguments[0] == "--help" || arguments[0] == "-h" || arguments[0] == "help") {
+        std::fputs(kUsage, arguments.empty() ? stderr : stdout);
+        return arguments.empty() ? 2 : 0;
+    }
+    const std::string command = arguments[0];
+    arguments.erase(arguments.begin());
+    try {
+        if (command == "build") return rigmesh::cli::runBuild(arguments);
+        if (command == "example") return rigmesh::cli::runBuild({"example"});
+        if (command == "version") {
+            std::printf("%s\n", rigmesh::model::buildInfo().toStdString().c_str());
+            return 0;
+        }
+        std::fprintf(stderr, "rigmesh: unknown command '%s' (see rigmesh --help)\n", command.c_str());
+        return 2;
+    } catch (const rigmesh::Error& error) {
+        std::fprintf(stderr, "rigmesh: %s\n", error.what());
+        return 1;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "rigmesh: internal error: %s\n", error.what());
+        return 3;
+    }
+}

@@ -1,0 +1,171 @@
+#include "axis/Decomposition.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "base/Error.h"
+
+namespace rigmesh {
+namespace {
+
+class UnionFind {
+public:
+    explicit UnionFind(int size) : parent_(size) { std::iota(parent_.begin(), parent_.end(), 0); }
+    int find(int x) { return parent_[x] == x ? x : parent_[x] = find(parent_[x]); }
+    void unite(int a, int b) { parent_[find(a)] = find(b); }
+
+private:
+    std::vector<int> parent_;
+};
+
+// Length of the branch's axis, from node centre through the chord midpoints.
+double branchAxisLength(const ChordalAxis& axis, const AxisBranch& branch) {
+    double length = (axis.centroid(branch.startNode) - axis.midpoint(branch.chords.front())).norm();
+    for (std::size_t i = 1; i < branch.chords.size(); ++i)
+        length += (axis.midpoint(branch.chords[i]) - axis.midpoint(branch.chords[i - 1])).norm();
+    return length + (axis.midpoint(branch.chords.back()) - axis.centroid(branch.endNode)).norm();
+}
+
+double meanChordLength(const ChordalAxis& axis, const AxisBranch& branch) {
+    double sum = 0.0;
+    for (const auto& chord : branch.chords) sum += axis.length(chord);
+    return sum / static_cast<double>(branch.chords.size());
+}
+
+// Counter-clockwise outline path from polygon index `from` to `to`.
+std::vector<int> outlinePath(int from, int to, int size) {
+    std::vector<int> path{from};
+    for (int i = from; i != to;) {
+        i = (i + 1) % size;
+        path.push_back(i);
+    }
+    return path;
+}
+
+bool isJunction(const ChordalAxis& axis, int triangle) {
+    return axis.kind[triangle] == TriangleKind::Junction;
+}
+
+// Grows the cap at a terminal end (Teddy's fan): returns how many chords the
+// cap swallows, at most `limit`. `sleeves` and `chords` run from the tip inward.
+int capGrowth(const ChordalAxis& axis, int terminal, const std::vector<int>& sleeves,
+              const std::vector<PolygonEdge>& chords, int limit, double factor) {
+    std::vector<int> region{terminal};
+    int swallowed = 0;
+    while (swallowed < limit) {
+        std::vector<int> grown = region;
+        grown.push_back(sleeves[swallowed]);
+        if (!axis.outlineInsideChordCircle(grown, chords[swallowed + 1], factor)) break;
+        region = std::move(grown);
+        ++swallowed;
+    }
+    return swallowed;
+}
+
+}  // namespace
+
+Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
+    Decomposition result;
+    const int triangleCount = static_cast<int>(axis.cdt.triangles.size());
+    const int pointCount = static_cast<int>(axis.cdt.points.size());
+
+    // 1. Merge short-yet-wide branches between junctions (Fig. 2 c -> d).
+    UnionFind groups(triangleCount);
+    std::vector<bool> merged(axis.branches.size(), false);
+    for (std::size_t b = 0; b < axis.branches.size(); ++b) {
+        const AxisBranch& branch = axis.branches[b];
+        if (!isJunction(axis, branch.startNode) || !isJunction(axis, branch.endNode)) continue;
+        if (branchAxisLength(axis, branch) < options.mergeLengthFactor * meanChordLength(axis, branch)) {
+            merged[b] = true;
+            groups.unite(branch.startNode, branch.endNode);
+        }
+    }
+
+    // 2. One connecting region per group of junctions.
+    std::vector<int> regionOfTriangle(triangleCount, -1);
+    for (int t = 0; t < triangleCount; ++t) {
+        if (axis.pruned[t] || !isJunction(axis, t)) continue;
+        int root = groups.find(t);
+        if (regionOfTriangle[root] < 0) {
+            regionOfTriangle[root] = static_cast<int>(result.connecting.size());
+            result.connecting.emplace_back();
+        }
+        regionOfTriangle[t] = regionOfTriangle[root];
+        result.connecting[regionOfTriangle[t]].junctions.push_back(t);
+        result.connecting[regionOfTriangle[t]].triangles.push_back(t);
+    }
+    for (std::size_t b = 0; b < axis.branches.size(); ++b) {
+        if (!merged[b]) continue;
+        int region = regionOfTriangle[axis.branches[b].startNode];
+        for (int sleeve : axis.branches[b].sleeves) {
+            regionOfTriangle[sleeve] = region;
+            result.connecting[region].triangles.push_back(sleeve);
+        }
+    }
+    // Pruned bumps hanging off a connecting region belong to it: its patch
+    // then follows the outline around them.
+    for (auto& region : result.connecting) {
+        std::vector<int> stack = region.triangles;
+        int id = regionOfTriangle[region.junctions.front()];
+        while (!stack.empty()) {
+            int t = stack.back();
+            stack.pop_back();
+            for (int n : axis.cdt.neighbors[t]) {
+                if (n < 0 || !axis.pruned[n] || regionOfTriangle[n] >= 0) continue;
+                regionOfTriangle[n] = id;
+                region.triangles.push_back(n);
+                stack.push_back(n);
+            }
+        }
+    }
+
+    // 3. Every other branch is a cylindrical region, with caps at terminals.
+    for (std::size_t b = 0; b < axis.branches.size(); ++b) {
+        if (merged[b]) continue;
+        const AxisBranch& branch = axis.branches[b];
+        CylinderRegion cylinder;
+        std::vector<PolygonEdge> chords = branch.chords;
+        const int chordCount = static_cast<int>(chords.size());
+        const bool startIsCap = !isJunction(axis, branch.startNode);
+        const bool endIsCap = !isJunction(axis, branch.endNode);
+
+        int fromStart = 0;
+        if (startIsCap) {
+            int limit = endIsCap ? (chordCount - 1) / 2 : chordCount - 1;
+            fromStart = capGrowth(axis, branch.startNode, branch.sleeves, chords, limit,
+                                  options.capCircleFactor);
+        }
+        int fromEnd = 0;
+        if (endIsCap) {
+            std::vector<int> sleeves(branch.sleeves.rbegin(), branch.sleeves.rend());
+            std::vector<PolygonEdge> reversed(chords.rbegin(), chords.rend());
+            fromEnd = capGrowth(axis, branch.endNode, sleeves, reversed,
+                                chordCount - 1 - fromStart, options.capCircleFactor);
+        }
+        cylinder.chords.assign(chords.begin() + fromStart, chords.end() - fromEnd);
+        if (startIsCap) {
+            const PolygonEdge& base = cylinder.chords.front();
+            cylinder.startCap = outlinePath(base[0], base[1], pointCount);
+        } else {
+            cylinder.startConnecting = regionOfTriangle[branch.startNode];
+        }
+        if (endIsCap) {
+            const PolygonEdge& base = cylinder.chords.back();
+            cylinder.endCap = outlinePath(base[1], base[0], pointCount);
+        } else {
+            cylinder.endConnecting = regionOfTriangle[branch.endNode];
+        }
+        int index = static_cast<int>(result.cylinders.size());
+        if (cylinder.startConnecting >= 0)
+            result.connecting[cylinder.startConnecting].ports.push_back({index, true});
+        if (cylinder.endConnecting >= 0)
+            result.connecting[cylinder.endConnecting].ports.push_back({index, false});
+        result.cylinders.push_back(std::move(cylinder));
+    }
+    if (result.cylinders.empty())
+        throw Error("the outline has no elongated part to inflate: draw a longer shape");
+    result.axis = std::move(axis);
+    return result;
+}
+
+}  // namespace rigmesh

@@ -1,0 +1,40 @@
+// Sketch to surface, the whole of paper sections 2.1-2.2 in one call:
+// clean stroke -> CDT -> chordal axis (pruned) -> decomposition into
+// cylindrical and connecting regions -> cross sections -> surface -> LSM.
+#pragma once
+
+#include <vector>
+
+#include "axis/Decomposition.h"
+#include "sketch/StrokeCleaner.h"
+#include "surface/SketchSurface.h"
+
+namespace rigmesh {
+
+struct SketchToSurfaceOptions {
+    StrokeCleanOptions stroke;
+    DecompositionOptions decomposition;
+    CrossSectionOptions sections;
+    SurfaceOptions surface;  // targetEdgeLength 0 = the cleaned outline's spacing
+};
+
+// Milliseconds spent in each stage.
+struct StageTimings {
+    double clean = 0, triangulate = 0, chordalAxis = 0, decompose = 0, crossSections = 0,
+           surface = 0, total = 0;
+};
+
+struct SketchToSurfaceResult {
+    CleanPolygon polygon;
+    Decomposition decomposition;
+    std::vector<CylinderSections> cylinders;
+    SketchSurface surface;
+    double targetEdgeLength = 0;
+    StageTimings milliseconds;
+};
+
+// Throws rigmesh::Error with a user-readable reason on bad input.
+SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
+                                      const SketchToSurfaceOptions& options = {});
+
+}  // namespace rigmesh

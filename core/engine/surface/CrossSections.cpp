@@ -1,0 +1,219 @@
+#include "surface/CrossSections.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigmesh {
+namespace {
+
+double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// A chord as centre, unit direction (left to right) and half-length: the
+// quantities the paper smooths.
+struct ChordFrame {
+    Vec2 centre;
+    Vec2 direction;
+    double radius;
+};
+
+ChordFrame frameOf(const Vec2& left, const Vec2& right) {
+    Vec2 span = right - left;
+    double length = span.norm();
+    return {0.5 * (left + right), length > 0 ? Vec2(span / length) : Vec2(1, 0), 0.5 * length};
+}
+
+// Laplacian smoothing of the axis points, chord directions and radii (paper
+// 2.1); the two end chords stay where they are, since they are shared with a
+// connecting region or a cap.
+void smoothFrames(std::vector<ChordFrame>& frames, const CrossSectionOptions& options) {
+    const int count = static_cast<int>(frames.size());
+    if (count < 3) return;
+    for (int iteration = 0; iteration < options.axisSmoothingIterations; ++iteration) {
+        std::vector<ChordFrame> next = frames;
+        for (int i = 1; i + 1 < count; ++i) {
+            const double s = options.smoothingStep;
+            next[i].centre = (1 - s) * frames[i].centre +
+                             s * 0.5 * (frames[i - 1].centre + frames[i + 1].centre);
+            Vec2 direction = (1 - s) * frames[i].direction +
+                             s * 0.5 * (frames[i - 1].direction + frames[i + 1].direction);
+            if (direction.norm() > 1e-12) next[i].direction = direction.normalized();
+            next[i].radius = (1 - s) * frames[i].radius +
+                             s * 0.5 * (frames[i - 1].radius + frames[i + 1].radius);
+        }
+        frames = std::move(next);
+    }
+}
+
+CrossSection sectionOf(const ChordFrame& frame) {
+    CrossSection section;
+    section.left = frame.centre - frame.radius * frame.direction;
+    section.right = frame.centre + frame.radius * frame.direction;
+    return section;
+}
+
+// Resamples the smoothed body so that adjacent sections are about
+// `spacing` apart on their widest side (paper 2.2), dropping any section
+// that would cross its predecessor.
+std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames,
+                                       const CrossSection& first, const CrossSection& last,
+                                       double spacing) {
+    const int count = static_cast<int>(frames.size());
+    std::vector<double> parameter(count, 0.0);
+    for (int i = 1; i < count; ++i) {
+        CrossSection a = sectionOf(frames[i - 1]), b = sectionOf(frames[i]);
+        double step = std::max({(a.left - b.left).norm(), (a.right - b.right).norm(),
+                                (frames[i - 1].centre - frames[i].centre).norm()});
+        parameter[i] = parameter[i - 1] + step;
+    }
+    std::vector<CrossSection> candidates{first};
+    if (count > 1) {
+        const int intervals = std::max(1, static_cast<int>(std::lround(parameter.back() / spacing)));
+        int segment = 0;
+        for (int k = 1; k < intervals; ++k) {
+            double target = parameter.back() * k / intervals;
+            while (segment + 2 < count && parameter[segment + 1] < target) ++segment;
+            double span = parameter[segment + 1] - parameter[segment];
+            double f = span > 0 ? std::clamp((target - parameter[segment]) / span, 0.0, 1.0) : 0.0;
+            const ChordFrame& a = frames[segment];
+            const ChordFrame& b = frames[segment + 1];
+            ChordFrame blended{(1 - f) * a.centre + f * b.centre,
+                               ((1 - f) * a.direction + f * b.direction).normalized(),
+                               (1 - f) * a.radius + f * b.radius};
+            candidates.push_back(sectionOf(blended));
+        }
+        candidates.push_back(last);
+    }
+    // Cross sections must not intersect: keep a section only if its chord
+    // crosses neither the previous kept one nor the final one.
+    std::vector<CrossSection> kept{candidates.front()};
+    for (std::size_t i = 1; i + 1 < candidates.size(); ++i) {
+        const CrossSection& c = candidates[i];
+        if (segmentsIntersect(c.left, c.right, kept.back().left, kept.back().right)) continue;
+        if (segmentsIntersect(c.left, c.right, last.left, last.right)) continue;
+        kept.push_back(c);
+    }
+    if (candidates.size() > 1) kept.push_back(last);
+    return kept;
+}
+
+// Where a polyline first reaches height `t` along `axis` from `origin`.
+Vec2 firstCrossing(const std::vector<Vec2>& side, const Vec2& origin, const Vec2& axis, double t) {
+    for (std::size_t i = 1; i < side.size(); ++i) {
+        double a = (side[i - 1] - origin).dot(axis);
+        double b = (side[i] - origin).dot(axis);
+        if (b >= t && a < t) return side[i - 1] + (t - a) / (b - a) * (side[i] - side[i - 1]);
+    }
+    return side.back();
+}
+
+struct CapSlices {
+    std::vector<CrossSection> slices;  // outward from the base
+    Vec2 tip;
+    int tipIndex;
+};
+
+// Slices the outline around a tip perpendicular to the axis (paper 2.2's
+// cross sections, continued into the cap). `path` runs counter-clockwise from
+// the base chord's right end point around the tip to its left end point.
+CapSlices sliceCap(const CrossSection& base, const std::vector<Vec2>& path,
+                   const std::vector<int>& pathIndices, double spacing) {
+    const Vec2 origin = base.centre();
+    Vec2 span = base.right - base.left;
+    Vec2 outward = Vec2(-span.y(), span.x()).normalized();
+    std::size_t tip = 0;
+    for (std::size_t i = 1; i < path.size(); ++i)
+        if ((path[i] - origin).dot(outward) > (path[tip] - origin).dot(outward)) tip = i;
+    CapSlices cap{{}, path[tip], pathIndices[tip]};
+    double height = (path[tip] - origin).dot(outward);
+    std::vector<Vec2> rightSide(path.begin(), path.begin() + static_cast<long>(tip) + 1);
+    std::vector<Vec2> leftSide(path.rbegin(), path.rend() - static_cast<long>(tip));
+    const int intervals = std::max(1, static_cast<int>(std::ceil(height / spacing)));
+    for (int k = 1; k < intervals; ++k) {
+        double t = height * k / intervals;
+        CrossSection slice;
+        slice.left = firstCrossing(leftSide, origin, outward, t);
+        slice.right = firstCrossing(rightSide, origin, outward, t);
+        slice.inCap = true;
+        const CrossSection& previous = cap.slices.empty() ? base : cap.slices.back();
+        if (segmentsIntersect(slice.left, slice.right, previous.left, previous.right)) continue;
+        cap.slices.push_back(slice);
+    }
+    return cap;
+}
+
+CrossSection flipped(const CrossSection& s) {
+    CrossSection f = s;
+    std::swap(f.left, f.right);
+    std::swap(f.leftPolygonIndex, f.rightPolygonIndex);
+    return f;
+}
+
+}  // namespace
+
+bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+    double d1 = cross2(b - a, c - a), d2 = cross2(b - a, d - a);
+    double d3 = cross2(d - c, a - c), d4 = cross2(d - c, b - c);
+    return ((d1 > 0) != (d2 > 0) || d1 == 0 || d2 == 0) &&
+           ((d3 > 0) != (d4 > 0) || d3 == 0 || d4 == 0) &&
+           std::max(std::min(a.x(), b.x()), std::min(c.x(), d.x())) <=
+               std::min(std::max(a.x(), b.x()), std::max(c.x(), d.x())) &&
+           std::max(std::min(a.y(), b.y()), std::min(c.y(), d.y())) <=
+               std::min(std::max(a.y(), b.y()), std::max(c.y(), d.y()));
+}
+
+CylinderSections buildCrossSections(const Decomposition& decomposition, int cylinderIndex,
+                                    double spacing, const CrossSectionOptions& options) {
+    const CylinderRegion& cylinder = decomposition.cylinders[cylinderIndex];
+    const auto& points = decomposition.axis.cdt.points;
+
+    std::vector<ChordFrame> frames;
+    for (const auto& chord : cylinder.chords) frames.push_back(frameOf(points[chord[0]], points[chord[1]]));
+    smoothFrames(frames, options);
+
+    auto polygonSection = [&](const PolygonEdge& chord) {
+        CrossSection s;
+        s.left = points[chord[0]];
+        s.right = points[chord[1]];
+        s.leftPolygonIndex = chord[0];
+        s.rightPolygonIndex = chord[1];
+        return s;
+    };
+    std::vector<CrossSection> body = resampleBody(frames, polygonSection(cylinder.chords.front()),
+                                                  polygonSection(cylinder.chords.back()), spacing);
+
+    CylinderSections result;
+    auto pathPoints = [&](const std::vector<int>& indices) {
+        std::vector<Vec2> path;
+        for (int i : indices) path.push_back(points[i]);
+        return path;
+    };
+    if (!cylinder.startCap.empty()) {
+        // Seen from the start tip the cylinder runs backwards: flip, slice, flip back.
+        CapSlices cap = sliceCap(flipped(body.front()), pathPoints(cylinder.startCap),
+                                 cylinder.startCap, spacing);
+        for (auto it = cap.slices.rbegin(); it != cap.slices.rend(); ++it)
+            result.sections.push_back(flipped(*it));
+        result.startTip = cap.tip;
+        result.startTipPolygonIndex = cap.tipIndex;
+    }
+    result.sections.insert(result.sections.end(), body.begin(), body.end());
+    if (!cylinder.endCap.empty()) {
+        CapSlices cap = sliceCap(body.back(), pathPoints(cylinder.endCap), cylinder.endCap, spacing);
+        result.sections.insert(result.sections.end(), cap.slices.begin(), cap.slices.end());
+        result.endTip = cap.tip;
+        result.endTipPolygonIndex = cap.tipIndex;
+    }
+
+    // Arc length along the axis through the section centres.
+    double position = 0.0;
+    Vec2 previous = result.startTip ? *result.startTip : result.sections.front().centre();
+    for (const auto& section : result.sections) {
+        position += (section.centre() - previous).norm();
+        result.axisPosition.push_back(position);
+        previous = section.centre();
+    }
+    result.endTipPosition = position + (result.endTip ? (*result.endTip - previous).norm() : 0.0);
+    return result;
+}
+
+}  // namespace rigmesh

@@ -1,0 +1,55 @@
+// Cross sections of a generalized cylinder (paper 2.2).
+//
+// The cylinder's chords are smoothed (Laplacian smoothing of the axis and of
+// the chord directions, paper 2.1), then resampled so that adjacent cross
+// sections are about one target edge length apart on their widest side
+// without crossing each other. Caps continue the cylinder beyond its last
+// chord: the outline around the tip is sliced perpendicular to the axis and
+// the slices shrink to a single tip point.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "axis/Decomposition.h"
+
+namespace rigmesh {
+
+// A chord in the sketch plane, diameter of a circular cross section
+// perpendicular to the plane. `left` and `right` are seen along the cylinder.
+struct CrossSection {
+    Vec2 left, right;
+    int leftPolygonIndex = -1;   // outline index when `left` is an outline vertex to share
+    int rightPolygonIndex = -1;  // likewise for `right`
+    bool inCap = false;          // a slice of a cap rather than of the body
+
+    Vec2 centre() const { return 0.5 * (left + right); }
+    double radius() const { return 0.5 * (right - left).norm(); }
+};
+
+struct CylinderSections {
+    std::vector<CrossSection> sections;  // from start to end, caps included
+    std::optional<Vec2> startTip;        // the tip point before the first section
+    std::optional<Vec2> endTip;          // the tip point after the last section
+    int startTipPolygonIndex = -1;
+    int endTipPolygonIndex = -1;
+    // Arc length along the axis (section centres) from the start tip, or from
+    // the first section when there is none; one value per section.
+    std::vector<double> axisPosition;
+    double startTipPosition = 0.0;
+    double endTipPosition = 0.0;
+};
+
+struct CrossSectionOptions {
+    int axisSmoothingIterations = 8;  // Laplacian steps on the axis and chord directions
+    double smoothingStep = 0.5;       // lambda of each step
+};
+
+CylinderSections buildCrossSections(const Decomposition& decomposition, int cylinder,
+                                    double targetEdgeLength,
+                                    const CrossSectionOptions& options = {});
+
+// True when the 2D segments ab and cd cross or touch.
+bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d);
+
+}  // namespace rigmesh
