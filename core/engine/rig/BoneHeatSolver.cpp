@@ -1,0 +1,474 @@
+#include "rig/BoneHeatSolver.h"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <sstream>
+#include <thread>
+
+#include "base/Error.h"
+#include "rig/BoneVisibility.h"
+
+namespace rigmesh {
+
+namespace {
+
+// A cotangent never exceeds 1e8 in magnitude: a sliver triangle's cross
+// product is bounded below relative to its edges, so the bound is scale-free.
+constexpr double kMinSineRelative = 1e-8;
+// d^2 is bounded below by this fraction of the vertex area, so that a vertex
+// lying on its bone gets a very large but finite heat (scale-free too).
+constexpr double kMinDistanceSquaredPerArea = 1e-12;
+
+// One CHOLMOD workspace. CHOLMOD is thread-safe when every thread has its own
+// cholmod_common; the factor itself is only read by cholmod_solve2.
+class CholmodCommon {
+  public:
+    CholmodCommon() {
+        cholmod_start(&common_);
+        common_.print = 0;  // report through our warning, never stdout
+    }
+    ~CholmodCommon() { cholmod_finish(&common_); }
+    CholmodCommon(const CholmodCommon&) = delete;
+    CholmodCommon& operator=(const CholmodCommon&) = delete;
+    cholmod_common* get() { return &common_; }
+
+  private:
+    cholmod_common common_;
+};
+
+// Reusable dense workspaces of cholmod_solve2 for one thread.
+class SolveWorkspace {
+  public:
+    ~SolveWorkspace() {
+        cholmod_free_dense(&x, common.get());
+        cholmod_free_dense(&y, common.get());
+        cholmod_free_dense(&e, common.get());
+    }
+    CholmodCommon common;
+    cholmod_dense* x = nullptr;
+    cholmod_dense* y = nullptr;
+    cholmod_dense* e = nullptr;
+};
+
+// Runs task(i) for i in [0, count) on `threads` threads, bones interleaved so
+// the split never depends on timing; rethrows the first exception.
+template <typename Task>
+void parallelFor(int count, int threads, const Task& task) {
+    const int workers = std::max(1, std::min(threads, count));
+    std::vector<std::exception_ptr> errors(workers);
+    auto run = [&](int worker) {
+        try {
+            for (int i = worker; i < count; i += workers) {
+                task(i, worker);
+            }
+        } catch (...) {
+            errors[worker] = std::current_exception();
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int worker = 1; worker < workers; ++worker) {
+        pool.emplace_back(run, worker);
+    }
+    run(0);
+    for (auto& thread : pool) {
+        thread.join();
+    }
+    for (const auto& error : errors) {
+        if (error) {
+            std::rethrow_exception(error);
+        }
+    }
+}
+
+void validateInput(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
+                   const ClosestBones& closestBones, const BoneHeatOptions& options) {
+    if (bones.empty()) {
+        throw Error("Skin weights need at least one bone.");
+    }
+    if (std::none_of(bones.begin(), bones.end(), [](const auto& b) { return isFinite(b); })) {
+        throw Error("Skin weights need at least one bone with finite end points.");
+    }
+    for (const Vec3& p : mesh.vertices) {
+        if (!p.allFinite()) {
+            throw Error("The mesh has a vertex with a non-finite position.");
+        }
+    }
+    for (const auto& face : mesh.faces) {
+        for (int corner : face) {
+            if (corner < 0 || corner >= mesh.vertexCount()) {
+                throw Error("The mesh has a triangle that refers to a missing vertex.");
+            }
+        }
+    }
+    if (!closestBones.empty() && closestBones.size() != mesh.vertices.size()) {
+        throw Error("The closest bones must be given for every vertex or for none.");
+    }
+    if (!(options.heatConstant > 0.0) || !std::isfinite(options.heatConstant)) {
+        throw Error("The heat constant must be a positive number.");
+    }
+    if (options.threads < 1) {
+        throw Error("The skin weight solver needs at least one thread.");
+    }
+}
+
+}  // namespace
+
+struct BoneHeatSolver::Impl {
+    BoneHeatOptions options;
+    std::vector<Vec3> positions;
+    std::vector<BoneSegment> bones;
+    std::vector<char> boneIsFinite;
+    ClosestBones closest;
+    int withoutVisible = 0;
+    // Per vertex the diagonal heat term a_i = A_i H_i (1 for a vertex no
+    // triangle uses, whose weight is then simply p_i).
+    Eigen::VectorXd heat;
+    Eigen::SparseMatrix<double> matrix;
+    CholmodCommon common;
+    cholmod_factor* factor = nullptr;
+
+    ~Impl() {
+        if (factor != nullptr) {
+            cholmod_free_factor(&factor, common.get());
+        }
+    }
+
+    int vertexCount() const { return static_cast<int>(positions.size()); }
+    int boneCount() const { return static_cast<int>(bones.size()); }
+
+    void findClosestBones(const TriMesh& mesh, const ClosestBones& given);
+    void assemble(const TriMesh& mesh);
+    void factorize();
+    Eigen::VectorXd rightHandSide(int bone) const;
+    Eigen::VectorXd nearestBoneWeights(int bone) const;
+    // Solves one bone into `out`; false if it failed (out then holds the
+    // nearest-bone fallback).
+    bool solve(int bone, SolveWorkspace& workspace, Eigen::Ref<Eigen::VectorXd> out) const;
+    int closestBoneOf(int vertex) const;
+};
+
+void BoneHeatSolver::Impl::findClosestBones(const TriMesh& mesh, const ClosestBones& given) {
+    closest.assign(positions.size(), {});
+    std::vector<int> toTest;
+    for (int v = 0; v < vertexCount(); ++v) {
+        if (!given.empty()) {
+            for (const auto& [bone, distance] : given[v]) {
+                if (bone < 0 || bone >= boneCount()) {
+                    throw Error("A closest bone refers to a bone that does not exist.");
+                }
+                if (boneIsFinite[bone] && std::isfinite(distance) && distance >= 0.0) {
+                    closest[v].emplace_back(bone, distance);
+                }
+            }
+        }
+        if (closest[v].empty()) {
+            toTest.push_back(v);
+        }
+    }
+    if (toTest.empty()) {
+        return;
+    }
+    // The paper's bottleneck (section 2.4): test only what the caller could
+    // not fill, split over the threads.
+    const BoneVisibility visibility(mesh);
+    const int workers = std::max(1, std::min<int>(options.threads, toTest.size()));
+    std::vector<int> counts(workers, 0);
+    parallelFor(workers, workers, [&](int chunk, int) {
+        const std::size_t begin = toTest.size() * chunk / workers;
+        const std::size_t end = toTest.size() * (chunk + 1) / workers;
+        const std::vector<int> part(toTest.begin() + begin, toTest.begin() + end);
+        auto found = closestVisibleBones(mesh, bones, visibility, part, options.tieTolerance,
+                                         &counts[chunk]);
+        for (std::size_t i = 0; i < part.size(); ++i) {
+            closest[part[i]] = std::move(found[i]);
+        }
+    });
+    for (int count : counts) {
+        withoutVisible += count;
+    }
+}
+
+void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
+    const int n = vertexCount();
+    // A_i: the area of the triangles around vertex i (Pinocchio's vertex area).
+    Eigen::VectorXd area = Eigen::VectorXd::Zero(n);
+    std::vector<char> used(n, 0);
+    std::vector<Eigen::Triplet<double>> triplets;
+    triplets.reserve(mesh.faces.size() * 6 + n);
+    for (const auto& face : mesh.faces) {
+        const double doubleArea = (positions[face[1]] - positions[face[0]])
+                                      .cross(positions[face[2]] - positions[face[0]])
+                                      .norm();
+        for (int c = 0; c < 3; ++c) {
+            const int i = face[c];
+            const int j = face[(c + 1) % 3];
+            const int k = face[(c + 2) % 3];
+            used[i] = 1;
+            area[i] += 0.5 * doubleArea;
+            // The corner at i weighs the opposite edge (j, k) by cot/2.
+            const Vec3 e1 = positions[j] - positions[i];
+            const Vec3 e2 = positions[k] - positions[i];
+            const double sine =
+                std::max(e1.cross(e2).norm(), kMinSineRelative * e1.norm() * e2.norm());
+            if (!(sine > 0.0)) {
+                continue;  // a zero-length edge: no stiffness
+            }
+            const double halfCot = 0.5 * e1.dot(e2) / sine;
+            triplets.emplace_back(std::min(j, k), std::max(j, k), -halfCot);
+            triplets.emplace_back(j, j, halfCot);
+            triplets.emplace_back(k, k, halfCot);
+        }
+    }
+
+    heat = Eigen::VectorXd::Zero(n);
+    for (int v = 0; v < n; ++v) {
+        if (!used[v]) {
+            heat[v] = 1.0;  // no triangle: pin w_v = p_v
+        } else if (!closest[v].empty()) {
+            double d = closest[v].front().second;
+            for (const auto& entry : closest[v]) {
+                d = std::min(d, entry.second);
+            }
+            // A_i H_i = c A_i / d^2: both scale as s^0 under scaling by s.
+            heat[v] = options.heatConstant * area[v] /
+                      std::max(d * d, kMinDistanceSquaredPerArea * area[v]);
+        }
+        triplets.emplace_back(v, v, heat[v]);
+    }
+    matrix.resize(n, n);
+    matrix.setFromTriplets(triplets.begin(), triplets.end());
+    matrix.makeCompressed();
+}
+
+void BoneHeatSolver::Impl::factorize() {
+    cholmod_common* c = common.get();
+    // Simplicial LDL^T with AMD: meshes of a few thousand vertices factor in
+    // milliseconds and single right-hand sides solve without BLAS.
+    c->supernodal = CHOLMOD_SIMPLICIAL;
+    c->nmethods = 1;
+    c->method[0].ordering = CHOLMOD_AMD;
+    const Eigen::SparseMatrix<double>& upper = matrix;
+    cholmod_sparse a = Eigen::viewAsCholmod(upper.selfadjointView<Eigen::Upper>());
+    factor = cholmod_analyze(&a, c);
+    if (factor == nullptr) {
+        return;
+    }
+    const int ok = cholmod_factorize(&a, factor, c);
+    if (!ok || c->status != CHOLMOD_OK || factor->minor != factor->n) {
+        cholmod_free_factor(&factor, c);
+        factor = nullptr;
+    }
+}
+
+Eigen::VectorXd BoneHeatSolver::Impl::rightHandSide(int bone) const {
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(vertexCount());
+    for (int v = 0; v < vertexCount(); ++v) {
+        const auto& list = closest[v];
+        for (const auto& entry : list) {
+            if (entry.first == bone) {
+                // p_j(v) = 1/k when k bones tie for closest.
+                rhs[v] += heat[v] / static_cast<double>(list.size());
+            }
+        }
+    }
+    return rhs;
+}
+
+// Inverse-square-distance share of the bone among the finite bones: the
+// fallback when the heat equation cannot be solved for it.
+Eigen::VectorXd BoneHeatSolver::Impl::nearestBoneWeights(int bone) const {
+    Eigen::VectorXd w = Eigen::VectorXd::Zero(vertexCount());
+    if (!boneIsFinite[bone]) {
+        return w;
+    }
+    std::vector<double> d(bones.size());
+    for (int v = 0; v < vertexCount(); ++v) {
+        double nearest = std::numeric_limits<double>::infinity();
+        for (int b = 0; b < boneCount(); ++b) {
+            d[b] = boneIsFinite[b] ? pointSegmentDistance(positions[v], bones[b])
+                                   : std::numeric_limits<double>::infinity();
+            nearest = std::min(nearest, d[b]);
+        }
+        double total = 0.0;
+        double own = 0.0;
+        for (int b = 0; b < boneCount(); ++b) {
+            // (nearest / d)^2 avoids dividing by a zero distance.
+            const double share =
+                nearest == 0.0 ? (d[b] == 0.0 ? 1.0 : 0.0) : (nearest / d[b]) * (nearest / d[b]);
+            total += share;
+            if (b == bone) {
+                own = share;
+            }
+        }
+        w[v] = own / total;
+    }
+    return w;
+}
+
+bool BoneHeatSolver::Impl::solve(int bone, SolveWorkspace& workspace,
+                                 Eigen::Ref<Eigen::VectorXd> out) const {
+    if (factor != nullptr && boneIsFinite[bone]) {
+        Eigen::VectorXd rhs = rightHandSide(bone);
+        cholmod_dense b = Eigen::viewAsCholmod(rhs);
+        const int ok = cholmod_solve2(CHOLMOD_A, factor, &b, nullptr, &workspace.x, nullptr,
+                                      &workspace.y, &workspace.e, workspace.common.get());
+        if (ok && workspace.x != nullptr) {
+            out = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(workspace.x->x),
+                                                    vertexCount());
+            if (out.allFinite()) {
+                return true;
+            }
+        }
+    }
+    out = nearestBoneWeights(bone);
+    return false;
+}
+
+int BoneHeatSolver::Impl::closestBoneOf(int vertex) const {
+    if (!closest[vertex].empty()) {
+        return std::min_element(closest[vertex].begin(), closest[vertex].end(),
+                                [](const auto& a, const auto& b) { return a.second < b.second; })
+            ->first;
+    }
+    int best = -1;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (int b = 0; b < boneCount(); ++b) {
+        const double d = boneIsFinite[b] ? pointSegmentDistance(positions[vertex], bones[b])
+                                         : std::numeric_limits<double>::infinity();
+        if (best < 0 || d < bestDistance) {
+            best = b;
+            bestDistance = d;
+        }
+    }
+    return best;
+}
+
+BoneHeatSolver::BoneHeatSolver(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
+                               const ClosestBones& closestBones, const BoneHeatOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+    validateInput(mesh, bones, closestBones, options);
+    impl_->options = options;
+    impl_->positions = mesh.vertices;
+    impl_->bones = bones;
+    for (const auto& bone : bones) {
+        impl_->boneIsFinite.push_back(isFinite(bone) ? 1 : 0);
+    }
+    impl_->findClosestBones(mesh, closestBones);
+    impl_->assemble(mesh);
+    impl_->factorize();
+}
+
+BoneHeatSolver::~BoneHeatSolver() = default;
+BoneHeatSolver::BoneHeatSolver(BoneHeatSolver&&) noexcept = default;
+BoneHeatSolver& BoneHeatSolver::operator=(BoneHeatSolver&&) noexcept = default;
+
+int BoneHeatSolver::vertexCount() const {
+    return impl_->vertexCount();
+}
+int BoneHeatSolver::boneCount() const {
+    return impl_->boneCount();
+}
+bool BoneHeatSolver::isFactorized() const {
+    return impl_->factor != nullptr;
+}
+const ClosestBones& BoneHeatSolver::closestBones() const {
+    return impl_->closest;
+}
+int BoneHeatSolver::verticesWithoutVisibleBone() const {
+    return impl_->withoutVisible;
+}
+const Eigen::SparseMatrix<double>& BoneHeatSolver::systemMatrix() const {
+    return impl_->matrix;
+}
+
+Eigen::VectorXd BoneHeatSolver::rightHandSide(int bone) const {
+    if (bone < 0 || bone >= boneCount()) {
+        throw Error("There is no bone with this index.");
+    }
+    return impl_->rightHandSide(bone);
+}
+
+Eigen::VectorXd BoneHeatSolver::solveBone(int bone) const {
+    if (bone < 0 || bone >= boneCount()) {
+        throw Error("There is no bone with this index.");
+    }
+    SolveWorkspace workspace;
+    Eigen::VectorXd w(vertexCount());
+    impl_->solve(bone, workspace, w);
+    return w;
+}
+
+SkinWeights BoneHeatSolver::solveAll() const {
+    const int n = vertexCount();
+    const int boneTotal = boneCount();
+    Eigen::MatrixXd solutions(n, boneTotal);
+    std::vector<char> failed(boneTotal, 0);
+    const int workers = std::max(1, std::min(impl_->options.threads, boneTotal));
+    std::vector<std::unique_ptr<SolveWorkspace>> workspaces;
+    for (int t = 0; t < workers; ++t) {
+        workspaces.push_back(std::make_unique<SolveWorkspace>());
+    }
+    parallelFor(boneTotal, workers, [&](int bone, int worker) {
+        failed[bone] = impl_->solve(bone, *workspaces[worker], solutions.col(bone)) ? 0 : 1;
+    });
+
+    // Pinocchio's post-processing, with a threshold: negatives to 0, drop tiny
+    // weights, renormalise; an emptied vertex follows its closest bone.
+    SkinWeights result;
+    result.perVertex.resize(n);
+    const double minWeight = impl_->options.minWeight;
+    for (int v = 0; v < n; ++v) {
+        auto& weights = result.perVertex[v];
+        double total = 0.0;
+        for (int b = 0; b < boneTotal; ++b) {
+            const double w = solutions(v, b);
+            if (w >= minWeight && w > 0.0) {
+                weights.emplace_back(b, w);
+                total += w;
+            }
+        }
+        if (weights.empty()) {
+            weights.emplace_back(impl_->closestBoneOf(v), 1.0);
+            continue;
+        }
+        for (auto& entry : weights) {
+            entry.second /= total;
+        }
+    }
+
+    for (int b = 0; b < boneTotal; ++b) {
+        if (failed[b]) {
+            result.failedBones.push_back(b);
+        }
+    }
+    std::ostringstream warning;
+    if (!result.failedBones.empty()) {
+        warning << "Skin weights could not be solved for bone";
+        warning << (result.failedBones.size() > 1 ? "s" : "");
+        for (std::size_t i = 0; i < result.failedBones.size(); ++i) {
+            warning << (i == 0 ? " " : ", ") << result.failedBones[i];
+        }
+        warning << (isFactorized() ? "" : " (the heat system could not be factored)")
+                << "; nearest-bone weights are used instead.";
+    }
+    if (impl_->withoutVisible > 0) {
+        warning << (result.failedBones.empty() ? "" : " ") << impl_->withoutVisible
+                << " vertices see no bone from inside the shape and are heated by their "
+                   "nearest bone.";
+    }
+    result.warning = warning.str();
+    return result;
+}
+
+SkinWeights computeBoneHeatWeights(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
+                                   const ClosestBones& closestBones,
+                                   const BoneHeatOptions& options) {
+    return BoneHeatSolver(mesh, bones, closestBones, options).solveAll();
+}
+
+}  // namespace rigmesh

@@ -1,0 +1,106 @@
+// Bone heat skin weights (Baran & Popovic 2007, section 4), the skinning
+// RigMesh uses for every shape (paper section 2.4) and re-runs locally after a
+// merge (section 3.2.2).
+//
+// Each bone j radiates heat onto the surface; its weights w_j are the
+// equilibrium temperature
+//     (-Laplacian + H) w_j = H p_j,
+// H_ii = c / d_i^2 with d_i the distance from vertex i to its closest visible
+// bone(s), p_j(i) = 1/k if bone j is one of the k closest visible bones of i.
+// Pinocchio's Laplacian is the cotangent operator divided by the vertex area
+// A_i = sum of the areas of the triangles around i (attachment.cpp: the cotan
+// sums over the sum of one-ring cross-product norms). Multiplying through by
+// A gives the symmetric positive definite system we factor once:
+//     (L + A H) w_j = A H p_j,   L_ik = -(cot a_ik + cot b_ik) / 2,
+// L positive semi-definite. Cotangents scale by 1, A by s^2 and H by s^-2, so
+// the system is invariant under scaling mesh and bones together.
+//
+// Obtuse triangles keep their negative cotangents, as in Pinocchio: L is the
+// P1 finite element stiffness, positive semi-definite for any triangle shape.
+// Negative weights or weights above 1 this may produce are clamped afterwards.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mesh/TriMesh.h"
+#include "rig/BoneSegment.h"
+
+namespace rigmesh {
+
+struct BoneHeatOptions {
+    // Pinocchio's c (attachment.cpp initialHeatWeight, default 1) with its
+    // Laplacian normalisation above.
+    double heatConstant = 1.0;
+    // Bones are solved in parallel on this many threads (visibility too).
+    int threads = 2;
+    // Weights below this are dropped before renormalising.
+    double minWeight = 1e-4;
+    // Relative tolerance under which equally close visible bones share a vertex.
+    double tieTolerance = 1e-2;
+};
+
+// Sparse per-vertex skin weights.
+struct SkinWeights {
+    // (bone index, weight) sorted by bone; weights > 0 summing to 1.
+    std::vector<std::vector<std::pair<int, double>>> perVertex;
+    // Bones whose solve failed (non-finite bone, failed factorisation or
+    // non-finite solution) and which use nearest-bone weights instead.
+    std::vector<int> failedBones;
+    // A note for the user when anything fell back; empty otherwise.
+    std::string warning;
+};
+
+// A vertex's closest visible bone(s) with their distance.
+using ClosestBones = std::vector<std::vector<std::pair<int, double>>>;
+
+// Keeps the sparse Cholesky factorisation (CHOLMOD) of L + A H so that bones
+// can be solved repeatedly. `closestBones` is empty or has one list per
+// vertex; the caller may fill cylinder vertices from construction bookkeeping
+// (RigMesh section 2.4), and vertices with an empty list are tested with
+// BoneVisibility here.
+class BoneHeatSolver {
+  public:
+    BoneHeatSolver(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
+                   const ClosestBones& closestBones = {}, const BoneHeatOptions& options = {});
+    ~BoneHeatSolver();
+    BoneHeatSolver(BoneHeatSolver&&) noexcept;
+    BoneHeatSolver& operator=(BoneHeatSolver&&) noexcept;
+    BoneHeatSolver(const BoneHeatSolver&) = delete;
+    BoneHeatSolver& operator=(const BoneHeatSolver&) = delete;
+
+    int vertexCount() const;
+    int boneCount() const;
+    // False if CHOLMOD could not factor the system (every bone falls back).
+    bool isFactorized() const;
+    // The closest visible bone(s) of every vertex used for the heat.
+    const ClosestBones& closestBones() const;
+    // How many tested vertices saw no bone from inside and were heated by
+    // their closest bone regardless.
+    int verticesWithoutVisibleBone() const;
+    // The system matrix L + A H (upper triangle stored), for inspection.
+    const Eigen::SparseMatrix<double>& systemMatrix() const;
+    // The right-hand side A H p_j of a bone.
+    Eigen::VectorXd rightHandSide(int bone) const;
+
+    // The raw heat solution w_j (before clamping and normalisation); a bone
+    // that cannot be solved gives its nearest-bone weights instead.
+    Eigen::VectorXd solveBone(int bone) const;
+    // Every bone, solved in parallel, clamped, thresholded and normalised.
+    SkinWeights solveAll() const;
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// One-shot convenience: factor, solve every bone and normalise.
+SkinWeights computeBoneHeatWeights(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
+                                   const ClosestBones& closestBones = {},
+                                   const BoneHeatOptions& options = {});
+
+}  // namespace rigmesh
