@@ -1,0 +1,260 @@
+// Bone heat skin weights (Pinocchio, as used by RigMesh section 2.4).
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "BoneHeatTestMeshes.h"
+#include "base/Error.h"
+#include "rig/BoneHeatSolver.h"
+
+namespace rigmesh {
+namespace {
+
+using test::boneWeights;
+using test::expectPartitionOfUnity;
+using test::makeCappedTube;
+using test::makeUvSphere;
+
+// A tube of length 4 and radius 0.5 along x with a joint in the middle.
+struct TwoBoneTube {
+    TriMesh mesh = makeCappedTube(41, 24, 0.5, 4.0);
+    std::vector<BoneSegment> bones = {{Vec3(0.25, 0, 0), Vec3(2, 0, 0)},
+                                      {Vec3(2, 0, 0), Vec3(3.75, 0, 0)}};
+};
+
+TEST(BoneHeatSolver, TestMeshesAreClosedAndOutward) {
+    EXPECT_GT(test::signedVolume(makeCappedTube(5, 8, 0.5, 4.0)), 0.0);
+    EXPECT_GT(test::signedVolume(makeUvSphere(8, 12, 1.0)), 0.0);
+}
+
+TEST(BoneHeatSolver, WeightsArePositiveAndSumToOneOnEveryTubeVertex) {
+    const TwoBoneTube tube;
+    const SkinWeights weights = computeBoneHeatWeights(tube.mesh, tube.bones);
+    expectPartitionOfUnity(weights, tube.mesh.vertexCount(), 2);
+    EXPECT_TRUE(weights.failedBones.empty());
+    EXPECT_EQ(weights.warning, "");
+}
+
+TEST(BoneHeatSolver, WeightsArePositiveAndSumToOneOnEverySphereVertex) {
+    const TriMesh sphere = makeUvSphere(16, 24, 1.0);
+    const std::vector<BoneSegment> bones = {{Vec3(0, 0, -0.6), Vec3(0, 0, 0)},
+                                            {Vec3(0, 0, 0), Vec3(0, 0, 0.6)},
+                                            {Vec3(0, 0, 0), Vec3(0.6, 0, 0)}};
+    const SkinWeights weights = computeBoneHeatWeights(sphere, bones);
+    expectPartitionOfUnity(weights, sphere.vertexCount(), 3);
+    EXPECT_TRUE(weights.failedBones.empty());
+}
+
+TEST(BoneHeatSolver, TubeEndsFollowTheirOwnBone) {
+    const TwoBoneTube tube;
+    const SkinWeights weights = computeBoneHeatWeights(tube.mesh, tube.bones);
+    const std::vector<double> first = boneWeights(weights, 0);
+    const std::vector<double> second = boneWeights(weights, 1);
+    int checked = 0;
+    for (int v = 0; v < tube.mesh.vertexCount(); ++v) {
+        const double x = tube.mesh.vertices[v].x();
+        if (x < 0.5) {
+            EXPECT_GE(first[v], 0.95) << "x = " << x;
+            ++checked;
+        } else if (x > 3.5) {
+            EXPECT_GE(second[v], 0.95) << "x = " << x;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 100);
+}
+
+TEST(BoneHeatSolver, WeightsVarySmoothlyBetweenMeshNeighbours) {
+    const TwoBoneTube tube;
+    const SkinWeights weights = computeBoneHeatWeights(tube.mesh, tube.bones);
+    const std::vector<double> first = boneWeights(weights, 0);
+    double largestJump = 0.0;
+    for (const auto& face : tube.mesh.faces) {
+        for (int c = 0; c < 3; ++c) {
+            largestJump =
+                std::max(largestJump, std::abs(first[face[c]] - first[face[(c + 1) % 3]]));
+        }
+    }
+    // Pinocchio's system behaves like -Laplace + 3c/d^2 (one-ring area, see
+    // BoneHeatSolver.h): across the joint w decays over d/sqrt(3) = 0.29, a
+    // slope of at most sqrt(3)/(2 * 0.5) = 1.73 per unit length. Rings are 0.1
+    // apart, so neighbours differ by at most ~0.17.
+    EXPECT_LT(largestJump, 0.2);
+    // ...and the weight of the first bone falls monotonically along the tube.
+    for (int r = 0; r + 1 < 41; ++r) {
+        EXPECT_GE(first[r * 24] + 1e-12, first[(r + 1) * 24]) << "ring " << r;
+    }
+}
+
+TEST(BoneHeatSolver, ScalingMeshAndBonesLeavesWeightsUnchanged) {
+    const TwoBoneTube tube;
+    const SkinWeights reference = computeBoneHeatWeights(tube.mesh, tube.bones);
+    for (double factor : {1e-3, 1e3}) {
+        const SkinWeights scaledWeights = computeBoneHeatWeights(test::scaled(tube.mesh, factor),
+                                                                 test::scaled(tube.bones, factor));
+        for (int bone = 0; bone < 2; ++bone) {
+            const std::vector<double> a = boneWeights(reference, bone);
+            const std::vector<double> b = boneWeights(scaledWeights, bone);
+            for (std::size_t v = 0; v < a.size(); ++v) {
+                EXPECT_NEAR(a[v], b[v], 1e-9) << "scale " << factor << " vertex " << v;
+            }
+        }
+    }
+}
+
+// The documented system, assembled densely and independently of the solver:
+// (L + A H) w = A H p with L the cot/2 stiffness, A the one-ring area and
+// H = c / d^2.
+TEST(BoneHeatSolver, SmallSystemMatchesDenseLdltSolve) {
+    const TriMesh mesh = makeCappedTube(7, 10, 0.5, 3.0);
+    ASSERT_LT(mesh.vertexCount(), 200);
+    const std::vector<BoneSegment> bones = {{Vec3(0.3, 0, 0), Vec3(1.4, 0, 0)},
+                                            {Vec3(1.4, 0, 0), Vec3(2.7, 0, 0)}};
+    const int n = mesh.vertexCount();
+    ClosestBones closest(n);
+    for (int v = 0; v < n; ++v) {
+        const double d0 = pointSegmentDistance(mesh.vertices[v], bones[0]);
+        const double d1 = pointSegmentDistance(mesh.vertices[v], bones[1]);
+        closest[v].emplace_back(d0 <= d1 ? 0 : 1, std::min(d0, d1));
+    }
+    BoneHeatOptions options;
+    options.heatConstant = 0.7;
+    const BoneHeatSolver solver(mesh, bones, closest, options);
+
+    Eigen::MatrixXd system = Eigen::MatrixXd::Zero(n, n);
+    Eigen::VectorXd area = Eigen::VectorXd::Zero(n);
+    for (const auto& f : mesh.faces) {
+        for (int c = 0; c < 3; ++c) {
+            const int i = f[c], j = f[(c + 1) % 3], k = f[(c + 2) % 3];
+            const Vec3 a = mesh.vertices[j] - mesh.vertices[i];
+            const Vec3 b = mesh.vertices[k] - mesh.vertices[i];
+            const double halfCot = 0.5 * a.dot(b) / a.cross(b).norm();
+            system(j, k) -= halfCot;
+            system(k, j) -= halfCot;
+            system(j, j) += halfCot;
+            system(k, k) += halfCot;
+            area[i] += 0.5 * a.cross(b).norm();
+        }
+    }
+    Eigen::VectorXd heat(n);
+    for (int v = 0; v < n; ++v) {
+        heat[v] = options.heatConstant * area[v] / std::pow(closest[v][0].second, 2);
+        system(v, v) += heat[v];
+    }
+    const Eigen::LDLT<Eigen::MatrixXd> dense(system);
+    for (int bone = 0; bone < 2; ++bone) {
+        Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+        for (int v = 0; v < n; ++v) {
+            if (closest[v][0].first == bone) {
+                rhs[v] = heat[v];
+            }
+        }
+        const Eigen::VectorXd expected = dense.solve(rhs);
+        const Eigen::VectorXd actual = solver.solveBone(bone);
+        EXPECT_LT((expected - actual).lpNorm<Eigen::Infinity>(), 1e-8) << "bone " << bone;
+        EXPECT_LT((solver.rightHandSide(bone) - rhs).lpNorm<Eigen::Infinity>(), 1e-12);
+    }
+}
+
+TEST(BoneHeatSolver, RawSolutionsOfAllBonesSumToOneBeforeClamping) {
+    const TwoBoneTube tube;
+    const BoneHeatSolver solver(tube.mesh, tube.bones);
+    const Eigen::VectorXd sum = solver.solveBone(0) + solver.solveBone(1);
+    EXPECT_LT((sum - Eigen::VectorXd::Ones(sum.size())).lpNorm<Eigen::Infinity>(), 1e-9);
+}
+
+TEST(BoneHeatSolver, BoneWithNanEndpointIsReportedAndVerticesStayWeighted) {
+    const TwoBoneTube tube;
+    std::vector<BoneSegment> bones = tube.bones;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    bones.push_back({Vec3(1, 0, 0), Vec3(nan, 0, 0)});
+    const SkinWeights weights = computeBoneHeatWeights(tube.mesh, bones);
+    EXPECT_EQ(weights.failedBones, std::vector<int>{2});
+    EXPECT_NE(weights.warning.find("bone 2"), std::string::npos) << weights.warning;
+    expectPartitionOfUnity(weights, tube.mesh.vertexCount(), 3);
+    for (const auto& list : weights.perVertex) {
+        for (const auto& [bone, w] : list) {
+            EXPECT_NE(bone, 2);
+        }
+    }
+}
+
+TEST(BoneHeatSolver, ResolvingWithTheSameSolverGivesIdenticalWeights) {
+    const TwoBoneTube tube;
+    const BoneHeatSolver solver(tube.mesh, tube.bones);
+    const SkinWeights first = solver.solveAll();
+    const SkinWeights second = solver.solveAll();
+    EXPECT_EQ(first.perVertex, second.perVertex);
+    EXPECT_EQ(solver.solveBone(1), solver.solveBone(1));
+    const SkinWeights oneShot = computeBoneHeatWeights(tube.mesh, tube.bones);
+    EXPECT_EQ(first.perVertex, oneShot.perVertex);
+}
+
+TEST(BoneHeatSolver, OneThreadAndTwoThreadsGiveIdenticalWeights) {
+    const TwoBoneTube tube;
+    BoneHeatOptions serial;
+    serial.threads = 1;
+    EXPECT_EQ(computeBoneHeatWeights(tube.mesh, tube.bones, {}, serial).perVertex,
+              computeBoneHeatWeights(tube.mesh, tube.bones).perVertex);
+}
+
+TEST(BoneHeatSolver, CallerGivenClosestBonesAreUsedWithoutVisibilityTests) {
+    const TwoBoneTube tube;
+    const int n = tube.mesh.vertexCount();
+    // Claim every vertex is closest to bone 1 (a deliberately odd choice).
+    ClosestBones closest(n, {{1, 0.5}});
+    const BoneHeatSolver solver(tube.mesh, tube.bones, closest);
+    EXPECT_EQ(solver.closestBones(), closest);
+    const SkinWeights weights = solver.solveAll();
+    for (const auto& list : weights.perVertex) {
+        ASSERT_EQ(list.size(), 1u);
+        EXPECT_EQ(list[0].first, 1);
+    }
+}
+
+TEST(BoneHeatSolver, VerticesWithEmptyClosestListAreTestedForVisibility) {
+    const TwoBoneTube tube;
+    ClosestBones closest(tube.mesh.vertexCount());
+    closest[0] = {{1, 0.5}};
+    const BoneHeatSolver solver(tube.mesh, tube.bones, closest);
+    EXPECT_EQ(solver.closestBones()[0], closest[0]);
+    // Ring 20 sits on the joint: both bones tie there.
+    const auto& joint = solver.closestBones()[20 * 24];
+    EXPECT_EQ(joint.size(), 2u);
+    EXPECT_EQ(solver.closestBones()[tube.mesh.vertexCount() - 2].at(0).first, 0);
+}
+
+TEST(BoneHeatSolver, WeightsBelowTheThresholdAreDropped) {
+    const TwoBoneTube tube;
+    BoneHeatOptions options;
+    options.minWeight = 0.2;
+    const SkinWeights weights = computeBoneHeatWeights(tube.mesh, tube.bones, {}, options);
+    expectPartitionOfUnity(weights, tube.mesh.vertexCount(), 2);
+    for (const auto& list : weights.perVertex) {
+        double total = 0.0;
+        for (const auto& entry : list) {
+            total += entry.second;
+        }
+        for (const auto& entry : list) {
+            EXPECT_GE(entry.second, 0.2 * total - 1e-12);
+        }
+    }
+}
+
+TEST(BoneHeatSolver, InvalidInputIsRejectedWithAnError) {
+    const TwoBoneTube tube;
+    EXPECT_THROW(computeBoneHeatWeights(tube.mesh, {}), Error);
+    TriMesh broken = tube.mesh;
+    broken.faces.push_back({0, 1, broken.vertexCount()});
+    EXPECT_THROW(computeBoneHeatWeights(broken, tube.bones), Error);
+    EXPECT_THROW(computeBoneHeatWeights(tube.mesh, tube.bones, ClosestBones(3)), Error);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(computeBoneHeatWeights(tube.mesh, {{Vec3(nan, 0, 0), Vec3(1, 0, 0)}}), Error);
+}
+
+}  // namespace
+}  // namespace rigmesh
