@@ -38,16 +38,17 @@ nlohmann::json buildStatistics(const std::string& name, const SketchToSurfaceRes
 std::string buildSummary(const nlohmann::json& s) {
     char text[1024];
     const auto& mesh = s["mesh"];
-    std::snprintf(text, sizeof text,
-                  "%s: %d vertices, %d faces, %d cylindrical + %d connecting regions\n"
-                  "  surface: %s, %s, genus %d, %d self-intersecting face pairs, min angle %.1f deg\n"
-                  "  time: %.2f ms total\n",
-                  s["sketch"].get<std::string>().c_str(), s["vertices"].get<int>(), s["faces"].get<int>(),
-                  s["cylindrical_regions"].get<int>(), s["connecting_regions"].get<int>(),
-                  mesh["closed"].get<bool>() ? "closed" : "OPEN",
-                  mesh["manifold"].get<bool>() ? "manifold" : "NON-MANIFOLD", mesh["genus"].get<int>(),
-                  mesh["self_intersecting_face_pairs"].get<int>(),
-                  mesh["min_angle_degrees"].get<double>(), s["ms_total"].get<double>());
+    std::snprintf(
+        text, sizeof text,
+        "%s: %d vertices, %d faces, %d cylindrical + %d connecting regions\n"
+        "  surface: %s, %s, genus %d, %d self-intersecting face pairs, min angle %.1f deg\n"
+        "  time: %.2f ms total\n",
+        s["sketch"].get<std::string>().c_str(), s["vertices"].get<int>(), s["faces"].get<int>(),
+        s["cylindrical_regions"].get<int>(), s["connecting_regions"].get<int>(),
+        mesh["closed"].get<bool>() ? "closed" : "OPEN",
+        mesh["manifold"].get<bool>() ? "manifold" : "NON-MANIFOLD", mesh["genus"].get<int>(),
+        mesh["self_intersecting_face_pairs"].get<int>(), mesh["min_angle_degrees"].get<double>(),
+        s["ms_total"].get<double>());
     return text;
 }
 

@@ -11,10 +11,10 @@
 namespace rigmesh::cli {
 
 class CommandLine {
-public:
+  public:
     // `valueOptions` take a value, `flags` do not; anything else is an error.
-    CommandLine(const std::vector<std::string>& arguments, const std::set<std::string>& valueOptions,
-                const std::set<std::string>& flags);
+    CommandLine(const std::vector<std::string>& arguments,
+                const std::set<std::string>& valueOptions, const std::set<std::string>& flags);
 
     const std::vector<std::string>& positional() const { return positional_; }
     std::optional<std::string> value(const std::string& option) const;
@@ -22,7 +22,7 @@ public:
     // The option's value as a number; throws rigmesh::Error when it is not one.
     std::optional<double> number(const std::string& option) const;
 
-private:
+  private:
     std::vector<std::string> positional_;
     std::map<std::string, std::string> values_;
     std::set<std::string> flags_;

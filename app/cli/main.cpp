@@ -28,20 +28,24 @@ commands:
 
 int main(int argc, char** argv) {
     std::vector<std::string> arguments(argv + 1, argv + argc);
-    if (arguments.empty() || arguments[0] == "--help" || arguments[0] == "-h" || arguments[0] == "help") {
+    if (arguments.empty() || arguments[0] == "--help" || arguments[0] == "-h" ||
+        arguments[0] == "help") {
         std::fputs(kUsage, arguments.empty() ? stderr : stdout);
         return arguments.empty() ? 2 : 0;
     }
     const std::string command = arguments[0];
     arguments.erase(arguments.begin());
     try {
-        if (command == "build") return rigmesh::cli::runBuild(arguments);
-        if (command == "example") return rigmesh::cli::runBuild({"example"});
+        if (command == "build")
+            return rigmesh::cli::runBuild(arguments);
+        if (command == "example")
+            return rigmesh::cli::runBuild({"example"});
         if (command == "version") {
             std::printf("%s\n", rigmesh::model::buildInfo().toStdString().c_str());
             return 0;
         }
-        std::fprintf(stderr, "rigmesh: unknown command '%s' (see rigmesh --help)\n", command.c_str());
+        std::fprintf(stderr, "rigmesh: unknown command '%s' (see rigmesh --help)\n",
+                     command.c_str());
         return 2;
     } catch (const rigmesh::Error& error) {
         std::fprintf(stderr, "rigmesh: %s\n", error.what());

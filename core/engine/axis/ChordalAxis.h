@@ -27,9 +27,9 @@ enum class TriangleKind { Terminal, Sleeve, Junction, Isolated };
 using PolygonEdge = std::array<int, 2>;
 
 struct AxisBranch {
-    int startNode = -1;         // triangle index of a junction or terminal
-    int endNode = -1;           // triangle index of a junction or terminal
-    std::vector<int> sleeves;   // sleeve triangles from start to end
+    int startNode = -1;        // triangle index of a junction or terminal
+    int endNode = -1;          // triangle index of a junction or terminal
+    std::vector<int> sleeves;  // sleeve triangles from start to end
     // chords crossed from start to end, each oriented (left, right) with
     // respect to the direction of travel; chords.size() == sleeves.size() + 1
     std::vector<PolygonEdge> chords;

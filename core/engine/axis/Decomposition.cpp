@@ -9,12 +9,12 @@ namespace rigmesh {
 namespace {
 
 class UnionFind {
-public:
+  public:
     explicit UnionFind(int size) : parent_(size) { std::iota(parent_.begin(), parent_.end(), 0); }
     int find(int x) { return parent_[x] == x ? x : parent_[x] = find(parent_[x]); }
     void unite(int a, int b) { parent_[find(a)] = find(b); }
 
-private:
+  private:
     std::vector<int> parent_;
 };
 
@@ -28,7 +28,8 @@ double branchAxisLength(const ChordalAxis& axis, const AxisBranch& branch) {
 
 double meanChordLength(const ChordalAxis& axis, const AxisBranch& branch) {
     double sum = 0.0;
-    for (const auto& chord : branch.chords) sum += axis.length(chord);
+    for (const auto& chord : branch.chords)
+        sum += axis.length(chord);
     return sum / static_cast<double>(branch.chords.size());
 }
 
@@ -55,11 +56,75 @@ int capGrowth(const ChordalAxis& axis, int terminal, const std::vector<int>& sle
     while (swallowed < limit) {
         std::vector<int> grown = region;
         grown.push_back(sleeves[swallowed]);
-        if (!axis.outlineInsideChordCircle(grown, chords[swallowed + 1], factor)) break;
+        if (!axis.outlineInsideChordCircle(grown, chords[swallowed + 1], factor))
+            break;
         region = std::move(grown);
         ++swallowed;
     }
     return swallowed;
+}
+
+int sharedEndpoint(const PolygonEdge& a, const PolygonEdge& b) {
+    if (a[0] == b[0] || a[0] == b[1])
+        return a[0];
+    if (a[1] == b[0] || a[1] == b[1])
+        return a[1];
+    return -1;
+}
+
+// Near a junction the CDT often fans out from one concave outline vertex (an
+// armpit, a crotch): consecutive chords share that vertex and turn around it,
+// so cross sections there would crowd on one side. Those fan sleeves belong to
+// the connecting region. Returns how many leading sleeves (from the junction
+// side of `chords`) to absorb, at most `limit`.
+int junctionFanLength(const std::vector<PolygonEdge>& chords, int limit) {
+    int absorbed = 0;
+    for (int fan = 0; fan < 2; ++fan) {
+        if (absorbed + 1 >= static_cast<int>(chords.size()))
+            break;
+        int pivot = sharedEndpoint(chords[absorbed], chords[absorbed + 1]);
+        if (pivot < 0)
+            break;
+        int end = absorbed;
+        while (end + 1 < static_cast<int>(chords.size()) && end < limit &&
+               (chords[end + 1][0] == pivot || chords[end + 1][1] == pivot))
+            ++end;
+        // A fan of one or two sleeves is just the ordinary zig-zag of a sleeve chain.
+        if (end - absorbed < 3)
+            break;
+        absorbed = end;
+    }
+    return absorbed;
+}
+
+// Moves the fan sleeves next to junctions from the branch into the
+// connecting regions, keeping at least half of the branch's chords.
+void absorbJunctionFans(AxisBranch& branch, std::vector<int>& regionOfTriangle,
+                        std::vector<ConnectingRegion>& connecting, bool startAtJunction,
+                        bool endAtJunction) {
+    const int limit = static_cast<int>(branch.chords.size()) / 4;
+    if (startAtJunction) {
+        int count = junctionFanLength(branch.chords, limit);
+        int region = regionOfTriangle[branch.startNode];
+        for (int i = 0; i < count; ++i) {
+            regionOfTriangle[branch.sleeves[i]] = region;
+            connecting[region].triangles.push_back(branch.sleeves[i]);
+        }
+        branch.sleeves.erase(branch.sleeves.begin(), branch.sleeves.begin() + count);
+        branch.chords.erase(branch.chords.begin(), branch.chords.begin() + count);
+    }
+    if (endAtJunction) {
+        std::vector<PolygonEdge> reversed(branch.chords.rbegin(), branch.chords.rend());
+        int count = junctionFanLength(reversed, limit);
+        int region = regionOfTriangle[branch.endNode];
+        for (int i = 0; i < count; ++i) {
+            int sleeve = branch.sleeves[branch.sleeves.size() - 1 - i];
+            regionOfTriangle[sleeve] = region;
+            connecting[region].triangles.push_back(sleeve);
+        }
+        branch.sleeves.resize(branch.sleeves.size() - count);
+        branch.chords.resize(branch.chords.size() - count);
+    }
 }
 
 }  // namespace
@@ -74,8 +139,10 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
     std::vector<bool> merged(axis.branches.size(), false);
     for (std::size_t b = 0; b < axis.branches.size(); ++b) {
         const AxisBranch& branch = axis.branches[b];
-        if (!isJunction(axis, branch.startNode) || !isJunction(axis, branch.endNode)) continue;
-        if (branchAxisLength(axis, branch) < options.mergeLengthFactor * meanChordLength(axis, branch)) {
+        if (!isJunction(axis, branch.startNode) || !isJunction(axis, branch.endNode))
+            continue;
+        if (branchAxisLength(axis, branch) <
+            options.mergeLengthFactor * meanChordLength(axis, branch)) {
             merged[b] = true;
             groups.unite(branch.startNode, branch.endNode);
         }
@@ -84,7 +151,8 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
     // 2. One connecting region per group of junctions.
     std::vector<int> regionOfTriangle(triangleCount, -1);
     for (int t = 0; t < triangleCount; ++t) {
-        if (axis.pruned[t] || !isJunction(axis, t)) continue;
+        if (axis.pruned[t] || !isJunction(axis, t))
+            continue;
         int root = groups.find(t);
         if (regionOfTriangle[root] < 0) {
             regionOfTriangle[root] = static_cast<int>(result.connecting.size());
@@ -95,14 +163,25 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
         result.connecting[regionOfTriangle[t]].triangles.push_back(t);
     }
     for (std::size_t b = 0; b < axis.branches.size(); ++b) {
-        if (!merged[b]) continue;
+        if (!merged[b])
+            continue;
         int region = regionOfTriangle[axis.branches[b].startNode];
         for (int sleeve : axis.branches[b].sleeves) {
             regionOfTriangle[sleeve] = region;
             result.connecting[region].triangles.push_back(sleeve);
         }
     }
-    // Pruned bumps hanging off a connecting region belong to it: its patch
+    // 3. Fans next to junctions join the connecting regions.
+    std::vector<AxisBranch> cylinderBranches;
+    for (std::size_t b = 0; b < axis.branches.size(); ++b) {
+        if (merged[b])
+            continue;
+        AxisBranch branch = axis.branches[b];
+        absorbJunctionFans(branch, regionOfTriangle, result.connecting,
+                           isJunction(axis, branch.startNode), isJunction(axis, branch.endNode));
+        cylinderBranches.push_back(std::move(branch));
+    }
+    // 4. Pruned bumps hanging off a connecting region belong to it: its patch
     // then follows the outline around them.
     for (auto& region : result.connecting) {
         std::vector<int> stack = region.triangles;
@@ -111,7 +190,8 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
             int t = stack.back();
             stack.pop_back();
             for (int n : axis.cdt.neighbors[t]) {
-                if (n < 0 || !axis.pruned[n] || regionOfTriangle[n] >= 0) continue;
+                if (n < 0 || !axis.pruned[n] || regionOfTriangle[n] >= 0)
+                    continue;
                 regionOfTriangle[n] = id;
                 region.triangles.push_back(n);
                 stack.push_back(n);
@@ -119,10 +199,8 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
         }
     }
 
-    // 3. Every other branch is a cylindrical region, with caps at terminals.
-    for (std::size_t b = 0; b < axis.branches.size(); ++b) {
-        if (merged[b]) continue;
-        const AxisBranch& branch = axis.branches[b];
+    // 5. Every other branch is a cylindrical region, with caps at terminals.
+    for (const AxisBranch& branch : cylinderBranches) {
         CylinderRegion cylinder;
         std::vector<PolygonEdge> chords = branch.chords;
         const int chordCount = static_cast<int>(chords.size());
@@ -139,8 +217,8 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
         if (endIsCap) {
             std::vector<int> sleeves(branch.sleeves.rbegin(), branch.sleeves.rend());
             std::vector<PolygonEdge> reversed(chords.rbegin(), chords.rend());
-            fromEnd = capGrowth(axis, branch.endNode, sleeves, reversed,
-                                chordCount - 1 - fromStart, options.capCircleFactor);
+            fromEnd = capGrowth(axis, branch.endNode, sleeves, reversed, chordCount - 1 - fromStart,
+                                options.capCircleFactor);
         }
         cylinder.chords.assign(chords.begin() + fromStart, chords.end() - fromEnd);
         if (startIsCap) {

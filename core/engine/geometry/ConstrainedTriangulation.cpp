@@ -38,18 +38,21 @@ constexpr int kNoIndex = -1;
 // Flood fill from the infinite face: a face is inside the polygon when an odd
 // number of constraints separates it from infinity (CGAL's "mark domains").
 void markDomains(Cdt& cdt) {
-    for (auto f : cdt.all_face_handles()) f->info().nestingLevel = -1;
+    for (auto f : cdt.all_face_handles())
+        f->info().nestingLevel = -1;
     std::deque<std::pair<Cdt::Face_handle, int>> queue{{cdt.infinite_face(), 0}};
     std::deque<std::pair<Cdt::Face_handle, int>> nextLevel;
     while (!queue.empty()) {
         while (!queue.empty()) {
             auto [face, level] = queue.front();
             queue.pop_front();
-            if (face->info().nestingLevel != -1) continue;
+            if (face->info().nestingLevel != -1)
+                continue;
             face->info().nestingLevel = level;
             for (int i = 0; i < 3; ++i) {
                 auto neighbor = face->neighbor(i);
-                if (neighbor->info().nestingLevel != -1) continue;
+                if (neighbor->info().nestingLevel != -1)
+                    continue;
                 if (cdt.is_constrained({face, i}))
                     nextLevel.emplace_back(neighbor, level + 1);
                 else
@@ -87,7 +90,8 @@ std::vector<Cdt::Vertex_handle> insertLoop(Cdt& cdt, const std::vector<Vec2>& lo
 }  // namespace
 
 PolygonTriangulation triangulatePolygon(const std::vector<Vec2>& polygon) {
-    if (polygon.size() < 3) throw Error("an outline needs at least three points");
+    if (polygon.size() < 3)
+        throw Error("an outline needs at least three points");
     Cdt cdt;
     insertLoop(cdt, polygon);
     if (cdt.number_of_vertices() != polygon.size())
@@ -98,11 +102,13 @@ PolygonTriangulation triangulatePolygon(const std::vector<Vec2>& polygon) {
     result.points = polygon;
     int count = 0;
     for (auto face : cdt.finite_face_handles())
-        if (face->info().inDomain()) face->info().index = count++;
+        if (face->info().inDomain())
+            face->info().index = count++;
     result.triangles.reserve(count);
     result.neighbors.reserve(count);
     for (auto face : cdt.finite_face_handles()) {
-        if (!face->info().inDomain()) continue;
+        if (!face->info().inDomain())
+            continue;
         std::array<int, 3> corners{}, across{};
         for (int k = 0; k < 3; ++k) {
             corners[k] = face->vertex(k)->info().value;
@@ -114,14 +120,16 @@ PolygonTriangulation triangulatePolygon(const std::vector<Vec2>& polygon) {
         result.triangles.push_back(corners);
         result.neighbors.push_back(across);
     }
-    if (result.triangles.empty()) throw Error("the outline encloses no area");
+    if (result.triangles.empty())
+        throw Error("the outline encloses no area");
     return result;
 }
 
 PatchTriangulation triangulatePatch(const std::vector<Vec2>& boundary,
                                     const std::vector<Vec2>& interiorPoints,
                                     const std::vector<bool>& isRimPoint) {
-    if (boundary.size() < 3) throw Error("a patch boundary needs at least three points");
+    if (boundary.size() < 3)
+        throw Error("a patch boundary needs at least three points");
     Cdt cdt;
     insertLoop(cdt, boundary);
     markDomains(cdt);
@@ -132,15 +140,18 @@ PatchTriangulation triangulatePatch(const std::vector<Vec2>& boundary,
     std::vector<Vec2> inside;
     for (const Vec2& p : interiorPoints) {
         auto face = cdt.locate(Point(p.x(), p.y()));
-        if (!cdt.is_infinite(face) && face->info().inDomain()) inside.push_back(p);
+        if (!cdt.is_infinite(face) && face->info().inDomain())
+            inside.push_back(p);
     }
     auto insertNew = [&](const Vec2& p) {
         auto vertex = cdt.insert(Point(p.x(), p.y()));
-        if (vertex->info().value != kNoIndex) return;  // coincides with an existing point
+        if (vertex->info().value != kNoIndex)
+            return;  // coincides with an existing point
         vertex->info().value = static_cast<int>(result.points.size());
         result.points.push_back(p);
     };
-    for (const Vec2& p : inside) insertNew(p);
+    for (const Vec2& p : inside)
+        insertNew(p);
     markDomains(cdt);
 
     // Split interior edges that join two rim points: mirrored, such an edge
@@ -154,23 +165,27 @@ PatchTriangulation triangulatePatch(const std::vector<Vec2>& boundary,
             auto face = edge.first;
             int i = edge.second;
             auto mirror = face->neighbor(i);
-            if (cdt.is_constrained(edge)) continue;
+            if (cdt.is_constrained(edge))
+                continue;
             if (!face->info().inDomain() && (cdt.is_infinite(mirror) || !mirror->info().inDomain()))
                 continue;
             int a = face->vertex(Cdt::cw(i))->info().value;
             int b = face->vertex(Cdt::ccw(i))->info().value;
-            if (isRim(a) && isRim(b)) midpoints.push_back(0.5 * (result.points[a] + result.points[b]));
+            if (isRim(a) && isRim(b))
+                midpoints.push_back(0.5 * (result.points[a] + result.points[b]));
         }
-        if (midpoints.empty()) break;
-        for (const Vec2& p : midpoints) insertNew(p);
+        if (midpoints.empty())
+            break;
+        for (const Vec2& p : midpoints)
+            insertNew(p);
         markDomains(cdt);
     }
 
     for (auto face : cdt.finite_face_handles()) {
-        if (!face->info().inDomain()) continue;
-        result.triangles.push_back(
-            {face->vertex(0)->info().value, face->vertex(1)->info().value,
-             face->vertex(2)->info().value});
+        if (!face->info().inDomain())
+            continue;
+        result.triangles.push_back({face->vertex(0)->info().value, face->vertex(1)->info().value,
+                                    face->vertex(2)->info().value});
     }
     return result;
 }

@@ -8,7 +8,7 @@ namespace rigmesh {
 namespace {
 
 class StageClock {
-public:
+  public:
     double lap() {
         auto now = std::chrono::steady_clock::now();
         double ms = std::chrono::duration<double, std::milli>(now - last_).count();
@@ -16,7 +16,7 @@ public:
         return ms;
     }
 
-private:
+  private:
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
@@ -38,15 +38,18 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     ms.decompose = clock.lap();
 
     SurfaceOptions surfaceOptions = options.surface;
-    if (!(surfaceOptions.targetEdgeLength > 0)) surfaceOptions.targetEdgeLength = result.polygon.spacing;
+    if (!(surfaceOptions.targetEdgeLength > 0))
+        surfaceOptions.targetEdgeLength = result.polygon.spacing;
     result.targetEdgeLength = surfaceOptions.targetEdgeLength;
     for (std::size_t c = 0; c < result.decomposition.cylinders.size(); ++c)
         result.cylinders.push_back(buildCrossSections(result.decomposition, static_cast<int>(c),
-                                                      surfaceOptions.targetEdgeLength, options.sections));
+                                                      surfaceOptions.targetEdgeLength,
+                                                      options.sections));
     ms.crossSections = clock.lap();
     result.surface = buildSurface(result.decomposition, result.cylinders, surfaceOptions);
     ms.surface = clock.lap();
-    ms.total = ms.clean + ms.triangulate + ms.chordalAxis + ms.decompose + ms.crossSections + ms.surface;
+    ms.total =
+        ms.clean + ms.triangulate + ms.chordalAxis + ms.decompose + ms.crossSections + ms.surface;
     return result;
 }
 

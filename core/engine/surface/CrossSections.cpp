@@ -6,7 +6,9 @@
 namespace rigmesh {
 namespace {
 
-double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+double cross2(const Vec2& a, const Vec2& b) {
+    return a.x() * b.y() - a.y() * b.x();
+}
 
 // A chord as centre, unit direction (left to right) and half-length: the
 // quantities the paper smooths.
@@ -27,7 +29,8 @@ ChordFrame frameOf(const Vec2& left, const Vec2& right) {
 // connecting region or a cap.
 void smoothFrames(std::vector<ChordFrame>& frames, const CrossSectionOptions& options) {
     const int count = static_cast<int>(frames.size());
-    if (count < 3) return;
+    if (count < 3)
+        return;
     for (int iteration = 0; iteration < options.axisSmoothingIterations; ++iteration) {
         std::vector<ChordFrame> next = frames;
         for (int i = 1; i + 1 < count; ++i) {
@@ -36,7 +39,8 @@ void smoothFrames(std::vector<ChordFrame>& frames, const CrossSectionOptions& op
                              s * 0.5 * (frames[i - 1].centre + frames[i + 1].centre);
             Vec2 direction = (1 - s) * frames[i].direction +
                              s * 0.5 * (frames[i - 1].direction + frames[i + 1].direction);
-            if (direction.norm() > 1e-12) next[i].direction = direction.normalized();
+            if (direction.norm() > 1e-12)
+                next[i].direction = direction.normalized();
             next[i].radius = (1 - s) * frames[i].radius +
                              s * 0.5 * (frames[i - 1].radius + frames[i + 1].radius);
         }
@@ -67,11 +71,13 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames,
     }
     std::vector<CrossSection> candidates{first};
     if (count > 1) {
-        const int intervals = std::max(1, static_cast<int>(std::lround(parameter.back() / spacing)));
+        const int intervals =
+            std::max(1, static_cast<int>(std::lround(parameter.back() / spacing)));
         int segment = 0;
         for (int k = 1; k < intervals; ++k) {
             double target = parameter.back() * k / intervals;
-            while (segment + 2 < count && parameter[segment + 1] < target) ++segment;
+            while (segment + 2 < count && parameter[segment + 1] < target)
+                ++segment;
             double span = parameter[segment + 1] - parameter[segment];
             double f = span > 0 ? std::clamp((target - parameter[segment]) / span, 0.0, 1.0) : 0.0;
             const ChordFrame& a = frames[segment];
@@ -88,11 +94,14 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames,
     std::vector<CrossSection> kept{candidates.front()};
     for (std::size_t i = 1; i + 1 < candidates.size(); ++i) {
         const CrossSection& c = candidates[i];
-        if (segmentsIntersect(c.left, c.right, kept.back().left, kept.back().right)) continue;
-        if (segmentsIntersect(c.left, c.right, last.left, last.right)) continue;
+        if (segmentsIntersect(c.left, c.right, kept.back().left, kept.back().right))
+            continue;
+        if (segmentsIntersect(c.left, c.right, last.left, last.right))
+            continue;
         kept.push_back(c);
     }
-    if (candidates.size() > 1) kept.push_back(last);
+    if (candidates.size() > 1)
+        kept.push_back(last);
     return kept;
 }
 
@@ -101,7 +110,8 @@ Vec2 firstCrossing(const std::vector<Vec2>& side, const Vec2& origin, const Vec2
     for (std::size_t i = 1; i < side.size(); ++i) {
         double a = (side[i - 1] - origin).dot(axis);
         double b = (side[i] - origin).dot(axis);
-        if (b >= t && a < t) return side[i - 1] + (t - a) / (b - a) * (side[i] - side[i - 1]);
+        if (b >= t && a < t)
+            return side[i - 1] + (t - a) / (b - a) * (side[i] - side[i - 1]);
     }
     return side.back();
 }
@@ -122,7 +132,8 @@ CapSlices sliceCap(const CrossSection& base, const std::vector<Vec2>& path,
     Vec2 outward = Vec2(-span.y(), span.x()).normalized();
     std::size_t tip = 0;
     for (std::size_t i = 1; i < path.size(); ++i)
-        if ((path[i] - origin).dot(outward) > (path[tip] - origin).dot(outward)) tip = i;
+        if ((path[i] - origin).dot(outward) > (path[tip] - origin).dot(outward))
+            tip = i;
     CapSlices cap{{}, path[tip], pathIndices[tip]};
     double height = (path[tip] - origin).dot(outward);
     std::vector<Vec2> rightSide(path.begin(), path.begin() + static_cast<long>(tip) + 1);
@@ -135,7 +146,8 @@ CapSlices sliceCap(const CrossSection& base, const std::vector<Vec2>& path,
         slice.right = firstCrossing(rightSide, origin, outward, t);
         slice.inCap = true;
         const CrossSection& previous = cap.slices.empty() ? base : cap.slices.back();
-        if (segmentsIntersect(slice.left, slice.right, previous.left, previous.right)) continue;
+        if (segmentsIntersect(slice.left, slice.right, previous.left, previous.right))
+            continue;
         cap.slices.push_back(slice);
     }
     return cap;
@@ -167,7 +179,8 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
     const auto& points = decomposition.axis.cdt.points;
 
     std::vector<ChordFrame> frames;
-    for (const auto& chord : cylinder.chords) frames.push_back(frameOf(points[chord[0]], points[chord[1]]));
+    for (const auto& chord : cylinder.chords)
+        frames.push_back(frameOf(points[chord[0]], points[chord[1]]));
     smoothFrames(frames, options);
 
     auto polygonSection = [&](const PolygonEdge& chord) {
@@ -184,7 +197,8 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
     CylinderSections result;
     auto pathPoints = [&](const std::vector<int>& indices) {
         std::vector<Vec2> path;
-        for (int i : indices) path.push_back(points[i]);
+        for (int i : indices)
+            path.push_back(points[i]);
         return path;
     };
     if (!cylinder.startCap.empty()) {
@@ -198,7 +212,8 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
     }
     result.sections.insert(result.sections.end(), body.begin(), body.end());
     if (!cylinder.endCap.empty()) {
-        CapSlices cap = sliceCap(body.back(), pathPoints(cylinder.endCap), cylinder.endCap, spacing);
+        CapSlices cap =
+            sliceCap(body.back(), pathPoints(cylinder.endCap), cylinder.endCap, spacing);
         result.sections.insert(result.sections.end(), cap.slices.begin(), cap.slices.end());
         result.endTip = cap.tip;
         result.endTipPolygonIndex = cap.tipIndex;

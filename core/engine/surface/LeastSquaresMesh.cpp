@@ -26,7 +26,8 @@ std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double
         std::sort(neighbours.begin(), neighbours.end());
         neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
         entries.emplace_back(i, i, 1.0);
-        for (int j : neighbours) entries.emplace_back(i, j, -1.0 / static_cast<double>(neighbours.size()));
+        for (int j : neighbours)
+            entries.emplace_back(i, j, -1.0 / static_cast<double>(neighbours.size()));
     }
     Eigen::SparseMatrix<double> laplacian(n, n);
     laplacian.setFromTriplets(entries.begin(), entries.end());
@@ -35,11 +36,16 @@ std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double
     Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(n, 3);
     for (int i = 0; i < n; ++i) {
         double w2 = anchorWeights[i] * anchorWeights[i];
-        if (w2 <= 0) continue;
+        if (w2 <= 0)
+            continue;
         system.coeffRef(i, i) += w2;
         rhs.row(i) = w2 * mesh.vertices[i].transpose();
     }
-    Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> solver;
+    Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>> solver;
+    // AMD alone: CHOLMOD's default also tries METIS, which costs more than
+    // it saves on surface meshes of this size.
+    solver.cholmod().nmethods = 1;
+    solver.cholmod().method[0].ordering = CHOLMOD_AMD;
     solver.compute(system);
     if (solver.info() != Eigen::Success)
         throw Error("least-squares smoothing failed: the surface system could not be factored");
@@ -48,7 +54,8 @@ std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double
         throw Error("least-squares smoothing failed: the surface system has no finite solution");
 
     std::vector<Vec3> positions(n);
-    for (int i = 0; i < n; ++i) positions[i] = solution.row(i).transpose();
+    for (int i = 0; i < n; ++i)
+        positions[i] = solution.row(i).transpose();
     return positions;
 }
 

@@ -18,13 +18,14 @@ namespace {
 
 double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
     Vec2 ab = b - a;
-    double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+    double t =
+        ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
     return (p - (a + t * ab)).norm();
 }
 
 // The upper half of the surface under construction.
 class HalfSurfaceBuilder {
-public:
+  public:
     HalfSurfaceBuilder(const Decomposition& decomposition, const SurfaceOptions& options)
         : decomposition_(decomposition),
           options_(options),
@@ -39,17 +40,21 @@ public:
             rings.push_back({outlineVertex(cylinder.startTipPolygonIndex, *cylinder.startTip,
                                            origin(-1, 0.0))});
         for (std::size_t s = 0; s < cylinder.sections.size(); ++s)
-            rings.push_back(addRing(cylinder.sections[s], origin(static_cast<int>(s), cylinder.axisPosition[s])));
+            rings.push_back(addRing(cylinder.sections[s],
+                                    origin(static_cast<int>(s), cylinder.axisPosition[s])));
         if (cylinder.endTip)
             rings.push_back({outlineVertex(cylinder.endTipPolygonIndex, *cylinder.endTip,
                                            origin(-1, cylinder.endTipPosition))});
-        for (std::size_t r = 1; r < rings.size(); ++r) stitch(rings[r - 1], rings[r]);
+        for (std::size_t r = 1; r < rings.size(); ++r)
+            stitch(rings[r - 1], rings[r]);
 
         const CylinderRegion& region = decomposition_.cylinders[index];
         int first = cylinder.startTip ? 1 : 0;
         int last = static_cast<int>(rings.size()) - (cylinder.endTip ? 2 : 1);
-        if (region.startConnecting >= 0) portRings_[chordKey(cylinder.sections.front())] = rings[first];
-        if (region.endConnecting >= 0) portRings_[chordKey(cylinder.sections.back())] = rings[last];
+        if (region.startConnecting >= 0)
+            portRings_[chordKey(cylinder.sections.front())] = rings[first];
+        if (region.endConnecting >= 0)
+            portRings_[chordKey(cylinder.sections.back())] = rings[last];
     }
 
     void addConnectingRegion(int index) {
@@ -63,10 +68,12 @@ public:
         for (int t : region.triangles)
             for (int k = 0; k < 3; ++k) {
                 int neighbour = cdt.neighbors[t][k];
-                if (neighbour >= 0 && inside.count(neighbour)) continue;
+                if (neighbour >= 0 && inside.count(neighbour))
+                    continue;
                 next[cdt.triangles[t][(k + 1) % 3]] = cdt.triangles[t][(k + 2) % 3];
             }
-        if (next.empty()) throw Error("internal error: a connecting region without boundary");
+        if (next.empty())
+            throw Error("internal error: a connecting region without boundary");
 
         const VertexOrigin origin{RegionKind::Connecting, index, -1, 0.0, false};
         std::vector<int> loop;
@@ -91,7 +98,8 @@ public:
             if (loop.size() > 4 * static_cast<std::size_t>(pointCount) + 4 * positions_.size())
                 throw Error("internal error: a connecting region's boundary does not close");
         } while (a != start);
-        for (int v : loop) loop2d.push_back(positions_[v].head<2>());
+        for (int v : loop)
+            loop2d.push_back(positions_[v].head<2>());
 
         PatchTriangulation patch = triangulatePatch(loop2d, latticeInside(loop2d), rim);
         std::vector<int> vertexOf(patch.points.size());
@@ -100,7 +108,8 @@ public:
                                           : addVertex(Vec3(patch.points[i].x(), patch.points[i].y(),
                                                            options_.targetEdgeLength),
                                                       origin);
-        for (const auto& t : patch.triangles) faces_.push_back({vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]});
+        for (const auto& t : patch.triangles)
+            faces_.push_back({vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]});
     }
 
     // Mirrors the upper half through the sketch plane into a closed surface.
@@ -117,18 +126,21 @@ public:
                 continue;
             }
             surface.mirror[v] = static_cast<int>(surface.mesh.vertices.size());
-            surface.mesh.vertices.push_back(Vec3(positions_[v].x(), positions_[v].y(), -positions_[v].z()));
+            surface.mesh.vertices.push_back(
+                Vec3(positions_[v].x(), positions_[v].y(), -positions_[v].z()));
             surface.origins.push_back(origins_[v]);
         }
         surface.mirror.resize(surface.mesh.vertices.size());
-        for (int v = 0; v < n; ++v) surface.mirror[surface.mirror[v]] = v;
+        for (int v = 0; v < n; ++v)
+            surface.mirror[surface.mirror[v]] = v;
         surface.mesh.faces = faces_;
         for (const auto& f : faces_)
-            surface.mesh.faces.push_back({surface.mirror[f[0]], surface.mirror[f[2]], surface.mirror[f[1]]});
+            surface.mesh.faces.push_back(
+                {surface.mirror[f[0]], surface.mirror[f[2]], surface.mirror[f[1]]});
         return surface;
     }
 
-private:
+  private:
     static std::pair<int, int> chordKey(const CrossSection& section) {
         return std::minmax(section.leftPolygonIndex, section.rightPolygonIndex);
     }
@@ -142,9 +154,11 @@ private:
     // Outline vertices are shared by polygon index between regions.
     int outlineVertex(int polygonIndex, const Vec2& p, VertexOrigin origin) {
         origin.onOutline = true;
-        if (polygonIndex < 0) return addVertex(Vec3(p.x(), p.y(), 0.0), origin);
+        if (polygonIndex < 0)
+            return addVertex(Vec3(p.x(), p.y(), 0.0), origin);
         int& vertex = polygonVertex_[polygonIndex];
-        if (vertex < 0) vertex = addVertex(Vec3(p.x(), p.y(), 0.0), origin);
+        if (vertex < 0)
+            vertex = addVertex(Vec3(p.x(), p.y(), 0.0), origin);
         return vertex;
     }
 
@@ -152,10 +166,11 @@ private:
     // 2.2): theta = 0 at the left end point, pi at the right one.
     std::vector<int> addRing(const CrossSection& section, const VertexOrigin& origin) {
         const double radius = section.radius();
-        const int segments =
-            std::max(2, static_cast<int>(std::lround(std::numbers::pi * radius / options_.targetEdgeLength)));
+        const int segments = std::max(2, static_cast<int>(std::lround(std::numbers::pi * radius /
+                                                                      options_.targetEdgeLength)));
         const Vec2 centre = section.centre();
-        const Vec2 direction = radius > 0 ? Vec2((section.right - section.left) / (2 * radius)) : Vec2(1, 0);
+        const Vec2 direction =
+            radius > 0 ? Vec2((section.right - section.left) / (2 * radius)) : Vec2(1, 0);
         std::vector<int> ring{outlineVertex(section.leftPolygonIndex, section.left, origin)};
         for (int j = 1; j < segments; ++j) {
             double theta = std::numbers::pi * j / segments;
@@ -189,7 +204,8 @@ private:
     std::vector<Vec2> latticeInside(const std::vector<Vec2>& boundary) const {
         const double h = options_.targetEdgeLength;
         Eigen::AlignedBox2d box;
-        for (const Vec2& p : boundary) box.extend(p);
+        for (const Vec2& p : boundary)
+            box.extend(p);
         std::vector<Vec2> points;
         const double rowHeight = h * std::sqrt(3.0) / 2.0;
         int row = 0;
@@ -198,8 +214,11 @@ private:
                 Vec2 p(x, y);
                 double clearance = std::numeric_limits<double>::max();
                 for (std::size_t i = 0; i < boundary.size(); ++i)
-                    clearance = std::min(clearance, pointSegmentDistance(p, boundary[i], boundary[(i + 1) % boundary.size()]));
-                if (clearance > 0.5 * h) points.push_back(p);
+                    clearance = std::min(
+                        clearance,
+                        pointSegmentDistance(p, boundary[i], boundary[(i + 1) % boundary.size()]));
+                if (clearance > 0.5 * h)
+                    points.push_back(p);
             }
         return points;
     }
@@ -222,7 +241,8 @@ std::vector<double> anchorWeights(const SketchSurface& surface, const Decomposit
     std::vector<double> weights(surface.mesh.vertices.size(), 0.0);
     for (std::size_t v = 0; v < weights.size(); ++v) {
         const VertexOrigin& origin = surface.origins[v];
-        if (origin.kind != RegionKind::Cylindrical) continue;
+        if (origin.kind != RegionKind::Cylindrical)
+            continue;
         const CylinderRegion& region = decomposition.cylinders[origin.region];
         const CylinderSections& sections = cylinders[origin.region];
         double distance = std::numeric_limits<double>::infinity();
@@ -231,7 +251,8 @@ std::vector<double> anchorWeights(const SketchSurface& surface, const Decomposit
         if (region.endConnecting >= 0)
             distance = std::min(distance, sections.axisPosition.back() - origin.axisPosition);
         double diameter = 0.0;
-        for (const auto& s : sections.sections) diameter += 2.0 * s.radius();
+        for (const auto& s : sections.sections)
+            diameter += 2.0 * s.radius();
         diameter /= static_cast<double>(sections.sections.size());
         double falloff = std::max(options.anchorFalloff * diameter, 1e-12);
         weights[v] = options.maxAnchorWeight * std::clamp(distance / falloff, 0.0, 1.0);
@@ -257,16 +278,19 @@ void symmetrize(SketchSurface& surface) {
 }  // namespace
 
 SketchSurface buildSurface(const Decomposition& decomposition,
-                           const std::vector<CylinderSections>& cylinders, const SurfaceOptions& options) {
-    if (!(options.targetEdgeLength > 0)) throw Error("the target edge length must be positive");
+                           const std::vector<CylinderSections>& cylinders,
+                           const SurfaceOptions& options) {
+    if (!(options.targetEdgeLength > 0))
+        throw Error("the target edge length must be positive");
     HalfSurfaceBuilder builder(decomposition, options);
-    for (std::size_t c = 0; c < cylinders.size(); ++c) builder.addCylinder(static_cast<int>(c), cylinders[c]);
+    for (std::size_t c = 0; c < cylinders.size(); ++c)
+        builder.addCylinder(static_cast<int>(c), cylinders[c]);
     for (std::size_t r = 0; r < decomposition.connecting.size(); ++r)
         builder.addConnectingRegion(static_cast<int>(r));
     SketchSurface surface = builder.mirrored();
     if (options.smooth) {
-        surface.mesh.vertices =
-            leastSquaresMesh(surface.mesh, anchorWeights(surface, decomposition, cylinders, options));
+        surface.mesh.vertices = leastSquaresMesh(
+            surface.mesh, anchorWeights(surface, decomposition, cylinders, options));
         symmetrize(surface);
     }
     return surface;

@@ -28,8 +28,8 @@ enum class RegionKind : std::uint8_t { Cylindrical, Connecting };
 // Where a vertex came from: what the rig and later local updates need.
 struct VertexOrigin {
     RegionKind kind = RegionKind::Cylindrical;
-    int region = -1;            // index of the cylindrical or connecting region
-    int section = -1;           // cross-section index in the cylinder; -1 at a tip or in a connecting region
+    int region = -1;   // index of the cylindrical or connecting region
+    int section = -1;  // cross-section index in the cylinder; -1 at a tip or in a connecting region
     double axisPosition = 0.0;  // arc length along the cylinder's axis (cylindrical vertices)
     bool onOutline = false;     // on the sketch outline, i.e. on the mirror plane
 };
