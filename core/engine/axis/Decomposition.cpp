@@ -47,23 +47,6 @@ bool isJunction(const ChordalAxis& axis, int triangle) {
     return axis.kind[triangle] == TriangleKind::Junction;
 }
 
-// Grows the cap at a terminal end (Teddy's fan): returns how many chords the
-// cap swallows, at most `limit`. `sleeves` and `chords` run from the tip inward.
-int capGrowth(const ChordalAxis& axis, int terminal, const std::vector<int>& sleeves,
-              const std::vector<PolygonEdge>& chords, int limit, double factor) {
-    std::vector<int> region{terminal};
-    int swallowed = 0;
-    while (swallowed < limit) {
-        std::vector<int> grown = region;
-        grown.push_back(sleeves[swallowed]);
-        if (!axis.outlineInsideChordCircle(grown, chords[swallowed + 1], factor))
-            break;
-        region = std::move(grown);
-        ++swallowed;
-    }
-    return swallowed;
-}
-
 int sharedEndpoint(const PolygonEdge& a, const PolygonEdge& b) {
     if (a[0] == b[0] || a[0] == b[1])
         return a[0];
@@ -72,29 +55,64 @@ int sharedEndpoint(const PolygonEdge& a, const PolygonEdge& b) {
     return -1;
 }
 
-// Near a junction the CDT often fans out from one concave outline vertex (an
-// armpit, a crotch): consecutive chords share that vertex and turn around it,
-// so cross sections there would crowd on one side. Those fan sleeves belong to
-// the connecting region. Returns how many leading sleeves (from the junction
-// side of `chords`) to absorb, at most `limit`.
-int junctionFanLength(const std::vector<PolygonEdge>& chords, int limit) {
+// Near a junction, and at a blunt end, the CDT often fans out from one
+// concave outline vertex (an armpit, a crotch, the corner of a flat end):
+// consecutive chords share that vertex and turn around it, so cross sections
+// there would crowd on one side and the axis would bend into the corner.
+// Returns how many leading chords of `chords` (from the junction or tip side)
+// end inside such fans, at most `limit`: up to two fans of at least four
+// chords each, each starting within a few chords of the previous one.
+int fanLength(const std::vector<PolygonEdge>& chords, int limit) {
+    constexpr int kLookAhead = 8;   // chords a fan may start after the current end
+    constexpr int kMinimumRun = 3;  // chords after the first sharing the pivot
+    const int count = static_cast<int>(chords.size());
     int absorbed = 0;
     for (int fan = 0; fan < 2; ++fan) {
-        if (absorbed + 1 >= static_cast<int>(chords.size()))
+        int found = -1;
+        for (int start = absorbed; start <= absorbed + kLookAhead && start + 1 < count; ++start) {
+            int pivot = sharedEndpoint(chords[start], chords[start + 1]);
+            int end = start + 1;
+            while (end + 1 < count && (chords[end + 1][0] == pivot || chords[end + 1][1] == pivot))
+                ++end;
+            if (end - start >= kMinimumRun && end <= limit) {
+                found = end;
+                break;
+            }
+        }
+        if (found < 0)
             break;
-        int pivot = sharedEndpoint(chords[absorbed], chords[absorbed + 1]);
-        if (pivot < 0)
-            break;
-        int end = absorbed;
-        while (end + 1 < static_cast<int>(chords.size()) && end < limit &&
-               (chords[end + 1][0] == pivot || chords[end + 1][1] == pivot))
-            ++end;
-        // A fan of one or two sleeves is just the ordinary zig-zag of a sleeve chain.
-        if (end - absorbed < 3)
-            break;
-        absorbed = end;
+        absorbed = found;
     }
     return absorbed;
+}
+
+// Grows the cap at a terminal end: returns how many chords it swallows, at
+// most `limit`; `sleeves` and `chords` run from the tip inward. The cap takes
+// what Teddy's circle test allows (the region so far lies within the circle
+// of the next chord) and also fans of chords around one corner of a blunt
+// end, whose axis would otherwise bend into that corner; the two alternate
+// until neither applies.
+int capLength(const ChordalAxis& axis, int terminal, const std::vector<int>& sleeves,
+              const std::vector<PolygonEdge>& chords, int limit, double factor) {
+    std::vector<int> region{terminal};
+    int swallowed = 0;
+    for (bool fanned = true; fanned;) {
+        while (swallowed < limit) {
+            std::vector<int> grown = region;
+            grown.push_back(sleeves[swallowed]);
+            if (!axis.outlineInsideChordCircle(grown, chords[swallowed + 1], factor))
+                break;
+            region = std::move(grown);
+            ++swallowed;
+        }
+        std::vector<PolygonEdge> rest(chords.begin() + swallowed, chords.end());
+        int fan = fanLength(rest, limit - swallowed);
+        for (int i = 0; i < fan; ++i)
+            region.push_back(sleeves[swallowed + i]);
+        swallowed += fan;
+        fanned = fan > 0;  // after a fan the circle test may pass again
+    }
+    return swallowed;
 }
 
 // Moves the fan sleeves next to junctions from the branch into the
@@ -104,7 +122,7 @@ void absorbJunctionFans(AxisBranch& branch, std::vector<int>& regionOfTriangle,
                         bool endAtJunction) {
     const int limit = static_cast<int>(branch.chords.size()) / 4;
     if (startAtJunction) {
-        int count = junctionFanLength(branch.chords, limit);
+        int count = fanLength(branch.chords, limit);
         int region = regionOfTriangle[branch.startNode];
         for (int i = 0; i < count; ++i) {
             regionOfTriangle[branch.sleeves[i]] = region;
@@ -115,7 +133,7 @@ void absorbJunctionFans(AxisBranch& branch, std::vector<int>& regionOfTriangle,
     }
     if (endAtJunction) {
         std::vector<PolygonEdge> reversed(branch.chords.rbegin(), branch.chords.rend());
-        int count = junctionFanLength(reversed, limit);
+        int count = fanLength(reversed, limit);
         int region = regionOfTriangle[branch.endNode];
         for (int i = 0; i < count; ++i) {
             int sleeve = branch.sleeves[branch.sleeves.size() - 1 - i];
@@ -210,14 +228,14 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
         int fromStart = 0;
         if (startIsCap) {
             int limit = endIsCap ? (chordCount - 1) / 2 : chordCount - 1;
-            fromStart = capGrowth(axis, branch.startNode, branch.sleeves, chords, limit,
+            fromStart = capLength(axis, branch.startNode, branch.sleeves, chords, limit,
                                   options.capCircleFactor);
         }
         int fromEnd = 0;
         if (endIsCap) {
             std::vector<int> sleeves(branch.sleeves.rbegin(), branch.sleeves.rend());
             std::vector<PolygonEdge> reversed(chords.rbegin(), chords.rend());
-            fromEnd = capGrowth(axis, branch.endNode, sleeves, reversed, chordCount - 1 - fromStart,
+            fromEnd = capLength(axis, branch.endNode, sleeves, reversed, chordCount - 1 - fromStart,
                                 options.capCircleFactor);
         }
         cylinder.chords.assign(chords.begin() + fromStart, chords.end() - fromEnd);

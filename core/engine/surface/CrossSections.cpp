@@ -105,15 +105,22 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames,
     return kept;
 }
 
-// Where a polyline first reaches height `t` along `axis` from `origin`.
-Vec2 firstCrossing(const std::vector<Vec2>& side, const Vec2& origin, const Vec2& axis, double t) {
-    for (std::size_t i = 1; i < side.size(); ++i) {
-        double a = (side[i - 1] - origin).dot(axis);
-        double b = (side[i] - origin).dot(axis);
-        if (b >= t && a < t)
-            return side[i - 1] + (t - a) / (b - a) * (side[i] - side[i - 1]);
+// The point at arc length `distance` along a polyline.
+Vec2 pointAtArcLength(const std::vector<Vec2>& polyline, double distance) {
+    for (std::size_t i = 1; i < polyline.size(); ++i) {
+        double step = (polyline[i] - polyline[i - 1]).norm();
+        if (distance <= step && step > 0)
+            return polyline[i - 1] + distance / step * (polyline[i] - polyline[i - 1]);
+        distance -= step;
     }
-    return side.back();
+    return polyline.back();
+}
+
+double polylineLength(const std::vector<Vec2>& polyline) {
+    double length = 0.0;
+    for (std::size_t i = 1; i < polyline.size(); ++i)
+        length += (polyline[i] - polyline[i - 1]).norm();
+    return length;
 }
 
 struct CapSlices {
@@ -122,28 +129,31 @@ struct CapSlices {
     int tipIndex;
 };
 
-// Slices the outline around a tip perpendicular to the axis (paper 2.2's
-// cross sections, continued into the cap). `path` runs counter-clockwise from
-// the base chord's right end point around the tip to its left end point.
+// Continues the cross sections into a cap (paper 2.2). The outline around the
+// tip is split at its arc-length middle, the tip, and each side is walked in
+// equal steps: slice k joins the k-th points of both sides, like the latitude
+// circles of a dome, so blunt and pointed ends both get rings about one edge
+// length apart. `path` runs counter-clockwise from the base chord's right end
+// point around the tip to its left end point.
 CapSlices sliceCap(const CrossSection& base, const std::vector<Vec2>& path,
                    const std::vector<int>& pathIndices, double spacing) {
-    const Vec2 origin = base.centre();
-    Vec2 span = base.right - base.left;
-    Vec2 outward = Vec2(-span.y(), span.x()).normalized();
+    std::vector<double> arc(path.size(), 0.0);
+    for (std::size_t i = 1; i < path.size(); ++i)
+        arc[i] = arc[i - 1] + (path[i] - path[i - 1]).norm();
     std::size_t tip = 0;
     for (std::size_t i = 1; i < path.size(); ++i)
-        if ((path[i] - origin).dot(outward) > (path[tip] - origin).dot(outward))
+        if (std::abs(arc[i] - 0.5 * arc.back()) < std::abs(arc[tip] - 0.5 * arc.back()))
             tip = i;
     CapSlices cap{{}, path[tip], pathIndices[tip]};
-    double height = (path[tip] - origin).dot(outward);
     std::vector<Vec2> rightSide(path.begin(), path.begin() + static_cast<long>(tip) + 1);
     std::vector<Vec2> leftSide(path.rbegin(), path.rend() - static_cast<long>(tip));
-    const int intervals = std::max(1, static_cast<int>(std::ceil(height / spacing)));
+    const double rightLength = polylineLength(rightSide), leftLength = polylineLength(leftSide);
+    const int intervals =
+        std::max(1, static_cast<int>(std::ceil(std::max(rightLength, leftLength) / spacing)));
     for (int k = 1; k < intervals; ++k) {
-        double t = height * k / intervals;
         CrossSection slice;
-        slice.left = firstCrossing(leftSide, origin, outward, t);
-        slice.right = firstCrossing(rightSide, origin, outward, t);
+        slice.left = pointAtArcLength(leftSide, leftLength * k / intervals);
+        slice.right = pointAtArcLength(rightSide, rightLength * k / intervals);
         slice.inCap = true;
         const CrossSection& previous = cap.slices.empty() ? base : cap.slices.back();
         if (segmentsIntersect(slice.left, slice.right, previous.left, previous.right))
