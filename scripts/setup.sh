@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs what is missing (Debian 12 packages), then configures and builds
+# RigMesh Studio with the given CMake preset (default: dev).
+# Idempotent and quiet when everything is already there.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+preset="${1:-dev}"
+
+packages=(
+    cmake ninja-build g++ ccache pkg-config git
+    libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+    libeigen3-dev libsuitesparse-dev
+    nlohmann-json3-dev libtinyxml2-dev
+    qt6-base-dev
+    libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for package in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$package")
+    fi
+done
+
+if ((${#missing[@]})); then
+    echo "setup: installing ${missing[*]}"
+    sudo=""
+    if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+    export DEBIAN_FRONTEND=noninteractive
+    $sudo apt-get update -qq
+    $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# Configure once; later runs only rebuild what changed.
+if [ ! -f "build/$preset/build.ninja" ]; then
+    cmake --preset "$preset" >/dev/null
+fi
+cmake --build --preset "$preset"

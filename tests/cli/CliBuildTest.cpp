@@ -1,0 +1,114 @@
+// `rigmesh build` end to end: every good shared sketch becomes a mesh file and
+// statistics; every bad one a one-line reason and a non-zero exit.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "CliRunner.h"
+
+namespace fs = std::filesystem;
+using rigmesh::test::readWholeFile;
+using rigmesh::test::runCli;
+
+namespace {
+
+const fs::path kSketches = RIGMESH_SHARED_SKETCHES;
+
+std::vector<std::string> sketchNames(bool bad) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(kSketches)) {
+        std::string stem = entry.path().stem().string();
+        if (entry.path().extension() == ".json" && (stem.rfind("bad_", 0) == 0) == bad)
+            names.push_back(stem);
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+fs::path scratch(const std::string& name) {
+    fs::path folder = fs::temp_directory_path() / "rigmesh_cli_test";
+    fs::create_directories(folder);
+    return folder / name;
+}
+
+class GoodSketch : public testing::TestWithParam<std::string> {};
+class BadSketch : public testing::TestWithParam<std::string> {};
+
+TEST_P(GoodSketch, BuildsAMeshFileAndStatistics) {
+    const fs::path mesh = scratch(GetParam() + ".off");
+    const fs::path stats = scratch(GetParam() + ".json");
+    const fs::path svg = scratch(GetParam() + ".svg");
+    auto result = runCli("build '" + (kSketches / (GetParam() + ".json")).string() + "' -o '" +
+                         mesh.string() + "' --stats '" + stats.string() + "' --debug-svg '" +
+                         svg.string() + "'");
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_TRUE(result.err.empty()) << result.err;
+
+    auto json = nlohmann::json::parse(readWholeFile(stats));
+    EXPECT_GT(json["vertices"].get<int>(), 100);
+    EXPECT_GT(json["faces"].get<int>(), 100);
+    EXPECT_GT(json["ms_total"].get<double>(), 0.0);
+    for (const char* stage :
+         {"clean", "triangulate", "chordal_axis", "decompose", "cross_sections", "surface"})
+        EXPECT_TRUE(json["ms_stages"].contains(stage)) << stage;
+    EXPECT_TRUE(json["mesh"]["closed"].get<bool>());
+    EXPECT_TRUE(json["mesh"]["manifold"].get<bool>());
+    EXPECT_EQ(json["mesh"]["genus"].get<int>(), 0);
+
+    // The OFF header states the counts the statistics report.
+    std::string off = readWholeFile(mesh);
+    std::istringstream header(off);
+    std::string magic;
+    int vertices = 0, faces = 0;
+    header >> magic >> vertices >> faces;
+    EXPECT_EQ(magic, "OFF");
+    EXPECT_EQ(vertices, json["vertices"].get<int>());
+    EXPECT_EQ(faces, json["faces"].get<int>());
+    EXPECT_NE(readWholeFile(svg).find("<svg"), std::string::npos);
+}
+
+TEST_P(BadSketch, FailsWithAOneLineReasonAndWritesNothing) {
+    const fs::path mesh = scratch(GetParam() + ".obj");
+    fs::remove(mesh);
+    auto result = runCli("build '" + (kSketches / (GetParam() + ".json")).string() + "' -o '" +
+                         mesh.string() + "'");
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_EQ(result.err.rfind("rigmesh: ", 0), 0u) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_FALSE(fs::exists(mesh));
+}
+
+std::string paramName(const testing::TestParamInfo<std::string>& info) {
+    return info.param;
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedSketches, GoodSketch, testing::ValuesIn(sketchNames(false)),
+                         paramName);
+INSTANTIATE_TEST_SUITE_P(SharedSketches, BadSketch, testing::ValuesIn(sketchNames(true)),
+                         paramName);
+
+TEST(CliBuild, ExampleRunsWithoutTheSharedFolder) {
+    auto result = runCli("example");
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_NE(result.out.find("vertices"), std::string::npos);
+}
+
+TEST(CliBuild, MissingFileIsAClearError) {
+    auto result = runCli("build /nonexistent/sketch.json");
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.err.find("sketch.json"), std::string::npos) << result.err;
+}
+
+TEST(CliBuild, UnknownOutputFormatIsAClearError) {
+    auto result = runCli("build example -o " + scratch("x.xyz").string());
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.err.find(".obj"), std::string::npos) << result.err;
+}
+
+TEST(CliBuild, UnknownCommandAndOptionAreUsageErrors) {
+    EXPECT_EQ(runCli("frobnicate").exitCode, 2);
+    EXPECT_EQ(runCli("build example --frobnicate").exitCode, 1);
+}
+
+}  // namespace
