@@ -86,6 +86,14 @@ class GridRasterizer {
 }  // namespace
 
 bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, Vec2& point) {
+    // Disjoint bounding boxes settle most pairs, and also keep rounding noise
+    // from making far-apart collinear segments look like they cross.
+    if (std::max(a.x(), b.x()) < std::min(c.x(), d.x()) ||
+        std::max(c.x(), d.x()) < std::min(a.x(), b.x()) ||
+        std::max(a.y(), b.y()) < std::min(c.y(), d.y()) ||
+        std::max(c.y(), d.y()) < std::min(a.y(), b.y())) {
+        return false;
+    }
     const double o1 = orientation(a, b, c);
     const double o2 = orientation(a, b, d);
     if (o1 == 0.0 && o2 == 0.0) {

@@ -26,6 +26,8 @@ constexpr std::size_t kFewDistinctPoints = 8;
 // Bounds on the number of points of the cleaned polygon.
 constexpr std::size_t kMinSamples = 12;
 constexpr std::size_t kMaxSamples = 200000;
+// How many times the spacing may be halved to resolve thin parts.
+constexpr int kMaxRefinements = 3;
 
 // Coordinates below `negligible` in size print as 0 instead of as rounding noise.
 std::string formatPoint(const Vec2& p, double negligible = 0.0) {
@@ -143,6 +145,29 @@ void orientCounterClockwise(Polyline2& polygon) {
     }
 }
 
+struct Sampling {
+    Polyline2 polygon;             // counter-clockwise, uniformly spaced
+    std::optional<Vec2> crossing;  // where it crosses itself, if it does
+};
+
+// Resamples the closed outline with `count` points, then smooths and resamples
+// again to restore uniform spacing. Should smoothing make a thin part touch
+// itself, the unsmoothed samples are kept.
+Sampling sampleOutline(const Polyline2& outline, std::size_t count,
+                       const StrokeCleanOptions& options) {
+    Polyline2 polygon = resampleClosed(outline, count);
+    orientCounterClockwise(polygon);
+    if (options.smoothingIterations > 0) {
+        Polyline2 smoothed =
+            resampleClosed(taubinSmoothClosed(polygon, options.smoothingIterations), count);
+        if (!firstSelfCrossing(smoothed)) {
+            return {std::move(smoothed), std::nullopt};
+        }
+    }
+    const auto crossing = firstSelfCrossing(polygon);
+    return {std::move(polygon), crossing};
+}
+
 double unitSpacing(const StrokeCleanOptions& options, const Normalization& unit,
                    double unitDiagonal) {
     if (options.spacing > 0.0 && std::isfinite(options.spacing)) {
@@ -159,10 +184,11 @@ double unitSpacing(const StrokeCleanOptions& options, const Normalization& unit,
 std::size_t sampleCount(double length, double spacing) {
     const double count = std::round(length / spacing);
     if (!(count <= static_cast<double>(kMaxSamples))) {
-        throw Error("The stroke is too long for its size: sampling it every " +
-                    std::to_string(spacing) + " of its size would need more than " +
-                    std::to_string(kMaxSamples) +
-                    " points. Draw a simpler outline or use a larger spacing.");
+        throw Error(
+            "The stroke is too long for its size: at the requested spacing its outline "
+            "would need more than " +
+            std::to_string(kMaxSamples) +
+            " points. Draw a simpler outline or use a larger spacing.");
     }
     return std::max(kMinSamples, static_cast<std::size_t>(count));
 }
@@ -205,28 +231,26 @@ CleanPolygon cleanStroke(const std::vector<Vec2>& raw, const StrokeCleanOptions&
     }
 
     // Uniform arc-length samples, relative to the closed outline's own size.
+    // Parts of the outline thinner than the spacing can touch once sampled;
+    // finer spacings resolve them. An outline that still crosses itself at
+    // the finest spacing really does.
     const double closedDiagonal = boundingBoxDiagonal(stroke);
+    const double length = polylineLength(stroke, true);
     const double spacing = unitSpacing(options, unit, closedDiagonal);
-    const std::size_t count = sampleCount(polylineLength(stroke, true), spacing);
-    Polyline2 polygon = resampleClosed(stroke, count);
-    orientCounterClockwise(polygon);
-
-    // Smoothing moves the samples slightly apart or together; resampling the
-    // smoothed outline restores uniform spacing. Should smoothing make a thin
-    // part touch itself, the unsmoothed outline is kept.
-    Polyline2 smoothed = polygon;
-    if (options.smoothingIterations > 0) {
-        smoothed = resampleClosed(taubinSmoothClosed(polygon, options.smoothingIterations), count);
-    }
-    if (firstSelfCrossing(smoothed)) {
-        if (const auto crossing = firstSelfCrossing(polygon)) {
-            throw Error("The stroke crosses itself near " +
-                        formatPoint(unit.fromUnit(*crossing), 1e-9 * unit.scale) +
-                        ": draw a silhouette that does not cross itself.");
+    Sampling sampling = sampleOutline(stroke, sampleCount(length, spacing), options);
+    for (int refinement = 1; sampling.crossing && refinement <= kMaxRefinements; ++refinement) {
+        const double finer = spacing / std::pow(2.0, refinement);
+        if (length / finer > static_cast<double>(kMaxSamples)) {
+            break;
         }
-    } else {
-        polygon = std::move(smoothed);
+        sampling = sampleOutline(stroke, sampleCount(length, finer), options);
     }
+    if (sampling.crossing) {
+        throw Error("The stroke crosses itself near " +
+                    formatPoint(unit.fromUnit(*sampling.crossing), 1e-9 * unit.scale) +
+                    ": draw a silhouette that does not cross itself.");
+    }
+    const Polyline2& polygon = sampling.polygon;
     if (std::abs(signedArea(polygon)) < kMinRelativeArea * closedDiagonal * closedDiagonal) {
         throw Error(
             "The stroke encloses almost no area (it runs back along itself). Draw a "
@@ -243,7 +267,8 @@ CleanPolygon cleanStroke(const std::vector<Vec2>& raw, const StrokeCleanOptions&
                 "down.");
         }
     }
-    result.spacing = polylineLength(polygon, true) / static_cast<double>(count) * unit.scale;
+    result.spacing =
+        polylineLength(polygon, true) / static_cast<double>(polygon.size()) * unit.scale;
     return result;
 }
 

@@ -11,9 +11,12 @@ namespace rigmesh {
 
 namespace {
 
-// The fraction of the stroke's length at each end examined for overshoot.
-// Below 1/4, so a figure eight's crossing never falls in both windows.
-constexpr double kEndWindow = 0.2;
+// The most of the stroke's length that cutting at a crossing of its ends may
+// remove. A figure eight's smaller loop is longer than this, so a figure eight
+// is never mistaken for an overshoot.
+constexpr double kMaxOvershoot = 0.3;
+// The fraction of the stroke's length at each end examined for a near miss.
+constexpr double kNearMissWindow = 0.2;
 
 // A near miss is trimmed only when its closest approach is this much closer
 // than the stroke's actual end (so a plain gap is left alone)...
@@ -26,27 +29,33 @@ struct Windows {
     std::size_t tailBegin;  // segments [tailBegin, count) form the tail
 };
 
-Windows endWindows(const Polyline2& stroke) {
+Windows endWindows(const Polyline2& stroke, double fraction) {
     const std::size_t segments = stroke.size() - 1;
     const double length = polylineLength(stroke, false);
     Windows windows{0, segments};
     double travelled = 0.0;
-    while (windows.headEnd < segments && travelled < kEndWindow * length) {
+    while (windows.headEnd < segments && travelled < fraction * length) {
         travelled += (stroke[windows.headEnd + 1] - stroke[windows.headEnd]).norm();
         ++windows.headEnd;
     }
     travelled = 0.0;
-    while (windows.tailBegin > windows.headEnd && travelled < kEndWindow * length) {
+    while (windows.tailBegin > windows.headEnd && travelled < fraction * length) {
         --windows.tailBegin;
         travelled += (stroke[windows.tailBegin + 1] - stroke[windows.tailBegin]).norm();
     }
     return windows;
 }
 
-// Cuts at the crossing of a head segment with a tail segment, if any. Taking
-// the latest head segment and then the earliest tail segment leaves no other
-// head-tail crossing inside the kept loop.
-std::optional<Polyline2> cutAtEndCrossing(const Polyline2& stroke, const Windows& windows) {
+// Cuts at a crossing of a head segment with a tail segment that removes at
+// most kMaxOvershoot of the stroke. Taking the latest such head segment and
+// then the earliest tail segment leaves no other such crossing inside the kept
+// loop.
+std::optional<Polyline2> cutAtEndCrossing(const Polyline2& stroke) {
+    const Windows windows = endWindows(stroke, kMaxOvershoot);
+    std::vector<double> arc{0.0};
+    for (std::size_t i = 1; i < stroke.size(); ++i) {
+        arc.push_back(arc.back() + (stroke[i] - stroke[i - 1]).norm());
+    }
     std::vector<Segment2> segments;
     for (std::size_t i = 0; i < windows.headEnd; ++i) {
         segments.push_back({stroke[i], stroke[i + 1]});
@@ -65,14 +74,22 @@ std::optional<Polyline2> cutAtEndCrossing(const Polyline2& stroke, const Windows
             return a < headCount && b >= headCount && strokeIndex(b) > strokeIndex(a) + 1;
         },
         false);
-    if (crossings.empty()) {
-        return std::nullopt;
-    }
-    const SegmentCrossing* best = &crossings.front();
+    const SegmentCrossing* best = nullptr;
     for (const SegmentCrossing& c : crossings) {
-        if (c.first > best->first || (c.first == best->first && c.second < best->second)) {
+        const std::size_t head = strokeIndex(c.first);
+        const std::size_t tail = strokeIndex(c.second);
+        const double removed = arc[head] + (c.point - stroke[head]).norm() +
+                               (arc.back() - arc[tail] - (c.point - stroke[tail]).norm());
+        if (removed > kMaxOvershoot * arc.back()) {
+            continue;
+        }
+        if (best == nullptr || c.first > best->first ||
+            (c.first == best->first && c.second < best->second)) {
             best = &c;
         }
+    }
+    if (best == nullptr) {
+        return std::nullopt;
     }
     const std::size_t head = strokeIndex(best->first);
     const std::size_t tail = strokeIndex(best->second);
@@ -110,7 +127,7 @@ ClosestPoint closestOnSegments(const Polyline2& stroke, std::size_t begin, std::
 // it passes closest to the new end, when those are clear near misses.
 Polyline2 trimNearMisses(Polyline2 stroke) {
     const double size = boundingBoxDiagonal(stroke);
-    Windows windows = endWindows(stroke);
+    Windows windows = endWindows(stroke, kNearMissWindow);
     const ClosestPoint tail =
         closestOnSegments(stroke, windows.tailBegin, stroke.size() - 1, stroke.front());
     const double endGap = (stroke.back() - stroke.front()).norm();
@@ -123,7 +140,7 @@ Polyline2 trimNearMisses(Polyline2 stroke) {
     if (stroke.size() < 3) {
         return stroke;
     }
-    windows = endWindows(stroke);
+    windows = endWindows(stroke, kNearMissWindow);
     const ClosestPoint head = closestOnSegments(stroke, 0, windows.headEnd, stroke.back());
     const double startGap = (stroke.back() - stroke.front()).norm();
     if (head.distance <= kNearMissRatio * startGap && head.distance <= kNearMissDistance * size) {
@@ -144,7 +161,7 @@ Polyline2 closeStroke(const Polyline2& stroke) {
     if (stroke.size() < 4) {
         return stroke;
     }
-    if (auto loop = cutAtEndCrossing(stroke, endWindows(stroke))) {
+    if (auto loop = cutAtEndCrossing(stroke)) {
         return *loop;
     }
     return trimNearMisses(stroke);

@@ -10,8 +10,8 @@ namespace rigmesh {
 // crossing; when the end slides past the start without crossing, the
 // overshooting parts are cut at their closest approach; a remaining gap is
 // closed by the implicit straight segment from the last point to the first.
-// Only the first and last fifth of the stroke's length are examined, so a
-// crossing in the middle (a figure eight) is left for the caller to reject.
+// A crossing is only cut when that removes at most 30% of the stroke, so a
+// figure eight's crossing is left for the caller to reject.
 Polyline2 closeStroke(const Polyline2& stroke);
 
 }  // namespace rigmesh
