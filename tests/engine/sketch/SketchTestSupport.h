@@ -33,6 +33,12 @@ inline bool testSegmentsMeet(const Vec2& a, const Vec2& b, const Vec2& c, const 
         return std::min(o.x(), p.x()) <= q.x() && q.x() <= std::max(o.x(), p.x()) &&
                std::min(o.y(), p.y()) <= q.y() && q.y() <= std::max(o.y(), p.y());
     };
+    if (std::max(a.x(), b.x()) < std::min(c.x(), d.x()) ||
+        std::max(c.x(), d.x()) < std::min(a.x(), b.x()) ||
+        std::max(a.y(), b.y()) < std::min(c.y(), d.y()) ||
+        std::max(c.y(), d.y()) < std::min(a.y(), b.y())) {
+        return false;
+    }
     const int s1 = side(a, b, c), s2 = side(a, b, d), s3 = side(c, d, a), s4 = side(c, d, b);
     if (s1 * s2 < 0 && s3 * s4 < 0) {
         return true;
