@@ -224,7 +224,10 @@ CleanPolygon cleanStroke(const std::vector<Vec2>& raw, const StrokeCleanOptions&
     // Bound the work before anything costlier than linear time.
     const double rawSpacing = unitSpacing(options, unit, diagonal);
     sampleCount(polylineLength(stroke, true), rawSpacing);
-    stroke = withoutRepeats(closeStroke(decimate(stroke, rawSpacing / 4.0)),
+    // Decimate no coarser than the default spacing, whatever was asked for,
+    // so that a coarse spacing cannot erase the shape before it is closed.
+    const double decimationStep = std::min(rawSpacing, diagonal / 60.0) / 4.0;
+    stroke = withoutRepeats(closeStroke(decimate(stroke, decimationStep)),
                             kDuplicateTolerance * diagonal);
     if (stroke.size() < 3) {
         checkEnoughPoints(raw.size(), stroke.size());
