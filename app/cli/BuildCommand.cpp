@@ -8,7 +8,9 @@
 #include "EmbeddedExamples.h"
 #include "base/Error.h"
 #include "debug/DebugSvg.h"
+#include "io/RigJson.h"
 #include "mesh/MeshWriter.h"
+#include "pipeline/SketchToPart.h"
 #include "sketch/Sketch.h"
 
 namespace rigmesh::cli {
@@ -38,30 +40,50 @@ void writeTextFile(const std::string& path, const std::string& text) {
 
 }  // namespace
 
+// The skeleton drawn over the sketch: bones as segments, joints as dots.
+DebugOverlay skeletonOverlay(const Skeleton& skeleton) {
+    DebugOverlay overlay;
+    for (const Bone& bone : skeleton.bones())
+        overlay.segments.push_back({skeleton.joint(bone.head).position.head<2>(),
+                                    skeleton.joint(bone.tail).position.head<2>()});
+    for (const Joint& joint : skeleton.joints())
+        overlay.points.push_back(joint.position.head<2>());
+    return overlay;
+}
+
 int runBuild(const std::vector<std::string>& arguments) {
-    CommandLine line(arguments, {"-o", "--stats", "--debug-svg", "--edge-length"},
-                     {"--no-smoothing"});
+    CommandLine line(arguments, {"-o", "--stats", "--debug-svg", "--edge-length", "--rig"},
+                     {"--no-smoothing", "--plain-dp"});
     if (line.positional().size() != 1)
         throw Error("build needs exactly one sketch file (.json or .svg), or 'example'");
     const Sketch sketch = loadSketch(line.positional()[0]);
 
-    SketchToSurfaceOptions options;
+    SketchToPartOptions options;
     if (auto length = line.number("--edge-length")) {
         if (*length <= 0)
             throw Error("--edge-length must be positive");
-        options.surface.targetEdgeLength = *length;
+        options.surface.surface.targetEdgeLength = *length;
     }
-    options.surface.smooth = !line.flag("--no-smoothing");
-    const SketchToSurfaceResult result = sketchToSurface(sketch.points, options);
+    options.surface.surface.smooth = !line.flag("--no-smoothing");
+    options.skeleton.cylindrical = !line.flag("--plain-dp");
+    const SketchToPartResult result = sketchToPart(sketch.points, sketch.name, options);
+    const Part& part = result.part;
 
-    const MeshReport report = analyseMesh(result.surface.mesh);
+    const MeshReport report = analyseMesh(part.mesh);
     const nlohmann::json statistics = buildStatistics(sketch.name, result, report);
-    if (auto out = line.value("-o"))
-        writeMesh(result.surface.mesh, *out);
+    if (auto out = line.value("-o")) {
+        MeshWriteOptions write;
+        write.vertexColors = dominantBoneColours(part);
+        writeMesh(part.mesh, *out, write);
+    }
+    if (auto rig = line.value("--rig"))
+        writeTextFile(*rig, rigToJson(part));
     if (auto svg = line.value("--debug-svg"))
-        writeTextFile(*svg, debugSvg(result));
+        writeTextFile(*svg, debugSvg(result.surface, {skeletonOverlay(part.skeleton)}));
     if (auto stats = line.value("--stats"))
         writeTextFile(*stats, statistics.dump(2) + "\n");
+    if (!part.weights.warning.empty())
+        std::fprintf(stderr, "rigmesh: warning: %s\n", part.weights.warning.c_str());
     std::fputs(buildSummary(statistics).c_str(), stdout);
     return 0;
 }

@@ -4,8 +4,9 @@
 
 namespace rigmesh::cli {
 
-nlohmann::json buildStatistics(const std::string& name, const SketchToSurfaceResult& result,
+nlohmann::json buildStatistics(const std::string& name, const SketchToPartResult& rigged,
                                const MeshReport& report) {
+    const SketchToSurfaceResult& result = rigged.surface;
     const StageTimings& ms = result.milliseconds;
     nlohmann::json stats;
     stats["sketch"] = name;
@@ -15,13 +16,18 @@ nlohmann::json buildStatistics(const std::string& name, const SketchToSurfaceRes
     stats["target_edge_length"] = result.targetEdgeLength;
     stats["cylindrical_regions"] = result.decomposition.cylinders.size();
     stats["connecting_regions"] = result.decomposition.connecting.size();
-    stats["ms_total"] = ms.total;
+    stats["joints"] = rigged.part.skeleton.jointCount();
+    stats["bones"] = rigged.part.skeleton.boneCount();
+    stats["failed_bones"] = rigged.part.weights.failedBones.size();
+    stats["ms_total"] = rigged.totalMilliseconds;
     stats["ms_stages"] = {{"clean", ms.clean},
                           {"triangulate", ms.triangulate},
                           {"chordal_axis", ms.chordalAxis},
                           {"decompose", ms.decompose},
                           {"cross_sections", ms.crossSections},
-                          {"surface", ms.surface}};
+                          {"surface", ms.surface},
+                          {"skeleton", rigged.skeletonMilliseconds},
+                          {"weights", rigged.weightsMilliseconds}};
     stats["mesh"] = {{"closed", report.isClosed()},
                      {"manifold", report.isManifold()},
                      {"outward", report.isOutwardOriented()},
@@ -40,11 +46,12 @@ std::string buildSummary(const nlohmann::json& s) {
     const auto& mesh = s["mesh"];
     std::snprintf(
         text, sizeof text,
-        "%s: %d vertices, %d faces, %d cylindrical + %d connecting regions\n"
+        "%s: %d vertices, %d faces, %d cylindrical + %d connecting regions, %d joints, %d bones\n"
         "  surface: %s, %s, genus %d, %d self-intersecting face pairs, min angle %.1f deg\n"
         "  time: %.2f ms total\n",
         s["sketch"].get<std::string>().c_str(), s["vertices"].get<int>(), s["faces"].get<int>(),
         s["cylindrical_regions"].get<int>(), s["connecting_regions"].get<int>(),
+        s["joints"].get<int>(), s["bones"].get<int>(),
         mesh["closed"].get<bool>() ? "closed" : "OPEN",
         mesh["manifold"].get<bool>() ? "manifold" : "NON-MANIFOLD", mesh["genus"].get<int>(),
         mesh["self_intersecting_face_pairs"].get<int>(), mesh["min_angle_degrees"].get<double>(),

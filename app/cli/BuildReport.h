@@ -5,11 +5,11 @@
 #include <string>
 
 #include "mesh/MeshChecks.h"
-#include "pipeline/SketchToSurface.h"
+#include "pipeline/SketchToPart.h"
 
 namespace rigmesh::cli {
 
-nlohmann::json buildStatistics(const std::string& name, const SketchToSurfaceResult& result,
+nlohmann::json buildStatistics(const std::string& name, const SketchToPartResult& rigged,
                                const MeshReport& report);
 
 // A few human-readable lines for the terminal.

@@ -184,6 +184,8 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
         if (!merged[b])
             continue;
         int region = regionOfTriangle[axis.branches[b].startNode];
+        result.connecting[region].junctionLinks.push_back(
+            {axis.branches[b].startNode, axis.branches[b].endNode});
         for (int sleeve : axis.branches[b].sleeves) {
             regionOfTriangle[sleeve] = region;
             result.connecting[region].triangles.push_back(sleeve);
@@ -244,12 +246,14 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
             cylinder.startCap = outlinePath(base[0], base[1], pointCount);
         } else {
             cylinder.startConnecting = regionOfTriangle[branch.startNode];
+            cylinder.startJunction = branch.startNode;
         }
         if (endIsCap) {
             const PolygonEdge& base = cylinder.chords.back();
             cylinder.endCap = outlinePath(base[1], base[0], pointCount);
         } else {
             cylinder.endConnecting = regionOfTriangle[branch.endNode];
+            cylinder.endJunction = branch.endNode;
         }
         int index = static_cast<int>(result.cylinders.size());
         if (cylinder.startConnecting >= 0)

@@ -19,6 +19,8 @@ struct CylinderRegion {
     std::vector<PolygonEdge> chords;  // (left, right) for travel from start to end; never empty
     int startConnecting = -1;         // connecting region at the start, or -1 for a cap
     int endConnecting = -1;           // connecting region at the end, or -1 for a cap
+    int startJunction = -1;           // the junction triangle the start leaves from, or -1
+    int endJunction = -1;             // the junction triangle the end arrives at, or -1
     // Counter-clockwise outline paths (polygon indices) around the tips, from
     // one end point of the end chord to the other; empty at a connecting end.
     std::vector<int> startCap;  // from chords.front() left to right
@@ -28,6 +30,8 @@ struct CylinderRegion {
 struct ConnectingRegion {
     std::vector<int> junctions;  // junction triangles
     std::vector<int> triangles;  // all triangles: junctions, merged sleeves, pruned bumps
+    // Pairs of junction triangles joined by a merged short-yet-wide branch.
+    std::vector<std::array<int, 2>> junctionLinks;
     struct Port {
         int cylinder;
         bool atStart;  // the cylinder's start (true) or end (false) touches this region

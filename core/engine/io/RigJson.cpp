@@ -1,0 +1,81 @@
+#include "io/RigJson.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace rigmesh {
+
+std::string rigToJson(const Part& part) {
+    const Skeleton& skeleton = part.skeleton;
+    nlohmann::json rig;
+    rig["joints"] = nlohmann::json::array();
+    for (const Joint& joint : skeleton.joints())
+        rig["joints"].push_back(
+            {{"id", joint.id},
+             {"position", {joint.position.x(), joint.position.y(), joint.position.z()}}});
+    rig["root"] = skeleton.indexOfJoint(skeleton.root());
+    rig["bones"] = nlohmann::json::array();
+    for (const Bone& bone : skeleton.bones()) {
+        auto parent = skeleton.parentBone(bone.id);
+        rig["bones"].push_back({{"id", bone.id},
+                                {"head", skeleton.indexOfJoint(bone.head)},
+                                {"tail", skeleton.indexOfJoint(bone.tail)},
+                                {"parent", parent ? skeleton.indexOfBone(*parent) : -1},
+                                {"length", skeleton.boneLength(bone.id)}});
+    }
+    rig["weights"] = nlohmann::json::array();
+    for (const auto& vertex : part.weights.perVertex) {
+        nlohmann::json influences = nlohmann::json::array();
+        for (const auto& [bone, weight] : vertex)
+            influences.push_back({bone, weight});
+        rig["weights"].push_back(std::move(influences));
+    }
+    rig["failed_bones"] = part.weights.failedBones;
+    rig["warning"] = part.weights.warning;
+    return rig.dump(1) + "\n";
+}
+
+std::vector<std::array<std::uint8_t, 3>> dominantBoneColours(const Part& part) {
+    auto colourOf = [](int bone) {
+        // Golden-ratio hue steps keep neighbouring bone indices apart.
+        double hue = std::fmod(0.13 + 0.618033988749895 * bone, 1.0) * 6.0;
+        double x = 1.0 - std::abs(std::fmod(hue, 2.0) - 1.0);
+        std::array<double, 3> rgb{};
+        switch (static_cast<int>(hue)) {
+            case 0:
+                rgb = {1, x, 0};
+                break;
+            case 1:
+                rgb = {x, 1, 0};
+                break;
+            case 2:
+                rgb = {0, 1, x};
+                break;
+            case 3:
+                rgb = {0, x, 1};
+                break;
+            case 4:
+                rgb = {x, 0, 1};
+                break;
+            default:
+                rgb = {1, 0, x};
+                break;
+        }
+        return std::array<std::uint8_t, 3>{static_cast<std::uint8_t>(60 + 180 * rgb[0]),
+                                           static_cast<std::uint8_t>(60 + 180 * rgb[1]),
+                                           static_cast<std::uint8_t>(60 + 180 * rgb[2])};
+    };
+    std::vector<std::array<std::uint8_t, 3>> colours;
+    colours.reserve(part.weights.perVertex.size());
+    for (const auto& vertex : part.weights.perVertex) {
+        int dominant = 0;
+        double best = -1.0;
+        for (const auto& [bone, weight] : vertex)
+            if (weight > best)
+                best = weight, dominant = bone;
+        colours.push_back(colourOf(dominant));
+    }
+    return colours;
+}
+
+}  // namespace rigmesh
