@@ -7,43 +7,74 @@
 #include "base/Error.h"
 
 namespace rigmesh {
+namespace {
 
-std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double>& anchorWeights) {
-    const int n = mesh.vertexCount();
-    if (std::none_of(anchorWeights.begin(), anchorWeights.end(), [](double w) { return w > 0; }))
-        throw Error("least-squares smoothing needs at least one anchored vertex");
-
-    // Umbrella operator: (L x)_i = x_i - mean of the one-ring neighbours.
-    std::vector<std::vector<int>> ring(n);
+std::vector<std::vector<int>> oneRings(const TriMesh& mesh) {
+    std::vector<std::vector<int>> ring(mesh.vertices.size());
     for (const auto& f : mesh.faces)
         for (int k = 0; k < 3; ++k) {
             ring[f[k]].push_back(f[(k + 1) % 3]);
             ring[f[k]].push_back(f[(k + 2) % 3]);
         }
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int i = 0; i < n; ++i) {
-        auto& neighbours = ring[i];
+    for (auto& neighbours : ring) {
         std::sort(neighbours.begin(), neighbours.end());
         neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-        entries.emplace_back(i, i, 1.0);
-        for (int j : neighbours)
-            entries.emplace_back(i, j, -1.0 / static_cast<double>(neighbours.size()));
     }
-    Eigen::SparseMatrix<double> laplacian(n, n);
+    return ring;
+}
+
+}  // namespace
+
+std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double>& anchorWeights,
+                                   double fixedWeight) {
+    const int n = mesh.vertexCount();
+    if (std::none_of(anchorWeights.begin(), anchorWeights.end(), [](double w) { return w > 0; }))
+        throw Error("least-squares smoothing needs at least one anchored vertex");
+
+    // Unknowns: the vertices not held exactly.
+    std::vector<int> unknown(n, -1);
+    int unknowns = 0;
+    for (int i = 0; i < n; ++i)
+        if (anchorWeights[i] < fixedWeight)
+            unknown[i] = unknowns++;
+    std::vector<Vec3> positions = mesh.vertices;
+    if (unknowns == 0)
+        return positions;
+
+    // Umbrella operator rows (L x)_i = x_i - mean of the one-ring, split into
+    // the columns of unknown vertices (L_U) and the known part L_K x_K.
+    const auto ring = oneRings(mesh);
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::MatrixX3d knownPart = Eigen::MatrixX3d::Zero(n, 3);
+    auto add = [&](int row, int column, double value) {
+        if (unknown[column] >= 0)
+            entries.emplace_back(row, unknown[column], value);
+        else
+            knownPart.row(row) += value * mesh.vertices[column].transpose();
+    };
+    for (int i = 0; i < n; ++i) {
+        if (ring[i].empty())
+            continue;
+        add(i, i, 1.0);
+        for (int j : ring[i])
+            add(i, j, -1.0 / static_cast<double>(ring[i].size()));
+    }
+    Eigen::SparseMatrix<double> laplacian(n, unknowns);
     laplacian.setFromTriplets(entries.begin(), entries.end());
 
     Eigen::SparseMatrix<double> system = laplacian.transpose() * laplacian;
-    Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(n, 3);
+    Eigen::MatrixX3d rhs = -(laplacian.transpose() * knownPart);
     for (int i = 0; i < n; ++i) {
-        double w2 = anchorWeights[i] * anchorWeights[i];
-        if (w2 <= 0)
+        const int u = unknown[i];
+        const double w2 = anchorWeights[i] * anchorWeights[i];
+        if (u < 0 || w2 <= 0)
             continue;
-        system.coeffRef(i, i) += w2;
-        rhs.row(i) = w2 * mesh.vertices[i].transpose();
+        system.coeffRef(u, u) += w2;
+        rhs.row(u) += w2 * mesh.vertices[i].transpose();
     }
     Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>> solver;
     // AMD alone: CHOLMOD's default also tries METIS, which costs more than
-    // it saves on surface meshes of this size.
+    // it saves at these sizes.
     solver.cholmod().nmethods = 1;
     solver.cholmod().method[0].ordering = CHOLMOD_AMD;
     solver.compute(system);
@@ -53,9 +84,9 @@ std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double
     if (solver.info() != Eigen::Success || !solution.allFinite())
         throw Error("least-squares smoothing failed: the surface system has no finite solution");
 
-    std::vector<Vec3> positions(n);
     for (int i = 0; i < n; ++i)
-        positions[i] = solution.row(i).transpose();
+        if (unknown[i] >= 0)
+            positions[i] = solution.row(unknown[i]).transpose();
     return positions;
 }
 

@@ -2,10 +2,18 @@
 //
 // Finds positions x minimising ||L x||^2 + sum_i w_i^2 ||x_i - c_i||^2, where
 // L is the uniform (umbrella) Laplacian of the mesh and c_i the current
-// positions. Vertices with weight 0 are free. The normal equations
-// (L^T L + W^2) x = W^2 c are factored once with CHOLMOD and solved for x, y, z.
+// positions. Vertices with weight 0 are free.
+//
+// Vertices whose weight is at least `fixedWeight` are held exactly instead of
+// softly: at the surface builder's maximum weight their soft displacement is
+// far below an edge length, and dropping them from the unknowns makes the
+// solve local to the connecting regions, which is what keeps it fast on long
+// parts (the normal equations of L^T L fill in heavily along a tube). The
+// remaining system (L_U^T L_U + W_U^2) x_U = W_U^2 c_U - L_U^T L_K x_K is
+// factored once with CHOLMOD and solved for x, y and z.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "mesh/TriMesh.h"
@@ -14,6 +22,7 @@ namespace rigmesh {
 
 // Returns the smoothed positions. Throws rigmesh::Error when no vertex is
 // anchored (the system is then singular) or the factorisation fails.
-std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double>& anchorWeights);
+std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double>& anchorWeights,
+                                   double fixedWeight = std::numeric_limits<double>::infinity());
 
 }  // namespace rigmesh

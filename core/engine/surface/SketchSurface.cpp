@@ -290,7 +290,8 @@ SketchSurface buildSurface(const Decomposition& decomposition,
     SketchSurface surface = builder.mirrored();
     if (options.smooth) {
         surface.mesh.vertices = leastSquaresMesh(
-            surface.mesh, anchorWeights(surface, decomposition, cylinders, options));
+            surface.mesh, anchorWeights(surface, decomposition, cylinders, options),
+            options.maxAnchorWeight);
         symmetrize(surface);
     }
     return surface;
