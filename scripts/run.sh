@@ -4,4 +4,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh dev
-exec build/dev/app/rigmesh example "$@"
+exec build/dev/app/rigmesh example

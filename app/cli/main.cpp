@@ -14,12 +14,15 @@ namespace {
 const char* kUsage = R"(usage: rigmesh COMMAND [ARGS]
 
 commands:
-  build SKETCH [-o OUT.obj|.ply|.off] [--stats FILE.json] [--debug-svg FILE.svg]
-                [--edge-length L] [--no-smoothing]
-      Turns a sketched silhouette (.json or .svg) into a closed 3D surface and
-      prints its statistics. SKETCH may be "example" for the embedded example.
+  build SKETCH [-o OUT.obj|.ply|.off] [--rig FILE.json] [--stats FILE.json]
+               [--debug-svg FILE.svg] [--edge-length L] [--no-smoothing] [--plain-dp]
+      Turns a sketched silhouette (.json or .svg) into a rigged part: a closed
+      surface, a skeleton and skin weights, and prints its figures. SKETCH may
+      be "example" for the embedded example. A .ply is coloured by each
+      vertex's dominant bone; --rig writes joints, bones and weights as JSON;
+      --plain-dp uses plain Douglas-Peucker instead of the paper's CDP.
   example
-      Builds the embedded example sketch and prints its statistics.
+      Builds the embedded example sketch into a rigged part and prints its figures.
   version
       Prints the version.
 )";
