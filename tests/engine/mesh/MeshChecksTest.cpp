@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -252,19 +251,11 @@ TEST(MeshChecks, OutOfRangeIndexThrowsInsteadOfCrashing) {
     EXPECT_THROW(analyseMesh(mesh), Error);
 }
 
-TEST(MeshChecks, AnalysesTenThousandFaceMeshQuickly) {
-    // 2 * 100 * 50 = 10000 faces. The bound is loose on purpose (shared CI
-    // machines); it catches accidental quadratic behaviour, not small slowdowns.
+TEST(MeshChecks, TenThousandFaceTubeIsWatertightGenus0) {
+    // 2 * 100 * 50 = 10000 faces; its speed is measured by bench_sketch_to_surface, not here.
     const TriMesh mesh = makeCylinderTube(50, 100, 1.0, 4.0);
     ASSERT_EQ(mesh.faceCount(), 10000);
-    const auto start = std::chrono::steady_clock::now();
-    const MeshReport report = analyseMesh(mesh);
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_TRUE(report.isWatertightGenus0());
-    RecordProperty("analyseMeshMilliseconds", std::to_string(ms));
-    std::printf("analyseMesh on 10000 faces: %.2f ms\n", ms);
-    EXPECT_LT(ms, 1000.0);
+    EXPECT_TRUE(analyseMesh(mesh).isWatertightGenus0());
 }
 
 }  // namespace
