@@ -16,13 +16,14 @@ jobs="${JOBS:-$(nproc)}"
 
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DRIGMESH_BUILD_TESTS=ON -DRIGMESH_BUILD_BENCHMARKS=ON
-cmake --build "$build" --target bench_sketch_to_surface bench_bone_heat -j "$jobs"
+programs="${PROGRAMS:-sketch_to_surface rigged_part bone_heat}"
+cmake --build "$build" $(printf -- "--target bench_%s " $programs) -j "$jobs"
 
 mkdir -p "$results"
 echo "uptime: $(uptime)"
 echo "The timings are wall-clock; other processes on this machine slow them down."
 
-for program in sketch_to_surface bone_heat; do
+for program in $programs; do
     echo
     echo "=== bench_$program ==="
     "$build/tests/benchmarks/bench_$program" \
