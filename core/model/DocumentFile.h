@@ -1,0 +1,58 @@
+// The native document file (.rigmesh): CBOR (RFC 8949) of one map
+//   {"format": "rigmesh-studio-document", "version": 1, "nextPartId": n,
+//    "parts": [ {id, name, visible, placement, stroke, options, part: {...}} ]}
+// where part holds everything of the engine Part: name, outline, mesh
+// (vertices, faces), origins, mirror, skeleton (joints with ids, bones with
+// ids, root), skin weights and the known closest bones.
+//
+// Why CBOR: doubles are stored as IEEE binary64 (or binary32 when that is
+// exact), so they round-trip bit for bit without decimal printing; meshes are
+// about half the size of JSON; and nlohmann's maps have sorted keys, so the
+// same document always gives the same bytes.
+//
+// Loading checks everything (format name, version, types, index ranges,
+// array sizes) before building the document: a corrupt, truncated or newer
+// file throws DocumentFileError with a message for the user and opens
+// nothing.
+#pragma once
+
+#include <QByteArray>
+#include <QString>
+#include <memory>
+
+#include "base/Error.h"
+#include "model/Document.h"
+
+namespace rigmesh::model {
+
+class DocumentFileError : public rigmesh::Error {
+  public:
+    using rigmesh::Error::Error;
+};
+
+namespace DocumentFile {
+
+inline constexpr const char* kFormatName = "rigmesh-studio-document";
+inline constexpr int kFormatVersion = 1;
+inline constexpr const char* kSuffix = "rigmesh";
+
+QByteArray toBytes(const DocumentContents& contents);
+inline QByteArray toBytes(const Document& document) {
+    return toBytes(document.contents());
+}
+// Throws DocumentFileError.
+DocumentContents fromBytes(const QByteArray& bytes);
+
+// Writes atomically (QSaveFile); does not touch the document's state.
+// Throws DocumentFileError.
+void write(const Document& document, const QString& path);
+// write() then Document::markSaved(path).
+void save(Document& document, const QString& path);
+// A clean document with the file's contents and path. Throws DocumentFileError.
+std::unique_ptr<Document> load(const QString& path, QObject* parent = nullptr);
+// The contents only (recovery files, tests). Throws DocumentFileError.
+DocumentContents read(const QString& path);
+
+}  // namespace DocumentFile
+
+}  // namespace rigmesh::model

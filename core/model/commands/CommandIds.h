@@ -1,0 +1,10 @@
+// QUndoCommand::id() values of the commands that merge (mergeWith).
+#pragma once
+
+namespace rigmesh::model {
+
+enum CommandId : int {
+    MovePartCommandId = 1001,
+};
+
+}  // namespace rigmesh::model

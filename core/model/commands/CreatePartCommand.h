@@ -1,0 +1,37 @@
+// Create a part from a sketch. Use create(): the engine build runs there,
+// before anything is pushed, so a bad stroke throws rigmesh::Error and the
+// document and its undo stack stay as they were.
+#pragma once
+
+#include <QCoreApplication>
+#include <QUndoCommand>
+#include <memory>
+#include <vector>
+
+#include "model/Document.h"
+
+namespace rigmesh::model {
+
+class CreatePartCommand : public QUndoCommand {
+    Q_DECLARE_TR_FUNCTIONS(CreatePartCommand)
+  public:
+    // Builds the part (throws rigmesh::Error on a bad stroke) and returns the
+    // command, ready to push; the new part is appended and gets a fresh id.
+    // An empty name becomes "Part <id>".
+    static std::unique_ptr<CreatePartCommand> create(Document& document, std::vector<Vec2> stroke,
+                                                     const QString& name = {},
+                                                     const BuildOptions& options = {},
+                                                     const Placement& placement = {});
+
+    void redo() override;
+    void undo() override;
+    PartId partId() const { return node_.id; }
+
+  private:
+    CreatePartCommand(Document& document, PartNode node);
+
+    Document& document_;
+    PartNode node_;
+};
+
+}  // namespace rigmesh::model

@@ -1,0 +1,43 @@
+// Move and/or rotate a part. Consecutive moves of the same part merge into one
+// undo step (id() + mergeWith); a merge that lands back where it started
+// makes the command obsolete.
+//
+// Interactive drags may apply the placement live (through a preview the view
+// owns) and push the command at the end with `alreadyApplied`: the first
+// redo() then only records, it does not set the placement again.
+#pragma once
+
+#include <QCoreApplication>
+#include <QUndoCommand>
+
+#include "model/Document.h"
+#include "model/commands/CommandIds.h"
+
+namespace rigmesh::model {
+
+class MovePartCommand : public QUndoCommand {
+    Q_DECLARE_TR_FUNCTIONS(MovePartCommand)
+  public:
+    // Throws rigmesh::Error on an unknown id. `from` is the placement before
+    // the move (the part's current one unless the move was applied live).
+    MovePartCommand(Document& document, PartId id, const Placement& from, const Placement& to,
+                    bool alreadyApplied = false, QUndoCommand* parent = nullptr);
+    // From the part's current placement.
+    MovePartCommand(Document& document, PartId id, const Placement& to,
+                    QUndoCommand* parent = nullptr);
+
+    void redo() override;
+    void undo() override;
+    int id() const override { return MovePartCommandId; }
+    bool mergeWith(const QUndoCommand* other) override;
+
+    PartId partId() const { return id_; }
+
+  private:
+    Document& document_;
+    PartId id_;
+    Placement from_, to_;
+    bool skipRedo_;
+};
+
+}  // namespace rigmesh::model
