@@ -1,0 +1,142 @@
+// Shared helpers for the sketch-to-surface tests (test_axis, test_surface):
+// the shared sketch files, synthetic outlines and plain polygon geometry,
+// written without the engine's own helpers.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "base/Types.h"
+#include "sketch/Sketch.h"
+
+namespace rigmesh::testsupport {
+
+inline std::string sharedSketchPath(const std::string& name) {
+    return std::string(RIGMESH_SHARED_SKETCHES) + "/" + name + ".json";
+}
+
+inline std::vector<Vec2> sharedSketchPoints(const std::string& name) {
+    return readSketchFile(sharedSketchPath(name)).points;
+}
+
+// Stems of the shared .json sketches, sorted; `bad` selects the bad_* ones.
+inline std::vector<std::string> sharedSketchNames(bool bad) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(RIGMESH_SHARED_SKETCHES)) {
+        const std::string stem = entry.path().stem().string();
+        if (entry.path().extension() == ".json" && (stem.rfind("bad_", 0) == 0) == bad)
+            names.push_back(stem);
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// Names parameterised tests after the sketch.
+inline std::string sketchTestName(const ::testing::TestParamInfo<std::string>& param) {
+    return param.param;
+}
+
+inline double cross2(const Vec2& a, const Vec2& b) {
+    return a.x() * b.y() - a.y() * b.x();
+}
+
+inline double signedArea(const std::vector<Vec2>& polygon) {
+    double twice = 0.0;
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+        twice += cross2(polygon[i], polygon[(i + 1) % polygon.size()]);
+    return twice / 2.0;
+}
+
+// Even-odd point in polygon test.
+inline bool insidePolygon(const std::vector<Vec2>& polygon, const Vec2& p) {
+    bool inside = false;
+    for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+        const Vec2& a = polygon[i];
+        const Vec2& b = polygon[j];
+        if ((a.y() > p.y()) != (b.y() > p.y()) &&
+            p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+            inside = !inside;
+    }
+    return inside;
+}
+
+// Counter-clockwise polar outline r(theta) with `count` samples.
+template <typename Radius>
+std::vector<Vec2> polarOutline(int count, Radius radius, const Vec2& centre = Vec2::Zero()) {
+    std::vector<Vec2> points;
+    for (int i = 0; i < count; ++i) {
+        const double theta = 2.0 * std::numbers::pi * i / count;
+        points.push_back(centre + radius(theta) * Vec2(std::cos(theta), std::sin(theta)));
+    }
+    return points;
+}
+
+// A star with `arms` rounded arms of length about `armLength` around a body
+// of radius `body`; the higher `sharpness`, the thinner the arms.
+inline std::vector<Vec2> armedStar(int arms, double body, double armLength, int sharpness = 6,
+                                   int count = 600) {
+    return polarOutline(count, [=](double theta) {
+        const double lobe = std::abs(std::cos(0.5 * arms * theta));
+        return body + armLength * std::pow(lobe, sharpness);
+    });
+}
+
+// Appends the arc of `centre`, `radius` from angle `from` to `to` (radians,
+// either direction) in steps of about `step`, end points included.
+inline void appendArc(std::vector<Vec2>& out, const Vec2& centre, double radius, double from,
+                      double to, double step) {
+    const int count = std::max(2, static_cast<int>(std::ceil(std::abs(to - from) * radius / step)));
+    for (int i = 0; i <= count; ++i) {
+        const double angle = from + (to - from) * i / count;
+        out.push_back(centre + radius * Vec2(std::cos(angle), std::sin(angle)));
+    }
+}
+
+// Appends the segment from a to b (a included, b excluded) in steps of about `step`.
+inline void appendSegment(std::vector<Vec2>& out, const Vec2& a, const Vec2& b, double step) {
+    const int count = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step)));
+    for (int i = 0; i < count; ++i)
+        out.push_back(a + (b - a) * (static_cast<double>(i) / count));
+}
+
+// A counter-clockwise stadium: the segment (0,0)-(length,0) thickened by `radius`.
+inline std::vector<Vec2> stadium(double length, double radius, double step) {
+    const double pi = std::numbers::pi;
+    std::vector<Vec2> out;
+    appendSegment(out, {0, -radius}, {length, -radius}, step);
+    appendArc(out, {length, 0}, radius, -pi / 2, pi / 2, step);
+    out.pop_back();
+    appendSegment(out, {length, radius}, {0, radius}, step);
+    appendArc(out, {0, 0}, radius, pi / 2, 3 * pi / 2, step);
+    out.pop_back();
+    return out;
+}
+
+// A random star-shaped polygon around the origin: `count` angles with random
+// radii; with `neck`, two opposite lobes are pinched to a narrow waist.
+inline std::vector<Vec2> randomStarPolygon(std::mt19937& random, int count, double noise,
+                                           bool neck) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double phase = 2.0 * std::numbers::pi * unit(random);
+    const double waist = 0.05 + 0.2 * unit(random);
+    const double lobes = 1.0 + std::floor(4.0 * unit(random));
+    std::vector<Vec2> points;
+    for (int i = 0; i < count; ++i) {
+        const double theta = 2.0 * std::numbers::pi * i / count;
+        double r = 1.0 + 0.4 * std::sin(lobes * theta + phase);
+        if (neck)
+            r *= waist + (1.0 - waist) * std::pow(std::cos(theta + phase), 2);
+        r *= 1.0 + noise * (2.0 * unit(random) - 1.0);
+        points.push_back(r * Vec2(std::cos(theta), std::sin(theta)));
+    }
+    return points;
+}
+
+}  // namespace rigmesh::testsupport
