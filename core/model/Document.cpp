@@ -1,0 +1,148 @@
+#include "model/Document.h"
+
+#include <QFileInfo>
+#include <algorithm>
+
+#include "base/Error.h"
+
+namespace rigmesh::model {
+
+Document::Document(QObject* parent) : Document(DocumentContents{}, parent) {}
+
+Document::Document(DocumentContents contents, QObject* parent)
+    : QObject(parent), contents_(std::move(contents)) {
+    for (const PartNode& node : contents_.parts)
+        contents_.nextPartId = std::max(contents_.nextPartId, node.id + 1);
+    connect(&undoStack_, &QUndoStack::cleanChanged, this,
+            [this](bool clean) { emit modifiedChanged(!clean); });
+}
+
+Document::~Document() {
+    // Commands refer to this document: drop them before its contents go.
+    undoStack_.clear();
+}
+
+int Document::indexOf(PartId id) const {
+    const auto it = std::find_if(contents_.parts.begin(), contents_.parts.end(),
+                                 [id](const PartNode& node) { return node.id == id; });
+    return it == contents_.parts.end() ? -1 : static_cast<int>(it - contents_.parts.begin());
+}
+
+const PartNode* Document::findPart(PartId id) const {
+    const int index = indexOf(id);
+    return index < 0 ? nullptr : &contents_.parts[index];
+}
+
+const PartNode& Document::part(PartId id) const {
+    if (const PartNode* node = findPart(id))
+        return *node;
+    throw Error("No part with id " + std::to_string(id) + " in the document.");
+}
+
+PartNode& Document::mutablePart(PartId id) {
+    return const_cast<PartNode&>(part(id));
+}
+
+void Document::setFilePath(const QString& path) {
+    if (path == filePath_)
+        return;
+    filePath_ = path;
+    emit filePathChanged(path);
+}
+
+QString Document::displayName() const {
+    return filePath_.isEmpty() ? tr("Untitled") : QFileInfo(filePath_).fileName();
+}
+
+void Document::markSaved(const QString& path) {
+    setFilePath(path);
+    undoStack_.setClean();
+}
+
+void Document::setSelection(const Selection& selection) {
+    Selection valid;
+    if (const PartNode* node = findPart(selection.part)) {
+        valid.part = selection.part;
+        if (node->part && node->part->skeleton.hasJoint(selection.joint))
+            valid.joint = selection.joint;
+    }
+    if (valid == selection_)
+        return;
+    selection_ = valid;
+    emit selectionChanged(selection_);
+}
+
+PartId Document::allocatePartId() {
+    return contents_.nextPartId++;
+}
+
+void Document::releasePartId(PartId id) {
+    if (id + 1 == contents_.nextPartId && !contains(id))
+        contents_.nextPartId = id;
+}
+
+void Document::insertPart(int index, PartNode node) {
+    if (node.id == kNoPart || contains(node.id))
+        throw Error("Part id " + std::to_string(node.id) + " is already in use.");
+    index = std::clamp(index, 0, partCount());
+    const PartId id = node.id;
+    contents_.nextPartId = std::max(contents_.nextPartId, id + 1);
+    contents_.parts.insert(contents_.parts.begin() + index, std::move(node));
+    emit partInserted(id, index);
+}
+
+PartNode Document::removePart(PartId id) {
+    const int index = indexOf(id);
+    if (index < 0)
+        throw Error("No part with id " + std::to_string(id) + " in the document.");
+    if (selection_.part == id)
+        clearSelection();
+    emit partAboutToBeRemoved(id, index);
+    PartNode node = std::move(contents_.parts[index]);
+    contents_.parts.erase(contents_.parts.begin() + index);
+    emit partRemoved(id, index);
+    return node;
+}
+
+void Document::setName(PartId id, const QString& name) {
+    PartNode& node = mutablePart(id);
+    if (node.name == name)
+        return;
+    node.name = name;
+    emit partChanged(id, Change::Name);
+}
+
+void Document::setPlacement(PartId id, const Placement& placement) {
+    PartNode& node = mutablePart(id);
+    if (node.placement == placement)
+        return;
+    node.placement = placement;
+    emit partChanged(id, Change::Placement);
+}
+
+void Document::setVisible(PartId id, bool visible) {
+    PartNode& node = mutablePart(id);
+    if (node.visible == visible)
+        return;
+    node.visible = visible;
+    emit partChanged(id, Change::Visibility);
+}
+
+void Document::replacePart(PartId id, std::shared_ptr<const Part> part,
+                           const BuildOptions& options) {
+    PartNode& node = mutablePart(id);
+    Changes what;
+    if (node.part != part)
+        what |= Change::Geometry;
+    if (!(node.options == options))
+        what |= Change::Options;
+    if (!what)
+        return;
+    node.part = std::move(part);
+    node.options = options;
+    if (selection_.part == id && (!node.part || !node.part->skeleton.hasJoint(selection_.joint)))
+        setSelection({id, kNoJoint});
+    emit partChanged(id, what);
+}
+
+}  // namespace rigmesh::model

@@ -1,0 +1,38 @@
+#include "model/commands/CreatePartCommand.h"
+
+#include "model/PartBuilder.h"
+
+namespace rigmesh::model {
+
+std::unique_ptr<CreatePartCommand> CreatePartCommand::create(Document& document,
+                                                             std::vector<Vec2> stroke,
+                                                             const QString& name,
+                                                             const BuildOptions& options,
+                                                             const Placement& placement) {
+    // Build first: a bad stroke throws here, before an id is taken.
+    const PartId id = document.nextPartId();
+    PartNode node;
+    node.name = name.isEmpty() ? tr("Part %1").arg(id) : name;
+    node.part = buildPart(stroke, node.name, options);
+    node.stroke = std::move(stroke);
+    node.options = options;
+    node.placement = placement;
+    node.id = document.allocatePartId();
+    return std::unique_ptr<CreatePartCommand>(new CreatePartCommand(document, std::move(node)));
+}
+
+CreatePartCommand::CreatePartCommand(Document& document, PartNode node)
+    : document_(document), node_(std::move(node)) {
+    setText(tr("Create %1").arg(node_.name));
+}
+
+void CreatePartCommand::redo() {
+    document_.insertPart(document_.partCount(), node_);
+}
+
+void CreatePartCommand::undo() {
+    document_.removePart(node_.id);
+    document_.releasePartId(node_.id);
+}
+
+}  // namespace rigmesh::model

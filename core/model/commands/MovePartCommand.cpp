@@ -1,0 +1,48 @@
+#include "model/commands/MovePartCommand.h"
+
+namespace rigmesh::model {
+
+MovePartCommand::MovePartCommand(Document& document, PartId id, const Placement& from,
+                                 const Placement& to, bool alreadyApplied, QUndoCommand* parent)
+    : QUndoCommand(parent),
+      document_(document),
+      id_(id),
+      from_(from),
+      to_(to),
+      skipRedo_(alreadyApplied) {
+    const PartNode& node = document.part(id);
+    setText(from.rotation.coeffs() == to.rotation.coeffs() ? tr("Move %1").arg(node.name)
+                                                           : tr("Rotate %1").arg(node.name));
+    setObsolete(from == to);
+}
+
+MovePartCommand::MovePartCommand(Document& document, PartId id, const Placement& to,
+                                 QUndoCommand* parent)
+    : MovePartCommand(document, id, document.part(id).placement, to, false, parent) {}
+
+void MovePartCommand::redo() {
+    if (skipRedo_) {
+        skipRedo_ = false;
+        return;
+    }
+    document_.setPlacement(id_, to_);
+}
+
+void MovePartCommand::undo() {
+    document_.setPlacement(id_, from_);
+}
+
+bool MovePartCommand::mergeWith(const QUndoCommand* other) {
+    if (other->id() != id())
+        return false;
+    const auto* move = static_cast<const MovePartCommand*>(other);
+    if (move->id_ != id_ || &move->document_ != &document_)
+        return false;
+    to_ = move->to_;
+    if (from_.rotation.coeffs() != to_.rotation.coeffs())
+        setText(tr("Rotate %1").arg(document_.part(id_).name));
+    setObsolete(from_ == to_);
+    return true;
+}
+
+}  // namespace rigmesh::model

@@ -1,0 +1,35 @@
+#include "model/commands/RebuildPartCommand.h"
+
+#include "model/PartBuilder.h"
+
+namespace rigmesh::model {
+
+std::unique_ptr<RebuildPartCommand> RebuildPartCommand::create(Document& document, PartId id,
+                                                               const BuildOptions& options) {
+    const PartNode& node = document.part(id);
+    std::shared_ptr<const Part> part = buildPart(node.stroke, node.name, options);
+    return std::unique_ptr<RebuildPartCommand>(
+        new RebuildPartCommand(document, id, std::move(part), options));
+}
+
+RebuildPartCommand::RebuildPartCommand(Document& document, PartId id,
+                                       std::shared_ptr<const Part> part,
+                                       const BuildOptions& options)
+    : document_(document),
+      id_(id),
+      oldPart_(document.part(id).part),
+      newPart_(std::move(part)),
+      oldOptions_(document.part(id).options),
+      newOptions_(options) {
+    setText(tr("Rebuild %1").arg(document.part(id).name));
+}
+
+void RebuildPartCommand::redo() {
+    document_.replacePart(id_, newPart_, newOptions_);
+}
+
+void RebuildPartCommand::undo() {
+    document_.replacePart(id_, oldPart_, oldOptions_);
+}
+
+}  // namespace rigmesh::model

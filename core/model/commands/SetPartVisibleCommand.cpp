@@ -1,0 +1,24 @@
+#include "model/commands/SetPartVisibleCommand.h"
+
+namespace rigmesh::model {
+
+SetPartVisibleCommand::SetPartVisibleCommand(Document& document, PartId id, bool visible,
+                                             QUndoCommand* parent)
+    : QUndoCommand(parent),
+      document_(document),
+      id_(id),
+      old_(document.part(id).visible),
+      new_(visible) {
+    const QString& name = document.part(id).name;
+    setText(visible ? tr("Show %1").arg(name) : tr("Hide %1").arg(name));
+}
+
+void SetPartVisibleCommand::redo() {
+    document_.setVisible(id_, new_);
+}
+
+void SetPartVisibleCommand::undo() {
+    document_.setVisible(id_, old_);
+}
+
+}  // namespace rigmesh::model
