@@ -1,0 +1,63 @@
+// rigmesh-studio: the desktop application. Starts with the example document
+// (or the documents named on the command line) and offers to recover work
+// autosaved before a crash.
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QMessageBox>
+#include <QSurfaceFormat>
+#include <QTimer>
+
+#include "ExampleDocument.h"
+#include "MainWindow.h"
+#include "base/Error.h"
+
+int main(int argc, char** argv) {
+    // Every GL widget gets a 3.3 core context (Mesa llvmpipe provides 4.5).
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("RigMesh Studio"));
+    QApplication::setOrganizationName(QStringLiteral("RigMesh"));
+    QApplication::setApplicationVersion(QStringLiteral(RIGMESH_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Sketch a silhouette, get a rigged part."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("documents"),
+                                 QStringLiteral("RigMesh documents to open"));
+    QCommandLineOption screenshot(
+        QStringLiteral("screenshot"),
+        QStringLiteral("Save a picture of the window to FILE after start-up and quit."),
+        QStringLiteral("FILE"));
+    parser.addOption(screenshot);
+    parser.process(app);
+
+    rigmesh::widgets::MainWindow window;
+    const QStringList files = parser.positionalArguments();
+    for (const QString& file : files)
+        window.openFile(file);
+    if (files.isEmpty()) {
+        try {
+            window.addDocument(rigmesh::studio::makeExampleDocument());
+        } catch (const rigmesh::Error& error) {
+            QMessageBox::warning(&window, QStringLiteral("RigMesh Studio"),
+                                 QString::fromStdString(error.what()));
+            window.newDocument();
+        }
+    }
+    window.show();
+    if (parser.isSet(screenshot)) {
+        QTimer::singleShot(1500, &window, [&] {
+            window.grab().save(parser.value(screenshot));
+            app.quit();
+        });
+    } else {
+        QTimer::singleShot(0, &window, [&] { window.offerRecovery(); });
+    }
+    return app.exec();
+}

@@ -1,0 +1,20 @@
+#version 330 core
+// Soft shading with a headlight: the light sits at the eye.
+in vec3 viewPosition;
+in vec3 viewNormal;
+
+uniform vec3 baseColour;
+uniform float highlight;  // 0 = normal, 1 = selected
+
+out vec4 fragColour;
+
+void main() {
+    vec3 n = normalize(viewNormal);
+    vec3 toEye = normalize(-viewPosition);
+    if (!gl_FrontFacing) n = -n;
+    float diffuse = max(dot(n, toEye), 0.0);
+    float specular = pow(max(dot(reflect(-toEye, n), toEye), 0.0), 32.0);
+    vec3 colour = baseColour * (0.25 + 0.75 * diffuse) + vec3(0.12) * specular;
+    colour = mix(colour, vec3(1.0, 0.62, 0.2), 0.25 * highlight);
+    fragColour = vec4(colour, 1.0);
+}

@@ -1,0 +1,66 @@
+#version 330 core
+// Skinned part mesh: dual quaternion skinning (Kavan et al. 2008, with the
+// antipodal fix) or linear blend skinning, on the GPU, from up to four
+// influences per vertex.
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec4 inBones;
+layout(location = 3) in vec4 inWeights;
+
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+uniform int boneCount;               // 0 = rest pose, no skinning
+uniform int dualQuaternionSkinning;  // 1 = DQS, 0 = LBS
+uniform vec4 boneReal[128];          // rotation part (x, y, z, w)
+uniform vec4 boneDual[128];          // translation part
+uniform vec4 boneRows[384];          // 3 rows of each bone's affine matrix
+
+out vec3 viewPosition;
+out vec3 viewNormal;
+
+vec3 rotate(vec4 q, vec3 v) { return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v); }
+
+void main() {
+    vec3 p = inPosition;
+    vec3 n = inNormal;
+    if (boneCount > 0) {
+        if (dualQuaternionSkinning == 1) {
+            vec4 pivot = boneReal[int(inBones.x)];
+            vec4 real = vec4(0.0);
+            vec4 dual = vec4(0.0);
+            for (int k = 0; k < 4; ++k) {
+                int b = int(inBones[k]);
+                vec4 r = boneReal[b];
+                vec4 d = boneDual[b];
+                // Antipodal fix: blend in the hemisphere of the dominant bone.
+                if (dot(r, pivot) < 0.0) { r = -r; d = -d; }
+                real += inWeights[k] * r;
+                dual += inWeights[k] * d;
+            }
+            float len = length(real);
+            real /= len;
+            dual /= len;
+            vec3 t = 2.0 * (real.w * dual.xyz - dual.w * real.xyz + cross(real.xyz, dual.xyz));
+            p = rotate(real, inPosition) + t;
+            n = rotate(real, inNormal);
+        } else {
+            vec3 sp = vec3(0.0);
+            vec3 sn = vec3(0.0);
+            for (int k = 0; k < 4; ++k) {
+                int b = int(inBones[k]);
+                mat4 m = transpose(mat4(boneRows[3 * b], boneRows[3 * b + 1], boneRows[3 * b + 2],
+                                        vec4(0.0, 0.0, 0.0, 1.0)));
+                sp += inWeights[k] * (m * vec4(inPosition, 1.0)).xyz;
+                sn += inWeights[k] * (mat3(m) * inNormal);
+            }
+            p = sp;
+            n = sn;
+        }
+    }
+    vec4 world = model * vec4(p, 1.0);
+    vec4 eye = view * world;
+    viewPosition = eye.xyz;
+    viewNormal = mat3(view) * mat3(model) * n;
+    gl_Position = projection * eye;
+}

@@ -1,0 +1,442 @@
+#include "MainWindow.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QStyle>
+#include <QTabWidget>
+#include <QToolBar>
+#include <QUndoView>
+
+#include "DocumentView.h"
+#include "base/Error.h"
+#include "model/Autosave.h"
+#include "model/DocumentFile.h"
+#include "model/commands/DeletePartCommand.h"
+#include "panels/OutlinerPanel.h"
+#include "panels/PropertiesPanel.h"
+#include "tools/SelectTool.h"
+#include "tools/SketchTool.h"
+#include "viewport/Viewport.h"
+
+namespace rigmesh::widgets {
+namespace {
+
+constexpr int kMaxRecentFiles = 8;
+const char* kRecentKey = "recentFiles";
+
+QString fileFilter() {
+    return QObject::tr("RigMesh documents (*.%1)")
+        .arg(QString::fromLatin1(model::DocumentFile::kSuffix));
+}
+
+}  // namespace
+
+MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
+    : QMainWindow(parent),
+      tabs_(new QTabWidget(this)),
+      outliner_(new OutlinerPanel(this)),
+      properties_(new PropertiesPanel(this)),
+      history_(new QUndoView(&undoGroup_, this)),
+      selectTool_(new SelectTool(this)),
+      sketchTool_(new SketchTool(this)),
+      recoveryDirectory_(recoveryDirectory.isEmpty() ? QStandardPaths::writableLocation(
+                                                           QStandardPaths::AppLocalDataLocation) +
+                                                           QStringLiteral("/recovery")
+                                                     : recoveryDirectory) {
+    setObjectName(QStringLiteral("RigMeshStudioMainWindow"));
+    tabs_->setTabsClosable(true);
+    tabs_->setDocumentMode(true);
+    setCentralWidget(tabs_);
+    connect(tabs_, &QTabWidget::currentChanged, this, &MainWindow::currentTabChanged);
+    connect(tabs_, &QTabWidget::tabCloseRequested, this, &MainWindow::closeDocument);
+    connect(sketchTool_, &SketchTool::hintMessage, this,
+            [this](const QString& m) { showStatus(m, 5000); });
+    connect(properties_, &PropertiesPanel::statusMessage, this, &MainWindow::showStatus);
+    createActions();
+    createDocks();
+
+    QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    if (!settings.contains(QStringLiteral("window/geometry")))
+        resize(1280, 800);
+    rebuildRecentMenu();
+    updateTitle();
+    showStatus(tr("Ready: press S to sketch a part, Q to select; middle drag orbits"));
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createActions() {
+    QStyle* s = style();
+    auto* file = menuBar()->addMenu(tr("&File"));
+    auto* toolbar = addToolBar(tr("Main"));
+    toolbar->setObjectName(QStringLiteral("mainToolBar"));
+
+    auto add = [&](QMenu* menu, const QString& text, QKeySequence shortcut, auto slot,
+                   QStyle::StandardPixmap icon = QStyle::SP_CustomBase) {
+        QAction* action = menu->addAction(text);
+        action->setShortcut(shortcut);
+        if (icon != QStyle::SP_CustomBase)
+            action->setIcon(s->standardIcon(icon));
+        connect(action, &QAction::triggered, this, slot);
+        return action;
+    };
+    toolbar->addAction(
+        add(file, tr("&New"), QKeySequence::New, &MainWindow::newDocument, QStyle::SP_FileIcon));
+    toolbar->addAction(add(file, tr("&Open..."), QKeySequence::Open, &MainWindow::open,
+                           QStyle::SP_DialogOpenButton));
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    toolbar->addAction(
+        add(file, tr("&Save"), QKeySequence::Save, &MainWindow::save, QStyle::SP_DialogSaveButton));
+    add(file, tr("Save &As..."), QKeySequence::SaveAs, &MainWindow::saveAs);
+    file->addSeparator();
+    add(file, tr("&Close"), QKeySequence::Close, [this] { closeDocument(tabs_->currentIndex()); });
+    add(file, tr("&Quit"), QKeySequence::Quit, &QWidget::close);
+
+    auto* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = undoGroup_.createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    undo->setIcon(s->standardIcon(QStyle::SP_ArrowBack));
+    QAction* redo = undoGroup_.createRedoAction(this, tr("&Redo"));
+    redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
+    redo->setIcon(s->standardIcon(QStyle::SP_ArrowForward));
+    edit->addAction(undo);
+    edit->addAction(redo);
+    toolbar->addSeparator();
+    toolbar->addAction(undo);
+    toolbar->addAction(redo);
+    edit->addSeparator();
+    add(edit, tr("&Delete Part"), QKeySequence::Delete, &MainWindow::deleteSelection,
+        QStyle::SP_TrashIcon);
+
+    viewMenu_ = menuBar()->addMenu(tr("&View"));
+    add(viewMenu_, tr("Frame &All"), QKeySequence(Qt::Key_Home), [this] {
+        if (auto* v = currentView())
+            v->viewport()->frameAll();
+    });
+    add(viewMenu_, tr("Frame &Selected"), QKeySequence(Qt::KeypadModifier | Qt::Key_Period),
+        [this] {
+            if (auto* v = currentView())
+                v->viewport()->frameSelected();
+        });
+    viewMenu_->addSeparator();
+    wireframeAction_ = viewMenu_->addAction(tr("&Wireframe"));
+    wireframeAction_->setCheckable(true);
+    wireframeAction_->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_W));
+    connect(wireframeAction_, &QAction::toggled, this, [this](bool on) {
+        if (auto* v = currentView())
+            v->viewport()->setWireframe(on);
+    });
+    dqsAction_ = viewMenu_->addAction(tr("&Dual Quaternion Skinning"));
+    dqsAction_->setCheckable(true);
+    dqsAction_->setChecked(true);
+    dqsAction_->setToolTip(tr("Off: linear blend skinning"));
+    connect(dqsAction_, &QAction::toggled, this, [this](bool on) {
+        if (auto* v = currentView())
+            v->viewport()->setDualQuaternionSkinning(on);
+    });
+    gridAction_ = viewMenu_->addAction(tr("&Grid"));
+    gridAction_->setCheckable(true);
+    gridAction_->setChecked(true);
+    connect(gridAction_, &QAction::toggled, this, [this](bool on) {
+        if (auto* v = currentView())
+            v->viewport()->setGridVisible(on);
+    });
+    viewMenu_->addSeparator();
+
+    auto* tools = menuBar()->addMenu(tr("&Tools"));
+    toolGroup_ = new QActionGroup(this);
+    selectToolAction_ = add(tools, tr("&Select / Move"), QKeySequence(Qt::Key_Q),
+                            &MainWindow::activateSelectTool, QStyle::SP_ArrowUp);
+    sketchToolAction_ = add(tools, tr("S&ketch Part"), QKeySequence(Qt::Key_S),
+                            &MainWindow::activateSketchTool, QStyle::SP_FileDialogContentsView);
+    for (QAction* a : {selectToolAction_, sketchToolAction_}) {
+        a->setCheckable(true);
+        toolGroup_->addAction(a);
+    }
+    toolbar->addSeparator();
+    toolbar->addAction(selectToolAction_);
+    toolbar->addAction(sketchToolAction_);
+    sketchToolAction_->setChecked(true);
+
+    auto* help = menuBar()->addMenu(tr("&Help"));
+    add(help, tr("&About RigMesh Studio"), QKeySequence(), [this] {
+        QMessageBox::about(this, tr("About RigMesh Studio"),
+                           tr("<b>RigMesh Studio</b><p>Sketch a silhouette, get a rigged part: "
+                              "surface, skeleton and skin weights, after Borosán et al., "
+                              "<i>RigMesh</i>, SIGGRAPH Asia 2012.</p><p>GPL-3.0-or-later.</p>"));
+    });
+}
+
+void MainWindow::createDocks() {
+    auto dock = [&](const QString& title, const char* name, QWidget* content,
+                    Qt::DockWidgetArea area) {
+        auto* widget = new QDockWidget(title, this);
+        widget->setObjectName(QString::fromLatin1(name));
+        widget->setWidget(content);
+        addDockWidget(area, widget);
+        viewMenu_->addAction(widget->toggleViewAction());
+    };
+    dock(tr("Outliner"), "outlinerDock", outliner_, Qt::RightDockWidgetArea);
+    dock(tr("Properties"), "propertiesDock", properties_, Qt::RightDockWidgetArea);
+    dock(tr("History"), "historyDock", history_, Qt::LeftDockWidgetArea);
+    history_->setEmptyLabel(tr("<original>"));
+}
+
+DocumentView* MainWindow::addDocument(std::unique_ptr<model::Document> document) {
+    auto* view = new DocumentView(std::move(document), tabs_);
+    model::Document* doc = view->document();
+    undoGroup_.addStack(doc->undoStack());
+    connect(view, &DocumentView::statusMessage, this, &MainWindow::showStatus);
+    connect(view->viewport(), &Viewport::statusMessage, this,
+            [this](const QString& m) { showStatus(m); });
+    connect(sketchTool_, &SketchTool::strokeFinished, view,
+            [this, view](const auto& stroke, const auto& plane) {
+                if (currentView() == view)
+                    view->createPartFromStroke(stroke, plane);
+            });
+    auto refreshTab = [this, view] {
+        const int index = tabs_->indexOf(view);
+        if (index < 0)
+            return;
+        const model::Document* d = view->document();
+        tabs_->setTabText(index,
+                          d->displayName() + (d->isModified() ? QStringLiteral(" *") : QString()));
+        tabs_->setTabToolTip(index, d->filePath());
+        if (view == currentView())
+            updateTitle();
+    };
+    connect(doc, &model::Document::modifiedChanged, this, refreshTab);
+    connect(doc, &model::Document::filePathChanged, this, refreshTab);
+    autosaves_[view] = new model::Autosave(doc, recoveryDirectory_, view);
+    const int index = tabs_->addTab(view, doc->displayName());
+    tabs_->setCurrentIndex(index);
+    refreshTab();
+    return view;
+}
+
+DocumentView* MainWindow::currentView() const {
+    return qobject_cast<DocumentView*>(tabs_->currentWidget());
+}
+
+model::Document* MainWindow::currentDocument() const {
+    auto* view = currentView();
+    return view ? view->document() : nullptr;
+}
+
+void MainWindow::currentTabChanged(int) {
+    DocumentView* view = currentView();
+    model::Document* document = view ? view->document() : nullptr;
+    undoGroup_.setActiveStack(document ? document->undoStack() : nullptr);
+    outliner_->setDocument(document);
+    properties_->setDocument(document);
+    if (view) {
+        view->viewport()->setTool(sketchToolAction_->isChecked()
+                                      ? static_cast<ViewportTool*>(sketchTool_)
+                                      : static_cast<ViewportTool*>(selectTool_));
+        view->viewport()->setWireframe(wireframeAction_->isChecked());
+        view->viewport()->setDualQuaternionSkinning(dqsAction_->isChecked());
+        view->viewport()->setGridVisible(gridAction_->isChecked());
+    }
+    updateTitle();
+}
+
+void MainWindow::updateTitle() {
+    model::Document* document = currentDocument();
+    setWindowTitle(document ? tr("%1[*] - RigMesh Studio").arg(document->displayName())
+                            : tr("RigMesh Studio"));
+    setWindowModified(document && document->isModified());
+}
+
+void MainWindow::showStatus(const QString& message, int timeoutMs) {
+    statusBar()->showMessage(message, timeoutMs);
+}
+
+void MainWindow::newDocument() {
+    addDocument(std::make_unique<model::Document>());
+}
+
+void MainWindow::open() {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Document"), QString(), fileFilter());
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+bool MainWindow::openFile(const QString& path) {
+    for (int i = 0; i < tabs_->count(); ++i) {
+        auto* view = qobject_cast<DocumentView*>(tabs_->widget(i));
+        if (view && QFileInfo(view->document()->filePath()) == QFileInfo(path)) {
+            tabs_->setCurrentIndex(i);
+            return true;
+        }
+    }
+    try {
+        addDocument(model::DocumentFile::load(path));
+        addRecentFile(path);
+        showStatus(tr("Opened %1").arg(QFileInfo(path).fileName()), 4000);
+        return true;
+    } catch (const rigmesh::Error& error) {
+        QMessageBox::warning(this, tr("Cannot open document"),
+                             QString::fromStdString(error.what()));
+        return false;
+    }
+}
+
+bool MainWindow::saveDocument(DocumentView* view, const QString& path) {
+    try {
+        model::DocumentFile::save(*view->document(), path);
+        autosaves_[view]->discard();
+        addRecentFile(path);
+        showStatus(tr("Saved %1").arg(QFileInfo(path).fileName()), 4000);
+        return true;
+    } catch (const rigmesh::Error& error) {
+        QMessageBox::warning(this, tr("Cannot save document"),
+                             QString::fromStdString(error.what()));
+        return false;
+    }
+}
+
+bool MainWindow::save() {
+    DocumentView* view = currentView();
+    if (!view)
+        return false;
+    if (view->document()->filePath().isEmpty())
+        return saveAs();
+    return saveDocument(view, view->document()->filePath());
+}
+
+bool MainWindow::saveAs() {
+    DocumentView* view = currentView();
+    if (!view)
+        return false;
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Document"),
+                                                view->document()->filePath(), fileFilter());
+    if (path.isEmpty())
+        return false;
+    const QString suffix = QStringLiteral(".") + QString::fromLatin1(model::DocumentFile::kSuffix);
+    if (!path.endsWith(suffix))
+        path += suffix;
+    return saveDocument(view, path);
+}
+
+bool MainWindow::maybeSave(DocumentView* view) {
+    if (!view->document()->isModified())
+        return true;
+    tabs_->setCurrentWidget(view);
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved changes"),
+        tr("%1 has unsaved changes. Save them?").arg(view->document()->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Cancel)
+        return false;
+    if (answer == QMessageBox::Save)
+        return save();
+    return true;
+}
+
+bool MainWindow::closeDocument(int index) {
+    auto* view = qobject_cast<DocumentView*>(tabs_->widget(index));
+    if (!view || !maybeSave(view))
+        return false;
+    undoGroup_.removeStack(view->document()->undoStack());
+    autosaves_.erase(view);  // the Autosave is a child of the view: it goes with it
+    tabs_->removeTab(index);
+    delete view;
+    return true;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    while (tabs_->count() > 0) {
+        if (!closeDocument(tabs_->count() - 1)) {
+            event->ignore();
+            return;
+        }
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    event->accept();
+}
+
+void MainWindow::activateSelectTool() {
+    selectToolAction_->setChecked(true);
+    if (auto* v = currentView())
+        v->viewport()->setTool(selectTool_);
+    showStatus(selectTool_->hint());
+}
+
+void MainWindow::activateSketchTool() {
+    sketchToolAction_->setChecked(true);
+    if (auto* v = currentView())
+        v->viewport()->setTool(sketchTool_);
+    showStatus(sketchTool_->hint());
+}
+
+void MainWindow::deleteSelection() {
+    model::Document* document = currentDocument();
+    if (!document || !document->contains(document->selection().part)) {
+        showStatus(tr("Select a part to delete"), 4000);
+        return;
+    }
+    const model::PartId id = document->selection().part;
+    document->clearSelection();
+    document->undoStack()->push(new model::DeletePartCommand(*document, id));
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+    QSettings settings;
+    QStringList files = settings.value(QString::fromLatin1(kRecentKey)).toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > kMaxRecentFiles)
+        files.removeLast();
+    settings.setValue(QString::fromLatin1(kRecentKey), files);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    recentMenu_->clear();
+    const QStringList files = QSettings().value(QString::fromLatin1(kRecentKey)).toStringList();
+    for (const QString& path : files)
+        connect(recentMenu_->addAction(QFileInfo(path).fileName()), &QAction::triggered, this,
+                [this, path] { openFile(path); });
+    recentMenu_->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::offerRecovery() {
+    const auto files = model::Autosave::recoveryFiles(recoveryDirectory_);
+    for (const auto& file : files) {
+        const auto answer = QMessageBox::question(
+            this, tr("Recover unsaved work?"),
+            tr("RigMesh Studio did not close properly. Restore the document autosaved at %1?")
+                .arg(file.lastModified.toString()),
+            QMessageBox::Yes | QMessageBox::Discard);
+        if (answer == QMessageBox::Yes) {
+            try {
+                auto document =
+                    std::make_unique<model::Document>(model::DocumentFile::read(file.path));
+                addDocument(std::move(document));
+            } catch (const rigmesh::Error& error) {
+                showStatus(tr("Could not recover: %1").arg(QString::fromStdString(error.what())),
+                           8000);
+                continue;
+            }
+        }
+        QFile::remove(file.path);
+    }
+}
+
+}  // namespace rigmesh::widgets

@@ -1,0 +1,93 @@
+// The studio's main window: documents in tabs, one undo stack each joined by
+// a QUndoGroup for the Edit menu, docks for the outliner, properties and undo
+// history, File/Edit/View/Tools/Help menus with standard shortcuts, a
+// toolbar, a status bar for hints and errors, settings and recent files kept
+// in QSettings, and autosave with recovery. Panels and tools own their own
+// wiring; the window only routes the active document to them.
+#pragma once
+
+#include <QMainWindow>
+#include <QUndoGroup>
+#include <map>
+#include <memory>
+
+class QTabWidget;
+class QUndoView;
+class QMenu;
+class QActionGroup;
+
+namespace rigmesh::model {
+class Autosave;
+class Document;
+}  // namespace rigmesh::model
+
+namespace rigmesh::widgets {
+
+class DocumentView;
+class OutlinerPanel;
+class PropertiesPanel;
+class SelectTool;
+class SketchTool;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+  public:
+    // `recoveryDirectory`: where autosave writes; empty = the standard location.
+    explicit MainWindow(const QString& recoveryDirectory = {}, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Adds a document as a new tab and makes it current.
+    DocumentView* addDocument(std::unique_ptr<model::Document> document);
+    DocumentView* currentView() const;
+    model::Document* currentDocument() const;
+    QTabWidget* tabs() const { return tabs_; }
+    OutlinerPanel* outliner() const { return outliner_; }
+
+    bool openFile(const QString& path);
+    // Offers to restore documents left in the recovery folder by a crash.
+    void offerRecovery();
+
+  public slots:
+    void newDocument();
+    void open();
+    bool save();
+    bool saveAs();
+    bool closeDocument(int index);
+    void activateSelectTool();
+    void activateSketchTool();
+    void deleteSelection();
+
+  protected:
+    void closeEvent(QCloseEvent* event) override;
+
+  private:
+    void createActions();
+    void createDocks();
+    void currentTabChanged(int index);
+    void updateTitle();
+    bool saveDocument(DocumentView* view, const QString& path);
+    bool maybeSave(DocumentView* view);
+    void addRecentFile(const QString& path);
+    void rebuildRecentMenu();
+    void showStatus(const QString& message, int timeoutMs = 0);
+
+    QTabWidget* tabs_;
+    QUndoGroup undoGroup_;
+    OutlinerPanel* outliner_;
+    PropertiesPanel* properties_;
+    QUndoView* history_;
+    QMenu* recentMenu_ = nullptr;
+    QMenu* viewMenu_ = nullptr;
+    QActionGroup* toolGroup_ = nullptr;
+    QAction* selectToolAction_ = nullptr;
+    QAction* sketchToolAction_ = nullptr;
+    QAction* wireframeAction_ = nullptr;
+    QAction* dqsAction_ = nullptr;
+    QAction* gridAction_ = nullptr;
+    SelectTool* selectTool_;
+    SketchTool* sketchTool_;
+    QString recoveryDirectory_;
+    std::map<DocumentView*, model::Autosave*> autosaves_;
+};
+
+}  // namespace rigmesh::widgets

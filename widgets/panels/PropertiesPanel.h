@@ -1,0 +1,40 @@
+// The properties panel: figures of the selected part (vertices, faces,
+// joints, bones, regions) and its build options; "Rebuild" rebuilds the part
+// from its stroke with the edited options as one undoable command.
+#pragma once
+
+#include <QWidget>
+
+class QCheckBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+
+namespace rigmesh::model {
+class Document;
+}
+
+namespace rigmesh::widgets {
+
+class PropertiesPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit PropertiesPanel(QWidget* parent = nullptr);
+    void setDocument(model::Document* document);
+
+  signals:
+    void statusMessage(const QString& message, int timeoutMs = 0);
+
+  private:
+    void refresh();
+    void rebuild();
+
+    model::Document* document_ = nullptr;
+    QLabel* title_;
+    QLabel* figures_;
+    QDoubleSpinBox* edgeLength_;
+    QCheckBox* smoothing_;
+    QPushButton* rebuildButton_;
+};
+
+}  // namespace rigmesh::widgets

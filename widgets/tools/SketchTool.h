@@ -1,0 +1,37 @@
+// Sketch tool: drag with the left button to draw a silhouette on the plane
+// through the scene centre facing the camera; on release the stroke is handed
+// to `strokeFinished` in that plane's 2D coordinates with the plane's frame,
+// which becomes the new part's placement (paper section 2: the part appears
+// where it was drawn). A click or a tiny stroke only shows a hint.
+#pragma once
+
+#include <QObject>
+#include <vector>
+
+#include "model/PartNode.h"
+#include "viewport/ViewportTool.h"
+
+namespace rigmesh::widgets {
+
+class SketchTool : public QObject, public ViewportTool {
+    Q_OBJECT
+  public:
+    using QObject::QObject;
+    QString name() const override { return tr("Sketch"); }
+    QString hint() const override;
+    void press(Viewport& viewport, QMouseEvent* event) override;
+    void move(Viewport& viewport, QMouseEvent* event) override;
+    void release(Viewport& viewport, QMouseEvent* event) override;
+    void cancel(Viewport& viewport) override;
+
+  signals:
+    void strokeFinished(const std::vector<rigmesh::Vec2>& stroke,
+                        const rigmesh::model::Placement& plane);
+    void hintMessage(const QString& message);
+
+  private:
+    std::vector<QPointF> pixels_;
+    bool drawing_ = false;
+};
+
+}  // namespace rigmesh::widgets

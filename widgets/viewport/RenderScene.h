@@ -1,0 +1,48 @@
+// What the viewport draws, gathered from the document each frame: plain data,
+// so the renderer knows nothing of documents, tools or selection rules.
+#pragma once
+
+#include <QMatrix4x4>
+#include <QVector3D>
+#include <QVector4D>
+#include <memory>
+#include <vector>
+
+#include "part/Part.h"
+
+namespace rigmesh::widgets {
+
+struct RenderPart {
+    std::shared_ptr<const Part> part;
+    QMatrix4x4 model;  // the part's placement in the world
+    QVector3D colour{0.72f, 0.75f, 0.82f};
+    bool selected = false;
+    // Skinning per bone (order of part->skeleton.bones()): unit dual
+    // quaternions (x, y, z, w) and 3x4 matrix rows; empty = the rest pose.
+    std::vector<QVector4D> boneReal, boneDual, boneRows;
+};
+
+// Coloured vertices: pairs for GL_LINES, or single points.
+struct ColouredVertices {
+    std::vector<QVector3D> positions;
+    std::vector<QVector3D> colours;
+    void add(const QVector3D& p, const QVector3D& c) {
+        positions.push_back(p);
+        colours.push_back(c);
+    }
+};
+
+struct RenderScene {
+    std::vector<RenderPart> parts;
+    ColouredVertices lines;   // skeleton bones and other overlays, in pairs
+    ColouredVertices points;  // joints
+    ColouredVertices stroke;  // the stroke being drawn, as a strip
+    bool wireframe = false;
+    bool dualQuaternionSkinning = true;
+    bool showGrid = true;
+    float gridHeight = 0.0f;  // the ground grid lies in the plane y = gridHeight
+    float gridSpacing = 0.1f;
+    int gridLines = 20;  // on each side of the origin
+};
+
+}  // namespace rigmesh::widgets

@@ -1,0 +1,342 @@
+#include "viewport/Viewport.h"
+
+#include <Eigen/Geometry>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QWheelEvent>
+#include <limits>
+
+#include "viewport/SceneRenderer.h"
+#include "viewport/ViewportTool.h"
+
+namespace rigmesh::widgets {
+namespace {
+
+QVector3D toQt(const Vec3& v) {
+    return QVector3D(float(v.x()), float(v.y()), float(v.z()));
+}
+Vec3 toEigen(const QVector3D& v) {
+    return Vec3(v.x(), v.y(), v.z());
+}
+
+QMatrix4x4 placementMatrix(const model::Placement& placement) {
+    Eigen::Affine3d affine = Eigen::Translation3d(placement.translation) * placement.rotation;
+    QMatrix4x4 m;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            m(r, c) = static_cast<float>(affine.matrix()(r, c));
+    return m;
+}
+
+Vec3 toWorld(const model::Placement& placement, const Vec3& p) {
+    return placement.rotation * p + placement.translation;
+}
+
+// Soft, distinct colours per part id.
+QVector3D partColour(model::PartId id) {
+    static const QVector3D palette[] = {{0.72f, 0.76f, 0.84f}, {0.80f, 0.74f, 0.66f},
+                                        {0.68f, 0.80f, 0.70f}, {0.82f, 0.70f, 0.76f},
+                                        {0.74f, 0.72f, 0.86f}, {0.84f, 0.80f, 0.62f}};
+    return palette[id % (sizeof palette / sizeof palette[0])];
+}
+
+// Möller-Trumbore: distance along the ray to the triangle, or infinity.
+double rayTriangle(const Vec3& origin, const Vec3& direction, const Vec3& a, const Vec3& b,
+                   const Vec3& c) {
+    const Vec3 e1 = b - a, e2 = c - a, p = direction.cross(e2);
+    const double det = e1.dot(p);
+    if (std::abs(det) < 1e-300)
+        return std::numeric_limits<double>::infinity();
+    const Vec3 s = origin - a;
+    const double u = s.dot(p) / det;
+    if (u < 0 || u > 1)
+        return std::numeric_limits<double>::infinity();
+    const Vec3 q = s.cross(e1);
+    const double v = direction.dot(q) / det;
+    if (v < 0 || u + v > 1)
+        return std::numeric_limits<double>::infinity();
+    const double t = e2.dot(q) / det;
+    return t > 0 ? t : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+Viewport::Viewport(model::Document* document, QWidget* parent)
+    : QOpenGLWidget(parent), document_(document), renderer_(std::make_unique<SceneRenderer>()) {
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setSamples(4);
+    setFormat(format);
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);
+    setMinimumSize(320, 240);
+    auto refresh = [this] { update(); };
+    connect(document_, &model::Document::partInserted, this, refresh);
+    connect(document_, &model::Document::partRemoved, this, refresh);
+    connect(document_, &model::Document::partChanged, this, refresh);
+    connect(document_, &model::Document::selectionChanged, this, refresh);
+    camera_.setView(0, 0);
+}
+
+Viewport::~Viewport() {
+    makeCurrent();
+    renderer_->release();
+    doneCurrent();
+}
+
+void Viewport::setTool(ViewportTool* tool) {
+    if (tool_ && tool_ != tool)
+        tool_->cancel(*this);
+    tool_ = tool;
+    if (tool_)
+        emit statusMessage(tool_->hint());
+}
+
+void Viewport::setWireframe(bool on) {
+    wireframe_ = on;
+    update();
+}
+
+void Viewport::setDualQuaternionSkinning(bool on) {
+    dualQuaternion_ = on;
+    update();
+}
+
+void Viewport::setGridVisible(bool on) {
+    gridVisible_ = on;
+    update();
+}
+
+void Viewport::setStrokeOverlay(std::vector<QVector3D> points) {
+    strokeOverlay_ = std::move(points);
+    update();
+}
+
+void Viewport::initializeGL() {
+    QString error;
+    if (!renderer_->initialize(&error))
+        emit statusMessage(tr("OpenGL 3.3 shaders failed: %1").arg(error));
+}
+
+void Viewport::paintGL() {
+    if (!framedOnce_ && document_->partCount() > 0) {
+        framedOnce_ = true;
+        frameAll();
+    }
+    renderer_->render(
+        gatherScene(), camera_,
+        QSize(int(width() * devicePixelRatioF()), int(height() * devicePixelRatioF())));
+}
+
+Eigen::AlignedBox3d Viewport::sceneBox(bool selectedOnly) const {
+    Eigen::AlignedBox3d box;
+    const auto selection = document_->selection();
+    for (const model::PartNode& node : document_->parts()) {
+        if (!node.visible || !node.part)
+            continue;
+        if (selectedOnly && node.id != selection.part)
+            continue;
+        if (selectedOnly && selection.joint != kNoJoint &&
+            node.part->skeleton.hasJoint(selection.joint)) {
+            const Vec3 p =
+                toWorld(node.placement, node.part->skeleton.joint(selection.joint).position);
+            box.extend(p);
+            continue;
+        }
+        for (const Vec3& v : node.part->mesh.vertices)
+            box.extend(toWorld(node.placement, v));
+    }
+    return box;
+}
+
+QVector3D Viewport::sceneCentre() const {
+    const auto box = sceneBox(false);
+    return box.isEmpty() ? QVector3D(0, 0, 0) : toQt(box.center());
+}
+
+void Viewport::frameBox(const Eigen::AlignedBox3d& box) {
+    if (box.isEmpty())
+        return;
+    const double radius = std::max(0.5 * box.diagonal().norm(), 1e-6);
+    camera_.frame(toQt(box.center()), radius);
+    update();
+}
+
+void Viewport::frameAll() {
+    frameBox(sceneBox(false));
+}
+
+void Viewport::frameSelected() {
+    auto box = sceneBox(true);
+    if (box.isEmpty())
+        box = sceneBox(false);
+    if (!box.isEmpty() && box.diagonal().norm() == 0)
+        box.extend(box.min() + Vec3::Constant(0.1 * camera_.distance()));
+    frameBox(box);
+}
+
+RenderScene Viewport::gatherScene() const {
+    RenderScene scene;
+    scene.wireframe = wireframe_;
+    scene.dualQuaternionSkinning = dualQuaternion_;
+    scene.showGrid = gridVisible_;
+    const auto box = sceneBox(false);
+    if (!box.isEmpty()) {
+        scene.gridHeight = static_cast<float>(box.min().y());
+        const double size = std::max(box.sizes().maxCoeff(), 1e-6);
+        scene.gridSpacing = static_cast<float>(std::pow(10.0, std::floor(std::log10(size / 2.0))));
+        scene.gridLines = std::clamp(static_cast<int>(std::ceil(size / scene.gridSpacing)), 5, 40);
+    }
+    const auto selection = document_->selection();
+    for (const model::PartNode& node : document_->parts()) {
+        if (!node.visible || !node.part)
+            continue;
+        RenderPart item;
+        item.part = node.part;
+        item.model = placementMatrix(node.placement);
+        item.colour = partColour(node.id);
+        item.selected = node.id == selection.part;
+        scene.parts.push_back(std::move(item));
+
+        const Skeleton& skeleton = node.part->skeleton;
+        const QVector3D boneColour = node.id == selection.part ? QVector3D(0.95f, 0.85f, 0.45f)
+                                                               : QVector3D(0.75f, 0.72f, 0.55f);
+        for (const Bone& bone : skeleton.bones()) {
+            scene.lines.add(toQt(toWorld(node.placement, skeleton.joint(bone.head).position)),
+                            boneColour);
+            scene.lines.add(toQt(toWorld(node.placement, skeleton.joint(bone.tail).position)),
+                            boneColour);
+        }
+        for (const Joint& joint : skeleton.joints()) {
+            const bool selected = node.id == selection.part && joint.id == selection.joint;
+            scene.points.add(
+                toQt(toWorld(node.placement, joint.position)),
+                selected ? QVector3D(1.0f, 0.55f, 0.1f) : QVector3D(0.2f, 0.2f, 0.22f));
+        }
+    }
+    for (const QVector3D& p : strokeOverlay_)
+        scene.stroke.add(p, QVector3D(1.0f, 0.45f, 0.2f));
+    return scene;
+}
+
+QVector3D Viewport::sketchPlanePoint(const QPointF& pixel) const {
+    return camera_.pointOnViewPlane(pixel, QSizeF(size()), sceneCentre());
+}
+
+QVector3D Viewport::viewPlanePoint(const QPointF& pixel, const QVector3D& through) const {
+    return camera_.pointOnViewPlane(pixel, QSizeF(size()), through);
+}
+
+model::Placement Viewport::sketchPlacement() const {
+    // The part's x and y axes are the camera's right and up, its z faces the
+    // viewer, its origin is the scene centre: the sketch appears where drawn.
+    Eigen::Matrix3d basis;
+    basis.col(0) = toEigen(camera_.right());
+    basis.col(1) = toEigen(camera_.up());
+    basis.col(2) = -toEigen(camera_.forward());
+    model::Placement placement;
+    placement.rotation = Eigen::Quaterniond(basis).normalized();
+    placement.translation = toEigen(sceneCentre());
+    return placement;
+}
+
+QVector3D Viewport::jointWorldPosition(model::PartId part, JointId joint) const {
+    const model::PartNode& node = document_->part(part);
+    return toQt(toWorld(node.placement, node.part->skeleton.joint(joint).position));
+}
+
+std::optional<model::Selection> Viewport::jointAt(const QPointF& pixel) const {
+    constexpr double kPickRadiusPixels = 8.0;
+    std::optional<model::Selection> best;
+    double bestDistance = kPickRadiusPixels;
+    for (const model::PartNode& node : document_->parts()) {
+        if (!node.visible || !node.part)
+            continue;
+        for (const Joint& joint : node.part->skeleton.joints()) {
+            QVector3D screen =
+                camera_.project(toQt(toWorld(node.placement, joint.position)), QSizeF(size()));
+            double d = std::hypot(screen.x() - pixel.x(), screen.y() - pixel.y());
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = model::Selection{node.id, joint.id};
+            }
+        }
+    }
+    return best;
+}
+
+std::optional<model::PartId> Viewport::partAt(const QPointF& pixel) const {
+    const Ray ray = camera_.rayThrough(pixel, QSizeF(size()));
+    std::optional<model::PartId> best;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const model::PartNode& node : document_->parts()) {
+        if (!node.visible || !node.part)
+            continue;
+        // Into the part's own frame.
+        const Eigen::Quaterniond inverse = node.placement.rotation.conjugate();
+        const Vec3 origin = inverse * (toEigen(ray.origin) - node.placement.translation);
+        const Vec3 direction = inverse * toEigen(ray.direction);
+        const auto& v = node.part->mesh.vertices;
+        for (const auto& f : node.part->mesh.faces) {
+            double t = rayTriangle(origin, direction, v[f[0]], v[f[1]], v[f[2]]);
+            if (t < nearest) {
+                nearest = t;
+                best = node.id;
+            }
+        }
+    }
+    return best;
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event) {
+    lastMouse_ = event->position();
+    if (event->button() == Qt::MiddleButton) {
+        navigating_ = true;
+        return;
+    }
+    if (event->button() == Qt::LeftButton && tool_)
+        tool_->press(*this, event);
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent* event) {
+    const QPointF delta = event->position() - lastMouse_;
+    lastMouse_ = event->position();
+    if (navigating_) {
+        if (event->modifiers() & Qt::ShiftModifier)
+            camera_.pan(delta, QSizeF(size()));
+        else
+            camera_.orbit(delta);
+        update();
+        return;
+    }
+    if (tool_)
+        tool_->move(*this, event);
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+    if (event->button() == Qt::MiddleButton) {
+        navigating_ = false;
+        return;
+    }
+    if (event->button() == Qt::LeftButton && tool_)
+        tool_->release(*this, event);
+}
+
+void Viewport::wheelEvent(QWheelEvent* event) {
+    camera_.dolly(event->angleDelta().y() / 120.0);
+    update();
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Home) {
+        frameAll();
+    } else if (event->key() == Qt::Key_Period && (event->modifiers() & Qt::KeypadModifier)) {
+        frameSelected();
+    } else {
+        QOpenGLWidget::keyPressEvent(event);
+    }
+}
+
+}  // namespace rigmesh::widgets

@@ -1,0 +1,93 @@
+// The 3D view of a document: a QOpenGLWidget (GL 3.3 core) that draws the
+// document's parts with GPU skinning, the ground grid and the skeleton
+// overlay, navigates like Blender (middle drag orbits, Shift + middle drag
+// pans, wheel zooms, Home frames all, numpad period frames the selection) and
+// hands left-button input to the active tool.
+#pragma once
+
+#include <QOpenGLWidget>
+#include <memory>
+#include <optional>
+
+#include "model/Document.h"
+#include "viewport/OrbitCamera.h"
+#include "viewport/RenderScene.h"
+
+namespace rigmesh::widgets {
+
+class SceneRenderer;
+class ViewportTool;
+
+class Viewport : public QOpenGLWidget {
+    Q_OBJECT
+  public:
+    explicit Viewport(model::Document* document, QWidget* parent = nullptr);
+    ~Viewport() override;
+
+    model::Document* document() const { return document_; }
+    OrbitCamera& camera() { return camera_; }
+    void setTool(ViewportTool* tool);  // not owned; nullptr = navigation only
+    ViewportTool* tool() const { return tool_; }
+
+    void setWireframe(bool on);
+    void setDualQuaternionSkinning(bool on);
+    void setGridVisible(bool on);
+    bool wireframe() const { return wireframe_; }
+    bool dualQuaternionSkinning() const { return dualQuaternion_; }
+
+    // The stroke being sketched, in world space (drawn as an overlay).
+    void setStrokeOverlay(std::vector<QVector3D> points);
+
+    // The world-space point under a pixel on the plane through the scene
+    // centre facing the camera: where sketches are drawn.
+    QVector3D sketchPlanePoint(const QPointF& pixel) const;
+    // The point under a pixel on the plane through `through` facing the camera.
+    QVector3D viewPlanePoint(const QPointF& pixel, const QVector3D& through) const;
+    // The frame of that plane: origin, right (x) and up (y) axes.
+    model::Placement sketchPlacement() const;
+    QVector3D sceneCentre() const;
+
+    // The joint drawn nearest to a pixel (within a few pixels), if any.
+    std::optional<model::Selection> jointAt(const QPointF& pixel) const;
+    // The visible part under a pixel, if any.
+    std::optional<model::PartId> partAt(const QPointF& pixel) const;
+
+    // World position of a joint of a part in its current placement.
+    QVector3D jointWorldPosition(model::PartId part, JointId joint) const;
+
+  public slots:
+    void frameAll();
+    void frameSelected();
+
+  signals:
+    // A tool's hint or a message for the status bar.
+    void statusMessage(const QString& message);
+
+  protected:
+    void initializeGL() override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+  private:
+    RenderScene gatherScene() const;
+    void frameBox(const Eigen::AlignedBox3d& box);
+    Eigen::AlignedBox3d sceneBox(bool selectedOnly) const;
+
+    model::Document* document_;
+    std::unique_ptr<SceneRenderer> renderer_;
+    OrbitCamera camera_;
+    ViewportTool* tool_ = nullptr;
+    std::vector<QVector3D> strokeOverlay_;
+    bool wireframe_ = false;
+    bool dualQuaternion_ = true;
+    bool gridVisible_ = true;
+    bool framedOnce_ = false;
+    QPointF lastMouse_;
+    bool navigating_ = false;
+};
+
+}  // namespace rigmesh::widgets
