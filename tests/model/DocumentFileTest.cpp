@@ -1,0 +1,220 @@
+// The native file: exact round trips, deterministic bytes, and clear
+// rejection of corrupt, truncated, foreign and newer files.
+#include <QFile>
+#include <QTemporaryDir>
+#include <nlohmann/json.hpp>
+
+#include "ModelTestSupport.h"
+#include "model/commands/MovePartCommand.h"
+#include "model/commands/RebuildPartCommand.h"
+#include "model/commands/SetPartVisibleCommand.h"
+
+namespace rigmesh::model::test {
+namespace {
+
+std::unique_ptr<Document> sampleDocument() {
+    auto document = std::make_unique<Document>();
+    const PartId a = addPart(*document, testStrokes()[0], QStringLiteral("Body \u00e9"));
+    const PartId b = addPart(*document, testStrokes()[3], QStringLiteral("Y"));
+    Placement p;
+    p.translation = Vec3(0.1, -1.0 / 3.0, 2.0e-17);
+    p.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+    document->undoStack()->push(new MovePartCommand(*document, b, p));
+    document->undoStack()->push(new SetPartVisibleCommand(*document, a, false));
+    BuildOptions options;
+    options.smoothing = false;
+    document->undoStack()->push(RebuildPartCommand::create(*document, a, options).release());
+    return document;
+}
+
+QString writeBytes(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes) {
+    const QString path = dir.filePath(name);
+    QFile file(path);
+    EXPECT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(bytes);
+    return path;
+}
+
+void expectSameParts(const Document& a, const Document& b) {
+    ASSERT_EQ(a.partCount(), b.partCount());
+    for (int i = 0; i < a.partCount(); ++i) {
+        const PartNode& x = a.parts()[i];
+        const PartNode& y = b.parts()[i];
+        EXPECT_EQ(x.id, y.id);
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_EQ(x.visible, y.visible);
+        EXPECT_EQ(x.placement, y.placement);  // bit-exact doubles
+        EXPECT_EQ(x.stroke, y.stroke);
+        EXPECT_EQ(x.options, y.options);
+        EXPECT_EQ(x.part->mesh.vertices, y.part->mesh.vertices);
+        EXPECT_EQ(x.part->mesh.faces, y.part->mesh.faces);
+        EXPECT_EQ(x.part->mirror, y.part->mirror);
+        EXPECT_EQ(x.part->weights.perVertex, y.part->weights.perVertex);
+        EXPECT_EQ(x.part->knownClosestBones, y.part->knownClosestBones);
+        EXPECT_EQ(x.part->outline, y.part->outline);
+        ASSERT_EQ(x.part->origins.size(), y.part->origins.size());
+        for (std::size_t v = 0; v < x.part->origins.size(); ++v) {
+            EXPECT_EQ(x.part->origins[v].axisPosition, y.part->origins[v].axisPosition);
+            EXPECT_EQ(x.part->origins[v].region, y.part->origins[v].region);
+        }
+        const Skeleton& s = x.part->skeleton;
+        const Skeleton& t = y.part->skeleton;
+        EXPECT_EQ(s.root(), t.root());
+        ASSERT_EQ(s.jointCount(), t.jointCount());
+        for (int j = 0; j < s.jointCount(); ++j) {
+            EXPECT_EQ(s.joints()[j].id, t.joints()[j].id);
+            EXPECT_EQ(s.joints()[j].position, t.joints()[j].position);
+        }
+        ASSERT_EQ(s.boneCount(), t.boneCount());
+        for (int j = 0; j < s.boneCount(); ++j) {
+            EXPECT_EQ(s.bones()[j].id, t.bones()[j].id);
+            EXPECT_EQ(s.bones()[j].head, t.bones()[j].head);
+            EXPECT_EQ(s.bones()[j].tail, t.bones()[j].tail);
+        }
+    }
+}
+
+TEST(DocumentFile, SaveLoadRoundTripIsExact) {
+    QTemporaryDir dir;
+    auto document = sampleDocument();
+    const QString path = dir.filePath(QStringLiteral("scene.rigmesh"));
+    DocumentFile::save(*document, path);
+    EXPECT_FALSE(document->isModified());
+    EXPECT_EQ(document->filePath(), path);
+
+    auto loaded = DocumentFile::load(path);
+    EXPECT_FALSE(loaded->isModified());
+    EXPECT_EQ(loaded->filePath(), path);
+    EXPECT_EQ(loaded->nextPartId(), document->nextPartId());
+    expectSameParts(*document, *loaded);
+    EXPECT_EQ(bytesOf(*loaded), bytesOf(*document));
+
+    const QString again = dir.filePath(QStringLiteral("again.rigmesh"));
+    DocumentFile::save(*loaded, again);
+    QFile a(path), b(again);
+    ASSERT_TRUE(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+    EXPECT_EQ(a.readAll(), b.readAll());
+}
+
+TEST(DocumentFile, SavingTwiceGivesTheSameBytes) {
+    auto document = sampleDocument();
+    EXPECT_EQ(bytesOf(*document), bytesOf(*document));
+    auto other = sampleDocument();  // built again from the same strokes
+    EXPECT_EQ(bytesOf(*document), bytesOf(*other));
+}
+
+TEST(DocumentFile, EmptyDocumentRoundTrips) {
+    Document document;
+    const DocumentContents contents = DocumentFile::fromBytes(bytesOf(document));
+    EXPECT_TRUE(contents.parts.empty());
+    EXPECT_EQ(contents.nextPartId, 1u);
+}
+
+TEST(DocumentFile, LoadedDocumentKeepsAllocatingFreshIds) {
+    auto document = sampleDocument();
+    Document loaded(DocumentFile::fromBytes(bytesOf(*document)));
+    const PartId id = addPart(loaded, testStrokes()[1]);
+    for (const PartNode& node : document->parts())
+        EXPECT_NE(node.id, id);
+}
+
+void expectRejected(const QByteArray& bytes, const std::string& expected) {
+    try {
+        DocumentFile::fromBytes(bytes);
+        ADD_FAILURE() << "accepted a bad file; expected: " << expected;
+    } catch (const DocumentFileError& e) {
+        EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+}
+
+TEST(DocumentFile, TruncatedFilesAreRejected) {
+    const QByteArray bytes = bytesOf(*sampleDocument());
+    for (const qsizetype size : {qsizetype(1), qsizetype(3), qsizetype(4), qsizetype(40),
+                                 bytes.size() / 2, bytes.size() - 1})
+        expectRejected(bytes.left(size),
+                       size < 3 ? "not a RigMesh Studio document" : "corrupt or truncated");
+    expectRejected(QByteArray(), "empty");
+}
+
+TEST(DocumentFile, CorruptFilesAreRejected) {
+    const QByteArray bytes = bytesOf(*sampleDocument());
+    expectRejected(QByteArray("{\"format\": \"rigmesh-studio-document\"}"),
+                   "not a RigMesh Studio document");
+    expectRejected(bytes + QByteArray("x"), "corrupt or truncated");
+
+    // Structurally valid CBOR with bad contents.
+    using nlohmann::json;
+    const std::vector<std::uint8_t> raw(bytes.begin() + 3, bytes.end());
+    const json good = json::from_cbor(raw);
+    const auto encode = [](const json& j) {
+        std::vector<std::uint8_t> out = {0xD9, 0xD9, 0xF7};
+        json::to_cbor(j, out);
+        return QByteArray(reinterpret_cast<const char*>(out.data()),
+                          static_cast<qsizetype>(out.size()));
+    };
+    json bad = good;
+    bad["parts"][0]["part"]["mesh"]["faces"][0] = 1000000;
+    expectRejected(encode(bad), "face refers to a missing vertex");
+    bad = good;
+    bad["parts"][0]["part"]["mesh"].erase("vertices");
+    expectRejected(encode(bad), "missing \"vertices\"");
+    bad = good;
+    bad["parts"][1]["id"] = bad["parts"][0]["id"];
+    expectRejected(encode(bad), "same id");
+    bad = good;
+    bad["parts"][0]["name"] = 12;
+    expectRejected(encode(bad), "part name is not text");
+    bad = good;
+    bad["parts"][0]["part"]["weights"]["perVertex"][0] = json::array({99, 1.0});
+    expectRejected(encode(bad), "missing bone");
+    bad = good;
+    bad["parts"][0]["part"]["skeleton"]["root"] = 424242;
+    expectRejected(encode(bad), "root");
+    bad = good;
+    bad["format"] = "something-else";
+    expectRejected(encode(bad), "not a RigMesh Studio document");
+    bad = good;
+    bad["nextPartId"] = 1;
+    expectRejected(encode(bad), "next part id");
+}
+
+TEST(DocumentFile, NewerVersionIsRejectedWithAClearMessage) {
+    using nlohmann::json;
+    const QByteArray bytes = bytesOf(*sampleDocument());
+    json root = json::from_cbor(std::vector<std::uint8_t>(bytes.begin() + 3, bytes.end()));
+    root["version"] = DocumentFile::kFormatVersion + 1;
+    std::vector<std::uint8_t> out = {0xD9, 0xD9, 0xF7};
+    json::to_cbor(root, out);
+    expectRejected(
+        QByteArray(reinterpret_cast<const char*>(out.data()), static_cast<qsizetype>(out.size())),
+        "newer RigMesh Studio (format version 2)");
+}
+
+TEST(DocumentFile, LoadFailureOpensNothingAndNamesTheFile) {
+    QTemporaryDir dir;
+    const QByteArray bytes = bytesOf(*sampleDocument());
+    const QString path = writeBytes(dir, QStringLiteral("broken.rigmesh"), bytes.left(100));
+    std::unique_ptr<Document> document;
+    try {
+        document = DocumentFile::load(path);
+        ADD_FAILURE() << "loaded a truncated file";
+    } catch (const DocumentFileError& e) {
+        EXPECT_NE(std::string(e.what()).find("broken.rigmesh"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(document);
+    EXPECT_THROW(DocumentFile::load(dir.filePath(QStringLiteral("missing.rigmesh"))),
+                 DocumentFileError);
+}
+
+TEST(DocumentFile, FailedSaveLeavesTheOldFileAndTheModifiedState) {
+    QTemporaryDir dir;
+    auto document = sampleDocument();
+    EXPECT_THROW(
+        DocumentFile::save(*document, dir.filePath(QStringLiteral("no/such/dir/x.rigmesh"))),
+        DocumentFileError);
+    EXPECT_TRUE(document->isModified());
+    EXPECT_TRUE(document->filePath().isEmpty());
+}
+
+}  // namespace
+}  // namespace rigmesh::model::test

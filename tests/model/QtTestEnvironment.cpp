@@ -1,0 +1,29 @@
+// One QCoreApplication for the whole test run (QObject signals, timers and
+// QAbstractItemModelTester need it), set up as a GoogleTest environment so
+// GTest::gtest_main stays the entry point.
+#include <gtest/gtest.h>
+
+#include <QCoreApplication>
+#include <memory>
+
+namespace {
+
+class QtEnvironment : public ::testing::Environment {
+  public:
+    void SetUp() override {
+        if (!QCoreApplication::instance())
+            app_ = std::make_unique<QCoreApplication>(argc_, argv_);
+    }
+    void TearDown() override { app_.reset(); }
+
+  private:
+    int argc_ = 1;
+    char name_[11] = "test_model";
+    char* argv_[2] = {name_, nullptr};
+    std::unique_ptr<QCoreApplication> app_;
+};
+
+[[maybe_unused]] ::testing::Environment* const qtEnvironment =
+    ::testing::AddGlobalTestEnvironment(new QtEnvironment);
+
+}  // namespace
