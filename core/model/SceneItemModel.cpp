@@ -111,7 +111,7 @@ QVariant SceneItemModel::displayData(const SceneNode& node, int column) const {
 }
 
 QVariant SceneItemModel::data(const QModelIndex& index, int role) const {
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid))
+    if (!index.isValid() || !checkIndex(index))
         return {};
     const SceneNode& node = *nodeAt(index);
     switch (role) {
@@ -136,7 +136,7 @@ QVariant SceneItemModel::data(const QModelIndex& index, int role) const {
 }
 
 bool SceneItemModel::setData(const QModelIndex& index, const QVariant& value, int role) {
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid) || !document_)
+    if (!index.isValid() || !checkIndex(index) || !document_)
         return false;
     const SceneNode& node = *nodeAt(index);
     if (node.kind() != SceneNode::Kind::Part || index.column() != NameColumn)
@@ -162,7 +162,7 @@ bool SceneItemModel::setData(const QModelIndex& index, const QVariant& value, in
 }
 
 Qt::ItemFlags SceneItemModel::flags(const QModelIndex& index) const {
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid))
+    if (!index.isValid() || !checkIndex(index))
         return Qt::NoItemFlags;
     Qt::ItemFlags flags = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
     const SceneNode& node = *nodeAt(index);
