@@ -5,7 +5,8 @@
 namespace rigmesh::model {
 
 QString buildInfo() {
-    return QStringLiteral("RigMesh Studio %1 (Qt %2)").arg(QStringLiteral(RIGMESH_VERSION), QString::fromLatin1(qVersion()));
+    return QStringLiteral("RigMesh Studio %1 (Qt %2)")
+        .arg(QStringLiteral(RIGMESH_VERSION), QString::fromLatin1(qVersion()));
 }
 
 }  // namespace rigmesh::model
