@@ -1,0 +1,56 @@
+#include "pose/ForwardKinematics.h"
+
+#include <string>
+
+#include "base/Error.h"
+
+namespace rigmesh {
+
+namespace {
+
+Eigen::Quaterniond checkedRotation(const Pose& pose, JointId joint) {
+    const Eigen::Quaterniond q = pose.rotation(joint);
+    const double norm2 = q.coeffs().squaredNorm();
+    if (!q.coeffs().allFinite() || norm2 == 0.0)
+        throw Error("The pose gives joint " + std::to_string(joint) +
+                    " a rotation that is not a finite, non-zero quaternion.");
+    // Already-unit quaternions (the identity in particular) stay untouched.
+    return norm2 == 1.0 ? q : q.normalized();
+}
+
+}  // namespace
+
+PosedSkeleton forwardKinematics(const PoseHierarchy& h, const Pose& pose) {
+    if (!pose.rootTranslation.allFinite())
+        throw Error("The pose's root translation is not finite.");
+    PosedSkeleton posed;
+    posed.jointTransforms.assign(h.jointCount(), RigidTransform::identity());
+    posed.jointPositions.resize(h.jointCount());
+    for (int j = 0; j < h.jointCount(); ++j)
+        posed.jointPositions[j] = h.restPosition(j);
+
+    for (int j : h.parentFirstOrder()) {
+        const RigidTransform local =
+            RigidTransform::rotationAbout(checkedRotation(pose, h.jointId(j)), h.restPosition(j));
+        RigidTransform world;
+        if (j == h.root()) {
+            world = local;
+            world.translation += pose.rootTranslation;
+        } else {
+            world = posed.jointTransforms[h.parent(j)] * local;
+        }
+        posed.jointTransforms[j] = world;
+        posed.jointPositions[j] = world.apply(h.restPosition(j));
+    }
+
+    posed.boneTransforms.reserve(h.boneCount());
+    for (int b = 0; b < h.boneCount(); ++b)
+        posed.boneTransforms.push_back(posed.jointTransforms[h.boneFrameJoint(b)]);
+    return posed;
+}
+
+PosedSkeleton forwardKinematics(const Skeleton& skeleton, const Pose& pose) {
+    return forwardKinematics(PoseHierarchy(skeleton), pose);
+}
+
+}  // namespace rigmesh
