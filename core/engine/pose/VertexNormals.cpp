@@ -1,5 +1,7 @@
 #include "pose/VertexNormals.h"
 
+#include <Eigen/Geometry>
+
 namespace rigmesh {
 
 std::vector<Vec3> vertexNormals(const TriMesh& mesh) {

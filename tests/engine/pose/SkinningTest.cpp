@@ -1,0 +1,230 @@
+#include <random>
+
+#include "PoseTestSupport.h"
+#include "base/Error.h"
+#include "mesh/MeshPrimitives.h"
+#include "pose/Skinning.h"
+#include "pose/VertexNormals.h"
+
+namespace rigmesh::posetest {
+namespace {
+
+// A rigid pose must move vertices rigidly to this fraction of the mesh size.
+constexpr double kRigidRelative = 1e-12;
+constexpr double kUnitNormalTolerance = 1e-12;
+constexpr double kTwistAngle = M_PI / 2;
+
+const SkinningMethod kMethods[] = {SkinningMethod::LinearBlend, SkinningMethod::DualQuaternion};
+
+SkinnedVertices skinPart(const Part& part, const Pose& pose, SkinningMethod method,
+                         int threads = 2) {
+    const PosedSkeleton posed = forwardKinematics(part.skeleton, pose);
+    return skinVertices(part.mesh.vertices, vertexNormals(part.mesh), part.weights,
+                        SkinningTransforms(posed.boneTransforms), {method, threads});
+}
+
+class SkinningOnParts : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SkinningOnParts, RestPoseReturnsTheRestMeshBitExactly) {
+    const Part& part = sharedPart(GetParam());
+    const std::vector<Vec3> normals = vertexNormals(part.mesh);
+    for (SkinningMethod method : kMethods) {
+        const SkinnedVertices skinned = skinPart(part, restPose(part.skeleton), method);
+        EXPECT_EQ(skinned.positions, part.mesh.vertices);
+        EXPECT_EQ(skinned.normals, normals);
+    }
+}
+
+TEST_P(SkinningOnParts, RigidPoseMovesTheMeshRigidly) {
+    const Part& part = sharedPart(GetParam());
+    const double size = boundingBoxDiagonal(part.mesh.vertices);
+    Pose pose;
+    const Eigen::Quaterniond q(Eigen::AngleAxisd(2.0, Vec3(1, 2, 3).normalized()));
+    pose.setRotation(part.skeleton.root(), q);
+    pose.rootTranslation = Vec3(1, -2, 0.5);
+    const RigidTransform expected =
+        RigidTransform{Eigen::Quaterniond::Identity(), pose.rootTranslation} *
+        RigidTransform::rotationAbout(q, part.skeleton.joint(part.skeleton.root()).position);
+    const std::vector<Vec3> normals = vertexNormals(part.mesh);
+    for (SkinningMethod method : kMethods) {
+        const SkinnedVertices skinned = skinPart(part, pose, method);
+        for (int v = 0; v < part.mesh.vertexCount(); ++v) {
+            ASSERT_LT((skinned.positions[v] - expected.apply(part.mesh.vertices[v])).norm(),
+                      kRigidRelative * size);
+            ASSERT_LT((skinned.normals[v] - q * normals[v]).norm(), kUnitNormalTolerance);
+        }
+    }
+}
+
+TEST_P(SkinningOnParts, RandomPosesNeverGiveNaNAndNormalsStayUnit) {
+    const Part& part = sharedPart(GetParam());
+    std::mt19937 rng(17);
+    for (int k = 0; k < 10; ++k) {
+        const Pose pose = randomPose(part.skeleton, rng, M_PI, 1.0);
+        for (SkinningMethod method : kMethods) {
+            const SkinnedVertices skinned = skinPart(part, pose, method);
+            for (int v = 0; v < part.mesh.vertexCount(); ++v) {
+                ASSERT_TRUE(skinned.positions[v].allFinite());
+                ASSERT_TRUE(skinned.normals[v].allFinite());
+                // LBS's blended matrix can be singular (opposite rotations):
+                // the normal then falls back to the rest one, still unit.
+                ASSERT_NEAR(skinned.normals[v].norm(), 1.0, 1e-9);
+            }
+        }
+    }
+}
+
+TEST_P(SkinningOnParts, OneAndTwoThreadsGiveIdenticalOutput) {
+    const Part& part = sharedPart(GetParam());
+    std::mt19937 rng(19);
+    const Pose pose = randomPose(part.skeleton, rng, 1.5, 1.0);
+    for (SkinningMethod method : kMethods) {
+        const SkinnedVertices one = skinPart(part, pose, method, 1);
+        const SkinnedVertices two = skinPart(part, pose, method, 2);
+        const SkinnedVertices seven = skinPart(part, pose, method, 7);
+        EXPECT_EQ(one.positions, two.positions);
+        EXPECT_EQ(one.normals, two.normals);
+        EXPECT_EQ(one.positions, seven.positions);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedSketches, SkinningOnParts,
+                         ::testing::Values("tube", "y_branch", "biped"),
+                         testsupport::sketchTestName);
+
+// A rig whose end bone can twist relative to the bone before it, and the
+// 90-degree twist pose.
+struct TwistRig {
+    Part part;
+    Pose twist;
+    std::string source;
+};
+
+// The twist of `tip`'s parent joint about the bone from it to `tip`.
+Pose twistAbove(const Skeleton& skeleton, JointId tip) {
+    const PoseHierarchy h(skeleton);
+    const int middle = h.parent(h.indexOf(tip));
+    const Vec3 axis = (h.restPosition(h.indexOf(tip)) - h.restPosition(middle)).normalized();
+    Pose pose;
+    pose.setRotation(h.jointId(middle), Eigen::Quaterniond(Eigen::AngleAxisd(kTwistAngle, axis)));
+    return pose;
+}
+
+// A capped tube along z (length 4, radius 0.5) with joints at z = -2, 0, 2,
+// rooted at z = -2, weights blending smoothly from the first bone to the
+// second over |z| < kBlendHalfWidth around the middle joint.
+constexpr double kBlendHalfWidth = 0.6;
+Part syntheticTwoBoneTube() {
+    Part part;
+    part.name = "cylinder tube";
+    part.mesh = makeCylinderTube(41, 32, 0.5, 4.0);
+    const JointId a = part.skeleton.addJoint(Vec3(0, 0, -2));
+    const JointId b = part.skeleton.addJoint(Vec3(0, 0, 0));
+    const JointId c = part.skeleton.addJoint(Vec3(0, 0, 2));
+    part.skeleton.addBone(a, b);
+    part.skeleton.addBone(b, c);
+    for (const Vec3& v : part.mesh.vertices) {
+        const double u = std::clamp((v.z() + kBlendHalfWidth) / (2 * kBlendHalfWidth), 0.0, 1.0);
+        const double w = u * u * (3 - 2 * u);  // smoothstep
+        if (w <= 0)
+            part.weights.perVertex.push_back({{0, 1.0}});
+        else if (w >= 1)
+            part.weights.perVertex.push_back({{1, 1.0}});
+        else
+            part.weights.perVertex.push_back({{0, 1 - w}, {1, w}});
+    }
+    return part;
+}
+
+// The rigged tube part re-rooted at one end, so that turning the middle joint
+// twists the end bone relative to the first (at the default central root both
+// bones hang from the root and a twist there would turn the tube rigidly);
+// the synthetic tube when the sketch gives fewer than two bones.
+TwistRig tubeTwist() {
+    TwistRig rig{sharedPart("tube"), {}, "rigged tube sketch"};
+    if (rig.part.skeleton.boneCount() < 2) {
+        rig.part = syntheticTwoBoneTube();
+        rig.source = "makeCylinderTube, 2-bone rig (tube sketch gave " +
+                     std::to_string(sharedPart("tube").skeleton.boneCount()) + " bone)";
+    } else {
+        Skeleton& skeleton = rig.part.skeleton;
+        const PoseHierarchy central(skeleton);
+        for (int j = 0; j < central.jointCount(); ++j) {
+            if (central.children(j).empty()) {
+                skeleton.setRoot(central.jointId(j));
+                break;
+            }
+        }
+        skeleton.reorient();
+    }
+    rig.twist = twistAbove(rig.part.skeleton, deepestJoint(rig.part.skeleton));
+    return rig;
+}
+
+TEST(Skinning, DualQuaternionsKeepVolumeBetterThanLinearBlendUnderTwist) {
+    const TwistRig rig = tubeTwist();
+    ASSERT_GE(rig.part.skeleton.boneCount(), 2);
+    const double rest = signedVolume(rig.part.mesh.vertices, rig.part.mesh.faces);
+    ASSERT_GT(rest, 0);
+    const double lbs =
+        signedVolume(skinPart(rig.part, rig.twist, SkinningMethod::LinearBlend).positions,
+                     rig.part.mesh.faces) /
+        rest;
+    const double dqs =
+        signedVolume(skinPart(rig.part, rig.twist, SkinningMethod::DualQuaternion).positions,
+                     rig.part.mesh.faces) /
+        rest;
+    std::cout << rig.source << ", " << rig.part.skeleton.boneCount()
+              << " bones, 90 degree twist of the end bone: volume / rest volume LBS " << lbs
+              << ", DQS " << dqs << "\n";
+    EXPECT_LT(std::abs(dqs - 1), std::abs(lbs - 1));
+    EXPECT_LT(lbs, 1.0);  // the candy wrapper collapses
+}
+
+TEST(Skinning, DualQuaternionBlendingIgnoresTheSignOfEachBonesQuaternion) {
+    // q and -q are the same rotation; the antipodal fix makes DQS agree.
+    const TriMesh tube = makeCylinderTube(8, 12, 0.3, 2.0);
+    SkinWeights weights;
+    for (const Vec3& v : tube.vertices) {
+        const double w = std::clamp(v.z() / 2.0 + 0.5, 0.0, 1.0);
+        weights.perVertex.push_back({{0, 1 - w}, {1, w}});
+    }
+    RigidTransform a{Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Vec3::UnitX())), Vec3(0, 0, 0.1)};
+    RigidTransform b{Eigen::Quaterniond(Eigen::AngleAxisd(2.5, Vec3::UnitZ())), Vec3(0.2, 0, 0)};
+    RigidTransform flipped = b;
+    flipped.rotation.coeffs() = -flipped.rotation.coeffs();
+    const SkinnedVertices plain =
+        skinVertices(tube.vertices, {}, weights, SkinningTransforms({a, b}));
+    const SkinnedVertices negated =
+        skinVertices(tube.vertices, {}, weights, SkinningTransforms({a, flipped}));
+    for (int v = 0; v < tube.vertexCount(); ++v)
+        EXPECT_LT((plain.positions[v] - negated.positions[v]).norm(), 1e-12);
+}
+
+TEST(Skinning, MismatchedInputIsAnError) {
+    const Part& part = sharedPart("tube");
+    const SkinningTransforms transforms(forwardKinematics(part.skeleton, Pose{}).boneTransforms);
+    SkinWeights tooFew = part.weights;
+    tooFew.perVertex.pop_back();
+    EXPECT_THROW(skinVertices(part.mesh.vertices, {}, tooFew, transforms), Error);
+    SkinWeights badBone = part.weights;
+    badBone.perVertex[0] = {{99, 1.0}};
+    EXPECT_THROW(skinVertices(part.mesh.vertices, {}, badBone, transforms), Error);
+    EXPECT_THROW(skinVertices(part.mesh.vertices, {Vec3::UnitX()}, part.weights, transforms),
+                 Error);
+    EXPECT_THROW(skinVertices(part.mesh.vertices, {}, part.weights, transforms,
+                              {SkinningMethod::LinearBlend, 0}),
+                 Error);
+}
+
+TEST(Skinning, PosePartKeepsFacesAndSkinsPositions) {
+    const Part& part = sharedPart("biped");
+    std::mt19937 rng(23);
+    const Pose pose = randomPose(part.skeleton, rng, 0.5);
+    const PosedMesh posed = posePart(part, pose);
+    EXPECT_EQ(posed.mesh.faces, part.mesh.faces);
+    EXPECT_EQ(posed.mesh.vertices, skinPart(part, pose, SkinningMethod::DualQuaternion).positions);
+}
+
+}  // namespace
+}  // namespace rigmesh::posetest
