@@ -1,5 +1,6 @@
 #include "pipeline/SketchToPart.h"
 
+#include <algorithm>
 #include <chrono>
 #include <limits>
 
@@ -28,21 +29,44 @@ ClosestBones closestBonesFromConstruction(const SketchSurface& surface,
         if (section < 0)
             section = origin.axisPosition > 0 ? -2 : -1;  // which tip
         const int count = static_cast<int>(cylinder.sections.size());
-        double best = std::numeric_limits<double>::infinity();
-        std::vector<std::pair<int, double>> candidates;
-        for (BoneId id : bonesOfSection(rig, origin.region, section, count)) {
-            if (!skeleton.hasBone(id))
-                continue;
+        const Vec3& p = surface.mesh.vertices[v];
+        auto distanceTo = [&](BoneId id) {
             const Bone& bone = skeleton.bone(id);
-            double d = pointSegmentDistance(surface.mesh.vertices[v],
-                                            BoneSegment{skeleton.joint(bone.head).position,
-                                                        skeleton.joint(bone.tail).position});
-            candidates.emplace_back(skeleton.indexOfBone(id), d);
-            best = std::min(best, d);
+            return pointSegmentDistance(p, BoneSegment{skeleton.joint(bone.head).position,
+                                                       skeleton.joint(bone.tail).position});
+        };
+        std::vector<BoneId> owners;
+        for (BoneId id : bonesOfSection(rig, origin.region, section, count))
+            if (skeleton.hasBone(id))
+                owners.push_back(id);
+        if (owners.empty())
+            continue;
+        double best = std::numeric_limits<double>::infinity();
+        for (BoneId id : owners)
+            best = std::min(best, distanceTo(id));
+        // Near a joint a neighbouring bone (across the joint, or across a
+        // junction: up to two joints away) may be closer than the section's
+        // own: then the shortcut does not hold and the vertex is left to the
+        // visibility test.
+        std::vector<JointId> nearJoints;
+        for (BoneId id : owners)
+            for (JointId joint : {skeleton.bone(id).head, skeleton.bone(id).tail})
+                for (BoneId other : skeleton.bonesAt(joint))
+                    for (JointId end : {skeleton.bone(other).head, skeleton.bone(other).tail})
+                        nearJoints.push_back(end);
+        bool neighbourCloser = false;
+        for (JointId joint : nearJoints)
+            for (BoneId other : skeleton.bonesAt(joint))
+                if (std::find(owners.begin(), owners.end(), other) == owners.end() &&
+                    distanceTo(other) < best * (1 - kTieTolerance))
+                    neighbourCloser = true;
+        if (neighbourCloser)
+            continue;
+        for (BoneId id : owners) {
+            const double d = distanceTo(id);
+            if (d <= best * (1 + kTieTolerance))
+                closest[v].emplace_back(skeleton.indexOfBone(id), d);
         }
-        for (const auto& candidate : candidates)
-            if (candidate.second <= best * (1 + kTieTolerance))
-                closest[v].push_back(candidate);
     }
     return closest;
 }

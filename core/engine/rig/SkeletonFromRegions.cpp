@@ -19,32 +19,41 @@ double meanRadius(const CylinderSections& cylinder) {
     return sum / static_cast<double>(cylinder.sections.size());
 }
 
-// The sections the skeleton follows: the body's, plus the middle slice of
-// each cap, so that the end joints sit inside the rounded tips rather than on
-// them, and the caps' shrinking width does not look like a change of
-// thickness to CDP.
-std::vector<int> skeletalSections(const CylinderSections& cylinder) {
+// The sections CDP looks at: the body's only. A cap's shrinking width would
+// look like a change of thickness and give a short bone at every tip.
+std::vector<int> bodySections(const CylinderSections& cylinder) {
     std::vector<int> body;
     for (int s = 0; s < static_cast<int>(cylinder.sections.size()); ++s)
         if (!cylinder.sections[s].inCap)
             body.push_back(s);
     if (body.empty())
         body.push_back(static_cast<int>(cylinder.sections.size()) / 2);
-    std::vector<int> chosen;
-    if (body.front() > 0)
-        chosen.push_back(body.front() / 2);
-    chosen.insert(chosen.end(), body.begin(), body.end());
+    return body;
+}
+
+// The end joints move out to the middle of each cap, so the end bones reach
+// into the rounded tips while staying inside them.
+void extendIntoCaps(const CylinderSections& cylinder, std::vector<int>& kept) {
     const int last = static_cast<int>(cylinder.sections.size()) - 1;
-    if (body.back() < last)
-        chosen.push_back((body.back() + last + 1) / 2);
-    return chosen;
+    if (kept.size() < 2)
+        return;
+    if (cylinder.sections.front().inCap)
+        kept.front() = kept.front() / 2;
+    if (cylinder.sections.back().inCap)
+        kept.back() = (kept.back() + last + 1) / 2;
 }
 
 // Step 1: joints along a cylinder's axis from (C)DP, as section indices.
 std::vector<int> simplifyAxis(const CylinderSections& cylinder, const SkeletonOptions& options) {
-    const std::vector<int> sections = skeletalSections(cylinder);
-    if (sections.size() < 2)
-        return sections;
+    const std::vector<int> sections = bodySections(cylinder);
+    if (sections.size() < 2) {
+        // A body of one section: one bone from cap to cap, if there are caps.
+        std::vector<int> ends{sections.front(), sections.front()};
+        extendIntoCaps(cylinder, ends);
+        if (ends.front() == ends.back())
+            return {ends.front()};
+        return ends;
+    }
     std::vector<AxisSample> samples;
     for (int index : sections) {
         const CrossSection& s = cylinder.sections[index];
@@ -74,6 +83,7 @@ std::vector<int> simplifyAxis(const CylinderSections& cylinder, const SkeletonOp
             merged.pop_back();
         merged.push_back(kept.back());
     }
+    extendIntoCaps(cylinder, merged);
     return merged;
 }
 

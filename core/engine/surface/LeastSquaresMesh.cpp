@@ -72,7 +72,12 @@ std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double
         system.coeffRef(u, u) += w2;
         rhs.row(u) += w2 * mesh.vertices[i].transpose();
     }
-    Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>> solver;
+    // Simplicial for small systems, supernodal (BLAS blocks) once the fill-in
+    // of L^T L makes dense blocks worth it.
+    constexpr int kSupernodalFrom = 4000;
+    Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>> solver;
+    solver.setMode(unknowns >= kSupernodalFrom ? Eigen::CholmodSupernodalLLt
+                                               : Eigen::CholmodSimplicialLLt);
     // AMD alone: CHOLMOD's default also tries METIS, which costs more than
     // it saves at these sizes.
     solver.cholmod().nmethods = 1;

@@ -49,18 +49,26 @@ TEST_P(PartBookkeeping, PerVertexListsMatchTheVertexCount) {
     EXPECT_EQ(part.weights.perVertex.size(), count);
 }
 
+// The paper's shortcut (2.4): cylindrical vertices know their closest bone
+// from construction. Near a joint where a neighbouring bone is closer the
+// engine leaves the vertex to the visibility test instead; that must stay
+// the exception.
 TEST_P(PartBookkeeping, CylindricalVerticesKnowTheirClosestBones) {
+    constexpr double kMinimumKnownFraction = 0.8;
     const Part& part = result().part;
     const auto& cylinderBones = result().skeleton.cylinderBones;
     ASSERT_EQ(part.knownClosestBones.size(), part.origins.size());
-    int missing = 0;
+    int missing = 0, cylindrical = 0;
     for (std::size_t v = 0; v < part.origins.size(); ++v) {
         const VertexOrigin& origin = part.origins[v];
         if (origin.kind != RegionKind::Cylindrical)
             continue;
         ASSERT_GE(origin.region, 0);
         ASSERT_LT(origin.region, static_cast<int>(cylinderBones.size()));
-        if (!cylinderBones[origin.region].empty() && part.knownClosestBones[v].empty())
+        if (cylinderBones[origin.region].empty())
+            continue;
+        ++cylindrical;
+        if (part.knownClosestBones[v].empty())
             ++missing;
         for (const auto& [bone, distance] : part.knownClosestBones[v]) {
             EXPECT_GE(bone, 0);
@@ -68,7 +76,10 @@ TEST_P(PartBookkeeping, CylindricalVerticesKnowTheirClosestBones) {
             EXPECT_GE(distance, 0.0);
         }
     }
-    EXPECT_EQ(missing, 0) << "cylindrical vertices without known closest bones";
+    const double known = 1.0 - static_cast<double>(missing) / std::max(cylindrical, 1);
+    RecordProperty("knownFraction", std::to_string(known));
+    EXPECT_GE(known, kMinimumKnownFraction)
+        << missing << " of " << cylindrical << " cylindrical vertices left to the visibility test";
 }
 
 TEST_P(PartBookkeeping, BoneSegmentsFollowTheSkeletonBones) {
