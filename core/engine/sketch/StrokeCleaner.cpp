@@ -168,6 +168,29 @@ Sampling sampleOutline(const Polyline2& outline, std::size_t count,
     return {std::move(polygon), crossing};
 }
 
+// Anti-aliasing before resampling: mouse jitter finer than the sample spacing
+// would otherwise alias into zig-zags (and false self-crossings) once
+// resampled. Resample at a quarter of the spacing and average each point with
+// its two neighbours on either side, twice: a low-pass over about one spacing.
+Polyline2 lowPassClosed(const Polyline2& outline, double spacing) {
+    const double length = polylineLength(outline, true);
+    const auto count = static_cast<std::size_t>(std::ceil(length / (spacing / 4.0)));
+    if (count < 16 || count > kMaxSamples)
+        return outline;
+    Polyline2 fine = resampleClosed(outline, count);
+    const long n = static_cast<long>(fine.size());
+    for (int pass = 0; pass < 2; ++pass) {
+        Polyline2 averaged(fine.size(), Vec2::Zero());
+        for (long i = 0; i < n; ++i) {
+            for (long k = -2; k <= 2; ++k)
+                averaged[i] += fine[((i + k) % n + n) % n];
+            averaged[i] /= 5.0;
+        }
+        fine = std::move(averaged);
+    }
+    return fine;
+}
+
 double unitSpacing(const StrokeCleanOptions& options, const Normalization& unit,
                    double unitDiagonal) {
     if (options.spacing > 0.0 && std::isfinite(options.spacing)) {
@@ -238,8 +261,10 @@ CleanPolygon cleanStroke(const std::vector<Vec2>& raw, const StrokeCleanOptions&
     // finer spacings resolve them. An outline that still crosses itself at
     // the finest spacing really does.
     const double closedDiagonal = boundingBoxDiagonal(stroke);
-    const double length = polylineLength(stroke, true);
     const double spacing = unitSpacing(options, unit, closedDiagonal);
+    if (options.smoothingIterations > 0)
+        stroke = lowPassClosed(stroke, spacing);
+    const double length = polylineLength(stroke, true);
     Sampling sampling = sampleOutline(stroke, sampleCount(length, spacing), options);
     for (int refinement = 1; sampling.crossing && refinement <= kMaxRefinements; ++refinement) {
         const double finer = spacing / std::pow(2.0, refinement);

@@ -90,13 +90,23 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames,
         candidates.push_back(last);
     }
     // Cross sections must not intersect: keep a section only if its chord
-    // crosses neither the previous kept one nor the final one.
+    // crosses neither the previous kept one nor the final one. Around a
+    // corner of the outline one side barely moves while the other sweeps;
+    // sections whose end point on either side would crowd the previous one
+    // are dropped too, or the strip between them would be made of slivers.
+    constexpr double kMinimumSideStep = 0.3;  // of the spacing
+    auto crowds = [&](const CrossSection& a, const CrossSection& b) {
+        return (a.left - b.left).norm() < kMinimumSideStep * spacing ||
+               (a.right - b.right).norm() < kMinimumSideStep * spacing;
+    };
     std::vector<CrossSection> kept{candidates.front()};
     for (std::size_t i = 1; i + 1 < candidates.size(); ++i) {
         const CrossSection& c = candidates[i];
         if (segmentsIntersect(c.left, c.right, kept.back().left, kept.back().right))
             continue;
         if (segmentsIntersect(c.left, c.right, last.left, last.right))
+            continue;
+        if (crowds(c, kept.back()) || crowds(c, last))
             continue;
         kept.push_back(c);
     }

@@ -22,10 +22,12 @@ namespace rigmesh {
 namespace {
 
 // Raw L1 change per edge. Measured on the shared sketches (biped aside): at
-// most 0.59 (open_gap), 99th percentile at most 0.37 (star), with e / d up
-// to about 0.3 on their limbs; bounds keep a margin of about 0.08.
+// most 0.59, 99th percentile at most 0.45 (banana, whose bends have fewer,
+// longer cross-section steps on their outer side since crowded sections are
+// dropped), with e / d up to about 0.3 on their limbs. The raw value depends
+// on the mesh resolution; the resolution-free bound is the one below.
 constexpr double kMaximumEdgeDifference = 0.65;
-constexpr double kPercentileEdgeDifference = 0.45;
+constexpr double kPercentileEdgeDifference = 0.5;
 constexpr double kPercentile = 0.99;
 // L1 change per unit of e / d (d: mean distance of the edge's two vertices
 // to their nearest bone). Measured: at most 2.03 (star), 99th percentile at
