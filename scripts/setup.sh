@@ -12,7 +12,8 @@ packages=(
     libcgal-dev libgmp-dev libmpfr-dev libboost-dev
     libeigen3-dev libsuitesparse-dev
     nlohmann-json3-dev libtinyxml2-dev
-    qt6-base-dev
+    qt6-base-dev libgl-dev libgl1-mesa-dri
+    xvfb xauth
     libgtest-dev libgmock-dev libbenchmark-dev
 )
 
