@@ -11,7 +11,9 @@
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
+#include <map>
 #include <memory>
+#include <set>
 #include <vector>
 
 #include "model/PartNode.h"
@@ -41,6 +43,8 @@ class Document : public QObject {
         Visibility = 1u << 2,
         Geometry = 1u << 3,  // the engine Part (mesh, skeleton, weights) was replaced
         Options = 1u << 4,   // the build options
+        Pose = 1u << 5,      // the current pose (PartNode::pose)
+        Pins = 1u << 6,      // the pinned joints (PartNode::pinnedJoints)
     };
     Q_DECLARE_FLAGS(Changes, Change)
     Q_FLAG(Changes)
@@ -93,7 +97,31 @@ class Document : public QObject {
     void setName(PartId id, const QString& name);
     void setPlacement(PartId id, const Placement& placement);
     void setVisible(PartId id, bool visible);
+    // Swaps the engine part, its options, pose and pins at once (one
+    // partChanged with every flag that applies). `pose` and `pinned` must fit
+    // the new part's skeleton (throws rigmesh::Error otherwise).
+    void replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options,
+                     const rigmesh::Pose& pose, std::set<JointId> pinned);
+    // As above; when the part changes, the pose goes back to rest and the pins
+    // are cleared (joint ids may not survive a new skeleton).
     void replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options);
+    // Throws rigmesh::Error when the pose names a joint the part's skeleton
+    // does not have or holds a non-finite or zero quaternion / translation.
+    // Ends any pose preview of the part (see previewPose).
+    void setPose(PartId id, const rigmesh::Pose& pose);
+    // Throws rigmesh::Error on a joint the part's skeleton does not have.
+    void setPinnedJoints(PartId id, std::set<JointId> pinned);
+
+    // ---- Live pose preview (interactive drags) ----
+    // Applies `pose` to the part now (partChanged(Pose)) without a command,
+    // remembering the pose the part had before the first preview. A
+    // SetPoseCommand pushed with alreadyApplied = true then takes that
+    // remembered pose as its `from`, so the whole drag undoes in one step.
+    void previewPose(PartId id, const rigmesh::Pose& pose);
+    // Puts back the pose from before the preview (no-op without a preview).
+    void cancelPosePreview(PartId id);
+    // The pose before the running preview of the part, or nullptr.
+    const rigmesh::Pose* posePreviewOrigin(PartId id) const;
 
   signals:
     void partInserted(rigmesh::model::PartId id, int index);
@@ -106,11 +134,13 @@ class Document : public QObject {
 
   private:
     PartNode& mutablePart(PartId id);
+    void applyPose(PartId id, const rigmesh::Pose& pose);
 
     DocumentContents contents_;
     Selection selection_;
     QUndoStack undoStack_;
     QString filePath_;
+    std::map<PartId, rigmesh::Pose> posePreviewOrigins_;
 };
 
 }  // namespace rigmesh::model

@@ -1,9 +1,14 @@
 // The native document file (.rigmesh): CBOR (RFC 8949) of one map
 //   {"format": "rigmesh-studio-document", "version": 1, "nextPartId": n,
-//    "parts": [ {id, name, visible, placement, stroke, options, part: {...}} ]}
+//    "parts": [ {id, name, visible, placement, stroke, options, part: {...},
+//                pose: {rotations: [[joint, w, x, y, z], ...], rootTranslation},
+//                pinned: [joint, ...]} ]}
 // where part holds everything of the engine Part: name, outline, mesh
 // (vertices, faces), origins, mirror, skeleton (joints with ids, bones with
-// ids, root), skin weights and the known closest bones.
+// ids, root), skin weights and the known closest bones. pose and pinned are
+// optional when reading (a part without them loads in its rest pose, unpinned);
+// their joint ids must be joints of the part's skeleton and the quaternions
+// finite and non-zero.
 //
 // Why CBOR: doubles are stored as IEEE binary64 (or binary32 when that is
 // exact), so they round-trip bit for bit without decimal printing; meshes are

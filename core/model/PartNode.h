@@ -1,16 +1,19 @@
 // One part of a document: the immutable engine value plus what the document
-// adds around it (stable id, user name, placement, visibility, and the raw
-// stroke and options it was built from, so it can be rebuilt).
+// adds around it (stable id, user name, placement, visibility, the raw stroke
+// and options it was built from, so it can be rebuilt, and its current pose
+// with the joints pinned for IK).
 #pragma once
 
 #include <Eigen/Geometry>
 #include <QString>
 #include <cstdint>
 #include <memory>
+#include <set>
 #include <vector>
 
 #include "base/Types.h"
 #include "part/Part.h"
+#include "pose/Pose.h"
 
 namespace rigmesh::model {
 
@@ -45,6 +48,20 @@ struct PartNode {
     BuildOptions options;
     Placement placement;
     bool visible = true;
+    // The current pose of the part's skeleton. Every joint id in it is a joint
+    // of part->skeleton; a joint not in it is at its rest (identity) rotation,
+    // so a default Pose is the rest pose too.
+    rigmesh::Pose pose;
+    // Joints that IK keeps in place (all joints of part->skeleton).
+    std::set<rigmesh::JointId> pinnedJoints;
 };
+
+// The rest pose of a node: restPose(skeleton), or an empty Pose without a part.
+rigmesh::Pose restPoseOf(const PartNode& node);
+// Exact (bitwise value) equality: same joints, same quaternion coefficients,
+// same root translation.
+bool identicalPoses(const rigmesh::Pose& a, const rigmesh::Pose& b);
+// The user-facing name of a joint ("Joint 3").
+QString jointDisplayName(rigmesh::JointId joint);
 
 }  // namespace rigmesh::model

@@ -5,6 +5,7 @@ namespace rigmesh::model {
 
 enum CommandId : int {
     MovePartCommandId = 1001,
+    SetPoseCommandId = 1002,
 };
 
 }  // namespace rigmesh::model

@@ -1,11 +1,14 @@
 // Rebuild a part from its stroke with other build options, as one undoable
 // step. Use create(): the engine build runs there, before anything is pushed,
-// so a failure throws rigmesh::Error and changes nothing.
+// so a failure throws rigmesh::Error and changes nothing. Joint ids may not
+// survive the new skeleton: the rebuilt part gets its rest pose and no pins;
+// undo restores the old pose and pins exactly.
 #pragma once
 
 #include <QCoreApplication>
 #include <QUndoCommand>
 #include <memory>
+#include <set>
 
 #include "model/Document.h"
 
@@ -29,6 +32,8 @@ class RebuildPartCommand : public QUndoCommand {
     PartId id_;
     std::shared_ptr<const Part> oldPart_, newPart_;
     BuildOptions oldOptions_, newOptions_;
+    rigmesh::Pose oldPose_, newPose_;
+    std::set<rigmesh::JointId> oldPinned_;
 };
 
 }  // namespace rigmesh::model

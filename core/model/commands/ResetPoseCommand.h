@@ -1,0 +1,28 @@
+// Put a part back in its rest pose (restPoseOf), as one undoable step. Pins
+// are kept.
+#pragma once
+
+#include <QCoreApplication>
+#include <QUndoCommand>
+
+#include "model/Document.h"
+
+namespace rigmesh::model {
+
+class ResetPoseCommand : public QUndoCommand {
+    Q_DECLARE_TR_FUNCTIONS(ResetPoseCommand)
+  public:
+    // Throws rigmesh::Error on an unknown id. Obsolete (dropped on push) when
+    // the part already is exactly in its rest pose.
+    ResetPoseCommand(Document& document, PartId id, QUndoCommand* parent = nullptr);
+
+    void redo() override;
+    void undo() override;
+
+  private:
+    Document& document_;
+    PartId id_;
+    rigmesh::Pose from_, to_;
+};
+
+}  // namespace rigmesh::model
