@@ -7,6 +7,34 @@
 
 namespace rigmesh::model {
 
+namespace {
+
+const Skeleton* skeletonOf(const PartNode& node) {
+    return node.part ? &node.part->skeleton : nullptr;
+}
+
+void checkJoint(const PartNode& node, JointId joint) {
+    const Skeleton* skeleton = skeletonOf(node);
+    if (!skeleton || !skeleton->hasJoint(joint))
+        throw Error("Part " + std::to_string(node.id) + " has no joint " + std::to_string(joint) +
+                    ".");
+}
+
+void checkPose(const PartNode& node, const rigmesh::Pose& pose) {
+    if (!pose.isFinite())
+        throw Error("The pose of part " + std::to_string(node.id) +
+                    " has a non-finite or zero rotation or translation.");
+    for (const auto& entry : pose.rotations)
+        checkJoint(node, entry.first);
+}
+
+void checkPins(const PartNode& node, const std::set<JointId>& pinned) {
+    for (const JointId joint : pinned)
+        checkJoint(node, joint);
+}
+
+}  // namespace
+
 Document::Document(QObject* parent) : Document(DocumentContents{}, parent) {}
 
 Document::Document(DocumentContents contents, QObject* parent)
@@ -98,6 +126,7 @@ PartNode Document::removePart(PartId id) {
     if (selection_.part == id)
         clearSelection();
     emit partAboutToBeRemoved(id, index);
+    posePreviewOrigins_.erase(id);
     PartNode node = std::move(contents_.parts[index]);
     contents_.parts.erase(contents_.parts.begin() + index);
     emit partRemoved(id, index);
@@ -128,21 +157,91 @@ void Document::setVisible(PartId id, bool visible) {
     emit partChanged(id, Change::Visibility);
 }
 
-void Document::replacePart(PartId id, std::shared_ptr<const Part> part,
-                           const BuildOptions& options) {
+void Document::replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options,
+                           const rigmesh::Pose& pose, std::set<JointId> pinned) {
     PartNode& node = mutablePart(id);
+    PartNode probe;
+    probe.id = id;
+    probe.part = part;
+    checkPose(probe, pose);
+    checkPins(probe, pinned);
     Changes what;
     if (node.part != part)
         what |= Change::Geometry;
     if (!(node.options == options))
         what |= Change::Options;
+    if (!identicalPoses(node.pose, pose))
+        what |= Change::Pose;
+    if (node.pinnedJoints != pinned)
+        what |= Change::Pins;
     if (!what)
         return;
+    posePreviewOrigins_.erase(id);
     node.part = std::move(part);
     node.options = options;
+    node.pose = pose;
+    node.pinnedJoints = std::move(pinned);
     if (selection_.part == id && (!node.part || !node.part->skeleton.hasJoint(selection_.joint)))
         setSelection({id, kNoJoint});
     emit partChanged(id, what);
+}
+
+void Document::replacePart(PartId id, std::shared_ptr<const Part> part,
+                           const BuildOptions& options) {
+    const PartNode& node = this->part(id);
+    if (node.part == part) {
+        replacePart(id, std::move(part), options, node.pose, node.pinnedJoints);
+        return;
+    }
+    PartNode probe;
+    probe.part = part;
+    const rigmesh::Pose rest = restPoseOf(probe);
+    replacePart(id, std::move(part), options, rest, {});
+}
+
+void Document::applyPose(PartId id, const rigmesh::Pose& pose) {
+    PartNode& node = mutablePart(id);
+    checkPose(node, pose);
+    if (identicalPoses(node.pose, pose))
+        return;
+    node.pose = pose;
+    emit partChanged(id, Change::Pose);
+}
+
+void Document::setPose(PartId id, const rigmesh::Pose& pose) {
+    checkPose(part(id), pose);
+    posePreviewOrigins_.erase(id);
+    applyPose(id, pose);
+}
+
+void Document::setPinnedJoints(PartId id, std::set<JointId> pinned) {
+    PartNode& node = mutablePart(id);
+    checkPins(node, pinned);
+    if (node.pinnedJoints == pinned)
+        return;
+    node.pinnedJoints = std::move(pinned);
+    emit partChanged(id, Change::Pins);
+}
+
+void Document::previewPose(PartId id, const rigmesh::Pose& pose) {
+    const PartNode& node = part(id);
+    checkPose(node, pose);
+    posePreviewOrigins_.try_emplace(id, node.pose);
+    applyPose(id, pose);
+}
+
+void Document::cancelPosePreview(PartId id) {
+    const auto it = posePreviewOrigins_.find(id);
+    if (it == posePreviewOrigins_.end())
+        return;
+    const rigmesh::Pose origin = std::move(it->second);
+    posePreviewOrigins_.erase(it);
+    applyPose(id, origin);
+}
+
+const rigmesh::Pose* Document::posePreviewOrigin(PartId id) const {
+    const auto it = posePreviewOrigins_.find(id);
+    return it == posePreviewOrigins_.end() ? nullptr : &it->second;
 }
 
 }  // namespace rigmesh::model

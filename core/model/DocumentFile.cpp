@@ -113,6 +113,14 @@ json partJson(const Part& part) {
     };
 }
 
+// rotations: [[joint, w, x, y, z], ...] in joint id order (std::map).
+json poseJson(const rigmesh::Pose& pose) {
+    json rotations = json::array();
+    for (const auto& [joint, q] : pose.rotations)
+        rotations.push_back(json::array({joint, q.w(), q.x(), q.y(), q.z()}));
+    return {{"rotations", std::move(rotations)}, {"rootTranslation", vec3(pose.rootTranslation)}};
+}
+
 json nodeJson(const PartNode& node) {
     const Eigen::Quaterniond& q = node.placement.rotation;
     json out = {
@@ -129,6 +137,10 @@ json nodeJson(const PartNode& node) {
     };
     if (node.part)
         out["part"] = partJson(*node.part);
+    out["pose"] = poseJson(node.pose);
+    out["pinned"] = json::array();
+    for (const JointId joint : node.pinnedJoints)
+        out["pinned"].push_back(joint);
     return out;
 }
 
@@ -335,6 +347,59 @@ std::shared_ptr<const Part> readPart(const json& object) {
     return part;
 }
 
+std::string partLabel(const PartNode& node) {
+    return "part " + std::to_string(node.id) + " (\"" + node.name.toStdString() + "\")";
+}
+
+JointId readJointOf(const PartNode& node, const json& value, const char* what) {
+    const auto joint = integer<JointId>(value, what);
+    if (!node.part->skeleton.hasJoint(joint))
+        corrupt(std::string(what) + " " + std::to_string(joint) + " of " + partLabel(node) +
+                " is not a joint of its skeleton");
+    return joint;
+}
+
+// Absent (files written before poses were stored): the rest pose.
+rigmesh::Pose readPose(const PartNode& node, const json& object) {
+    if (!object.contains("pose"))
+        return restPoseOf(node);
+    const json& pose = field(object, "pose");
+    rigmesh::Pose out;
+    for (const json& entry : array(pose, "rotations")) {
+        if (!entry.is_array() || entry.size() != 5)
+            corrupt("a pose rotation of " + partLabel(node) + " is not [joint, w, x, y, z]");
+        const JointId joint = readJointOf(node, entry[0], "pose joint");
+        const Eigen::Quaterniond q(
+            number(entry[1], "pose rotation"), number(entry[2], "pose rotation"),
+            number(entry[3], "pose rotation"), number(entry[4], "pose rotation"));
+        if (!q.coeffs().allFinite() || q.coeffs().squaredNorm() == 0.0)
+            corrupt("the pose rotation of joint " + std::to_string(joint) + " of " +
+                    partLabel(node) + " is not finite or is zero");
+        if (!out.rotations.emplace(joint, q).second)
+            corrupt("the pose of " + partLabel(node) + " rotates joint " + std::to_string(joint) +
+                    " twice");
+    }
+    const std::vector<double> t =
+        numbers(array(pose, "rootTranslation"), 3, "pose root translation");
+    if (t.size() != 3)
+        corrupt("the pose root translation of " + partLabel(node) + " has the wrong length");
+    out.rootTranslation = Vec3(t[0], t[1], t[2]);
+    if (!out.rootTranslation.allFinite())
+        corrupt("the pose root translation of " + partLabel(node) + " is not finite");
+    return out;
+}
+
+std::set<JointId> readPinned(const PartNode& node, const json& object) {
+    std::set<JointId> out;
+    if (!object.contains("pinned"))
+        return out;
+    for (const json& value : array(object, "pinned")) {
+        if (!out.insert(readJointOf(node, value, "pinned joint")).second)
+            corrupt("a joint of " + partLabel(node) + " is pinned twice");
+    }
+    return out;
+}
+
 PartNode readNode(const json& object) {
     PartNode node;
     node.id = integer<PartId>(field(object, "id"), "part id");
@@ -357,6 +422,8 @@ PartNode readNode(const json& object) {
     if (!object.contains("part"))
         corrupt("a part has no geometry");
     node.part = readPart(object.at("part"));
+    node.pose = readPose(node, object);
+    node.pinnedJoints = readPinned(node, object);
     return node;
 }
 

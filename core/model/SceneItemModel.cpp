@@ -101,10 +101,12 @@ QVariant SceneItemModel::displayData(const SceneNode& node, int column) const {
             if (!known)
                 return {};
             const Vec3& p = skeleton->joint(node.jointId()).position;
-            return QStringLiteral("(%1, %2, %3)")
-                .arg(p.x(), 0, 'f', 3)
-                .arg(p.y(), 0, 'f', 3)
-                .arg(p.z(), 0, 'f', 3);
+            const QString position = QStringLiteral("(%1, %2, %3)")
+                                         .arg(p.x(), 0, 'f', 3)
+                                         .arg(p.y(), 0, 'f', 3)
+                                         .arg(p.z(), 0, 'f', 3);
+            return part->pinnedJoints.contains(node.jointId()) ? tr("%1 (pinned)").arg(position)
+                                                               : position;
         }
     }
     return {};
@@ -227,6 +229,15 @@ void SceneItemModel::onPartChanged(PartId id, Document::Changes what) {
     }
     if (what & (Document::Change::Name | Document::Change::Visibility | Document::Change::Geometry))
         emit dataChanged(partIndex, indexOfNode(node, InfoColumn));
+    if ((what & Document::Change::Pins) && !(what & Document::Change::Geometry) && part->part) {
+        // Pin markers live in the joints' info column.
+        for (const Joint& joint : part->part->skeleton.joints()) {
+            if (const SceneNode* jointNode = node->findJoint(joint.id)) {
+                const QModelIndex info = indexOfNode(jointNode, InfoColumn);
+                emit dataChanged(info, info, {Qt::DisplayRole});
+            }
+        }
+    }
 }
 
 }  // namespace rigmesh::model

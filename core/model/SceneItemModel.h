@@ -3,7 +3,8 @@
 // names are editable in place (pushes RenamePartCommand) and part rows are
 // checkable for visibility (pushes SetPartVisibleCommand). Updates follow the
 // document's signals incrementally; a rebuilt part (new skeleton) has its
-// skeleton row removed and inserted again.
+// skeleton row removed and inserted again. Pinned joints show "(pinned)" in
+// the info column (updated on Change::Pins).
 #pragma once
 
 #include <QAbstractItemModel>

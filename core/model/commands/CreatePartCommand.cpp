@@ -17,6 +17,7 @@ std::unique_ptr<CreatePartCommand> CreatePartCommand::create(Document& document,
     node.stroke = std::move(stroke);
     node.options = options;
     node.placement = placement;
+    node.pose = restPoseOf(node);
     node.id = document.allocatePartId();
     return std::unique_ptr<CreatePartCommand>(new CreatePartCommand(document, std::move(node)));
 }

@@ -20,16 +20,19 @@ RebuildPartCommand::RebuildPartCommand(Document& document, PartId id,
       oldPart_(document.part(id).part),
       newPart_(std::move(part)),
       oldOptions_(document.part(id).options),
-      newOptions_(options) {
+      newOptions_(options),
+      oldPose_(document.part(id).pose),
+      newPose_(rigmesh::restPose(newPart_->skeleton)),
+      oldPinned_(document.part(id).pinnedJoints) {
     setText(tr("Rebuild %1").arg(document.part(id).name));
 }
 
 void RebuildPartCommand::redo() {
-    document_.replacePart(id_, newPart_, newOptions_);
+    document_.replacePart(id_, newPart_, newOptions_, newPose_, {});
 }
 
 void RebuildPartCommand::undo() {
-    document_.replacePart(id_, oldPart_, oldOptions_);
+    document_.replacePart(id_, oldPart_, oldOptions_, oldPose_, oldPinned_);
 }
 
 }  // namespace rigmesh::model

@@ -1,0 +1,23 @@
+#include "model/commands/ResetPoseCommand.h"
+
+namespace rigmesh::model {
+
+ResetPoseCommand::ResetPoseCommand(Document& document, PartId id, QUndoCommand* parent)
+    : QUndoCommand(parent),
+      document_(document),
+      id_(id),
+      from_(document.part(id).pose),
+      to_(restPoseOf(document.part(id))) {
+    setText(tr("Reset pose of %1").arg(document.part(id).name));
+    setObsolete(identicalPoses(from_, to_));
+}
+
+void ResetPoseCommand::redo() {
+    document_.setPose(id_, to_);
+}
+
+void ResetPoseCommand::undo() {
+    document_.setPose(id_, from_);
+}
+
+}  // namespace rigmesh::model

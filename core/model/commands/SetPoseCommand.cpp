@@ -1,0 +1,86 @@
+#include "model/commands/SetPoseCommand.h"
+
+#include "base/Error.h"
+
+namespace rigmesh::model {
+
+namespace {
+
+const rigmesh::Pose& poseBefore(const Document& document, PartId id, bool alreadyApplied) {
+    const PartNode& node = document.part(id);
+    if (alreadyApplied) {
+        if (const rigmesh::Pose* origin = document.posePreviewOrigin(id))
+            return *origin;
+    }
+    return node.pose;
+}
+
+void checkPoseFits(const PartNode& node, const rigmesh::Pose& pose, const char* what) {
+    if (!pose.isFinite())
+        throw Error(std::string("The ") + what + " pose of part " + std::to_string(node.id) +
+                    " has a non-finite or zero rotation or translation.");
+    for (const auto& entry : pose.rotations) {
+        if (!node.part || !node.part->skeleton.hasJoint(entry.first))
+            throw Error(std::string("The ") + what + " pose names joint " +
+                        std::to_string(entry.first) + ", which part " + std::to_string(node.id) +
+                        " does not have.");
+    }
+}
+
+}  // namespace
+
+SetPoseCommand::SetPoseCommand(Document& document, PartId id, const rigmesh::Pose& to,
+                               rigmesh::JointId draggedJoint, bool alreadyApplied,
+                               QUndoCommand* parent)
+    : SetPoseCommand(document, id, poseBefore(document, id, alreadyApplied), to, draggedJoint,
+                     alreadyApplied, parent) {}
+
+SetPoseCommand::SetPoseCommand(Document& document, PartId id, const rigmesh::Pose& from,
+                               const rigmesh::Pose& to, rigmesh::JointId draggedJoint,
+                               bool alreadyApplied, QUndoCommand* parent)
+    : QUndoCommand(parent),
+      document_(document),
+      id_(id),
+      joint_(draggedJoint),
+      from_(from),
+      to_(to),
+      skipRedo_(alreadyApplied) {
+    const PartNode& node = document.part(id);
+    if (draggedJoint != rigmesh::kNoJoint &&
+        (!node.part || !node.part->skeleton.hasJoint(draggedJoint)))
+        throw Error("Part " + std::to_string(id) + " has no joint " + std::to_string(draggedJoint) +
+                    ".");
+    checkPoseFits(node, from_, "starting");
+    checkPoseFits(node, to_, "new");
+    setText(tr("Pose %1").arg(draggedJoint == rigmesh::kNoJoint ? node.name
+                                                                : jointDisplayName(draggedJoint)));
+    setObsolete(identicalPoses(from_, to_));
+}
+
+void SetPoseCommand::redo() {
+    if (skipRedo_) {
+        skipRedo_ = false;
+        // The pose is on screen already; a preview becomes the committed pose.
+        if (document_.posePreviewOrigin(id_) || !identicalPoses(document_.part(id_).pose, to_))
+            document_.setPose(id_, to_);
+        return;
+    }
+    document_.setPose(id_, to_);
+}
+
+void SetPoseCommand::undo() {
+    document_.setPose(id_, from_);
+}
+
+bool SetPoseCommand::mergeWith(const QUndoCommand* other) {
+    if (other->id() != id())
+        return false;
+    const auto* pose = static_cast<const SetPoseCommand*>(other);
+    if (pose->id_ != id_ || pose->joint_ != joint_ || &pose->document_ != &document_)
+        return false;
+    to_ = pose->to_;
+    setObsolete(identicalPoses(from_, to_));
+    return true;
+}
+
+}  // namespace rigmesh::model
