@@ -1,20 +1,24 @@
 // Random sequences of commands (seeded): undoing everything gives back the
 // initial document, redoing everything the final one, and every step in
 // between matches the snapshot taken when it was done (compared by saved
-// bytes). The item model watches the whole run under
+// bytes), poses and pins included. The item model watches the whole run under
 // QAbstractItemModelTester (fatal mode) and must mirror the document.
 #include <QAbstractItemModelTester>
 #include <map>
 #include <random>
 
 #include "ModelTestSupport.h"
+#include "PoseTestSupport.h"
 #include "base/Error.h"
 #include "model/SceneItemModel.h"
 #include "model/commands/DeletePartCommand.h"
 #include "model/commands/MovePartCommand.h"
 #include "model/commands/RebuildPartCommand.h"
 #include "model/commands/RenamePartCommand.h"
+#include "model/commands/ResetPoseCommand.h"
+#include "model/commands/SetJointPinnedCommand.h"
 #include "model/commands/SetPartVisibleCommand.h"
+#include "model/commands/SetPoseCommand.h"
 
 namespace rigmesh::model::test {
 namespace {
@@ -27,7 +31,7 @@ class RandomSession {
     bool step(Document& document) {
         QUndoStack& stack = *document.undoStack();
         const int parts = document.partCount();
-        const int action = parts == 0 ? 0 : pick(0, 9);
+        const int action = parts == 0 ? 0 : pick(0, 13);
         if (action == 0 && parts >= 5)
             return false;
         switch (action) {
@@ -78,6 +82,19 @@ class RandomSession {
                     RebuildPartCommand::create(document, randomPart(document), options).release());
                 return true;
             }
+            case 8:
+            case 9:
+                return poseDrag(document);
+            case 10: {  // pin or unpin a joint
+                const PartId id = randomPart(document);
+                const JointId joint = randomJoint(document, id);
+                stack.push(new SetJointPinnedCommand(
+                    document, id, joint, !document.part(id).pinnedJoints.contains(joint)));
+                return true;
+            }
+            case 11:
+                stack.push(new ResetPoseCommand(document, randomPart(document)));
+                return true;
             default: {  // selection: not undoable, pushes nothing
                 const PartId id = randomPart(document);
                 const Skeleton& skeleton = document.part(id).part->skeleton;
@@ -89,6 +106,25 @@ class RandomSession {
     }
 
   private:
+    // An IK drag step: often the same joint again, to exercise merging.
+    bool poseDrag(Document& document) {
+        if (!document.contains(lastPosed_) || pick(0, 2) == 0) {
+            lastPosed_ = randomPart(document);
+            const std::vector<JointId> ends = endJoints(document.part(lastPosed_).part->skeleton);
+            if (ends.empty())
+                return false;
+            lastDragged_ = ends[pick(0, int(ends.size()) - 1)];
+        }
+        const PartNode& node = document.part(lastPosed_);
+        const Vec3 offset = 0.2 * Vec3(real(), real(), real());
+        document.undoStack()->push(new SetPoseCommand(
+            document, lastPosed_, dragged(node, lastDragged_, offset), lastDragged_));
+        return true;
+    }
+    JointId randomJoint(const Document& document, PartId id) {
+        const Skeleton& skeleton = document.part(id).part->skeleton;
+        return skeleton.joints()[pick(0, skeleton.jointCount() - 1)].id;
+    }
     int pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
     double real() { return std::uniform_real_distribution<double>(-1.0, 1.0)(rng_); }
     PartId randomPart(const Document& document) {
@@ -97,6 +133,8 @@ class RandomSession {
 
     std::mt19937 rng_;
     PartId lastMoved_ = kNoPart;
+    PartId lastPosed_ = kNoPart;
+    JointId lastDragged_ = kNoJoint;
 };
 
 // The item model's top level and skeleton rows against the document.
