@@ -22,8 +22,10 @@
 #include "model/Autosave.h"
 #include "model/DocumentFile.h"
 #include "model/commands/DeletePartCommand.h"
+#include "model/commands/ResetPoseCommand.h"
 #include "panels/OutlinerPanel.h"
 #include "panels/PropertiesPanel.h"
+#include "tools/PoseTool.h"
 #include "tools/SelectTool.h"
 #include "tools/SketchTool.h"
 #include "viewport/Viewport.h"
@@ -49,6 +51,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
       history_(new QUndoView(&undoGroup_, this)),
       selectTool_(new SelectTool(this)),
       sketchTool_(new SketchTool(this)),
+      poseTool_(new PoseTool(this)),
       recoveryDirectory_(recoveryDirectory.isEmpty() ? QStandardPaths::writableLocation(
                                                            QStandardPaths::AppLocalDataLocation) +
                                                            QStringLiteral("/recovery")
@@ -72,10 +75,23 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
         resize(1280, 800);
     rebuildRecentMenu();
     updateTitle();
-    showStatus(tr("Ready: press S to sketch a part, Q to select; middle drag orbits"));
+    showStatus(tr("Ready: S sketches a part, Q selects, P poses; middle drag orbits, wheel zooms"));
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // Close the views while the tab widget still exists: a document's
+    // destruction emits signals this window listens to.
+    while (tabs_->count() > 0) {
+        auto* view = qobject_cast<DocumentView*>(tabs_->widget(0));
+        tabs_->removeTab(0);
+        if (!view)
+            continue;
+        disconnect(view->document(), nullptr, this, nullptr);
+        undoGroup_.removeStack(view->document()->undoStack());
+        autosaves_.erase(view);
+        delete view;
+    }
+}
 
 void MainWindow::createActions() {
     QStyle* s = style();
@@ -109,7 +125,13 @@ void MainWindow::createActions() {
     undo->setShortcut(QKeySequence::Undo);
     undo->setIcon(s->standardIcon(QStyle::SP_ArrowBack));
     QAction* redo = undoGroup_.createRedoAction(this, tr("&Redo"));
-    redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
+    // Ctrl+Shift+Z everywhere, plus the platform's own redo key (Ctrl+Y on
+    // some); a key listed twice would make the shortcut ambiguous.
+    QList<QKeySequence> redoKeys{QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)};
+    for (const QKeySequence& key : QKeySequence::keyBindings(QKeySequence::Redo))
+        if (!redoKeys.contains(key))
+            redoKeys.append(key);
+    redo->setShortcuts(redoKeys);
     redo->setIcon(s->standardIcon(QStyle::SP_ArrowForward));
     edit->addAction(undo);
     edit->addAction(redo);
@@ -161,13 +183,18 @@ void MainWindow::createActions() {
                             &MainWindow::activateSelectTool, QStyle::SP_ArrowUp);
     sketchToolAction_ = add(tools, tr("S&ketch Part"), QKeySequence(Qt::Key_S),
                             &MainWindow::activateSketchTool, QStyle::SP_FileDialogContentsView);
-    for (QAction* a : {selectToolAction_, sketchToolAction_}) {
+    poseToolAction_ = add(tools, tr("&Pose"), QKeySequence(Qt::Key_P),
+                          &MainWindow::activatePoseTool, QStyle::SP_MediaPlay);
+    tools->addSeparator();
+    add(tools, tr("&Reset Pose"), QKeySequence(Qt::ALT | Qt::Key_R), &MainWindow::resetPose);
+    for (QAction* a : {selectToolAction_, sketchToolAction_, poseToolAction_}) {
         a->setCheckable(true);
         toolGroup_->addAction(a);
     }
     toolbar->addSeparator();
     toolbar->addAction(selectToolAction_);
     toolbar->addAction(sketchToolAction_);
+    toolbar->addAction(poseToolAction_);
     sketchToolAction_->setChecked(true);
 
     auto* help = menuBar()->addMenu(tr("&Help"));
@@ -382,6 +409,30 @@ void MainWindow::activateSketchTool() {
     if (auto* v = currentView())
         v->viewport()->setTool(sketchTool_);
     showStatus(sketchTool_->hint());
+}
+
+ViewportTool* MainWindow::activeTool() const {
+    if (sketchToolAction_->isChecked())
+        return sketchTool_;
+    if (poseToolAction_->isChecked())
+        return poseTool_;
+    return selectTool_;
+}
+
+void MainWindow::activatePoseTool() {
+    poseToolAction_->setChecked(true);
+    if (auto* v = currentView())
+        v->viewport()->setTool(poseTool_);
+    showStatus(poseTool_->hint());
+}
+
+void MainWindow::resetPose() {
+    model::Document* document = currentDocument();
+    if (!document || !document->contains(document->selection().part)) {
+        showStatus(tr("Select a part to reset its pose"), 4000);
+        return;
+    }
+    document->undoStack()->push(new model::ResetPoseCommand(*document, document->selection().part));
 }
 
 void MainWindow::deleteSelection() {

@@ -26,6 +26,7 @@ namespace rigmesh::widgets {
 class DocumentView;
 class OutlinerPanel;
 class PropertiesPanel;
+class PoseTool;
 class SelectTool;
 class SketchTool;
 
@@ -55,6 +56,8 @@ class MainWindow : public QMainWindow {
     bool closeDocument(int index);
     void activateSelectTool();
     void activateSketchTool();
+    void activatePoseTool();
+    void resetPose();
     void deleteSelection();
 
   protected:
@@ -64,6 +67,7 @@ class MainWindow : public QMainWindow {
     void createActions();
     void createDocks();
     void currentTabChanged(int index);
+    class ViewportTool* activeTool() const;
     void updateTitle();
     bool saveDocument(DocumentView* view, const QString& path);
     bool maybeSave(DocumentView* view);
@@ -81,11 +85,13 @@ class MainWindow : public QMainWindow {
     QActionGroup* toolGroup_ = nullptr;
     QAction* selectToolAction_ = nullptr;
     QAction* sketchToolAction_ = nullptr;
+    QAction* poseToolAction_ = nullptr;
     QAction* wireframeAction_ = nullptr;
     QAction* dqsAction_ = nullptr;
     QAction* gridAction_ = nullptr;
     SelectTool* selectTool_;
     SketchTool* sketchTool_;
+    PoseTool* poseTool_;
     QString recoveryDirectory_;
     std::map<DocumentView*, model::Autosave*> autosaves_;
 };

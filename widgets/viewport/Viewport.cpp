@@ -6,6 +6,7 @@
 #include <QWheelEvent>
 #include <limits>
 
+#include "pose/ForwardKinematics.h"
 #include "viewport/SceneRenderer.h"
 #include "viewport/ViewportTool.h"
 
@@ -59,7 +60,37 @@ double rayTriangle(const Vec3& origin, const Vec3& direction, const Vec3& a, con
     return t > 0 ? t : std::numeric_limits<double>::infinity();
 }
 
+// Per bone: unit dual quaternion (real, dual) and 3x4 matrix rows of its
+// skinning transform (world * inverse rest), for the GPU (Kavan et al. 2008).
+void setSkinning(RenderPart& item, const PosedSkeleton& posed) {
+    for (const RigidTransform& t : posed.boneTransforms) {
+        const Eigen::Quaterniond& q = t.rotation;
+        const Vec3& v = t.translation;
+        // dual = 1/2 * (0, t) * q
+        const Eigen::Quaterniond d(-0.5 * v.dot(q.vec()), 0, 0, 0);
+        const Vec3 dualVector = 0.5 * (q.w() * v + v.cross(q.vec()));
+        item.boneReal.emplace_back(float(q.x()), float(q.y()), float(q.z()), float(q.w()));
+        item.boneDual.emplace_back(float(dualVector.x()), float(dualVector.y()),
+                                   float(dualVector.z()), float(d.w()));
+        const Eigen::Matrix3d r = q.toRotationMatrix();
+        for (int row = 0; row < 3; ++row)
+            item.boneRows.emplace_back(float(r(row, 0)), float(r(row, 1)), float(r(row, 2)),
+                                       float(v[row]));
+    }
+}
+
 }  // namespace
+
+const PosedSkeleton& Viewport::posedSkeleton(const model::PartNode& node) const {
+    auto& cached = posedCache_[node.id];
+    if (cached.part != node.part.get() || cached.pose.rotations != node.pose.rotations ||
+        cached.pose.rootTranslation != node.pose.rootTranslation) {
+        cached.part = node.part.get();
+        cached.pose = node.pose;
+        cached.posed = forwardKinematics(node.part->skeleton, node.pose);
+    }
+    return cached.posed;
+}
 
 Viewport::Viewport(model::Document* document, QWidget* parent)
     : QOpenGLWidget(parent), document_(document), renderer_(std::make_unique<SceneRenderer>()) {
@@ -141,7 +172,9 @@ Eigen::AlignedBox3d Viewport::sceneBox(bool selectedOnly) const {
         if (selectedOnly && selection.joint != kNoJoint &&
             node.part->skeleton.hasJoint(selection.joint)) {
             const Vec3 p =
-                toWorld(node.placement, node.part->skeleton.joint(selection.joint).position);
+                toWorld(node.placement,
+                        posedSkeleton(node)
+                            .jointPositions[node.part->skeleton.indexOfJoint(selection.joint)]);
             box.extend(p);
             continue;
         }
@@ -198,22 +231,27 @@ RenderScene Viewport::gatherScene() const {
         item.model = placementMatrix(node.placement);
         item.colour = partColour(node.id);
         item.selected = node.id == selection.part;
+        const PosedSkeleton& posed = posedSkeleton(node);
+        setSkinning(item, posed);
         scene.parts.push_back(std::move(item));
 
         const Skeleton& skeleton = node.part->skeleton;
+        auto posedJoint = [&](JointId id) {
+            return posed.jointPositions[skeleton.indexOfJoint(id)];
+        };
         const QVector3D boneColour = node.id == selection.part ? QVector3D(0.95f, 0.85f, 0.45f)
                                                                : QVector3D(0.75f, 0.72f, 0.55f);
         for (const Bone& bone : skeleton.bones()) {
-            scene.lines.add(toQt(toWorld(node.placement, skeleton.joint(bone.head).position)),
-                            boneColour);
-            scene.lines.add(toQt(toWorld(node.placement, skeleton.joint(bone.tail).position)),
-                            boneColour);
+            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.head))), boneColour);
+            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.tail))), boneColour);
         }
         for (const Joint& joint : skeleton.joints()) {
             const bool selected = node.id == selection.part && joint.id == selection.joint;
-            scene.points.add(
-                toQt(toWorld(node.placement, joint.position)),
-                selected ? QVector3D(1.0f, 0.55f, 0.1f) : QVector3D(0.2f, 0.2f, 0.22f));
+            const bool pinned = node.pinnedJoints.count(joint.id) > 0;
+            const QVector3D colour = selected ? QVector3D(1.0f, 0.55f, 0.1f)
+                                     : pinned ? QVector3D(0.85f, 0.15f, 0.15f)
+                                              : QVector3D(0.2f, 0.2f, 0.22f);
+            scene.points.add(toQt(toWorld(node.placement, posedJoint(joint.id))), colour);
         }
     }
     for (const QVector3D& p : strokeOverlay_)
@@ -244,7 +282,9 @@ model::Placement Viewport::sketchPlacement() const {
 
 QVector3D Viewport::jointWorldPosition(model::PartId part, JointId joint) const {
     const model::PartNode& node = document_->part(part);
-    return toQt(toWorld(node.placement, node.part->skeleton.joint(joint).position));
+    const PosedSkeleton& posed = posedSkeleton(node);
+    return toQt(
+        toWorld(node.placement, posed.jointPositions[node.part->skeleton.indexOfJoint(joint)]));
 }
 
 std::optional<model::Selection> Viewport::jointAt(const QPointF& pixel) const {
@@ -254,9 +294,11 @@ std::optional<model::Selection> Viewport::jointAt(const QPointF& pixel) const {
     for (const model::PartNode& node : document_->parts()) {
         if (!node.visible || !node.part)
             continue;
+        const PosedSkeleton& posed = posedSkeleton(node);
         for (const Joint& joint : node.part->skeleton.joints()) {
+            const Vec3& position = posed.jointPositions[node.part->skeleton.indexOfJoint(joint.id)];
             QVector3D screen =
-                camera_.project(toQt(toWorld(node.placement, joint.position)), QSizeF(size()));
+                camera_.project(toQt(toWorld(node.placement, position)), QSizeF(size()));
             double d = std::hypot(screen.x() - pixel.x(), screen.y() - pixel.y());
             if (d < bestDistance) {
                 bestDistance = d;

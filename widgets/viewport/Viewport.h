@@ -6,10 +6,12 @@
 #pragma once
 
 #include <QOpenGLWidget>
+#include <map>
 #include <memory>
 #include <optional>
 
 #include "model/Document.h"
+#include "pose/ForwardKinematics.h"
 #include "viewport/OrbitCamera.h"
 #include "viewport/RenderScene.h"
 
@@ -52,8 +54,10 @@ class Viewport : public QOpenGLWidget {
     // The visible part under a pixel, if any.
     std::optional<model::PartId> partAt(const QPointF& pixel) const;
 
-    // World position of a joint of a part in its current placement.
+    // World position of a joint of a part in its current placement and pose.
     QVector3D jointWorldPosition(model::PartId part, JointId joint) const;
+    // The part's skeleton in its current pose (cached per part and pose).
+    const PosedSkeleton& posedSkeleton(const model::PartNode& node) const;
 
   public slots:
     void frameAll();
@@ -86,6 +90,12 @@ class Viewport : public QOpenGLWidget {
     bool dualQuaternion_ = true;
     bool gridVisible_ = true;
     bool framedOnce_ = false;
+    struct PosedCacheEntry {
+        const Part* part = nullptr;
+        Pose pose;
+        PosedSkeleton posed;
+    };
+    mutable std::map<model::PartId, PosedCacheEntry> posedCache_;
     QPointF lastMouse_;
     bool navigating_ = false;
 };

@@ -1,0 +1,123 @@
+// The studio end to end, as a newcomer uses it: sketch a part, see it in the
+// outliner, undo and redo it, pose it by dragging a joint.
+#include <gtest/gtest.h>
+
+#include <QAction>
+#include <QTemporaryDir>
+#include <QTreeView>
+#include <QUndoStack>
+
+#include "DocumentView.h"
+#include "MainWindow.h"
+#include "StudioTestSupport.h"
+#include "model/Document.h"
+#include "model/DocumentFile.h"
+#include "model/commands/CreatePartCommand.h"
+#include "panels/OutlinerPanel.h"
+#include "sketch/Sketch.h"
+
+namespace rigmesh {
+namespace {
+
+using test::drag;
+using test::ellipseStroke;
+using test::settle;
+
+class Studio : public testing::Test {
+  protected:
+    void SetUp() override {
+        ASSERT_TRUE(recovery.isValid());
+        window = std::make_unique<widgets::MainWindow>(recovery.path());
+        window->resize(1200, 800);
+        window->newDocument();
+        settle(window.get());
+    }
+    widgets::Viewport* viewport() const { return window->currentView()->viewport(); }
+    model::Document* document() const { return window->currentDocument(); }
+
+    QTemporaryDir recovery;
+    std::unique_ptr<widgets::MainWindow> window;
+};
+
+TEST_F(Studio, MouseStrokeInTheViewportCreatesARiggedPart) {
+    window->activateSketchTool();
+    const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
+    drag(viewport(), ellipseStroke(centre, 220, 60));
+    ASSERT_EQ(document()->partCount(), 1);
+    const model::PartNode& node = document()->parts().front();
+    EXPECT_GT(node.part->mesh.vertexCount(), 100);
+    EXPECT_GE(node.part->skeleton.boneCount(), 1);
+    EXPECT_EQ(document()->undoStack()->count(), 1);
+    // The outliner lists it.
+    EXPECT_EQ(window->outliner()->view()->model()->rowCount(), 1);
+}
+
+TEST_F(Studio, CtrlZRemovesTheSketchedPartAndCtrlShiftZBringsItBack) {
+    window->activateSketchTool();
+    const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
+    drag(viewport(), ellipseStroke(centre, 200, 70));
+    ASSERT_EQ(document()->partCount(), 1);
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_EQ(document()->partCount(), 0);
+    EXPECT_EQ(window->outliner()->view()->model()->rowCount(), 0);
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    EXPECT_EQ(document()->partCount(), 1);
+}
+
+TEST_F(Studio, TooShortStrokeChangesNothing) {
+    window->activateSketchTool();
+    drag(viewport(), {QPointF(100, 100), QPointF(102, 101), QPointF(103, 103)});
+    EXPECT_EQ(document()->partCount(), 0);
+    EXPECT_EQ(document()->undoStack()->count(), 0);
+}
+
+TEST_F(Studio, DraggingAJointChangesThePoseInOneUndoStep) {
+    window->activateSketchTool();
+    const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
+    drag(viewport(), ellipseStroke(centre, 260, 50));
+    ASSERT_EQ(document()->partCount(), 1);
+    const model::PartId id = document()->parts().front().id;
+    const Skeleton& skeleton = document()->part(id).part->skeleton;
+    ASSERT_GE(skeleton.boneCount(), 1);
+    // The joint farthest from the root: dragging it bends the chain.
+    JointId end = skeleton.joints().front().id;
+    double farthest = -1;
+    for (const Joint& joint : skeleton.joints()) {
+        const double d = (joint.position - skeleton.joint(skeleton.root()).position).norm();
+        if (d > farthest)
+            farthest = d, end = joint.id;
+    }
+    const QVector3D screen = viewport()->camera().project(viewport()->jointWorldPosition(id, end),
+                                                          QSizeF(viewport()->size()));
+    const int stepsBefore = document()->undoStack()->count();
+    window->activatePoseTool();
+    std::vector<QPointF> path;
+    for (int i = 0; i <= 10; ++i)
+        path.emplace_back(screen.x(), screen.y() - 8.0 * i);
+    drag(viewport(), path);
+    EXPECT_FALSE(document()->part(id).pose.rotations.empty());
+    EXPECT_EQ(document()->undoStack()->count(), stepsBefore + 1) << "a drag is one undo step";
+    const QVector3D moved = viewport()->jointWorldPosition(id, end);
+    EXPECT_GT((moved - viewport()->jointWorldPosition(id, skeleton.root())).length(), 0.0f);
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+    const auto& rotations = document()->part(id).pose.rotations;
+    for (const auto& [joint, q] : rotations)
+        EXPECT_NEAR(q.angularDistance(Eigen::Quaterniond::Identity()), 0.0, 1e-12);
+}
+
+TEST_F(Studio, SavedDocumentReopensWithTheSameContent) {
+    window->activateSketchTool();
+    const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
+    drag(viewport(), ellipseStroke(centre, 220, 60));
+    ASSERT_EQ(document()->partCount(), 1);
+    const QString path = recovery.filePath(QStringLiteral("saved.rigmesh"));
+    model::DocumentFile::save(*document(), path);
+    const QByteArray saved = model::DocumentFile::toBytes(*document());
+    EXPECT_FALSE(document()->isModified());
+    ASSERT_TRUE(window->closeDocument(window->tabs()->currentIndex()));
+    ASSERT_TRUE(window->openFile(path));
+    EXPECT_EQ(model::DocumentFile::toBytes(*document()), saved);
+}
+
+}  // namespace
+}  // namespace rigmesh

@@ -1,0 +1,21 @@
+// A QApplication for the widget tests; settings and recovery files go to a
+// scratch place so tests never touch a user's.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+
+int main(int argc, char** argv) {
+    QStandardPaths::setTestModeEnabled(true);
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("RigMeshTests"));
+    QApplication::setApplicationName(QStringLiteral("RigMesh Studio Tests"));
+    testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

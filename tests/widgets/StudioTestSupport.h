@@ -1,0 +1,55 @@
+// Helpers to drive the studio like a person: mouse strokes in the viewport.
+#pragma once
+
+#include <QApplication>
+#include <QMouseEvent>
+#include <QTest>
+#include <cmath>
+#include <vector>
+
+#include "viewport/Viewport.h"
+
+namespace rigmesh::test {
+
+inline void sendMouse(QWidget* widget, QEvent::Type type, const QPointF& at, Qt::MouseButton button,
+                      Qt::MouseButtons buttons, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    QMouseEvent event(type, at, widget->mapToGlobal(at), button, buttons, modifiers);
+    QApplication::sendEvent(widget, &event);
+}
+
+// A left-button drag through `points` (pixels in the widget).
+inline void drag(QWidget* widget, const std::vector<QPointF>& points,
+                 Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    widget->setFocus(Qt::MouseFocusReason);  // as a real click does
+    sendMouse(widget, QEvent::MouseButtonPress, points.front(), Qt::LeftButton, Qt::LeftButton,
+              modifiers);
+    for (std::size_t i = 1; i < points.size(); ++i)
+        sendMouse(widget, QEvent::MouseMove, points[i], Qt::NoButton, Qt::LeftButton, modifiers);
+    sendMouse(widget, QEvent::MouseButtonRelease, points.back(), Qt::LeftButton, Qt::NoButton,
+              modifiers);
+}
+
+// A closed ellipse-like outline around `centre`, as a mouse would draw it.
+inline std::vector<QPointF> ellipseStroke(const QPointF& centre, double rx, double ry,
+                                          int count = 80) {
+    std::vector<QPointF> points;
+    for (int i = 0; i <= count; ++i) {
+        const double t = 2.0 * M_PI * i / count;
+        points.emplace_back(centre.x() + rx * std::cos(t), centre.y() + ry * std::sin(t));
+    }
+    return points;
+}
+
+// Lets the window show and the GL widget paint.
+inline void settle(QWidget* window) {
+    window->show();
+    // No window manager under Xvfb: activate by hand so shortcuts reach it.
+    QApplication::setActiveWindow(window);
+    if (!QTest::qWaitForWindowExposed(window))
+        QTest::qWait(500);
+    if (!QTest::qWaitForWindowActive(window, 300))
+        QTest::qWait(50);
+    QTest::qWait(50);
+}
+
+}  // namespace rigmesh::test

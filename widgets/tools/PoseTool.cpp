@@ -1,0 +1,135 @@
+#include "tools/PoseTool.h"
+
+#include <QtMath>
+#include <cmath>
+
+#include "base/Error.h"
+#include "model/commands/SetJointPinnedCommand.h"
+#include "model/commands/SetPoseCommand.h"
+#include "pose/InverseKinematics.h"
+#include "viewport/Viewport.h"
+
+namespace rigmesh::widgets {
+namespace {
+
+Vec3 toEigen(const QVector3D& v) {
+    return Vec3(v.x(), v.y(), v.z());
+}
+
+// The joint at the head of the bone that ends at `joint` (its parent), if any.
+JointId parentJoint(const Skeleton& skeleton, JointId joint) {
+    for (const Bone& bone : skeleton.bones())
+        if (bone.tail == joint)
+            return bone.head;
+    return kNoJoint;
+}
+
+}  // namespace
+
+QString PoseTool::hint() const {
+    return tr(
+        "Pose: drag a joint (IK); Ctrl + drag turns its bone (FK); Shift + click pins or unpins a "
+        "joint");
+}
+
+void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
+    model::Document& document = *viewport.document();
+    const auto hit = viewport.jointAt(event->position());
+    if (!hit) {
+        emit hintMessage(tr("Click on a joint to pose the part"));
+        return;
+    }
+    document.setSelection(*hit);
+    const model::PartNode& node = document.part(hit->part);
+    if (event->modifiers() & Qt::ShiftModifier) {
+        const bool pinned = node.pinnedJoints.count(hit->joint) > 0;
+        document.undoStack()->push(
+            new model::SetJointPinnedCommand(document, hit->part, hit->joint, !pinned));
+        return;
+    }
+    Drag drag;
+    drag.part = hit->part;
+    drag.joint = hit->joint;
+    drag.grabPoint = viewport.jointWorldPosition(hit->part, hit->joint);
+    drag.startPixel = event->position();
+    drag.startPose = node.pose;
+    if (event->modifiers() & Qt::ControlModifier) {
+        drag.forward = true;
+        drag.pivot = parentJoint(node.part->skeleton, hit->joint);
+        if (drag.pivot == kNoJoint) {
+            emit hintMessage(
+                tr("The root joint has no bone to turn: drag it without Ctrl to move the chain"));
+            return;
+        }
+    }
+    drag_ = drag;
+}
+
+void PoseTool::move(Viewport& viewport, QMouseEvent* event) {
+    if (!drag_ || !(event->buttons() & Qt::LeftButton))
+        return;
+    if (!viewport.document()->contains(drag_->part)) {
+        drag_.reset();
+        return;
+    }
+    if (drag_->forward)
+        rotateWithFk(viewport, event->position());
+    else
+        dragWithIk(viewport, event->position());
+}
+
+void PoseTool::dragWithIk(Viewport& viewport, const QPointF& pixel) {
+    model::Document& document = *viewport.document();
+    const model::PartNode& node = document.part(drag_->part);
+    // The target on the view plane through the joint, in the part's frame.
+    const Vec3 world = toEigen(viewport.viewPlanePoint(pixel, drag_->grabPoint));
+    const Vec3 target = node.placement.rotation.conjugate() * (world - node.placement.translation);
+    const std::vector<JointId> pinned(node.pinnedJoints.begin(), node.pinnedJoints.end());
+    IkOptions options;
+    options.softReach = 0.05;  // smooth when the chain straightens (see InverseKinematics.h)
+    const IkResult result =
+        dragJoint(node.part->skeleton, node.pose, drag_->joint, target, pinned, options);
+    document.undoStack()->push(
+        new model::SetPoseCommand(document, drag_->part, result.pose, drag_->joint));
+}
+
+void PoseTool::rotateWithFk(Viewport& viewport, const QPointF& pixel) {
+    model::Document& document = *viewport.document();
+    const model::PartNode& node = document.part(drag_->part);
+    // The angle swept around the pivot on screen, about the view direction.
+    const QVector3D pivotWorld = viewport.jointWorldPosition(drag_->part, drag_->pivot);
+    const QVector3D pivotScreen = viewport.camera().project(pivotWorld, QSizeF(viewport.size()));
+    const double start = std::atan2(drag_->startPixel.y() - pivotScreen.y(),
+                                    drag_->startPixel.x() - pivotScreen.x());
+    const double now = std::atan2(pixel.y() - pivotScreen.y(), pixel.x() - pivotScreen.x());
+    const Vec3 viewAxis = toEigen(viewport.camera().forward());
+    // Screen y points down: a clockwise sweep on screen is a positive turn
+    // about the view direction.
+    const Eigen::Quaterniond worldTurn(Eigen::AngleAxisd(now - start, viewAxis));
+    const Eigen::Quaterniond partTurn =
+        node.placement.rotation.conjugate() * worldTurn * node.placement.rotation;
+    // Local rotations compose in the parent's frame: L' = W_parent^-1 R W_parent L.
+    const PosedSkeleton& posed = viewport.posedSkeleton(node);
+    Pose pose = drag_->startPose;
+    const Skeleton& skeleton = node.part->skeleton;
+    const JointId grand = parentJoint(skeleton, drag_->pivot);
+    const Eigen::Quaterniond parentWorld =
+        grand == kNoJoint ? Eigen::Quaterniond::Identity()
+                          : posed.jointTransforms[skeleton.indexOfJoint(grand)].rotation;
+    // Use the pose at the press: the parent does not move during the turn.
+    pose.setRotation(drag_->pivot, (parentWorld.conjugate() * partTurn * parentWorld *
+                                    drag_->startPose.rotation(drag_->pivot))
+                                       .normalized());
+    document.undoStack()->push(
+        new model::SetPoseCommand(document, drag_->part, pose, drag_->joint));
+}
+
+void PoseTool::release(Viewport&, QMouseEvent*) {
+    drag_.reset();
+}
+
+void PoseTool::cancel(Viewport&) {
+    drag_.reset();
+}
+
+}  // namespace rigmesh::widgets

@@ -1,0 +1,47 @@
+// Pose tool (paper section 3: the rig is there to be used while modelling).
+// Drag a joint: inverse kinematics moves the chain from it up to the root or
+// the nearest pinned joint, bone lengths kept. Ctrl + drag a joint: forward
+// kinematics, its bone turns about its head in the view plane. Shift + click
+// a joint: pin or unpin it. Every drag is one undo step (SetPoseCommand
+// merges consecutive poses of the same joint).
+#pragma once
+
+#include <QObject>
+#include <optional>
+
+#include "model/PartNode.h"
+#include "viewport/ViewportTool.h"
+
+namespace rigmesh::widgets {
+
+class PoseTool : public QObject, public ViewportTool {
+    Q_OBJECT
+  public:
+    using QObject::QObject;
+    QString name() const override { return tr("Pose"); }
+    QString hint() const override;
+    void press(Viewport& viewport, QMouseEvent* event) override;
+    void move(Viewport& viewport, QMouseEvent* event) override;
+    void release(Viewport& viewport, QMouseEvent* event) override;
+    void cancel(Viewport& viewport) override;
+
+  signals:
+    void hintMessage(const QString& message);
+
+  private:
+    void dragWithIk(Viewport& viewport, const QPointF& pixel);
+    void rotateWithFk(Viewport& viewport, const QPointF& pixel);
+
+    struct Drag {
+        model::PartId part = model::kNoPart;
+        JointId joint = kNoJoint;
+        QVector3D grabPoint;       // the joint's world position at the press
+        bool forward = false;      // FK rotation rather than IK
+        JointId pivot = kNoJoint;  // FK: the head of the rotated bone
+        QPointF startPixel;
+        Pose startPose;
+    };
+    std::optional<Drag> drag_;
+};
+
+}  // namespace rigmesh::widgets
