@@ -97,6 +97,8 @@ TEST_F(Studio, DraggingAJointChangesThePoseInOneUndoStep) {
     drag(viewport(), path);
     EXPECT_FALSE(document()->part(id).pose.rotations.empty());
     EXPECT_EQ(document()->undoStack()->count(), stepsBefore + 1) << "a drag is one undo step";
+    // For people: the posed part as the window shows it.
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_posed.png"));
     const QVector3D moved = viewport()->jointWorldPosition(id, end);
     EXPECT_GT((moved - viewport()->jointWorldPosition(id, skeleton.root())).length(), 0.0f);
     QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
