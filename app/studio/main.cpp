@@ -5,7 +5,9 @@
 #include <QCommandLineParser>
 #include <QMessageBox>
 #include <QSurfaceFormat>
+
 #include <QTimer>
+#include "viewport/Viewport.h"
 
 #include "ExampleDocument.h"
 #include "MainWindow.h"
@@ -13,11 +15,7 @@
 
 int main(int argc, char** argv) {
     // Every GL widget gets a 3.3 core context (Mesa llvmpipe provides 4.5).
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    QSurfaceFormat::setDefaultFormat(format);
+    QSurfaceFormat::setDefaultFormat(rigmesh::widgets::Viewport::requiredFormat());
 
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("RigMesh Studio"));

@@ -6,13 +6,11 @@
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 
+#include "viewport/Viewport.h"
+
 int main(int argc, char** argv) {
     QStandardPaths::setTestModeEnabled(true);
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    QSurfaceFormat::setDefaultFormat(format);
+    QSurfaceFormat::setDefaultFormat(rigmesh::widgets::Viewport::requiredFormat());
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("RigMeshTests"));
     QApplication::setApplicationName(QStringLiteral("RigMesh Studio Tests"));

@@ -94,10 +94,7 @@ const PosedSkeleton& Viewport::posedSkeleton(const model::PartNode& node) const 
 
 Viewport::Viewport(model::Document* document, QWidget* parent)
     : QOpenGLWidget(parent), document_(document), renderer_(std::make_unique<SceneRenderer>()) {
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
+    QSurfaceFormat format = requiredFormat();
     format.setSamples(4);
     setFormat(format);
     setFocusPolicy(Qt::StrongFocus);
@@ -109,6 +106,14 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     connect(document_, &model::Document::partChanged, this, refresh);
     connect(document_, &model::Document::selectionChanged, this, refresh);
     camera_.setView(0, 0);
+}
+
+QSurfaceFormat Viewport::requiredFormat() {
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    return format;
 }
 
 Viewport::~Viewport() {

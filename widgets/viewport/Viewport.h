@@ -24,6 +24,9 @@ class Viewport : public QOpenGLWidget {
     Q_OBJECT
   public:
     explicit Viewport(model::Document* document, QWidget* parent = nullptr);
+    // The context every viewport needs: OpenGL 3.3 core with a depth buffer.
+    // Applications set it as the default before creating any window.
+    static QSurfaceFormat requiredFormat();
     ~Viewport() override;
 
     model::Document* document() const { return document_; }
