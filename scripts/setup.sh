@@ -11,10 +11,11 @@ packages=(
     cmake ninja-build g++ ccache pkg-config git
     libcgal-dev libgmp-dev libmpfr-dev libboost-dev
     libeigen3-dev libsuitesparse-dev
-    nlohmann-json3-dev libtinyxml2-dev
+    nlohmann-json3-dev libtinyxml2-dev libassimp-dev
     qt6-base-dev libgl-dev libgl1-mesa-dri
     xvfb xauth
     libgtest-dev libgmock-dev libbenchmark-dev
+    blender python3-numpy nodejs npm
 )
 
 missing=()
@@ -31,6 +32,13 @@ if ((${#missing[@]})); then
     export DEBIAN_FRONTEND=noninteractive
     $sudo apt-get update -qq
     $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# The glTF validator of the external export tests (tests/external), pinned by
+# its package-lock.json; installed once.
+if [ ! -d tests/external/node_modules ]; then
+    echo "setup: installing the glTF validator (npm ci --prefix tests/external)"
+    npm ci --prefix tests/external --no-audit --no-fund >/dev/null
 fi
 
 # Configure once; later runs only rebuild what changed.

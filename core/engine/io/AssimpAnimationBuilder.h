@@ -1,0 +1,25 @@
+// The clip as an aiAnimation (issue 6 item 1) following the notes' items 4
+// and 5: mTicksPerSecond = 1 with key times in seconds, and every bone node a
+// channel with position, rotation and scaling keys at the same times.
+// Internal to io/: the header only forward-declares Assimp.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "io/ExportRig.h"
+#include "pose/Clip.h"
+
+struct aiAnimation;
+
+namespace rigmesh {
+
+// The times written: the key times for a Linear clip (viewers interpolate
+// linearly between them too); for a Smooth clip every frame from the first to
+// the last key as well, so that the curve between keys survives.
+std::vector<double> exportedKeyTimes(const Clip& clip);
+
+// Throws Error on a clip without keys.
+aiAnimation* makeAnimation(const Clip& clip, const ExportRig& rig, const std::string& name);
+
+}  // namespace rigmesh

@@ -1,0 +1,43 @@
+// Eigen <-> Assimp value conversions shared by export and import. Internal to
+// io/ and included only from .cpp files (it includes Assimp).
+#pragma once
+
+#include <assimp/matrix4x4.h>
+#include <assimp/quaternion.h>
+#include <assimp/vector3.h>
+
+#include <Eigen/Geometry>
+
+#include "base/Types.h"
+
+namespace rigmesh {
+
+inline aiVector3D toAi(const Vec3& v) {
+    return {static_cast<ai_real>(v.x()), static_cast<ai_real>(v.y()), static_cast<ai_real>(v.z())};
+}
+inline aiQuaternion toAi(const Eigen::Quaterniond& q) {
+    return {static_cast<ai_real>(q.w()), static_cast<ai_real>(q.x()), static_cast<ai_real>(q.y()),
+            static_cast<ai_real>(q.z())};
+}
+inline Vec3 fromAi(const aiVector3D& v) {
+    return {v.x, v.y, v.z};
+}
+inline Eigen::Quaterniond fromAi(const aiQuaternion& q) {
+    return {q.w, q.x, q.y, q.z};
+}
+
+inline aiMatrix4x4 translationMatrix(const Vec3& t) {
+    aiMatrix4x4 m;
+    aiMatrix4x4::Translation(toAi(t), m);
+    return m;
+}
+
+inline Eigen::Affine3d fromAi(const aiMatrix4x4& m) {
+    Eigen::Matrix4d out;
+    for (unsigned r = 0; r < 4; ++r)
+        for (unsigned c = 0; c < 4; ++c)
+            out(r, c) = m[r][c];
+    return Eigen::Affine3d(out);
+}
+
+}  // namespace rigmesh

@@ -1,0 +1,95 @@
+#include "io/AssimpNodeTree.h"
+
+#include <algorithm>
+
+#include "io/AssimpConversions.h"
+
+namespace rigmesh {
+namespace {
+
+template <typename Key>
+std::pair<std::size_t, double> bracket(const Key* keys, unsigned count, double ticks) {
+    if (count <= 1 || ticks <= keys[0].mTime)
+        return {0, 0.0};
+    for (unsigned k = 1; k < count; ++k)
+        if (ticks <= keys[k].mTime) {
+            const double span = keys[k].mTime - keys[k - 1].mTime;
+            return {k - 1, span > 0 ? (ticks - keys[k - 1].mTime) / span : 1.0};
+        }
+    return {count - 1, 0.0};
+}
+
+Vec3 sampleVector(const aiVectorKey* keys, unsigned count, const Vec3& fallback, double ticks) {
+    if (count == 0)
+        return fallback;
+    const auto [k, s] = bracket(keys, count, ticks);
+    const Vec3 a = fromAi(keys[k].mValue);
+    return s == 0.0 ? a : Vec3(a + s * (fromAi(keys[k + 1].mValue) - a));
+}
+
+}  // namespace
+
+AssimpNodeTree::AssimpNodeTree(const aiScene& scene) {
+    if (scene.mRootNode == nullptr)
+        return;
+    std::vector<std::pair<const aiNode*, int>> stack = {{scene.mRootNode, -1}};
+    while (!stack.empty()) {
+        const auto [node, parent] = stack.back();
+        stack.pop_back();
+        const int index = static_cast<int>(nodes_.size());
+        nodes_.push_back(node);
+        parents_.push_back(parent);
+        const Eigen::Affine3d local = fromAi(node->mTransformation);
+        rest_.push_back(parent < 0 ? local : rest_[static_cast<std::size_t>(parent)] * local);
+        byName_.emplace(node->mName.C_Str(), index);
+        for (unsigned c = node->mNumChildren; c-- > 0;)
+            stack.emplace_back(node->mChildren[c], index);
+    }
+}
+
+int AssimpNodeTree::find(const std::string& name) const {
+    const auto it = byName_.find(name);
+    return it == byName_.end() ? -1 : it->second;
+}
+
+std::vector<Eigen::Affine3d> AssimpNodeTree::animatedGlobals(const aiAnimation& animation,
+                                                             double ticks) const {
+    std::vector<Eigen::Affine3d> locals;
+    for (const aiNode* node : nodes_)
+        locals.push_back(fromAi(node->mTransformation));
+    for (unsigned c = 0; c < animation.mNumChannels; ++c) {
+        const int i = find(animation.mChannels[c]->mNodeName.C_Str());
+        if (i >= 0)
+            locals[static_cast<std::size_t>(i)] =
+                sampleChannel(*animation.mChannels[c], ticks, locals[static_cast<std::size_t>(i)]);
+    }
+    std::vector<Eigen::Affine3d> globals(nodes_.size());
+    for (std::size_t i = 0; i < nodes_.size(); ++i)  // parent first by construction
+        globals[i] = parents_[i] < 0 ? locals[i]
+                                     : globals[static_cast<std::size_t>(parents_[i])] * locals[i];
+    return globals;
+}
+
+Eigen::Affine3d sampleChannel(const aiNodeAnim& channel, double ticks,
+                              const Eigen::Affine3d& rest) {
+    Eigen::Matrix3d restRotation, restScaling;
+    rest.computeRotationScaling(&restRotation, &restScaling);
+    const Vec3 position =
+        sampleVector(channel.mPositionKeys, channel.mNumPositionKeys, rest.translation(), ticks);
+    const Vec3 scaling =
+        sampleVector(channel.mScalingKeys, channel.mNumScalingKeys, restScaling.diagonal(), ticks);
+    Eigen::Quaterniond rotation(restRotation);
+    if (channel.mNumRotationKeys > 0) {
+        const auto [k, s] = bracket(channel.mRotationKeys, channel.mNumRotationKeys, ticks);
+        rotation = fromAi(channel.mRotationKeys[k].mValue).normalized();
+        if (s != 0.0)
+            rotation = rotation.slerp(s, fromAi(channel.mRotationKeys[k + 1].mValue).normalized());
+    }
+    Eigen::Affine3d out = Eigen::Affine3d::Identity();
+    out.translate(position);
+    out.rotate(rotation);
+    out.scale(scaling);
+    return out;
+}
+
+}  // namespace rigmesh

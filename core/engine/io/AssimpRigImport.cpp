@@ -1,0 +1,194 @@
+#include "io/AssimpRigImport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "io/AssimpConversions.h"
+
+namespace rigmesh {
+namespace {
+
+// Per aiBone index: its node index in the tree (-1 if none).
+std::vector<int> boneNodes(const aiMesh& mesh, const AssimpNodeTree& tree) {
+    std::vector<int> nodes;
+    for (unsigned b = 0; b < mesh.mNumBones; ++b)
+        nodes.push_back(tree.find(mesh.mBones[b]->mName.C_Str()));
+    return nodes;
+}
+
+// World bind transform of a bone: meshGlobal * inverse(offset).
+Eigen::Affine3d bindGlobal(const aiBone& bone, const Eigen::Affine3d& meshGlobal) {
+    return meshGlobal * fromAi(bone.mOffsetMatrix).inverse();
+}
+
+double meshSize(const Part& part) {
+    if (part.mesh.vertices.empty())
+        return 1.0;
+    Vec3 lo = part.mesh.vertices[0], hi = lo;
+    for (const Vec3& v : part.mesh.vertices) {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+    }
+    return std::max((hi - lo).norm(), 1e-9);
+}
+
+}  // namespace
+
+std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
+                      const AssimpNodeTree& tree, ImportedPart& imported) {
+    Part& part = imported.part;
+    const std::vector<int> nodes = boneNodes(mesh, tree);
+    for (unsigned b = 0; b < mesh.mNumBones; ++b)
+        if (nodes[b] < 0)
+            return std::string("bone '") + mesh.mBones[b]->mName.C_Str() + "' has no node";
+    std::map<int, unsigned> boneOfNode;
+    for (unsigned b = 0; b < mesh.mNumBones; ++b)
+        boneOfNode[nodes[b]] = b;
+    // Parent bone: nearest ancestor node that is a bone. Tree order is parent
+    // first, so sorting by node index gives a parent-first bone order.
+    std::vector<std::pair<int, unsigned>> order(boneOfNode.begin(), boneOfNode.end());
+    std::map<unsigned, int> parentBone;
+    std::map<unsigned, std::vector<unsigned>> childBones;
+    for (const auto& [node, b] : order) {
+        int up = tree.parent(node);
+        while (up >= 0 && !boneOfNode.contains(up))
+            up = tree.parent(up);
+        parentBone[b] = up < 0 ? -1 : static_cast<int>(boneOfNode[up]);
+        if (up >= 0)
+            childBones[boneOfNode[up]].push_back(b);
+    }
+    auto head = [&](unsigned b) -> Vec3 {
+        return bindGlobal(*mesh.mBones[b], meshGlobal).translation();
+    };
+    auto tail = [&](unsigned b) -> Vec3 {
+        if (!childBones[b].empty())
+            return head(childBones[b].front());
+        const aiNode& node = tree.node(nodes[b]);
+        const std::string tip = std::string(node.mName.C_Str()) + "_end";
+        for (unsigned c = 0; c < node.mNumChildren; ++c)
+            if (tip == node.mChildren[c]->mName.C_Str())
+                return bindGlobal(*mesh.mBones[b], meshGlobal) *
+                       fromAi(node.mChildren[c]->mTransformation).translation();
+        if (parentBone[b] >= 0) {
+            const Vec3 along = head(b) - head(static_cast<unsigned>(parentBone[b]));
+            return head(b) + 0.5 * along;
+        }
+        return head(b) + 0.1 * meshSize(part) * Vec3::UnitY();
+    };
+
+    // Joints at the same place are one.
+    const double tolerance = 1e-9 * meshSize(part);
+    std::vector<std::pair<Vec3, JointId>> joints;
+    auto jointAt = [&](const Vec3& p) {
+        for (const auto& [q, id] : joints)
+            if ((p - q).norm() <= tolerance)
+                return id;
+        const JointId id = part.skeleton.addJoint(p);
+        joints.emplace_back(p, id);
+        return id;
+    };
+    std::map<unsigned, int> boneIndex;
+    for (const auto& [node, b] : order) {
+        const JointId h = jointAt(head(b));
+        const JointId t = jointAt(tail(b));
+        if (h == t)
+            return std::string("bone '") + mesh.mBones[b]->mName.C_Str() + "' has no length";
+        part.skeleton.addBone(h, t);
+        boneIndex[b] = static_cast<int>(imported.boneNames.size());
+        imported.boneNames.push_back(mesh.mBones[b]->mName.C_Str());
+    }
+    if (!order.empty())
+        part.skeleton.setRoot(jointAt(head(order.front().second)));
+
+    part.weights.perVertex.assign(mesh.mNumVertices, {});
+    for (unsigned b = 0; b < mesh.mNumBones; ++b)
+        for (unsigned w = 0; w < mesh.mBones[b]->mNumWeights; ++w) {
+            const aiVertexWeight& weight = mesh.mBones[b]->mWeights[w];
+            if (weight.mVertexId < mesh.mNumVertices && weight.mWeight > 0)
+                part.weights.perVertex[weight.mVertexId].emplace_back(boneIndex[b], weight.mWeight);
+        }
+    bool unweighted = false;
+    for (auto& list : part.weights.perVertex) {
+        std::sort(list.begin(), list.end());
+        double sum = 0;
+        for (const auto& [bone, w] : list)
+            sum += w;
+        unweighted = unweighted || list.empty();
+        for (auto& entry : list)
+            entry.second /= sum;
+    }
+    const std::vector<std::string> problems = part.skeleton.validate();
+    if (!problems.empty())
+        return "its skeleton is not usable: " + problems.front();
+    if (unweighted)
+        return "some vertices have no skin weights";
+    return {};
+}
+
+std::optional<Clip> importClip(const aiAnimation& animation, const aiMesh& mesh,
+                               const Eigen::Affine3d& meshGlobal, const AssimpNodeTree& tree,
+                               const ImportedPart& imported) {
+    const Part& part = imported.part;
+    std::set<std::string> names(imported.boneNames.begin(), imported.boneNames.end());
+    std::set<double> ticks;
+    for (unsigned c = 0; c < animation.mNumChannels; ++c) {
+        const aiNodeAnim& channel = *animation.mChannels[c];
+        if (!names.contains(channel.mNodeName.C_Str()))
+            continue;
+        for (unsigned k = 0; k < channel.mNumRotationKeys; ++k)
+            ticks.insert(channel.mRotationKeys[k].mTime);
+        for (unsigned k = 0; k < channel.mNumPositionKeys; ++k)
+            ticks.insert(channel.mPositionKeys[k].mTime);
+    }
+    if (ticks.empty())
+        return std::nullopt;
+    const double perSecond = animation.mTicksPerSecond > 0 ? animation.mTicksPerSecond : 1.0;
+    double fps = 24.0, previous = -1e300;
+    for (double t : ticks) {
+        while ((t - previous) / perSecond < 1.0 / fps && fps < 1e6)
+            fps *= 2;
+        previous = t;
+    }
+    Clip clip(fps);
+    clip.interpolation = Interpolation::Linear;
+
+    const Skeleton& skeleton = part.skeleton;
+    std::map<std::string, unsigned> aiBoneByName;
+    for (unsigned b = 0; b < mesh.mNumBones; ++b)
+        aiBoneByName[mesh.mBones[b]->mName.C_Str()] = b;
+    const std::vector<BoneId> hierarchy = skeleton.bonesInHierarchyOrder();
+    for (double t : ticks) {
+        const std::vector<Eigen::Affine3d> globals = tree.animatedGlobals(animation, t);
+        // Per joint: world rotation (rest -> posed); the root's transform.
+        std::map<JointId, Eigen::Quaterniond> world;
+        Pose pose;
+        for (BoneId id : hierarchy) {
+            const Bone& bone = skeleton.bone(id);
+            if (world.contains(bone.head))
+                continue;  // bones sharing a head joint: the first one speaks
+            const int index = skeleton.indexOfBone(id);
+            const unsigned b = aiBoneByName[imported.boneNames[static_cast<std::size_t>(index)]];
+            const int node = tree.find(imported.boneNames[static_cast<std::size_t>(index)]);
+            const Eigen::Affine3d skin = globals[static_cast<std::size_t>(node)] *
+                                         fromAi(mesh.mBones[b]->mOffsetMatrix) *
+                                         meshGlobal.inverse();
+            const Eigen::Quaterniond rotation(skin.rotation());
+            world[bone.head] = rotation.normalized();
+            const std::optional<BoneId> parent = skeleton.parentBone(id);
+            if (!parent) {
+                const Vec3 h = skeleton.joint(bone.head).position;
+                pose.setRotation(bone.head, rotation.normalized());
+                pose.rootTranslation = skin.translation() - h + rotation.normalized() * h;
+            } else {
+                const Eigen::Quaterniond up = world[skeleton.bone(*parent).head];
+                pose.setRotation(bone.head, (up.conjugate() * rotation).normalized());
+            }
+        }
+        clip.setKey(t / perSecond, pose);
+    }
+    return clip;
+}
+
+}  // namespace rigmesh

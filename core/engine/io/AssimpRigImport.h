@@ -1,0 +1,29 @@
+// Skeleton, skin weights and clip of one imported skinned mesh (issue 6
+// item 2; the rules are in SceneImport.h). Internal to io/: included only
+// from .cpp files (it includes Assimp).
+#pragma once
+
+#include <assimp/scene.h>
+
+#include <optional>
+#include <string>
+
+#include "io/AssimpNodeTree.h"
+#include "io/SceneImport.h"
+
+namespace rigmesh {
+
+// Fills part.part.skeleton, part.part.weights and part.boneNames from `mesh`'s
+// bones. `meshGlobal` maps the mesh's space to the world (where the part's
+// vertices already are). Returns an empty string, or why the part still
+// needs a rig (a bone without node, a skeleton that is not one tree).
+std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
+                      const AssimpNodeTree& tree, ImportedPart& part);
+
+// The animation as a clip of `part` (imported by importRig from `mesh`), or
+// nothing when it moves none of the part's bones.
+std::optional<Clip> importClip(const aiAnimation& animation, const aiMesh& mesh,
+                               const Eigen::Affine3d& meshGlobal, const AssimpNodeTree& tree,
+                               const ImportedPart& part);
+
+}  // namespace rigmesh

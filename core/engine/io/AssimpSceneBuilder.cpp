@@ -1,0 +1,220 @@
+#include "io/AssimpSceneBuilder.h"
+
+#include <assimp/material.h>
+#include <assimp/metadata.h>
+#include <assimp/scene.h>
+
+#include <set>
+
+#include "base/Error.h"
+#include "io/AssimpAnimationBuilder.h"
+#include "io/AssimpConversions.h"
+#include "io/ExportRig.h"
+#include "io/InfluenceLimit.h"
+#include "pose/Skinning.h"
+#include "pose/VertexNormals.h"
+
+namespace rigmesh {
+namespace {
+
+// Part names made safe and unique (notes item 2: every node name unique).
+std::vector<std::string> uniquePartNames(const std::vector<ExportPart>& parts) {
+    std::vector<std::string> names;
+    std::set<std::string> used = {"RootNode", "Armature"};
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const std::string wanted =
+            sanitizedName(parts[i].name.empty() ? parts[i].part->name : parts[i].name);
+        std::string name = wanted;
+        for (int n = 2; used.contains(name); ++n)
+            name = wanted + "_" + std::to_string(n);
+        used.insert(name);
+        names.push_back(name);
+    }
+    return names;
+}
+
+aiNode* newNode(const std::string& name, const Vec3& translation) {
+    auto* node = new aiNode(name);
+    node->mTransformation = translationMatrix(translation);
+    return node;
+}
+
+void setChildren(aiNode* parent, const std::vector<aiNode*>& children) {
+    if (children.empty())
+        return;
+    parent->mNumChildren = static_cast<unsigned>(children.size());
+    parent->mChildren = new aiNode*[children.size()];
+    for (std::size_t i = 0; i < children.size(); ++i) {
+        parent->mChildren[i] = children[i];
+        children[i]->mParent = parent;
+    }
+}
+
+// One node per bone at its head, parented by the bone hierarchy (issue 6
+// item 1), nodes in the bind pose (notes item 6); `<bone>_end` at leaf tails.
+std::vector<aiNode*> boneNodes(const ExportRig& rig) {
+    std::vector<aiNode*> nodes;
+    std::vector<std::vector<aiNode*>> children(rig.nodes.size());
+    for (const ExportBoneNode& n : rig.nodes)
+        nodes.push_back(newNode(n.name, n.restTranslation));
+    std::vector<aiNode*> roots;
+    for (std::size_t i = 0; i < rig.nodes.size(); ++i) {
+        const ExportBoneNode& n = rig.nodes[i];
+        if (n.leaf)
+            children[i].push_back(newNode(n.name + "_end", n.tail - n.head));
+        (n.parent < 0 ? roots : children[static_cast<std::size_t>(n.parent)]).push_back(nodes[i]);
+    }
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        setChildren(nodes[i], children[i]);
+    return roots;
+}
+
+// Skin weights cut to the format's influences (notes item 9), one aiBone per
+// bone node named as the node (notes item 2), offset = inverse bind matrix.
+void addBones(aiMesh* mesh, const Part& part, const ExportRig& rig, int maxInfluences) {
+    SkinWeights remapped;
+    remapped.perVertex.resize(part.mesh.vertices.size());
+    for (std::size_t v = 0; v < part.weights.perVertex.size(); ++v)
+        for (const auto& [bone, w] : part.weights.perVertex[v])
+            if (bone >= 0 && bone < static_cast<int>(rig.nodeOfBone.size()) &&
+                rig.nodeOfBone[bone] >= 0)
+                remapped.perVertex[v].emplace_back(rig.nodeOfBone[bone], w);
+    const SkinWeights limited = limitInfluences(remapped, maxInfluences);
+
+    std::vector<std::vector<aiVertexWeight>> perNode(rig.nodes.size());
+    for (std::size_t v = 0; v < limited.perVertex.size(); ++v) {
+        if (limited.perVertex[v].empty()) {  // unweighted: follows the root bone
+            perNode[0].emplace_back(static_cast<unsigned>(v), 1.0f);
+            continue;
+        }
+        for (const auto& [node, w] : limited.perVertex[v])
+            perNode[static_cast<std::size_t>(node)].emplace_back(static_cast<unsigned>(v),
+                                                                 static_cast<float>(w));
+    }
+    mesh->mNumBones = static_cast<unsigned>(rig.nodes.size());
+    mesh->mBones = new aiBone*[rig.nodes.size()];
+    for (std::size_t i = 0; i < rig.nodes.size(); ++i) {
+        auto* bone = new aiBone;
+        bone->mName = aiString(rig.nodes[i].name);
+        bone->mOffsetMatrix = translationMatrix(-rig.nodes[i].head);
+        bone->mNumWeights = static_cast<unsigned>(perNode[i].size());
+        if (!perNode[i].empty()) {
+            bone->mWeights = new aiVertexWeight[perNode[i].size()];
+            std::copy(perNode[i].begin(), perNode[i].end(), bone->mWeights);
+        }
+        mesh->mBones[i] = bone;
+    }
+}
+
+aiMesh* makeMesh(const ExportPart& item, const std::string& name, ExportFormat format,
+                 const ExportOptions& options) {
+    const Part& part = *item.part;
+    TriMesh mesh = part.mesh;
+    if (format == ExportFormat::Obj && !options.restPose)
+        mesh = posePart(part, item.pose).mesh;
+    const std::vector<Vec3> normals = vertexNormals(mesh);
+    const Eigen::Matrix3d rotation = item.placement.rotation();
+
+    auto* out = new aiMesh;
+    out->mName = aiString(name);
+    out->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
+    out->mMaterialIndex = 0;
+    out->mNumVertices = static_cast<unsigned>(mesh.vertices.size());
+    out->mVertices = new aiVector3D[mesh.vertices.size()];
+    out->mNormals = new aiVector3D[mesh.vertices.size()];
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+        out->mVertices[v] = toAi(Vec3(options.unitScale * (item.placement * mesh.vertices[v])));
+        out->mNormals[v] = toAi(Vec3((rotation * normals[v]).normalized()));
+    }
+    out->mNumFaces = static_cast<unsigned>(mesh.faces.size());
+    out->mFaces = new aiFace[mesh.faces.size()];
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        aiFace& face = out->mFaces[f];
+        face.mNumIndices = 3;
+        face.mIndices = new unsigned[3];
+        for (int k = 0; k < 3; ++k)
+            face.mIndices[k] = static_cast<unsigned>(mesh.faces[f][static_cast<std::size_t>(k)]);
+    }
+    return out;
+}
+
+// Notes item 3: at least one material, or fbx and collada segfault.
+aiMaterial* makeMaterial() {
+    auto* material = new aiMaterial;
+    const aiString name("rigmesh_material");
+    material->AddProperty(&name, AI_MATKEY_NAME);
+    const aiColor3D grey(0.8f, 0.8f, 0.8f);
+    material->AddProperty(&grey, 1, AI_MATKEY_COLOR_DIFFUSE);
+    return material;
+}
+
+void checkPart(const ExportPart& item, bool rigged) {
+    if (item.part == nullptr)
+        throw Error("cannot export: a part is missing");
+    const Part& part = *item.part;
+    if (part.mesh.vertices.empty() || part.mesh.faces.empty())
+        throw Error("cannot export part '" + part.name + "': it has no surface");
+    if (rigged && part.weights.perVertex.size() != part.mesh.vertices.size())
+        throw Error("cannot export part '" + part.name +
+                    "': its skin weights do not match its surface");
+}
+
+}  // namespace
+
+void buildAssimpScene(aiScene& scene, const std::vector<ExportPart>& parts, const Clip* clip,
+                      ExportFormat format, const ExportOptions& options) {
+    if (parts.empty())
+        throw Error("cannot export: there is no part");
+    const bool rigged = isRiggedFormat(format);
+    for (const ExportPart& item : parts)
+        checkPart(item, rigged);
+    if (!(options.unitScale > 0))
+        throw Error("cannot export: the unit scale must be positive");
+    const std::vector<std::string> names = uniquePartNames(parts);
+    const int influences = effectiveInfluenceLimit(format, options.maxInfluences);
+
+    // Notes items 1 and 7: identity root; meshes on child nodes; bones under
+    // `Armature`, a sibling of the mesh nodes (notes item 12).
+    scene.mRootNode = new aiNode("RootNode");
+    std::vector<aiNode*> rootChildren, armatureChildren;
+    scene.mNumMeshes = static_cast<unsigned>(parts.size());
+    scene.mMeshes = new aiMesh*[parts.size()];
+    std::vector<ExportRig> rigs;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        aiMesh* mesh = makeMesh(parts[i], names[i], format, options);
+        scene.mMeshes[i] = mesh;
+        aiNode* meshNode = new aiNode(names[i]);
+        meshNode->mNumMeshes = 1;
+        meshNode->mMeshes = new unsigned[1]{static_cast<unsigned>(i)};
+        rootChildren.push_back(meshNode);
+        if (!rigged)
+            continue;
+        rigs.push_back(
+            makeExportRig(*parts[i].part, names[i], parts[i].placement, options.unitScale));
+        addBones(mesh, *parts[i].part, rigs.back(), influences);
+        for (aiNode* root : boneNodes(rigs.back()))
+            armatureChildren.push_back(root);
+    }
+    if (rigged) {
+        aiNode* armature = new aiNode("Armature");
+        setChildren(armature, armatureChildren);
+        rootChildren.push_back(armature);
+    }
+    setChildren(scene.mRootNode, rootChildren);
+
+    scene.mNumMaterials = 1;
+    scene.mMaterials = new aiMaterial* [1] { makeMaterial() };
+
+    if (rigged && clip != nullptr && options.animation && clip->keyCount() > 0) {
+        scene.mNumAnimations = 1;
+        scene.mAnimations =
+            new aiAnimation* [1] { makeAnimation(*clip, rigs[0], names[0] + "_clip") };
+    }
+    if (format == ExportFormat::Fbx) {
+        // Notes item 10: FBX defaults to centimetres; 100 says metres.
+        scene.mMetaData = aiMetadata::Alloc(1);
+        scene.mMetaData->Set(0, "UnitScaleFactor", 100.0);
+    }
+}
+
+}  // namespace rigmesh

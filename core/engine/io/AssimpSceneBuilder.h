@@ -1,0 +1,19 @@
+// Builds the aiScene that SceneExport.h describes, following the notes' items
+// 1-7, 9 and 10. Internal to io/: the header only forward-declares Assimp.
+#pragma once
+
+#include <vector>
+
+#include "io/ExportFormat.h"
+#include "io/SceneExport.h"
+
+struct aiScene;
+
+namespace rigmesh {
+
+// Fills an empty `scene`. Throws Error on a part without mesh or with
+// weights that do not have one list per vertex.
+void buildAssimpScene(aiScene& scene, const std::vector<ExportPart>& parts, const Clip* clip,
+                      ExportFormat format, const ExportOptions& options);
+
+}  // namespace rigmesh

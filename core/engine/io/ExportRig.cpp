@@ -1,0 +1,76 @@
+#include "io/ExportRig.h"
+
+#include <cctype>
+#include <deque>
+
+#include "base/Error.h"
+#include "pose/PoseHierarchy.h"
+
+namespace rigmesh {
+
+std::string sanitizedName(const std::string& name) {
+    std::string out;
+    for (unsigned char c : name)
+        out += std::isalnum(c) ? static_cast<char>(c) : '_';
+    if (out.empty() || std::isdigit(static_cast<unsigned char>(out[0])))
+        out = "part_" + out;
+    return out;
+}
+
+ExportRig makeExportRig(const Part& part, const std::string& partName,
+                        const Eigen::Affine3d& placement, double unitScale) {
+    const Skeleton& skeleton = part.skeleton;
+    if (skeleton.jointCount() == 0 || !skeleton.hasJoint(skeleton.root()))
+        throw Error("part '" + partName + "' has no skeleton to export");
+    const PoseHierarchy hierarchy(skeleton);
+    ExportRig rig;
+    rig.placementRotation = Eigen::Quaterniond(placement.rotation()).normalized();
+    rig.unitScale = unitScale;
+    rig.nodeOfBone.assign(skeleton.boneCount(), -1);
+    auto place = [&](const Vec3& x) -> Vec3 { return unitScale * (placement * x); };
+
+    // The bones whose frame joint is each joint, then breadth first from the root.
+    std::vector<std::vector<int>> bonesFrom(hierarchy.jointCount());
+    for (int b = 0; b < hierarchy.boneCount(); ++b)
+        if (hierarchy.reachable(hierarchy.boneFrameJoint(b)) &&
+            hierarchy.parent(hierarchy.boneEndJoint(b)) == hierarchy.boneFrameJoint(b))
+            bonesFrom[hierarchy.boneFrameJoint(b)].push_back(b);
+    std::deque<std::pair<int, int>> queue;  // (bone, parent node)
+    for (int b : bonesFrom[hierarchy.root()])
+        queue.emplace_back(b, -1);
+    while (!queue.empty()) {
+        const auto [b, parent] = queue.front();
+        queue.pop_front();
+        const int frame = hierarchy.boneFrameJoint(b), end = hierarchy.boneEndJoint(b);
+        ExportBoneNode node;
+        node.bone = b;
+        node.parent = parent;
+        node.headJoint = hierarchy.jointId(frame);
+        node.tailJoint = hierarchy.jointId(end);
+        node.name = partName + "_bone" + std::to_string(skeleton.bones()[b].id);
+        node.head = place(hierarchy.restPosition(frame));
+        node.tail = place(hierarchy.restPosition(end));
+        node.restTranslation = parent < 0 ? node.head : Vec3(node.head - rig.nodes[parent].head);
+        node.leaf = bonesFrom[end].empty();
+        const int index = static_cast<int>(rig.nodes.size());
+        rig.nodeOfBone[b] = index;
+        rig.nodes.push_back(node);
+        for (int child : bonesFrom[end])
+            queue.emplace_back(child, index);
+    }
+    return rig;
+}
+
+Vec3 ExportRig::localTranslation(int node, const Pose& pose) const {
+    const ExportBoneNode& n = nodes[node];
+    if (n.parent >= 0)
+        return n.restTranslation;
+    return n.restTranslation + unitScale * (placementRotation * pose.rootTranslation);
+}
+
+Eigen::Quaterniond ExportRig::localRotation(int node, const Pose& pose) const {
+    const Eigen::Quaterniond q = pose.rotation(nodes[node].headJoint).normalized();
+    return (placementRotation * q * placementRotation.conjugate()).normalized();
+}
+
+}  // namespace rigmesh

@@ -1,0 +1,32 @@
+// The post-export pass that repairs Assimp 5.2.5's binary FBX (notes, table
+// row `fbx`): its FBXExportNode.cpp writes an empty string where the null
+// record (block sentinel) belongs, after every node's nested list and after
+// the top-level list, so Blender (and Assimp's own reader) fail with "failed
+// to read nested block sentinel". Fixed upstream in Assimp 5.3.0.
+//
+// Binary FBX node record: end offset (absolute), property count, property
+// list length, name length (1 byte), name, properties, then the nested
+// records terminated by a null record: 13 zero bytes for versions < 7500
+// (32-bit fields), 25 for >= 7500 (64-bit). The pass parses the records,
+// inserts the missing null records and rewrites every end offset.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rigmesh {
+
+// True when the linked Assimp writes binary FBX without sentinels (< 5.3).
+bool assimpNeedsFbxSentinelFix();
+
+// Returns the file with a null record closing every non-empty nested list and
+// the top-level list; a file that already has them comes back unchanged.
+// Whatever follows the top-level records (the footer) is kept as is. Throws
+// Error if the bytes are not a binary FBX or a record is out of range.
+std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file);
+
+// Reads, repairs and rewrites `path` in place. Throws Error on I/O failure.
+void addFbxSentinelsToFile(const std::string& path);
+
+}  // namespace rigmesh

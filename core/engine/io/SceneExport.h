@@ -1,0 +1,54 @@
+// Exporting rigged parts to glTF 2.0 (.glb, .gltf), binary FBX, COLLADA and
+// OBJ through Assimp (issue 6 item 1). Assimp stays inside the .cpp files.
+//
+// Layout (the notes' items are in /work/shared/notes/assimp-blender-facts.md):
+// an identity root node; one node per part carrying its mesh (the part's
+// name); for rigged formats an `Armature` node beside them holding every
+// part's bones, one node per bone named `<part>_bone<id>`, placed at the
+// bone's head and parented by the bone hierarchy, plus a `<bone>_end` tip
+// node at each leaf bone's tail. Several parts are several skinned meshes on
+// that one hierarchy, each bound to its own bones. Nodes are in the bind pose;
+// each part's `pose` is used only by OBJ (restPose = false). The clip, if
+// any, animates part 0's bones (one channel per bone node, keys in seconds).
+// Coordinates: our parts are y up; glTF is y up, metres, as are our FBX
+// (UnitScaleFactor 100 = metres) and COLLADA files.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "part/Part.h"
+#include "pose/Clip.h"
+#include "pose/Pose.h"
+
+namespace rigmesh {
+
+struct ExportPart {
+    const Part* part = nullptr;
+    Pose pose;  // OBJ with restPose = false writes the part skinned to it
+    // Rigid (rotation, translation); baked into the written positions.
+    Eigen::Affine3d placement = Eigen::Affine3d::Identity();
+    std::string name;  // empty: the part's own name
+};
+
+struct ExportOptions {
+    // Influences per vertex: 0 = all the format allows (4 for glTF, all for
+    // FBX and COLLADA). Cut without creases (InfluenceLimit.h).
+    int maxInfluences = 4;
+    bool restPose = true;    // OBJ only: rest mesh, or each part's pose
+    bool animation = true;   // write the clip when there is one
+    double unitScale = 1.0;  // multiplies every written coordinate
+};
+
+// Writes `parts` (and `clip`, animating part 0; may be null) to `path`, the
+// format chosen by its extension: .glb, .gltf (+ .bin beside it), .fbx, .dae,
+// .obj (+ .mtl). Everything is written into a temporary folder beside `path`
+// and moved into place only on success, so a failure leaves no partial file.
+// Throws Error on an unknown extension, a part without mesh or weights that
+// do not match it, a missing folder or any write failure.
+void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const std::string& path,
+                 const ExportOptions& options = {});
+
+}  // namespace rigmesh
