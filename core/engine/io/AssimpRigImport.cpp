@@ -20,7 +20,9 @@ std::vector<int> boneNodes(const aiMesh& mesh, const AssimpNodeTree& tree) {
 
 // World bind transform of a bone: meshGlobal * inverse(offset).
 Eigen::Affine3d bindGlobal(const aiBone& bone, const Eigen::Affine3d& meshGlobal) {
-    return meshGlobal * fromAi(bone.mOffsetMatrix).inverse();
+    const Eigen::Matrix4d bind =
+        meshGlobal.matrix() * fromAi(bone.mOffsetMatrix).matrix().inverse();
+    return Eigen::Affine3d(bind);
 }
 
 double meshSize(const Part& part) {
@@ -34,10 +36,56 @@ double meshSize(const Part& part) {
     return std::max((hi - lo).norm(), 1e-9);
 }
 
+// Assimp 5.2.5's glTF exporter writes one skin for all meshes, so every
+// mesh reads back with every part's bones: keep the bone trees (each root
+// bone with its descendants) that weight this mesh, and the trees that weight
+// no mesh but start at the same joint as a kept one (a part's root bones).
+void keepOwnBones(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal, const AssimpNodeTree& tree,
+                  const std::set<std::string>& weightedAnywhere,
+                  std::map<int, unsigned>& boneOfNode) {
+    auto rootOf = [&](int node) {
+        int root = node;
+        for (int up = tree.parent(node); up >= 0; up = tree.parent(up))
+            if (boneOfNode.contains(up))
+                root = up;
+        return root;
+    };
+    std::map<int, bool> here, anywhere;  // per root bone node
+    for (const auto& [node, b] : boneOfNode) {
+        const int root = rootOf(node);
+        bool weighted = false;
+        for (unsigned w = 0; w < mesh.mBones[b]->mNumWeights && !weighted; ++w)
+            weighted = mesh.mBones[b]->mWeights[w].mWeight > 0;
+        here[root] = here[root] || weighted;
+        anywhere[root] = anywhere[root] || weightedAnywhere.contains(tree.node(node).mName.C_Str());
+    }
+    auto headOf = [&](int root) -> Vec3 {
+        return bindGlobal(*mesh.mBones[boneOfNode.at(root)], meshGlobal).translation();
+    };
+    std::set<int> keptRoots;
+    for (const auto& [root, weighted] : here)
+        if (weighted)
+            keptRoots.insert(root);
+    if (keptRoots.empty())
+        return;
+    for (const auto& [root, weighted] : here)
+        if (!weighted && !anywhere[root])
+            for (int kept : std::set<int>(keptRoots))
+                if ((headOf(root) - headOf(kept)).norm() <=
+                    1e-9 * std::max(1.0, headOf(kept).norm()))
+                    keptRoots.insert(root);
+    std::map<int, unsigned> kept;
+    for (const auto& [node, b] : boneOfNode)
+        if (keptRoots.contains(rootOf(node)))
+            kept.emplace(node, b);
+    boneOfNode = std::move(kept);
+}
+
 }  // namespace
 
 std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
-                      const AssimpNodeTree& tree, ImportedPart& imported) {
+                      const AssimpNodeTree& tree, const std::set<std::string>& weightedAnywhere,
+                      ImportedPart& imported) {
     Part& part = imported.part;
     const std::vector<int> nodes = boneNodes(mesh, tree);
     for (unsigned b = 0; b < mesh.mNumBones; ++b)
@@ -46,6 +94,7 @@ std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
     std::map<int, unsigned> boneOfNode;
     for (unsigned b = 0; b < mesh.mNumBones; ++b)
         boneOfNode[nodes[b]] = b;
+    keepOwnBones(mesh, meshGlobal, tree, weightedAnywhere, boneOfNode);
     // Parent bone: nearest ancestor node that is a bone. Tree order is parent
     // first, so sorting by node index gives a parent-first bone order.
     std::vector<std::pair<int, unsigned>> order(boneOfNode.begin(), boneOfNode.end());
@@ -103,7 +152,7 @@ std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
         part.skeleton.setRoot(jointAt(head(order.front().second)));
 
     part.weights.perVertex.assign(mesh.mNumVertices, {});
-    for (unsigned b = 0; b < mesh.mNumBones; ++b)
+    for (const auto& [node, b] : boneOfNode)
         for (unsigned w = 0; w < mesh.mBones[b]->mNumWeights; ++w) {
             const aiVertexWeight& weight = mesh.mBones[b]->mWeights[w];
             if (weight.mVertexId < mesh.mNumVertices && weight.mWeight > 0)

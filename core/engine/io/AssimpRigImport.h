@@ -6,6 +6,7 @@
 #include <assimp/scene.h>
 
 #include <optional>
+#include <set>
 #include <string>
 
 #include "io/AssimpNodeTree.h"
@@ -15,10 +16,12 @@ namespace rigmesh {
 
 // Fills part.part.skeleton, part.part.weights and part.boneNames from `mesh`'s
 // bones. `meshGlobal` maps the mesh's space to the world (where the part's
-// vertices already are). Returns an empty string, or why the part still
-// needs a rig (a bone without node, a skeleton that is not one tree).
+// vertices already are). `weightedAnywhere`: the names of the bones that
+// weight some mesh of the file (to tell the part's bones from others'). Returns an empty string, or
+// why the part still needs a rig (a bone without node, a skeleton that is not one tree).
 std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
-                      const AssimpNodeTree& tree, ImportedPart& part);
+                      const AssimpNodeTree& tree, const std::set<std::string>& weightedAnywhere,
+                      ImportedPart& part);
 
 // The animation as a clip of `part` (imported by importRig from `mesh`), or
 // nothing when it moves none of the part's bones.

@@ -17,7 +17,18 @@ constexpr std::size_t kHeaderSize = 27;            // magic, 2 bytes, uint32 ver
 struct Record {
     std::vector<std::uint8_t> body;  // property count .. properties (no end offset)
     std::vector<Record> children;
+    std::string name;
+    bool noProperties = false;
     bool nested = false;  // had a nested list (possibly only a null record)
+
+    // The FBX SDK's rule (as Blender's encode_bin.py writes it): a nested
+    // list, hence a null record, for a node with children, a node without
+    // properties, and always for AnimationStack and AnimationLayer (Assimp's
+    // reader drops the animation otherwise: "expected compound scope").
+    bool needsNullRecord() const {
+        return nested || !children.empty() || noProperties || name == "AnimationStack" ||
+               name == "AnimationLayer";
+    }
 };
 
 class Parser {
@@ -62,6 +73,10 @@ class Parser {
         const std::size_t nameLength = bytes_[at + 3 * fs];
         const std::size_t bodyEnd = at + 3 * fs + 1 + nameLength + field(at + 2 * fs);
         Record record;
+        record.name.assign(
+            bytes_.begin() + static_cast<std::ptrdiff_t>(at + 3 * fs + 1),
+            bytes_.begin() + static_cast<std::ptrdiff_t>(at + 3 * fs + 1 + nameLength));
+        record.noProperties = field(at + fs) == 0;
         record.body.assign(bytes_.begin() + static_cast<std::ptrdiff_t>(at + fs),
                            bytes_.begin() + static_cast<std::ptrdiff_t>(bodyEnd));
         std::size_t cursor = bodyEnd;
@@ -105,7 +120,7 @@ class Writer {
         const std::size_t start = out.size();
         put(0);
         out.insert(out.end(), record.body.begin(), record.body.end());
-        if (record.nested) {
+        if (record.needsNullRecord()) {
             for (const Record& child : record.children)
                 write(child);
             putNull();

@@ -7,8 +7,11 @@
 // Binary FBX node record: end offset (absolute), property count, property
 // list length, name length (1 byte), name, properties, then the nested
 // records terminated by a null record: 13 zero bytes for versions < 7500
-// (32-bit fields), 25 for >= 7500 (64-bit). The pass parses the records,
-// inserts the missing null records and rewrites every end offset.
+// (32-bit fields), 25 for >= 7500 (64-bit). The FBX SDK gives a node that
+// nested list when it has children, has no properties, or is an
+// AnimationStack or AnimationLayer (Assimp's reader needs the last two to
+// keep the animation). The pass parses the records, inserts the missing null
+// records by that rule and rewrites every end offset.
 #pragma once
 
 #include <cstdint>
@@ -20,8 +23,8 @@ namespace rigmesh {
 // True when the linked Assimp writes binary FBX without sentinels (< 5.3).
 bool assimpNeedsFbxSentinelFix();
 
-// Returns the file with a null record closing every non-empty nested list and
-// the top-level list; a file that already has them comes back unchanged.
+// Returns the file with a null record closing every nested list (by the rule
+// above) and the top-level list; a file that already has them comes back unchanged.
 // Whatever follows the top-level records (the footer) is kept as is. Throws
 // Error if the bytes are not a binary FBX or a record is out of range.
 std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file);

@@ -77,6 +77,15 @@ ImportedScene importScene(const std::string& path) {
     if (instances.empty())
         throw Error("cannot import " + path + ": it holds no triangle mesh");
 
+    std::set<std::string> weightedAnywhere;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+        for (unsigned b = 0; b < scene.mMeshes[m]->mNumBones; ++b)
+            for (unsigned w = 0; w < scene.mMeshes[m]->mBones[b]->mNumWeights; ++w)
+                if (scene.mMeshes[m]->mBones[b]->mWeights[w].mWeight > 0) {
+                    weightedAnywhere.insert(scene.mMeshes[m]->mBones[b]->mName.C_Str());
+                    break;
+                }
+
     ImportedScene result;
     for (const MeshInstance& instance : instances) {
         const aiMesh& mesh = *scene.mMeshes[instance.mesh];
@@ -87,7 +96,7 @@ ImportedScene importScene(const std::string& path) {
         imported.part.mesh = worldMesh(mesh, global);
         std::string why = "it has no skeleton";
         if (mesh.mNumBones > 0)
-            why = importRig(mesh, global, tree, imported);
+            why = importRig(mesh, global, tree, weightedAnywhere, imported);
         if (!why.empty()) {
             imported.needsRig = true;
             imported.part.skeleton = Skeleton();
