@@ -479,6 +479,8 @@ void MainWindow::offerRecovery() {
             try {
                 auto document =
                     std::make_unique<model::Document>(model::DocumentFile::read(file.path));
+                // Recovered work is unsaved work: mark it modified so closing asks.
+                document->undoStack()->resetClean();
                 addDocument(std::move(document));
             } catch (const rigmesh::Error& error) {
                 showStatus(tr("Could not recover: %1").arg(QString::fromStdString(error.what())),

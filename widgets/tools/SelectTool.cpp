@@ -1,5 +1,8 @@
 #include "tools/SelectTool.h"
 
+#include <Eigen/Geometry>
+#include <cmath>
+
 #include "base/Error.h"
 #include "model/commands/MovePartCommand.h"
 #include "viewport/Viewport.h"
@@ -8,8 +11,8 @@ namespace rigmesh::widgets {
 
 QString SelectTool::hint() const {
     return tr(
-        "Select: click a part or a joint; drag a part to move it; middle drag orbits, Shift + "
-        "middle drag pans, wheel zooms");
+        "Select: click a part or a joint; drag a part to move it, Ctrl + drag to turn it; "
+        "middle drag orbits, Shift + middle drag pans, wheel zooms");
 }
 
 void SelectTool::press(Viewport& viewport, QMouseEvent* event) {
@@ -28,6 +31,8 @@ void SelectTool::press(Viewport& viewport, QMouseEvent* event) {
     grabPoint_ =
         viewport.sketchPlanePoint(event->position());  // the plane stays fixed during the drag
     startPlacement_ = document.part(*part).placement;
+    grabPixel_ = event->position();
+    rotating_ = event->modifiers() & Qt::ControlModifier;
 }
 
 void SelectTool::move(Viewport& viewport, QMouseEvent* event) {
@@ -38,10 +43,31 @@ void SelectTool::move(Viewport& viewport, QMouseEvent* event) {
         dragged_.reset();
         return;
     }
-    const QVector3D now = viewport.viewPlanePoint(event->position(), grabPoint_);
     model::Placement target = startPlacement_;
-    target.translation +=
-        Vec3(now.x() - grabPoint_.x(), now.y() - grabPoint_.y(), now.z() - grabPoint_.z());
+    if (rotating_) {
+        // Turn about the view direction through the part's centre by the
+        // angle the cursor swept around that centre on screen.
+        const model::PartNode& node = document.part(*dragged_);
+        Eigen::AlignedBox3d box;
+        for (const Vec3& v : node.part->mesh.vertices)
+            box.extend(v);
+        const Vec3 centre = startPlacement_.rotation * box.center() + startPlacement_.translation;
+        const QVector3D screen = viewport.camera().project(
+            QVector3D(float(centre.x()), float(centre.y()), float(centre.z())),
+            QSizeF(viewport.size()));
+        const double start = std::atan2(grabPixel_.y() - screen.y(), grabPixel_.x() - screen.x());
+        const double now =
+            std::atan2(event->position().y() - screen.y(), event->position().x() - screen.x());
+        const QVector3D axis = viewport.camera().forward();
+        const Eigen::Quaterniond turn(
+            Eigen::AngleAxisd(now - start, Vec3(axis.x(), axis.y(), axis.z())));
+        target.rotation = (turn * startPlacement_.rotation).normalized();
+        target.translation = turn * (startPlacement_.translation - centre) + centre;
+    } else {
+        const QVector3D now = viewport.viewPlanePoint(event->position(), grabPoint_);
+        target.translation +=
+            Vec3(now.x() - grabPoint_.x(), now.y() - grabPoint_.y(), now.z() - grabPoint_.z());
+    }
     // Consecutive moves of one part merge into a single undo step (mergeWith).
     document.undoStack()->push(new model::MovePartCommand(document, *dragged_, target));
 }

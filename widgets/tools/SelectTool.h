@@ -1,6 +1,7 @@
 // Select/Move tool: a click selects the joint or part under the cursor (or
-// clears the selection); dragging a part moves it in the view plane. The drag
-// is one undo step: every move pushes a MovePartCommand that merges with the
+// clears the selection); dragging a part moves it in the view plane, Ctrl +
+// drag turns it about the view direction around its centre. A drag is one
+// undo step: every move pushes a MovePartCommand that merges with the
 // previous one of the same part.
 #pragma once
 
@@ -26,6 +27,8 @@ class SelectTool : public QObject, public ViewportTool {
   private:
     std::optional<model::PartId> dragged_;
     QVector3D grabPoint_;
+    QPointF grabPixel_;
+    bool rotating_ = false;
     model::Placement startPlacement_;
 };
 
