@@ -33,6 +33,17 @@ void checkPins(const PartNode& node, const std::set<JointId>& pinned) {
         checkJoint(node, joint);
 }
 
+void checkClip(const PartNode& node, const rigmesh::Clip& clip) {
+    for (const auto& [time, pose] : clip.keys()) {
+        if (!pose.isFinite())
+            throw Error("The key at " + std::to_string(time) + " s of part " +
+                        std::to_string(node.id) +
+                        " has a non-finite or zero rotation or translation.");
+        for (const auto& entry : pose.rotations)
+            checkJoint(node, entry.first);
+    }
+}
+
 }  // namespace
 
 Document::Document(QObject* parent) : Document(DocumentContents{}, parent) {}
@@ -158,13 +169,15 @@ void Document::setVisible(PartId id, bool visible) {
 }
 
 void Document::replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options,
-                           const rigmesh::Pose& pose, std::set<JointId> pinned) {
+                           const rigmesh::Pose& pose, std::set<JointId> pinned,
+                           const rigmesh::Clip& clip) {
     PartNode& node = mutablePart(id);
     PartNode probe;
     probe.id = id;
     probe.part = part;
     checkPose(probe, pose);
     checkPins(probe, pinned);
+    checkClip(probe, clip);
     Changes what;
     if (node.part != part)
         what |= Change::Geometry;
@@ -174,6 +187,8 @@ void Document::replacePart(PartId id, std::shared_ptr<const Part> part, const Bu
         what |= Change::Pose;
     if (node.pinnedJoints != pinned)
         what |= Change::Pins;
+    if (!identicalClips(node.clip, clip))
+        what |= Change::Clip;
     if (!what)
         return;
     posePreviewOrigins_.erase(id);
@@ -181,6 +196,7 @@ void Document::replacePart(PartId id, std::shared_ptr<const Part> part, const Bu
     node.options = options;
     node.pose = pose;
     node.pinnedJoints = std::move(pinned);
+    node.clip = clip;
     if (selection_.part == id && (!node.part || !node.part->skeleton.hasJoint(selection_.joint)))
         setSelection({id, kNoJoint});
     emit partChanged(id, what);
@@ -190,13 +206,13 @@ void Document::replacePart(PartId id, std::shared_ptr<const Part> part,
                            const BuildOptions& options) {
     const PartNode& node = this->part(id);
     if (node.part == part) {
-        replacePart(id, std::move(part), options, node.pose, node.pinnedJoints);
+        replacePart(id, std::move(part), options, node.pose, node.pinnedJoints, node.clip);
         return;
     }
     PartNode probe;
     probe.part = part;
     const rigmesh::Pose rest = restPoseOf(probe);
-    replacePart(id, std::move(part), options, rest, {});
+    replacePart(id, std::move(part), options, rest, {}, emptiedClip(node.clip));
 }
 
 void Document::applyPose(PartId id, const rigmesh::Pose& pose) {
@@ -221,6 +237,15 @@ void Document::setPinnedJoints(PartId id, std::set<JointId> pinned) {
         return;
     node.pinnedJoints = std::move(pinned);
     emit partChanged(id, Change::Pins);
+}
+
+void Document::setClip(PartId id, const rigmesh::Clip& clip) {
+    PartNode& node = mutablePart(id);
+    checkClip(node, clip);
+    if (identicalClips(node.clip, clip))
+        return;
+    node.clip = clip;
+    emit partChanged(id, Change::Clip);
 }
 
 void Document::previewPose(PartId id, const rigmesh::Pose& pose) {

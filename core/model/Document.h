@@ -45,6 +45,7 @@ class Document : public QObject {
         Options = 1u << 4,   // the build options
         Pose = 1u << 5,      // the current pose (PartNode::pose)
         Pins = 1u << 6,      // the pinned joints (PartNode::pinnedJoints)
+        Clip = 1u << 7,      // the animation clip (PartNode::clip)
     };
     Q_DECLARE_FLAGS(Changes, Change)
     Q_FLAG(Changes)
@@ -97,13 +98,15 @@ class Document : public QObject {
     void setName(PartId id, const QString& name);
     void setPlacement(PartId id, const Placement& placement);
     void setVisible(PartId id, bool visible);
-    // Swaps the engine part, its options, pose and pins at once (one
-    // partChanged with every flag that applies). `pose` and `pinned` must fit
-    // the new part's skeleton (throws rigmesh::Error otherwise).
+    // Swaps the engine part, its options, pose, pins and clip at once (one
+    // partChanged with every flag that applies). `pose`, `pinned` and `clip`
+    // must fit the new part's skeleton (throws rigmesh::Error otherwise).
     void replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options,
-                     const rigmesh::Pose& pose, std::set<JointId> pinned);
-    // As above; when the part changes, the pose goes back to rest and the pins
-    // are cleared (joint ids may not survive a new skeleton).
+                     const rigmesh::Pose& pose, std::set<JointId> pinned,
+                     const rigmesh::Clip& clip);
+    // As above; when the part changes, the pose goes back to rest, the pins
+    // are cleared and the clip loses its keys (keeping its settings): joint
+    // ids may not survive a new skeleton.
     void replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options);
     // Throws rigmesh::Error when the pose names a joint the part's skeleton
     // does not have or holds a non-finite or zero quaternion / translation.
@@ -111,6 +114,9 @@ class Document : public QObject {
     void setPose(PartId id, const rigmesh::Pose& pose);
     // Throws rigmesh::Error on a joint the part's skeleton does not have.
     void setPinnedJoints(PartId id, std::set<JointId> pinned);
+    // Throws rigmesh::Error when a key names a joint the part's skeleton does
+    // not have or holds a pose that is not finite.
+    void setClip(PartId id, const rigmesh::Clip& clip);
 
     // ---- Live pose preview (interactive drags) ----
     // Applies `pose` to the part now (partChanged(Pose)) without a command,

@@ -6,8 +6,12 @@
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <string>
+#include <string_view>
+
+#include "model/ClipModes.h"
 
 namespace rigmesh::model {
 
@@ -121,6 +125,17 @@ json poseJson(const rigmesh::Pose& pose) {
     return {{"rotations", std::move(rotations)}, {"rootTranslation", vec3(pose.rootTranslation)}};
 }
 
+// keys: [{time, pose}, ...] in time order.
+json clipJson(const rigmesh::Clip& clip) {
+    json keys = json::array();
+    for (const auto& [time, pose] : clip.keys())
+        keys.push_back({{"time", time}, {"pose", poseJson(pose)}});
+    return {{"framesPerSecond", clip.framesPerSecond()},
+            {"interpolation", interpolationName(clip.interpolation)},
+            {"playback", playbackName(clip.mode)},
+            {"keys", std::move(keys)}};
+}
+
 json nodeJson(const PartNode& node) {
     const Eigen::Quaterniond& q = node.placement.rotation;
     json out = {
@@ -141,6 +156,7 @@ json nodeJson(const PartNode& node) {
     out["pinned"] = json::array();
     for (const JointId joint : node.pinnedJoints)
         out["pinned"].push_back(joint);
+    out["clip"] = clipJson(node.clip);
     return out;
 }
 
@@ -359,11 +375,7 @@ JointId readJointOf(const PartNode& node, const json& value, const char* what) {
     return joint;
 }
 
-// Absent (files written before poses were stored): the rest pose.
-rigmesh::Pose readPose(const PartNode& node, const json& object) {
-    if (!object.contains("pose"))
-        return restPoseOf(node);
-    const json& pose = field(object, "pose");
+rigmesh::Pose readPoseValue(const PartNode& node, const json& pose) {
     rigmesh::Pose out;
     for (const json& entry : array(pose, "rotations")) {
         if (!entry.is_array() || entry.size() != 5)
@@ -386,6 +398,50 @@ rigmesh::Pose readPose(const PartNode& node, const json& object) {
     out.rootTranslation = Vec3(t[0], t[1], t[2]);
     if (!out.rootTranslation.allFinite())
         corrupt("the pose root translation of " + partLabel(node) + " is not finite");
+    return out;
+}
+
+// Absent (files written before poses were stored): the rest pose.
+rigmesh::Pose readPose(const PartNode& node, const json& object) {
+    if (!object.contains("pose"))
+        return restPoseOf(node);
+    return readPoseValue(node, field(object, "pose"));
+}
+
+template <typename Enum>
+Enum readMode(const json& value, const char* what,
+              std::optional<Enum> (*fromName)(std::string_view)) {
+    const std::string name = text(value, what);
+    if (const std::optional<Enum> mode = fromName(name))
+        return *mode;
+    corrupt(std::string("unknown ") + what + " \"" + name + "\"");
+}
+
+// Absent (files written before clips were stored): no keys at 24 fps.
+rigmesh::Clip readClip(const PartNode& node, const json& object) {
+    if (!object.contains("clip"))
+        return rigmesh::Clip();
+    const json& clip = field(object, "clip");
+    const double fps = number(field(clip, "framesPerSecond"), "clip frame rate");
+    if (!std::isfinite(fps) || !(fps > 0))
+        corrupt("the clip frame rate of " + partLabel(node) + " is not positive");
+    // Keys go in with a vanishing tolerance, so keys closer than half a frame
+    // (left by a frame rate change) come back exactly; the frame rate is set
+    // last.
+    rigmesh::Clip out(std::numeric_limits<double>::max());
+    for (const json& key : array(clip, "keys")) {
+        const double time = number(field(key, "time"), "key time");
+        if (!std::isfinite(time))
+            corrupt("a key time of " + partLabel(node) + " is not finite");
+        const int before = out.keyCount();
+        out.setKey(time, readPoseValue(node, field(key, "pose")));
+        if (out.keyCount() != before + 1)
+            corrupt("the clip of " + partLabel(node) + " has two keys at one time");
+    }
+    out.setFramesPerSecond(fps);
+    out.interpolation =
+        readMode(field(clip, "interpolation"), "clip interpolation", &interpolationFromName);
+    out.mode = readMode(field(clip, "playback"), "clip playback", &playbackFromName);
     return out;
 }
 
@@ -424,6 +480,7 @@ PartNode readNode(const json& object) {
     node.part = readPart(object.at("part"));
     node.pose = readPose(node, object);
     node.pinnedJoints = readPinned(node, object);
+    node.clip = readClip(node, object);
     return node;
 }
 

@@ -2,13 +2,17 @@
 //   {"format": "rigmesh-studio-document", "version": 1, "nextPartId": n,
 //    "parts": [ {id, name, visible, placement, stroke, options, part: {...},
 //                pose: {rotations: [[joint, w, x, y, z], ...], rootTranslation},
-//                pinned: [joint, ...]} ]}
+//                pinned: [joint, ...],
+//                clip: {framesPerSecond, interpolation: "linear" | "smooth",
+//                       playback: "hold" | "loop",
+//                       keys: [{time, pose: {rotations, rootTranslation}}, ...]}} ]}
 // where part holds everything of the engine Part: name, outline, mesh
 // (vertices, faces), origins, mirror, skeleton (joints with ids, bones with
 // ids, root), skin weights and the known closest bones. pose and pinned are
 // optional when reading (a part without them loads in its rest pose, unpinned);
 // their joint ids must be joints of the part's skeleton and the quaternions
-// finite and non-zero.
+// finite and non-zero. clip is optional too (absent: no keys at 24 frames per
+// second); its keys are in time order, their poses checked like the pose.
 //
 // Why CBOR: doubles are stored as IEEE binary64 (or binary32 when that is
 // exact), so they round-trip bit for bit without decimal printing; meshes are

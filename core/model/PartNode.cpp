@@ -19,6 +19,25 @@ bool identicalPoses(const rigmesh::Pose& a, const rigmesh::Pose& b) {
     return true;
 }
 
+bool identicalClips(const rigmesh::Clip& a, const rigmesh::Clip& b) {
+    if (a.framesPerSecond() != b.framesPerSecond() || a.interpolation != b.interpolation ||
+        a.mode != b.mode || a.keyCount() != b.keyCount())
+        return false;
+    auto j = b.keys().begin();
+    for (auto i = a.keys().begin(); i != a.keys().end(); ++i, ++j) {
+        if (i->first != j->first || !identicalPoses(i->second, j->second))
+            return false;
+    }
+    return true;
+}
+
+rigmesh::Clip emptiedClip(const rigmesh::Clip& clip) {
+    rigmesh::Clip out(clip.framesPerSecond());
+    out.interpolation = clip.interpolation;
+    out.mode = clip.mode;
+    return out;
+}
+
 QString jointDisplayName(rigmesh::JointId joint) {
     return QCoreApplication::translate("rigmesh::model::PartNode", "Joint %1").arg(joint);
 }

@@ -1,7 +1,7 @@
 // One part of a document: the immutable engine value plus what the document
 // adds around it (stable id, user name, placement, visibility, the raw stroke
 // and options it was built from, so it can be rebuilt, and its current pose
-// with the joints pinned for IK).
+// with the joints pinned for IK, and its animation clip).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -13,6 +13,7 @@
 
 #include "base/Types.h"
 #include "part/Part.h"
+#include "pose/Clip.h"
 #include "pose/Pose.h"
 
 namespace rigmesh::model {
@@ -54,6 +55,9 @@ struct PartNode {
     rigmesh::Pose pose;
     // Joints that IK keeps in place (all joints of part->skeleton).
     std::set<rigmesh::JointId> pinnedJoints;
+    // Keyframed poses of this part (every joint id in every key is a joint of
+    // part->skeleton). A new part has no keys at 24 frames per second.
+    rigmesh::Clip clip = rigmesh::Clip();  // (Clip's default constructor is explicit)
 };
 
 // The rest pose of a node: restPose(skeleton), or an empty Pose without a part.
@@ -61,6 +65,11 @@ rigmesh::Pose restPoseOf(const PartNode& node);
 // Exact (bitwise value) equality: same joints, same quaternion coefficients,
 // same root translation.
 bool identicalPoses(const rigmesh::Pose& a, const rigmesh::Pose& b);
+// Exact equality of clips: frame rate, interpolation, playback mode and
+// every key (bitwise time, identicalPoses).
+bool identicalClips(const rigmesh::Clip& a, const rigmesh::Clip& b);
+// The clip without its keys: the same frame rate and modes.
+rigmesh::Clip emptiedClip(const rigmesh::Clip& clip);
 // The user-facing name of a joint ("Joint 3").
 QString jointDisplayName(rigmesh::JointId joint);
 

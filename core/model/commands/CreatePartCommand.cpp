@@ -1,5 +1,9 @@
 #include "model/commands/CreatePartCommand.h"
 
+#include <nlohmann/json.hpp>
+
+#include "model/recipe/RecipeJson.h"
+
 #include "model/PartBuilder.h"
 
 namespace rigmesh::model {
@@ -29,6 +33,14 @@ CreatePartCommand::CreatePartCommand(Document& document, PartNode node)
 
 void CreatePartCommand::redo() {
     document_.insertPart(document_.partCount(), node_);
+}
+
+nlohmann::json CreatePartCommand::recipeStep() const {
+    return {{"command", "sketch"},
+            {"name", node_.name.toStdString()},
+            {"points", recipe::pointsJson(node_.stroke)},
+            {"placement", recipe::placementJson(node_.placement)},
+            {"options", recipe::optionsJson(node_.options)}};
 }
 
 void CreatePartCommand::undo() {

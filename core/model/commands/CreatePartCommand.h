@@ -9,10 +9,11 @@
 #include <vector>
 
 #include "model/Document.h"
+#include "model/recipe/RecipeStepSource.h"
 
 namespace rigmesh::model {
 
-class CreatePartCommand : public QUndoCommand {
+class CreatePartCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(CreatePartCommand)
   public:
     // Builds the part (throws rigmesh::Error on a bad stroke) and returns the
@@ -25,6 +26,7 @@ class CreatePartCommand : public QUndoCommand {
 
     void redo() override;
     void undo() override;
+    nlohmann::json recipeStep() const override;
     PartId partId() const { return node_.id; }
 
   private:

@@ -5,10 +5,11 @@
 #include <QUndoCommand>
 
 #include "model/Document.h"
+#include "model/recipe/RecipeStepSource.h"
 
 namespace rigmesh::model {
 
-class DeletePartCommand : public QUndoCommand {
+class DeletePartCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(DeletePartCommand)
   public:
     // Throws rigmesh::Error on an unknown id.
@@ -16,11 +17,12 @@ class DeletePartCommand : public QUndoCommand {
 
     void redo() override;
     void undo() override;
+    nlohmann::json recipeStep() const override;
 
   private:
     Document& document_;
     PartId id_;
-    int index_ = -1;
+    int index_;
     PartNode removed_;  // held while the part is deleted
 };
 

@@ -1,5 +1,9 @@
 #include "model/commands/MovePartCommand.h"
 
+#include <nlohmann/json.hpp>
+
+#include "model/recipe/RecipeJson.h"
+
 namespace rigmesh::model {
 
 MovePartCommand::MovePartCommand(Document& document, PartId id, const Placement& from,
@@ -7,6 +11,7 @@ MovePartCommand::MovePartCommand(Document& document, PartId id, const Placement&
     : QUndoCommand(parent),
       document_(document),
       id_(id),
+      index_(document.indexOf(id)),
       from_(from),
       to_(to),
       skipRedo_(alreadyApplied) {
@@ -26,6 +31,10 @@ void MovePartCommand::redo() {
         return;
     }
     document_.setPlacement(id_, to_);
+}
+
+nlohmann::json MovePartCommand::recipeStep() const {
+    return {{"command", "move"}, {"part", index_}, {"placement", recipe::placementJson(to_)}};
 }
 
 void MovePartCommand::undo() {

@@ -12,10 +12,11 @@
 
 #include "model/Document.h"
 #include "model/commands/CommandIds.h"
+#include "model/recipe/RecipeStepSource.h"
 
 namespace rigmesh::model {
 
-class MovePartCommand : public QUndoCommand {
+class MovePartCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(MovePartCommand)
   public:
     // Throws rigmesh::Error on an unknown id. `from` is the placement before
@@ -28,6 +29,7 @@ class MovePartCommand : public QUndoCommand {
 
     void redo() override;
     void undo() override;
+    nlohmann::json recipeStep() const override;
     int id() const override { return MovePartCommandId; }
     bool mergeWith(const QUndoCommand* other) override;
 
@@ -36,6 +38,7 @@ class MovePartCommand : public QUndoCommand {
   private:
     Document& document_;
     PartId id_;
+    int index_;
     Placement from_, to_;
     bool skipRedo_;
 };

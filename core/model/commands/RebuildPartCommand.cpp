@@ -1,5 +1,9 @@
 #include "model/commands/RebuildPartCommand.h"
 
+#include <nlohmann/json.hpp>
+
+#include "model/recipe/RecipeJson.h"
+
 #include "model/PartBuilder.h"
 
 namespace rigmesh::model {
@@ -17,22 +21,30 @@ RebuildPartCommand::RebuildPartCommand(Document& document, PartId id,
                                        const BuildOptions& options)
     : document_(document),
       id_(id),
+      index_(document.indexOf(id)),
       oldPart_(document.part(id).part),
       newPart_(std::move(part)),
       oldOptions_(document.part(id).options),
       newOptions_(options),
       oldPose_(document.part(id).pose),
       newPose_(rigmesh::restPose(newPart_->skeleton)),
-      oldPinned_(document.part(id).pinnedJoints) {
+      oldPinned_(document.part(id).pinnedJoints),
+      oldClip_(document.part(id).clip),
+      newClip_(emptiedClip(oldClip_)) {
     setText(tr("Rebuild %1").arg(document.part(id).name));
 }
 
 void RebuildPartCommand::redo() {
-    document_.replacePart(id_, newPart_, newOptions_, newPose_, {});
+    document_.replacePart(id_, newPart_, newOptions_, newPose_, {}, newClip_);
+}
+
+nlohmann::json RebuildPartCommand::recipeStep() const {
+    return {
+        {"command", "rebuild"}, {"part", index_}, {"options", recipe::optionsJson(newOptions_)}};
 }
 
 void RebuildPartCommand::undo() {
-    document_.replacePart(id_, oldPart_, oldOptions_, oldPose_, oldPinned_);
+    document_.replacePart(id_, oldPart_, oldOptions_, oldPose_, oldPinned_, oldClip_);
 }
 
 }  // namespace rigmesh::model

@@ -1,8 +1,9 @@
 // Rebuild a part from its stroke with other build options, as one undoable
 // step. Use create(): the engine build runs there, before anything is pushed,
 // so a failure throws rigmesh::Error and changes nothing. Joint ids may not
-// survive the new skeleton: the rebuilt part gets its rest pose and no pins;
-// undo restores the old pose and pins exactly.
+// survive the new skeleton: the rebuilt part gets its rest pose, no pins and
+// a clip without keys (same frame rate and modes); undo restores the old
+// pose, pins and clip exactly.
 #pragma once
 
 #include <QCoreApplication>
@@ -11,10 +12,11 @@
 #include <set>
 
 #include "model/Document.h"
+#include "model/recipe/RecipeStepSource.h"
 
 namespace rigmesh::model {
 
-class RebuildPartCommand : public QUndoCommand {
+class RebuildPartCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(RebuildPartCommand)
   public:
     // Throws rigmesh::Error on an unknown id or when the build fails.
@@ -23,6 +25,7 @@ class RebuildPartCommand : public QUndoCommand {
 
     void redo() override;
     void undo() override;
+    nlohmann::json recipeStep() const override;
 
   private:
     RebuildPartCommand(Document& document, PartId id, std::shared_ptr<const Part> part,
@@ -30,10 +33,12 @@ class RebuildPartCommand : public QUndoCommand {
 
     Document& document_;
     PartId id_;
+    int index_;
     std::shared_ptr<const Part> oldPart_, newPart_;
     BuildOptions oldOptions_, newOptions_;
     rigmesh::Pose oldPose_, newPose_;
     std::set<rigmesh::JointId> oldPinned_;
+    rigmesh::Clip oldClip_, newClip_;
 };
 
 }  // namespace rigmesh::model

@@ -6,10 +6,11 @@
 #include <QUndoCommand>
 
 #include "model/Document.h"
+#include "model/recipe/RecipeStepSource.h"
 
 namespace rigmesh::model {
 
-class ResetPoseCommand : public QUndoCommand {
+class ResetPoseCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(ResetPoseCommand)
   public:
     // Throws rigmesh::Error on an unknown id. Obsolete (dropped on push) when
@@ -18,10 +19,12 @@ class ResetPoseCommand : public QUndoCommand {
 
     void redo() override;
     void undo() override;
+    nlohmann::json recipeStep() const override;
 
   private:
     Document& document_;
     PartId id_;
+    int index_;
     rigmesh::Pose from_, to_;
 };
 

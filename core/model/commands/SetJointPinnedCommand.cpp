@@ -1,12 +1,20 @@
 #include "model/commands/SetJointPinnedCommand.h"
 
+#include <nlohmann/json.hpp>
+
 #include "base/Error.h"
 
 namespace rigmesh::model {
 
 SetJointPinnedCommand::SetJointPinnedCommand(Document& document, PartId id, rigmesh::JointId joint,
                                              bool pinned, QUndoCommand* parent)
-    : QUndoCommand(parent), document_(document), id_(id), old_(document.part(id).pinnedJoints) {
+    : QUndoCommand(parent),
+      document_(document),
+      id_(id),
+      index_(document.indexOf(id)),
+      joint_(joint),
+      pinned_(pinned),
+      old_(document.part(id).pinnedJoints) {
     const PartNode& node = document.part(id);
     if (!node.part || !node.part->skeleton.hasJoint(joint))
         throw Error("Part " + std::to_string(id) + " has no joint " + std::to_string(joint) + ".");
@@ -22,6 +30,10 @@ SetJointPinnedCommand::SetJointPinnedCommand(Document& document, PartId id, rigm
 
 void SetJointPinnedCommand::redo() {
     document_.setPinnedJoints(id_, new_);
+}
+
+nlohmann::json SetJointPinnedCommand::recipeStep() const {
+    return {{"command", pinned_ ? "pin" : "unpin"}, {"part", index_}, {"joint", joint_}};
 }
 
 void SetJointPinnedCommand::undo() {

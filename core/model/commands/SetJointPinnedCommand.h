@@ -6,10 +6,11 @@
 #include <set>
 
 #include "model/Document.h"
+#include "model/recipe/RecipeStepSource.h"
 
 namespace rigmesh::model {
 
-class SetJointPinnedCommand : public QUndoCommand {
+class SetJointPinnedCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(SetJointPinnedCommand)
   public:
     // Throws rigmesh::Error on an unknown part or joint. Obsolete (dropped on
@@ -19,10 +20,14 @@ class SetJointPinnedCommand : public QUndoCommand {
 
     void redo() override;
     void undo() override;
+    nlohmann::json recipeStep() const override;
 
   private:
     Document& document_;
     PartId id_;
+    int index_;
+    rigmesh::JointId joint_;
+    bool pinned_;
     std::set<rigmesh::JointId> old_, new_;
 };
 

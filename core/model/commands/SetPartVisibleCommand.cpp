@@ -1,5 +1,7 @@
 #include "model/commands/SetPartVisibleCommand.h"
 
+#include <nlohmann/json.hpp>
+
 namespace rigmesh::model {
 
 SetPartVisibleCommand::SetPartVisibleCommand(Document& document, PartId id, bool visible,
@@ -7,6 +9,7 @@ SetPartVisibleCommand::SetPartVisibleCommand(Document& document, PartId id, bool
     : QUndoCommand(parent),
       document_(document),
       id_(id),
+      index_(document.indexOf(id)),
       old_(document.part(id).visible),
       new_(visible) {
     const QString& name = document.part(id).name;
@@ -15,6 +18,10 @@ SetPartVisibleCommand::SetPartVisibleCommand(Document& document, PartId id, bool
 
 void SetPartVisibleCommand::redo() {
     document_.setVisible(id_, new_);
+}
+
+nlohmann::json SetPartVisibleCommand::recipeStep() const {
+    return {{"command", new_ ? "show" : "hide"}, {"part", index_}};
 }
 
 void SetPartVisibleCommand::undo() {

@@ -5,10 +5,11 @@
 #include <QUndoCommand>
 
 #include "model/Document.h"
+#include "model/recipe/RecipeStepSource.h"
 
 namespace rigmesh::model {
 
-class SetPartVisibleCommand : public QUndoCommand {
+class SetPartVisibleCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(SetPartVisibleCommand)
   public:
     // Throws rigmesh::Error on an unknown id.
@@ -17,10 +18,12 @@ class SetPartVisibleCommand : public QUndoCommand {
 
     void redo() override;
     void undo() override;
+    nlohmann::json recipeStep() const override;
 
   private:
     Document& document_;
     PartId id_;
+    int index_;
     bool old_, new_;
 };
 

@@ -1,5 +1,9 @@
 #include "model/commands/SetPoseCommand.h"
 
+#include <nlohmann/json.hpp>
+
+#include "model/recipe/RecipeJson.h"
+
 #include "base/Error.h"
 
 namespace rigmesh::model {
@@ -41,6 +45,7 @@ SetPoseCommand::SetPoseCommand(Document& document, PartId id, const rigmesh::Pos
     : QUndoCommand(parent),
       document_(document),
       id_(id),
+      index_(document.indexOf(id)),
       joint_(draggedJoint),
       from_(from),
       to_(to),
@@ -66,6 +71,19 @@ void SetPoseCommand::redo() {
         return;
     }
     document_.setPose(id_, to_);
+}
+
+// The pose as it ends up (after merges), complete: joints not listed are at
+// rest, so the replayed pose has exactly the same rotations.
+nlohmann::json SetPoseCommand::recipeStep() const {
+    nlohmann::json step = {{"command", "pose"},
+                           {"part", index_},
+                           {"rotations", recipe::rotationsJson(to_)},
+                           {"rootTranslation", recipe::vec3Json(to_.rootTranslation)},
+                           {"complete", true}};
+    if (joint_ != rigmesh::kNoJoint)
+        step["joint"] = joint_;
+    return step;
 }
 
 void SetPoseCommand::undo() {

@@ -13,10 +13,11 @@
 
 #include "model/Document.h"
 #include "model/commands/CommandIds.h"
+#include "model/recipe/RecipeStepSource.h"
 
 namespace rigmesh::model {
 
-class SetPoseCommand : public QUndoCommand {
+class SetPoseCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(SetPoseCommand)
   public:
     // Throws rigmesh::Error on an unknown part, an unknown dragged joint or a
@@ -34,6 +35,7 @@ class SetPoseCommand : public QUndoCommand {
 
     void redo() override;
     void undo() override;
+    nlohmann::json recipeStep() const override;
     int id() const override { return SetPoseCommandId; }
     bool mergeWith(const QUndoCommand* other) override;
 
@@ -45,6 +47,7 @@ class SetPoseCommand : public QUndoCommand {
   private:
     Document& document_;
     PartId id_;
+    int index_;
     rigmesh::JointId joint_;
     rigmesh::Pose from_, to_;
     bool skipRedo_;

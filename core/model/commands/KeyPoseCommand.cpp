@@ -1,0 +1,26 @@
+#include "model/commands/KeyPoseCommand.h"
+
+#include <nlohmann/json.hpp>
+
+namespace rigmesh::model {
+
+namespace {
+
+rigmesh::Clip keyed(const PartNode& node, double time) {
+    rigmesh::Clip clip = node.clip;
+    clip.setKey(time, node.pose);
+    return clip;
+}
+
+}  // namespace
+
+KeyPoseCommand::KeyPoseCommand(Document& document, PartId id, double time, QUndoCommand* parent)
+    : ClipCommand(document, id, keyed(document.part(id), time), parent), time_(time) {
+    setText(tr("Key %1 at %2 s").arg(document.part(id).name).arg(time));
+}
+
+nlohmann::json KeyPoseCommand::recipeStep() const {
+    return {{"command", "key"}, {"part", partIndex()}, {"time", time_}};
+}
+
+}  // namespace rigmesh::model

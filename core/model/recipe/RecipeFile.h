@@ -1,0 +1,38 @@
+// Recipe files: JSON text, {"format": "rigmesh-recipe", "version": 1,
+// "steps": [...]} (see RecipeRunner.h for the steps).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "model/Document.h"
+#include "model/recipe/RecipeRunner.h"
+
+namespace rigmesh::model {
+
+namespace RecipeFile {
+inline constexpr const char* kFormatName = "rigmesh-recipe";
+inline constexpr int kFormatVersion = 1;
+}  // namespace RecipeFile
+
+// An empty recipe: the header and no steps.
+nlohmann::json emptyRecipe();
+// The recipe's list of steps after checking its format and version. Throws
+// rigmesh::Error ("this is not a RigMesh recipe", a newer version, ...).
+const nlohmann::json& recipeSteps(const nlohmann::json& recipe);
+
+// Parses recipe text; `sourceName` names it in messages. Throws rigmesh::Error.
+nlohmann::json parseRecipe(const std::string& text, const std::string& sourceName);
+// Reads and parses a file. Throws rigmesh::Error.
+nlohmann::json readRecipeFile(const std::string& path);
+// Writes the recipe as indented JSON (doubles in round-trip precision).
+// Throws rigmesh::Error.
+void writeRecipeFile(const nlohmann::json& recipe, const std::string& path);
+
+// Runs a recipe file on `document`, stroke files relative to the file's
+// folder. Throws rigmesh::Error for an unreadable or malformed file and
+// RecipeError for a bad step.
+void runRecipeFile(Document& document, const std::string& path,
+                   const RecipeRunner::StepCallback& onStep = {});
+
+}  // namespace rigmesh::model

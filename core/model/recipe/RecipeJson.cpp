@@ -1,0 +1,165 @@
+#include "model/recipe/RecipeJson.h"
+
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "base/Error.h"
+
+namespace rigmesh::model::recipe {
+
+using nlohmann::json;
+
+namespace {
+
+const json& arrayOf(const json& value, std::size_t size, const std::string& what) {
+    if (!value.is_array() || value.size() != size)
+        throw Error(what + " must be a list of " + std::to_string(size) + " numbers");
+    return value;
+}
+
+void checkFields(const json& value, const std::set<std::string>& known, const std::string& what) {
+    if (!value.is_object())
+        throw Error(what + " must be an object");
+    for (const auto& [key, field] : value.items()) {
+        if (!known.contains(key))
+            throw Error(what + " has an unknown field \"" + key + "\"");
+    }
+}
+
+}  // namespace
+
+json vec3Json(const Vec3& v) {
+    return json::array({v.x(), v.y(), v.z()});
+}
+
+json quaternionJson(const Eigen::Quaterniond& q) {
+    return json::array({q.w(), q.x(), q.y(), q.z()});
+}
+
+json placementJson(const Placement& placement) {
+    return {{"translation", vec3Json(placement.translation)},
+            {"rotation", quaternionJson(placement.rotation)}};
+}
+
+json optionsJson(const BuildOptions& options) {
+    return {{"edgeLength", options.targetEdgeLength}, {"smoothing", options.smoothing}};
+}
+
+json pointsJson(const std::vector<Vec2>& points) {
+    json out = json::array();
+    for (const Vec2& p : points)
+        out.push_back(json::array({p.x(), p.y()}));
+    return out;
+}
+
+json rotationsJson(const rigmesh::Pose& pose) {
+    json out = json::object();
+    for (const auto& [joint, q] : pose.rotations)
+        out[std::to_string(joint)] = quaternionJson(q);
+    return out;
+}
+
+double readNumber(const json& value, const std::string& what) {
+    if (!value.is_number())
+        throw Error(what + " must be a number");
+    const double number = value.get<double>();
+    if (!std::isfinite(number))
+        throw Error(what + " must be a finite number");
+    return number;
+}
+
+bool readBool(const json& value, const std::string& what) {
+    if (!value.is_boolean())
+        throw Error(what + " must be true or false");
+    return value.get<bool>();
+}
+
+std::string readText(const json& value, const std::string& what) {
+    if (!value.is_string())
+        throw Error(what + " must be text");
+    return value.get<std::string>();
+}
+
+Vec3 readVec3(const json& value, const std::string& what) {
+    const json& list = arrayOf(value, 3, what);
+    return Vec3(readNumber(list[0], what), readNumber(list[1], what), readNumber(list[2], what));
+}
+
+Eigen::Quaterniond readQuaternion(const json& value, const std::string& what) {
+    const json& list = arrayOf(value, 4, what + " ([w, x, y, z])");
+    const Eigen::Quaterniond q(readNumber(list[0], what), readNumber(list[1], what),
+                               readNumber(list[2], what), readNumber(list[3], what));
+    const double norm = q.norm();
+    if (!(norm > 0))
+        throw Error(what + " is a zero quaternion");
+    return std::abs(norm - 1.0) <= 1e-12 ? q : q.normalized();
+}
+
+Placement readPlacement(const json& value, const Placement& base) {
+    checkFields(value, {"translation", "rotation"}, "\"placement\"");
+    Placement out = base;
+    if (value.contains("translation"))
+        out.translation = readVec3(value["translation"], "the placement's \"translation\"");
+    if (value.contains("rotation"))
+        out.rotation = readQuaternion(value["rotation"], "the placement's \"rotation\"");
+    return out;
+}
+
+BuildOptions readOptions(const json& value, const BuildOptions& base) {
+    checkFields(value, {"edgeLength", "smoothing"}, "\"options\"");
+    BuildOptions out = base;
+    if (value.contains("edgeLength")) {
+        out.targetEdgeLength = readNumber(value["edgeLength"], "\"edgeLength\"");
+        if (out.targetEdgeLength < 0)
+            throw Error("\"edgeLength\" must be 0 (automatic) or a positive length");
+    }
+    if (value.contains("smoothing"))
+        out.smoothing = readBool(value["smoothing"], "\"smoothing\"");
+    return out;
+}
+
+std::vector<Vec2> readPoints(const json& value) {
+    if (!value.is_array())
+        throw Error("\"points\" must be a list of [x, y] points");
+    std::vector<Vec2> out;
+    out.reserve(value.size());
+    for (const json& point : value) {
+        const std::string what = "point " + std::to_string(out.size() + 1) + " of \"points\"";
+        const json& xy = arrayOf(point, 2, what);
+        out.emplace_back(readNumber(xy[0], what), readNumber(xy[1], what));
+    }
+    return out;
+}
+
+std::map<JointId, Eigen::Quaterniond> readRotations(const json& value) {
+    if (!value.is_object())
+        throw Error("\"rotations\" must be an object {\"<joint id>\": [w, x, y, z], ...}");
+    std::map<JointId, Eigen::Quaterniond> out;
+    for (const auto& [key, rotation] : value.items()) {
+        const JointId joint = readJointId(json(key), "the joint id \"" + key + "\"");
+        if (!out.emplace(joint, readQuaternion(rotation, "the rotation of joint " + key)).second)
+            throw Error("\"rotations\" names joint " + key + " twice");
+    }
+    return out;
+}
+
+JointId readJointId(const json& value, const std::string& what) {
+    std::uint64_t id = 0;
+    if (value.is_number_unsigned()) {
+        id = value.get<std::uint64_t>();
+    } else if (value.is_string()) {
+        const std::string text = value.get<std::string>();
+        if (text.empty() || text.size() > 10 ||
+            text.find_first_not_of("0123456789") != std::string::npos)
+            throw Error(what + " is not a joint id");
+        id = std::stoull(text);
+    } else {
+        throw Error(what + " must be a joint id (a non-negative integer)");
+    }
+    if (id >= std::numeric_limits<JointId>::max())
+        throw Error(what + " is not a joint id");
+    return static_cast<JointId>(id);
+}
+
+}  // namespace rigmesh::model::recipe

@@ -1,0 +1,71 @@
+#include "model/recipe/RecipeRunner.h"
+
+#include <QUndoStack>
+#include <utility>
+
+#include "model/recipe/RecipeFile.h"
+#include "model/recipe/RecipeStepCommands.h"
+
+namespace rigmesh::model {
+
+namespace {
+
+std::string stepCommandName(const nlohmann::json& step, int number) {
+    if (!step.is_object())
+        throw RecipeError(number, "?", "a step must be an object {\"command\": ..., ...}");
+    const auto it = step.find("command");
+    if (it == step.end())
+        throw RecipeError(number, "?", "the step has no \"command\"");
+    if (!it->is_string())
+        throw RecipeError(number, "?", "\"command\" must be text");
+    return it->get<std::string>();
+}
+
+std::string summaryOf(const Document& document, const std::string& command, const QString& text,
+                      const recipe::StepCommand& made) {
+    std::string summary = text.toStdString();
+    if (command == "sketch" && document.contains(made.part)) {
+        const PartNode& node = document.part(made.part);
+        summary += ": " + std::to_string(node.part->mesh.vertexCount()) + " vertices, " +
+                   std::to_string(node.part->skeleton.jointCount()) + " joints";
+    }
+    if (!made.detail.empty())
+        summary += ": " + made.detail;
+    return summary;
+}
+
+}  // namespace
+
+RecipeRunner::RecipeRunner(Document& document, std::filesystem::path baseDirectory)
+    : document_(document), baseDirectory_(std::move(baseDirectory)) {}
+
+void RecipeRunner::run(const nlohmann::json& recipe, const StepCallback& onStep) {
+    const nlohmann::json& steps = recipeSteps(recipe);
+    int number = 0;
+    for (const nlohmann::json& step : steps) {
+        const RecipeStepReport report = apply(step, ++number);
+        if (onStep)
+            onStep(report);
+    }
+}
+
+RecipeStepReport RecipeRunner::apply(const nlohmann::json& step, int number) {
+    const std::string command = stepCommandName(step, number);
+    recipe::StepCommand made;
+    QString text;
+    try {
+        made = recipe::commandForStep(document_, command, step, baseDirectory_);
+        text = made.command->text();
+        // The stack takes the command only once its redo() has run; until
+        // then (a redo that throws) the unique_ptr still owns it.
+        document_.undoStack()->push(made.command.get());
+        made.command.release();
+    } catch (const RecipeError&) {
+        throw;
+    } catch (const std::exception& error) {
+        throw RecipeError(number, command, error.what());
+    }
+    return {number, command, summaryOf(document_, command, text, made)};
+}
+
+}  // namespace rigmesh::model

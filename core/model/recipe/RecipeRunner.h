@@ -1,0 +1,80 @@
+// Recipes: a document's making as a list of steps, replayed headless with the
+// very command classes of the studio's undo stack.
+//
+//   {"format": "rigmesh-recipe", "version": 1,
+//    "steps": [ {"command": "...", ...}, ... ]}
+//
+// Steps ("part" is a part's name, which must be unique, or its index from 0;
+// "joint" a joint id of that part's skeleton; quaternions are [w, x, y, z];
+// every step may carry a "comment"; any other field is an error):
+//   sketch        "stroke": "file.json|.svg" (relative to the recipe's folder)
+//                 or "points": [[x, y], ...]; optional "name" (default: the
+//                 sketch's name, or "Part <id>"), "placement":
+//                 {"translation": [x, y, z], "rotation": [w, x, y, z]},
+//                 "options": {"edgeLength": L (0 = automatic), "smoothing": bool}
+//   delete        "part"
+//   rename        "part", "name"
+//   move          "part", "placement" (the fields given replace the current ones)
+//   show, hide    "part"
+//   rebuild       "part", optional "options" (the fields given replace the current ones)
+//   pose          "part" and either
+//                   "joint" + "target": [x, y, z] in the part's frame: an IK drag
+//                   as the studio's pose tool does (current pose, pinned joints
+//                   kept), or
+//                   "rotations": {"<joint>": [w, x, y, z], ...}, optional
+//                   "rootTranslation": [x, y, z], optional "complete": true (the
+//                   joints not listed go to rest, the translation to 0; without
+//                   it they keep their current values), optional "joint" (the
+//                   joint the change is about: consecutive poses of it merge
+//                   into one undo step, as a drag does)
+//   reset_pose    "part"
+//   pin, unpin    "part", "joint"
+//   key           "part", "time" (seconds): keys the current pose
+//   delete_key    "part", "time"
+//   move_key      "part", "from", "to" (seconds)
+//   clip_settings "part", optional "frameRate", "interpolation" ("linear" |
+//                 "smooth"), "playback" ("hold" | "loop")
+//
+// Each step constructs one command and pushes it on the document's undo
+// stack. A step that cannot be applied throws RecipeError ("step 3 (pose):
+// part \"arm\" has no joint 42") and leaves the document as it was after the
+// previous step.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "model/Document.h"
+#include "model/recipe/RecipeError.h"
+
+namespace rigmesh::model {
+
+struct RecipeStepReport {
+    int number = 0;       // from 1
+    std::string command;  // "sketch", "pose", ...
+    std::string summary;  // one line: the command's undo text and what the step found
+};
+
+class RecipeRunner {
+  public:
+    using StepCallback = std::function<void(const RecipeStepReport&)>;
+
+    // Stroke files of "sketch" steps are looked up relative to
+    // `baseDirectory` (the recipe file's folder; the working folder if empty).
+    explicit RecipeRunner(Document& document, std::filesystem::path baseDirectory = {});
+
+    // Checks the recipe's format and version (rigmesh::Error), then applies
+    // the steps in order, calling `onStep` after each. Throws RecipeError on
+    // the first bad step.
+    void run(const nlohmann::json& recipe, const StepCallback& onStep = {});
+    // Applies one step; `number` names it in messages. Throws RecipeError.
+    RecipeStepReport apply(const nlohmann::json& step, int number);
+
+  private:
+    Document& document_;
+    std::filesystem::path baseDirectory_;
+};
+
+}  // namespace rigmesh::model

@@ -1,0 +1,262 @@
+#include "model/recipe/RecipeStepCommands.h"
+
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "base/Error.h"
+#include "model/ClipModes.h"
+#include "model/PoseDrag.h"
+#include "model/commands/CreatePartCommand.h"
+#include "model/commands/DeleteKeyCommand.h"
+#include "model/commands/DeletePartCommand.h"
+#include "model/commands/KeyPoseCommand.h"
+#include "model/commands/MoveKeyCommand.h"
+#include "model/commands/MovePartCommand.h"
+#include "model/commands/RebuildPartCommand.h"
+#include "model/commands/RenamePartCommand.h"
+#include "model/commands/ResetPoseCommand.h"
+#include "model/commands/SetClipSettingsCommand.h"
+#include "model/commands/SetJointPinnedCommand.h"
+#include "model/commands/SetPartVisibleCommand.h"
+#include "model/commands/SetPoseCommand.h"
+#include "model/recipe/RecipeJson.h"
+#include "model/recipe/RecipePartRef.h"
+#include "sketch/Sketch.h"
+
+namespace rigmesh::model::recipe {
+
+namespace {
+
+using nlohmann::json;
+
+struct Context {
+    Document& document;
+    const json& step;
+    const std::filesystem::path& baseDirectory;
+
+    bool has(const char* key) const { return step.contains(key); }
+    const json& required(const char* key) const {
+        if (!step.contains(key))
+            throw Error(std::string("the step needs \"") + key + "\"");
+        return step[key];
+    }
+    PartId part() const { return resolvePart(document, required("part")); }
+    const PartNode& node(PartId id) const { return document.part(id); }
+    double number(const char* key) const {
+        return readNumber(required(key), std::string("\"") + key + "\"");
+    }
+    // A joint of the part, by the step's "joint".
+    JointId joint(const PartNode& node) const {
+        const JointId joint = readJointId(required("joint"), "\"joint\"");
+        checkJoint(node, joint);
+        return joint;
+    }
+    static void checkJoint(const PartNode& node, JointId joint) {
+        if (!node.part || !node.part->skeleton.hasJoint(joint))
+            throw Error(partLabel(node) + " has no joint " + std::to_string(joint));
+    }
+};
+
+using Builder = std::function<StepCommand(const Context&)>;
+
+struct StepKind {
+    std::set<std::string> fields;  // besides "command" and "comment"
+    Builder build;
+};
+
+template <typename Command, typename... Args>
+StepCommand make(PartId part, Args&&... args) {
+    return {std::make_unique<Command>(std::forward<Args>(args)...), part, {}};
+}
+
+StepCommand sketch(const Context& c) {
+    if (c.has("stroke") == c.has("points"))
+        throw Error("the step needs either \"stroke\" (a sketch file) or \"points\", not both");
+    std::vector<Vec2> points;
+    QString name;
+    if (c.has("stroke")) {
+        std::filesystem::path path(readText(c.step["stroke"], "\"stroke\""));
+        if (path.is_relative())
+            path = c.baseDirectory / path;
+        Sketch sketch = readSketchFile(path.string());
+        points = std::move(sketch.points);
+        name = QString::fromStdString(sketch.name);
+    } else {
+        points = readPoints(c.step["points"]);
+    }
+    if (c.has("name"))
+        name = QString::fromStdString(readText(c.step["name"], "\"name\""));
+    const BuildOptions options =
+        c.has("options") ? readOptions(c.step["options"], {}) : BuildOptions{};
+    const Placement placement =
+        c.has("placement") ? readPlacement(c.step["placement"], {}) : Placement{};
+    auto command =
+        CreatePartCommand::create(c.document, std::move(points), name, options, placement);
+    const PartId id = command->partId();
+    return {std::move(command), id, {}};
+}
+
+StepCommand pose(const Context& c) {
+    const PartId id = c.part();
+    const PartNode& node = c.node(id);
+    if (c.has("target") == c.has("rotations"))
+        throw Error("the step needs either \"joint\" and \"target\" (an IK drag) or \"rotations\"");
+    if (c.has("target")) {
+        for (const char* key : {"rootTranslation", "complete"}) {
+            if (c.has(key))
+                throw Error(std::string("\"") + key + "\" goes with \"rotations\", not \"target\"");
+        }
+        const JointId joint = c.joint(node);
+        const Vec3 target = readVec3(c.step["target"], "\"target\"");
+        const IkResult result = dragPartJoint(node, joint, target);
+        std::ostringstream detail;
+        detail << (result.reached ? "reached" : "out of reach") << ", distance to target "
+               << result.distanceToTarget;
+        return {std::make_unique<SetPoseCommand>(c.document, id, result.pose, joint), id,
+                detail.str()};
+    }
+    const bool complete = c.has("complete") && readBool(c.step["complete"], "\"complete\"");
+    rigmesh::Pose pose = complete ? rigmesh::Pose{} : node.pose;
+    for (const auto& [joint, rotation] : readRotations(c.step["rotations"])) {
+        Context::checkJoint(node, joint);
+        pose.rotations[joint] = rotation;
+    }
+    if (c.has("rootTranslation"))
+        pose.rootTranslation = readVec3(c.step["rootTranslation"], "\"rootTranslation\"");
+    const JointId joint = c.has("joint") ? c.joint(node) : rigmesh::kNoJoint;
+    return make<SetPoseCommand>(id, c.document, id, pose, joint);
+}
+
+StepCommand clipSettings(const Context& c) {
+    const PartId id = c.part();
+    const rigmesh::Clip& clip = c.node(id).clip;
+    const double fps = c.has("frameRate") ? c.number("frameRate") : clip.framesPerSecond();
+    auto interpolation = clip.interpolation;
+    if (c.has("interpolation")) {
+        const auto named =
+            interpolationFromName(readText(c.step["interpolation"], "\"interpolation\""));
+        if (!named)
+            throw Error("\"interpolation\" must be \"linear\" or \"smooth\"");
+        interpolation = *named;
+    }
+    auto playback = clip.mode;
+    if (c.has("playback")) {
+        const auto named = playbackFromName(readText(c.step["playback"], "\"playback\""));
+        if (!named)
+            throw Error("\"playback\" must be \"hold\" or \"loop\"");
+        playback = *named;
+    }
+    return make<SetClipSettingsCommand>(id, c.document, id, fps, interpolation, playback);
+}
+
+const std::map<std::string, StepKind>& stepKinds() {
+    static const std::map<std::string, StepKind> kinds = {
+        {"sketch", {{"stroke", "points", "name", "placement", "options"}, sketch}},
+        {"delete",
+         {{"part"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              return make<DeletePartCommand>(id, c.document, id);
+          }}},
+        {"rename",
+         {{"part", "name"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              const QString name = QString::fromStdString(readText(c.required("name"), "\"name\""));
+              return make<RenamePartCommand>(id, c.document, id, name);
+          }}},
+        {"move",
+         {{"part", "placement"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              const Placement to = readPlacement(c.required("placement"), c.node(id).placement);
+              return make<MovePartCommand>(id, c.document, id, to);
+          }}},
+        {"show",
+         {{"part"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              return make<SetPartVisibleCommand>(id, c.document, id, true);
+          }}},
+        {"hide",
+         {{"part"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              return make<SetPartVisibleCommand>(id, c.document, id, false);
+          }}},
+        {"rebuild",
+         {{"part", "options"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              const BuildOptions& current = c.node(id).options;
+              const BuildOptions options =
+                  c.has("options") ? readOptions(c.step["options"], current) : current;
+              return StepCommand{RebuildPartCommand::create(c.document, id, options), id, {}};
+          }}},
+        {"pose", {{"part", "joint", "target", "rotations", "rootTranslation", "complete"}, pose}},
+        {"reset_pose",
+         {{"part"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              return make<ResetPoseCommand>(id, c.document, id);
+          }}},
+        {"pin",
+         {{"part", "joint"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              return make<SetJointPinnedCommand>(id, c.document, id, c.joint(c.node(id)), true);
+          }}},
+        {"unpin",
+         {{"part", "joint"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              return make<SetJointPinnedCommand>(id, c.document, id, c.joint(c.node(id)), false);
+          }}},
+        {"key",
+         {{"part", "time"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              return make<KeyPoseCommand>(id, c.document, id, c.number("time"));
+          }}},
+        {"delete_key",
+         {{"part", "time"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              return make<DeleteKeyCommand>(id, c.document, id, c.number("time"));
+          }}},
+        {"move_key",
+         {{"part", "from", "to"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              return make<MoveKeyCommand>(id, c.document, id, c.number("from"), c.number("to"));
+          }}},
+        {"clip_settings", {{"part", "frameRate", "interpolation", "playback"}, clipSettings}},
+    };
+    return kinds;
+}
+
+}  // namespace
+
+StepCommand commandForStep(Document& document, const std::string& name, const json& step,
+                           const std::filesystem::path& baseDirectory) {
+    const auto& kinds = stepKinds();
+    const auto kind = kinds.find(name);
+    if (kind == kinds.end())
+        throw Error("unknown command \"" + name + "\"");
+    for (const auto& [key, value] : step.items()) {
+        if (key != "command" && key != "comment" && !kind->second.fields.contains(key))
+            throw Error("unknown field \"" + key + "\"");
+    }
+    return kind->second.build(Context{document, step, baseDirectory});
+}
+
+std::vector<std::string> stepCommandNames() {
+    std::vector<std::string> names;
+    for (const auto& [name, kind] : stepKinds())
+        names.push_back(name);
+    return names;
+}
+
+}  // namespace rigmesh::model::recipe
