@@ -1,14 +1,21 @@
 #include "BuildCommand.h"
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "BuildReport.h"
 #include "CommandLine.h"
 #include "EmbeddedExamples.h"
 #include "base/Error.h"
 #include "debug/DebugSvg.h"
+#include "io/PoseDemoClip.h"
 #include "io/RigJson.h"
+#include "io/SceneExport.h"
 #include "mesh/MeshWriter.h"
 #include "pipeline/SketchToPart.h"
 #include "sketch/Sketch.h"
@@ -38,6 +45,44 @@ void writeTextFile(const std::string& path, const std::string& text) {
     }
 }
 
+std::string lowerExtension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
+// .ply and .off go through the mesh writer; the scene formats through
+// exportScene (rigged: skeleton, weights and, with --pose-demo, a clip).
+void writeOutput(const Part& part, const std::string& path, const ExportOptions& options,
+                 const std::optional<Clip>& clip) {
+    const std::string extension = lowerExtension(path);
+    if (extension == ".ply" || extension == ".off") {
+        MeshWriteOptions write;
+        write.vertexColors = dominantBoneColours(part);
+        writeMesh(part.mesh, path, write);
+        return;
+    }
+    if (extension != ".glb" && extension != ".gltf" && extension != ".fbx" && extension != ".dae" &&
+        extension != ".obj")
+        throw Error("cannot write " + path + ": unknown format '" + extension +
+                    "'; use .glb, .gltf, .fbx, .dae, .obj, .ply or .off");
+    ExportPart item;
+    item.part = &part;
+    item.pose = restPose(part.skeleton);
+    exportScene({item}, clip ? &*clip : nullptr, path, options);
+}
+
+ExportOptions exportOptions(const CommandLine& line) {
+    ExportOptions options;
+    if (auto influences = line.number("--max-influences")) {
+        if (*influences < 0 || *influences != std::floor(*influences))
+            throw Error("--max-influences must be a whole number >= 0 (0 = all the format allows)");
+        options.maxInfluences = static_cast<int>(*influences);
+    }
+    return options;
+}
+
 }  // namespace
 
 // The skeleton drawn over the sketch: bones as segments, joints as dots.
@@ -52,8 +97,9 @@ DebugOverlay skeletonOverlay(const Skeleton& skeleton) {
 }
 
 int runBuild(const std::vector<std::string>& arguments) {
-    CommandLine line(arguments, {"-o", "--stats", "--debug-svg", "--edge-length", "--rig"},
-                     {"--no-smoothing", "--plain-dp"});
+    CommandLine line(arguments,
+                     {"-o", "--stats", "--debug-svg", "--edge-length", "--rig", "--max-influences"},
+                     {"--no-smoothing", "--plain-dp", "--pose-demo"});
     if (line.positional().size() != 1)
         throw Error("build needs exactly one sketch file (.json or .svg), or 'example'");
     const Sketch sketch = loadSketch(line.positional()[0]);
@@ -66,15 +112,17 @@ int runBuild(const std::vector<std::string>& arguments) {
     }
     options.surface.surface.smooth = !line.flag("--no-smoothing");
     options.skeleton.cylindrical = !line.flag("--plain-dp");
+    const ExportOptions exportSettings = exportOptions(line);
     const SketchToPartResult result = sketchToPart(sketch.points, sketch.name, options);
     const Part& part = result.part;
 
     const MeshReport report = analyseMesh(part.mesh);
     const nlohmann::json statistics = buildStatistics(sketch.name, result, report);
     if (auto out = line.value("-o")) {
-        MeshWriteOptions write;
-        write.vertexColors = dominantBoneColours(part);
-        writeMesh(part.mesh, *out, write);
+        std::optional<Clip> clip;
+        if (line.flag("--pose-demo"))
+            clip = poseDemoClip(part);
+        writeOutput(part, *out, exportSettings, clip);
     }
     if (auto rig = line.value("--rig"))
         writeTextFile(*rig, rigToJson(part));

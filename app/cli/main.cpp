@@ -14,13 +14,19 @@ namespace {
 const char* kUsage = R"(usage: rigmesh COMMAND [ARGS]
 
 commands:
-  build SKETCH [-o OUT.obj|.ply|.off] [--rig FILE.json] [--stats FILE.json]
+  build SKETCH [-o OUT.glb|.gltf|.fbx|.dae|.obj|.ply|.off] [--max-influences N]
+               [--pose-demo] [--rig FILE.json] [--stats FILE.json]
                [--debug-svg FILE.svg] [--edge-length L] [--no-smoothing] [--plain-dp]
       Turns a sketched silhouette (.json or .svg) into a rigged part: a closed
       surface, a skeleton and skin weights, and prints its figures. SKETCH may
-      be "example" for the embedded example. A .ply is coloured by each
-      vertex's dominant bone; --rig writes joints, bones and weights as JSON;
-      --plain-dp uses plain Douglas-Peucker instead of the paper's CDP.
+      be "example" for the embedded example. .glb, .gltf, .fbx and .dae carry
+      the skeleton (one node per bone) and skin weights, .obj the rest mesh; a
+      .ply is coloured by each vertex's dominant bone. --max-influences N keeps
+      at most N weights per vertex (default 4; 0 = all the format allows;
+      glTF keeps at most 4). --pose-demo adds a 3-key animation: rest at 0 s,
+      an IK bend of the end joint at 0.5 s, rest at 1 s. --rig writes joints,
+      bones and weights as JSON; --plain-dp uses plain Douglas-Peucker
+      instead of the paper's CDP.
   example
       Builds the embedded example sketch into a rigged part and prints its figures.
   version

@@ -114,12 +114,9 @@ std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
     auto tail = [&](unsigned b) -> Vec3 {
         if (!childBones[b].empty())
             return head(childBones[b].front());
-        const aiNode& node = tree.node(nodes[b]);
-        const std::string tip = std::string(node.mName.C_Str()) + "_end";
-        for (unsigned c = 0; c < node.mNumChildren; ++c)
-            if (tip == node.mChildren[c]->mName.C_Str())
-                return bindGlobal(*mesh.mBones[b], meshGlobal) *
-                       fromAi(node.mChildren[c]->mTransformation).translation();
+        const int tip = tree.find(std::string(tree.node(nodes[b]).mName.C_Str()) + "_end");
+        if (tip >= 0)
+            return tree.restGlobal(tip).translation();
         if (parentBone[b] >= 0) {
             const Vec3 along = head(b) - head(static_cast<unsigned>(parentBone[b]));
             return head(b) + 0.5 * along;

@@ -20,7 +20,7 @@ namespace {
 // Part names made safe and unique (notes item 2: every node name unique).
 std::vector<std::string> uniquePartNames(const std::vector<ExportPart>& parts) {
     std::vector<std::string> names;
-    std::set<std::string> used = {"RootNode", "Armature"};
+    std::set<std::string> used = {"RootNode", "Armature", "BoneTips"};
     for (std::size_t i = 0; i < parts.size(); ++i) {
         const std::string wanted =
             sanitizedName(parts[i].name.empty() ? parts[i].part->name : parts[i].name);
@@ -51,7 +51,7 @@ void setChildren(aiNode* parent, const std::vector<aiNode*>& children) {
 }
 
 // One node per bone at its head, parented by the bone hierarchy (issue 6
-// item 1), nodes in the bind pose (notes item 6); `<bone>_end` at leaf tails.
+// item 1), nodes in the bind pose (notes item 6).
 std::vector<aiNode*> boneNodes(const ExportRig& rig) {
     std::vector<aiNode*> nodes;
     std::vector<std::vector<aiNode*>> children(rig.nodes.size());
@@ -59,14 +59,20 @@ std::vector<aiNode*> boneNodes(const ExportRig& rig) {
         nodes.push_back(newNode(n.name, n.restTranslation));
     std::vector<aiNode*> roots;
     for (std::size_t i = 0; i < rig.nodes.size(); ++i) {
-        const ExportBoneNode& n = rig.nodes[i];
-        if (n.leaf)
-            children[i].push_back(newNode(n.name + "_end", n.tail - n.head));
-        (n.parent < 0 ? roots : children[static_cast<std::size_t>(n.parent)]).push_back(nodes[i]);
+        const int parent = rig.nodes[i].parent;
+        (parent < 0 ? roots : children[static_cast<std::size_t>(parent)]).push_back(nodes[i]);
     }
     for (std::size_t i = 0; i < nodes.size(); ++i)
         setChildren(nodes[i], children[i]);
     return roots;
+}
+
+// `<bone>_end` at each leaf bone's tail, outside the joint hierarchy: COLLADA
+// would turn a child of a joint into one more bone in Blender.
+void addTipNodes(const ExportRig& rig, std::vector<aiNode*>& tips) {
+    for (const ExportBoneNode& n : rig.nodes)
+        if (n.leaf)
+            tips.push_back(newNode(n.name + "_end", n.tail));
 }
 
 // Skin weights cut to the format's influences (notes item 9), one aiBone per
@@ -176,7 +182,7 @@ void buildAssimpScene(aiScene& scene, const std::vector<ExportPart>& parts, cons
     // Notes items 1 and 7: identity root; meshes on child nodes; bones under
     // `Armature`, a sibling of the mesh nodes (notes item 12).
     scene.mRootNode = new aiNode("RootNode");
-    std::vector<aiNode*> rootChildren, armatureChildren;
+    std::vector<aiNode*> rootChildren, armatureChildren, tips;
     scene.mNumMeshes = static_cast<unsigned>(parts.size());
     scene.mMeshes = new aiMesh*[parts.size()];
     std::vector<ExportRig> rigs;
@@ -194,11 +200,15 @@ void buildAssimpScene(aiScene& scene, const std::vector<ExportPart>& parts, cons
         addBones(mesh, *parts[i].part, rigs.back(), influences);
         for (aiNode* root : boneNodes(rigs.back()))
             armatureChildren.push_back(root);
+        addTipNodes(rigs.back(), tips);
     }
     if (rigged) {
         aiNode* armature = new aiNode("Armature");
         setChildren(armature, armatureChildren);
         rootChildren.push_back(armature);
+        aiNode* tipGroup = new aiNode("BoneTips");
+        setChildren(tipGroup, tips);
+        rootChildren.push_back(tipGroup);
     }
     setChildren(scene.mRootNode, rootChildren);
 

@@ -3,8 +3,9 @@
 // the bone's head (its joint nearer the root) as Blender's bones are, and
 // parented by the bone hierarchy, so that bones sharing a joint are separate
 // nodes that rotate independently. Root bones hang from the `Armature` node.
-// A leaf bone also gets a tip node `<bone>_end` (no skin) at its tail, so the
-// tail joint survives the round trip.
+// A leaf bone also gets a tip node `<bone>_end` (no skin, under a `BoneTips`
+// node beside the armature) at its tail, so the tail joint survives the
+// round trip.
 //
 // Positions are baked: a point x of the part becomes unitScale * placement(x).
 // Every bone node has the world axes at rest (our joint frames, Pose.h), so

@@ -5,12 +5,14 @@
 // an identity root node; one node per part carrying its mesh (the part's
 // name); for rigged formats an `Armature` node beside them holding every
 // part's bones, one node per bone named `<part>_bone<id>`, placed at the
-// bone's head and parented by the bone hierarchy, plus a `<bone>_end` tip
-// node at each leaf bone's tail. Several parts are several skinned meshes on
-// that one hierarchy, each bound to its own bones. Nodes are in the bind pose;
-// each part's `pose` is used only by OBJ (restPose = false). The clip, if
-// any, animates part 0's bones (one channel per bone node, keys in seconds).
-// Coordinates: our parts are y up; glTF is y up, metres, as are our FBX
+// bone's head and parented by the bone hierarchy; and a `BoneTips` node
+// holding a `<bone>_end` node (no skin) at each leaf bone's tail, so that
+// tails survive the round trip (Blender shows them as empties). Several parts are several skinned
+// meshes on that one hierarchy, each bound to its own bones (Assimp 5.2.5's glTF exporter writes a
+// single skin listing every bone; each mesh's weights use only its own part's bones, and
+// importScene sorts them out again). Nodes are in the bind pose; each part's `pose` is used only by
+// OBJ (restPose = false). The clip, if any, animates part 0's bones (one channel per bone node,
+// keys in seconds). Coordinates: our parts are y up; glTF is y up, metres, as are our FBX
 // (UnitScaleFactor 100 = metres) and COLLADA files.
 #pragma once
 

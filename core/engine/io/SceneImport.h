@@ -8,7 +8,7 @@
 // from the exporter's). A skinned mesh gets a skeleton from the node
 // hierarchy of its bones: every bone node's head is a joint (joints at the
 // same place are one), its tail is the head of its first child bone, or its
-// `<bone>_end` tip node (SceneExport.h), or else half its parent's length
+// `<bone>_end` tip node anywhere in the file (SceneExport.h), or else half its parent's length
 // further along its parent's direction (a tenth of the mesh's size up for a
 // lone bone). The bind pose comes from the bones' offset (inverse bind)
 // matrices. The first animation becomes a Clip of the part whose bones it
