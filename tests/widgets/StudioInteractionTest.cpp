@@ -107,6 +107,42 @@ TEST_F(Studio, DraggingAJointChangesThePoseInOneUndoStep) {
         EXPECT_NEAR(q.angularDistance(Eigen::Quaterniond::Identity()), 0.0, 1e-12);
 }
 
+TEST_F(Studio, DraggingAPartMovesItAndCtrlDragTurnsIt) {
+    window->activateSketchTool();
+    const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
+    drag(viewport(), ellipseStroke(centre, 220, 60));
+    ASSERT_EQ(document()->partCount(), 1);
+    const model::PartId id = document()->parts().front().id;
+    const model::Placement before = document()->part(id).placement;
+    window->activateSelectTool();
+    QTest::qWait(50);  // the first paint frames the new part
+    // A pixel on the surface but away from every joint.
+    QPointF grab;
+    bool found = false;
+    for (double dy = 10; dy < 200 && !found; dy += 5) {
+        grab = QPointF(centre.x() + 30, centre.y() + dy);
+        found = viewport()->partAt(grab).has_value() && !viewport()->jointAt(grab).has_value();
+    }
+    ASSERT_TRUE(found);
+    std::vector<QPointF> path;
+    for (int i = 0; i <= 10; ++i)
+        path.emplace_back(grab.x() + 5.0 * i, grab.y());
+    drag(viewport(), path);
+    const model::Placement moved = document()->part(id).placement;
+    EXPECT_GT((moved.translation - before.translation).norm(), 0.0);
+    const int steps = document()->undoStack()->count();
+    // Ctrl + drag from a point on the part sweeps around its centre.
+    std::vector<QPointF> arc;
+    for (int i = 0; i <= 10; ++i) {
+        const double a = 0.05 * i;
+        arc.emplace_back(grab.x() + 50 + 50 * std::cos(a), grab.y() - 50 * std::sin(a));
+    }
+    drag(viewport(), arc, Qt::ControlModifier);
+    const model::Placement turned = document()->part(id).placement;
+    EXPECT_GT(turned.rotation.angularDistance(moved.rotation), 0.1);
+    EXPECT_LE(document()->undoStack()->count(), steps + 1);
+}
+
 TEST_F(Studio, SavedDocumentReopensWithTheSameContent) {
     window->activateSketchTool();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
