@@ -146,7 +146,9 @@ std::map<JointId, Eigen::Quaterniond> readRotations(const json& value) {
 
 JointId readJointId(const json& value, const std::string& what) {
     std::uint64_t id = 0;
-    if (value.is_number_unsigned()) {
+    if (value.is_number_integer()) {
+        if (value.get<std::int64_t>() < 0)
+            throw Error(what + " is not a joint id");
         id = value.get<std::uint64_t>();
     } else if (value.is_string()) {
         const std::string text = value.get<std::string>();
