@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "BuildCommand.h"
+#include "RunCommand.h"
 #include "base/Error.h"
 #include "model/ModelInfo.h"
 
@@ -27,6 +28,12 @@ commands:
       an IK bend of the end joint at 0.5 s, rest at 1 s. --rig writes joints,
       bones and weights as JSON; --plain-dp uses plain Douglas-Peucker
       instead of the paper's CDP.
+  run RECIPE.json [-o OUT.rigmesh|.glb|.gltf|.fbx|.dae|.obj]
+      Replays a recipe (a JSON list of the studio's commands: sketch, pose,
+      key, ...; see resources/recipes/camel.json) on a new document, prints
+      one line per step and writes the document: .rigmesh natively, the other
+      formats as for build, animated by the clip of the first part with keys.
+      A bad step stops with "step N (command): reason".
   example
       Builds the embedded example sketch into a rigged part and prints its figures.
   version
@@ -47,6 +54,8 @@ int main(int argc, char** argv) {
     try {
         if (command == "build")
             return rigmesh::cli::runBuild(arguments);
+        if (command == "run")
+            return rigmesh::cli::runRecipe(arguments);
         if (command == "example")
             return rigmesh::cli::runBuild({"example"});
         if (command == "version") {

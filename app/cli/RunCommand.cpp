@@ -1,0 +1,103 @@
+#include "RunCommand.h"
+
+#include <QCoreApplication>
+#include <QString>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "CommandLine.h"
+#include "base/Error.h"
+#include "io/ExportFormat.h"
+#include "io/SceneExport.h"
+#include "model/Document.h"
+#include "model/DocumentFile.h"
+#include "model/recipe/RecipeFile.h"
+
+namespace rigmesh::cli {
+namespace {
+
+bool isNativeDocument(const std::string& path) {
+    std::string suffix = std::filesystem::path(path).extension().string();
+    for (char& c : suffix)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return suffix == std::string(".") + model::DocumentFile::kSuffix;
+}
+
+ExportPart exportPartOf(const model::PartNode& node) {
+    ExportPart part;
+    part.part = node.part.get();
+    part.pose = node.pose;
+    part.placement = Eigen::Translation3d(node.placement.translation) * node.placement.rotation;
+    part.name = node.name.toStdString();
+    return part;
+}
+
+// Every part at its placement and current pose, in document order except
+// that the first part with keys goes first: exportScene animates part 0 with
+// the clip. Other parts' keys are not exported (said on stderr).
+void exportDocument(const model::Document& document, const std::string& path) {
+    exportFormatFromPath(path);  // an unknown extension fails before anything is built
+    if (document.partCount() == 0)
+        throw Error("the recipe made no parts to export");
+    const model::PartNode* animated = nullptr;
+    for (const model::PartNode& node : document.parts()) {
+        if (node.clip.keyCount() == 0)
+            continue;
+        if (!animated)
+            animated = &node;
+        else
+            std::fprintf(stderr,
+                         "rigmesh: warning: only one part's clip is exported (\"%s\"); the keys "
+                         "of \"%s\" are not\n",
+                         animated->name.toStdString().c_str(), node.name.toStdString().c_str());
+    }
+    std::vector<ExportPart> parts;
+    if (animated)
+        parts.push_back(exportPartOf(*animated));
+    for (const model::PartNode& node : document.parts()) {
+        if (&node != animated)
+            parts.push_back(exportPartOf(node));
+    }
+    exportScene(parts, animated ? &animated->clip : nullptr, path);
+}
+
+}  // namespace
+
+int runRecipe(const std::vector<std::string>& arguments) {
+    CommandLine line(arguments, {"-o"}, {});
+    if (line.positional().size() != 1)
+        throw Error("run needs exactly one recipe file (.json)");
+    const std::string recipePath = line.positional()[0];
+    const std::optional<std::string> out = line.value("-o");
+
+    // The commands translate their undo texts through QCoreApplication.
+    static int argc = 1;
+    static char name[] = "rigmesh";
+    static char* argv[] = {name, nullptr};
+    std::unique_ptr<QCoreApplication> application;
+    if (!QCoreApplication::instance())
+        application = std::make_unique<QCoreApplication>(argc, argv);
+
+    model::Document document;
+    int steps = 0;
+    model::runRecipeFile(document, recipePath, [&steps](const model::RecipeStepReport& report) {
+        ++steps;
+        std::printf("step %d (%s): %s\n", report.number, report.command.c_str(),
+                    report.summary.c_str());
+    });
+    std::printf("%d step%s, %d part%s\n", steps, steps == 1 ? "" : "s", document.partCount(),
+                document.partCount() == 1 ? "" : "s");
+    if (out) {
+        if (isNativeDocument(*out))
+            model::DocumentFile::write(document, QString::fromStdString(*out));
+        else
+            exportDocument(document, *out);
+        std::printf("wrote %s\n", out->c_str());
+    }
+    return 0;
+}
+
+}  // namespace rigmesh::cli
