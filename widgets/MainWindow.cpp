@@ -19,7 +19,9 @@
 
 #include "DocumentView.h"
 #include "base/Error.h"
+#include "dialogs/ExportDialog.h"
 #include "model/Autosave.h"
+#include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
 #include "model/commands/DeletePartCommand.h"
 #include "model/commands/ResetPoseCommand.h"
@@ -116,6 +118,8 @@ void MainWindow::createActions() {
     toolbar->addAction(
         add(file, tr("&Save"), QKeySequence::Save, &MainWindow::save, QStyle::SP_DialogSaveButton));
     add(file, tr("Save &As..."), QKeySequence::SaveAs, &MainWindow::saveAs);
+    file->addSeparator();
+    add(file, tr("&Export..."), QKeySequence(Qt::CTRL | Qt::Key_E), &MainWindow::exportDocument);
     file->addSeparator();
     add(file, tr("&Close"), QKeySequence::Close, [this] { closeDocument(tabs_->currentIndex()); });
     add(file, tr("&Quit"), QKeySequence::Quit, &QWidget::close);
@@ -395,6 +399,37 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
     event->accept();
+}
+
+void MainWindow::exportDocument() {
+    model::Document* document = currentDocument();
+    if (!document || document->partCount() == 0) {
+        showStatus(tr("Nothing to export: sketch a part first"), 4000);
+        return;
+    }
+    QString suggested = document->filePath();
+    suggested = suggested.isEmpty()
+                    ? QStringLiteral("untitled.glb")
+                    : QFileInfo(suggested).path() + QLatin1Char('/') +
+                          QFileInfo(suggested).completeBaseName() + QStringLiteral(".glb");
+    ExportDialog dialog(suggested, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    try {
+        const auto result =
+            model::exportDocument(*document, dialog.path().toStdString(), dialog.options(),
+                                  document->selection().part, true);
+        showStatus(
+            tr("Exported %1%2")
+                .arg(QFileInfo(dialog.path()).fileName(),
+                     result.warnings.isEmpty()
+                         ? QString()
+                         : QStringLiteral(" (") + result.warnings.join(QStringLiteral("; ")) +
+                               QLatin1Char(')')),
+            8000);
+    } catch (const rigmesh::Error& error) {
+        QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(error.what()));
+    }
 }
 
 void MainWindow::activateSelectTool() {

@@ -53,6 +53,7 @@ class MainWindow : public QMainWindow {
     void open();
     bool save();
     bool saveAs();
+    void exportDocument();
     bool closeDocument(int index);
     void activateSelectTool();
     void activateSketchTool();

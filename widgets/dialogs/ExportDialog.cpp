@@ -1,0 +1,99 @@
+#include "dialogs/ExportDialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+
+namespace rigmesh::widgets {
+namespace {
+
+struct Format {
+    const char* suffix;
+    const char* label;
+};
+constexpr Format kFormats[] = {{"glb", "glTF 2.0 binary (.glb)"},
+                               {"gltf", "glTF 2.0 (.gltf + .bin)"},
+                               {"fbx", "FBX binary (.fbx)"},
+                               {"dae", "COLLADA (.dae)"},
+                               {"obj", "Wavefront OBJ, static mesh (.obj)"}};
+
+}  // namespace
+
+ExportDialog::ExportDialog(const QString& suggestedPath, QWidget* parent) : QDialog(parent) {
+    setWindowTitle(tr("Export"));
+    path_ = new QLineEdit(suggestedPath, this);
+    auto* browse = new QPushButton(tr("Browse..."), this);
+    auto* pathRow = new QHBoxLayout;
+    pathRow->addWidget(path_);
+    pathRow->addWidget(browse);
+    format_ = new QComboBox(this);
+    for (const Format& f : kFormats)
+        format_->addItem(tr(f.label), QString::fromLatin1(f.suffix));
+    influences_ = new QSpinBox(this);
+    influences_->setRange(0, 16);
+    influences_->setValue(4);
+    influences_->setSpecialValueText(tr("all the format allows"));
+    influences_->setToolTip(
+        tr("Bones per vertex; extra influences are cut and the rest renormalised"));
+    currentPose_ = new QCheckBox(tr("Current pose instead of the rest pose"), this);
+    animation_ = new QCheckBox(tr("Animation (the selected part's keyed clip)"), this);
+    animation_->setChecked(true);
+    auto* form = new QFormLayout(this);
+    form->addRow(tr("File"), pathRow);
+    form->addRow(tr("Format"), format_);
+    form->addRow(tr("Influences"), influences_);
+    form->addRow(QString(), currentPose_);
+    form->addRow(QString(), animation_);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
+    form->addRow(buttons);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(browse, &QPushButton::clicked, this, &ExportDialog::browse);
+    connect(format_, &QComboBox::currentIndexChanged, this, &ExportDialog::formatChanged);
+    const int index = format_->findData(QFileInfo(suggestedPath).suffix().toLower());
+    format_->setCurrentIndex(index >= 0 ? index : 0);
+    formatChanged();
+}
+
+void ExportDialog::browse() {
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export to"), path_->text(),
+        tr("%1 (*.%2)").arg(format_->currentText(), format_->currentData().toString()));
+    if (!path.isEmpty())
+        path_->setText(path);
+}
+
+void ExportDialog::formatChanged() {
+    const QString suffix = format_->currentData().toString();
+    // Keep the file's suffix in step with the chosen format.
+    QFileInfo info(path_->text());
+    if (!path_->text().isEmpty() && info.suffix().toLower() != suffix)
+        path_->setText(info.path() + QLatin1Char('/') + info.completeBaseName() + QLatin1Char('.') +
+                       suffix);
+    const bool obj = suffix == QLatin1String("obj");
+    currentPose_->setEnabled(obj);
+    animation_->setEnabled(!obj);
+    influences_->setEnabled(!obj);
+}
+
+QString ExportDialog::path() const {
+    return path_->text();
+}
+
+ExportOptions ExportDialog::options() const {
+    ExportOptions options;
+    options.maxInfluences = influences_->value();
+    options.restPose = !currentPose_->isChecked();
+    options.animation = animation_->isChecked();
+    return options;
+}
+
+}  // namespace rigmesh::widgets
