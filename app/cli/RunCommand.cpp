@@ -39,7 +39,6 @@ ExportPart exportPartOf(const model::PartNode& node) {
 // that the first part with keys goes first: exportScene animates part 0 with
 // the clip. Other parts' keys are not exported (said on stderr).
 void exportDocument(const model::Document& document, const std::string& path) {
-    exportFormatFromPath(path);  // an unknown extension fails before anything is built
     if (document.partCount() == 0)
         throw Error("the recipe made no parts to export");
     const model::PartNode* animated = nullptr;
@@ -72,6 +71,8 @@ int runRecipe(const std::vector<std::string>& arguments) {
         throw Error("run needs exactly one recipe file (.json)");
     const std::string recipePath = line.positional()[0];
     const std::optional<std::string> out = line.value("-o");
+    if (out && !isNativeDocument(*out))
+        exportFormatFromPath(*out);  // an unknown extension fails before any step runs
 
     // The commands translate their undo texts through QCoreApplication.
     static int argc = 1;
