@@ -71,8 +71,14 @@ int runRecipe(const std::vector<std::string>& arguments) {
         throw Error("run needs exactly one recipe file (.json)");
     const std::string recipePath = line.positional()[0];
     const std::optional<std::string> out = line.value("-o");
-    if (out && !isNativeDocument(*out))
-        exportFormatFromPath(*out);  // an unknown extension fails before any step runs
+    if (out && !isNativeDocument(*out)) {
+        try {
+            exportFormatFromPath(*out);  // an unknown extension fails before any step runs
+        } catch (const Error&) {
+            throw Error("cannot write " + *out +
+                        ": unknown format; use .rigmesh, .glb, .gltf, .fbx, .dae or .obj");
+        }
+    }
 
     // The commands translate their undo texts through QCoreApplication.
     static int argc = 1;
