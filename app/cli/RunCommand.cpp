@@ -11,8 +11,8 @@
 #include "CommandLine.h"
 #include "base/Error.h"
 #include "io/ExportFormat.h"
-#include "io/SceneExport.h"
 #include "model/Document.h"
+#include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
 #include "model/recipe/RecipeFile.h"
 
@@ -24,43 +24,6 @@ bool isNativeDocument(const std::string& path) {
     for (char& c : suffix)
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return suffix == std::string(".") + model::DocumentFile::kSuffix;
-}
-
-ExportPart exportPartOf(const model::PartNode& node) {
-    ExportPart part;
-    part.part = node.part.get();
-    part.pose = node.pose;
-    part.placement = Eigen::Translation3d(node.placement.translation) * node.placement.rotation;
-    part.name = node.name.toStdString();
-    return part;
-}
-
-// Every part at its placement and current pose, in document order except
-// that the first part with keys goes first: exportScene animates part 0 with
-// the clip. Other parts' keys are not exported (said on stderr).
-void exportDocument(const model::Document& document, const std::string& path) {
-    if (document.partCount() == 0)
-        throw Error("the recipe made no parts to export");
-    const model::PartNode* animated = nullptr;
-    for (const model::PartNode& node : document.parts()) {
-        if (node.clip.keyCount() == 0)
-            continue;
-        if (!animated)
-            animated = &node;
-        else
-            std::fprintf(stderr,
-                         "rigmesh: warning: only one part's clip is exported (\"%s\"); the keys "
-                         "of \"%s\" are not\n",
-                         animated->name.toStdString().c_str(), node.name.toStdString().c_str());
-    }
-    std::vector<ExportPart> parts;
-    if (animated)
-        parts.push_back(exportPartOf(*animated));
-    for (const model::PartNode& node : document.parts()) {
-        if (&node != animated)
-            parts.push_back(exportPartOf(node));
-    }
-    exportScene(parts, animated ? &animated->clip : nullptr, path);
 }
 
 }  // namespace
@@ -101,7 +64,8 @@ int runRecipe(const std::vector<std::string>& arguments) {
         if (isNativeDocument(*out))
             model::DocumentFile::write(document, QString::fromStdString(*out));
         else
-            exportDocument(document, *out);
+            for (const QString& warning : model::exportDocument(document, *out).warnings)
+                std::fprintf(stderr, "rigmesh: warning: %s\n", warning.toStdString().c_str());
         std::printf("wrote %s\n", out->c_str());
     }
     return 0;
