@@ -1,6 +1,4 @@
-// The document model layer. It will hold the scene graph of parts, the clip,
-// the selection and the undo stack (studio issue); for now it only reports
-// what it is built on, so the CLI can link the same layers the studio will.
+// Versions of the layers the CLI and the studio are built on.
 #pragma once
 
 #include <QString>
