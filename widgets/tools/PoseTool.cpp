@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/Error.h"
+#include "model/PoseDrag.h"
 #include "model/commands/SetJointPinnedCommand.h"
 #include "model/commands/SetPoseCommand.h"
 #include "pose/InverseKinematics.h"
@@ -84,11 +85,8 @@ void PoseTool::dragWithIk(Viewport& viewport, const QPointF& pixel) {
     // The target on the view plane through the joint, in the part's frame.
     const Vec3 world = toEigen(viewport.viewPlanePoint(pixel, drag_->grabPoint));
     const Vec3 target = node.placement.rotation.conjugate() * (world - node.placement.translation);
-    const std::vector<JointId> pinned(node.pinnedJoints.begin(), node.pinnedJoints.end());
-    IkOptions options;
-    options.softReach = 0.05;  // smooth when the chain straightens (see InverseKinematics.h)
-    const IkResult result =
-        dragJoint(node.part->skeleton, node.pose, drag_->joint, target, pinned, options);
+    // The same IK as the recipe's "pose" step (model::dragPartJoint).
+    const IkResult result = model::dragPartJoint(node, drag_->joint, target);
     document.undoStack()->push(
         new model::SetPoseCommand(document, drag_->part, result.pose, drag_->joint));
 }
