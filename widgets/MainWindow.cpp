@@ -24,7 +24,9 @@
 #include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
 #include "model/commands/DeletePartCommand.h"
+#include "model/commands/ImportPartsCommand.h"
 #include "model/commands/ResetPoseCommand.h"
+#include "model/recipe/RecipeFromHistory.h"
 #include "panels/OutlinerPanel.h"
 #include "panels/PropertiesPanel.h"
 #include "tools/PoseTool.h"
@@ -119,7 +121,9 @@ void MainWindow::createActions() {
         add(file, tr("&Save"), QKeySequence::Save, &MainWindow::save, QStyle::SP_DialogSaveButton));
     add(file, tr("Save &As..."), QKeySequence::SaveAs, &MainWindow::saveAs);
     file->addSeparator();
+    add(file, tr("&Import..."), QKeySequence(Qt::CTRL | Qt::Key_I), &MainWindow::importFile);
     add(file, tr("&Export..."), QKeySequence(Qt::CTRL | Qt::Key_E), &MainWindow::exportDocument);
+    add(file, tr("Save History as &Recipe..."), QKeySequence(), &MainWindow::saveHistoryAsRecipe);
     file->addSeparator();
     add(file, tr("&Close"), QKeySequence::Close, [this] { closeDocument(tabs_->currentIndex()); });
     add(file, tr("&Quit"), QKeySequence::Quit, &QWidget::close);
@@ -399,6 +403,52 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
     event->accept();
+}
+
+void MainWindow::importFile() {
+    model::Document* document = currentDocument();
+    if (!document) {
+        newDocument();
+        document = currentDocument();
+    }
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Import"), QString(),
+                                     tr("Rigged scenes (*.glb *.gltf *.fbx *.dae);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    try {
+        auto command = model::ImportPartsCommand::create(*document, path);
+        const auto ids = command->partIds();
+        document->undoStack()->push(command.release());
+        if (!ids.empty())
+            document->setSelection({ids.front(), kNoJoint});
+        currentView()->viewport()->frameAll();
+        showStatus(
+            tr("Imported %1 part(s) from %2").arg(ids.size()).arg(QFileInfo(path).fileName()),
+            6000);
+    } catch (const rigmesh::Error& error) {
+        QMessageBox::warning(this, tr("Cannot import"), QString::fromStdString(error.what()));
+    }
+}
+
+void MainWindow::saveHistoryAsRecipe() {
+    model::Document* document = currentDocument();
+    if (!document)
+        return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save History as Recipe"),
+                                                      QStringLiteral("history.json"),
+                                                      tr("RigMesh recipes (*.json)"));
+    if (path.isEmpty())
+        return;
+    try {
+        model::saveHistoryAsRecipe(*document, path.toStdString());
+        showStatus(tr("Saved the history as %1: replay it with rigmesh run")
+                       .arg(QFileInfo(path).fileName()),
+                   6000);
+    } catch (const rigmesh::Error& error) {
+        QMessageBox::warning(this, tr("Cannot save the recipe"),
+                             QString::fromStdString(error.what()));
+    }
 }
 
 void MainWindow::exportDocument() {

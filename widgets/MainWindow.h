@@ -54,6 +54,8 @@ class MainWindow : public QMainWindow {
     bool save();
     bool saveAs();
     void exportDocument();
+    void importFile();
+    void saveHistoryAsRecipe();
     bool closeDocument(int index);
     void activateSelectTool();
     void activateSketchTool();

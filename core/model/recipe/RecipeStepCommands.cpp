@@ -11,6 +11,7 @@
 #include "model/commands/CreatePartCommand.h"
 #include "model/commands/DeleteKeyCommand.h"
 #include "model/commands/DeletePartCommand.h"
+#include "model/commands/ImportPartsCommand.h"
 #include "model/commands/KeyPoseCommand.h"
 #include "model/commands/MoveKeyCommand.h"
 #include "model/commands/MovePartCommand.h"
@@ -151,9 +152,20 @@ StepCommand clipSettings(const Context& c) {
     return make<SetClipSettingsCommand>(id, c.document, id, fps, interpolation, playback);
 }
 
+// "import": the rigged parts of a file (relative to the recipe).
+StepCommand importFile(const Context& c) {
+    std::filesystem::path path(readText(c.required("file"), "\"file\""));
+    if (path.is_relative())
+        path = c.baseDirectory / path;
+    auto command = ImportPartsCommand::create(c.document, QString::fromStdString(path.string()));
+    const auto ids = command->partIds();
+    return {std::move(command), ids.empty() ? kNoPart : ids.front(), {}};
+}
+
 const std::map<std::string, StepKind>& stepKinds() {
     static const std::map<std::string, StepKind> kinds = {
         {"sketch", {{"stroke", "points", "name", "placement", "options"}, sketch}},
+        {"import", {{"file"}, importFile}},
         {"delete",
          {{"part"},
           [](const Context& c) {

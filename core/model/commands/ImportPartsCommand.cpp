@@ -1,0 +1,69 @@
+#include "model/commands/ImportPartsCommand.h"
+
+#include <QFileInfo>
+
+#include <nlohmann/json.hpp>
+#include "base/Error.h"
+
+#include "io/SceneImport.h"
+
+namespace rigmesh::model {
+
+std::unique_ptr<ImportPartsCommand> ImportPartsCommand::create(Document& document,
+                                                               const QString& path) {
+    ImportedScene scene = importScene(path.toStdString());
+    if (scene.needsRig || scene.parts.empty())
+        throw Error(QFileInfo(path).fileName().toStdString() +
+                    " holds a mesh without a usable skeleton: rigging imported meshes is not "
+                    "available yet, so it was not imported" +
+                    (scene.message.empty() ? std::string() : " (" + scene.message + ")"));
+    std::vector<PartNode> nodes;
+    for (std::size_t i = 0; i < scene.parts.size(); ++i) {
+        PartNode node;
+        node.part = std::make_shared<const Part>(std::move(scene.parts[i].part));
+        node.name = QString::fromStdString(node.part->name);
+        if (node.name.isEmpty())
+            node.name = QFileInfo(path).completeBaseName();
+        node.pose = restPoseOf(node);
+        if (scene.clip && scene.clipPart == static_cast<int>(i))
+            node.clip = *scene.clip;
+        nodes.push_back(std::move(node));
+    }
+    // Ids are taken last, once nothing can fail any more.
+    for (PartNode& node : nodes)
+        node.id = document.allocatePartId();
+    return std::unique_ptr<ImportPartsCommand>(
+        new ImportPartsCommand(document, path, std::move(nodes)));
+}
+
+ImportPartsCommand::ImportPartsCommand(Document& document, QString path,
+                                       std::vector<PartNode> nodes)
+    : document_(document), path_(std::move(path)), nodes_(std::move(nodes)) {
+    setText(tr("Import %1").arg(QFileInfo(path_).fileName()));
+}
+
+void ImportPartsCommand::redo() {
+    for (const PartNode& node : nodes_)
+        document_.insertPart(document_.partCount(), node);
+}
+
+void ImportPartsCommand::undo() {
+    // Newest first, so each id given back is the most recently allocated one.
+    for (auto it = nodes_.rbegin(); it != nodes_.rend(); ++it) {
+        document_.removePart(it->id);
+        document_.releasePartId(it->id);
+    }
+}
+
+nlohmann::json ImportPartsCommand::recipeStep() const {
+    return {{"command", "import"}, {"file", path_.toStdString()}};
+}
+
+std::vector<PartId> ImportPartsCommand::partIds() const {
+    std::vector<PartId> ids;
+    for (const PartNode& node : nodes_)
+        ids.push_back(node.id);
+    return ids;
+}
+
+}  // namespace rigmesh::model

@@ -1,0 +1,84 @@
+// File > Import and the recipe's "import" step: rigged parts from a file come
+// in as parts (one undo step), a static mesh is refused with a clear message.
+#include <gtest/gtest.h>
+
+#include <QTemporaryDir>
+#include <nlohmann/json.hpp>
+
+#include "ModelTestSupport.h"
+#include "base/Error.h"
+#include "model/DocumentExport.h"
+#include "model/DocumentFile.h"
+#include "model/commands/ImportPartsCommand.h"
+#include "model/recipe/RecipeRunner.h"
+
+namespace rigmesh::model {
+namespace {
+
+using test::addPart;
+using test::bytesOf;
+using test::sharedStroke;
+
+class ImportParts : public testing::Test {
+  protected:
+    void SetUp() override {
+        ASSERT_TRUE(folder.isValid());
+        addPart(source, sharedStroke("y_branch"));
+        path = folder.filePath(QStringLiteral("y.glb")).toStdString();
+        exportDocument(source, path);
+    }
+    QTemporaryDir folder;
+    Document source;
+    std::string path;
+};
+
+TEST_F(ImportParts, RiggedFileComesInAsPartsInOneUndoStep) {
+    Document document;
+    const QByteArray before = bytesOf(document);
+    auto command = ImportPartsCommand::create(document, QString::fromStdString(path));
+    document.undoStack()->push(command.release());
+    ASSERT_EQ(document.partCount(), 1);
+    const Part& imported = *document.parts().front().part;
+    const Part& original = *source.parts().front().part;
+    EXPECT_EQ(imported.skeleton.boneCount(), original.skeleton.boneCount());
+    EXPECT_EQ(imported.weights.perVertex.size(), imported.mesh.vertices.size());
+    document.undoStack()->undo();
+    EXPECT_EQ(bytesOf(document), before);
+    document.undoStack()->redo();
+    EXPECT_EQ(document.partCount(), 1);
+}
+
+TEST_F(ImportParts, ImportedPartSurvivesSaveAndLoadExactly) {
+    Document document;
+    document.undoStack()->push(
+        ImportPartsCommand::create(document, QString::fromStdString(path)).release());
+    const QByteArray saved = bytesOf(document);
+    EXPECT_EQ(DocumentFile::toBytes(DocumentFile::fromBytes(saved)), saved);
+}
+
+TEST_F(ImportParts, StaticMeshIsRefusedWithAMessageAndChangesNothing) {
+    const std::string obj = folder.filePath(QStringLiteral("y.obj")).toStdString();
+    exportDocument(source, obj);
+    Document document;
+    const QByteArray before = bytesOf(document);
+    try {
+        ImportPartsCommand::create(document, QString::fromStdString(obj));
+        FAIL() << "a static mesh was imported";
+    } catch (const Error& error) {
+        EXPECT_NE(std::string(error.what()).find("not available yet"), std::string::npos)
+            << error.what();
+    }
+    EXPECT_EQ(bytesOf(document), before);
+}
+
+TEST_F(ImportParts, RecipeImportStepAddsTheFilesParts) {
+    Document document;
+    RecipeRunner runner(document, folder.path().toStdString());
+    runner.run(nlohmann::json{{"format", "rigmesh-recipe"},
+                              {"version", 1},
+                              {"steps", {{{"command", "import"}, {"file", "y.glb"}}}}});
+    EXPECT_EQ(document.partCount(), 1);
+}
+
+}  // namespace
+}  // namespace rigmesh::model
