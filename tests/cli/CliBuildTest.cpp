@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "CliRunner.h"
@@ -109,6 +110,35 @@ TEST(CliBuild, UnknownOutputFormatIsAClearError) {
 TEST(CliBuild, UnknownCommandAndOptionAreUsageErrors) {
     EXPECT_EQ(runCli("frobnicate").exitCode, 2);
     EXPECT_EQ(runCli("build example --frobnicate").exitCode, 1);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CliRun, ExampleRecipeExportsAnAnimatedGlb) {
+    const fs::path out = scratch("camel.glb");
+    fs::remove(out);
+    auto result = runCli("run '" + std::string(RIGMESH_RESOURCES) + "/recipes/camel.json' -o '" +
+                         out.string() + "'");
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_GT(fs::file_size(out), 1000u);
+}
+
+TEST(CliRun, BadStepNamesTheStepAndWritesNothing) {
+    const fs::path recipe = scratch("bad_recipe.json");
+    {
+        std::ofstream file(recipe);
+        file << R"({"format": "rigmesh-recipe", "version": 1, "steps": [
+            {"command": "sketch", "points": [[0, 0], [4, 0], [4, 1], [0, 1]], "name": "bar"},
+            {"command": "pose", "part": "bar", "joint": 4242, "target": [0, 0, 0]}]})";
+    }
+    const fs::path out = scratch("bad_recipe.glb");
+    fs::remove(out);
+    auto result = runCli("run '" + recipe.string() + "' -o '" + out.string() + "'");
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.err.find("step 2 (pose)"), std::string::npos) << result.err;
+    EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace
