@@ -15,8 +15,13 @@ packages=(
     qt6-base-dev libgl-dev libgl1-mesa-dri
     xvfb xauth
     libgtest-dev libgmock-dev libbenchmark-dev
-    blender python3-numpy nodejs npm
+    blender python3-numpy
 )
+# Node.js for the glTF validator: Debian's packages, unless a node and npm
+# are already there (another Node.js distribution would conflict with them).
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+    packages+=(nodejs npm)
+fi
 
 missing=()
 for package in "${packages[@]}"; do
