@@ -411,21 +411,30 @@ void MainWindow::importFile() {
         newDocument();
         document = currentDocument();
     }
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Import"), QString(),
-                                     tr("Rigged scenes (*.glb *.gltf *.fbx *.dae);;All files (*)"));
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import"), QString(),
+        tr("3D scenes (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;All files (*)"));
     if (path.isEmpty())
         return;
     try {
         auto command = model::ImportPartsCommand::create(*document, path);
         const auto ids = command->partIds();
+        const int unrigged = command->unrigged();
         document->undoStack()->push(command.release());
         if (!ids.empty())
             document->setSelection({ids.front(), kNoJoint});
         currentView()->viewport()->frameAll();
-        showStatus(
-            tr("Imported %1 part(s) from %2").arg(ids.size()).arg(QFileInfo(path).fileName()),
-            6000);
+        QString message =
+            tr("Imported %1 part(s) from %2").arg(ids.size()).arg(QFileInfo(path).fileName());
+        if (unrigged > 0) {
+            // Say so rather than fail silently: the mesh is here, its rig is not.
+            message +=
+                tr(": %1 of them without a skeleton. Rigging imported meshes is not available "
+                   "yet, so they cannot be posed; you can move, save and export them as OBJ.")
+                    .arg(unrigged);
+            QMessageBox::information(this, tr("Imported without a rig"), message);
+        }
+        showStatus(message, 8000);
     } catch (const rigmesh::Error& error) {
         QMessageBox::warning(this, tr("Cannot import"), QString::fromStdString(error.what()));
     }

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 
 #include "base/Error.h"
+#include "io/ExportFormat.h"
 
 namespace rigmesh::model {
 namespace {
@@ -28,6 +29,12 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
             nodes.push_back(&node);
     if (nodes.empty())
         throw Error("there are no parts to export");
+    if (isRiggedFormat(exportFormatFromPath(path)))
+        for (const PartNode* node : nodes)
+            if (node->part->skeleton.jointCount() == 0)
+                throw Error("\"" + node->name.toStdString() +
+                            "\" is not rigged yet: export it as OBJ, or hide it and export the "
+                            "visible parts");
 
     // exportScene animates part 0 with the clip: the animated part goes first.
     const PartNode* animated = nullptr;

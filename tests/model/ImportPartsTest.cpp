@@ -56,18 +56,34 @@ TEST_F(ImportParts, ImportedPartSurvivesSaveAndLoadExactly) {
     EXPECT_EQ(DocumentFile::toBytes(DocumentFile::fromBytes(saved)), saved);
 }
 
-TEST_F(ImportParts, StaticMeshIsRefusedWithAMessageAndChangesNothing) {
+TEST_F(ImportParts, StaticMeshComesInUnriggedAndSaysSo) {
     const std::string obj = folder.filePath(QStringLiteral("y.obj")).toStdString();
     exportDocument(source, obj);
     Document document;
     const QByteArray before = bytesOf(document);
+    auto command = ImportPartsCommand::create(document, QString::fromStdString(obj));
+    EXPECT_EQ(command->unrigged(), 1);
+    document.undoStack()->push(command.release());
+    ASSERT_EQ(document.partCount(), 1);
+    const PartNode& node = document.parts().front();
+    EXPECT_EQ(node.part->skeleton.jointCount(), 0);
+    EXPECT_EQ(node.part->mesh.faceCount(), source.parts().front().part->mesh.faceCount());
+    // It saves and reopens exactly.
+    const QByteArray saved = bytesOf(document);
+    EXPECT_EQ(DocumentFile::toBytes(DocumentFile::fromBytes(saved)), saved);
+    // Rigged formats refuse it with a reason; OBJ takes it.
     try {
-        ImportPartsCommand::create(document, QString::fromStdString(obj));
-        FAIL() << "a static mesh was imported";
+        exportDocument(document, folder.filePath(QStringLiteral("again.glb")).toStdString());
+        FAIL() << "an unrigged part was exported to glTF";
     } catch (const Error& error) {
-        EXPECT_NE(std::string(error.what()).find("not available yet"), std::string::npos)
+        EXPECT_NE(std::string(error.what()).find("not rigged yet"), std::string::npos)
             << error.what();
     }
+    ExportOptions posed;
+    posed.restPose = false;
+    EXPECT_NO_THROW(exportDocument(
+        document, folder.filePath(QStringLiteral("again.obj")).toStdString(), posed));
+    document.undoStack()->undo();
     EXPECT_EQ(bytesOf(document), before);
 }
 

@@ -11,8 +11,10 @@
 #include "MainWindow.h"
 #include "StudioTestSupport.h"
 #include "model/Document.h"
+#include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
 #include "model/commands/CreatePartCommand.h"
+#include "model/commands/ImportPartsCommand.h"
 #include "panels/OutlinerPanel.h"
 #include "sketch/Sketch.h"
 
@@ -152,6 +154,25 @@ TEST_F(Studio, DraggingAPartMovesItAndCtrlDragTurnsIt) {
     const model::Placement turned = document()->part(id).placement;
     EXPECT_GT(turned.rotation.angularDistance(moved.rotation), 0.1);
     EXPECT_LE(document()->undoStack()->count(), steps + 1);
+}
+
+TEST_F(Studio, UnriggedImportedMeshIsDrawnAndCannotBePosed) {
+    window->activateSketchTool();
+    const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
+    drag(viewport(), ellipseStroke(centre, 220, 60));
+    ASSERT_EQ(document()->partCount(), 1);
+    const QString obj = recovery.filePath(QStringLiteral("static.obj"));
+    model::exportDocument(*document(), obj.toStdString());
+    document()->undoStack()->push(model::ImportPartsCommand::create(*document(), obj).release());
+    ASSERT_EQ(document()->partCount(), 2);
+    viewport()->frameAll();
+    QTest::qWait(50);  // paints both parts; the unrigged one at rest
+    const QImage frame = viewport()->grabFramebuffer();
+    EXPECT_FALSE(frame.isNull());
+    window->activatePoseTool();
+    document()->setSelection({document()->parts().back().id, kNoJoint});
+    QTest::keyClick(window.get(), Qt::Key_R, Qt::AltModifier);  // reset pose: nothing to do
+    EXPECT_EQ(document()->partCount(), 2);
 }
 
 TEST_F(Studio, SavedDocumentReopensWithTheSameContent) {

@@ -55,9 +55,11 @@ void PropertiesPanel::refresh() {
     const model::PartNode* node =
         document_ ? document_->findPart(document_->selection().part) : nullptr;
     const bool hasPart = node && node->part;
-    edgeLength_->setEnabled(hasPart);
-    smoothing_->setEnabled(hasPart);
-    rebuildButton_->setEnabled(hasPart);
+    // Only sketched parts can be rebuilt: they have a stroke.
+    const bool rebuildable = hasPart && !node->stroke.empty();
+    edgeLength_->setEnabled(rebuildable);
+    smoothing_->setEnabled(rebuildable);
+    rebuildButton_->setEnabled(rebuildable);
     if (!hasPart) {
         title_->setText(tr("No part selected"));
         figures_->setText(tr("Select a part in the viewport or the outliner."));
@@ -65,12 +67,17 @@ void PropertiesPanel::refresh() {
     }
     const Part& part = *node->part;
     title_->setText(node->name);
-    figures_->setText(tr("%1 vertices, %2 faces\n%3 joints, %4 bones\nstroke of %5 points")
-                          .arg(part.mesh.vertexCount())
-                          .arg(part.mesh.faceCount())
-                          .arg(part.skeleton.jointCount())
-                          .arg(part.skeleton.boneCount())
-                          .arg(node->stroke.size()));
+    figures_->setText(
+        tr("%1 vertices, %2 faces\n%3 joints, %4 bones\nstroke of %5 points")
+            .arg(part.mesh.vertexCount())
+            .arg(part.mesh.faceCount())
+            .arg(part.skeleton.jointCount())
+            .arg(part.skeleton.boneCount())
+            .arg(node->stroke.size()) +
+        (part.skeleton.jointCount() == 0
+             ? tr("\nNot rigged: imported as a static mesh. Rigging imported meshes is "
+                  "not available yet.")
+             : QString()));
     edgeLength_->setValue(node->options.targetEdgeLength);
     smoothing_->setChecked(node->options.smoothing);
 }

@@ -87,7 +87,11 @@ const PosedSkeleton& Viewport::posedSkeleton(const model::PartNode& node) const 
         cached.pose.rootTranslation != node.pose.rootTranslation) {
         cached.part = node.part.get();
         cached.pose = node.pose;
-        cached.posed = forwardKinematics(node.part->skeleton, node.pose);
+        // A part without a skeleton (a static mesh imported unrigged) has
+        // nothing to pose: it is drawn at rest.
+        cached.posed = node.part->skeleton.jointCount() > 0
+                           ? forwardKinematics(node.part->skeleton, node.pose)
+                           : PosedSkeleton{};
     }
     return cached.posed;
 }

@@ -116,7 +116,8 @@ aiMesh* makeMesh(const ExportPart& item, const std::string& name, ExportFormat f
                  const ExportOptions& options) {
     const Part& part = *item.part;
     TriMesh mesh = part.mesh;
-    if (format == ExportFormat::Obj && !options.restPose)
+    // A part without a skeleton (imported unrigged) has only its rest pose.
+    if (format == ExportFormat::Obj && !options.restPose && part.skeleton.jointCount() > 0)
         mesh = posePart(part, item.pose).mesh;
     const std::vector<Vec3> normals = vertexNormals(mesh);
     const Eigen::Matrix3d rotation = item.placement.rotation();

@@ -12,11 +12,8 @@ namespace rigmesh::model {
 std::unique_ptr<ImportPartsCommand> ImportPartsCommand::create(Document& document,
                                                                const QString& path) {
     ImportedScene scene = importScene(path.toStdString());
-    if (scene.needsRig || scene.parts.empty())
-        throw Error(QFileInfo(path).fileName().toStdString() +
-                    " holds a mesh without a usable skeleton: rigging imported meshes is not "
-                    "available yet, so it was not imported" +
-                    (scene.message.empty() ? std::string() : " (" + scene.message + ")"));
+    if (scene.parts.empty())
+        throw Error(QFileInfo(path).fileName().toStdString() + " holds no mesh to import");
     std::vector<PartNode> nodes;
     for (std::size_t i = 0; i < scene.parts.size(); ++i) {
         PartNode node;
@@ -57,6 +54,13 @@ void ImportPartsCommand::undo() {
 
 nlohmann::json ImportPartsCommand::recipeStep() const {
     return {{"command", "import"}, {"file", path_.toStdString()}};
+}
+
+int ImportPartsCommand::unrigged() const {
+    int count = 0;
+    for (const PartNode& node : nodes_)
+        count += node.part->skeleton.jointCount() == 0 ? 1 : 0;
+    return count;
 }
 
 std::vector<PartId> ImportPartsCommand::partIds() const {

@@ -1,8 +1,9 @@
-// Imports the rigged parts of a file (glTF, FBX, COLLADA, or anything Assimp
+// Imports the parts of a file (glTF, FBX, COLLADA, OBJ, or anything Assimp
 // reads) as new parts: mesh, skeleton, skin weights, and the file's clip on
-// the part it animates. The file is read in create(), before anything is
-// pushed. A static mesh without a usable skeleton is refused with a message
-// that says so: rigging imported meshes is not available yet.
+// the part it animates. A static mesh without a usable skeleton comes in as
+// an unrigged part: shown, moved, saved and exported as a mesh, posable once
+// rigged (rigging imported meshes is not available yet; unrigged() says so).
+// The file is read in create(), before anything is pushed.
 #pragma once
 
 #include <QCoreApplication>
@@ -24,6 +25,8 @@ class ImportPartsCommand : public QUndoCommand, public RecipeStepSource {
     void undo() override;
     nlohmann::json recipeStep() const override;
     std::vector<PartId> partIds() const;
+    // How many of the imported parts have no skeleton yet.
+    int unrigged() const;
 
   private:
     ImportPartsCommand(Document& document, QString path, std::vector<PartNode> nodes);
