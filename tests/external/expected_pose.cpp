@@ -42,7 +42,9 @@ namespace {
 
 using rigmesh::Vec3;
 
-nlohmann::json point(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+nlohmann::json point(const Vec3& p) {
+    return {p.x(), p.y(), p.z()};
+}
 
 // A few vertices worth checking: those the pose moves most (the bend, where
 // weights and bones matter), those where glTF's cut to 4 influences changes
@@ -79,8 +81,7 @@ int run(int argc, char** argv) {
         std::fprintf(stderr, "usage: expected_pose SKETCH OUT.json [--max-influences N]\n");
         return 2;
     }
-    const int requested =
-        argc == 5 ? std::atoi(argv[4]) : rigmesh::ExportOptions{}.maxInfluences;
+    const int requested = argc == 5 ? std::atoi(argv[4]) : rigmesh::ExportOptions{}.maxInfluences;
 
     const rigmesh::Sketch sketch = rigmesh::readSketchFile(argv[1]);
     const rigmesh::Part part = rigmesh::sketchToPart(sketch.points, sketch.name).part;
