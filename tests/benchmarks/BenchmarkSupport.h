@@ -2,6 +2,8 @@
 // built at a requested vertex count.
 #pragma once
 
+#include <benchmark/benchmark.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -56,6 +58,18 @@ inline SketchToSurfaceOptions optionsForVertexCount(const std::vector<Vec2>& str
             std::sqrt(static_cast<double>(obtained) / targetVertices);
     }
     return options;
+}
+
+// The main() of every benchmark program: register (after Google Benchmark
+// has read its flags), then run what the filter selects.
+inline int runBenchmarks(int argc, char** argv, void (*registerBenchmarks)()) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 1;
+    registerBenchmarks();
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
 }
 
 }  // namespace rigmesh::bench

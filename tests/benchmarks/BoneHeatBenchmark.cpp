@@ -248,12 +248,5 @@ void registerBenchmarks() {
 }  // namespace rigmesh::bench
 
 int main(int argc, char** argv) {
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
-        return 1;
-    }
-    rigmesh::bench::registerBenchmarks();
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return rigmesh::bench::runBenchmarks(argc, argv, rigmesh::bench::registerBenchmarks);
 }

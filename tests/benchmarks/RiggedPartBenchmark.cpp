@@ -85,11 +85,5 @@ void registerBenchmarks() {
 }  // namespace rigmesh::bench
 
 int main(int argc, char** argv) {
-    rigmesh::bench::registerBenchmarks();
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv))
-        return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return rigmesh::bench::runBenchmarks(argc, argv, rigmesh::bench::registerBenchmarks);
 }
