@@ -12,7 +12,7 @@ packages=(
     libcgal-dev libgmp-dev libmpfr-dev libboost-dev
     libeigen3-dev libsuitesparse-dev
     nlohmann-json3-dev libtinyxml2-dev libassimp-dev
-    qt6-base-dev libgl-dev libgl1-mesa-dri
+    qt6-base-dev libqt6opengl6-dev libgl-dev libgl1-mesa-dri
     xvfb xauth
     libgtest-dev libgmock-dev libbenchmark-dev
     blender python3-numpy
@@ -37,6 +37,16 @@ if ((${#missing[@]})); then
     export DEBIAN_FRONTEND=noninteractive
     $sudo apt-get update -qq
     $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# The package lists: apt-get needs them to install, and the test that checks
+# this script against the configured build (SetupInstallsEveryBuildPackage)
+# reads package dependencies from them. A fresh image may ship none.
+if ! compgen -G "/var/lib/apt/lists/*_Packages*" >/dev/null; then
+    echo "setup: fetching the Debian package lists (apt-get update)"
+    sudo=""
+    if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+    $sudo apt-get update -qq
 fi
 
 # The glTF validator of the external export tests (tests/external), pinned by
