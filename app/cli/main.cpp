@@ -2,10 +2,12 @@
 // the document model only, and runs what the studio runs, headless.
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
 #include "BuildCommand.h"
+#include "ImportCommand.h"
 #include "RunCommand.h"
 #include "base/Error.h"
 #include "model/ModelInfo.h"
@@ -34,6 +36,11 @@ commands:
       one line per step and writes the document: .rigmesh natively, the other
       formats as for build, animated by the clip of the first part with keys.
       A bad step stops with "step N (command): reason".
+  import FILE -o PARTS.rigmesh
+      Reads a mesh or rigged scene (.glb, .gltf, .fbx, .dae, .obj, .ply, ...)
+      and writes its parts as a document. The studio and `run` read imports
+      through this command in a separate process with time and memory
+      limits, so a broken file cannot take them down.
   example
       Builds the embedded example sketch into a rigged part and prints its figures.
   version
@@ -56,6 +63,8 @@ int main(int argc, char** argv) {
             return rigmesh::cli::runBuild(arguments);
         if (command == "run")
             return rigmesh::cli::runRecipe(arguments);
+        if (command == "import")
+            return rigmesh::cli::runImport(arguments);
         if (command == "example")
             return rigmesh::cli::runBuild({"example"});
         if (command == "version") {
@@ -67,6 +76,9 @@ int main(int argc, char** argv) {
         return 2;
     } catch (const rigmesh::Error& error) {
         std::fprintf(stderr, "rigmesh: %s\n", error.what());
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "rigmesh: out of memory\n");
         return 1;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "rigmesh: internal error: %s\n", error.what());

@@ -6,6 +6,8 @@
 #include <QCoreApplication>
 #include <memory>
 
+#include "model/ImportReader.h"
+
 namespace {
 
 class QtEnvironment : public ::testing::Environment {
@@ -13,6 +15,8 @@ class QtEnvironment : public ::testing::Environment {
     void SetUp() override {
         if (!QCoreApplication::instance())
             app_ = std::make_unique<QCoreApplication>(argc_, argv_);
+        // Imports are read by the built rigmesh in a child process.
+        rigmesh::model::setImportWorkerProgram(QStringLiteral(RIGMESH_CLI));
     }
     void TearDown() override { app_.reset(); }
 

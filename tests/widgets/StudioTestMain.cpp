@@ -6,6 +6,7 @@
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 
+#include "model/ImportReader.h"
 #include "viewport/Viewport.h"
 
 int main(int argc, char** argv) {
@@ -14,6 +15,8 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("RigMeshTests"));
     QApplication::setApplicationName(QStringLiteral("RigMesh Studio Tests"));
+    // Imports are read by the built rigmesh in a child process.
+    rigmesh::model::setImportWorkerProgram(QStringLiteral(RIGMESH_CLI));
     testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }

@@ -158,6 +158,14 @@ std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
     bool unweighted = false;
     for (auto& list : part.weights.perVertex) {
         std::sort(list.begin(), list.end());
+        // A file may weight one vertex twice by the same bone: one entry each.
+        std::vector<std::pair<int, double>> merged;
+        for (const auto& entry : list)
+            if (!merged.empty() && merged.back().first == entry.first)
+                merged.back().second += entry.second;
+            else
+                merged.push_back(entry);
+        list = std::move(merged);
         double sum = 0;
         for (const auto& [bone, w] : list)
             sum += w;

@@ -30,6 +30,15 @@ struct Part {
 
     // Bones as segments in the order of skeleton.bones().
     std::vector<BoneSegment> boneSegments() const;
+
+    // Human-readable problems that make this part unusable (at most a
+    // dozen); empty means valid: finite vertices, faces of three distinct
+    // vertices in range, per-vertex tables of the right length with indices
+    // in range, a skeleton that is a tree (or no skeleton at all, for an
+    // unrigged import), and weights that are finite, positive, sorted by
+    // bone and sum to 1 for every vertex. Every operation that changes a
+    // part checks its result with it; so does every reader of untrusted data.
+    std::vector<std::string> validate() const;
 };
 
 }  // namespace rigmesh

@@ -5,27 +5,16 @@
 #include <nlohmann/json.hpp>
 #include "base/Error.h"
 
-#include "io/SceneImport.h"
+#include "model/ImportReader.h"
 
 namespace rigmesh::model {
 
 std::unique_ptr<ImportPartsCommand> ImportPartsCommand::create(Document& document,
                                                                const QString& path) {
-    ImportedScene scene = importScene(path.toStdString());
-    if (scene.parts.empty())
+    // Read in a child process (Assimp may crash or loop on a broken file).
+    std::vector<PartNode> nodes = readImportedParts(path);
+    if (nodes.empty())
         throw Error(QFileInfo(path).fileName().toStdString() + " holds no mesh to import");
-    std::vector<PartNode> nodes;
-    for (std::size_t i = 0; i < scene.parts.size(); ++i) {
-        PartNode node;
-        node.part = std::make_shared<const Part>(std::move(scene.parts[i].part));
-        node.name = QString::fromStdString(node.part->name);
-        if (node.name.isEmpty())
-            node.name = QFileInfo(path).completeBaseName();
-        node.pose = restPoseOf(node);
-        if (scene.clip && scene.clipPart == static_cast<int>(i))
-            node.clip = *scene.clip;
-        nodes.push_back(std::move(node));
-    }
     // Ids are taken last, once nothing can fail any more.
     for (PartNode& node : nodes)
         node.id = document.allocatePartId();

@@ -1,0 +1,194 @@
+#include "base/ChildProcess.h"
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <thread>
+
+namespace rigmesh {
+namespace {
+
+// A temporary file that is already unlinked: it disappears with its last
+// descriptor, so no error path can leave it behind.
+int anonymousTemporaryFile() {
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / "rigmesh-child-XXXXXX").string();
+    const int fd = mkstemp(pattern.data());
+    if (fd >= 0)
+        unlink(pattern.c_str());
+    return fd;
+}
+
+std::string readBack(int fd, std::size_t maxBytes) {
+    std::string text;
+    if (lseek(fd, 0, SEEK_SET) != 0)
+        return text;
+    text.resize(maxBytes);
+    std::size_t got = 0;
+    while (got < maxBytes) {
+        const ssize_t n = read(fd, text.data() + got, maxBytes - got);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            break;
+        got += static_cast<std::size_t>(n);
+    }
+    text.resize(got);
+    return text;
+}
+
+int waitInterrupted(pid_t pid, int* status, int options) {
+    int result;
+    do {
+        result = waitpid(pid, status, options);
+    } while (result < 0 && errno == EINTR);
+    return result;
+}
+
+}  // namespace
+
+bool addressSpaceLimitsSupported() {
+#if defined(__SANITIZE_ADDRESS__)
+    return false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    return false;
+#else
+    return true;
+#endif
+#else
+    return true;
+#endif
+}
+
+ChildOutcome runChildProcess(const std::string& program, const std::vector<std::string>& arguments,
+                             const ChildLimits& limits) {
+    ChildOutcome outcome;
+    // Everything the child needs is prepared before fork: between fork and
+    // exec only async-signal-safe calls are allowed (the caller may have threads).
+    std::vector<std::string> storage;
+    storage.reserve(arguments.size() + 1);
+    storage.push_back(program);
+    storage.insert(storage.end(), arguments.begin(), arguments.end());
+    std::vector<char*> argv;
+    for (std::string& argument : storage)
+        argv.push_back(argument.data());
+    argv.push_back(nullptr);
+
+    const int errorFd = anonymousTemporaryFile();
+    if (errorFd < 0) {
+        outcome.standardError =
+            "cannot create a temporary file: " + std::string(std::strerror(errno));
+        return outcome;
+    }
+    // exec failure is reported through a close-on-exec pipe: it closes
+    // unread on success and carries errno on failure.
+    int execPipe[2];
+    if (pipe2(execPipe, O_CLOEXEC) != 0) {
+        outcome.standardError = "cannot create a pipe: " + std::string(std::strerror(errno));
+        close(errorFd);
+        return outcome;
+    }
+    const int nullFd = open("/dev/null", O_RDWR | O_CLOEXEC);
+    const bool limitAddressSpace = limits.addressSpaceBytes > 0 && addressSpaceLimitsSupported();
+    const auto start = std::chrono::steady_clock::now();
+
+    const pid_t pid = fork();
+    if (pid == 0) {
+        if (nullFd >= 0) {
+            dup2(nullFd, STDIN_FILENO);
+            dup2(nullFd, STDOUT_FILENO);
+        }
+        dup2(errorFd, STDERR_FILENO);
+        const rlimit noCore{0, 0};
+        setrlimit(RLIMIT_CORE, &noCore);
+        if (limitAddressSpace) {
+            const rlimit space{limits.addressSpaceBytes, limits.addressSpaceBytes};
+            setrlimit(RLIMIT_AS, &space);
+        }
+        execv(argv[0], argv.data());
+        const int failure = errno;
+        [[maybe_unused]] const ssize_t written = write(execPipe[1], &failure, sizeof failure);
+        _exit(127);
+    }
+    close(execPipe[1]);
+    if (nullFd >= 0)
+        close(nullFd);
+    if (pid < 0) {
+        outcome.standardError = "cannot start a process: " + std::string(std::strerror(errno));
+        close(execPipe[0]);
+        close(errorFd);
+        return outcome;
+    }
+
+    int status = 0;
+    bool ended = false;
+    auto pause = std::chrono::microseconds(500);
+    const auto deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(std::max(0.0, limits.seconds)));
+    while (!ended) {
+        const int result = waitInterrupted(pid, &status, WNOHANG);
+        if (result == pid) {
+            ended = true;
+        } else if (result < 0) {
+            break;  // not our child any more (cannot happen unless SIGCHLD is ignored)
+        } else if (std::chrono::steady_clock::now() >= deadline) {
+            kill(pid, SIGKILL);
+            waitInterrupted(pid, &status, 0);
+            outcome.end = ChildOutcome::End::TimedOut;
+            break;
+        } else {
+            std::this_thread::sleep_for(pause);
+            pause = std::min(pause * 2, std::chrono::microseconds(20000));
+        }
+    }
+    outcome.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    int execErrno = 0;
+    const bool execFailed = read(execPipe[0], &execErrno, sizeof execErrno) == sizeof execErrno;
+    close(execPipe[0]);
+    outcome.standardError = readBack(errorFd, limits.maxErrorBytes);
+    close(errorFd);
+
+    if (execFailed) {
+        outcome.end = ChildOutcome::End::FailedToStart;
+        outcome.standardError = "cannot run " + program + ": " + std::strerror(execErrno);
+    } else if (outcome.end == ChildOutcome::End::TimedOut) {
+        // set above
+    } else if (ended && WIFEXITED(status)) {
+        outcome.end = ChildOutcome::End::Exited;
+        outcome.exitCode = WEXITSTATUS(status);
+    } else if (ended && WIFSIGNALED(status)) {
+        outcome.end = ChildOutcome::End::Signalled;
+        outcome.signal = WTERMSIG(status);
+    } else {
+        outcome.end = ChildOutcome::End::FailedToStart;
+        outcome.standardError = "lost track of the process running " + program;
+    }
+    return outcome;
+}
+
+std::string lastLineStartingWith(const std::string& text, const std::string& prefix) {
+    std::string found;
+    std::size_t begin = 0;
+    while (begin < text.size()) {
+        std::size_t end = text.find('\n', begin);
+        if (end == std::string::npos)
+            end = text.size();
+        if (text.compare(begin, prefix.size(), prefix) == 0)
+            found = text.substr(begin + prefix.size(), end - begin - prefix.size());
+        begin = end + 1;
+    }
+    return found;
+}
+
+}  // namespace rigmesh

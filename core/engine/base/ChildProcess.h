@@ -1,0 +1,48 @@
+// Runs a program in a child process with a time limit and an address-space
+// limit, and says how it ended. For work we cannot trust not to crash, loop
+// or allocate without end: reading untrusted files through Assimp (issue 9
+// item 2). POSIX only (fork, execv, setrlimit, waitpid); no Qt.
+//
+// The child's standard output is discarded and its standard error kept (up
+// to `maxErrorBytes`), so a `rigmesh: <message>` line can be passed on.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace rigmesh {
+
+struct ChildLimits {
+    double seconds = 60.0;              // wall clock; the child is killed after it
+    std::size_t addressSpaceBytes = 0;  // RLIMIT_AS; 0 = no limit
+    std::size_t maxErrorBytes = 64 * 1024;
+};
+
+struct ChildOutcome {
+    enum class End {
+        Exited,         // exitCode is valid
+        Signalled,      // crashed or was killed by a signal other than ours
+        TimedOut,       // still running after ChildLimits::seconds: killed
+        FailedToStart,  // fork or exec failed (errorText says why)
+    };
+    End end = End::FailedToStart;
+    int exitCode = -1;
+    int signal = 0;
+    double seconds = 0.0;
+    std::string standardError;  // what the child wrote there, or why it did not start
+};
+
+// `program` is a path (no PATH search); `arguments` exclude argv[0].
+ChildOutcome runChildProcess(const std::string& program, const std::vector<std::string>& arguments,
+                             const ChildLimits& limits);
+
+// The last line of `text` that starts with `prefix`, without the prefix;
+// empty if none. E.g. the "rigmesh: " message of a failed child.
+std::string lastLineStartingWith(const std::string& text, const std::string& prefix);
+
+// Whether address-space limits can be used in this build (not under
+// AddressSanitizer, whose shadow memory needs terabytes of address space).
+bool addressSpaceLimitsSupported();
+
+}  // namespace rigmesh

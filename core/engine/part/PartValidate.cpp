@@ -1,0 +1,127 @@
+// Part::validate(): the invariants every part keeps (see Part.h).
+#include <cmath>
+#include <string>
+
+#include "part/Part.h"
+
+namespace rigmesh {
+namespace {
+
+constexpr std::size_t kMaxProblems = 12;
+// A vertex's weights sum to 1 within this (they are normalised in double).
+constexpr double kWeightSumTolerance = 1e-6;
+
+class Problems {
+  public:
+    void add(std::string text) {
+        if (list_.size() < kMaxProblems)
+            list_.push_back(std::move(text));
+    }
+    bool full() const { return list_.size() >= kMaxProblems; }
+    std::vector<std::string> take() { return std::move(list_); }
+
+  private:
+    std::vector<std::string> list_;
+};
+
+void checkMesh(const TriMesh& mesh, Problems& problems) {
+    for (int v = 0; v < mesh.vertexCount() && !problems.full(); ++v)
+        if (!mesh.vertices[v].allFinite())
+            problems.add("Vertex " + std::to_string(v) + " has a non-finite position.");
+    const int n = mesh.vertexCount();
+    for (int f = 0; f < mesh.faceCount() && !problems.full(); ++f) {
+        const auto& face = mesh.faces[f];
+        if (face[0] < 0 || face[0] >= n || face[1] < 0 || face[1] >= n || face[2] < 0 ||
+            face[2] >= n)
+            problems.add("Face " + std::to_string(f) + " refers to a missing vertex.");
+        else if (face[0] == face[1] || face[1] == face[2] || face[0] == face[2])
+            problems.add("Face " + std::to_string(f) + " repeats a vertex.");
+    }
+}
+
+// A per-vertex list of (bone index, value) pairs: bones in range and
+// increasing, values finite and positive.
+void checkBoneLists(const std::vector<std::vector<std::pair<int, double>>>& lists, int vertexCount,
+                    int boneCount, const std::string& what, bool sumsToOne, Problems& problems) {
+    if (lists.empty())
+        return;
+    if (static_cast<int>(lists.size()) != vertexCount) {
+        problems.add("The " + what + " have " + std::to_string(lists.size()) + " entries for " +
+                     std::to_string(vertexCount) + " vertices.");
+        return;
+    }
+    for (int v = 0; v < vertexCount && !problems.full(); ++v) {
+        const std::string where = "The " + what + " of vertex " + std::to_string(v);
+        double sum = 0.0;
+        int previous = -1;
+        bool ok = true;
+        for (const auto& [bone, value] : lists[v]) {
+            if (bone < 0 || bone >= boneCount) {
+                problems.add(where + " name bone " + std::to_string(bone) + ", which is missing.");
+                ok = false;
+            } else if (bone <= previous) {
+                problems.add(where + " are not in bone order.");
+                ok = false;
+            } else if (!std::isfinite(value) || value < 0.0 || (sumsToOne && value == 0.0)) {
+                problems.add(where + " hold a value that is not finite and positive.");
+                ok = false;
+            }
+            if (!ok)
+                break;
+            previous = bone;
+            sum += value;
+        }
+        if (ok && sumsToOne && std::abs(sum - 1.0) > kWeightSumTolerance)
+            problems.add(where + " sum to " + std::to_string(sum) + ", not 1.");
+    }
+}
+
+}  // namespace
+
+std::vector<std::string> Part::validate() const {
+    Problems problems;
+    for (const Vec2& p : outline)
+        if (!p.allFinite()) {
+            problems.add("The outline has a non-finite point.");
+            break;
+        }
+    checkMesh(mesh, problems);
+    const int n = mesh.vertexCount();
+    if (!origins.empty() && static_cast<int>(origins.size()) != n)
+        problems.add("The vertex origins do not have one entry per vertex.");
+    if (!mirror.empty() && static_cast<int>(mirror.size()) != n)
+        problems.add("The mirror map does not have one entry per vertex.");
+    for (int v = 0; v < static_cast<int>(mirror.size()) && v < n; ++v)
+        if (mirror[v] < 0 || mirror[v] >= n) {
+            problems.add("The mirror map refers to a missing vertex.");
+            break;
+        }
+
+    const int bones = skeleton.boneCount();
+    if (skeleton.jointCount() > 0) {
+        for (std::string& problem : skeleton.validate())
+            problems.add(std::move(problem));
+        if (bones > 0 && static_cast<int>(weights.perVertex.size()) != n)
+            problems.add("The skin weights do not have one entry per vertex.");
+        else
+            checkBoneLists(weights.perVertex, n, bones, "skin weights", true, problems);
+    } else {
+        // An unrigged part (a static import): no bones, no weights.
+        if (bones > 0)
+            problems.add("The skeleton has bones but no joints.");
+        for (const auto& list : weights.perVertex)
+            if (!list.empty()) {
+                problems.add("An unrigged part has skin weights.");
+                break;
+            }
+    }
+    for (int bone : weights.failedBones)
+        if (bone < 0 || bone >= bones) {
+            problems.add("The failed bones name a missing bone.");
+            break;
+        }
+    checkBoneLists(knownClosestBones, n, bones, "known closest bones", false, problems);
+    return problems.take();
+}
+
+}  // namespace rigmesh

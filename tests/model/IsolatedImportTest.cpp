@@ -1,0 +1,151 @@
+// Imports are read in a child process (model/ImportReader.h): whatever the
+// reader does (crash, hang, exhaust memory, return nonsense), the caller gets
+// an Error with a clear message and its document is unchanged.
+#include <gtest/gtest.h>
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <limits>
+
+#include "ModelTestSupport.h"
+#include "base/Error.h"
+#include "model/DocumentExport.h"
+#include "model/DocumentFile.h"
+#include "model/ImportReader.h"
+#include "model/commands/ImportPartsCommand.h"
+
+namespace rigmesh::model {
+namespace {
+
+using test::addPart;
+using test::bytesOf;
+using test::sharedStroke;
+
+// Stands in for the `rigmesh import` child with a shell script.
+class IsolatedImport : public testing::Test {
+  protected:
+    void SetUp() override {
+        ASSERT_TRUE(folder.isValid());
+        addPart(source, sharedStroke("tube"));
+        file = folder.filePath(QStringLiteral("tube.glb"));
+        exportDocument(source, file.toStdString());
+    }
+    void TearDown() override { setImportWorkerProgram({}); }
+
+    void useWorker(const QByteArray& script) {
+        const QString path = folder.filePath(QStringLiteral("worker.sh"));
+        QFile out(path);
+        ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+        out.write("#!/bin/sh\n" + script + "\n");
+        out.close();
+        out.setPermissions(QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+        setImportWorkerProgram(path);
+    }
+
+    // The message of the Error that importing `file` into `document` throws;
+    // the document must not change.
+    std::string importFailure(const ImportLimits* limits = nullptr) {
+        Document document;
+        addPart(document, sharedStroke("y_branch"));
+        const QByteArray before = bytesOf(document);
+        const int steps = document.undoStack()->count();
+        std::string message;
+        try {
+            if (limits)
+                readImportedParts(file, *limits);
+            else
+                document.undoStack()->push(ImportPartsCommand::create(document, file).release());
+            ADD_FAILURE() << "the import succeeded";
+        } catch (const Error& error) {
+            message = error.what();
+        }
+        EXPECT_EQ(bytesOf(document), before);
+        EXPECT_EQ(document.undoStack()->count(), steps);
+        return message;
+    }
+
+    QTemporaryDir folder;
+    Document source;
+    QString file;
+};
+
+TEST_F(IsolatedImport, RealWorkerReadsAFileIntoValidParts) {
+    const std::vector<PartNode> nodes = readImportedParts(file);
+    ASSERT_EQ(nodes.size(), 1u);
+    EXPECT_TRUE(nodes.front().part->validate().empty());
+    EXPECT_EQ(nodes.front().part->skeleton.boneCount(),
+              source.parts().front().part->skeleton.boneCount());
+}
+
+TEST_F(IsolatedImport, CrashingReaderGivesAMessageAndLeavesTheDocument) {
+    useWorker("kill -SEGV $$");
+    const std::string message = importFailure();
+    EXPECT_NE(message.find("tube.glb"), std::string::npos) << message;
+    EXPECT_NE(message.find("crashed"), std::string::npos) << message;
+}
+
+TEST_F(IsolatedImport, AbortingReaderGivesAMessage) {
+    useWorker("kill -ABRT $$");
+    EXPECT_NE(importFailure().find("crashed"), std::string::npos);
+}
+
+TEST_F(IsolatedImport, HangingReaderIsStoppedAtTheTimeLimit) {
+    useWorker("exec sleep 60");
+    ImportLimits limits;
+    limits.seconds = 0.5;
+    const std::string message = importFailure(&limits);
+    EXPECT_NE(message.find("longer than"), std::string::npos) << message;
+}
+
+TEST_F(IsolatedImport, ReadersOwnMessageIsPassedOn) {
+    useWorker("echo 'rigmesh: tube.glb: not a format Assimp reads' >&2; exit 1");
+    EXPECT_EQ(importFailure(), "tube.glb: not a format Assimp reads");
+}
+
+TEST_F(IsolatedImport, OutOfMemoryInTheReaderSaysSo) {
+    useWorker("echo 'rigmesh: out of memory' >&2; exit 1");
+    EXPECT_NE(importFailure().find("memory"), std::string::npos);
+}
+
+TEST_F(IsolatedImport, ReaderThatWritesNothingIsAnError) {
+    useWorker("exit 0");
+    EXPECT_NE(importFailure().find("bad data"), std::string::npos);
+}
+
+TEST_F(IsolatedImport, NonFiniteVertexFromTheReaderIsRefused) {
+    // A reader that "succeeds" with a NaN vertex: the result is checked.
+    DocumentContents contents;
+    contents.parts.push_back(source.parts().front());
+    auto broken = std::make_shared<Part>(*contents.parts.front().part);
+    broken->mesh.vertices[0].x() = std::numeric_limits<double>::quiet_NaN();
+    contents.parts.front().part = broken;
+    contents.nextPartId = contents.parts.front().id + 1;
+    const QString bad = folder.filePath(QStringLiteral("bad.rigmesh"));
+    QFile out(bad);
+    ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+    out.write(DocumentFile::toBytes(contents));
+    out.close();
+    // The child's arguments are: import FILE -o OUT.
+    useWorker("cp '" + bad.toUtf8() + "' \"$4\"");
+    const std::string message = importFailure();
+    EXPECT_NE(message.find("tube.glb"), std::string::npos) << message;
+    EXPECT_NE(message.find("finite"), std::string::npos) << message;
+}
+
+TEST_F(IsolatedImport, MissingReaderProgramSaysSo) {
+    setImportWorkerProgram(QStringLiteral("/nonexistent/rigmesh"));
+    EXPECT_NE(importFailure().find("cannot run"), std::string::npos);
+}
+
+TEST(ImportLimits, GrowWithTheFileAndStayBounded) {
+    const ImportLimits small = importLimitsFor(1000);
+    const ImportLimits large = importLimitsFor(std::uint64_t{1} << 40);
+    EXPECT_GE(small.seconds, 30.0);
+    EXPECT_GE(small.addressSpaceBytes, std::uint64_t{1} << 31);
+    EXPECT_LE(large.seconds, 600.0);
+    EXPECT_LE(large.addressSpaceBytes, std::uint64_t{8} << 30);
+    EXPECT_GE(large.addressSpaceBytes, small.addressSpaceBytes);
+}
+
+}  // namespace
+}  // namespace rigmesh::model
