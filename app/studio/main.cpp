@@ -7,6 +7,7 @@
 #include <QSurfaceFormat>
 
 #include <QTimer>
+#include <cstdio>
 #include "viewport/Viewport.h"
 
 #include "ExampleDocument.h"
@@ -34,6 +35,13 @@ int main(int argc, char** argv) {
         QStringLiteral("FILE"));
     parser.addOption(screenshot);
     parser.process(app);
+
+    // Without OpenGL (e.g. QT_QPA_PLATFORM=offscreen) the 3D view cannot
+    // exist: say so and stop, rather than crash on the first paint.
+    if (const QString reason = rigmesh::widgets::Viewport::unavailableReason(); !reason.isEmpty()) {
+        std::fprintf(stderr, "rigmesh-studio: %s\n", qPrintable(reason));
+        return 1;
+    }
 
     rigmesh::widgets::MainWindow window;
     const QStringList files = parser.positionalArguments();

@@ -1,5 +1,8 @@
 #include "viewport/Viewport.h"
 
+#include <QGuiApplication>
+#include <QOpenGLContext>
+
 #include <Eigen/Geometry>
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -110,6 +113,30 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     connect(document_, &model::Document::partChanged, this, refresh);
     connect(document_, &model::Document::selectionChanged, this, refresh);
     camera_.setView(0, 0);
+}
+
+QString Viewport::unavailableReason() {
+    // Probing with a context of our own: QOpenGLWidget on a platform without
+    // OpenGL only warns, and Qt 6.4 then crashes on the first window flush.
+    QOpenGLContext probe;
+    probe.setFormat(requiredFormat());
+    const QString platform = QGuiApplication::platformName();
+    if (!probe.create())
+        return tr("The 3D view needs OpenGL %1.%2 (core profile), which the \"%3\" display "
+                  "platform does not provide. Run RigMesh Studio on a desktop (X11 or Wayland) "
+                  "or under xvfb-run.")
+            .arg(requiredFormat().majorVersion())
+            .arg(requiredFormat().minorVersion())
+            .arg(platform);
+    const QSurfaceFormat got = probe.format();
+    if (got.version() < requiredFormat().version())
+        return tr("The 3D view needs OpenGL %1.%2, but the \"%3\" platform gives OpenGL %4.%5.")
+            .arg(requiredFormat().majorVersion())
+            .arg(requiredFormat().minorVersion())
+            .arg(platform)
+            .arg(got.majorVersion())
+            .arg(got.minorVersion());
+    return {};
 }
 
 QSurfaceFormat Viewport::requiredFormat() {

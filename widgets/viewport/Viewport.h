@@ -27,6 +27,10 @@ class Viewport : public QOpenGLWidget {
     // The context every viewport needs: OpenGL 3.3 core with a depth buffer.
     // Applications set it as the default before creating any window.
     static QSurfaceFormat requiredFormat();
+    // Why no viewport can be shown on this platform (empty if one can): the
+    // platform has no OpenGL (Qt's "offscreen" and "minimal" plugins) or no
+    // context of requiredFormat() can be made. Needs a QGuiApplication.
+    static QString unavailableReason();
     ~Viewport() override;
 
     model::Document* document() const { return document_; }
