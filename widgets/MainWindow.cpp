@@ -417,7 +417,16 @@ void MainWindow::importFile() {
     if (path.isEmpty())
         return;
     try {
-        auto command = model::ImportPartsCommand::create(*document, path);
+        // The file is read by a child process; the studio waits for it.
+        QApplication::setOverrideCursor(Qt::WaitCursor);
+        std::unique_ptr<model::ImportPartsCommand> command;
+        try {
+            command = model::ImportPartsCommand::create(*document, path);
+        } catch (...) {
+            QApplication::restoreOverrideCursor();
+            throw;
+        }
+        QApplication::restoreOverrideCursor();
         const auto ids = command->partIds();
         const int unrigged = command->unrigged();
         document->undoStack()->push(command.release());

@@ -77,7 +77,8 @@ std::vector<PartNode> partNodesFromScene(ImportedScene scene, const QString& pat
         PartNode node;
         node.part = std::make_shared<const Part>(std::move(scene.parts[i].part));
         node.name = QString::fromStdString(node.part->name);
-        if (node.name.isEmpty())
+        // Assimp names some roots itself ("<OFFRoot>", "<PLYRoot>"): not a user's name.
+        if (node.name.isEmpty() || (node.name.startsWith(u'<') && node.name.endsWith(u'>')))
             node.name = QFileInfo(path).completeBaseName();
         node.pose = restPoseOf(node);
         if (scene.clip && scene.clipPart == static_cast<int>(i))

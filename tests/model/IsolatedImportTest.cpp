@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "ModelTestSupport.h"
+#include "base/ChildProcess.h"
 #include "base/Error.h"
 #include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
@@ -135,6 +136,35 @@ TEST_F(IsolatedImport, NonFiniteVertexFromTheReaderIsRefused) {
 TEST_F(IsolatedImport, MissingReaderProgramSaysSo) {
     setImportWorkerProgram(QStringLiteral("/nonexistent/rigmesh"));
     EXPECT_NE(importFailure().find("cannot run"), std::string::npos);
+}
+
+// Inputs that really take Assimp down (tests/data/import/README.md).
+std::string realImportFailure(const char* name) {
+    Document document;
+    const QByteArray before = bytesOf(document);
+    try {
+        auto command = ImportPartsCommand::create(
+            document, QStringLiteral(RIGMESH_TEST_DATA "/import/") + QString::fromUtf8(name));
+        ADD_FAILURE() << name << " was imported";
+    } catch (const Error& error) {
+        EXPECT_EQ(bytesOf(document), before);
+        return error.what();
+    }
+    return {};
+}
+
+TEST(IsolatedImportOfBrokenFiles, AssimpAssertionBecomesAMessage) {
+    const std::string message = realImportFailure("assimp-assert-fbx-converter.fbx");
+    EXPECT_NE(message.find("assimp-assert-fbx-converter.fbx"), std::string::npos) << message;
+    EXPECT_NE(message.find("crashed"), std::string::npos) << message;
+}
+
+TEST(IsolatedImportOfBrokenFiles, RunawayAllocationStopsAtTheMemoryLimit) {
+    const std::string message = realImportFailure("runaway-allocation.dae");
+    EXPECT_NE(message.find("runaway-allocation.dae"), std::string::npos) << message;
+    if (addressSpaceLimitsSupported()) {
+        EXPECT_NE(message.find("memory"), std::string::npos) << message;
+    }
 }
 
 TEST(ImportLimits, GrowWithTheFileAndStayBounded) {

@@ -5,6 +5,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+extern char** environ;
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -53,6 +55,28 @@ int waitInterrupted(pid_t pid, int* status, int options) {
     return result;
 }
 
+// The child's environment: ours, and under AddressSanitizer (where RLIMIT_AS
+// cannot be used) a resident-memory limit that ASan itself enforces.
+std::vector<std::string> childEnvironment(const ChildLimits& limits) {
+    std::vector<std::string> environment;
+    std::string asanOptions;
+    for (char** entry = environ; entry && *entry; ++entry) {
+        if (std::strncmp(*entry, "ASAN_OPTIONS=", 13) == 0)
+            asanOptions = *entry + 13;
+        else
+            environment.emplace_back(*entry);
+    }
+    if (limits.addressSpaceBytes > 0 && !addressSpaceLimitsSupported()) {
+        if (!asanOptions.empty())
+            asanOptions += ':';
+        asanOptions += "allocator_may_return_null=1:hard_rss_limit_mb=" +
+                       std::to_string(limits.addressSpaceBytes >> 20);
+    }
+    if (!asanOptions.empty())
+        environment.push_back("ASAN_OPTIONS=" + asanOptions);
+    return environment;
+}
+
 }  // namespace
 
 bool addressSpaceLimitsSupported() {
@@ -82,6 +106,11 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
     for (std::string& argument : storage)
         argv.push_back(argument.data());
     argv.push_back(nullptr);
+    std::vector<std::string> environmentStorage = childEnvironment(limits);
+    std::vector<char*> envp;
+    for (std::string& entry : environmentStorage)
+        envp.push_back(entry.data());
+    envp.push_back(nullptr);
 
     const int errorFd = anonymousTemporaryFile();
     if (errorFd < 0) {
@@ -114,7 +143,7 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
             const rlimit space{limits.addressSpaceBytes, limits.addressSpaceBytes};
             setrlimit(RLIMIT_AS, &space);
         }
-        execv(argv[0], argv.data());
+        execve(argv[0], argv.data(), envp.data());
         const int failure = errno;
         [[maybe_unused]] const ssize_t written = write(execPipe[1], &failure, sizeof failure);
         _exit(127);
