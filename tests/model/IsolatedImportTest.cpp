@@ -31,7 +31,7 @@ class IsolatedImport : public testing::Test {
         file = folder.filePath(QStringLiteral("tube.glb"));
         exportDocument(source, file.toStdString());
     }
-    void TearDown() override { setImportWorkerProgram({}); }
+    void TearDown() override { setImportWorkerProgram(realWorker); }
 
     void useWorker(const QByteArray& script) {
         const QString path = folder.filePath(QStringLiteral("worker.sh"));
@@ -65,6 +65,7 @@ class IsolatedImport : public testing::Test {
         return message;
     }
 
+    const QString realWorker = importWorkerProgram();
     QTemporaryDir folder;
     Document source;
     QString file;

@@ -154,6 +154,19 @@ TEST(RecipeSteps, PoseByIkDragMatchesThePoseTool) {
     EXPECT_NE(reports[0].summary.find("distance to target"), std::string::npos);
 }
 
+TEST(RecipeSteps, PoseReachBodyMatchesTheAltDragOfThePoseTool) {
+    Sketched s;
+    const JointId joint = s.ends()[0];
+    const Vec3 target = s.node(1).part->skeleton.joint(joint).position + Vec3(0.1, 0.2, 0.05);
+    const rigmesh::Pose body = dragPartJoint(s.node(1), joint, target, IkReach::Body).pose;
+    runSteps(s.document, {{{"command", "pose"},
+                           {"part", "arm"},
+                           {"joint", joint},
+                           {"reach", "body"},
+                           {"target", {target.x(), target.y(), target.z()}}}});
+    EXPECT_TRUE(identicalPoses(s.node(1).pose, body));
+}
+
 TEST(RecipeSteps, PoseByRotationsPartialOrComplete) {
     Sketched s;
     const Skeleton& skeleton = s.node(1).part->skeleton;
@@ -248,6 +261,10 @@ TEST(RecipeSteps, ErrorsNameTheStepItsCommandAndTheReason) {
         {{{"command", "rebuild"}, {"part", 0}, {"options", {{"edgeLength", -1}}}},
          "step 1 (rebuild): \"edgeLength\" must be 0 (automatic) or a positive length"},
         {{{"command", "pose"}, {"part", 1}}, "step 1 (pose): the step needs either \"joint\""},
+        {{{"command", "pose"}, {"part", 1}, {"joint", 0}, {"target", {0, 0, 0}}, {"reach", "arm"}},
+         "step 1 (pose): \"reach\" must be \"limb\" or \"body\""},
+        {{{"command", "pose"}, {"part", 1}, {"rotations", json::object()}, {"reach", "body"}},
+         "step 1 (pose): \"reach\" goes with \"target\""},
         {{{"command", "pose"}, {"part", 1}, {"rotations", {{"424242", {1, 0, 0, 0}}}}},
          "step 1 (pose): part \"arm\" has no joint 424242"},
         {{{"command", "pose"}, {"part", 1}, {"rotations", {{"x", {1, 0, 0, 0}}}}},

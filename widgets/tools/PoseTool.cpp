@@ -29,8 +29,9 @@ JointId parentJoint(const Skeleton& skeleton, JointId joint) {
 
 QString PoseTool::hint() const {
     return tr(
-        "Pose: drag a joint (IK); Ctrl + drag turns its bone (FK); Shift + click pins or unpins a "
-        "joint");
+        "Pose: drag a joint (IK, this limb only); Alt + drag reaches through the whole body; Ctrl "
+        "+ "
+        "drag turns its bone (FK); Shift + click pins or unpins a joint");
 }
 
 void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
@@ -54,6 +55,7 @@ void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
     drag.grabPoint = viewport.jointWorldPosition(hit->part, hit->joint);
     drag.startPixel = event->position();
     drag.startPose = node.pose;
+    drag.wholeBody = (event->modifiers() & Qt::AltModifier) != 0;
     if (event->modifiers() & Qt::ControlModifier) {
         drag.forward = true;
         drag.pivot = parentJoint(node.part->skeleton, hit->joint);
@@ -86,7 +88,12 @@ void PoseTool::dragWithIk(Viewport& viewport, const QPointF& pixel) {
     const Vec3 world = toEigen(viewport.viewPlanePoint(pixel, drag_->grabPoint));
     const Vec3 target = node.placement.rotation.conjugate() * (world - node.placement.translation);
     // The same IK as the recipe's "pose" step (model::dragPartJoint).
-    const IkResult result = model::dragPartJoint(node, drag_->joint, target);
+    const IkResult result = model::dragPartJoint(
+        node, drag_->joint, target, drag_->wholeBody ? model::IkReach::Body : model::IkReach::Limb);
+    if (result.chain.empty() && !drag_->wholeBody)
+        emit hintMessage(
+            tr("This joint hangs from a junction: Alt + drag moves it with the body, "
+               "or Ctrl + drag turns its bone"));
     document.undoStack()->push(
         new model::SetPoseCommand(document, drag_->part, result.pose, drag_->joint));
 }

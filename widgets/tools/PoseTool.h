@@ -37,6 +37,7 @@ class PoseTool : public QObject, public ViewportTool {
         JointId joint = kNoJoint;
         QVector3D grabPoint;       // the joint's world position at the press
         bool forward = false;      // FK rotation rather than IK
+        bool wholeBody = false;    // IK up to the root (Alt), not just this limb
         JointId pivot = kNoJoint;  // FK: the head of the rotated bone
         QPointF startPixel;
         Pose startPose;

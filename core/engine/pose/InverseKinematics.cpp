@@ -197,20 +197,32 @@ IkResult dragJoint(const PoseHierarchy& h, const Pose& pose, JointId joint, cons
     }
 
     // Walk up to the base: the root, a pinned joint, or the last joint whose
-    // parent must stay still because another of its subtrees holds a pin.
-    std::vector<int> joints{dragged};
-    for (int current = dragged;;) {
-        const int parent = h.parent(current);
-        if (parent < 0)
-            break;
-        // Pins in the parent's other subtrees: turning it would move them.
-        if (pinsBelow[parent] - pinsBelow[current] - (isPinned[parent] ? 1 : 0) > 0)
-            break;
-        joints.push_back(parent);
-        if (isPinned[parent])
-            break;
-        current = parent;
-    }
+    // parent must stay still because another of its subtrees holds a pin (or,
+    // with limb reach, is a junction).
+    auto walkUp = [&](bool stopAtJunctions) {
+        std::vector<int> walked{dragged};
+        for (int current = dragged;;) {
+            const int parent = h.parent(current);
+            if (parent < 0)
+                break;
+            // Pins in the parent's other subtrees: turning it would move them.
+            if (pinsBelow[parent] - pinsBelow[current] - (isPinned[parent] ? 1 : 0) > 0)
+                break;
+            // Limb reach: a junction's turn would swing its other branches.
+            if (stopAtJunctions && h.children(parent).size() > 1)
+                break;
+            walked.push_back(parent);
+            if (isPinned[parent])
+                break;
+            current = parent;
+        }
+        return walked;
+    };
+    std::vector<int> joints = walkUp(options.stopAtJunctions);
+    // A joint hanging right below a junction has no bone of its own to turn
+    // (a joint's rotation carries every bone leaving it): reach on up.
+    if (joints.size() < 2 && options.stopAtJunctions)
+        joints = walkUp(false);
     std::reverse(joints.begin(), joints.end());
     if (joints.size() < 2)
         return result;

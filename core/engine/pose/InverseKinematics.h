@@ -26,6 +26,9 @@
 // Optional cone limits clamp the angle between a bone and where it would
 // point at its rest local rotation.
 //
+// With IkOptions::stopAtJunctions the chain also stops below the nearest
+// junction, so sibling limbs never move.
+//
 // Pinned joints keep their positions: the chain stops at a pinned ancestor,
 // and also below any chain joint whose other subtrees hold a pinned joint
 // (turning it would move them). A pinned dragged joint, or one with a pinned
@@ -61,6 +64,14 @@ struct IkOptions {
     // between the bone(s) it carries and their direction at its rest local
     // rotation. Joints not listed are free.
     std::unordered_map<JointId, double> coneLimits;
+    // Limb reach: the chain also stops below the nearest junction (a joint
+    // with two or more children), whose turn would swing its other branches:
+    // dragging a hand moves the arm, never the body or the other arm. Off
+    // (whole-body reach): up to the root or a pinned joint. A joint hanging
+    // directly from a junction has no bone of its own to turn (a joint's
+    // rotation carries every bone leaving it), so its drag reaches on up as
+    // with whole-body reach.
+    bool stopAtJunctions = false;
 };
 
 struct IkResult {

@@ -20,7 +20,9 @@
 //   pose          "part" and either
 //                   "joint" + "target": [x, y, z] in the part's frame: an IK drag
 //                   as the studio's pose tool does (current pose, pinned joints
-//                   kept), or
+//                   kept), optional "reach": "limb" (default: the chain stops
+//                   below the nearest junction, as a plain drag) or "body" (up
+//                   to the root, as Alt + drag), or
 //                   "rotations": {"<joint>": [w, x, y, z], ...}, optional
 //                   "rootTranslation": [x, y, z], optional "complete": true (the
 //                   joints not listed go to rest, the translation to 0; without

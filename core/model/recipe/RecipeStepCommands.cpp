@@ -109,15 +109,26 @@ StepCommand pose(const Context& c) {
             if (c.has(key))
                 throw Error(std::string("\"") + key + "\" goes with \"rotations\", not \"target\"");
         }
+        // "reach": "limb" (default, as the studio's drag) or "body" (Alt + drag).
+        IkReach reach = IkReach::Limb;
+        if (c.has("reach")) {
+            const std::string value =
+                c.step["reach"].is_string() ? c.step["reach"].get<std::string>() : "";
+            if (value != "limb" && value != "body")
+                throw Error("\"reach\" must be \"limb\" or \"body\"");
+            reach = value == "body" ? IkReach::Body : IkReach::Limb;
+        }
         const JointId joint = c.joint(node);
         const Vec3 target = readVec3(c.step["target"], "\"target\"");
-        const IkResult result = dragPartJoint(node, joint, target);
+        const IkResult result = dragPartJoint(node, joint, target, reach);
         std::ostringstream detail;
         detail << (result.reached ? "reached" : "out of reach") << ", distance to target "
                << result.distanceToTarget;
         return {std::make_unique<SetPoseCommand>(c.document, id, result.pose, joint), id,
                 detail.str()};
     }
+    if (c.has("reach"))
+        throw Error("\"reach\" goes with \"target\" (an IK drag), not \"rotations\"");
     const bool complete = c.has("complete") && readBool(c.step["complete"], "\"complete\"");
     rigmesh::Pose pose = complete ? rigmesh::Pose{} : node.pose;
     for (const auto& [joint, rotation] : readRotations(c.step["rotations"])) {
@@ -207,7 +218,8 @@ const std::map<std::string, StepKind>& stepKinds() {
                   c.has("options") ? readOptions(c.step["options"], current) : current;
               return StepCommand{RebuildPartCommand::create(c.document, id, options), id, {}};
           }}},
-        {"pose", {{"part", "joint", "target", "rotations", "rootTranslation", "complete"}, pose}},
+        {"pose",
+         {{"part", "joint", "target", "reach", "rotations", "rootTranslation", "complete"}, pose}},
         {"reset_pose",
          {{"part"},
           [](const Context& c) {

@@ -290,5 +290,67 @@ TEST(InverseKinematics, BadInputIsAnError) {
     EXPECT_THROW(dragJoint(chain, Pose{}, 2, Vec3(NAN, 0, 0)), Error);
 }
 
+// The joints a limb-reach drag of `leaf` may move: the subtree of the
+// highest joint below the nearest junction above it.
+std::vector<bool> limbOf(const PoseHierarchy& h, int leaf) {
+    int top = leaf;
+    while (h.parent(top) >= 0 && h.children(h.parent(top)).size() == 1)
+        top = h.parent(top);
+    std::vector<bool> inLimb(h.jointCount(), false);
+    for (int j : h.parentFirstOrder())
+        inLimb[j] = j == top || (h.parent(j) >= 0 && inLimb[h.parent(j)]);
+    return inLimb;
+}
+
+class LimbReach : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(LimbReach, DraggingALeafMovesOnlyItsLimbUnlessWholeBodyReach) {
+    const Skeleton& skeleton = sharedPart(GetParam()).skeleton;
+    const PoseHierarchy h(skeleton);
+    const double size = boundingBoxDiagonal(restPositions(skeleton));
+    const PosedSkeleton rest = forwardKinematics(h, Pose{});
+    int leaves = 0, limbsWithOwnBones = 0, siblingsMovedWithBodyReach = 0;
+    for (int leaf = 0; leaf < h.jointCount(); ++leaf) {
+        if (!h.children(leaf).empty() || leaf == h.root())
+            continue;
+        ++leaves;
+        const std::vector<bool> inLimb = limbOf(h, leaf);
+        // A leaf right below a junction has no bone of its own: its drag
+        // reaches on up, like whole-body reach.
+        const bool ownBone = inLimb[h.parent(leaf)];
+        limbsWithOwnBones += ownBone ? 1 : 0;
+        const Vec3 target = rest.jointPositions[leaf] + Vec3(0.1, 0.15, 0.05) * size;
+        IkOptions limb;
+        limb.stopAtJunctions = true;
+        const IkResult limbDrag = dragJoint(h, Pose{}, h.jointId(leaf), target, {}, limb);
+        const PosedSkeleton posed = forwardKinematics(h, limbDrag.pose);
+        EXPECT_LT((posed.jointPositions[leaf] - target).norm(),
+                  (rest.jointPositions[leaf] - target).norm())
+            << "the dragged joint did not move toward the target";
+        for (int j = 0; j < h.jointCount() && ownBone; ++j) {
+            if (!inLimb[j]) {
+                EXPECT_LT((posed.jointPositions[j] - rest.jointPositions[j]).norm(), 1e-9 * size)
+                    << "joint " << h.jointId(j) << " outside the dragged limb moved";
+            }
+        }
+        // Whole-body reach (the default) turns joints above the junction.
+        const PosedSkeleton body =
+            forwardKinematics(h, dragJoint(h, Pose{}, h.jointId(leaf), target).pose);
+        for (int j = 0; j < h.jointCount(); ++j)
+            if (!inLimb[j] &&
+                (body.jointPositions[j] - rest.jointPositions[j]).norm() > 1e-6 * size) {
+                ++siblingsMovedWithBodyReach;
+                break;
+            }
+    }
+    EXPECT_GE(leaves, 3);
+    if (GetParam() == "biped") {
+        EXPECT_GE(limbsWithOwnBones, 4) << "the biped's arms and legs have bones of their own";
+    }
+    EXPECT_GT(siblingsMovedWithBodyReach, 0) << "whole-body reach never moved another limb";
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedSketches, LimbReach, ::testing::Values("y_branch", "star", "biped"));
+
 }  // namespace
 }  // namespace rigmesh::posetest
