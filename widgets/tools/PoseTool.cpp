@@ -90,12 +90,8 @@ void PoseTool::dragWithIk(Viewport& viewport, const QPointF& pixel) {
     // The same IK as the recipe's "pose" step (model::dragPartJoint).
     const IkResult result = model::dragPartJoint(
         node, drag_->joint, target, drag_->wholeBody ? model::IkReach::Body : model::IkReach::Limb);
-    if (result.chain.empty() && !drag_->wholeBody)
-        emit hintMessage(
-            tr("This joint hangs from a junction: Alt + drag moves it with the body, "
-               "or Ctrl + drag turns its bone"));
-    document.undoStack()->push(
-        new model::SetPoseCommand(document, drag_->part, result.pose, drag_->joint));
+    // A live preview, warm starting the next step; one command on release.
+    document.previewPose(drag_->part, result.pose);
 }
 
 void PoseTool::rotateWithFk(Viewport& viewport, const QPointF& pixel) {
@@ -125,15 +121,25 @@ void PoseTool::rotateWithFk(Viewport& viewport, const QPointF& pixel) {
     pose.setRotation(drag_->pivot, (parentWorld.conjugate() * partTurn * parentWorld *
                                     drag_->startPose.rotation(drag_->pivot))
                                        .normalized());
-    document.undoStack()->push(
-        new model::SetPoseCommand(document, drag_->part, pose, drag_->joint));
+    // A live preview; the drag becomes one command on release.
+    document.previewPose(drag_->part, pose);
 }
 
-void PoseTool::release(Viewport&, QMouseEvent*) {
+void PoseTool::release(Viewport& viewport, QMouseEvent*) {
+    if (!drag_)
+        return;
+    // One undo step per drag, already applied by the preview.
+    model::Document& document = *viewport.document();
+    if (document.contains(drag_->part) && document.posePreviewOrigin(drag_->part))
+        document.undoStack()->push(new model::SetPoseCommand(
+            document, drag_->part, document.part(drag_->part).pose, drag_->joint, true));
     drag_.reset();
 }
 
-void PoseTool::cancel(Viewport&) {
+void PoseTool::cancel(Viewport& viewport) {
+    // A drag cut short (tool switch) leaves the pose as it was.
+    if (drag_ && viewport.document()->contains(drag_->part))
+        viewport.document()->cancelPosePreview(drag_->part);
     drag_.reset();
 }
 

@@ -68,15 +68,25 @@ void SelectTool::move(Viewport& viewport, QMouseEvent* event) {
         target.translation +=
             Vec3(now.x() - grabPoint_.x(), now.y() - grabPoint_.y(), now.z() - grabPoint_.z());
     }
-    // Consecutive moves of one part merge into a single undo step (mergeWith).
-    document.undoStack()->push(new model::MovePartCommand(document, *dragged_, target));
+    // A live preview; the drag becomes one command on release.
+    document.setPlacement(*dragged_, target);
 }
 
-void SelectTool::release(Viewport&, QMouseEvent*) {
+void SelectTool::release(Viewport& viewport, QMouseEvent*) {
+    model::Document& document = *viewport.document();
+    if (dragged_ && document.contains(*dragged_)) {
+        // One undo step per drag, already applied by the preview (an
+        // unmoved click pushes an obsolete command, which the stack drops).
+        document.undoStack()->push(new model::MovePartCommand(
+            document, *dragged_, startPlacement_, document.part(*dragged_).placement, true));
+    }
     dragged_.reset();
 }
 
-void SelectTool::cancel(Viewport&) {
+void SelectTool::cancel(Viewport& viewport) {
+    // A drag cut short (tool switch) puts the part back.
+    if (dragged_ && viewport.document()->contains(*dragged_))
+        viewport.document()->setPlacement(*dragged_, startPlacement_);
     dragged_.reset();
 }
 

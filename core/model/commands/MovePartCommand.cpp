@@ -14,7 +14,8 @@ MovePartCommand::MovePartCommand(Document& document, PartId id, const Placement&
       index_(document.indexOf(id)),
       from_(from),
       to_(to),
-      skipRedo_(alreadyApplied) {
+      skipRedo_(alreadyApplied),
+      wholeDrag_(alreadyApplied) {
     const PartNode& node = document.part(id);
     setText(from.rotation.coeffs() == to.rotation.coeffs() ? tr("Move %1").arg(node.name)
                                                            : tr("Rotate %1").arg(node.name));

@@ -1,10 +1,11 @@
-// Move and/or rotate a part. Consecutive moves of the same part merge into one
-// undo step (id() + mergeWith); a merge that lands back where it started
-// makes the command obsolete.
+// Move and/or rotate a part. Consecutive moves of the same part (recipe
+// steps, scripted moves) merge into one undo step (id() + mergeWith); a merge
+// that lands back where it started makes the command obsolete.
 //
-// Interactive drags may apply the placement live (through a preview the view
-// owns) and push the command at the end with `alreadyApplied`: the first
-// redo() then only records, it does not set the placement again.
+// Interactive drags apply the placement live (Document::setPlacement as a
+// preview) and push the command once, on release, with `alreadyApplied`: the
+// first redo() then only records. Such a command is one whole drag and never
+// merges (id() is -1), so two drags are two undo steps.
 #pragma once
 
 #include <QCoreApplication>
@@ -30,7 +31,7 @@ class MovePartCommand : public QUndoCommand, public RecipeStepSource {
     void redo() override;
     void undo() override;
     nlohmann::json recipeStep() const override;
-    int id() const override { return MovePartCommandId; }
+    int id() const override { return wholeDrag_ ? -1 : MovePartCommandId; }
     bool mergeWith(const QUndoCommand* other) override;
 
     PartId partId() const { return id_; }
@@ -41,6 +42,7 @@ class MovePartCommand : public QUndoCommand, public RecipeStepSource {
     int index_;
     Placement from_, to_;
     bool skipRedo_;
+    bool wholeDrag_;
 };
 
 }  // namespace rigmesh::model

@@ -49,7 +49,8 @@ SetPoseCommand::SetPoseCommand(Document& document, PartId id, const rigmesh::Pos
       joint_(draggedJoint),
       from_(from),
       to_(to),
-      skipRedo_(alreadyApplied) {
+      skipRedo_(alreadyApplied),
+      wholeDrag_(alreadyApplied) {
     const PartNode& node = document.part(id);
     if (draggedJoint != rigmesh::kNoJoint &&
         (!node.part || !node.part->skeleton.hasJoint(draggedJoint)))

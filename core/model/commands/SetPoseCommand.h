@@ -36,7 +36,8 @@ class SetPoseCommand : public QUndoCommand, public RecipeStepSource {
     void redo() override;
     void undo() override;
     nlohmann::json recipeStep() const override;
-    int id() const override { return SetPoseCommandId; }
+    // A command pushed with alreadyApplied is one whole drag: it never merges.
+    int id() const override { return wholeDrag_ ? -1 : SetPoseCommandId; }
     bool mergeWith(const QUndoCommand* other) override;
 
     PartId partId() const { return id_; }
@@ -51,6 +52,7 @@ class SetPoseCommand : public QUndoCommand, public RecipeStepSource {
     rigmesh::JointId joint_;
     rigmesh::Pose from_, to_;
     bool skipRedo_;
+    bool wholeDrag_;
 };
 
 }  // namespace rigmesh::model
