@@ -119,7 +119,9 @@ void MainWindow::createActions() {
     recentMenu_ = file->addMenu(tr("Open &Recent"));
     toolbar->addAction(
         add(file, tr("&Save"), QKeySequence::Save, &MainWindow::save, QStyle::SP_DialogSaveButton));
-    add(file, tr("Save &As..."), QKeySequence::SaveAs, &MainWindow::saveAs);
+    // Explicit: QKeySequence::SaveAs is empty on platforms without a desktop theme.
+    add(file, tr("Save &As..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
+        &MainWindow::saveAs);
     file->addSeparator();
     add(file, tr("&Import..."), QKeySequence(Qt::CTRL | Qt::Key_I), &MainWindow::importFile);
     add(file, tr("&Export..."), QKeySequence(Qt::CTRL | Qt::Key_E), &MainWindow::exportDocument);
@@ -277,9 +279,7 @@ void MainWindow::currentTabChanged(int) {
     outliner_->setDocument(document);
     properties_->setDocument(document);
     if (view) {
-        view->viewport()->setTool(sketchToolAction_->isChecked()
-                                      ? static_cast<ViewportTool*>(sketchTool_)
-                                      : static_cast<ViewportTool*>(selectTool_));
+        view->viewport()->setTool(activeTool());  // the checked tool, whichever it is
         view->viewport()->setWireframe(wireframeAction_->isChecked());
         view->viewport()->setDualQuaternionSkinning(dqsAction_->isChecked());
         view->viewport()->setGridVisible(gridAction_->isChecked());
@@ -299,7 +299,9 @@ void MainWindow::showStatus(const QString& message, int timeoutMs) {
 }
 
 void MainWindow::newDocument() {
-    addDocument(std::make_unique<model::Document>());
+    auto document = std::make_unique<model::Document>();
+    document->setUntitledName(tr("Untitled %1").arg(++untitledCount_));
+    addDocument(std::move(document));
 }
 
 void MainWindow::open() {

@@ -96,6 +96,7 @@ class MainWindow : public QMainWindow {
     SketchTool* sketchTool_;
     PoseTool* poseTool_;
     QString recoveryDirectory_;
+    int untitledCount_ = 0;  // new documents are "Untitled 1", "Untitled 2", ...
     std::map<DocumentView*, model::Autosave*> autosaves_;
 };
 

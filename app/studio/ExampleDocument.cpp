@@ -21,6 +21,8 @@ std::unique_ptr<model::Document> makeExampleDocument() {
     // An example is a starting point, not an edit: no history, not modified.
     document->undoStack()->clear();
     document->undoStack()->setClean();
+    document->setUntitledName(
+        QStringLiteral("Example: %1").arg(QString::fromStdString(sketch.name)));
     return document;
 }
 

@@ -89,8 +89,15 @@ void Document::setFilePath(const QString& path) {
     emit filePathChanged(path);
 }
 
+void Document::setUntitledName(const QString& name) {
+    untitledName_ = name;
+    emit filePathChanged(filePath_);  // the displayed name changed
+}
+
 QString Document::displayName() const {
-    return filePath_.isEmpty() ? tr("Untitled") : QFileInfo(filePath_).fileName();
+    if (!filePath_.isEmpty())
+        return QFileInfo(filePath_).fileName();
+    return untitledName_.isEmpty() ? tr("Untitled") : untitledName_;
 }
 
 void Document::markSaved(const QString& path) {

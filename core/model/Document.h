@@ -72,8 +72,10 @@ class Document : public QObject {
 
     QString filePath() const { return filePath_; }
     void setFilePath(const QString& path);
-    // The file name, or "Untitled" for a new document.
+    // The file name, or for a document never saved its title ("Untitled" by
+    // default; the studio numbers new documents and names examples).
     QString displayName() const;
+    void setUntitledName(const QString& name);
     bool isModified() const { return !undoStack_.isClean(); }
     // After a successful save: sets the path and marks the undo stack clean.
     void markSaved(const QString& path);
@@ -146,6 +148,7 @@ class Document : public QObject {
     Selection selection_;
     QUndoStack undoStack_;
     QString filePath_;
+    QString untitledName_;
     std::map<PartId, rigmesh::Pose> posePreviewOrigins_;
 };
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTreeView>
 #include <QUndoStack>
@@ -82,6 +83,23 @@ TEST_F(Studio, TooShortStrokeChangesNothing) {
     drag(viewport(), {QPointF(100, 100), QPointF(102, 101), QPointF(103, 103)});
     EXPECT_EQ(document()->partCount(), 0);
     EXPECT_EQ(document()->undoStack()->count(), 0);
+}
+
+TEST_F(Studio, ClickInTheSketchToolDoesNothingAndSaysNothing) {
+    window->activateSketchTool();
+    window->statusBar()->clearMessage();
+    drag(viewport(), {QPointF(200, 200), QPointF(200, 200)});
+    EXPECT_EQ(document()->partCount(), 0);
+    EXPECT_EQ(document()->undoStack()->count(), 0);
+    EXPECT_FALSE(window->statusBar()->currentMessage().contains(QStringLiteral("too short")));
+}
+
+TEST_F(Studio, LargeCircleDrawnFastInFewEventsBecomesAPart) {
+    window->activateSketchTool();
+    const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
+    // 13 mouse events around a circle of radius 150 px: a quick flick.
+    drag(viewport(), ellipseStroke(centre, 150, 150, 13));
+    EXPECT_EQ(document()->partCount(), 1) << window->statusBar()->currentMessage().toStdString();
 }
 
 TEST_F(Studio, DraggingAJointChangesThePoseInOneUndoStep) {

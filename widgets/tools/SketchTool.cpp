@@ -1,12 +1,42 @@
 #include "tools/SketchTool.h"
 
+#include <QLineF>
+
 #include "viewport/Viewport.h"
 
 namespace rigmesh::widgets {
 namespace {
 
-constexpr int kMinimumPoints = 8;
+// A press and release this close on screen is a click, not a stroke.
+constexpr double kClickPixels = 4.0;
+// A stroke is judged by its size on screen, not by how many mouse events a
+// fast or slow hand produced.
 constexpr double kMinimumExtentPixels = 12.0;
+constexpr double kMinimumLengthPixels = 40.0;
+// Fast strokes arrive as few, far-apart events: the polyline is filled in to
+// at most this spacing before it becomes a sketch.
+constexpr double kMaxSpacingPixels = 3.0;
+
+double pathLength(const std::vector<QPointF>& pixels) {
+    double length = 0.0;
+    for (std::size_t i = 1; i < pixels.size(); ++i)
+        length += QLineF(pixels[i - 1], pixels[i]).length();
+    return length;
+}
+
+std::vector<QPointF> filledIn(const std::vector<QPointF>& pixels) {
+    std::vector<QPointF> dense;
+    for (std::size_t i = 0; i + 1 < pixels.size(); ++i) {
+        const QPointF& a = pixels[i];
+        const QPointF& b = pixels[i + 1];
+        dense.push_back(a);
+        const int steps = static_cast<int>(QLineF(a, b).length() / kMaxSpacingPixels);
+        for (int k = 1; k < steps; ++k)
+            dense.push_back(a + (b - a) * (double(k) / steps));
+    }
+    dense.push_back(pixels.back());
+    return dense;
+}
 
 }  // namespace
 
@@ -39,14 +69,21 @@ void SketchTool::release(Viewport& viewport, QMouseEvent* event) {
     drawing_ = false;
     pixels_.push_back(event->position());
     viewport.setStrokeOverlay({});
+    const double length = pathLength(pixels_);
+    if (length < kClickPixels) {
+        pixels_.clear();  // a click: nothing to sketch, nothing to say
+        return;
+    }
     QRectF extent(pixels_.front(), QSizeF(0, 0));
     for (const QPointF& p : pixels_)
         extent |= QRectF(p, QSizeF(0.001, 0.001));
-    if (static_cast<int>(pixels_.size()) < kMinimumPoints ||
+    if (length < kMinimumLengthPixels ||
         std::max(extent.width(), extent.height()) < kMinimumExtentPixels) {
+        pixels_.clear();
         emit hintMessage(tr("That stroke is too short: drag to draw a closed outline"));
         return;
     }
+    pixels_ = filledIn(pixels_);
     // Into the sketch plane's own 2D frame (x = camera right, y = camera up).
     const model::Placement plane = viewport.sketchPlacement();
     const Eigen::Quaterniond toPlane = plane.rotation.conjugate();

@@ -252,7 +252,12 @@ RenderScene Viewport::gatherScene() const {
     scene.dualQuaternionSkinning = dualQuaternion_;
     scene.showGrid = gridVisible_;
     const auto box = sceneBox(false);
-    if (!box.isEmpty()) {
+    if (box.isEmpty()) {
+        // An empty scene: a floor in the lower part of the view, seen from
+        // slightly above (not edge-on through the centre), while the sketch
+        // plane stays the front plane through the centre.
+        scene.gridHeight = static_cast<float>(-0.22 * camera_.distance());
+    } else {
         scene.gridHeight = static_cast<float>(box.min().y());
         const double size = std::max(box.sizes().maxCoeff(), 1e-6);
         scene.gridSpacing = static_cast<float>(std::pow(10.0, std::floor(std::log10(size / 2.0))));
