@@ -119,6 +119,7 @@ QVariant SceneItemModel::data(const QModelIndex& index, int role) const {
     switch (role) {
         case Qt::DisplayRole:
         case Qt::EditRole:
+        case Qt::ToolTipRole:  // the whole text where a narrow column cuts it
             return displayData(node, index.column());
         case Qt::CheckStateRole:
             if (node.kind() == SceneNode::Kind::Part && index.column() == NameColumn && document_) {

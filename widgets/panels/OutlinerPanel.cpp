@@ -36,7 +36,11 @@ void OutlinerPanel::setDocument(model::Document* document) {
         return;
     model_ = std::make_unique<model::SceneItemModel>(document_);
     view_->setModel(model_.get());
-    view_->header()->setSectionResizeMode(0, QHeaderView::Stretch);
+    // Names as wide as they need ("Joint 12 (root)"), the info column takes
+    // the rest; a narrow dock scrolls sideways rather than cutting names.
+    view_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    view_->header()->setStretchLastSection(true);
+    view_->header()->setMinimumSectionSize(60);
     view_->expandToDepth(0);
     connect(model_.get(), &QAbstractItemModel::rowsInserted, view_,
             [this] { view_->expandToDepth(0); });
