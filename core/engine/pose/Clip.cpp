@@ -18,6 +18,15 @@ void checkTime(double time, const char* what) {
         throw Error(std::string("The ") + what + " time is not a finite number of seconds.");
 }
 
+// Where a key may go: a finite time within the longest clip.
+void checkKeyTime(double time, const char* what) {
+    checkTime(time, what);
+    if (std::abs(time) > Clip::kLongestKeyTime)
+        throw Error(std::string("The ") + what + " time " + std::to_string(time) +
+                    " s is out of range: keys lie within +-" +
+                    std::to_string(static_cast<long>(Clip::kLongestKeyTime)) + " s.");
+}
+
 Eigen::Quaterniond unitRotation(const Pose& pose, JointId joint) {
     return pose.rotation(joint).normalized();
 }
@@ -62,7 +71,7 @@ std::map<double, Pose>::const_iterator Clip::find(double time) const {
 }
 
 void Clip::setKey(double time, const Pose& pose) {
-    checkTime(time, "key");
+    checkKeyTime(time, "key");
     if (!pose.isFinite())
         throw Error("A key's pose must have finite, non-zero rotations and a finite translation.");
     const auto existing = find(time);
@@ -73,7 +82,7 @@ void Clip::setKey(double time, const Pose& pose) {
 
 void Clip::moveKey(double from, double to) {
     checkTime(from, "key");
-    checkTime(to, "target");
+    checkKeyTime(to, "target");
     const auto it = find(from);
     if (it == keys_.end())
         throw Error("There is no key at " + std::to_string(from) + " s to move.");
