@@ -14,6 +14,7 @@
 
 #include "base/Error.h"
 #include "base/StagedFile.h"
+#include "io/AssimpJoinVertices.h"
 #include "io/AssimpSceneBuilder.h"
 #include "io/ExportFormat.h"
 #include "io/FbxSentinels.h"
@@ -42,7 +43,8 @@ const char* assimpFormatId(ExportFormat format) {
 }
 
 // Notes item 8: FBX and COLLADA need JoinIdenticalVertices or the mesh
-// arrives open in Blender.
+// arrives open in Blender (glTF gets it from Assimp anyway). We do it
+// ourselves in linear time (AssimpJoinVertices.h).
 unsigned preprocessing(ExportFormat format) {
     return format == ExportFormat::Fbx || format == ExportFormat::Collada
                ? aiProcess_JoinIdenticalVertices
@@ -56,7 +58,11 @@ struct ExportedFiles {
     std::map<std::string, std::string> companions;
 };
 
-ExportedFiles exportToMemory(const aiScene& scene, ExportFormat format, const std::string& path) {
+ExportedFiles exportToMemory(aiScene& scene, ExportFormat format, const std::string& path) {
+    // Assimp's own join is quadratic in the vertices a bone influences.
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+        joinIdenticalVertices(*scene.mMeshes[m]);
+    markVerticesJoined(scene);
     Assimp::Exporter exporter;
     const aiExportDataBlob* blob = nullptr;
     try {
