@@ -80,6 +80,19 @@ void Clip::setKey(double time, const Pose& pose) {
     keys_.emplace(time, pose);
 }
 
+void Clip::insertExactKey(double time, const Pose& pose) {
+    checkKeyTime(time, "key");
+    if (!pose.isFinite())
+        throw Error("A key's pose must have finite, non-zero rotations and a finite translation.");
+    if (!keys_.emplace(time, pose).second)
+        throw Error("There is already a key at exactly " + std::to_string(time) + " s.");
+}
+
+void Clip::eraseExactKey(double time) {
+    if (keys_.erase(time) == 0)
+        throw Error("There is no key at exactly " + std::to_string(time) + " s.");
+}
+
 void Clip::moveKey(double from, double to) {
     checkTime(from, "key");
     checkKeyTime(to, "target");

@@ -57,6 +57,12 @@ class Clip {
     // Throws Error if there is no key at `time`.
     void removeKey(double time);
 
+    // Exact edits, for replaying a recorded change (undo, redo): no
+    // half-frame matching. insertExactKey throws Error as setKey does, or if
+    // a key is at exactly `time`; eraseExactKey throws Error unless one is.
+    void insertExactKey(double time, const Pose& pose);
+    void eraseExactKey(double time);
+
     bool hasKey(double time) const;
     // The key at `time` (within half a frame); throws Error if none.
     const Pose& key(double time) const;
