@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "IoTestSupport.h"
 #include "base/Error.h"
 #include "io/GltfBuffers.h"
+#include "io/RigJson.h"
 #include "io/SceneExport.h"
 #include "pose/Clip.h"
 
@@ -125,6 +127,13 @@ TEST(SceneExport, NonFiniteKeyTimesNeverReachAFile) {
     item.part = &part;
     EXPECT_THROW(exportScene({item}, &clip, (folder / "far.glb").string()), Error);
     EXPECT_TRUE(namesIn(folder).empty());
+}
+
+TEST(RigJson, NonFiniteWeightsOrJointsAreRefused) {
+    Part part = iotest::sharedPart("tube");
+    EXPECT_FALSE(rigToJson(part).empty());
+    part.weights.perVertex[5].front().second = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(rigToJson(part), Error);
 }
 
 }  // namespace
