@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <set>
 #include <string>
@@ -21,10 +22,12 @@ void checkTime(double time, const char* what) {
 // Where a key may go: a finite time within the longest clip.
 void checkKeyTime(double time, const char* what) {
     checkTime(time, what);
-    if (std::abs(time) > Clip::kLongestKeyTime)
-        throw Error(std::string("The ") + what + " time " + std::to_string(time) +
-                    " s is out of range: keys lie within +-" +
-                    std::to_string(static_cast<long>(Clip::kLongestKeyTime)) + " s.");
+    if (std::abs(time) > Clip::kLongestKeyTime) {
+        char text[96];
+        std::snprintf(text, sizeof text, " time %g s is out of range: keys lie within +-%g s.",
+                      time, Clip::kLongestKeyTime);
+        throw Error(std::string("The ") + what + text);
+    }
 }
 
 Eigen::Quaterniond unitRotation(const Pose& pose, JointId joint) {
