@@ -12,6 +12,7 @@
 #include "CommandLine.h"
 #include "EmbeddedExamples.h"
 #include "base/Error.h"
+#include "base/StagedFile.h"
 #include "debug/DebugSvg.h"
 #include "io/PoseDemoClip.h"
 #include "io/RigJson.h"
@@ -29,20 +30,9 @@ Sketch loadSketch(const std::string& source) {
     return readSketchFile(source);
 }
 
+// --rig, --debug-svg and --stats: complete or untouched (base/StagedFile.h).
 void writeTextFile(const std::string& path, const std::string& text) {
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        if (!out)
-            throw Error("cannot write " + path + ": the folder does not exist or is read-only");
-        out << text;
-        if (!out.flush())
-            throw Error("cannot write " + path);
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        std::remove(temporary.c_str());
-        throw Error("cannot write " + path);
-    }
+    writeFileAtomically(path, text);
 }
 
 std::string lowerExtension(const std::string& path) {

@@ -255,6 +255,17 @@ void Document::setClip(PartId id, const rigmesh::Clip& clip) {
     emit partChanged(id, Change::Clip);
 }
 
+void Document::editClip(PartId id, const ClipEdit& edit) {
+    PartNode& node = mutablePart(id);
+    for (const auto& [time, pose] : edit.added)
+        for (const auto& entry : pose.rotations)
+            checkJoint(node, entry.first);
+    if (edit.changesNothing())
+        return;
+    edit.applyTo(node.clip);
+    emit partChanged(id, Change::Clip);
+}
+
 void Document::previewPose(PartId id, const rigmesh::Pose& pose) {
     const PartNode& node = part(id);
     checkPose(node, pose);

@@ -16,6 +16,7 @@
 #include <set>
 #include <vector>
 
+#include "model/ClipEdit.h"
 #include "model/PartNode.h"
 #include "rig/Skeleton.h"
 
@@ -119,6 +120,11 @@ class Document : public QObject {
     // Throws rigmesh::Error when a key names a joint the part's skeleton does
     // not have or holds a pose that is not finite.
     void setClip(PartId id, const rigmesh::Clip& clip);
+    // Applies `edit` to the part's clip in place, in O(log n) per key it
+    // changes. Throws rigmesh::Error (nothing changed) when an added key names
+    // a joint the skeleton does not have or the edit does not fit the clip
+    // (ClipEdit::applyTo).
+    void editClip(PartId id, const ClipEdit& edit);
 
     // ---- Live pose preview (interactive drags) ----
     // Applies `pose` to the part now (partChanged(Pose)) without a command,

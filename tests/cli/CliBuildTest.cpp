@@ -107,6 +107,37 @@ TEST(CliBuild, UnknownOutputFormatIsAClearError) {
     EXPECT_NE(result.err.find(".obj"), std::string::npos) << result.err;
 }
 
+// Issue 9: on a full disk .obj and .dae exited 0 with a truncated file and
+// .fbx aborted. `ulimit -f` with SIGXFSZ ignored makes writes past 2 KiB fail
+// as on a full disk; every output must then exit 1 and keep the old file.
+TEST(CliBuild, AFullDiskExitsOneAndKeepsThePreviousFiles) {
+    const fs::path folder = scratch("full_disk");
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    for (const std::string option : {"-o out.obj", "-o out.dae", "-o out.fbx", "-o out.glb",
+                                     "-o out.ply", "--rig rig.json", "--debug-svg debug.svg"}) {
+        const std::string arguments = "build example " + option;
+        const std::string inFolder = "cd '" + folder.string() + "' && ";
+        ASSERT_EQ(
+            std::system((inFolder + "'" + RIGMESH_CLI + "' " + arguments + " >/dev/null").c_str()),
+            0);
+        const std::string file = option.substr(option.find(' ') + 1);
+        const std::string previous = readWholeFile(folder / file);
+        const std::string full = inFolder + "ulimit -f 4 && trap '' XFSZ && '" + RIGMESH_CLI +
+                                 "' " + arguments + " >/dev/null 2>err.txt";
+        const int status = std::system(full.c_str());
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << option;
+        EXPECT_NE(readWholeFile(folder / "err.txt").find("rigmesh: cannot write"),
+                  std::string::npos)
+            << option << ": " << readWholeFile(folder / "err.txt");
+        EXPECT_EQ(readWholeFile(folder / file), previous) << option;
+        fs::remove(folder / "err.txt");
+    }
+    // Nothing but the outputs (and the companions) is left behind.
+    for (const auto& entry : fs::directory_iterator(folder))
+        EXPECT_NE(entry.path().filename().string().front(), '.') << entry.path();
+}
+
 TEST(CliBuild, UnknownCommandAndOptionAreUsageErrors) {
     EXPECT_EQ(runCli("frobnicate").exitCode, 2);
     EXPECT_EQ(runCli("build example --frobnicate").exitCode, 1);

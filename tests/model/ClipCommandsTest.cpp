@@ -201,5 +201,47 @@ TEST(ClipCommands, RebuildEmptiesTheClipKeepingSettingsAndUndoRestoresIt) {
     EXPECT_EQ(bytesOf(a.document), before);
 }
 
+// Issue 9: each key command kept two whole clips, so n key steps took
+// O(n^2) time and memory (2,000 keys: 8.8 s). A command now keeps only the
+// keys it changes, and undo/redo still give back the exact clips.
+TEST(ClipCommands, KeyCommandsKeepOnlyTheKeysTheyChangeAndUndoExactly) {
+    Animated a;
+    for (int k = 0; k < 300; ++k) {
+        if (k == 10 || k == 11)  // keys 10 and 11 hold different poses
+            a.pose(Vec3(0.05 * k, 0.1, 0.0));
+        a.key(k / 24.0);
+    }
+    const QByteArray keyed = bytesOf(a.document);
+
+    auto* rekey = new KeyPoseCommand(a.document, a.id, 100 / 24.0 + 0.01);
+    EXPECT_EQ(rekey->edit().removed.size(), 1u);
+    EXPECT_EQ(rekey->edit().added.size(), 1u);
+    a.stack().push(rekey);
+    // Moving a key onto another replaces it: two keys out, one in.
+    auto* move = new MoveKeyCommand(a.document, a.id, 10 / 24.0, 11 / 24.0);
+    EXPECT_EQ(move->edit().removed.size(), 2u);
+    EXPECT_EQ(move->edit().added.size(), 1u);
+    a.stack().push(move);
+    a.stack().push(new DeleteKeyCommand(a.document, a.id, 200 / 24.0));
+    EXPECT_EQ(a.node().clip.keyCount(), 298);
+    const QByteArray edited = bytesOf(a.document);
+
+    for (int u = 0; u < 3; ++u)
+        a.stack().undo();
+    EXPECT_EQ(bytesOf(a.document), keyed);
+    for (int r = 0; r < 3; ++r)
+        a.stack().redo();
+    EXPECT_EQ(bytesOf(a.document), edited);
+}
+
+TEST(ClipCommands, KeyTimesOutOfRangeAreRefusedBeforeAnyPush) {
+    Animated a;
+    EXPECT_THROW(KeyPoseCommand(a.document, a.id, 1e308), Error);
+    a.key(0.0);
+    EXPECT_THROW(MoveKeyCommand(a.document, a.id, 0.0, -1e7), Error);
+    EXPECT_EQ(a.stack().count(), 1);
+    EXPECT_EQ(a.node().clip.keyTimes(), (std::vector<double>{0.0}));
+}
+
 }  // namespace
 }  // namespace rigmesh::model::test

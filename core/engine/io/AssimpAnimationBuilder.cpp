@@ -10,22 +10,55 @@
 
 namespace rigmesh {
 
-std::vector<double> exportedKeyTimes(const Clip& clip) {
-    std::vector<double> times = clip.keyTimes();
-    if (clip.interpolation == Interpolation::Smooth && times.size() > 1) {
-        const double step = 1.0 / clip.framesPerSecond();
-        const double first = times.front(), last = times.back();
-        const auto frames = static_cast<long>(std::floor((last - first) / step));
-        for (long f = 1; f <= frames; ++f) {
-            const double t = first + static_cast<double>(f) * step;
-            const bool nearKey = std::any_of(times.begin(), times.end(), [&](double k) {
-                return std::abs(k - t) < 0.25 * step;
-            });
-            if (!nearKey)
-                times.push_back(t);
-        }
-        std::sort(times.begin(), times.end());
+namespace {
+
+// Appends the frames strictly inside the key segment (from, to) of a Smooth
+// clip: the frame grid starts at the first key, and frames within a quarter
+// frame of a key are left to the key. A long segment gets at most
+// kMaxFramesPerSegment evenly spaced samples instead, so the work is bounded
+// by the number of keys, never by the clip's length in frames. Frame numbers
+// stay doubles: nothing is cast to an integer before it is known to be small.
+void appendSegmentFrames(std::vector<double>& times, double first, double step, double from,
+                         double to) {
+    const double firstFrame = std::ceil((from - first) / step + 0.25);
+    const double lastFrame = std::floor((to - first) / step - 0.25);
+    if (!(lastFrame >= firstFrame))
+        return;
+    const double frames = lastFrame - firstFrame + 1;
+    if (frames <= kMaxFramesPerSegment) {
+        for (int f = 0; f < static_cast<int>(frames); ++f)
+            times.push_back(first + (firstFrame + f) * step);
+        return;
     }
+    const double spacing = (to - from) / (kMaxFramesPerSegment + 1);
+    for (int s = 1; s <= kMaxFramesPerSegment; ++s)
+        times.push_back(from + s * spacing);
+}
+
+// glTF stores times as 32-bit floats: far from zero, close keys would merge
+// into one time (or run backwards), which viewers reject.
+void checkDistinctAsFloats(const std::vector<double>& times) {
+    for (std::size_t k = 1; k < times.size(); ++k)
+        if (!(static_cast<float>(times[k - 1]) < static_cast<float>(times[k])))
+            throw Error("cannot export the clip: the times " + std::to_string(times[k - 1]) +
+                        " s and " + std::to_string(times[k]) +
+                        " s are too close for 32-bit precision this far from 0 s; move the keys "
+                        "nearer to 0 s or further apart");
+}
+
+}  // namespace
+
+std::vector<double> exportedKeyTimes(const Clip& clip) {
+    const std::vector<double> keys = clip.keyTimes();
+    if (clip.interpolation != Interpolation::Smooth || keys.size() < 2)
+        return keys;
+    const double step = 1.0 / clip.framesPerSecond();
+    std::vector<double> times;
+    for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
+        times.push_back(keys[k]);
+        appendSegmentFrames(times, keys.front(), step, keys[k], keys[k + 1]);
+    }
+    times.push_back(keys.back());
     return times;
 }
 
@@ -33,6 +66,7 @@ aiAnimation* makeAnimation(const Clip& clip, const ExportRig& rig, const std::st
     if (clip.keyCount() == 0)
         throw Error("cannot export an animation without keys");
     const std::vector<double> times = exportedKeyTimes(clip);
+    checkDistinctAsFloats(times);
     std::vector<Pose> poses;
     for (double t : times)
         poses.push_back(clip.evaluate(t));

@@ -14,9 +14,14 @@ struct aiAnimation;
 
 namespace rigmesh {
 
-// The times written: the key times for a Linear clip (viewers interpolate
-// linearly between them too); for a Smooth clip every frame from the first to
-// the last key as well, so that the curve between keys survives.
+// Most samples written between two keys of a Smooth clip.
+constexpr int kMaxFramesPerSegment = 64;
+
+// The times written, ascending: the key times for a Linear clip (viewers
+// interpolate linearly between them too); for a Smooth clip also every frame
+// between two keys (at most kMaxFramesPerSegment evenly spaced samples in a
+// longer segment), so that the curve between keys survives. At most
+// (kMaxFramesPerSegment + 1) times per key, whatever the clip's length.
 std::vector<double> exportedKeyTimes(const Clip& clip);
 
 // Throws Error on a clip without keys.

@@ -3,7 +3,6 @@
 #include <assimp/version.h>
 
 #include <cstring>
-#include <fstream>
 #include <iterator>
 
 #include "base/Error.h"
@@ -169,22 +168,6 @@ std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file)
     writer.out.insert(writer.out.end(), file.begin() + static_cast<std::ptrdiff_t>(cursor),
                       file.end());
     return std::move(writer.out);
-}
-
-void addFbxSentinelsToFile(const std::string& path) {
-    std::vector<std::uint8_t> bytes;
-    {
-        std::ifstream in(path, std::ios::binary);
-        if (!in)
-            throw Error("cannot read " + path);
-        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    const std::vector<std::uint8_t> fixed = addFbxSentinels(bytes);
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(fixed.data()),
-              static_cast<std::streamsize>(fixed.size()));
-    if (!out.flush())
-        throw Error("cannot write " + path);
 }
 
 }  // namespace rigmesh

@@ -29,7 +29,4 @@ bool assimpNeedsFbxSentinelFix();
 // Error if the bytes are not a binary FBX or a record is out of range.
 std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file);
 
-// Reads, repairs and rewrites `path` in place. Throws Error on I/O failure.
-void addFbxSentinelsToFile(const std::string& path);
-
 }  // namespace rigmesh

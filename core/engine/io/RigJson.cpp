@@ -3,9 +3,29 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "base/Error.h"
+
 namespace rigmesh {
 
+namespace {
+
+// JSON has no Infinity or NaN (nlohmann would write null): refuse them.
+void checkRigIsFinite(const Part& part) {
+    for (const Joint& joint : part.skeleton.joints())
+        if (!joint.position.allFinite())
+            throw Error("cannot write the rig: joint " + std::to_string(joint.id) +
+                        " is not at a finite position");
+    for (std::size_t v = 0; v < part.weights.perVertex.size(); ++v)
+        for (const auto& [bone, weight] : part.weights.perVertex[v])
+            if (!std::isfinite(weight))
+                throw Error("cannot write the rig: a weight of vertex " + std::to_string(v) +
+                            " is not finite");
+}
+
+}  // namespace
+
 std::string rigToJson(const Part& part) {
+    checkRigIsFinite(part);
     const Skeleton& skeleton = part.skeleton;
     nlohmann::json rig;
     rig["joints"] = nlohmann::json::array();

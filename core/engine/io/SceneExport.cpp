@@ -4,15 +4,22 @@
 #include <assimp/scene.h>
 #include <assimp/Exporter.hpp>
 
-#include <atomic>
-#include <chrono>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <system_error>
 
 #include "base/Error.h"
+#include "base/StagedFile.h"
+#include "io/AssimpJoinVertices.h"
 #include "io/AssimpSceneBuilder.h"
 #include "io/ExportFormat.h"
 #include "io/FbxSentinels.h"
+#include "io/FiniteScene.h"
+#include "io/GltfBuffers.h"
 
 namespace rigmesh {
 namespace {
@@ -36,53 +43,110 @@ const char* assimpFormatId(ExportFormat format) {
 }
 
 // Notes item 8: FBX and COLLADA need JoinIdenticalVertices or the mesh
-// arrives open in Blender.
+// arrives open in Blender (glTF gets it from Assimp anyway). We do it
+// ourselves in linear time (AssimpJoinVertices.h).
 unsigned preprocessing(ExportFormat format) {
     return format == ExportFormat::Fbx || format == ExportFormat::Collada
                ? aiProcess_JoinIdenticalVertices
                : 0u;
 }
 
-// A fresh folder beside the target: written files move out of it on success
-// (notes item 11: a failed export leaves a partial file).
-class TemporaryFolder {
-  public:
-    explicit TemporaryFolder(const fs::path& parent) {
-        static std::atomic<unsigned> counter{0};
-        const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-        path_ =
-            parent / (".rigmesh-export-" + std::to_string(stamp) + "-" + std::to_string(counter++));
-        std::error_code error;
-        if (!fs::create_directory(path_, error))
-            throw Error("cannot write in " + parent.string() + ": " + error.message());
-    }
-    ~TemporaryFolder() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    TemporaryFolder(const TemporaryFolder&) = delete;
-    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
-    const fs::path& path() const { return path_; }
-
-  private:
-    fs::path path_;
+// The files Assimp produced in memory: the main file and its companions by
+// extension ("bin" for .gltf, "mtl" for .obj).
+struct ExportedFiles {
+    std::string main;
+    std::map<std::string, std::string> companions;
 };
 
-// Moves every file out of `from` into `to`, the main file last so that it
-// appears only when its companions (.bin, .mtl) are in place.
-void moveFiles(const fs::path& from, const fs::path& to, const fs::path& mainFile,
-               const std::string& target) {
-    std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(from))
-        if (entry.path().filename() != mainFile)
-            files.push_back(entry.path());
-    files.push_back(from / mainFile);
-    for (const fs::path& file : files) {
-        std::error_code error;
-        fs::rename(file, to / file.filename(), error);
-        if (error)
-            throw Error("cannot write " + target + ": " + error.message());
+ExportedFiles exportToMemory(aiScene& scene, ExportFormat format, const std::string& path) {
+    // Assimp's own join is quadratic in the vertices a bone influences.
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+        joinIdenticalVertices(*scene.mMeshes[m]);
+    markVerticesJoined(scene);
+    Assimp::Exporter exporter;
+    const aiExportDataBlob* blob = nullptr;
+    try {
+        blob = exporter.ExportToBlob(&scene, assimpFormatId(format), preprocessing(format));
+    } catch (const std::exception& exception) {
+        throw Error("cannot write " + path + ": " + exception.what());
     }
+    if (blob == nullptr)
+        throw Error("cannot write " + path + ": " + exporter.GetErrorString());
+    ExportedFiles files;
+    files.main.assign(static_cast<const char*>(blob->data), blob->size);
+    for (const aiExportDataBlob* next = blob->next; next != nullptr; next = next->next)
+        files.companions[next->name.C_Str()].assign(static_cast<const char*>(next->data),
+                                                    next->size);
+    return files;
+}
+
+// Assimp names in-memory companions after its placeholder file name.
+const std::string kAssimpBlobName = "$blobfile";
+
+std::string fnv1aHex(const std::string& bytes) {
+    std::uint64_t hash = 14695981039346656037ull;
+    for (const char c : bytes)
+        hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
+
+std::string readWholeFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// .gltf + .bin. The .bin gets a content-derived name (<stem>.<hash>.bin) and
+// goes into place first, then the .gltf that references it replaces the old
+// one, and only then is the old .bin removed. A crash between the renames
+// leaves the old .gltf with its old, untouched .bin (plus an orphan new .bin);
+// after the .gltf's rename the new pair is complete. So the .gltf and the .bin
+// it names never disagree.
+void writeGltf(const ExportedFiles& files, const fs::path& target) {
+    const auto bin = files.companions.find("bin");
+    if (bin == files.companions.end())
+        throw Error("cannot write " + target.string() + ": the glTF exporter wrote no .bin");
+    const std::string binBytes = zeroUnreferencedBinBytes(files.main, bin->second);
+    const std::string binName = target.stem().string() + "." + fnv1aHex(binBytes) + ".bin";
+    const std::string gltfText = withBufferUri(files.main, binName);
+    const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    const std::string oldBin = fs::exists(target) ? bufferUriOf(readWholeFile(target)) : "";
+
+    StagedFile stagedGltf(target, gltfText);
+    StagedFile stagedBin(folder / binName, binBytes);
+    stagedBin.commit();
+    try {
+        stagedGltf.commit();
+    } catch (const Error&) {
+        std::error_code ignored;
+        if (oldBin != binName)
+            fs::remove(folder / binName, ignored);
+        throw;
+    }
+    // Only a .bin this exporter could have written: no path, the same stem.
+    const bool ours = oldBin != binName && oldBin.find('/') == std::string::npos &&
+                      oldBin.find('\\') == std::string::npos &&
+                      oldBin.starts_with(target.stem().string() + ".") && oldBin.ends_with(".bin");
+    if (ours) {
+        std::error_code ignored;
+        fs::remove(folder / oldBin, ignored);
+    }
+}
+
+// .obj + .mtl: the .mtl goes first, so that the .obj never names a missing one.
+void writeObj(const ExportedFiles& files, const fs::path& target) {
+    std::string obj = files.main;
+    const fs::path mtlPath = fs::path(target).replace_extension(".mtl");
+    const std::string placeholder = "mtllib " + kAssimpBlobName + ".mtl";
+    const auto at = obj.find(placeholder);
+    if (at != std::string::npos)
+        obj.replace(at, placeholder.size(), "mtllib " + mtlPath.filename().string());
+    StagedFile stagedObj(target, obj);
+    const auto mtl = files.companions.find("mtl");
+    if (mtl != files.companions.end())
+        StagedFile(mtlPath, mtl->second).commit();
+    stagedObj.commit();
 }
 
 }  // namespace
@@ -92,32 +156,33 @@ void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const s
     const ExportFormat format = exportFormatFromPath(path);
     aiScene scene;
     buildAssimpScene(scene, parts, clip, format, options);
-
+    checkSceneIsFinite(scene);
     const fs::path target(path);
-    const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    std::error_code error;
-    if (!fs::is_directory(folder, error))
-        throw Error("cannot write " + path + ": the folder " + folder.string() + " does not exist");
-    if (fs::is_directory(target, error))
-        throw Error("cannot write " + path + ": it is a folder");
-    const TemporaryFolder temporary(folder);
-    const fs::path written = temporary.path() / target.filename();
+    checkReplaceable(target);
 
-    Assimp::Exporter exporter;
-    aiReturn result = aiReturn_FAILURE;
-    try {
-        result = exporter.Export(&scene, assimpFormatId(format), written.string(),
-                                 preprocessing(format));
-    } catch (const std::exception& exception) {
-        throw Error("cannot write " + path + ": " + exception.what());
+    ExportedFiles files = exportToMemory(scene, format, path);
+    switch (format) {
+        case ExportFormat::Glb:
+            writeFileAtomically(target, zeroUnreferencedGlbBytes(std::move(files.main)));
+            break;
+        case ExportFormat::Gltf:
+            writeGltf(files, target);
+            break;
+        case ExportFormat::Fbx:
+            if (assimpNeedsFbxSentinelFix()) {
+                const std::vector<std::uint8_t> fixed = addFbxSentinels(
+                    std::vector<std::uint8_t>(files.main.begin(), files.main.end()));
+                files.main.assign(fixed.begin(), fixed.end());
+            }
+            writeFileAtomically(target, files.main);
+            break;
+        case ExportFormat::Collada:
+            writeFileAtomically(target, files.main);
+            break;
+        case ExportFormat::Obj:
+            writeObj(files, target);
+            break;
     }
-    if (result != aiReturn_SUCCESS)
-        throw Error("cannot write " + path + ": " + exporter.GetErrorString());
-    if (!fs::is_regular_file(written, error))
-        throw Error("cannot write " + path + ": the exporter wrote nothing");
-    if (format == ExportFormat::Fbx && assimpNeedsFbxSentinelFix())
-        addFbxSentinelsToFile(written.string());
-    moveFiles(temporary.path(), folder, target.filename(), path);
 }
 
 }  // namespace rigmesh

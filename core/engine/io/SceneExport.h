@@ -46,10 +46,13 @@ struct ExportOptions {
 
 // Writes `parts` (and `clip`, animating part 0; may be null) to `path`, the
 // format chosen by its extension: .glb, .gltf (+ .bin beside it), .fbx, .dae,
-// .obj (+ .mtl). Everything is written into a temporary folder beside `path`
-// and moved into place only on success, so a failure leaves no partial file.
+// .obj (+ .mtl). Assimp exports into memory; every file is then written
+// beside its target with every write checked and renamed into place only when
+// complete (base/StagedFile.h), keeping the target's permissions, so a failure
+// (a full disk) leaves the previous files as they were and no temporary file.
 // Throws Error on an unknown extension, a part without mesh or weights that
-// do not match it, a missing folder or any write failure.
+// do not match it, a non-finite number to write, a missing folder, a
+// read-only target or any write failure.
 void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const std::string& path,
                  const ExportOptions& options = {});
 

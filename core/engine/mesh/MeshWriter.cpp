@@ -4,18 +4,14 @@
 #include <bit>
 #include <charconv>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <system_error>
 
 #include "base/Error.h"
+#include "base/StagedFile.h"
 #include "mesh/MeshFileFormat.h"
 
 namespace rigmesh {
 
 namespace {
-
-namespace fs = std::filesystem;
 
 // Shortest decimal form that reads back as exactly the same double (never
 // more than max_digits10 significant digits).
@@ -114,6 +110,10 @@ std::string plyBytes(const TriMesh& mesh, const std::vector<VertexColor>& colors
 }
 
 void validate(const TriMesh& mesh, const MeshWriteOptions& options) {
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+        if (!mesh.vertices[v].allFinite())
+            throw Error("Cannot write the mesh: vertex " + std::to_string(v) +
+                        " is not a finite point.");
     for (std::size_t f = 0; f < mesh.faces.size(); ++f)
         for (const int index : mesh.faces[f])
             if (index < 0 || index >= mesh.vertexCount())
@@ -126,35 +126,6 @@ void validate(const TriMesh& mesh, const MeshWriteOptions& options) {
                     " vertices.");
 }
 
-// Writes `bytes` to path + ".tmp" and renames it over `path`, so that `path`
-// is either untouched or complete; the temporary file never survives a failure.
-void writeAtomically(const std::string& path, const std::string& bytes) {
-    const fs::path target(path);
-    const fs::path parent = target.parent_path();
-    std::error_code ec;
-    if (!parent.empty() && !fs::is_directory(parent, ec))
-        throw Error("Cannot write '" + path + "': the folder '" + parent.string() +
-                    "' does not exist.");
-    const fs::path temp(path + ".tmp");
-    const auto fail = [&](const std::string& why) {
-        std::error_code ignored;
-        fs::remove(temp, ignored);
-        throw Error("Cannot write '" + path + "': " + why);
-    };
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out)
-            fail("the file cannot be created (check permissions).");
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.close();
-        if (!out)
-            fail("writing failed (is the disk full?).");
-    }
-    fs::rename(temp, target, ec);
-    if (ec)
-        fail("cannot replace the file: " + ec.message() + ".");
-}
-
 }  // namespace
 
 void writeMesh(const TriMesh& mesh, const std::string& path, const MeshWriteOptions& options) {
@@ -162,13 +133,13 @@ void writeMesh(const TriMesh& mesh, const std::string& path, const MeshWriteOpti
     validate(mesh, options);
     switch (format) {
         case MeshFileFormat::Obj:
-            writeAtomically(path, objText(mesh));
+            writeFileAtomically(path, objText(mesh));
             break;
         case MeshFileFormat::Off:
-            writeAtomically(path, offText(mesh));
+            writeFileAtomically(path, offText(mesh));
             break;
         case MeshFileFormat::Ply:
-            writeAtomically(path, plyBytes(mesh, options.vertexColors));
+            writeFileAtomically(path, plyBytes(mesh, options.vertexColors));
             break;
     }
 }

@@ -26,9 +26,10 @@ struct MeshWriteOptions {
 // .ply, case-insensitive). Text formats store coordinates in the shortest form
 // that reads back to the identical double; PLY is binary little-endian with
 // double coordinates, so every format round-trips exactly. The file is written
-// to `path + ".tmp"` and renamed over `path` only when complete. Throws Error on
-// an unknown extension, invalid face indices, a colour count that does not
-// match the vertex count, or any I/O failure.
+// beside `path`, every write checked, and renamed over it only when complete,
+// keeping its permissions (base/StagedFile.h). Throws Error on an unknown
+// extension, invalid face indices, a non-finite coordinate, a colour count
+// that does not match the vertex count, a read-only target or any I/O failure.
 void writeMesh(const TriMesh& mesh, const std::string& path, const MeshWriteOptions& options = {});
 
 // Reads an .obj, .off or .ply file (ASCII or binary little-endian PLY).

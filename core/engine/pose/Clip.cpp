@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <set>
 #include <string>
@@ -16,6 +17,17 @@ namespace {
 void checkTime(double time, const char* what) {
     if (!std::isfinite(time))
         throw Error(std::string("The ") + what + " time is not a finite number of seconds.");
+}
+
+// Where a key may go: a finite time within the longest clip.
+void checkKeyTime(double time, const char* what) {
+    checkTime(time, what);
+    if (std::abs(time) > Clip::kLongestKeyTime) {
+        char text[96];
+        std::snprintf(text, sizeof text, " time %g s is out of range: keys lie within +-%g s.",
+                      time, Clip::kLongestKeyTime);
+        throw Error(std::string("The ") + what + text);
+    }
 }
 
 Eigen::Quaterniond unitRotation(const Pose& pose, JointId joint) {
@@ -62,7 +74,7 @@ std::map<double, Pose>::const_iterator Clip::find(double time) const {
 }
 
 void Clip::setKey(double time, const Pose& pose) {
-    checkTime(time, "key");
+    checkKeyTime(time, "key");
     if (!pose.isFinite())
         throw Error("A key's pose must have finite, non-zero rotations and a finite translation.");
     const auto existing = find(time);
@@ -71,9 +83,22 @@ void Clip::setKey(double time, const Pose& pose) {
     keys_.emplace(time, pose);
 }
 
+void Clip::insertExactKey(double time, const Pose& pose) {
+    checkKeyTime(time, "key");
+    if (!pose.isFinite())
+        throw Error("A key's pose must have finite, non-zero rotations and a finite translation.");
+    if (!keys_.emplace(time, pose).second)
+        throw Error("There is already a key at exactly " + std::to_string(time) + " s.");
+}
+
+void Clip::eraseExactKey(double time) {
+    if (keys_.erase(time) == 0)
+        throw Error("There is no key at exactly " + std::to_string(time) + " s.");
+}
+
 void Clip::moveKey(double from, double to) {
     checkTime(from, "key");
-    checkTime(to, "target");
+    checkKeyTime(to, "target");
     const auto it = find(from);
     if (it == keys_.end())
         throw Error("There is no key at " + std::to_string(from) + " s to move.");

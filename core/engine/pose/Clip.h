@@ -41,15 +41,27 @@ class Clip {
     Interpolation interpolation = Interpolation::Linear;
     PlaybackMode mode = PlaybackMode::Hold;
 
+    // Key times lie within +-kLongestKeyTime seconds (11.6 days): far beyond any
+    // animation, and small enough that time * frame rate and the exported
+    // frame counts stay exact in integers and doubles.
+    static constexpr double kLongestKeyTime = 1e6;
+
     // Sets the key at `time`: replaces the key within half a frame of it (the
     // nearest; it takes the new time), or inserts a new one. Throws Error on
-    // a non-finite time or a pose that is not finite.
+    // a time that is not finite or beyond kLongestKeyTime, or a pose that is
+    // not finite.
     void setKey(double time, const Pose& pose);
     // Moves the key at `from` to `to`, replacing any other key at `to`.
-    // Throws Error if there is no key at `from`.
+    // Throws Error if there is no key at `from` or `to` is out of range.
     void moveKey(double from, double to);
     // Throws Error if there is no key at `time`.
     void removeKey(double time);
+
+    // Exact edits, for replaying a recorded change (undo, redo): no
+    // half-frame matching. insertExactKey throws Error as setKey does, or if
+    // a key is at exactly `time`; eraseExactKey throws Error unless one is.
+    void insertExactKey(double time, const Pose& pose);
+    void eraseExactKey(double time);
 
     bool hasKey(double time) const;
     // The key at `time` (within half a frame); throws Error if none.

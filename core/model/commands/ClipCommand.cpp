@@ -2,22 +2,21 @@
 
 namespace rigmesh::model {
 
-ClipCommand::ClipCommand(Document& document, PartId id, rigmesh::Clip to, QUndoCommand* parent)
+ClipCommand::ClipCommand(Document& document, PartId id, ClipEdit edit, QUndoCommand* parent)
     : QUndoCommand(parent),
       document_(document),
       id_(id),
       index_(document.indexOf(id)),
-      from_(document.part(id).clip),
-      to_(std::move(to)) {
-    setObsolete(identicalClips(from_, to_));
+      edit_(std::move(edit)) {
+    setObsolete(edit_.changesNothing());
 }
 
 void ClipCommand::redo() {
-    document_.setClip(id_, to_);
+    document_.editClip(id_, edit_);
 }
 
 void ClipCommand::undo() {
-    document_.setClip(id_, from_);
+    document_.editClip(id_, edit_.inverse());
 }
 
 }  // namespace rigmesh::model

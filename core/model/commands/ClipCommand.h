@@ -1,11 +1,14 @@
 // The base of the commands that edit a part's animation clip (KeyPose,
-// DeleteKey, MoveKey, SetClipSettings): each builds the new clip up front
-// (so a bad edit throws before anything is pushed) and swaps whole clips on
-// redo and undo, so undo gives back the old clip exactly.
+// DeleteKey, MoveKey, SetClipSettings): each works out its edit up front (so
+// a bad edit throws before anything is pushed) and keeps only that edit, the
+// keys it takes out and puts in (ClipEdit.h): redo applies it, undo its
+// inverse, so undo gives back the old clip exactly, and n key commands cost
+// O(n log n) time and O(n) memory, not O(n^2).
 #pragma once
 
 #include <QUndoCommand>
 
+#include "model/ClipEdit.h"
 #include "model/Document.h"
 #include "model/recipe/RecipeStepSource.h"
 
@@ -17,13 +20,12 @@ class ClipCommand : public QUndoCommand, public RecipeStepSource {
     void undo() override;
 
     PartId partId() const { return id_; }
-    const rigmesh::Clip& fromClip() const { return from_; }
-    const rigmesh::Clip& toClip() const { return to_; }
+    const ClipEdit& edit() const { return edit_; }
 
   protected:
     // Throws rigmesh::Error on an unknown id. Obsolete (dropped on push)
-    // when `to` is exactly the part's clip.
-    ClipCommand(Document& document, PartId id, rigmesh::Clip to, QUndoCommand* parent);
+    // when the edit changes nothing.
+    ClipCommand(Document& document, PartId id, ClipEdit edit, QUndoCommand* parent);
     // The part's index when the command was made (recipe steps).
     int partIndex() const { return index_; }
 
@@ -31,7 +33,7 @@ class ClipCommand : public QUndoCommand, public RecipeStepSource {
     Document& document_;
     PartId id_;
     int index_;
-    rigmesh::Clip from_, to_;
+    ClipEdit edit_;
 };
 
 }  // namespace rigmesh::model

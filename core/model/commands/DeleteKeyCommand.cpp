@@ -6,10 +6,8 @@ namespace rigmesh::model {
 
 namespace {
 
-rigmesh::Clip withoutKey(const PartNode& node, double time) {
-    rigmesh::Clip clip = node.clip;
-    clip.removeKey(time);
-    return clip;
+ClipEdit withoutKey(const PartNode& node, double time) {
+    return localClipEdit(node.clip, {time}, [&](rigmesh::Clip& clip) { clip.removeKey(time); });
 }
 
 }  // namespace

@@ -6,10 +6,9 @@ namespace rigmesh::model {
 
 namespace {
 
-rigmesh::Clip keyed(const PartNode& node, double time) {
-    rigmesh::Clip clip = node.clip;
-    clip.setKey(time, node.pose);
-    return clip;
+ClipEdit keyed(const PartNode& node, double time) {
+    return localClipEdit(node.clip, {time},
+                         [&](rigmesh::Clip& clip) { clip.setKey(time, node.pose); });
 }
 
 }  // namespace

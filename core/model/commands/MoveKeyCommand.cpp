@@ -6,10 +6,9 @@ namespace rigmesh::model {
 
 namespace {
 
-rigmesh::Clip withKeyMoved(const PartNode& node, double from, double to) {
-    rigmesh::Clip clip = node.clip;
-    clip.moveKey(from, to);
-    return clip;
+ClipEdit withKeyMoved(const PartNode& node, double from, double to) {
+    return localClipEdit(node.clip, {from, to},
+                         [&](rigmesh::Clip& clip) { clip.moveKey(from, to); });
 }
 
 }  // namespace

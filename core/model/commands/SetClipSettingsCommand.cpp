@@ -8,13 +8,13 @@ namespace rigmesh::model {
 
 namespace {
 
-rigmesh::Clip withSettings(const PartNode& node, double framesPerSecond,
-                           rigmesh::Interpolation interpolation, rigmesh::PlaybackMode playback) {
-    rigmesh::Clip clip = node.clip;
-    clip.setFramesPerSecond(framesPerSecond);
-    clip.interpolation = interpolation;
-    clip.mode = playback;
-    return clip;
+ClipEdit withSettings(const PartNode& node, double framesPerSecond,
+                      rigmesh::Interpolation interpolation, rigmesh::PlaybackMode playback) {
+    return localClipEdit(node.clip, {}, [&](rigmesh::Clip& clip) {
+        clip.setFramesPerSecond(framesPerSecond);
+        clip.interpolation = interpolation;
+        clip.mode = playback;
+    });
 }
 
 }  // namespace
@@ -30,12 +30,12 @@ SetClipSettingsCommand::SetClipSettingsCommand(Document& document, PartId id,
 }
 
 nlohmann::json SetClipSettingsCommand::recipeStep() const {
-    const rigmesh::Clip& clip = toClip();
+    const ClipSettings& settings = edit().after;
     return {{"command", "clip_settings"},
             {"part", partIndex()},
-            {"frameRate", clip.framesPerSecond()},
-            {"interpolation", interpolationName(clip.interpolation)},
-            {"playback", playbackName(clip.mode)}};
+            {"frameRate", settings.framesPerSecond},
+            {"interpolation", interpolationName(settings.interpolation)},
+            {"playback", playbackName(settings.mode)}};
 }
 
 }  // namespace rigmesh::model

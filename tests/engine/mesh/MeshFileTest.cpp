@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "FullDisk.h"
 #include "base/Error.h"
 #include "mesh/MeshPrimitives.h"
 #include "mesh/MeshWriter.h"
@@ -266,6 +267,39 @@ TEST_F(MeshFile, GarbageIsRejectedForEveryFormat) {
 
 TEST_F(MeshFile, MissingFileThrows) {
     EXPECT_NE(readError(path("nothing.obj")).find("does not exist"), std::string::npos);
+}
+
+// Issue 9: on a full disk OBJ exited 0 and replaced the file with a
+// truncated one.
+TEST_F(MeshFile, AFullDiskIsAnErrorAndLeavesThePreviousFileAndNoTemporaryFile) {
+    const TriMesh big = makeIcosphere(4, 1.0);
+    for (const std::string name : {"full.obj", "full.off", "full.ply"}) {
+        writeMesh(makeIcosphere(1, 1.0), path(name));
+        const std::string previous = contents(path(name));
+        EXPECT_EQ(fulldisk::runOnFullDisk(2048, [&] { writeMesh(big, path(name)); }),
+                  fulldisk::FullDiskOutcome::RefusedWithError)
+            << name;
+        EXPECT_EQ(contents(path(name)), previous) << name;
+    }
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 3);
+}
+
+TEST_F(MeshFile, WritingKeepsPermissionsAndRefusesReadOnlyFiles) {
+    const TriMesh mesh = makeIcosphere(1, 1.0);
+    writeMesh(mesh, path("kept.obj"));
+    fs::permissions(path("kept.obj"), fs::perms::owner_read | fs::perms::owner_write);
+    writeMesh(mesh, path("kept.obj"));
+    EXPECT_EQ(fs::status(path("kept.obj")).permissions(),
+              fs::perms::owner_read | fs::perms::owner_write);
+    fs::permissions(path("kept.obj"), fs::perms::owner_read);
+    EXPECT_THROW(writeMesh(mesh, path("kept.obj")), Error);
+}
+
+TEST_F(MeshFile, NonFiniteCoordinatesAreRefused) {
+    TriMesh mesh = makeIcosphere(1, 1.0);
+    mesh.vertices[3].y() = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(writeMesh(mesh, path("nan.obj")), Error);
+    EXPECT_FALSE(fs::exists(path("nan.obj")));
 }
 
 }  // namespace

@@ -191,5 +191,15 @@ TEST(Clip, SingleKeyHoldsEverywhere) {
     EXPECT_EQ(clip.evaluate(7.0).rootTranslation, a.rootTranslation);
 }
 
+// Issue 9: key times of 1e308 reached a .glb as Infinity.
+TEST(Clip, KeysBeyondTheLongestKeyTimeAreRefused) {
+    Clip clip;
+    EXPECT_THROW(clip.setKey(1e308, Pose{}), Error);
+    EXPECT_THROW(clip.setKey(-2 * Clip::kLongestKeyTime, Pose{}), Error);
+    clip.setKey(Clip::kLongestKeyTime, Pose{});
+    EXPECT_THROW(clip.moveKey(Clip::kLongestKeyTime, 1e300), Error);
+    EXPECT_EQ(clip.keyTimes(), (std::vector<double>{Clip::kLongestKeyTime}));
+}
+
 }  // namespace
 }  // namespace rigmesh::posetest

@@ -1,0 +1,96 @@
+#include "io/GltfBuffers.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "base/Error.h"
+
+namespace rigmesh {
+namespace {
+
+using nlohmann::json;
+
+json parseGltf(const std::string& text) {
+    json gltf = json::parse(text, nullptr, false);
+    if (gltf.is_discarded() || !gltf.is_object())
+        throw Error("cannot export: the glTF exporter wrote invalid JSON");
+    return gltf;
+}
+
+std::uint32_t readU32(const std::string& bytes, std::size_t at) {
+    std::uint32_t value = 0;
+    for (int b = 3; b >= 0; --b)  // little-endian
+        value = (value << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(b)]);
+    return value;
+}
+
+// Zeroes `data` outside every buffer view of buffer 0 in `gltf`.
+void zeroUncovered(const json& gltf, char* data, std::size_t size) {
+    std::vector<bool> covered(size, false);
+    if (gltf.contains("bufferViews"))
+        for (const json& view : gltf["bufferViews"]) {
+            if (view.value("buffer", 0) != 0)
+                continue;
+            const std::size_t offset = view.value("byteOffset", std::size_t{0});
+            const std::size_t length = view.value("byteLength", std::size_t{0});
+            if (offset > size || length > size - offset)
+                throw Error("cannot export: the glTF exporter wrote a buffer view out of range");
+            std::fill(covered.begin() + static_cast<std::ptrdiff_t>(offset),
+                      covered.begin() + static_cast<std::ptrdiff_t>(offset + length), true);
+        }
+    for (std::size_t i = 0; i < size; ++i)
+        if (!covered[i])
+            data[i] = 0;
+}
+
+}  // namespace
+
+std::string zeroUnreferencedGlbBytes(std::string glb) {
+    // Header (magic, version, length), then chunks of (length, type, data).
+    const auto invalid = [] {
+        return Error("cannot export: the glTF exporter wrote an invalid .glb");
+    };
+    if (glb.size() < 20 || glb.compare(0, 4, "glTF") != 0)
+        throw invalid();
+    const std::size_t jsonLength = readU32(glb, 12);
+    if (readU32(glb, 16) != 0x4E4F534Au || jsonLength > glb.size() - 20)
+        throw invalid();
+    const json gltf = parseGltf(glb.substr(20, jsonLength));
+    const std::size_t binHeader = 20 + jsonLength;
+    if (binHeader == glb.size())
+        return glb;  // no binary chunk
+    if (glb.size() - binHeader < 8 || readU32(glb, binHeader + 4) != 0x004E4942u)
+        throw invalid();
+    const std::size_t binLength = readU32(glb, binHeader);
+    if (binLength > glb.size() - binHeader - 8)
+        throw invalid();
+    zeroUncovered(gltf, glb.data() + binHeader + 8, binLength);
+    return glb;
+}
+
+std::string zeroUnreferencedBinBytes(const std::string& gltfJson, std::string bin) {
+    zeroUncovered(parseGltf(gltfJson), bin.data(), bin.size());
+    return bin;
+}
+
+std::string withBufferUri(const std::string& gltfJson, const std::string& uri) {
+    json gltf = parseGltf(gltfJson);
+    if (!gltf.contains("buffers") || gltf["buffers"].empty())
+        throw Error("cannot export: the glTF exporter wrote no buffer");
+    gltf["buffers"][0]["uri"] = uri;
+    return gltf.dump(2) + "\n";
+}
+
+std::string bufferUriOf(const std::string& gltfJson) {
+    const json gltf = json::parse(gltfJson, nullptr, false);
+    if (gltf.is_discarded() || !gltf.is_object() || !gltf.contains("buffers") ||
+        !gltf["buffers"].is_array() || gltf["buffers"].empty() || !gltf["buffers"][0].is_object())
+        return "";
+    const json& uri = gltf["buffers"][0].value("uri", json());
+    return uri.is_string() ? uri.get<std::string>() : "";
+}
+
+}  // namespace rigmesh
