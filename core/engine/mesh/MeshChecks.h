@@ -32,6 +32,12 @@ struct MeshReport {
     bool isClosed() const { return faces > 0 && boundaryEdges == 0; }
     bool isManifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
     bool isOutwardOriented() const { return volume > 0 && inconsistentlyOrientedEdges == 0; }
+    // What the CLI summary reports as the mesh checks: closed, manifold,
+    // outward, no degenerate face and (when checked) no self-intersection.
+    bool passesChecks() const {
+        return isClosed() && isManifold() && isOutwardOriented() && degenerateFaces == 0 &&
+               selfIntersectingFacePairs <= 0;
+    }
     // Closed, manifold, consistently oriented, one component, genus 0.
     bool isWatertightGenus0() const {
         return isClosed() && isManifold() && inconsistentlyOrientedEdges == 0 && components == 1 &&
