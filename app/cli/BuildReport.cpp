@@ -26,6 +26,7 @@ nlohmann::json buildStatistics(const std::string& name, const SketchToPartResult
                           {"decompose", ms.decompose},
                           {"cross_sections", ms.crossSections},
                           {"surface", ms.surface},
+                          {"smoothing", ms.smoothing},
                           {"surface_checks", ms.checks},
                           {"skeleton", rigged.skeletonMilliseconds},
                           {"weights", rigged.weightsMilliseconds},

@@ -206,6 +206,7 @@ void runPipeline(benchmark::State& state, const std::vector<Vec2>& stroke,
                                        {"ms_decompose", ms.decompose},
                                        {"ms_cross_sections", ms.crossSections},
                                        {"ms_surface", ms.surface},
+                                       {"ms_smoothing", ms.smoothing},
                                        {"ms_checks", ms.checks}})
         state.counters[stage] = value;
 }

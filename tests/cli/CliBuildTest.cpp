@@ -47,12 +47,13 @@ TEST_P(GoodSketch, BuildsAMeshFileAndStatistics) {
     EXPECT_GT(json["ms_total"].get<double>(), 0.0);
     // Every stage is reported, the mesh checks too, and the total is their sum.
     double stageSum = 0;
-    for (const char* stage : {"clean", "triangulate", "chordal_axis", "decompose", "cross_sections",
-                              "surface", "surface_checks", "skeleton", "weights", "mesh_checks"}) {
+    for (const char* stage :
+         {"clean", "triangulate", "chordal_axis", "decompose", "cross_sections", "surface",
+          "smoothing", "surface_checks", "skeleton", "weights", "mesh_checks"}) {
         ASSERT_TRUE(json["ms_stages"].contains(stage)) << stage;
         stageSum += json["ms_stages"][stage].get<double>();
     }
-    EXPECT_EQ(json["ms_stages"].size(), 10u);
+    EXPECT_EQ(json["ms_stages"].size(), 11u);
     EXPECT_NEAR(json["ms_total"].get<double>(), stageSum, 1e-6 * stageSum);
     EXPECT_GT(json["ms_stages"]["mesh_checks"].get<double>(), 0.0);
     EXPECT_EQ(json["mesh"]["degenerate_faces"].get<int>(), 0);

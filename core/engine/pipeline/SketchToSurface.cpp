@@ -62,14 +62,19 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
                                                       surfaceOptions.targetEdgeLength,
                                                       options.sections));
     ms.crossSections = clock.lap();
-    result.surface = buildSurface(result.decomposition, result.cylinders, surfaceOptions);
+    SurfaceOptions unsmoothed = surfaceOptions;
+    unsmoothed.smooth = false;
+    result.surface = buildSurface(result.decomposition, result.cylinders, unsmoothed);
     ms.surface = clock.lap();
+    if (surfaceOptions.smooth)
+        smoothSurface(result.surface, result.decomposition, result.cylinders, surfaceOptions);
+    ms.smoothing = clock.lap();
 
     mapToWorld(frame, result);
     checkBuiltMesh(result.surface.mesh);
     ms.checks = clock.lap();
     ms.total = ms.clean + ms.triangulate + ms.chordalAxis + ms.decompose + ms.crossSections +
-               ms.surface + ms.checks;
+               ms.surface + ms.smoothing + ms.checks;
     return result;
 }
 

@@ -18,11 +18,12 @@ struct SketchToSurfaceOptions {
     SurfaceOptions surface;  // targetEdgeLength 0 = the cleaned outline's spacing
 };
 
-// Milliseconds spent in each stage; `checks` moves the result back to the
+// Milliseconds spent in each stage. `surface` builds the mesh, `smoothing`
+// runs Least-Squares Meshes on it, `checks` moves the result back to the
 // world and refuses a mesh with a non-finite coordinate or a degenerate face.
 struct StageTimings {
     double clean = 0, triangulate = 0, chordalAxis = 0, decompose = 0, crossSections = 0,
-           surface = 0, checks = 0, total = 0;
+           surface = 0, smoothing = 0, checks = 0, total = 0;
 };
 
 struct SketchToSurfaceResult {

@@ -268,13 +268,17 @@ SketchSurface buildSurface(const Decomposition& decomposition,
     for (std::size_t r = 0; r < decomposition.connecting.size(); ++r)
         builder.addConnectingRegion(static_cast<int>(r));
     SketchSurface surface = builder.mirrored();
-    if (options.smooth) {
-        surface.mesh.vertices = leastSquaresMesh(
-            surface.mesh, anchorWeights(surface, decomposition, cylinders, options),
-            options.maxAnchorWeight);
-        symmetrize(surface);
-    }
+    if (options.smooth)
+        smoothSurface(surface, decomposition, cylinders, options);
     return surface;
+}
+
+void smoothSurface(SketchSurface& surface, const Decomposition& decomposition,
+                   const std::vector<CylinderSections>& cylinders, const SurfaceOptions& options) {
+    surface.mesh.vertices =
+        leastSquaresMesh(surface.mesh, anchorWeights(surface, decomposition, cylinders, options),
+                         options.maxAnchorWeight);
+    symmetrize(surface);
 }
 
 }  // namespace rigmesh
