@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include <Eigen/Geometry>
 
@@ -83,15 +84,16 @@ class SegmentGrid {
     std::vector<std::vector<int>> cells_;
 };
 
-// More lattice rows or columns than this cannot come from an outline the
-// pipeline accepts (its vertex budget); it means broken input.
-constexpr double kMaxLatticeSteps = 1e7;
+// A lattice box of more points than this cannot come from an outline the
+// pipeline accepts (its vertex budget); it means an edge length the caller
+// did not check.
+constexpr double kMaxLatticePoints = 5e7;
 
 int stepCount(double extent, double step) {
     const double count = std::ceil(extent / step);
-    if (!(count <= kMaxLatticeSteps))
-        throw Error("internal error: a patch lattice of " + std::to_string(count) +
-                    " rows or columns");
+    if (!(count <= kMaxLatticePoints))
+        throw Error("the edge length is too small for this patch: " + std::to_string(count) +
+                    " lattice rows or columns");
     return static_cast<int>(count);
 }
 
@@ -105,6 +107,9 @@ std::vector<Vec2> latticeInside(const std::vector<Vec2>& boundary, double edgeLe
     const double rowHeight = h * std::sqrt(3.0) / 2.0;
     const int rows = stepCount(box.sizes().y(), rowHeight);
     const int columns = stepCount(box.sizes().x(), h);
+    if (!(double(rows + 1) * double(columns + 1) <= kMaxLatticePoints))
+        throw Error("the edge length is too small for this patch: " +
+                    std::to_string(double(rows + 1) * double(columns + 1)) + " lattice points");
     const SegmentGrid grid(boundary, box, h);
     std::vector<Vec2> points;
     for (int row = 0; row < rows; ++row) {
