@@ -18,7 +18,7 @@ LocalFrame localFrameOf(const std::vector<Vec2>& stroke) {
         return frame;
     // Half the sum, not the sum halved: the sum of two huge coordinates may overflow.
     frame.centre = 0.5 * box.min() + 0.5 * box.max();
-    const Vec2 size = 0.5 * box.sizes();
+    const Vec2 size = 0.5 * box.max() - 0.5 * box.min();  // halves first: no overflow
     const double diagonal = 2.0 * std::hypot(size.x(), size.y());
     if (std::isfinite(diagonal) && diagonal > 0)
         frame.scale = std::ldexp(1.0, std::ilogb(diagonal));

@@ -1,6 +1,5 @@
 #include "pipeline/SketchToSurface.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -45,9 +44,9 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     surfaceOptions.targetEdgeLength = surfaceOptions.targetEdgeLength > 0
                                           ? surfaceOptions.targetEdgeLength / frame.scale
                                           : result.polygon.spacing;
+    // Size and position first: the vertex estimate needs a finite outline.
+    checkOutlineScale(frame, result.polygon, result.polygon.spacing);
     checkEdgeLengthBudget(frame, result.polygon, surfaceOptions.targetEdgeLength);
-    checkOutlineScale(frame, result.polygon,
-                      std::min(surfaceOptions.targetEdgeLength, result.polygon.spacing));
     result.targetEdgeLength = surfaceOptions.targetEdgeLength;
     ms.clean = clock.lap();
 

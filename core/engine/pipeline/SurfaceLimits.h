@@ -22,7 +22,8 @@ inline constexpr double kCoordinateResolution = 1e-6;
 
 // Refuses an outline too small or too large, or lying too far from the origin
 // for its size (the mesh would have collapsed or non-finite faces). `spacing`
-// is the finest edge of the mesh, in local units.
+// is the outline's spacing in local units; the edge length budget keeps the
+// mesh's edges within a small factor of it.
 void checkOutlineScale(const LocalFrame& frame, const CleanPolygon& localOutline, double spacing);
 
 // Refuses an edge length (local units) that would give more than

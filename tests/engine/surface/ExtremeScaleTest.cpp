@@ -76,6 +76,9 @@ TEST(ExtremeScale, SizesBeyondTheSupportedRangeAreRefused) {
     EXPECT_NE(errorOf(transformed("tube", 1e40, 0.0)).find("sizes from"), std::string::npos);
     EXPECT_NE(errorOf(transformed("tube", 1e-60, 0.0)).find("sizes from"), std::string::npos);
     EXPECT_NE(errorOf(transformed("tube", 1e28, 1e40)).find("too far"), std::string::npos);
+    // A box wider than the largest double: its size overflows, still a message.
+    const std::vector<Vec2> widest{{-1.7e308, 0}, {1.7e308, 0}, {1e308, 1e308}, {0, 1e308}};
+    EXPECT_NE(errorOf(widest).find("sizes from"), std::string::npos) << errorOf(widest);
 }
 
 TEST(EdgeLengthBudget, EdgeLengthGivingTooManyVerticesIsRefusedWithTheAllowedRange) {
