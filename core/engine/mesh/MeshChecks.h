@@ -50,6 +50,10 @@ struct MeshReport {
 // Throws Error if a face index is out of range or a coordinate is not finite.
 MeshReport analyseMesh(const TriMesh& mesh, bool checkSelfIntersections = true);
 
+// MeshReport::degenerateFaces alone, without the rest of the analysis.
+// Throws as analyseMesh does.
+int countDegenerateFaces(const TriMesh& mesh);
+
 // The edges with exactly one incident face, as (from, to) in that face's order.
 std::vector<std::array<int, 2>> boundaryEdgeList(const TriMesh& mesh);
 

@@ -111,9 +111,9 @@ void checkBuiltMesh(const TriMesh& mesh) {
             throw Error(
                 "the surface has a vertex with a non-finite coordinate; the sketch's "
                 "numbers are beyond what double precision can build");
-    const MeshReport report = analyseMesh(mesh, false);
-    if (report.degenerateFaces > 0)
-        throw Error("the surface has " + std::to_string(report.degenerateFaces) +
+    const int degenerate = countDegenerateFaces(mesh);
+    if (degenerate > 0)
+        throw Error("the surface has " + std::to_string(degenerate) +
                     " degenerate faces; double precision cannot build this sketch at its "
                     "position and size");
 }

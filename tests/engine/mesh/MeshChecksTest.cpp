@@ -230,6 +230,16 @@ TEST(MeshChecks, DegenerateFaceFailsTheChecks) {
     EXPECT_FALSE(analyseMesh(mesh).passesChecks());
 }
 
+TEST(MeshChecks, CountDegenerateFacesAgreesWithTheFullReport) {
+    TriMesh mesh = tetrahedron();
+    EXPECT_EQ(countDegenerateFaces(mesh), 0);
+    mesh.faces.push_back({0, 0, 1});        // repeated index
+    mesh.vertices.emplace_back(0.5, 0, 0);  // on the edge 0-1
+    mesh.faces.push_back({0, 1, 4});        // zero area
+    EXPECT_EQ(countDegenerateFaces(mesh), 2);
+    EXPECT_EQ(countDegenerateFaces(mesh), analyseMesh(mesh).degenerateFaces);
+}
+
 TEST(MeshChecks, VolumeFarFromTheOriginIsExactAsAtTheOrigin) {
     const double radius = 2.0;
     const TriMesh atOrigin = makeIcosphere(4, radius);
