@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 
 #include "BuildReport.h"
@@ -66,8 +68,12 @@ void writeOutput(const Part& part, const std::string& path, const ExportOptions&
 ExportOptions exportOptions(const CommandLine& line) {
     ExportOptions options;
     if (auto influences = line.number("--max-influences")) {
-        if (*influences < 0 || *influences != std::floor(*influences))
-            throw Error("--max-influences must be a whole number >= 0 (0 = all the format allows)");
+        // Checked before the cast: converting a double outside int's range is undefined.
+        constexpr int kMostInfluences = std::numeric_limits<int>::max();
+        if (*influences < 0 || *influences > kMostInfluences ||
+            *influences != std::floor(*influences))
+            throw Error("--max-influences must be a whole number from 0 to " +
+                        std::to_string(kMostInfluences) + " (0 = all the format allows)");
         options.maxInfluences = static_cast<int>(*influences);
     }
     return options;
@@ -106,8 +112,13 @@ int runBuild(const std::vector<std::string>& arguments) {
     const SketchToPartResult result = sketchToPart(sketch.points, sketch.name, options);
     const Part& part = result.part;
 
+    const auto checksStart = std::chrono::steady_clock::now();
     const MeshReport report = analyseMesh(part.mesh);
-    const nlohmann::json statistics = buildStatistics(sketch.name, result, report);
+    const double checksMilliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - checksStart)
+            .count();
+    const nlohmann::json statistics =
+        buildStatistics(sketch.name, result, report, checksMilliseconds);
     if (auto out = line.value("-o")) {
         std::optional<Clip> clip;
         if (line.flag("--pose-demo"))

@@ -5,7 +5,7 @@
 namespace rigmesh::cli {
 
 nlohmann::json buildStatistics(const std::string& name, const SketchToPartResult& rigged,
-                               const MeshReport& report) {
+                               const MeshReport& report, double meshChecksMilliseconds) {
     const SketchToSurfaceResult& result = rigged.surface;
     const StageTimings& ms = result.milliseconds;
     nlohmann::json stats;
@@ -19,16 +19,20 @@ nlohmann::json buildStatistics(const std::string& name, const SketchToPartResult
     stats["joints"] = rigged.part.skeleton.jointCount();
     stats["bones"] = rigged.part.skeleton.boneCount();
     stats["failed_bones"] = rigged.part.weights.failedBones.size();
-    stats["ms_total"] = rigged.totalMilliseconds;
+    stats["ms_total"] = rigged.totalMilliseconds + meshChecksMilliseconds;
     stats["ms_stages"] = {{"clean", ms.clean},
                           {"triangulate", ms.triangulate},
                           {"chordal_axis", ms.chordalAxis},
                           {"decompose", ms.decompose},
                           {"cross_sections", ms.crossSections},
                           {"surface", ms.surface},
+                          {"smoothing", ms.smoothing},
+                          {"surface_checks", ms.checks},
                           {"skeleton", rigged.skeletonMilliseconds},
-                          {"weights", rigged.weightsMilliseconds}};
-    stats["mesh"] = {{"closed", report.isClosed()},
+                          {"weights", rigged.weightsMilliseconds},
+                          {"mesh_checks", meshChecksMilliseconds}};
+    stats["mesh"] = {{"checks_passed", report.passesChecks()},
+                     {"closed", report.isClosed()},
                      {"manifold", report.isManifold()},
                      {"outward", report.isOutwardOriented()},
                      {"components", report.components},
@@ -47,15 +51,18 @@ std::string buildSummary(const nlohmann::json& s) {
     std::snprintf(
         text, sizeof text,
         "%s: %d vertices, %d faces, %d cylindrical + %d connecting regions, %d joints, %d bones\n"
-        "  surface: %s, %s, genus %d, %d self-intersecting face pairs, min angle %.1f deg\n"
+        "  surface: %s, %s, genus %d, %d self-intersecting face pairs, %d degenerate faces, "
+        "min angle %.1f deg\n"
+        "  mesh checks: %s\n"
         "  time: %.2f ms total\n",
         s["sketch"].get<std::string>().c_str(), s["vertices"].get<int>(), s["faces"].get<int>(),
         s["cylindrical_regions"].get<int>(), s["connecting_regions"].get<int>(),
         s["joints"].get<int>(), s["bones"].get<int>(),
         mesh["closed"].get<bool>() ? "closed" : "OPEN",
         mesh["manifold"].get<bool>() ? "manifold" : "NON-MANIFOLD", mesh["genus"].get<int>(),
-        mesh["self_intersecting_face_pairs"].get<int>(), mesh["min_angle_degrees"].get<double>(),
-        s["ms_total"].get<double>());
+        mesh["self_intersecting_face_pairs"].get<int>(), mesh["degenerate_faces"].get<int>(),
+        mesh["min_angle_degrees"].get<double>(),
+        mesh["checks_passed"].get<bool>() ? "passed" : "FAILED", s["ms_total"].get<double>());
     return text;
 }
 

@@ -9,8 +9,10 @@
 
 namespace rigmesh::cli {
 
+// `meshChecksMilliseconds` is the time analyseMesh took to make `report`; it
+// is a stage of its own and part of "ms_total".
 nlohmann::json buildStatistics(const std::string& name, const SketchToPartResult& rigged,
-                               const MeshReport& report);
+                               const MeshReport& report, double meshChecksMilliseconds);
 
 // A few human-readable lines for the terminal.
 std::string buildSummary(const nlohmann::json& statistics);

@@ -188,15 +188,27 @@ void runPipeline(benchmark::State& state, const std::vector<Vec2>& stroke,
                  const SketchToSurfaceOptions& options) {
     int vertices = 0;
     int faces = 0;
+    StageTimings ms;
     for (auto _ : state) {
         SketchToSurfaceResult result = sketchToSurface(stroke, options);
         benchmark::DoNotOptimize(result.surface.mesh.vertices.data());
         benchmark::ClobberMemory();
         vertices = result.surface.mesh.vertexCount();
         faces = result.surface.mesh.faceCount();
+        ms = result.milliseconds;
     }
     state.counters["vertices"] = vertices;
     state.counters["faces"] = faces;
+    // Each stage's milliseconds in the last run, to see which one grows faster than n.
+    for (const auto& [stage, value] : {std::pair{"ms_clean", ms.clean},
+                                       {"ms_triangulate", ms.triangulate},
+                                       {"ms_chordal_axis", ms.chordalAxis},
+                                       {"ms_decompose", ms.decompose},
+                                       {"ms_cross_sections", ms.crossSections},
+                                       {"ms_surface", ms.surface},
+                                       {"ms_smoothing", ms.smoothing},
+                                       {"ms_checks", ms.checks}})
+        state.counters[stage] = value;
 }
 
 void benchPipeline(benchmark::State& state, SketchData* sketch) {
@@ -280,7 +292,8 @@ void registerBenchmarks() {
         if (owned->name != "biped") {
             continue;
         }
-        for (int target : {1000, 3000, 10000, 30000}) {
+        // 110k: the size the issue measured (surface stage about n^1.4 there).
+        for (int target : {1000, 3000, 10000, 30000, 110000}) {
             scalingCases.push_back(
                 std::make_unique<ScalingCase>(ScalingCase{owned.get(), target, nullptr}));
             benchmark::RegisterBenchmark(

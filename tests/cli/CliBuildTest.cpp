@@ -11,6 +11,7 @@
 namespace fs = std::filesystem;
 using rigmesh::test::readWholeFile;
 using rigmesh::test::runCli;
+using rigmesh::test::scratch;
 
 namespace {
 
@@ -25,12 +26,6 @@ std::vector<std::string> sketchNames(bool bad) {
     }
     std::sort(names.begin(), names.end());
     return names;
-}
-
-fs::path scratch(const std::string& name) {
-    fs::path folder = fs::temp_directory_path() / "rigmesh_cli_test";
-    fs::create_directories(folder);
-    return folder / name;
 }
 
 class GoodSketch : public testing::TestWithParam<std::string> {};
@@ -50,9 +45,20 @@ TEST_P(GoodSketch, BuildsAMeshFileAndStatistics) {
     EXPECT_GT(json["vertices"].get<int>(), 100);
     EXPECT_GT(json["faces"].get<int>(), 100);
     EXPECT_GT(json["ms_total"].get<double>(), 0.0);
+    // Every stage is reported, the mesh checks too, and the total is their sum.
+    double stageSum = 0;
     for (const char* stage :
-         {"clean", "triangulate", "chordal_axis", "decompose", "cross_sections", "surface"})
-        EXPECT_TRUE(json["ms_stages"].contains(stage)) << stage;
+         {"clean", "triangulate", "chordal_axis", "decompose", "cross_sections", "surface",
+          "smoothing", "surface_checks", "skeleton", "weights", "mesh_checks"}) {
+        ASSERT_TRUE(json["ms_stages"].contains(stage)) << stage;
+        stageSum += json["ms_stages"][stage].get<double>();
+    }
+    EXPECT_EQ(json["ms_stages"].size(), 11u);
+    EXPECT_NEAR(json["ms_total"].get<double>(), stageSum, 1e-6 * stageSum);
+    EXPECT_GT(json["ms_stages"]["mesh_checks"].get<double>(), 0.0);
+    EXPECT_EQ(json["mesh"]["degenerate_faces"].get<int>(), 0);
+    EXPECT_TRUE(json["mesh"]["checks_passed"].get<bool>());
+    EXPECT_NE(result.out.find("mesh checks: passed"), std::string::npos) << result.out;
     EXPECT_TRUE(json["mesh"]["closed"].get<bool>());
     EXPECT_TRUE(json["mesh"]["manifold"].get<bool>());
     EXPECT_EQ(json["mesh"]["genus"].get<int>(), 0);

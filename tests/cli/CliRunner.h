@@ -40,4 +40,11 @@ inline CliResult runCli(const std::string& arguments) {
     return result;
 }
 
+// A path in the CLI tests' scratch folder (created on first use).
+inline std::filesystem::path scratch(const std::string& name) {
+    std::filesystem::path folder = std::filesystem::temp_directory_path() / "rigmesh_cli_test";
+    std::filesystem::create_directories(folder);
+    return folder / name;
+}
+
 }  // namespace rigmesh::test

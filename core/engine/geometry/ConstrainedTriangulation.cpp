@@ -137,14 +137,20 @@ PatchTriangulation triangulatePatch(const std::vector<Vec2>& boundary,
     PatchTriangulation result;
     result.points = boundary;
     // Keep the interior points that fall inside the domain, then insert them.
+    // Each search starts where the previous one ended: the lattice comes row
+    // by row, so the walks stay short (from an arbitrary face each would
+    // cross about sqrt(n) faces, n^1.5 in all).
     std::vector<Vec2> inside;
+    Cdt::Face_handle hint;
     for (const Vec2& p : interiorPoints) {
-        auto face = cdt.locate(Point(p.x(), p.y()));
-        if (!cdt.is_infinite(face) && face->info().inDomain())
+        hint = cdt.locate(Point(p.x(), p.y()), hint);
+        if (!cdt.is_infinite(hint) && hint->info().inDomain())
             inside.push_back(p);
     }
+    Cdt::Face_handle insertHint;
     auto insertNew = [&](const Vec2& p) {
-        auto vertex = cdt.insert(Point(p.x(), p.y()));
+        auto vertex = cdt.insert(Point(p.x(), p.y()), insertHint);
+        insertHint = vertex->face();
         if (vertex->info().value != kNoIndex)
             return;  // coincides with an existing point
         vertex->info().value = static_cast<int>(result.points.size());

@@ -100,15 +100,11 @@ void forEachEdge(const std::vector<EdgeUse>& uses, Visit visit) {
     }
 }
 
-double bboxDiagonalSquared(const TriMesh& mesh) {
-    if (mesh.vertices.empty())
-        return 0;
-    Vec3 lo = mesh.vertices.front(), hi = lo;
-    for (const Vec3& v : mesh.vertices) {
-        lo = lo.cwiseMin(v);
-        hi = hi.cwiseMax(v);
-    }
-    return (hi - lo).squaredNorm();
+Eigen::AlignedBox3d boundingBox(const TriMesh& mesh) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : mesh.vertices)
+        box.extend(v);
+    return box;
 }
 
 // Topology from the edge map: boundary, non-manifold and mis-oriented edges,
@@ -181,8 +177,22 @@ void analyseTopology(const TriMesh& mesh, MeshReport& report) {
 }
 
 // Degenerate faces, angles, area and signed volume.
+// Faces of at most this area count as degenerate.
+double degenerateAreaBound(const Eigen::AlignedBox3d& box) {
+    return box.isEmpty() ? 0.0 : kDegenerateAreaFactor * box.diagonal().squaredNorm();
+}
+
+double faceArea(const TriMesh& mesh, const std::array<int, 3>& face) {
+    const Vec3& a = mesh.vertices[face[0]];
+    return 0.5 * (mesh.vertices[face[1]] - a).cross(mesh.vertices[face[2]] - a).norm();
+}
+
 void analyseGeometry(const TriMesh& mesh, MeshReport& report) {
-    const double minArea = kDegenerateAreaFactor * bboxDiagonalSquared(mesh);
+    const Eigen::AlignedBox3d box = boundingBox(mesh);
+    const double minArea = degenerateAreaBound(box);
+    // Cones to the box centre, not to the world origin: far from the origin
+    // the cones' volumes would be huge and cancel to noise.
+    const Vec3 apex = box.isEmpty() ? Vec3(Vec3::Zero()) : Vec3(box.center());
     double minAngle = 180, maxAngle = 0;
     bool anyAngle = false;
     for (const auto& face : mesh.faces) {
@@ -193,10 +203,10 @@ void analyseGeometry(const TriMesh& mesh, MeshReport& report) {
         const Vec3& a = mesh.vertices[face[0]];
         const Vec3& b = mesh.vertices[face[1]];
         const Vec3& c = mesh.vertices[face[2]];
-        const double area = 0.5 * (b - a).cross(c - a).norm();
+        const double area = faceArea(mesh, face);
         report.area += area;
-        // Divergence theorem: each face adds the signed volume of its cone to the origin.
-        report.volume += a.dot(b.cross(c)) / 6;
+        // Divergence theorem: each face adds the signed volume of its cone to the apex.
+        report.volume += (a - apex).dot((b - apex).cross(c - apex)) / 6;
         if (area <= minArea) {
             ++report.degenerateFaces;
             continue;
@@ -230,6 +240,15 @@ MeshReport analyseMesh(const TriMesh& mesh, bool checkSelfIntersections) {
     report.selfIntersectingFacePairs =
         checkSelfIntersections ? countSelfIntersectingFacePairs(mesh) : -1;
     return report;
+}
+
+int countDegenerateFaces(const TriMesh& mesh) {
+    validate(mesh);
+    const double minArea = degenerateAreaBound(boundingBox(mesh));
+    int count = 0;
+    for (const auto& face : mesh.faces)
+        count += hasRepeatedIndex(face) || faceArea(mesh, face) <= minArea;
+    return count;
 }
 
 std::vector<std::array<int, 2>> boundaryEdgeList(const TriMesh& mesh) {

@@ -32,6 +32,12 @@ struct MeshReport {
     bool isClosed() const { return faces > 0 && boundaryEdges == 0; }
     bool isManifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
     bool isOutwardOriented() const { return volume > 0 && inconsistentlyOrientedEdges == 0; }
+    // What the CLI summary reports as the mesh checks: closed, manifold,
+    // outward, no degenerate face and (when checked) no self-intersection.
+    bool passesChecks() const {
+        return isClosed() && isManifold() && isOutwardOriented() && degenerateFaces == 0 &&
+               selfIntersectingFacePairs <= 0;
+    }
     // Closed, manifold, consistently oriented, one component, genus 0.
     bool isWatertightGenus0() const {
         return isClosed() && isManifold() && inconsistentlyOrientedEdges == 0 && components == 1 &&
@@ -43,6 +49,10 @@ struct MeshReport {
 // are left out of the topology (edges, fans, components, Euler characteristic).
 // Throws Error if a face index is out of range or a coordinate is not finite.
 MeshReport analyseMesh(const TriMesh& mesh, bool checkSelfIntersections = true);
+
+// MeshReport::degenerateFaces alone, without the rest of the analysis.
+// Throws as analyseMesh does.
+int countDegenerateFaces(const TriMesh& mesh);
 
 // The edges with exactly one incident face, as (from, to) in that face's order.
 std::vector<std::array<int, 2>> boundaryEdgeList(const TriMesh& mesh);

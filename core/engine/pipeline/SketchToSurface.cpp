@@ -1,8 +1,12 @@
 #include "pipeline/SketchToSurface.h"
 
 #include <chrono>
+#include <cmath>
 
+#include "base/Error.h"
 #include "geometry/ConstrainedTriangulation.h"
+#include "pipeline/LocalFrame.h"
+#include "pipeline/SurfaceLimits.h"
 
 namespace rigmesh {
 namespace {
@@ -28,28 +32,48 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     StageClock clock;
     auto& ms = result.milliseconds;
 
-    result.polygon = cleanStroke(stroke, options.stroke);
+    // Every stage runs in the stroke's local frame; lengths given in world
+    // units are converted there and everything is moved back at the end.
+    const LocalFrame frame = localFrameOf(stroke);
+    StrokeCleanOptions cleanOptions = options.stroke;
+    cleanOptions.spacing /= frame.scale;
+    result.polygon = cleanStroke(toLocal(frame, stroke), cleanOptions);
+    SurfaceOptions surfaceOptions = options.surface;
+    if (!(std::isfinite(surfaceOptions.targetEdgeLength) && surfaceOptions.targetEdgeLength >= 0))
+        throw Error("the target edge length must be 0 (automatic) or a positive length");
+    surfaceOptions.targetEdgeLength = surfaceOptions.targetEdgeLength > 0
+                                          ? surfaceOptions.targetEdgeLength / frame.scale
+                                          : result.polygon.spacing;
+    // Size and position first: the vertex estimate needs a finite outline.
+    checkOutlineScale(frame, result.polygon, result.polygon.spacing);
+    checkEdgeLengthBudget(frame, result.polygon, surfaceOptions.targetEdgeLength);
+    result.targetEdgeLength = surfaceOptions.targetEdgeLength;
     ms.clean = clock.lap();
+
     PolygonTriangulation cdt = triangulatePolygon(result.polygon.points);
     ms.triangulate = clock.lap();
     ChordalAxis axis = computeChordalAxis(std::move(cdt), options.decomposition.axis);
     ms.chordalAxis = clock.lap();
     result.decomposition = decompose(std::move(axis), options.decomposition);
     ms.decompose = clock.lap();
-
-    SurfaceOptions surfaceOptions = options.surface;
-    if (!(surfaceOptions.targetEdgeLength > 0))
-        surfaceOptions.targetEdgeLength = result.polygon.spacing;
-    result.targetEdgeLength = surfaceOptions.targetEdgeLength;
     for (std::size_t c = 0; c < result.decomposition.cylinders.size(); ++c)
         result.cylinders.push_back(buildCrossSections(result.decomposition, static_cast<int>(c),
                                                       surfaceOptions.targetEdgeLength,
                                                       options.sections));
     ms.crossSections = clock.lap();
-    result.surface = buildSurface(result.decomposition, result.cylinders, surfaceOptions);
+    SurfaceOptions unsmoothed = surfaceOptions;
+    unsmoothed.smooth = false;
+    result.surface = buildSurface(result.decomposition, result.cylinders, unsmoothed);
     ms.surface = clock.lap();
-    ms.total =
-        ms.clean + ms.triangulate + ms.chordalAxis + ms.decompose + ms.crossSections + ms.surface;
+    if (surfaceOptions.smooth)
+        smoothSurface(result.surface, result.decomposition, result.cylinders, surfaceOptions);
+    ms.smoothing = clock.lap();
+
+    mapToWorld(frame, result);
+    checkBuiltMesh(result.surface.mesh);
+    ms.checks = clock.lap();
+    ms.total = ms.clean + ms.triangulate + ms.chordalAxis + ms.decompose + ms.crossSections +
+               ms.surface + ms.smoothing + ms.checks;
     return result;
 }
 

@@ -18,10 +18,12 @@ struct SketchToSurfaceOptions {
     SurfaceOptions surface;  // targetEdgeLength 0 = the cleaned outline's spacing
 };
 
-// Milliseconds spent in each stage.
+// Milliseconds spent in each stage. `surface` builds the mesh, `smoothing`
+// runs Least-Squares Meshes on it, `checks` moves the result back to the
+// world and refuses a mesh with a non-finite coordinate or a degenerate face.
 struct StageTimings {
     double clean = 0, triangulate = 0, chordalAxis = 0, decompose = 0, crossSections = 0,
-           surface = 0, total = 0;
+           surface = 0, smoothing = 0, checks = 0, total = 0;
 };
 
 struct SketchToSurfaceResult {
@@ -33,7 +35,9 @@ struct SketchToSurfaceResult {
     StageTimings milliseconds;
 };
 
-// Throws rigmesh::Error with a user-readable reason on bad input.
+// Throws rigmesh::Error with a user-readable reason on bad input: besides a
+// bad stroke, an outline whose size or position double precision cannot
+// build (SurfaceLimits.h) or an edge length giving too many vertices.
 SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
                                       const SketchToSurfaceOptions& options = {});
 

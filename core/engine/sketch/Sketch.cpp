@@ -97,6 +97,9 @@ Sketch parseSketchJson(const std::string& text, const std::string& sourceName) {
         document = nlohmann::json::parse(quoteNonFiniteTokens(text));
     } catch (const nlohmann::json::parse_error& error) {
         throw Error("Sketch \"" + sourceName + "\" is not valid JSON: " + error.what());
+    } catch (const nlohmann::json::exception& error) {
+        // E.g. out_of_range 406: a number like 1e999 that no double can hold.
+        throw Error("Sketch \"" + sourceName + "\" has a number out of range: " + error.what());
     }
     if (!document.is_object()) {
         throw Error("Sketch \"" + sourceName +

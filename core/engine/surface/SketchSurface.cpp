@@ -1,6 +1,7 @@
 #include "surface/SketchSurface.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -12,16 +13,10 @@
 #include "base/Error.h"
 #include "geometry/ConstrainedTriangulation.h"
 #include "surface/LeastSquaresMesh.h"
+#include "surface/PatchLattice.h"
 
 namespace rigmesh {
 namespace {
-
-double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
-    Vec2 ab = b - a;
-    double t =
-        ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-    return (p - (a + t * ab)).norm();
-}
 
 // The upper half of the surface under construction.
 class HalfSurfaceBuilder {
@@ -101,7 +96,8 @@ class HalfSurfaceBuilder {
         for (int v : loop)
             loop2d.push_back(positions_[v].head<2>());
 
-        PatchTriangulation patch = triangulatePatch(loop2d, latticeInside(loop2d), rim);
+        PatchTriangulation patch =
+            triangulatePatch(loop2d, latticeInside(loop2d, options_.targetEdgeLength), rim);
         std::vector<int> vertexOf(patch.points.size());
         for (std::size_t i = 0; i < patch.points.size(); ++i)
             vertexOf[i] = i < loop.size() ? loop[i]
@@ -190,37 +186,21 @@ class HalfSurfaceBuilder {
         while (i < na || j < nb) {
             bool advanceA = i == na ? false : j == nb ? true : (i + 1) * nb <= (j + 1) * na;
             if (advanceA) {
-                faces_.push_back({a[i], a[i + 1], b[j]});
+                addStripFace({a[i], a[i + 1], b[j]});
                 ++i;
             } else {
-                faces_.push_back({a[i], b[j + 1], b[j]});
+                addStripFace({a[i], b[j + 1], b[j]});
                 ++j;
             }
         }
     }
 
-    // A triangular lattice at the target edge length, kept away from the
-    // boundary (the interior points of the patch, cf. GridMesh).
-    std::vector<Vec2> latticeInside(const std::vector<Vec2>& boundary) const {
-        const double h = options_.targetEdgeLength;
-        Eigen::AlignedBox2d box;
-        for (const Vec2& p : boundary)
-            box.extend(p);
-        std::vector<Vec2> points;
-        const double rowHeight = h * std::sqrt(3.0) / 2.0;
-        int row = 0;
-        for (double y = box.min().y() + 0.5 * rowHeight; y < box.max().y(); y += rowHeight, ++row)
-            for (double x = box.min().x() + (row % 2 ? 0.5 * h : 0.0); x < box.max().x(); x += h) {
-                Vec2 p(x, y);
-                double clearance = std::numeric_limits<double>::max();
-                for (std::size_t i = 0; i < boundary.size(); ++i)
-                    clearance = std::min(
-                        clearance,
-                        pointSegmentDistance(p, boundary[i], boundary[(i + 1) % boundary.size()]));
-                if (clearance > 0.5 * h)
-                    points.push_back(p);
-            }
-        return points;
+    // Neighbouring rings may share an outline vertex (a cap tip on an end
+    // point of the last section, as on a circle): the strip triangle there
+    // collapses to an edge and the next one already covers the gap.
+    void addStripFace(const std::array<int, 3>& face) {
+        if (face[0] != face[1] && face[1] != face[2] && face[2] != face[0])
+            faces_.push_back(face);
     }
 
     const Decomposition& decomposition_;
@@ -288,13 +268,17 @@ SketchSurface buildSurface(const Decomposition& decomposition,
     for (std::size_t r = 0; r < decomposition.connecting.size(); ++r)
         builder.addConnectingRegion(static_cast<int>(r));
     SketchSurface surface = builder.mirrored();
-    if (options.smooth) {
-        surface.mesh.vertices = leastSquaresMesh(
-            surface.mesh, anchorWeights(surface, decomposition, cylinders, options),
-            options.maxAnchorWeight);
-        symmetrize(surface);
-    }
+    if (options.smooth)
+        smoothSurface(surface, decomposition, cylinders, options);
     return surface;
+}
+
+void smoothSurface(SketchSurface& surface, const Decomposition& decomposition,
+                   const std::vector<CylinderSections>& cylinders, const SurfaceOptions& options) {
+    surface.mesh.vertices =
+        leastSquaresMesh(surface.mesh, anchorWeights(surface, decomposition, cylinders, options),
+                         options.maxAnchorWeight);
+    symmetrize(surface);
 }
 
 }  // namespace rigmesh

@@ -53,4 +53,10 @@ SketchSurface buildSurface(const Decomposition& decomposition,
                            const std::vector<CylinderSections>& cylinders,
                            const SurfaceOptions& options);
 
+// The Least-Squares Meshes step of buildSurface (paper 2.2, Fig. 3f) on its
+// own, for callers that time it separately: buildSurface with `smooth` off,
+// then this, gives what buildSurface with `smooth` on gives.
+void smoothSurface(SketchSurface& surface, const Decomposition& decomposition,
+                   const std::vector<CylinderSections>& cylinders, const SurfaceOptions& options);
+
 }  // namespace rigmesh

@@ -38,6 +38,9 @@ nlohmann::json parseRecipe(const std::string& text, const std::string& sourceNam
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& error) {
         throw Error(sourceName + " is not valid JSON: " + error.what());
+    } catch (const nlohmann::json::exception& error) {
+        // E.g. out_of_range 406: a number like 1e999 that no double can hold.
+        throw Error(sourceName + " has a number out of range: " + error.what());
     }
 }
 

@@ -223,6 +223,36 @@ TEST(MeshChecks, RepeatedVertexIndexFaceIsDegenerate) {
     EXPECT_TRUE(report.isWatertightGenus0());
 }
 
+TEST(MeshChecks, DegenerateFaceFailsTheChecks) {
+    TriMesh mesh = tetrahedron();
+    EXPECT_TRUE(analyseMesh(mesh).passesChecks());
+    mesh.faces.push_back({0, 0, 1});
+    EXPECT_FALSE(analyseMesh(mesh).passesChecks());
+}
+
+TEST(MeshChecks, CountDegenerateFacesAgreesWithTheFullReport) {
+    TriMesh mesh = tetrahedron();
+    EXPECT_EQ(countDegenerateFaces(mesh), 0);
+    mesh.faces.push_back({0, 0, 1});        // repeated index
+    mesh.vertices.emplace_back(0.5, 0, 0);  // on the edge 0-1
+    mesh.faces.push_back({0, 1, 4});        // zero area
+    EXPECT_EQ(countDegenerateFaces(mesh), 2);
+    EXPECT_EQ(countDegenerateFaces(mesh), analyseMesh(mesh).degenerateFaces);
+}
+
+TEST(MeshChecks, VolumeFarFromTheOriginIsExactAsAtTheOrigin) {
+    const double radius = 2.0;
+    const TriMesh atOrigin = makeIcosphere(4, radius);
+    const double reference = analyseMesh(atOrigin, false).volume;
+    TriMesh moved = atOrigin;
+    for (Vec3& v : moved.vertices)
+        v += Vec3(3e8, -3e8, 3e8);
+    const MeshReport report = analyseMesh(moved, false);
+    // Cones to the world origin lost the volume to cancellation at 3e8.
+    EXPECT_NEAR(report.volume, reference, 1e-6 * reference);
+    EXPECT_TRUE(report.isOutwardOriented());
+}
+
 TEST(MeshChecks, CollinearFaceIsDegenerate) {
     TriMesh mesh = tetrahedron();
     mesh.vertices.emplace_back(0.5, 0, 0);

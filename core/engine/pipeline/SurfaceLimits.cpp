@@ -1,0 +1,121 @@
+#include "pipeline/SurfaceLimits.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "base/Error.h"
+#include "mesh/MeshChecks.h"
+
+namespace rigmesh {
+namespace {
+
+std::string shortNumber(double value) {
+    std::ostringstream text;
+    text.precision(3);
+    text << value;
+    return text.str();
+}
+
+Eigen::AlignedBox2d boxOf(const std::vector<Vec2>& points) {
+    Eigen::AlignedBox2d box;
+    for (const Vec2& p : points)
+        box.extend(p);
+    return box;
+}
+
+double enclosedArea(const std::vector<Vec2>& polygon) {
+    double twiceArea = 0.0;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const Vec2& a = polygon[i];
+        const Vec2& b = polygon[(i + 1) % polygon.size()];
+        twiceArea += a.x() * b.y() - a.y() * b.x();
+    }
+    return 0.5 * std::abs(twiceArea);
+}
+
+double perimeter(const std::vector<Vec2>& polygon) {
+    double length = 0.0;
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+        length += (polygon[(i + 1) % polygon.size()] - polygon[i]).norm();
+    return length;
+}
+
+// Both halves of the surface: each covers the outline's area inflated by up
+// to pi/2 (a semicircle over its chord) with a triangular lattice (1 / (h^2
+// sqrt(3)/2) vertices per unit area); plus the rings along the outline.
+// The suggested smallest edge length is this much above the exact limit, so
+// that it passes after being printed with three digits.
+constexpr double kEdgeLengthMargin = 1.01;
+
+constexpr double kVerticesPerAreaOverH2 = 2.0 * 1.5707963267948966 / 0.8660254037844386;
+
+double estimatedVertices(double area, double outlineLength, double edgeLength) {
+    return kVerticesPerAreaOverH2 * area / (edgeLength * edgeLength) + outlineLength / edgeLength;
+}
+
+// The edge length giving exactly `vertices`: the positive root of
+// vertices h^2 - L h - k A = 0.
+double edgeLengthFor(double vertices, double area, double outlineLength) {
+    const double k = kVerticesPerAreaOverH2 * area;
+    return (outlineLength + std::sqrt(outlineLength * outlineLength + 4 * vertices * k)) /
+           (2 * vertices);
+}
+
+}  // namespace
+
+void checkOutlineScale(const LocalFrame& frame, const CleanPolygon& localOutline, double spacing) {
+    const Eigen::AlignedBox2d box = boxOf(localOutline.points);
+    const double size = box.diagonal().norm() * frame.scale;
+    if (!(size >= kMinOutlineSize && size <= kMaxOutlineSize))
+        throw Error("the sketch is " + shortNumber(size) + " across; sizes from " +
+                    shortNumber(kMinOutlineSize) + " to " + shortNumber(kMaxOutlineSize) +
+                    " are supported");
+    const double farthest = std::max({std::abs(frame.centre.x()), std::abs(frame.centre.y())}) +
+                            box.sizes().maxCoeff() * frame.scale;
+    const double rounding = farthest * std::numeric_limits<double>::epsilon();
+    const double finestEdge = spacing * frame.scale;
+    if (!(farthest <= kMaxOutlineSize) || rounding > kCoordinateResolution * finestEdge)
+        throw Error("the sketch lies too far from the origin for its size: near " +
+                    shortNumber(farthest) + " doubles are " + shortNumber(rounding) +
+                    " apart, more than a millionth of its edges (" + shortNumber(finestEdge) +
+                    "); move it within " +
+                    shortNumber(kCoordinateResolution * finestEdge /
+                                std::numeric_limits<double>::epsilon()) +
+                    " of the origin");
+}
+
+void checkEdgeLengthBudget(const LocalFrame& frame, const CleanPolygon& localOutline,
+                           double edgeLength) {
+    const double area = enclosedArea(localOutline.points);
+    const double outlineLength = perimeter(localOutline.points);
+    const double vertices = estimatedVertices(area, outlineLength, edgeLength);
+    if (vertices <= kMaxSurfaceVertices)
+        return;
+    throw Error("the edge length " + shortNumber(edgeLength * frame.scale) +
+                " is too small for this sketch: it would give about " + shortNumber(vertices) +
+                " vertices, more than the " + shortNumber(kMaxSurfaceVertices) +
+                " allowed; use 0 (automatic: " + shortNumber(localOutline.spacing * frame.scale) +
+                ") or an edge length of at least " +
+                shortNumber(kEdgeLengthMargin *
+                            edgeLengthFor(kMaxSurfaceVertices, area, outlineLength) * frame.scale));
+}
+
+void checkBuiltMesh(const TriMesh& mesh) {
+    for (const Vec3& v : mesh.vertices)
+        if (!v.allFinite())
+            throw Error(
+                "the surface has a vertex with a non-finite coordinate; the sketch's "
+                "numbers are beyond what double precision can build");
+    const int degenerate = countDegenerateFaces(mesh);
+    if (degenerate > 0)
+        throw Error("the surface has " + std::to_string(degenerate) +
+                    " degenerate faces; double precision cannot build this sketch at its "
+                    "position and size");
+}
+
+}  // namespace rigmesh
