@@ -15,6 +15,17 @@ namespace rigmesh::model {
 
 SketchToPartOptions engineOptions(const BuildOptions& options);
 
+// The target edge length, relative to the stroke's bounding-box diagonal d:
+// 0 (automatic, d / 60) or between d / 250 (about 17 times the automatic
+// triangle count) and d / 4 (a few sections per limb). Finer would let one
+// number ask for millions of triangles.
+inline constexpr double kFinestEdgeFraction = 1.0 / 250.0;
+inline constexpr double kCoarsestEdgeFraction = 1.0 / 4.0;
+// Throws rigmesh::Error when options.targetEdgeLength is not 0 or in those
+// bounds. A stroke without points (an imported part) only needs a finite
+// length >= 0.
+void checkBuildOptions(const std::vector<Vec2>& stroke, const BuildOptions& options);
+
 // Throws rigmesh::Error with a user-readable reason on a bad stroke or options.
 std::shared_ptr<const Part> buildPart(const std::vector<Vec2>& stroke, const QString& name,
                                       const BuildOptions& options);
