@@ -10,6 +10,7 @@
 
 #include "BuildReport.h"
 #include "CommandLine.h"
+#include "DocumentOutput.h"
 #include "EmbeddedExamples.h"
 #include "base/Error.h"
 #include "debug/DebugSvg.h"
@@ -71,16 +72,6 @@ void writeOutput(const Part& part, const std::string& path, const ExportOptions&
     item.part = &part;
     item.pose = restPose(part.skeleton);
     exportScene({item}, clip ? &*clip : nullptr, path, options);
-}
-
-ExportOptions exportOptions(const CommandLine& line) {
-    ExportOptions options;
-    if (auto influences = line.number("--max-influences")) {
-        if (*influences < 0 || *influences != std::floor(*influences))
-            throw Error("--max-influences must be a whole number >= 0 (0 = all the format allows)");
-        options.maxInfluences = static_cast<int>(*influences);
-    }
-    return options;
 }
 
 }  // namespace

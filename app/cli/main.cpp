@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "BuildCommand.h"
+#include "ExportCommand.h"
 #include "RunCommand.h"
 #include "base/Error.h"
 #include "model/ModelInfo.h"
@@ -34,6 +35,13 @@ commands:
       one line per step and writes the document: .rigmesh natively, the other
       formats as for build, animated by the clip of the first part with keys.
       A bad step stops with "step N (command): reason".
+  export DOC.rigmesh -o OUT.glb|.gltf|.fbx|.dae|.obj [--max-influences N]
+               [--current-pose] [--no-animation] [--hidden]
+      Converts a saved document as the studio's File > Export does: every
+      visible part (--hidden: every part) at its placement, rigged, animated
+      by the clip of the first part with keys (--no-animation: none); an .obj
+      is the rest mesh, or each part's current pose with --current-pose.
+      --max-influences as for build. A bad document exits 1 with the reason.
   example
       Builds the embedded example sketch into a rigged part and prints its figures.
   version
@@ -56,6 +64,8 @@ int main(int argc, char** argv) {
             return rigmesh::cli::runBuild(arguments);
         if (command == "run")
             return rigmesh::cli::runRecipe(arguments);
+        if (command == "export")
+            return rigmesh::cli::runExport(arguments);
         if (command == "example")
             return rigmesh::cli::runBuild({"example"});
         if (command == "version") {
