@@ -8,6 +8,7 @@
 #include "ModelTestSupport.h"
 #include "PoseTestSupport.h"
 #include "base/Error.h"
+#include "model/ClipLimits.h"
 #include "model/commands/DeleteKeyCommand.h"
 #include "model/commands/KeyPoseCommand.h"
 #include "model/commands/MoveKeyCommand.h"
@@ -128,6 +129,23 @@ TEST(ClipCommands, MoveKeyMovesAndReplacesAndUndoes) {
     a.stack().undo();
     a.stack().undo();
     EXPECT_EQ(bytesOf(a.document), before);
+}
+
+TEST(ClipCommands, ClipsSpanningTooManyFramesAreRefusedBeforeAnyPush) {
+    Animated a;
+    a.key(0.0);
+    a.key(10.0);
+    const QByteArray before = bytesOf(a.document);
+    // 1e9 s at 24 fps: billions of frames to bake on export.
+    EXPECT_THROW(KeyPoseCommand(a.document, a.id, 1e9), rigmesh::Error);
+    EXPECT_THROW(MoveKeyCommand(a.document, a.id, 0.0, -1e9), rigmesh::Error);
+    EXPECT_THROW(
+        SetClipSettingsCommand(a.document, a.id, 1e300, Interpolation::Linear, PlaybackMode::Hold),
+        rigmesh::Error);
+    EXPECT_EQ(bytesOf(a.document), before);
+    EXPECT_EQ(a.stack().count(), 2);
+    // The limit itself is allowed: 100000 frames at 24 fps.
+    EXPECT_NO_THROW(KeyPoseCommand(a.document, a.id, kMaxClipFrames / 24.0));
 }
 
 TEST(ClipCommands, ClipSettingsChangeAndUndo) {

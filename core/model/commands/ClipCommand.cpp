@@ -1,5 +1,7 @@
 #include "model/commands/ClipCommand.h"
 
+#include "model/ClipLimits.h"
+
 namespace rigmesh::model {
 
 ClipCommand::ClipCommand(Document& document, PartId id, rigmesh::Clip to, QUndoCommand* parent)
@@ -9,6 +11,8 @@ ClipCommand::ClipCommand(Document& document, PartId id, rigmesh::Clip to, QUndoC
       index_(document.indexOf(id)),
       from_(document.part(id).clip),
       to_(std::move(to)) {
+    // Throws before anything is pushed: a clip too long to bake or save.
+    checkClipSpan(to_, "\"" + document.part(id).name.toStdString() + "\"");
     setObsolete(identicalClips(from_, to_));
 }
 

@@ -21,7 +21,8 @@ class ClipCommand : public QUndoCommand, public RecipeStepSource {
     const rigmesh::Clip& toClip() const { return to_; }
 
   protected:
-    // Throws rigmesh::Error on an unknown id. Obsolete (dropped on push)
+    // Throws rigmesh::Error on an unknown id or a clip spanning more than
+    // kMaxClipFrames (ClipLimits.h). Obsolete (dropped on push)
     // when `to` is exactly the part's clip.
     ClipCommand(Document& document, PartId id, rigmesh::Clip to, QUndoCommand* parent);
     // The part's index when the command was made (recipe steps).

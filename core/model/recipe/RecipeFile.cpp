@@ -36,7 +36,7 @@ const nlohmann::json& recipeSteps(const nlohmann::json& recipe) {
 nlohmann::json parseRecipe(const std::string& text, const std::string& sourceName) {
     try {
         return nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& error) {
+    } catch (const nlohmann::json::exception& error) {  // parse errors, numbers out of range
         throw Error(sourceName + " is not valid JSON: " + error.what());
     }
 }
