@@ -82,6 +82,7 @@ std::string printable(const std::string& input) {
 // a fixed buffer written before each input).
 char gCurrentInputPath[4096];
 
+#ifndef RIGMESH_FUZZ_SANITIZED  // the sanitizers report crashes themselves
 void reportCrash(int signal) {
     const char message[] = "\nfuzz: crashed on the input saved at ";
     [[maybe_unused]] auto a = ::write(2, message, sizeof message - 1);
@@ -89,6 +90,7 @@ void reportCrash(int signal) {
     [[maybe_unused]] auto c = ::write(2, "\n", 1);
     std::raise(signal);  // SA_RESETHAND restored the default action
 }
+#endif
 
 // Ends the process if one input runs far past its bound (a hang): the input
 // is already on disk as <target>-current.
