@@ -23,10 +23,9 @@ namespace fs = std::filesystem;
 // core/engine/sketch (not ours to edit): parseSketchJson catches only
 // json::parse_error, so a number beyond the double range (1e999) escapes as
 // json::out_of_range instead of rigmesh::Error.
-const KnownDefect kSketchNumberOverflow{
-    "number overflow parsing",
-    "core/engine/sketch/Sketch.cpp: parseSketchJson lets "
-    "json::out_of_range escape; tests/data/fuzz/README.md"};
+const KnownDefect kSketchNumberOverflow{"number overflow parsing",
+                                        "core/engine/sketch/Sketch.cpp: parseSketchJson lets "
+                                        "json::out_of_range escape; tests/data/fuzz/README.md"};
 
 // The project's error with a message: an accepted rejection.
 FuzzVerdict rejected(const std::exception& error) {
