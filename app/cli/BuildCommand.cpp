@@ -12,6 +12,7 @@
 
 #include "BuildReport.h"
 #include "CommandLine.h"
+#include "DocumentOutput.h"
 #include "EmbeddedExamples.h"
 #include "base/Error.h"
 #include "base/StagedFile.h"
@@ -63,20 +64,6 @@ void writeOutput(const Part& part, const std::string& path, const ExportOptions&
     item.part = &part;
     item.pose = restPose(part.skeleton);
     exportScene({item}, clip ? &*clip : nullptr, path, options);
-}
-
-ExportOptions exportOptions(const CommandLine& line) {
-    ExportOptions options;
-    if (auto influences = line.number("--max-influences")) {
-        // Checked before the cast: converting a double outside int's range is undefined.
-        constexpr int kMostInfluences = std::numeric_limits<int>::max();
-        if (*influences < 0 || *influences > kMostInfluences ||
-            *influences != std::floor(*influences))
-            throw Error("--max-influences must be a whole number from 0 to " +
-                        std::to_string(kMostInfluences) + " (0 = all the format allows)");
-        options.maxInfluences = static_cast<int>(*influences);
-    }
-    return options;
 }
 
 }  // namespace

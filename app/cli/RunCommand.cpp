@@ -2,31 +2,18 @@
 
 #include <QCoreApplication>
 #include <QString>
-#include <cctype>
 #include <cstdio>
-#include <filesystem>
-#include <memory>
 #include <optional>
 
 #include "CommandLine.h"
+#include "DocumentOutput.h"
 #include "base/Error.h"
-#include "io/ExportFormat.h"
 #include "model/Document.h"
 #include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
 #include "model/recipe/RecipeFile.h"
 
 namespace rigmesh::cli {
-namespace {
-
-bool isNativeDocument(const std::string& path) {
-    std::string suffix = std::filesystem::path(path).extension().string();
-    for (char& c : suffix)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return suffix == std::string(".") + model::DocumentFile::kSuffix;
-}
-
-}  // namespace
 
 int runRecipe(const std::vector<std::string>& arguments) {
     CommandLine line(arguments, {"-o"}, {});
@@ -34,22 +21,9 @@ int runRecipe(const std::vector<std::string>& arguments) {
         throw Error("run needs exactly one recipe file (.json)");
     const std::string recipePath = line.positional()[0];
     const std::optional<std::string> out = line.value("-o");
-    if (out && !isNativeDocument(*out)) {
-        try {
-            exportFormatFromPath(*out);  // an unknown extension fails before any step runs
-        } catch (const Error&) {
-            throw Error("cannot write " + *out +
-                        ": unknown format; use .rigmesh, .glb, .gltf, .fbx, .dae or .obj");
-        }
-    }
-
-    // The commands translate their undo texts through QCoreApplication.
-    static int argc = 1;
-    static char name[] = "rigmesh";
-    static char* argv[] = {name, nullptr};
-    std::unique_ptr<QCoreApplication> application;
-    if (!QCoreApplication::instance())
-        application = std::make_unique<QCoreApplication>(argc, argv);
+    if (out)
+        checkDocumentOutputPath(*out, true);  // an unknown extension fails before any step runs
+    const auto application = ensureCoreApplication();  // the commands translate their texts
 
     model::Document document;
     int steps = 0;

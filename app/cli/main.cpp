@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "BuildCommand.h"
+#include "ExportCommand.h"
 #include "ImportCommand.h"
 #include "RunCommand.h"
 #include "base/Error.h"
@@ -41,6 +42,13 @@ commands:
       and writes its parts as a document. The studio and `run` read imports
       through this command in a separate process with time and memory
       limits, so a broken file cannot take them down.
+  export DOC.rigmesh -o OUT.glb|.gltf|.fbx|.dae|.obj [--max-influences N]
+               [--current-pose] [--no-animation] [--hidden]
+      Converts a saved document as the studio's File > Export does: every
+      visible part (--hidden: every part) at its placement, rigged, animated
+      by the clip of the first part with keys (--no-animation: none); an .obj
+      is the rest mesh, or each part's current pose with --current-pose.
+      --max-influences as for build. A bad document exits 1 with the reason.
   example
       Builds the embedded example sketch into a rigged part and prints its figures.
   version
@@ -65,6 +73,8 @@ int main(int argc, char** argv) {
             return rigmesh::cli::runRecipe(arguments);
         if (command == "import")
             return rigmesh::cli::runImport(arguments);
+        if (command == "export")
+            return rigmesh::cli::runExport(arguments);
         if (command == "example")
             return rigmesh::cli::runBuild({"example"});
         if (command == "version") {

@@ -11,13 +11,22 @@
 #include <string>
 #include <string_view>
 
+#include "model/BoundedCbor.h"
 #include "model/ClipModes.h"
+#include "model/PartBuilder.h"
 
 namespace rigmesh::model {
 
 namespace {
 
 using nlohmann::json;
+
+// A document nests about 7 levels; anything deeper is not ours.
+constexpr int kMaxNesting = 32;
+// Skin weights of a vertex sum to 1 up to rounding (and float imports).
+constexpr double kWeightSumTolerance = 1e-6;
+// Placement rotations are unit quaternions up to rounding.
+constexpr double kUnitTolerance = 1e-6;
 
 // CBOR's "self-described CBOR" tag (RFC 8949, 3.4.6): the file's magic.
 constexpr unsigned char kMagic[] = {0xD9, 0xD9, 0xF7};
@@ -178,10 +187,20 @@ const json& array(const json& object, const char* key) {
     return value;
 }
 
-double number(const json& value, const char* what) {
+// Any number, finite or not: for readers that name the part in their own
+// finiteness message.
+double rawNumber(const json& value, const char* what) {
     if (!value.is_number())
         corrupt(std::string(what) + " is not a number");
     return value.get<double>();
+}
+
+// Every number in a document is finite: NaN or infinity anywhere is damage.
+double number(const json& value, const char* what) {
+    const double out = rawNumber(value, what);
+    if (!std::isfinite(out))
+        corrupt(std::string(what) + " holds a value that is not finite");
+    return out;
 }
 
 template <typename Int>
@@ -214,13 +233,14 @@ std::string text(const json& value, const char* what) {
     return value.get<std::string>();
 }
 
-std::vector<double> numbers(const json& list, std::size_t multiple, const char* what) {
+std::vector<double> numbers(const json& list, std::size_t multiple, const char* what,
+                            double (*read)(const json&, const char*) = &number) {
     if (!list.is_array() || list.size() % multiple != 0)
         corrupt(std::string(what) + " has the wrong length");
     std::vector<double> out;
     out.reserve(list.size());
     for (const json& v : list)
-        out.push_back(number(v, what));
+        out.push_back(read(v, what));
     return out;
 }
 
@@ -232,8 +252,11 @@ std::vector<Vec2> readVec2s(const json& list, const char* what) {
     return out;
 }
 
+enum class PairValues { Weights, Distances };
+
 std::vector<std::vector<std::pair<int, double>>> readPairs(const json& list, std::size_t count,
-                                                           int indexLimit, const char* what) {
+                                                           int indexLimit, PairValues values,
+                                                           const char* what) {
     if (!list.is_array() || (list.size() != count && !list.empty()))
         corrupt(std::string(what) + " does not have one entry per vertex");
     std::vector<std::vector<std::pair<int, double>>> out;
@@ -246,7 +269,18 @@ std::vector<std::vector<std::pair<int, double>>> readPairs(const json& list, std
             const int index = integer<int>(flat[i], what);
             if (index < 0 || index >= indexLimit)
                 corrupt(std::string(what) + " refers to a missing bone");
-            entry.emplace_back(index, number(flat[i + 1], what));
+            const double value = number(flat[i + 1], what);
+            if (value < 0)
+                corrupt(std::string(what) + " holds a negative value");
+            entry.emplace_back(index, value);
+        }
+        if (values == PairValues::Weights && !entry.empty()) {
+            double sum = 0;
+            for (const auto& pair : entry)
+                sum += pair.second;
+            if (std::abs(sum - 1.0) > kWeightSumTolerance)
+                corrupt(std::string(what) + " of vertex " + std::to_string(out.size() - 1) +
+                        " sum to " + std::to_string(sum) + " instead of 1");
         }
     }
     return out;
@@ -288,7 +322,11 @@ Skeleton readSkeleton(const json& object) {
     const auto root = integer<JointId>(field(object, "root"), "skeleton root");
     if (root != kNoJoint ? !known.contains(root) : !known.empty())
         corrupt("the skeleton root is not one of its joints");
-    return Skeleton::restore(std::move(jointList), std::move(boneList), root);
+    Skeleton skeleton = Skeleton::restore(std::move(jointList), std::move(boneList), root);
+    if (skeleton.jointCount() > 0)
+        if (const std::vector<std::string> problems = skeleton.validate(); !problems.empty())
+            corrupt("the skeleton is not a tree: " + problems.front());
+    return skeleton;
 }
 
 std::shared_ptr<const Part> readPart(const json& object) {
@@ -349,8 +387,10 @@ std::shared_ptr<const Part> readPart(const json& object) {
     part->skeleton = readSkeleton(field(object, "skeleton"));
     const int boneCount = part->skeleton.boneCount();
     const json& weights = field(object, "weights");
-    part->weights.perVertex =
-        readPairs(array(weights, "perVertex"), vertexCount, boneCount, "skin weights");
+    if (boneCount > 0 && static_cast<int>(array(weights, "perVertex").size()) != vertexCount)
+        corrupt("a rigged part needs skin weights for every vertex");
+    part->weights.perVertex = readPairs(array(weights, "perVertex"), vertexCount, boneCount,
+                                        PairValues::Weights, "skin weights");
     for (const json& b : array(weights, "failedBones")) {
         const int bone = integer<int>(b, "failed bone");
         if (bone < 0 || bone >= boneCount)
@@ -359,7 +399,7 @@ std::shared_ptr<const Part> readPart(const json& object) {
     }
     part->weights.warning = text(field(weights, "warning"), "weights warning");
     part->knownClosestBones = readPairs(array(object, "knownClosestBones"), vertexCount, boneCount,
-                                        "known closest bones");
+                                        PairValues::Distances, "known closest bones");
     return part;
 }
 
@@ -382,8 +422,8 @@ rigmesh::Pose readPoseValue(const PartNode& node, const json& pose) {
             corrupt("a pose rotation of " + partLabel(node) + " is not [joint, w, x, y, z]");
         const JointId joint = readJointOf(node, entry[0], "pose joint");
         const Eigen::Quaterniond q(
-            number(entry[1], "pose rotation"), number(entry[2], "pose rotation"),
-            number(entry[3], "pose rotation"), number(entry[4], "pose rotation"));
+            rawNumber(entry[1], "pose rotation"), rawNumber(entry[2], "pose rotation"),
+            rawNumber(entry[3], "pose rotation"), rawNumber(entry[4], "pose rotation"));
         if (!q.coeffs().allFinite() || q.coeffs().squaredNorm() == 0.0)
             corrupt("the pose rotation of joint " + std::to_string(joint) + " of " +
                     partLabel(node) + " is not finite or is zero");
@@ -392,7 +432,7 @@ rigmesh::Pose readPoseValue(const PartNode& node, const json& pose) {
                     " twice");
     }
     const std::vector<double> t =
-        numbers(array(pose, "rootTranslation"), 3, "pose root translation");
+        numbers(array(pose, "rootTranslation"), 3, "pose root translation", &rawNumber);
     if (t.size() != 3)
         corrupt("the pose root translation of " + partLabel(node) + " has the wrong length");
     out.rootTranslation = Vec3(t[0], t[1], t[2]);
@@ -422,7 +462,7 @@ rigmesh::Clip readClip(const PartNode& node, const json& object) {
     if (!object.contains("clip"))
         return rigmesh::Clip();
     const json& clip = field(object, "clip");
-    const double fps = number(field(clip, "framesPerSecond"), "clip frame rate");
+    const double fps = rawNumber(field(clip, "framesPerSecond"), "clip frame rate");
     if (!std::isfinite(fps) || !(fps > 0))
         corrupt("the clip frame rate of " + partLabel(node) + " is not positive");
     // Keys go in with a vanishing tolerance, so keys closer than half a frame
@@ -430,7 +470,7 @@ rigmesh::Clip readClip(const PartNode& node, const json& object) {
     // last.
     rigmesh::Clip out(std::numeric_limits<double>::max());
     for (const json& key : array(clip, "keys")) {
-        const double time = number(field(key, "time"), "key time");
+        const double time = rawNumber(field(key, "time"), "key time");
         if (!std::isfinite(time))
             corrupt("a key time of " + partLabel(node) + " is not finite");
         const int before = out.keyCount();
@@ -470,11 +510,19 @@ PartNode readNode(const json& object) {
         corrupt("a placement has the wrong length");
     node.placement.translation = Vec3(t[0], t[1], t[2]);
     node.placement.rotation = Eigen::Quaterniond(r[0], r[1], r[2], r[3]);
+    if (std::abs(node.placement.rotation.norm() - 1.0) > kUnitTolerance)
+        corrupt("the placement rotation of part " + std::to_string(node.id) +
+                " is not a unit quaternion");
     node.stroke = readVec2s(field(object, "stroke"), "stroke");
     const json& options = field(object, "options");
     node.options.targetEdgeLength =
         number(field(options, "targetEdgeLength"), "target edge length");
     node.options.smoothing = boolean(field(options, "smoothing"), "smoothing");
+    try {
+        checkBuildOptions(node.stroke, node.options);
+    } catch (const Error& e) {
+        corrupt("part " + std::to_string(node.id) + ": " + e.what());
+    }
     if (!object.contains("part"))
         corrupt("a part has no geometry");
     node.part = readPart(object.at("part"));
@@ -537,13 +585,19 @@ DocumentContents fromBytes(const QByteArray& bytes) {
         fail(tr("This is not a RigMesh Studio document."));
     json root;
     try {
-        root = json::from_cbor(data + sizeof kMagic, data + size);
+        root = parseBoundedCbor(data + sizeof kMagic, data + size, kMaxNesting);
     } catch (const json::exception& e) {
         fail(tr("The document is corrupt or truncated (%1).").arg(QString::fromUtf8(e.what())));
+    } catch (const Error& e) {
+        corrupt(e.what());
     }
     try {
         return readContents(root);
     } catch (const json::exception& e) {
+        corrupt(e.what());
+    } catch (const DocumentFileError&) {
+        throw;
+    } catch (const Error& e) {  // an engine value refused what the file holds
         corrupt(e.what());
     }
 }

@@ -22,7 +22,13 @@
 // Loading checks everything (format name, version, types, index ranges,
 // array sizes) before building the document: a corrupt, truncated or newer
 // file throws DocumentFileError with a message for the user and opens
-// nothing.
+// nothing. Every number must be finite; skin weights non-negative, summing to
+// 1 per weighted vertex (every vertex of a rigged part); skeletons trees;
+// placement rotations unit; edge lengths 0 or within checkBuildOptions()'s
+// bounds. Sizes: every list is made from its own bytes (nesting is capped at
+// 32 levels), and what is derived from single numbers is bounded (key times
+// lie within +-1e6 s, Clip.h; an export samples at most 64 frames per key
+// segment), so a small file cannot ask for gigabytes.
 #pragma once
 
 #include <QByteArray>

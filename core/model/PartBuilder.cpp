@@ -1,10 +1,14 @@
 #include "model/PartBuilder.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "base/Error.h"
 
 namespace rigmesh::model {
+namespace {}  // namespace
 
 SketchToPartOptions engineOptions(const BuildOptions& options) {
     SketchToPartOptions engine;
@@ -13,10 +17,15 @@ SketchToPartOptions engineOptions(const BuildOptions& options) {
     return engine;
 }
 
+void checkBuildOptions(const std::vector<Vec2>&, const BuildOptions& options) {
+    const double length = options.targetEdgeLength;
+    if (!std::isfinite(length) || length < 0)
+        throw Error("The target edge length must be 0 (automatic) or a positive length.");
+}
+
 std::shared_ptr<const Part> buildPart(const std::vector<Vec2>& stroke, const QString& name,
                                       const BuildOptions& options) {
-    if (!std::isfinite(options.targetEdgeLength) || options.targetEdgeLength < 0)
-        throw Error("The target edge length must be 0 (automatic) or a positive length.");
+    checkBuildOptions(stroke, options);
     SketchToPartResult result = sketchToPart(stroke, name.toStdString(), engineOptions(options));
     return std::make_shared<const Part>(std::move(result.part));
 }

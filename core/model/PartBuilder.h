@@ -15,6 +15,12 @@ namespace rigmesh::model {
 
 SketchToPartOptions engineOptions(const BuildOptions& options);
 
+// Throws rigmesh::Error when options.targetEdgeLength is not finite and >= 0
+// (0 = automatic). How fine a length a sketch allows is the engine's call
+// (pipeline/SurfaceLimits.h: at most kMaxSurfaceVertices vertices), checked
+// when the part is built.
+void checkBuildOptions(const std::vector<Vec2>& stroke, const BuildOptions& options);
+
 // Throws rigmesh::Error with a user-readable reason on a bad stroke or options.
 std::shared_ptr<const Part> buildPart(const std::vector<Vec2>& stroke, const QString& name,
                                       const BuildOptions& options);

@@ -343,6 +343,8 @@ TEST(RecipeSteps, BadRecipesAreRejectedBeforeAnyStep) {
     EXPECT_EQ(message({{"format", "rigmesh-recipe"}, {"version", 1}}),
               "the recipe has no list of \"steps\"");
     EXPECT_THROW(parseRecipe("{\"format\": ", "r.json"), rigmesh::Error);
+    // A number beyond the double range is a JSON error, not a library exception.
+    EXPECT_THROW(parseRecipe("{\"format\": 1e999}", "r.json"), rigmesh::Error);
     EXPECT_THROW(readRecipeFile("/nonexistent/recipe.json"), rigmesh::Error);
     EXPECT_EQ(document.partCount(), 0);
 }

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <string>
-#include <thread>
 
 #include "base/Error.h"
+#include "base/ParallelFor.h"
 #include "pose/ForwardKinematics.h"
 #include "pose/VertexNormals.h"
 
@@ -145,18 +145,9 @@ SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
         }
     };
 
-    // Contiguous ranges, one per thread; the calling thread takes the first.
-    const int threads = std::max(1, std::min(options.threads, count));
-    std::vector<std::thread> workers;
-    workers.reserve(threads - 1);
-    for (int k = 1; k < threads; ++k) {
-        const int begin = static_cast<int>(static_cast<long long>(count) * k / threads);
-        const int end = static_cast<int>(static_cast<long long>(count) * (k + 1) / threads);
-        workers.emplace_back(run, begin, end);
-    }
-    run(0, static_cast<int>(static_cast<long long>(count) / threads));
-    for (std::thread& worker : workers)
-        worker.join();
+    // Contiguous vertex ranges, one per thread: the split depends on the
+    // counts only, so the output does not depend on timing.
+    parallelFor(count, options.threads, [&](int begin, int end, int) { run(begin, end); });
     return out;
 }
 

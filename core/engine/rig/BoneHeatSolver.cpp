@@ -5,12 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <sstream>
-#include <thread>
 
 #include "base/Error.h"
+#include "base/ParallelFor.h"
 #include "rig/BoneVisibility.h"
 
 namespace rigmesh {
@@ -54,36 +53,6 @@ class SolveWorkspace {
     cholmod_dense* y = nullptr;
     cholmod_dense* e = nullptr;
 };
-
-// Runs task(i) for i in [0, count) on `threads` threads, bones interleaved so
-// the split never depends on timing; rethrows the first exception.
-template <typename Task>
-void parallelFor(int count, int threads, const Task& task) {
-    const int workers = std::max(1, std::min(threads, count));
-    std::vector<std::exception_ptr> errors(workers);
-    auto run = [&](int worker) {
-        try {
-            for (int i = worker; i < count; i += workers) {
-                task(i, worker);
-            }
-        } catch (...) {
-            errors[worker] = std::current_exception();
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int worker = 1; worker < workers; ++worker) {
-        pool.emplace_back(run, worker);
-    }
-    run(0);
-    for (auto& thread : pool) {
-        thread.join();
-    }
-    for (const auto& error : errors) {
-        if (error) {
-            std::rethrow_exception(error);
-        }
-    }
-}
 
 void validateInput(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
                    const ClosestBones& closestBones, const BoneHeatOptions& options) {
@@ -176,14 +145,12 @@ void BoneHeatSolver::Impl::findClosestBones(const TriMesh& mesh, const ClosestBo
     // The paper's bottleneck (section 2.4): test only what the caller could
     // not fill, split over the threads.
     const BoneVisibility visibility(mesh);
-    const int workers = std::max(1, std::min<int>(options.threads, toTest.size()));
-    std::vector<int> counts(workers, 0);
-    parallelFor(workers, workers, [&](int chunk, int) {
-        const std::size_t begin = toTest.size() * chunk / workers;
-        const std::size_t end = toTest.size() * (chunk + 1) / workers;
+    const int total = static_cast<int>(toTest.size());
+    std::vector<int> counts(parallelWorkers(total, options.threads), 0);
+    parallelFor(total, options.threads, [&](int begin, int end, int worker) {
         const std::vector<int> part(toTest.begin() + begin, toTest.begin() + end);
         auto found = closestVisibleBones(mesh, bones, visibility, part, options.tieTolerance,
-                                         &counts[chunk]);
+                                         &counts[worker]);
         for (std::size_t i = 0; i < part.size(); ++i) {
             closest[part[i]] = std::move(found[i]);
         }
@@ -408,13 +375,15 @@ SkinWeights BoneHeatSolver::solveAll() const {
     const int boneTotal = boneCount();
     Eigen::MatrixXd solutions(n, boneTotal);
     std::vector<char> failed(boneTotal, 0);
-    const int workers = std::max(1, std::min(impl_->options.threads, boneTotal));
+    const int workers = parallelWorkers(boneTotal, impl_->options.threads);
     std::vector<std::unique_ptr<SolveWorkspace>> workspaces;
     for (int t = 0; t < workers; ++t) {
         workspaces.push_back(std::make_unique<SolveWorkspace>());
     }
-    parallelFor(boneTotal, workers, [&](int bone, int worker) {
-        failed[bone] = impl_->solve(bone, *workspaces[worker], solutions.col(bone)) ? 0 : 1;
+    parallelFor(boneTotal, impl_->options.threads, [&](int begin, int end, int worker) {
+        for (int bone = begin; bone < end; ++bone) {
+            failed[bone] = impl_->solve(bone, *workspaces[worker], solutions.col(bone)) ? 0 : 1;
+        }
     });
 
     // Pinocchio's post-processing, with a threshold: negatives to 0, drop tiny

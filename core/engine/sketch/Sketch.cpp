@@ -84,7 +84,14 @@ double coordinate(const nlohmann::json& value, std::size_t pointIndex, const cha
             return -std::numeric_limits<double>::infinity();
         }
     }
-    const std::string shown = value.is_null() ? "null" : value.dump();
+    // Only a primitive value is printed: dump() recurses once per level, and a
+    // list nested 70,000 deep overflowed the stack (tests/data/fuzz).
+    std::string shown = value.is_array()    ? "a list"
+                        : value.is_object() ? "an object"
+                        : value.is_null()   ? "null"
+                                            : value.dump();
+    if (shown.size() > 40)
+        shown = shown.substr(0, 37) + "...";
     throw Error("Sketch \"" + sourceName + "\": point " + std::to_string(pointIndex) + " has " +
                 shown + " as its " + axis + " coordinate; every coordinate must be a number.");
 }

@@ -1,0 +1,57 @@
+#include "DocumentOutput.h"
+
+#include <QCoreApplication>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include "base/Error.h"
+#include "io/ExportFormat.h"
+#include "model/DocumentFile.h"
+
+namespace rigmesh::cli {
+
+ExportOptions exportOptions(const CommandLine& line) {
+    ExportOptions options;
+    if (auto influences = line.number("--max-influences")) {
+        // Checked before the cast: converting a double outside int's range is undefined.
+        constexpr double kMostInfluences = 1e6;
+        if (*influences < 0 || *influences != std::floor(*influences) ||
+            *influences > kMostInfluences)
+            throw Error(
+                "--max-influences must be a whole number from 0 to 1000000 (0 = all the format "
+                "allows)");
+        options.maxInfluences = static_cast<int>(*influences);
+    }
+    return options;
+}
+
+bool isNativeDocument(const std::string& path) {
+    std::string suffix = std::filesystem::path(path).extension().string();
+    for (char& c : suffix)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return suffix == std::string(".") + model::DocumentFile::kSuffix;
+}
+
+void checkDocumentOutputPath(const std::string& path, bool allowNative) {
+    if (allowNative && isNativeDocument(path))
+        return;
+    try {
+        exportFormatFromPath(path);
+    } catch (const Error&) {
+        throw Error("cannot write " + path + ": unknown format; use " +
+                    (allowNative ? ".rigmesh, " : "") + ".glb, .gltf, .fbx, .dae or .obj");
+    }
+}
+
+std::unique_ptr<QCoreApplication> ensureCoreApplication() {
+    static int argc = 1;
+    static char name[] = "rigmesh";
+    static char* argv[] = {name, nullptr};
+    if (QCoreApplication::instance())
+        return nullptr;
+    return std::make_unique<QCoreApplication>(argc, argv);
+}
+
+}  // namespace rigmesh::cli

@@ -1,0 +1,31 @@
+// What the commands that write a document share: the export options read
+// from the command line, the check of an output path's format before any
+// work runs, and the QCoreApplication the model needs (commands translate
+// their texts through it).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "CommandLine.h"
+#include "io/SceneExport.h"
+
+class QCoreApplication;
+
+namespace rigmesh::cli {
+
+// --max-influences N (a whole number >= 0; 0 = all the format allows).
+ExportOptions exportOptions(const CommandLine& line);
+
+// True for a path ending in .rigmesh (any case).
+bool isNativeDocument(const std::string& path);
+
+// Throws rigmesh::Error unless `path` ends in a format exportDocument writes
+// (.glb, .gltf, .fbx, .dae, .obj) or, with allowNative, .rigmesh.
+void checkDocumentOutputPath(const std::string& path, bool allowNative);
+
+// A QCoreApplication for this command, or null when there is one already;
+// keep it until the command is done.
+std::unique_ptr<QCoreApplication> ensureCoreApplication();
+
+}  // namespace rigmesh::cli

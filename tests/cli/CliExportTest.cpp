@@ -1,0 +1,169 @@
+// `rigmesh export` end to end: a document saved by `rigmesh run` converts to
+// every scene format through the studio's export; a bad document is a
+// one-line reason with exit code 1 and no output file.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "CliRunner.h"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using rigmesh::test::readWholeFile;
+using rigmesh::test::runCli;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+    fs::path folder = fs::temp_directory_path() / "rigmesh_cli_export_test";
+    fs::create_directories(folder);
+    return folder / name;
+}
+
+void writeFile(const fs::path& path, const std::string& bytes) {
+    std::ofstream file(path, std::ios::binary);
+    file << bytes;
+}
+
+std::string quoted(const fs::path& path) {
+    return "'" + path.string() + "'";
+}
+
+// Two parts from the shared sketches, the second hidden; the first keyed at
+// 0 s and 1 s with a bend between: what the studio would save.
+const fs::path& savedDocument() {
+    static const fs::path document = [] {
+        const fs::path recipe = scratch("export_recipe.json");
+        const std::string sketches = RIGMESH_SHARED_SKETCHES;
+        writeFile(recipe, R"({"format": "rigmesh-recipe", "version": 1, "steps": [
+            {"command": "sketch", "stroke": ")" +
+                              sketches + R"(/tube.json", "name": "tube"},
+            {"command": "sketch", "stroke": ")" +
+                              sketches + R"(/y_branch.json", "name": "y",
+             "placement": {"translation": [8, 0, 0]}},
+            {"command": "hide", "part": "y"},
+            {"command": "key", "part": "tube", "time": 0},
+            {"command": "pose", "part": "tube", "joint": 1, "target": [0.5, 2.0, 0.0]},
+            {"command": "key", "part": "tube", "time": 1}]})");
+        const fs::path out = scratch("two_parts.rigmesh");
+        fs::remove(out);
+        const auto result = runCli("run " + quoted(recipe) + " -o " + quoted(out));
+        EXPECT_EQ(result.exitCode, 0) << result.err;
+        return out;
+    }();
+    return document;
+}
+
+// The JSON chunk of a binary glTF (header 12 bytes, then length + type).
+json glbJson(const fs::path& path) {
+    const std::string bytes = readWholeFile(path);
+    if (bytes.size() < 20)
+        return json();
+    std::uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + 12, 4);
+    return json::parse(bytes.substr(20, length));
+}
+
+class ExportFormat : public testing::TestWithParam<std::string> {};
+
+TEST_P(ExportFormat, WritesTheDocumentThroughTheStudioExport) {
+    const fs::path out = scratch("two_parts." + GetParam());
+    fs::remove(out);
+    const auto result = runCli("export " + quoted(savedDocument()) + " -o " + quoted(out));
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_TRUE(result.err.empty()) << result.err;
+    EXPECT_NE(result.out.find("wrote " + out.string() + " (1 part)"), std::string::npos)
+        << result.out;
+    ASSERT_TRUE(fs::exists(out));
+    EXPECT_GT(fs::file_size(out), 1000u);
+}
+
+INSTANTIATE_TEST_SUITE_P(CliExport, ExportFormat,
+                         testing::Values("glb", "gltf", "fbx", "dae", "obj"));
+
+TEST(CliExport, GlbCarriesTheVisiblePartsSkinAndClip) {
+    const fs::path out = scratch("animated.glb");
+    const auto result = runCli("export " + quoted(savedDocument()) + " -o " + quoted(out));
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    const json gltf = glbJson(out);
+    EXPECT_EQ(gltf["meshes"].size(), 1u);  // the hidden part is left out, as in the studio
+    EXPECT_EQ(gltf["skins"].size(), 1u);
+    EXPECT_EQ(gltf["animations"].size(), 1u);
+}
+
+TEST(CliExport, OptionsReachTheExport) {
+    const fs::path out = scratch("options.glb");
+    const auto result = runCli("export " + quoted(savedDocument()) + " -o " + quoted(out) +
+                               " --hidden --no-animation --max-influences 2");
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_NE(result.out.find("(2 parts)"), std::string::npos) << result.out;
+    const json gltf = glbJson(out);
+    EXPECT_EQ(gltf["meshes"].size(), 2u);
+    EXPECT_FALSE(gltf.contains("animations"));
+
+    const auto bad = runCli("export " + quoted(savedDocument()) + " -o " + quoted(out) +
+                            " --max-influences 1.5");
+    EXPECT_EQ(bad.exitCode, 1);
+    EXPECT_NE(bad.err.find("rigmesh: --max-influences must be a whole number"), std::string::npos)
+        << bad.err;
+}
+
+void expectBadDocument(const std::string& bytes, const std::string& reason) {
+    const fs::path document = scratch("bad.rigmesh");
+    writeFile(document, bytes);
+    const fs::path out = scratch("bad.glb");
+    fs::remove(out);
+    const auto result = runCli("export " + quoted(document) + " -o " + quoted(out));
+    EXPECT_EQ(result.exitCode, 1) << result.err;
+    EXPECT_EQ(result.err.rfind("rigmesh: Cannot open", 0), 0u) << result.err;
+    EXPECT_NE(result.err.find(reason), std::string::npos) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CliExport, BadDocumentsExitOneWithTheReason) {
+    const std::string good = readWholeFile(savedDocument());
+    expectBadDocument("not a document", "not a RigMesh Studio document");
+    expectBadDocument(good.substr(0, good.size() / 2), "corrupt or truncated");
+
+    json root = json::from_cbor(std::vector<std::uint8_t>(good.begin() + 3, good.end()));
+    root["parts"][0]["part"]["mesh"]["vertices"][0] = std::numeric_limits<double>::quiet_NaN();
+    std::vector<std::uint8_t> bytes = {0xD9, 0xD9, 0xF7};
+    json::to_cbor(root, bytes);
+    expectBadDocument(std::string(bytes.begin(), bytes.end()), "not finite");
+}
+
+TEST(CliExport, UsageErrorsExitOneBeforeReadingTheDocument) {
+    const auto noOutput = runCli("export " + quoted(savedDocument()));
+    EXPECT_EQ(noOutput.exitCode, 1);
+    EXPECT_NE(noOutput.err.find("rigmesh: export needs an output file"), std::string::npos)
+        << noOutput.err;
+
+    const fs::path out = scratch("scene.stl");
+    const auto unknown = runCli("export '/no/such/file.rigmesh' -o " + quoted(out));
+    EXPECT_EQ(unknown.exitCode, 1);
+    EXPECT_NE(unknown.err.find("rigmesh: cannot write " + out.string() + ": unknown format"),
+              std::string::npos)
+        << unknown.err;
+    EXPECT_FALSE(fs::exists(out));
+
+    const auto missing = runCli("export '/no/such/file.rigmesh' -o " + quoted(scratch("x.glb")));
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_NE(missing.err.find("rigmesh: Cannot open \"/no/such/file.rigmesh\""), std::string::npos)
+        << missing.err;
+}
+
+TEST(CliExport, HelpListsTheCommand) {
+    const auto help = runCli("--help");
+    EXPECT_EQ(help.exitCode, 0);
+    EXPECT_NE(help.out.find("export DOC.rigmesh -o OUT.glb"), std::string::npos);
+}
+
+}  // namespace
