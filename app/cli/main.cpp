@@ -55,6 +55,29 @@ commands:
       Prints the version.
 )";
 
+// The usage of one command: its block of kUsage (from its line "  NAME ..."
+// to the next command's line), or empty for an unknown command.
+std::string commandUsage(const std::string& command) {
+    const std::string text = kUsage;
+    std::string block;
+    bool inside = false;
+    for (std::size_t begin = 0; begin < text.size();) {
+        std::size_t end = text.find('\n', begin);
+        if (end == std::string::npos)
+            end = text.size();
+        const std::string line = text.substr(begin, end - begin);
+        const bool commandLine =
+            line.size() > 2 && line[0] == ' ' && line[1] == ' ' && line[2] != ' ';
+        if (commandLine)
+            inside = line.compare(2, command.size() + 1, command + " ") == 0 ||
+                     line.substr(2) == command;
+        if (inside)
+            block += line + "\n";
+        begin = end + 1;
+    }
+    return block.empty() ? block : "usage: rigmesh" + block.substr(1);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -66,6 +89,16 @@ int main(int argc, char** argv) {
     }
     const std::string command = arguments[0];
     arguments.erase(arguments.begin());
+    // `rigmesh COMMAND --help`: that command's usage.
+    for (const std::string& argument : arguments) {
+        if (argument != "--help" && argument != "-h")
+            continue;
+        const std::string usage = commandUsage(command);
+        if (usage.empty())
+            break;  // an unknown command: reported below
+        std::fputs(usage.c_str(), stdout);
+        return 0;
+    }
     try {
         if (command == "build")
             return rigmesh::cli::runBuild(arguments);

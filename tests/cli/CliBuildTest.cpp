@@ -95,6 +95,16 @@ INSTANTIATE_TEST_SUITE_P(SharedSketches, GoodSketch, testing::ValuesIn(sketchNam
 INSTANTIATE_TEST_SUITE_P(SharedSketches, BadSketch, testing::ValuesIn(sketchNames(true)),
                          paramName);
 
+TEST(CliBuild, HelpAfterACommandPrintsThatCommandsOptions) {
+    for (const std::string command : {"build", "run", "import", "export"}) {
+        const CliResult help = runCli(command + " --help");
+        EXPECT_EQ(help.exitCode, 0) << command << ": " << help.err;
+        EXPECT_EQ(help.out.rfind("usage: rigmesh " + command, 0), 0u) << help.out;
+        EXPECT_EQ(help.out.find("\n  run "), std::string::npos) << "only that command's part";
+    }
+    EXPECT_NE(runCli("build --help").out.find("--edge-length"), std::string::npos);
+}
+
 TEST(CliBuild, ExampleRunsWithoutTheSharedFolder) {
     auto result = runCli("example");
     EXPECT_EQ(result.exitCode, 0) << result.err;
