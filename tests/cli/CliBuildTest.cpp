@@ -97,7 +97,7 @@ INSTANTIATE_TEST_SUITE_P(SharedSketches, BadSketch, testing::ValuesIn(sketchName
 
 TEST(CliBuild, HelpAfterACommandPrintsThatCommandsOptions) {
     for (const std::string command : {"build", "run", "import", "export"}) {
-        const CliResult help = runCli(command + " --help");
+        const auto help = runCli(command + " --help");
         EXPECT_EQ(help.exitCode, 0) << command << ": " << help.err;
         EXPECT_EQ(help.out.rfind("usage: rigmesh " + command, 0), 0u) << help.out;
         EXPECT_EQ(help.out.find("\n  run "), std::string::npos) << "only that command's part";
