@@ -486,9 +486,15 @@ void MainWindow::exportDocument() {
     if (dialog.exec() != QDialog::Accepted)
         return;
     try {
-        const auto result =
-            model::exportDocument(*document, dialog.path().toStdString(), dialog.options(),
-                                  document->selection().part, true);
+        auto result = model::exportDocument(*document, dialog.path().toStdString(),
+                                            dialog.options(), document->selection().part, true);
+        // Animation ticked but nothing keyed: say why the file has no animation.
+        const bool rigged = QFileInfo(dialog.path()).suffix().toLower() != QLatin1String("obj");
+        bool keyed = false;
+        for (const model::PartNode& node : document->parts())
+            keyed = keyed || (node.visible && node.clip.keyCount() > 0);
+        if (rigged && dialog.options().animation && !keyed)
+            result.warnings << tr("no animation: no visible part has keys");
         showStatus(
             tr("Exported %1%2")
                 .arg(QFileInfo(dialog.path()).fileName(),

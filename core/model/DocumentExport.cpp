@@ -4,6 +4,8 @@
 
 #include "base/Error.h"
 #include "io/ExportFormat.h"
+#include "pose/ForwardKinematics.h"
+#include "pose/Skinning.h"
 
 namespace rigmesh::model {
 namespace {
@@ -15,6 +17,20 @@ ExportPart exportPartOf(const PartNode& node) {
     part.placement = Eigen::Translation3d(node.placement.translation) * node.placement.rotation;
     part.name = node.name.toStdString();
     return part;
+}
+
+// The part with its current pose made its rest shape (for rigged formats,
+// whose files carry a rest shape and a skeleton): skinned vertices, every
+// joint at its posed place, weights and bookkeeping unchanged. The file then
+// opens in that pose with an identity bind, and still deforms.
+Part poseAsRest(const PartNode& node) {
+    Part baked = *node.part;
+    baked.mesh = posePart(*node.part, node.pose).mesh;
+    const PosedSkeleton posed = forwardKinematics(node.part->skeleton, node.pose);
+    const std::vector<Joint> joints = node.part->skeleton.joints();
+    for (std::size_t j = 0; j < joints.size(); ++j)
+        baked.skeleton.setJointPosition(joints[j].id, posed.jointPositions[j]);
+    return baked;
 }
 
 }  // namespace
@@ -48,13 +64,34 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
                                        "the keys of \"%1\" are not exported: one part's clip is")
                                        .arg(node->name);
     }
+    // The current pose as the rest shape: OBJ poses its mesh itself; the
+    // rigged formats get parts whose rest is that pose (their clip would be
+    // relative to the old rest, so none is written).
+    const bool bakePose = !options.restPose && isRiggedFormat(exportFormatFromPath(path));
+    if (bakePose && animated && options.animation)
+        result.warnings
+            << QObject::tr(
+                   "the clip of \"%1\" is not exported: the current pose is the file's rest shape")
+                   .arg(animated->name);
+    std::vector<Part> baked;
+    baked.reserve(nodes.size());
+    auto exportPart = [&](const PartNode& node) {
+        ExportPart part = exportPartOf(node);
+        if (bakePose) {
+            baked.push_back(poseAsRest(node));
+            part.part = &baked.back();
+            part.pose = rigmesh::Pose{};
+        }
+        return part;
+    };
     std::vector<ExportPart> parts;
     if (animated)
-        parts.push_back(exportPartOf(*animated));
+        parts.push_back(exportPart(*animated));
     for (const PartNode* node : nodes)
         if (node != animated)
-            parts.push_back(exportPartOf(*node));
-    exportScene(parts, animated && options.animation ? &animated->clip : nullptr, path, options);
+            parts.push_back(exportPart(*node));
+    const bool withClip = animated && options.animation && !bakePose;
+    exportScene(parts, withClip ? &animated->clip : nullptr, path, options);
     return result;
 }
 

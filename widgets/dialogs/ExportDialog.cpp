@@ -79,7 +79,8 @@ void ExportDialog::formatChanged() {
         path_->setText(info.path() + QLatin1Char('/') + info.completeBaseName() + QLatin1Char('.') +
                        suffix);
     const bool obj = suffix == QLatin1String("obj");
-    currentPose_->setEnabled(obj);
+    // Every format can carry the current pose (rigged ones as their rest shape).
+    currentPose_->setEnabled(true);
     animation_->setEnabled(!obj);
     influences_->setEnabled(!obj);
 }

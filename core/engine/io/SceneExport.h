@@ -39,7 +39,9 @@ struct ExportOptions {
     // Influences per vertex: 0 = all the format allows (4 for glTF, all for
     // FBX and COLLADA). Cut without creases (InfluenceLimit.h).
     int maxInfluences = 4;
-    bool restPose = true;    // OBJ only: rest mesh, or each part's pose
+    // Rest mesh, or each part's current pose: OBJ poses its mesh; for the
+    // rigged formats model::exportDocument makes the pose the rest shape.
+    bool restPose = true;
     bool animation = true;   // write the clip when there is one
     double unitScale = 1.0;  // multiplies every written coordinate
 };
