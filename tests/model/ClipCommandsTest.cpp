@@ -179,21 +179,19 @@ TEST(ClipCommands, SetClipRejectsJointsTheSkeletonLacks) {
     EXPECT_EQ(a.node().clip.keyCount(), 0);
 }
 
-TEST(ClipCommands, RebuildEmptiesTheClipKeepingSettingsAndUndoRestoresIt) {
+TEST(ClipCommands, RebuildKeepsTheKeysAndSettingsAndUndoRestoresThem) {
     Animated a;
     a.stack().push(new SetClipSettingsCommand(a.document, a.id, 12.0, Interpolation::Smooth,
                                               PlaybackMode::Loop));
     a.key(0.0);
     a.pose(Vec3(0.1, 0.1, 0.0));
     a.key(1.0);
+    const rigmesh::Clip keyed = a.node().clip;
     const QByteArray before = bytesOf(a.document);
     BuildOptions options;
-    options.smoothing = false;
-    QSignalSpy changed(&a.document, &Document::partChanged);
+    options.smoothing = false;  // the same skeleton: every key is kept as it was
     a.stack().push(RebuildPartCommand::create(a.document, a.id, options).release());
-    ASSERT_EQ(changed.count(), 1);
-    EXPECT_TRUE(changed[0][1].value<Document::Changes>() & Document::Change::Clip);
-    EXPECT_EQ(a.node().clip.keyCount(), 0);
+    EXPECT_TRUE(identicalClips(a.node().clip, keyed));
     EXPECT_EQ(a.node().clip.framesPerSecond(), 12.0);
     EXPECT_EQ(a.node().clip.interpolation, Interpolation::Smooth);
     EXPECT_EQ(a.node().clip.mode, PlaybackMode::Loop);

@@ -6,6 +6,7 @@
 #include "ModelTestSupport.h"
 #include "PoseTestSupport.h"
 #include "base/Error.h"
+#include "model/RigCarryOver.h"
 #include "model/commands/RebuildPartCommand.h"
 #include "model/commands/ResetPoseCommand.h"
 #include "model/commands/SetJointPinnedCommand.h"
@@ -196,7 +197,7 @@ TEST(PoseCommands, UnknownPartsAndJointsThrowAndPushNothing) {
     EXPECT_TRUE(p.node().pinnedJoints.empty());
 }
 
-TEST(PoseCommands, RebuildResetsPoseAndPinsAndUndoRestoresThem) {
+TEST(PoseCommands, RebuildKeepsThePoseAndPinsOfKeptJointsAndUndoRestoresThem) {
     Posed p;
     p.stack().push(new SetJointPinnedCommand(p.document, p.id, p.ends[2], true));
     p.drag(p.ends[0], Vec3(0.1, 0.1, 0.05));
@@ -206,21 +207,63 @@ TEST(PoseCommands, RebuildResetsPoseAndPinsAndUndoRestoresThem) {
     const QByteArray before = bytesOf(p.document);
 
     BuildOptions options;
-    options.targetEdgeLength = 0.15;
-    QSignalSpy changed(&p.document, &Document::partChanged);
-    p.stack().push(RebuildPartCommand::create(p.document, p.id, options).release());
-    ASSERT_EQ(changed.count(), 1);  // one signal with every flag
-    const auto what = changed.at(0).at(1).value<Document::Changes>();
-    EXPECT_TRUE(what & Document::Change::Geometry);
-    EXPECT_TRUE(what & Document::Change::Pose);
-    EXPECT_TRUE(what & Document::Change::Pins);
-    EXPECT_TRUE(identicalPoses(p.node().pose, restPose(p.node().part->skeleton)));
-    EXPECT_TRUE(p.node().pinnedJoints.empty());
+    options.smoothing = false;  // the same skeleton: everything is kept
+    auto command = RebuildPartCommand::create(p.document, p.id, options);
+    EXPECT_TRUE(command->droppedMessage().isEmpty()) << command->droppedMessage().toStdString();
+    p.stack().push(command.release());
+    EXPECT_TRUE(identicalPoses(p.node().pose, posed));
+    EXPECT_EQ(p.node().pinnedJoints, pins);
 
+    // Another edge length: whatever the new skeleton keeps keeps its values.
+    options.targetEdgeLength = 0.15;
+    command = RebuildPartCommand::create(p.document, p.id, options);
+    const bool dropsSome = !command->droppedMessage().isEmpty();
+    p.stack().push(command.release());
+    const Skeleton& skeleton = p.node().part->skeleton;
+    for (const auto& [joint, rotation] : p.node().pose.rotations) {
+        ASSERT_TRUE(skeleton.hasJoint(joint));
+        EXPECT_EQ(rotation.coeffs(), posed.rotation(joint).coeffs());
+    }
+    for (JointId joint : p.node().pinnedJoints)
+        EXPECT_TRUE(pins.contains(joint) && skeleton.hasJoint(joint));
+    if (!dropsSome) {
+        EXPECT_TRUE(identicalPoses(p.node().pose, posed));
+        EXPECT_EQ(p.node().pinnedJoints, pins);
+    }
+
+    p.stack().undo();
     p.stack().undo();
     EXPECT_TRUE(identicalPoses(p.node().pose, posed));
     EXPECT_EQ(p.node().pinnedJoints, pins);
     EXPECT_EQ(bytesOf(p.document), before);
+}
+
+TEST(RigCarryOver, JointsThatMovedOrVanishedAreDroppedAndCounted) {
+    Skeleton from;
+    const JointId a = from.addJoint(Vec3(0, 0, 0));
+    const JointId b = from.addJoint(Vec3(1, 0, 0));
+    const JointId c = from.addJoint(Vec3(2, 0, 0));
+    from.addBone(a, b);
+    from.addBone(b, c);
+    from.setRoot(a);
+    Skeleton to = from;
+    to.setJointPosition(c, Vec3(2, 1, 0));  // a whole bone away: not the same joint
+    rigmesh::Pose pose;
+    pose.setRotation(a, Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Vec3::UnitZ())));
+    pose.setRotation(c, Eigen::Quaterniond(Eigen::AngleAxisd(0.2, Vec3::UnitZ())));
+    pose.rootTranslation = Vec3(0.5, 0, 0);
+    rigmesh::Clip clip(30.0);
+    clip.setKey(1.0, pose);
+    const CarriedRig carried = carryRigOver(from, to, pose, {b, c}, clip);
+    EXPECT_EQ(carried.pose.rotations.size(), 1u);
+    EXPECT_TRUE(carried.pose.rotations.contains(a));
+    EXPECT_EQ(carried.pose.rootTranslation, pose.rootTranslation);
+    EXPECT_EQ(carried.pinned, std::set<JointId>{b});
+    ASSERT_EQ(carried.clip.keyCount(), 1);
+    EXPECT_EQ(carried.clip.framesPerSecond(), 30.0);
+    EXPECT_FALSE(carried.clip.key(1.0).rotations.contains(c));
+    EXPECT_EQ(carried.keptJoints, 2);     // a (posed), b (pinned)
+    EXPECT_EQ(carried.droppedJoints, 1);  // c (posed, pinned, keyed)
 }
 
 }  // namespace

@@ -90,9 +90,13 @@ void PropertiesPanel::rebuild() {
     options.targetEdgeLength = edgeLength_->value();
     options.smoothing = smoothing_->isChecked();
     try {
-        document_->undoStack()->push(
-            model::RebuildPartCommand::create(*document_, id, options).release());
-        emit statusMessage(tr("Rebuilt %1").arg(document_->part(id).name), 4000);
+        auto command = model::RebuildPartCommand::create(*document_, id, options);
+        const QString dropped = command->droppedMessage();
+        document_->undoStack()->push(command.release());
+        emit statusMessage(dropped.isEmpty()
+                               ? tr("Rebuilt %1").arg(document_->part(id).name)
+                               : tr("Rebuilt %1; %2").arg(document_->part(id).name, dropped),
+                           8000);
     } catch (const rigmesh::Error& error) {
         emit statusMessage(tr("Not rebuilt: %1").arg(QString::fromStdString(error.what())), 8000);
     }

@@ -5,6 +5,7 @@
 #include "model/recipe/RecipeJson.h"
 
 #include "model/PartBuilder.h"
+#include "model/RigCarryOver.h"
 
 namespace rigmesh::model {
 
@@ -27,15 +28,29 @@ RebuildPartCommand::RebuildPartCommand(Document& document, PartId id,
       oldOptions_(document.part(id).options),
       newOptions_(options),
       oldPose_(document.part(id).pose),
-      newPose_(rigmesh::restPose(newPart_->skeleton)),
       oldPinned_(document.part(id).pinnedJoints),
-      oldClip_(document.part(id).clip),
-      newClip_(emptiedClip(oldClip_)) {
+      oldClip_(document.part(id).clip) {
+    // Pose, pins and keys carry over where the new skeleton keeps the joints.
+    const CarriedRig carried =
+        carryRigOver(oldPart_->skeleton, newPart_->skeleton, oldPose_, oldPinned_, oldClip_);
+    newPose_ = carried.pose;
+    newPinned_ = carried.pinned;
+    newClip_ = carried.clip;
+    droppedJoints_ = carried.droppedJoints;
     setText(tr("Rebuild %1").arg(document.part(id).name));
 }
 
+QString RebuildPartCommand::droppedMessage() const {
+    if (droppedJoints_ == 0)
+        return {};
+    return tr(
+        "the pose, pins and keys of %n joint(s) were dropped: the new skeleton has no "
+        "joint there",
+        nullptr, droppedJoints_);
+}
+
 void RebuildPartCommand::redo() {
-    document_.replacePart(id_, newPart_, newOptions_, newPose_, {}, newClip_);
+    document_.replacePart(id_, newPart_, newOptions_, newPose_, newPinned_, newClip_);
 }
 
 nlohmann::json RebuildPartCommand::recipeStep() const {

@@ -1,9 +1,9 @@
 // Rebuild a part from its stroke with other build options, as one undoable
 // step. Use create(): the engine build runs there, before anything is pushed,
-// so a failure throws rigmesh::Error and changes nothing. Joint ids may not
-// survive the new skeleton: the rebuilt part gets its rest pose, no pins and
-// a clip without keys (same frame rate and modes); undo restores the old
-// pose, pins and clip exactly.
+// so a failure throws rigmesh::Error and changes nothing. The pose, pins and
+// keys carry over for the joints the new skeleton keeps (RigCarryOver.h);
+// droppedMessage() says what was dropped. Undo restores the old pose, pins
+// and clip exactly.
 #pragma once
 
 #include <QCoreApplication>
@@ -26,6 +26,9 @@ class RebuildPartCommand : public QUndoCommand, public RecipeStepSource {
     void redo() override;
     void undo() override;
     nlohmann::json recipeStep() const override;
+    // For the user: what of the pose, pins and keys the rebuild dropped
+    // (empty when nothing was).
+    QString droppedMessage() const;
 
   private:
     RebuildPartCommand(Document& document, PartId id, std::shared_ptr<const Part> part,
@@ -37,8 +40,9 @@ class RebuildPartCommand : public QUndoCommand, public RecipeStepSource {
     std::shared_ptr<const Part> oldPart_, newPart_;
     BuildOptions oldOptions_, newOptions_;
     rigmesh::Pose oldPose_, newPose_;
-    std::set<rigmesh::JointId> oldPinned_;
-    rigmesh::Clip oldClip_, newClip_;
+    std::set<rigmesh::JointId> oldPinned_, newPinned_;
+    rigmesh::Clip oldClip_, newClip_ = rigmesh::Clip();
+    int droppedJoints_ = 0;
 };
 
 }  // namespace rigmesh::model

@@ -1,0 +1,60 @@
+#include "model/RigCarryOver.h"
+
+namespace rigmesh::model {
+namespace {
+
+// Joints of `from` that `to` still has: same id, about the same place.
+std::set<JointId> survivingJoints(const Skeleton& from, const Skeleton& to) {
+    double total = 0.0;
+    for (const Bone& bone : from.bones())
+        total += from.boneLength(bone.id);
+    const double tolerance = from.boneCount() > 0 ? 0.25 * total / from.boneCount() : 0.0;
+    std::set<JointId> kept;
+    for (const Joint& joint : from.joints())
+        if (to.hasJoint(joint.id) &&
+            (to.joint(joint.id).position - joint.position).norm() <= tolerance)
+            kept.insert(joint.id);
+    return kept;
+}
+
+rigmesh::Pose filtered(const rigmesh::Pose& pose, const std::set<JointId>& kept, bool rootKept) {
+    rigmesh::Pose out;
+    for (const auto& [joint, rotation] : pose.rotations)
+        if (kept.contains(joint))
+            out.rotations[joint] = rotation;
+    if (rootKept)
+        out.rootTranslation = pose.rootTranslation;
+    return out;
+}
+
+}  // namespace
+
+CarriedRig carryRigOver(const Skeleton& from, const Skeleton& to, const rigmesh::Pose& pose,
+                        const std::set<JointId>& pinned, const rigmesh::Clip& clip) {
+    const std::set<JointId> kept = survivingJoints(from, to);
+    const bool rootKept = from.root() == to.root() && kept.contains(from.root());
+
+    // Every joint the user touched: posed, pinned or keyed.
+    std::set<JointId> touched(pinned.begin(), pinned.end());
+    for (const auto& [joint, rotation] : pose.rotations)
+        touched.insert(joint);
+    for (const auto& [time, key] : clip.keys())
+        for (const auto& [joint, rotation] : key.rotations)
+            touched.insert(joint);
+
+    CarriedRig out;
+    out.pose = filtered(pose, kept, rootKept);
+    for (JointId joint : pinned)
+        if (kept.contains(joint))
+            out.pinned.insert(joint);
+    out.clip = rigmesh::Clip(clip.framesPerSecond());
+    out.clip.interpolation = clip.interpolation;
+    out.clip.mode = clip.mode;
+    for (const auto& [time, key] : clip.keys())
+        out.clip.insertExactKey(time, filtered(key, kept, rootKept));
+    for (JointId joint : touched)
+        (kept.contains(joint) ? out.keptJoints : out.droppedJoints) += 1;
+    return out;
+}
+
+}  // namespace rigmesh::model
