@@ -2,6 +2,7 @@
 // every scene format through the studio's export; a bad document is a
 // one-line reason with exit code 1 and no output file.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +23,9 @@ using rigmesh::test::runCli;
 namespace {
 
 fs::path scratch(const std::string& name) {
-    fs::path folder = fs::temp_directory_path() / "rigmesh_cli_export_test";
+    // One folder per process: CTest runs these tests in parallel processes.
+    fs::path folder =
+        fs::temp_directory_path() / ("rigmesh_cli_export_test_" + std::to_string(::getpid()));
     fs::create_directories(folder);
     return folder / name;
 }

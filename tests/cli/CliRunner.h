@@ -40,9 +40,11 @@ inline CliResult runCli(const std::string& arguments) {
     return result;
 }
 
-// A path in the CLI tests' scratch folder (created on first use).
+// A path in this test process's scratch folder (created on first use): one
+// folder per process, since CTest runs tests in parallel processes.
 inline std::filesystem::path scratch(const std::string& name) {
-    std::filesystem::path folder = std::filesystem::temp_directory_path() / "rigmesh_cli_test";
+    std::filesystem::path folder =
+        std::filesystem::temp_directory_path() / ("rigmesh_cli_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
     return folder / name;
 }
