@@ -1,6 +1,7 @@
 #include "model/ImportReader.h"
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -132,7 +133,9 @@ std::vector<PartNode> readImportedParts(const QString& path, const ImportLimits&
     childLimits.addressSpaceBytes = static_cast<std::size_t>(limits.addressSpaceBytes);
     const ChildOutcome outcome = runChildProcess(
         program.toStdString(),
-        {"import", QFileInfo(path).absoluteFilePath().toStdString(), "-o", parts.toStdString()},
+        // Local 8-bit file names, so a name that is not UTF-8 still reaches the child.
+        {"import", QFile::encodeName(QFileInfo(path).absoluteFilePath()).toStdString(), "-o",
+         QFile::encodeName(parts).toStdString()},
         childLimits);
     if (outcome.end != ChildOutcome::End::Exited || outcome.exitCode != 0)
         throw Error(failureMessage(path, outcome, limits));

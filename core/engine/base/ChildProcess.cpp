@@ -21,17 +21,28 @@ namespace {
 // A temporary file that is already unlinked: it disappears with its last
 // descriptor, so no error path can leave it behind.
 int anonymousTemporaryFile() {
-    std::string pattern =
-        (std::filesystem::temp_directory_path() / "rigmesh-child-XXXXXX").string();
-    const int fd = mkstemp(pattern.data());
+    std::error_code error;
+    std::filesystem::path folder = std::filesystem::temp_directory_path(error);
+    if (error)
+        folder = "/tmp";  // TMPDIR names a missing folder
+    std::string pattern = (folder / "rigmesh-child-XXXXXX").string();
+    // Close-on-exec: no other child of this process inherits it (dup2 onto
+    // the child's stderr clears the flag there).
+    const int fd = mkostemp(pattern.data(), O_CLOEXEC);
     if (fd >= 0)
         unlink(pattern.c_str());
     return fd;
 }
 
+// The last `maxBytes` of what the child wrote: its final message matters most.
 std::string readBack(int fd, std::size_t maxBytes) {
     std::string text;
-    if (lseek(fd, 0, SEEK_SET) != 0)
+    const off_t size = lseek(fd, 0, SEEK_END);
+    if (size < 0)
+        return text;
+    const off_t start =
+        size > static_cast<off_t>(maxBytes) ? size - static_cast<off_t>(maxBytes) : 0;
+    if (lseek(fd, start, SEEK_SET) != start)
         return text;
     text.resize(maxBytes);
     std::size_t got = 0;
@@ -132,6 +143,7 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
 
     const pid_t pid = fork();
     if (pid == 0) {
+        setpgid(0, 0);  // its own group: a timeout kills whatever it started too
         if (nullFd >= 0) {
             dup2(nullFd, STDIN_FILENO);
             dup2(nullFd, STDOUT_FILENO);
@@ -161,8 +173,10 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
     int status = 0;
     bool ended = false;
     auto pause = std::chrono::microseconds(500);
-    const auto deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                      std::chrono::duration<double>(std::max(0.0, limits.seconds)));
+    const auto deadline =
+        start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                    std::chrono::duration<double>(limits.seconds > 0 ? std::min(limits.seconds, 1e7)
+                                                                     : 0.0));
     while (!ended) {
         const int result = waitInterrupted(pid, &status, WNOHANG);
         if (result == pid) {
@@ -170,7 +184,8 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
         } else if (result < 0) {
             break;  // not our child any more (cannot happen unless SIGCHLD is ignored)
         } else if (std::chrono::steady_clock::now() >= deadline) {
-            kill(pid, SIGKILL);
+            kill(-pid, SIGKILL);
+            kill(pid, SIGKILL);  // in case it had not made its group yet
             waitInterrupted(pid, &status, 0);
             outcome.end = ChildOutcome::End::TimedOut;
             break;

@@ -48,19 +48,37 @@ struct AssimpScenePrivateData {
 }  // namespace
 
 void joinIdenticalVertices(aiMesh& mesh) {
+    // Only what our exporter builds: positions, normals and bones. A mesh
+    // with other per-vertex channels is left to Assimp's own (slower) join.
+    if (mesh.GetNumUVChannels() > 0 || mesh.GetNumColorChannels() > 0 ||
+        mesh.HasTangentsAndBitangents() || mesh.mNumAnimMeshes > 0)
+        return;
     const unsigned count = mesh.mNumVertices;
+    // Each vertex's (bone, weight) list: duplicates merge only when their
+    // skinning is the same too.
+    std::vector<std::vector<std::pair<unsigned, float>>> weightsOf(count);
+    for (unsigned b = 0; b < mesh.mNumBones; ++b)
+        for (unsigned w = 0; w < mesh.mBones[b]->mNumWeights; ++w) {
+            const aiVertexWeight& weight = mesh.mBones[b]->mWeights[w];
+            if (weight.mVertexId < count)
+                weightsOf[weight.mVertexId].emplace_back(b, weight.mWeight);
+        }
     std::unordered_map<VertexKey, unsigned, VertexKeyHash, VertexKeyEqual> firstOf;
     firstOf.reserve(count);
     std::vector<unsigned> newIndex(count);
+    std::vector<unsigned> originalOf;  // per new index: the vertex it keeps
+    originalOf.reserve(count);
     std::vector<bool> kept(count, false);
     unsigned next = 0;
     for (unsigned v = 0; v < count; ++v) {
         const auto [it, inserted] = firstOf.try_emplace(keyOf(mesh, v), next);
-        if (inserted) {
+        if (inserted || weightsOf[originalOf[it->second]] != weightsOf[v]) {
             kept[v] = true;
-            ++next;
+            newIndex[v] = next++;
+            originalOf.push_back(v);
+        } else {
+            newIndex[v] = it->second;
         }
-        newIndex[v] = it->second;
     }
     if (next == count)
         return;
@@ -88,7 +106,10 @@ void joinIdenticalVertices(aiMesh& mesh) {
 }
 
 bool markVerticesJoined(aiScene& scene) {
-    if (aiGetVersionMajor() != 5 || aiGetVersionMinor() != 2 || scene.mPrivate == nullptr)
+    // The layout above is that of Assimp 5.2 (Debian 12 ships 5.2.5); on any
+    // other version the exporter runs its own join (slower, still correct).
+    if (aiGetVersionMajor() != 5 || aiGetVersionMinor() != 2 || aiGetVersionPatch() > 5 ||
+        scene.mPrivate == nullptr)
         return false;
     auto* data = static_cast<AssimpScenePrivateData*>(scene.mPrivate);
     // A scene we built: no importer, not a copy (the exporter ignores copies).

@@ -12,10 +12,11 @@ struct aiScene;
 
 namespace rigmesh {
 
-// Merges vertices with bit-identical position and normal into the first of
-// them: faces are renumbered, each bone keeps the first vertex's weights (as
-// Assimp does). Linear in vertices, faces and weights; leaves a mesh without
-// such duplicates untouched.
+// Merges vertices with bit-identical position, normal and skin weights into
+// the first of them; faces and bone weights are renumbered. Linear in
+// vertices, faces and weights; leaves a mesh without such duplicates, or with
+// UVs, colours, tangents or morph targets (Assimp joins those itself),
+// untouched.
 void joinIdenticalVertices(aiMesh& mesh);
 
 // Marks aiProcess_JoinIdenticalVertices as applied to `scene`, so that

@@ -9,7 +9,8 @@ namespace rigmesh {
 namespace {
 
 // Two triangles sharing an edge whose second copy of vertices 1 and 2 is
-// split (vertices 3 and 4), each vertex weighted by one bone.
+// split (vertices 3 and 4, weighted as the originals), each vertex weighted
+// by one bone.
 aiMesh* splitQuad() {
     auto* mesh = new aiMesh;
     const aiVector3D points[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
@@ -31,8 +32,10 @@ aiMesh* splitQuad() {
     mesh->mBones = new aiBone* [1] { new aiBone };
     mesh->mBones[0]->mNumWeights = 6;
     mesh->mBones[0]->mWeights = new aiVertexWeight[6];
+    const unsigned original[] = {0, 1, 2, 1, 2, 5};
     for (unsigned v = 0; v < 6; ++v)
-        mesh->mBones[0]->mWeights[v] = aiVertexWeight(v, 0.1f * static_cast<float>(v + 1));
+        mesh->mBones[0]->mWeights[v] =
+            aiVertexWeight(v, 0.1f * static_cast<float>(original[v] + 1));
     return mesh;
 }
 
@@ -61,6 +64,26 @@ TEST(AssimpJoinVertices, DifferentNormalsStaySplit) {
     scene.mMeshes[0]->mNormals[3] = aiVector3D(0, 1, 0);
     joinIdenticalVertices(*scene.mMeshes[0]);
     EXPECT_EQ(scene.mMeshes[0]->mNumVertices, 5u);
+}
+
+TEST(AssimpJoinVertices, DifferentWeightsStaySplit) {
+    aiScene scene;
+    scene.mNumMeshes = 1;
+    scene.mMeshes = new aiMesh* [1] { splitQuad() };
+    scene.mMeshes[0]->mBones[0]->mWeights[3].mWeight = 0.9f;  // copy of vertex 1, other skinning
+    joinIdenticalVertices(*scene.mMeshes[0]);
+    EXPECT_EQ(scene.mMeshes[0]->mNumVertices, 5u);
+}
+
+TEST(AssimpJoinVertices, MeshesWithTextureCoordinatesAreLeftToAssimp) {
+    aiScene scene;
+    scene.mNumMeshes = 1;
+    scene.mMeshes = new aiMesh* [1] { splitQuad() };
+    aiMesh& mesh = *scene.mMeshes[0];
+    mesh.mTextureCoords[0] = new aiVector3D[6];
+    mesh.mNumUVComponents[0] = 2;
+    joinIdenticalVertices(mesh);
+    EXPECT_EQ(mesh.mNumVertices, 6u);
 }
 
 TEST(AssimpJoinVertices, TheLinkedAssimpSkipsItsOwnJoinOnOurScenes) {
