@@ -9,6 +9,7 @@
 #include "CliRunner.h"
 
 namespace fs = std::filesystem;
+using rigmesh::test::quoted;
 using rigmesh::test::runCli;
 using rigmesh::test::scratch;
 
@@ -18,10 +19,6 @@ fs::path writeFile(const std::string& name, const std::string& text) {
     const fs::path path = scratch(name);
     std::ofstream(path) << text;
     return path;
-}
-
-std::string quoted(const fs::path& path) {
-    return "'" + path.string() + "'";
 }
 
 TEST(CliBadNumbers, SketchNumberBeyondDoubleExitsOneWithAMessage) {

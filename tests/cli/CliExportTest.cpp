@@ -17,26 +17,16 @@
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using rigmesh::test::quoted;
 using rigmesh::test::readWholeFile;
 using rigmesh::test::runCli;
+using rigmesh::test::scratch;
 
 namespace {
-
-fs::path scratch(const std::string& name) {
-    // One folder per process: CTest runs these tests in parallel processes.
-    fs::path folder =
-        fs::temp_directory_path() / ("rigmesh_cli_export_test_" + std::to_string(::getpid()));
-    fs::create_directories(folder);
-    return folder / name;
-}
 
 void writeFile(const fs::path& path, const std::string& bytes) {
     std::ofstream file(path, std::ios::binary);
     file << bytes;
-}
-
-std::string quoted(const fs::path& path) {
-    return "'" + path.string() + "'";
 }
 
 // Two parts from the shared sketches, the second hidden; the first keyed at

@@ -49,4 +49,9 @@ inline std::filesystem::path scratch(const std::string& name) {
     return folder / name;
 }
 
+// A path quoted for the shell runCli goes through.
+inline std::string quoted(const std::filesystem::path& path) {
+    return "'" + path.string() + "'";
+}
+
 }  // namespace rigmesh::test

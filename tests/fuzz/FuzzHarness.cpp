@@ -211,14 +211,6 @@ FuzzSummary runFuzzTarget(const FuzzTarget& target) {
         summary.rejected += verdict.rejected ? 1 : 0;
         if (verdict.problem.empty())
             return;
-        for (const KnownDefect& defect : target.known) {
-            if (verdict.problem.find(defect.signature) != std::string::npos) {
-                if (summary.known++ == 0)
-                    std::printf("fuzz %s: known defect (%s): %s\n", target.name.c_str(),
-                                defect.note.c_str(), verdict.problem.c_str());
-                return;
-            }
-        }
         fail(input, verdict.problem);
     };
 
@@ -240,9 +232,9 @@ FuzzSummary runFuzzTarget(const FuzzTarget& target) {
     fs::remove(current);
     std::printf(
         "fuzz %s: %d regression inputs, %d seeds, %d mutated inputs (%d rejected with a "
-        "message), %zu failures, %d known defects; seed %llu, %.0f s\n",
+        "message), %zu failures; seed %llu, %.0f s\n",
         target.name.c_str(), summary.regressionInputs, static_cast<int>(target.seeds.size()),
-        summary.mutatedInputs, summary.rejected, summary.failures.size(), summary.known,
+        summary.mutatedInputs, summary.rejected, summary.failures.size(),
         static_cast<unsigned long long>(seed), budget);
     return summary;
 }

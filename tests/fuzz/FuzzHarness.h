@@ -28,29 +28,18 @@ struct FuzzVerdict {
     std::string problem;
 };
 
-// A defect in code another engineer owns, reported but not failing the test
-// until fixed: a problem containing `signature` counts here. Its inputs are
-// kept in tests/data/fuzz/known/<target>/ and replayed by
-// FuzzKnownDefects.* (skipped while they still fail).
-struct KnownDefect {
-    std::string signature;
-    std::string note;  // where and who
-};
-
 struct FuzzTarget {
     std::string name;       // also the folder of its regression inputs
     std::string extension;  // of saved inputs: "json", "svg", "rigmesh"
     InputKind kind;
     std::vector<std::string> seeds;
     std::function<FuzzVerdict(const std::string& input)> check;
-    std::vector<KnownDefect> known = {};
 };
 
 struct FuzzSummary {
     int regressionInputs = 0;
     int mutatedInputs = 0;
     int rejected = 0;                   // inputs that threw the project's error
-    int known = 0;                      // inputs that hit a KnownDefect
     std::vector<std::string> failures;  // saved paths
 };
 

@@ -2,14 +2,21 @@
 // documents, each from real seeds (FuzzHarness.h says how they run).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <QCoreApplication>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 
 #include "FuzzChecks.h"
 #include "FuzzHarness.h"
 #include "base/Error.h"
+#include "mesh/MeshWriter.h"
 #include "model/Document.h"
+#include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
+#include "model/ImportReader.h"
+#include "model/commands/CreatePartCommand.h"
 #include "model/recipe/RecipeFile.h"
 #include "model/recipe/RecipeRunner.h"
 #include "pipeline/SketchToPart.h"
@@ -150,11 +157,69 @@ TEST(Fuzz, Document) {
     EXPECT_TRUE(runFuzzTarget(target).failures.empty());
 }
 
+// File > Import (issue 9 item 2): our own export of a rigged part in each
+// format Assimp reads for us, mutated and read through the child process.
+// Every input gives valid parts or an Error with a message; the child's
+// crashes, hangs and runaway allocations are contained (limits below the
+// harness's per-input bound).
+class ImportFuzz : public testing::TestWithParam<const char*> {};
+
+TEST_P(ImportFuzz, EveryMutatedFileGivesValidPartsOrAMessage) {
+    const std::string extension = GetParam();
+    const fs::path folder = fs::temp_directory_path() /
+                            ("rigmesh_import_fuzz_" + std::to_string(::getpid()) + "_" + extension);
+    fs::create_directories(folder);
+    const fs::path seed = folder / ("seed." + extension);  // a .gltf's .bin stays beside it
+    model::Document source;
+    const Sketch sketch = readSketchFile(RIGMESH_SHARED_SKETCHES "/y_branch.json");
+    source.undoStack()->push(
+        model::CreatePartCommand::create(source, sketch.points, QStringLiteral("y_branch"))
+            .release());
+    if (extension == "ply" || extension == "off")
+        writeMesh(source.parts().front().part->mesh, seed.string());
+    else
+        model::exportDocument(source, seed.string());
+
+    const bool text = extension == "gltf" || extension == "dae";
+    FuzzTarget target{"import_" + extension,
+                      extension,
+                      extension == "gltf"  ? InputKind::JsonText
+                      : extension == "dae" ? InputKind::SvgText
+                                           : InputKind::Bytes,
+                      {readFile(seed.string())},
+                      [&](const std::string& input) {
+                          const fs::path path = folder / ("input." + extension);
+                          std::ofstream(path, text ? std::ios::out : std::ios::binary) << input;
+                          model::ImportLimits limits;
+                          limits.seconds = 4.0;
+                          limits.addressSpaceBytes = std::uint64_t{2} << 30;
+                          try {
+                              for (const model::PartNode& node : model::readImportedParts(
+                                       QString::fromStdString(path.string()), limits))
+                                  if (!node.part->validate().empty())
+                                      return FuzzVerdict{false, "an invalid part came back"};
+                              return FuzzVerdict{};
+                          } catch (const Error& e) {
+                              return rejected(e);
+                          }
+                      }};
+    EXPECT_TRUE(runFuzzTarget(target).failures.empty());
+    fs::remove_all(folder);
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, ImportFuzz,
+                         testing::Values("glb", "gltf", "fbx", "dae", "obj", "ply", "off"),
+                         [](const testing::TestParamInfo<const char*>& param) {
+                             return std::string(param.param);
+                         });
+
 }  // namespace
 }  // namespace rigmesh::fuzz
 
 int main(int argc, char** argv) {
     QCoreApplication application(argc, argv);  // the commands translate their texts
+    // Imports are read by the built rigmesh in a child process.
+    rigmesh::model::setImportWorkerProgram(QStringLiteral(RIGMESH_CLI));
     testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }

@@ -186,7 +186,7 @@ void Mutator::nest(std::string& input) {
 // Parses the input as a tree, changes one node, writes it back. Inputs that
 // no longer parse are mutated as bytes instead.
 void Mutator::mutateTree(std::string& input) {
-    if (kind_ == InputKind::SvgText) {
+    if (kind_ == InputKind::SvgText || kind_ == InputKind::Bytes) {
         mutateText(input);
         return;
     }

@@ -13,7 +13,9 @@
 
 namespace rigmesh::fuzz {
 
-enum class InputKind { JsonText, SvgText, Cbor };
+// Bytes: binary or line-based formats (glb, fbx, ply, obj, off): byte and
+// number mutations only.
+enum class InputKind { JsonText, SvgText, Cbor, Bytes };
 
 class Mutator {
   public:
