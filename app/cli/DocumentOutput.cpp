@@ -24,6 +24,7 @@ ExportOptions exportOptions(const CommandLine& line) {
                 "allows)");
         options.maxInfluences = static_cast<int>(*influences);
     }
+    options.leafBones = line.flag("--leaf-bones");
     return options;
 }
 

@@ -14,7 +14,8 @@ class QCoreApplication;
 
 namespace rigmesh::cli {
 
-// --max-influences N (a whole number >= 0; 0 = all the format allows).
+// --max-influences N (a whole number >= 0; 0 = all the format allows);
+// --leaf-bones (an end bone at each leaf's tail).
 ExportOptions exportOptions(const CommandLine& line);
 
 // True for a path ending in .rigmesh (any case).

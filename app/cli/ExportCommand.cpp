@@ -15,7 +15,7 @@ namespace rigmesh::cli {
 
 int runExport(const std::vector<std::string>& arguments) {
     CommandLine line(arguments, {"-o", "--max-influences"},
-                     {"--current-pose", "--no-animation", "--hidden"});
+                     {"--current-pose", "--no-animation", "--hidden", "--leaf-bones"});
     if (line.positional().size() != 1)
         throw Error("export needs exactly one document (.rigmesh)");
     const std::string documentPath = line.positional()[0];

@@ -19,7 +19,7 @@ const char* kUsage = R"(usage: rigmesh COMMAND [ARGS]
 
 commands:
   build SKETCH [-o OUT.glb|.gltf|.fbx|.dae|.obj|.ply|.off] [--max-influences N]
-               [--pose-demo] [--rig FILE.json] [--stats FILE.json]
+               [--leaf-bones] [--pose-demo] [--rig FILE.json] [--stats FILE.json]
                [--debug-svg FILE.svg] [--edge-length L] [--no-smoothing] [--plain-dp]
       Turns a sketched silhouette (.json or .svg) into a rigged part: a closed
       surface, a skeleton and skin weights, and prints its figures. SKETCH may
@@ -27,7 +27,10 @@ commands:
       the skeleton (one node per bone) and skin weights, .obj the rest mesh; a
       .ply is coloured by each vertex's dominant bone. --max-influences N keeps
       at most N weights per vertex (default 4; 0 = all the format allows;
-      glTF keeps at most 4). --pose-demo adds a 3-key animation: rest at 0 s,
+      glTF keeps at most 4). Each bone node's +Y axis runs along its bone, as
+      Blender expects; --leaf-bones adds an end bone `<bone>_end` at each leaf
+      bone's tail (like Blender's "Add Leaf Bones"), so that every importer
+      also knows the leaves' lengths. --pose-demo adds a 3-key animation: rest at 0 s,
       an IK bend of the end joint at 0.5 s, rest at 1 s. --rig writes joints,
       bones and weights as JSON; --plain-dp uses plain Douglas-Peucker
       instead of the paper's CDP.
@@ -43,12 +46,12 @@ commands:
       through this command in a separate process with time and memory
       limits, so a broken file cannot take them down.
   export DOC.rigmesh -o OUT.glb|.gltf|.fbx|.dae|.obj [--max-influences N]
-               [--current-pose] [--no-animation] [--hidden]
+               [--current-pose] [--no-animation] [--hidden] [--leaf-bones]
       Converts a saved document as the studio's File > Export does: every
       visible part (--hidden: every part) at its placement, rigged, animated
       by the clip of the first part with keys (--no-animation: none); an .obj
       is the rest mesh, or each part's current pose with --current-pose.
-      --max-influences as for build. A bad document exits 1 with the reason.
+      --max-influences and --leaf-bones as for build. A bad document exits 1 with the reason.
   example
       Builds the embedded example sketch into a rigged part and prints its figures.
   version

@@ -31,6 +31,8 @@ except ImportError:  # Debian's blender does not pull it in; the importers need 
 # Blender 3.4.1's glTF importer uses np.bool, which NumPy 1.24 removed.
 numpy.bool = bool
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_files  # noqa: E402
 import bmesh  # noqa: E402  (Blender modules after the NumPy fix)
 import bpy  # noqa: E402
 from mathutils import Vector  # noqa: E402
@@ -53,8 +55,7 @@ UNIT_SCALE = 1.0  # Blender units per model unit, for every format (see above)
 
 def to_blender(point):
     """Our Y-up model coordinates to Blender's Z-up world."""
-    x, y, z = point
-    return Vector((x, -z, y)) * UNIT_SCALE
+    return blender_files.to_blender(point, UNIT_SCALE)
 
 
 class Report:
@@ -74,12 +75,7 @@ class Report:
 
 def import_file(path, extension):
     """Imports into the empty factory scene with each importer's defaults."""
-    if extension in (".glb", ".gltf"):
-        bpy.ops.import_scene.gltf(filepath=path)
-    elif extension == ".fbx":
-        bpy.ops.import_scene.fbx(filepath=path)
-    else:
-        bpy.ops.wm.collada_import(filepath=path)
+    blender_files.import_file(path)
 
 
 def keyed_frames(action):
@@ -99,9 +95,9 @@ def mesh_world_positions(obj, mesh):
 def check_bones(report, armature, rig, names, tolerance):
     """Count, names, parents and heads (world space) against our rig.
 
-    Our exporter adds a tip node `<bone>_end` at the tail of every leaf bone
-    (io/ExportRig.h); an importer may turn it into a bone. Such tips are
-    allowed, and checked: child of that leaf bone, head at its tail."""
+    With --leaf-bones our exporter adds an end bone `<bone>_end` at the tail
+    of every leaf bone (io/ExportRig.h). Such tips are allowed, and checked:
+    child of that leaf bone, head at its tail."""
     bones = armature.data.bones
     ours = rig["bones"]
     leaves = {i for i in range(len(ours))} - {b["parent"] for b in ours}

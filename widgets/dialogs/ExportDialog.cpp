@@ -45,12 +45,17 @@ ExportDialog::ExportDialog(const QString& suggestedPath, QWidget* parent) : QDia
     currentPose_ = new QCheckBox(tr("Current pose instead of the rest pose"), this);
     animation_ = new QCheckBox(tr("Animation (the selected part's keyed clip)"), this);
     animation_->setChecked(true);
+    leafBones_ = new QCheckBox(tr("Add leaf bones (an end bone at each leaf's tail)"), this);
+    leafBones_->setToolTip(
+        tr("Like Blender's FBX option: importers then also know how long "
+           "each leaf bone is"));
     auto* form = new QFormLayout(this);
     form->addRow(tr("File"), pathRow);
     form->addRow(tr("Format"), format_);
     form->addRow(tr("Influences"), influences_);
     form->addRow(QString(), currentPose_);
     form->addRow(QString(), animation_);
+    form->addRow(QString(), leafBones_);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
     form->addRow(buttons);
@@ -83,6 +88,7 @@ void ExportDialog::formatChanged() {
     currentPose_->setEnabled(true);
     animation_->setEnabled(!obj);
     influences_->setEnabled(!obj);
+    leafBones_->setEnabled(!obj);
 }
 
 QString ExportDialog::path() const {
@@ -94,6 +100,7 @@ ExportOptions ExportDialog::options() const {
     options.maxInfluences = influences_->value();
     options.restPose = !currentPose_->isChecked();
     options.animation = animation_->isChecked();
+    options.leafBones = leafBones_->isChecked();
     return options;
 }
 

@@ -30,6 +30,7 @@ class ExportDialog : public QDialog {
     QSpinBox* influences_;
     QCheckBox* currentPose_;
     QCheckBox* animation_;
+    QCheckBox* leafBones_;
 };
 
 }  // namespace rigmesh::widgets

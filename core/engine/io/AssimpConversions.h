@@ -32,6 +32,22 @@ inline aiMatrix4x4 translationMatrix(const Vec3& t) {
     return m;
 }
 
+inline aiMatrix4x4 toAi(const Eigen::Affine3d& a) {
+    aiMatrix4x4 m;
+    for (unsigned r = 0; r < 4; ++r)
+        for (unsigned c = 0; c < 4; ++c)
+            m[r][c] = static_cast<ai_real>(a.matrix()(r, c));
+    return m;
+}
+
+// A rigid transform: rotate, then translate.
+inline aiMatrix4x4 rigidMatrix(const Vec3& translation, const Eigen::Quaterniond& rotation) {
+    Eigen::Affine3d a = Eigen::Affine3d::Identity();
+    a.translate(translation);
+    a.rotate(rotation);
+    return toAi(a);
+}
+
 inline Eigen::Affine3d fromAi(const aiMatrix4x4& m) {
     Eigen::Matrix4d out;
     for (unsigned r = 0; r < 4; ++r)

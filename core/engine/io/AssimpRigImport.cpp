@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "io/AssimpConversions.h"
+#include "io/BoneTipHints.h"
 
 namespace rigmesh {
 namespace {
@@ -81,11 +84,105 @@ void keepOwnBones(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal, const A
     boneOfNode = std::move(kept);
 }
 
+// A number of a node's metadata (any numeric type), or nothing.
+std::optional<double> metadataNumber(const aiMetadata& metadata, unsigned i) {
+    const aiMetadataEntry& entry = metadata.mValues[i];
+    if (entry.mData == nullptr)
+        return std::nullopt;
+    switch (entry.mType) {
+        case AI_FLOAT:
+            return *static_cast<const float*>(entry.mData);
+        case AI_DOUBLE:
+            return *static_cast<const double*>(entry.mData);
+        case AI_INT32:
+            return *static_cast<const std::int32_t*>(entry.mData);
+        case AI_UINT64:
+            return static_cast<double>(*static_cast<const std::uint64_t*>(entry.mData));
+        default:
+            return std::nullopt;
+    }
+}
+
+// Our exporter's leaf tail (BoneTipHints.h) in the node's own frame, which
+// Assimp reads into the node's metadata: from glTF extras as a nested list,
+// from an FBX user property as a vector.
+std::optional<Vec3> tailMetadata(const aiNode& node) {
+    if (node.mMetaData == nullptr)
+        return std::nullopt;
+    for (unsigned i = 0; i < node.mMetaData->mNumProperties; ++i) {
+        const aiMetadataEntry& entry = node.mMetaData->mValues[i];
+        if (std::string(node.mMetaData->mKeys[i].C_Str()) != kTailMetadataKey ||
+            entry.mData == nullptr)
+            continue;
+        if (entry.mType == AI_AIVECTOR3D) {
+            const Vec3 tail = fromAi(*static_cast<const aiVector3D*>(entry.mData));
+            return tail.allFinite() ? std::optional<Vec3>(tail) : std::nullopt;
+        }
+        if (entry.mType != AI_AIMETADATA)
+            return std::nullopt;
+        const auto& list = *static_cast<const aiMetadata*>(entry.mData);
+        if (list.mNumProperties != 3)
+            return std::nullopt;
+        Vec3 tail;
+        for (unsigned k = 0; k < 3; ++k) {
+            const std::optional<double> value = metadataNumber(list, k);
+            if (!value || !std::isfinite(*value))
+                return std::nullopt;
+            tail[k] = *value;
+        }
+        return tail;
+    }
+    return std::nullopt;
+}
+
+bool hasWeight(const aiBone& bone) {
+    for (unsigned w = 0; w < bone.mNumWeights; ++w)
+        if (bone.mWeights[w].mWeight > 0)
+            return true;
+    return false;
+}
+
+// End bones (our leafBones, Blender's FBX "Add Leaf Bones"): a bone named
+// `<parent>_end` whose node is a child of its parent bone's node, with no
+// weights and no bone below it. It only marks its parent's tail: taken out
+// of `boneOfNode`, returned per parent node.
+std::map<int, unsigned> takeEndBones(const aiMesh& mesh, const AssimpNodeTree& tree,
+                                     std::map<int, unsigned>& boneOfNode) {
+    std::set<int> hasBoneChild;
+    for (const auto& [node, b] : boneOfNode)
+        for (int up = tree.parent(node); up >= 0; up = tree.parent(up))
+            if (boneOfNode.contains(up))
+                hasBoneChild.insert(up);
+    std::map<int, unsigned> endOfParent;
+    for (const auto& [node, b] : boneOfNode) {
+        const int parent = tree.parent(node);
+        if (parent < 0 || !boneOfNode.contains(parent) || hasBoneChild.contains(node) ||
+            hasWeight(*mesh.mBones[b]))
+            continue;
+        if (std::string(tree.node(node).mName.C_Str()) ==
+            std::string(tree.node(parent).mName.C_Str()) + "_end")
+            endOfParent[parent] = b;
+    }
+    for (const auto& [parent, b] : endOfParent)
+        boneOfNode.erase(tree.find(mesh.mBones[b]->mName.C_Str()));
+    return endOfParent;
+}
+
+// The rotation of the space Blender's COLLADA tips are in: the armature, the
+// nearest ancestor of `node` that is no bone.
+Eigen::Matrix3d armatureRotation(int node, const AssimpNodeTree& tree,
+                                 const std::map<int, unsigned>& boneOfNode) {
+    int up = tree.parent(node);
+    while (up >= 0 && boneOfNode.contains(up))
+        up = tree.parent(up);
+    return up < 0 ? Eigen::Matrix3d::Identity() : Eigen::Matrix3d(tree.restGlobal(up).linear());
+}
+
 }  // namespace
 
 std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
                       const AssimpNodeTree& tree, const std::set<std::string>& weightedAnywhere,
-                      ImportedPart& imported) {
+                      const std::map<std::string, Vec3>& colladaTips, ImportedPart& imported) {
     Part& part = imported.part;
     const std::vector<int> nodes = boneNodes(mesh, tree);
     for (unsigned b = 0; b < mesh.mNumBones; ++b)
@@ -94,6 +191,7 @@ std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
     std::map<int, unsigned> boneOfNode;
     for (unsigned b = 0; b < mesh.mNumBones; ++b)
         boneOfNode[nodes[b]] = b;
+    const std::map<int, unsigned> endBones = takeEndBones(mesh, tree, boneOfNode);
     keepOwnBones(mesh, meshGlobal, tree, weightedAnywhere, boneOfNode);
     // Parent bone: nearest ancestor node that is a bone. Tree order is parent
     // first, so sorting by node index gives a parent-first bone order.
@@ -111,21 +209,39 @@ std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
     auto head = [&](unsigned b) -> Vec3 {
         return bindGlobal(*mesh.mBones[b], meshGlobal).translation();
     };
+    // Tails, most trusted first (SceneImport.h).
     auto tail = [&](unsigned b) -> Vec3 {
         if (!childBones[b].empty())
             return head(childBones[b].front());
-        const int tip = tree.find(std::string(tree.node(nodes[b]).mName.C_Str()) + "_end");
-        if (tip >= 0)
+        const int node = nodes[b];
+        const std::string name = tree.node(node).mName.C_Str();
+        if (const auto end = endBones.find(node); end != endBones.end())
+            return head(end->second);
+        if (const int tip = tree.find(name + "_end"); tip >= 0)  // before issue 18: a tip node
             return tree.restGlobal(tip).translation();
-        if (parentBone[b] >= 0) {
-            const Vec3 along = head(b) - head(static_cast<unsigned>(parentBone[b]));
-            return head(b) + 0.5 * along;
-        }
-        return head(b) + 0.1 * meshSize(part) * Vec3::UnitY();
+        const Eigen::Affine3d bind = bindGlobal(*mesh.mBones[b], meshGlobal);
+        if (const std::optional<Vec3> local = tailMetadata(tree.node(node)))
+            return bind * *local;
+        if (const auto tip = colladaTips.find(name); tip != colladaTips.end())
+            return head(b) + armatureRotation(node, tree, boneOfNode) * tip->second;
+        // Blender's guess: along the bone's +Y, as long as its parent; a
+        // file whose bind frames are the world axes carries no direction,
+        // so the parent's direction then.
+        const double length = parentBone[b] >= 0
+                                  ? (head(b) - head(static_cast<unsigned>(parentBone[b]))).norm()
+                                  : 0.1 * meshSize(part);
+        const Vec3 axis = bind.linear() * Vec3::UnitY();
+        const bool framed = !bind.linear().isIdentity(1e-9) && axis.norm() > 0;
+        if (framed)
+            return head(b) + length * axis.normalized();
+        if (parentBone[b] >= 0)
+            return head(b) + 0.5 * (head(b) - head(static_cast<unsigned>(parentBone[b])));
+        return head(b) + length * Vec3::UnitY();
     };
 
-    // Joints at the same place are one.
-    const double tolerance = 1e-9 * meshSize(part);
+    // Joints at the same place are one. Files store 32-bit floats and a
+    // head comes from inverting a rotated bind matrix: 1e-5 of the size.
+    const double tolerance = 1e-5 * meshSize(part);
     std::vector<std::pair<Vec3, JointId>> joints;
     auto jointAt = [&](const Vec3& p) {
         for (const auto& [q, id] : joints)

@@ -5,6 +5,7 @@
 
 #include <assimp/scene.h>
 
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -19,9 +20,10 @@ namespace rigmesh {
 // vertices already are). `weightedAnywhere`: the names of the bones that
 // weight some mesh of the file (to tell the part's bones from others'). Returns an empty string, or
 // why the part still needs a rig (a bone without node, a skeleton that is not one tree).
+// `colladaTips`: Blender's tips by joint name (BoneTipHints.h), if any.
 std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
                       const AssimpNodeTree& tree, const std::set<std::string>& weightedAnywhere,
-                      ImportedPart& part);
+                      const std::map<std::string, Vec3>& colladaTips, ImportedPart& part);
 
 // The animation as a clip of `part` (imported by importRig from `mesh`), or
 // nothing when it moves none of the part's bones.

@@ -20,7 +20,7 @@ namespace {
 // Part names made safe and unique (notes item 2: every node name unique).
 std::vector<std::string> uniquePartNames(const std::vector<ExportPart>& parts) {
     std::vector<std::string> names;
-    std::set<std::string> used = {"RootNode", "Armature", "BoneTips"};
+    std::set<std::string> used = {"RootNode", "Armature"};
     for (std::size_t i = 0; i < parts.size(); ++i) {
         const std::string wanted =
             sanitizedName(parts[i].name.empty() ? parts[i].part->name : parts[i].name);
@@ -50,34 +50,41 @@ void setChildren(aiNode* parent, const std::vector<aiNode*>& children) {
     }
 }
 
-// One node per bone at its head, parented by the bone hierarchy (issue 6
-// item 1), nodes in the bind pose (notes item 6).
-std::vector<aiNode*> boneNodes(const ExportRig& rig) {
+// The end bone of a leaf (ExportOptions::leafBones): `<bone>_end`, a child
+// of the leaf's node at its tail, on the leaf's +Y axis.
+std::string endBoneName(const ExportBoneNode& leaf) {
+    return leaf.name + "_end";
+}
+
+// One node per bone at its head, its +Y along the bone, parented by the bone
+// hierarchy (issue 6 item 1, issue 18 item 1), nodes in the bind pose (notes
+// item 6); with `leafBones`, an end node under each leaf.
+std::vector<aiNode*> boneNodes(const ExportRig& rig, bool leafBones) {
     std::vector<aiNode*> nodes;
     std::vector<std::vector<aiNode*>> children(rig.nodes.size());
-    for (const ExportBoneNode& n : rig.nodes)
-        nodes.push_back(newNode(n.name, n.restTranslation));
+    for (const ExportBoneNode& n : rig.nodes) {
+        auto* node = new aiNode(n.name);
+        node->mTransformation = rigidMatrix(n.restTranslation, n.restRotation);
+        nodes.push_back(node);
+    }
     std::vector<aiNode*> roots;
     for (std::size_t i = 0; i < rig.nodes.size(); ++i) {
         const int parent = rig.nodes[i].parent;
         (parent < 0 ? roots : children[static_cast<std::size_t>(parent)]).push_back(nodes[i]);
+        if (leafBones && rig.nodes[i].leaf)
+            children[i].push_back(newNode(endBoneName(rig.nodes[i]), rig.nodes[i].localTail()));
     }
     for (std::size_t i = 0; i < nodes.size(); ++i)
         setChildren(nodes[i], children[i]);
     return roots;
 }
 
-// `<bone>_end` at each leaf bone's tail, outside the joint hierarchy: COLLADA
-// would turn a child of a joint into one more bone in Blender.
-void addTipNodes(const ExportRig& rig, std::vector<aiNode*>& tips) {
-    for (const ExportBoneNode& n : rig.nodes)
-        if (n.leaf)
-            tips.push_back(newNode(n.name + "_end", n.tail));
-}
-
 // Skin weights cut to the format's influences (notes item 9), one aiBone per
 // bone node named as the node (notes item 2), offset = inverse bind matrix.
-void addBones(aiMesh* mesh, const Part& part, const ExportRig& rig, int maxInfluences) {
+// End bones (leafBones) are joints without weights, so importers make bones
+// of them.
+void addBones(aiMesh* mesh, const Part& part, const ExportRig& rig, int maxInfluences,
+              bool leafBones) {
     SkinWeights remapped;
     remapped.perVertex.resize(part.mesh.vertices.size());
     for (std::size_t v = 0; v < part.weights.perVertex.size(); ++v)
@@ -97,19 +104,30 @@ void addBones(aiMesh* mesh, const Part& part, const ExportRig& rig, int maxInflu
             perNode[static_cast<std::size_t>(node)].emplace_back(static_cast<unsigned>(v),
                                                                  static_cast<float>(w));
     }
-    mesh->mNumBones = static_cast<unsigned>(rig.nodes.size());
-    mesh->mBones = new aiBone*[rig.nodes.size()];
+    std::vector<aiBone*> bones;
     for (std::size_t i = 0; i < rig.nodes.size(); ++i) {
+        const ExportBoneNode& node = rig.nodes[i];
         auto* bone = new aiBone;
-        bone->mName = aiString(rig.nodes[i].name);
-        bone->mOffsetMatrix = translationMatrix(-rig.nodes[i].head);
+        bone->mName = aiString(node.name);
+        bone->mOffsetMatrix = toAi(node.inverseBind());
         bone->mNumWeights = static_cast<unsigned>(perNode[i].size());
         if (!perNode[i].empty()) {
             bone->mWeights = new aiVertexWeight[perNode[i].size()];
             std::copy(perNode[i].begin(), perNode[i].end(), bone->mWeights);
         }
-        mesh->mBones[i] = bone;
+        bones.push_back(bone);
+        if (leafBones && node.leaf) {
+            auto* end = new aiBone;
+            end->mName = aiString(endBoneName(node));
+            Eigen::Affine3d bind = node.inverseBind().inverse(Eigen::Isometry);
+            bind.translate(node.localTail());
+            end->mOffsetMatrix = toAi(bind.inverse(Eigen::Isometry));
+            bones.push_back(end);
+        }
     }
+    mesh->mNumBones = static_cast<unsigned>(bones.size());
+    mesh->mBones = new aiBone*[bones.size()];
+    std::copy(bones.begin(), bones.end(), mesh->mBones);
 }
 
 aiMesh* makeMesh(const ExportPart& item, const std::string& name, ExportFormat format,
@@ -168,8 +186,9 @@ void checkPart(const ExportPart& item, bool rigged) {
 
 }  // namespace
 
-void buildAssimpScene(aiScene& scene, const std::vector<ExportPart>& parts, const Clip* clip,
-                      ExportFormat format, const ExportOptions& options) {
+std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<ExportPart>& parts,
+                                        const Clip* clip, ExportFormat format,
+                                        const ExportOptions& options) {
     if (parts.empty())
         throw Error("cannot export: there is no part");
     const bool rigged = isRiggedFormat(format);
@@ -183,7 +202,7 @@ void buildAssimpScene(aiScene& scene, const std::vector<ExportPart>& parts, cons
     // Notes items 1 and 7: identity root; meshes on child nodes; bones under
     // `Armature`, a sibling of the mesh nodes (notes item 12).
     scene.mRootNode = new aiNode("RootNode");
-    std::vector<aiNode*> rootChildren, armatureChildren, tips;
+    std::vector<aiNode*> rootChildren, armatureChildren;
     scene.mNumMeshes = static_cast<unsigned>(parts.size());
     scene.mMeshes = new aiMesh*[parts.size()];
     std::vector<ExportRig> rigs;
@@ -196,20 +215,18 @@ void buildAssimpScene(aiScene& scene, const std::vector<ExportPart>& parts, cons
         rootChildren.push_back(meshNode);
         if (!rigged)
             continue;
-        rigs.push_back(
-            makeExportRig(*parts[i].part, names[i], parts[i].placement, options.unitScale));
-        addBones(mesh, *parts[i].part, rigs.back(), influences);
-        for (aiNode* root : boneNodes(rigs.back()))
+        const bool gltf = format == ExportFormat::Glb || format == ExportFormat::Gltf;
+        rigs.push_back(makeExportRig(*parts[i].part, names[i], parts[i].placement,
+                                     options.unitScale,
+                                     gltf ? BoneAxes::GltfRootLeavesMinusZ : BoneAxes::PlusY));
+        addBones(mesh, *parts[i].part, rigs.back(), influences, options.leafBones);
+        for (aiNode* root : boneNodes(rigs.back(), options.leafBones))
             armatureChildren.push_back(root);
-        addTipNodes(rigs.back(), tips);
     }
     if (rigged) {
         aiNode* armature = new aiNode("Armature");
         setChildren(armature, armatureChildren);
         rootChildren.push_back(armature);
-        aiNode* tipGroup = new aiNode("BoneTips");
-        setChildren(tipGroup, tips);
-        rootChildren.push_back(tipGroup);
     }
     setChildren(scene.mRootNode, rootChildren);
 
@@ -226,6 +243,7 @@ void buildAssimpScene(aiScene& scene, const std::vector<ExportPart>& parts, cons
         scene.mMetaData = aiMetadata::Alloc(1);
         scene.mMetaData->Set(0, "UnitScaleFactor", 100.0);
     }
+    return rigs;
 }
 
 }  // namespace rigmesh

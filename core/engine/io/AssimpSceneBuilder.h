@@ -5,15 +5,18 @@
 #include <vector>
 
 #include "io/ExportFormat.h"
+#include "io/ExportRig.h"
 #include "io/SceneExport.h"
 
 struct aiScene;
 
 namespace rigmesh {
 
-// Fills an empty `scene`. Throws Error on a part without mesh or with
+// Fills an empty `scene` and returns the skeleton layout of each rigged part
+// (none for unrigged formats). Throws Error on a part without mesh or with
 // weights that do not have one list per vertex.
-void buildAssimpScene(aiScene& scene, const std::vector<ExportPart>& parts, const Clip* clip,
-                      ExportFormat format, const ExportOptions& options);
+std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<ExportPart>& parts,
+                                        const Clip* clip, ExportFormat format,
+                                        const ExportOptions& options);
 
 }  // namespace rigmesh

@@ -7,6 +7,22 @@
 #include "pose/PoseHierarchy.h"
 
 namespace rigmesh {
+namespace {
+
+// The shortest rotation taking `axis` onto `along` (no roll). Opposite
+// vectors turn half a turn about an axis perpendicular to both.
+Eigen::Quaterniond boneFrame(const Vec3& axis, const Vec3& along) {
+    if (!(along.norm() > 0))
+        return Eigen::Quaterniond::Identity();
+    const Vec3 direction = along.normalized();
+    if (axis.dot(direction) < -1.0 + 1e-12) {
+        const Vec3 turn = axis.unitOrthogonal();
+        return Eigen::Quaterniond(Eigen::AngleAxisd(M_PI, turn));
+    }
+    return Eigen::Quaterniond::FromTwoVectors(axis, direction).normalized();
+}
+
+}  // namespace
 
 std::string sanitizedName(const std::string& name) {
     std::string out;
@@ -18,7 +34,7 @@ std::string sanitizedName(const std::string& name) {
 }
 
 ExportRig makeExportRig(const Part& part, const std::string& partName,
-                        const Eigen::Affine3d& placement, double unitScale) {
+                        const Eigen::Affine3d& placement, double unitScale, BoneAxes axes) {
     const Skeleton& skeleton = part.skeleton;
     if (skeleton.jointCount() == 0 || !skeleton.hasJoint(skeleton.root()))
         throw Error("part '" + partName + "' has no skeleton to export");
@@ -50,8 +66,18 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
         node.name = partName + "_bone" + std::to_string(skeleton.bones()[b].id);
         node.head = place(hierarchy.restPosition(frame));
         node.tail = place(hierarchy.restPosition(end));
-        node.restTranslation = parent < 0 ? node.head : Vec3(node.head - rig.nodes[parent].head);
         node.leaf = bonesFrom[end].empty();
+        const bool minusZ = axes == BoneAxes::GltfRootLeavesMinusZ && parent < 0 && node.leaf;
+        node.restFrame =
+            boneFrame(minusZ ? Vec3(-Vec3::UnitZ()) : Vec3(Vec3::UnitY()), node.tail - node.head);
+        if (parent < 0) {
+            node.restTranslation = node.head;
+            node.restRotation = node.restFrame;
+        } else {
+            const ExportBoneNode& up = rig.nodes[static_cast<std::size_t>(parent)];
+            node.restTranslation = up.restFrame.conjugate() * (node.head - up.head);
+            node.restRotation = (up.restFrame.conjugate() * node.restFrame).normalized();
+        }
         const int index = static_cast<int>(rig.nodes.size());
         rig.nodeOfBone[b] = index;
         rig.nodes.push_back(node);
@@ -59,6 +85,13 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
             queue.emplace_back(child, index);
     }
     return rig;
+}
+
+Eigen::Affine3d ExportBoneNode::inverseBind() const {
+    Eigen::Affine3d bind = Eigen::Affine3d::Identity();
+    bind.translate(head);
+    bind.rotate(restFrame);
+    return bind.inverse(Eigen::Isometry);
 }
 
 Vec3 ExportRig::localTranslation(int node, const Pose& pose) const {
@@ -69,8 +102,13 @@ Vec3 ExportRig::localTranslation(int node, const Pose& pose) const {
 }
 
 Eigen::Quaterniond ExportRig::localRotation(int node, const Pose& pose) const {
-    const Eigen::Quaterniond q = pose.rotation(nodes[node].headJoint).normalized();
-    return (placementRotation * q * placementRotation.conjugate()).normalized();
+    const ExportBoneNode& n = nodes[static_cast<std::size_t>(node)];
+    const Eigen::Quaterniond q = pose.rotation(n.headJoint).normalized();
+    const Eigen::Quaterniond axisAligned = placementRotation * q * placementRotation.conjugate();
+    const Eigen::Quaterniond parentFrame =
+        n.parent < 0 ? Eigen::Quaterniond::Identity()
+                     : nodes[static_cast<std::size_t>(n.parent)].restFrame;
+    return (parentFrame.conjugate() * axisAligned * n.restFrame).normalized();
 }
 
 }  // namespace rigmesh

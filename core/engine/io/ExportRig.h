@@ -3,15 +3,21 @@
 // the bone's head (its joint nearer the root) as Blender's bones are, and
 // parented by the bone hierarchy, so that bones sharing a joint are separate
 // nodes that rotate independently. Root bones hang from the `Armature` node.
-// A leaf bone also gets a tip node `<bone>_end` (no skin, under a `BoneTips`
-// node beside the armature) at its tail, so the tail joint survives the
-// round trip.
+//
+// Bone frames (issue 18 item 1): at rest a bone node's +Y axis runs from its
+// head to its tail, Blender's bone convention, which its glTF, FBX and
+// COLLADA importers read to place each tail. The frame is the shortest
+// rotation taking +Y onto the bone (no roll). Optionally (`leafTips`) a leaf
+// bone gets an end node `<bone>_end` at its tail, child of the bone node and
+// a joint without weights, like Blender's FBX "Add Leaf Bones": importers then
+// know the leaf's length too.
 //
 // Positions are baked: a point x of the part becomes unitScale * placement(x).
-// Every bone node has the world axes at rest (our joint frames, Pose.h), so
-// its rest transform is a translation and, in a pose, its local rotation is
-// the pose's rotation of its head joint (conjugated by the placement's
-// rotation); root bones add the pose's root translation.
+// Our joint frames (Pose.h) are the world axes at rest, so a bone node's
+// posed global transform is its old axis-aligned one times its rest frame R:
+// its local rotation is R_parent^-1 * q * R, where q is the pose's rotation
+// of its head joint (conjugated by the placement's rotation); root bones add
+// the pose's root translation.
 #pragma once
 
 #include <string>
@@ -32,8 +38,17 @@ struct ExportBoneNode {
     JointId tailJoint;
     Vec3 head;  // placed and scaled
     Vec3 tail;
-    Vec3 restTranslation;  // local to the parent node (or to the Armature)
-    bool leaf = false;     // no child bone: gets a `<name>_end` tip node
+    // Global rest orientation (placed): +Y (or -Z, BoneAxes) along head -> tail.
+    Eigen::Quaterniond restFrame = Eigen::Quaterniond::Identity();
+    // Local rest transform, relative to the parent node (or to the Armature).
+    Vec3 restTranslation;
+    Eigen::Quaterniond restRotation = Eigen::Quaterniond::Identity();
+    bool leaf = false;  // no child bone
+
+    // The inverse bind matrix: world (placed) to this node's rest frame.
+    Eigen::Affine3d inverseBind() const;
+    // The tail in this node's rest frame.
+    Vec3 localTail() const { return restFrame.conjugate() * (tail - head); }
 };
 
 struct ExportRig {
@@ -49,11 +64,21 @@ struct ExportRig {
     Eigen::Quaterniond localRotation(int node, const Pose& pose) const;
 };
 
+// Which local axis of a bone node runs along the bone. Blender's glTF
+// importer (3.4, default "Temperance" bone heuristic) points a bone at its
+// child bones, snapped to the node's axes, and a leaf bone along its parent
+// bone's choice; but a leaf bone with no parent bone keeps the node's local
+// -Z (measured: +Y ones come out 90 degrees off). So for glTF a root leaf's
+// frame runs along -Z; every other bone, and every bone in FBX and COLLADA,
+// along +Y.
+enum class BoneAxes { PlusY, GltfRootLeavesMinusZ };
+
 // The placement must be rigid (rotation and translation); scale goes into
 // unitScale. `partName` is the (already unique) name prefix of the bones:
 // `<partName>_bone<id>`. Throws Error on a skeleton with no root.
 ExportRig makeExportRig(const Part& part, const std::string& partName,
-                        const Eigen::Affine3d& placement, double unitScale);
+                        const Eigen::Affine3d& placement, double unitScale,
+                        BoneAxes axes = BoneAxes::PlusY);
 
 // A name safe in every format: letters, digits and '_' (others become '_'),
 // never empty, not starting with a digit.

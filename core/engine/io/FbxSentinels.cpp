@@ -2,6 +2,7 @@
 
 #include <assimp/version.h>
 
+#include <algorithm>
 #include <cstring>
 #include <iterator>
 
@@ -137,7 +138,16 @@ bool assimpNeedsFbxSentinelFix() {
     return aiGetVersionMajor() < 5 || (aiGetVersionMajor() == 5 && aiGetVersionMinor() < 3);
 }
 
-std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file) {
+namespace {
+
+// The top-level records of a binary FBX, and where the footer starts.
+struct FbxFile {
+    bool wide = false;
+    std::vector<Record> top;
+    std::size_t footer = 0;
+};
+
+FbxFile parseFbx(const std::vector<std::uint8_t>& file) {
     if (file.size() < kHeaderSize || std::memcmp(file.data(), kMagic, sizeof kMagic - 1) != 0)
         Parser::fail("not a binary FBX file");
     std::uint32_t version = 0;
@@ -160,14 +170,115 @@ std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file)
     }
     if (top.empty())
         Parser::fail("no node records");
-    Writer writer(wide);
+    return {wide, std::move(top), cursor};
+}
+
+std::vector<std::uint8_t> writeFbx(const std::vector<std::uint8_t>& file, const FbxFile& fbx) {
+    Writer writer(fbx.wide);
     writer.out.assign(file.begin(), file.begin() + kHeaderSize);
-    for (const Record& record : top)
+    for (const Record& record : fbx.top)
         writer.write(record);
     writer.putNull();
-    writer.out.insert(writer.out.end(), file.begin() + static_cast<std::ptrdiff_t>(cursor),
+    writer.out.insert(writer.out.end(), file.begin() + static_cast<std::ptrdiff_t>(fbx.footer),
                       file.end());
     return std::move(writer.out);
+}
+
+void putLittleEndian(std::vector<std::uint8_t>& out, std::uint64_t value, std::size_t bytes) {
+    for (std::size_t i = 0; i < bytes; ++i)
+        out.push_back(static_cast<std::uint8_t>(value >> (8 * i)));
+}
+
+void putString(std::vector<std::uint8_t>& out, const std::string& text) {
+    out.push_back('S');
+    putLittleEndian(out, text.size(), 4);
+    out.insert(out.end(), text.begin(), text.end());
+}
+
+void putDouble(std::vector<std::uint8_t>& out, double value) {
+    out.push_back('D');
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    putLittleEndian(out, bits, 8);
+}
+
+// A Properties70 entry: P: "name", "Vector", "", "A+U", x, y, z.
+Record vectorProperty(const std::string& name, const Vec3& value, bool wide) {
+    std::vector<std::uint8_t> properties;
+    putString(properties, name);
+    putString(properties, "Vector");
+    putString(properties, "");
+    putString(properties, "A+U");
+    for (int k = 0; k < 3; ++k)
+        putDouble(properties, value[k]);
+    Record record;
+    record.name = "P";
+    putLittleEndian(record.body, 7, wide ? 8 : 4);
+    putLittleEndian(record.body, properties.size(), wide ? 8 : 4);
+    record.body.push_back(1);
+    record.body.push_back('P');
+    record.body.insert(record.body.end(), properties.begin(), properties.end());
+    return record;
+}
+
+// A Model record's name: its second property, "<name>\0\1Model".
+std::string modelName(const Record& model, bool wide) {
+    const std::size_t fs = wide ? 8 : 4;
+    std::size_t at = 2 * fs + 1 + model.name.size();
+    if (at + 9 > model.body.size() || model.body[at] != 'L')
+        return "";
+    at += 9;
+    if (at + 5 > model.body.size() || model.body[at] != 'S')
+        return "";
+    std::uint32_t length = 0;
+    for (int i = 0; i < 4; ++i)
+        length |= std::uint32_t(model.body[at + 1 + static_cast<std::size_t>(i)]) << (8 * i);
+    if (at + 5 + length > model.body.size())
+        return "";
+    const std::string full(model.body.begin() + static_cast<std::ptrdiff_t>(at + 5),
+                           model.body.begin() + static_cast<std::ptrdiff_t>(at + 5 + length));
+    return full.substr(0, full.find('\0'));
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file) {
+    return writeFbx(file, parseFbx(file));
+}
+
+std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& file,
+                                              const std::string& property,
+                                              const std::map<std::string, Vec3>& values) {
+    FbxFile fbx = parseFbx(file);
+    for (Record& objects : fbx.top) {
+        if (objects.name != "Objects")
+            continue;
+        for (Record& model : objects.children) {
+            if (model.name != "Model")
+                continue;
+            const auto value = values.find(modelName(model, fbx.wide));
+            if (value == values.end())
+                continue;
+            auto table = std::find_if(model.children.begin(), model.children.end(),
+                                      [](const Record& r) { return r.name == "Properties70"; });
+            if (table == model.children.end()) {
+                Record properties;
+                properties.name = "Properties70";
+                putLittleEndian(properties.body, 0, fbx.wide ? 8 : 4);
+                putLittleEndian(properties.body, 0, fbx.wide ? 8 : 4);
+                properties.body.push_back(12);
+                properties.body.insert(properties.body.end(), properties.name.begin(),
+                                       properties.name.end());
+                properties.noProperties = true;
+                model.children.insert(model.children.begin(), properties);
+                model.nested = true;
+                table = model.children.begin();
+            }
+            table->children.push_back(vectorProperty(property, value->second, fbx.wide));
+            table->nested = true;
+        }
+    }
+    return writeFbx(file, fbx);
 }
 
 }  // namespace rigmesh

@@ -15,8 +15,11 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
+
+#include "base/Types.h"
 
 namespace rigmesh {
 
@@ -28,5 +31,13 @@ bool assimpNeedsFbxSentinelFix();
 // Whatever follows the top-level records (the footer) is kept as is. Throws
 // Error if the bytes are not a binary FBX or a record is out of range.
 std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file);
+
+// Returns the (sentinel-complete) file with a user property `property` of
+// type Vector added to the Properties70 of each Model named in `values`
+// (issue 18: our leaf bones' tails, which Assimp's reader hands back as node
+// metadata and Blender shows as a custom property). Throws Error as above.
+std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& file,
+                                              const std::string& property,
+                                              const std::map<std::string, Vec3>& values);
 
 }  // namespace rigmesh

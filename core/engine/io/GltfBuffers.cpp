@@ -46,18 +46,45 @@ void zeroUncovered(const json& gltf, char* data, std::size_t size) {
             data[i] = 0;
 }
 
-}  // namespace
+void writeU32(std::string& bytes, std::size_t at, std::uint32_t value) {
+    for (int b = 0; b < 4; ++b)  // little-endian
+        bytes[at + static_cast<std::size_t>(b)] = static_cast<char>((value >> (8 * b)) & 0xFFu);
+}
 
-std::string zeroUnreferencedGlbBytes(std::string glb) {
-    // Header (magic, version, length), then chunks of (length, type, data).
-    const auto invalid = [] {
-        return Error("cannot export: the glTF exporter wrote an invalid .glb");
-    };
+Error invalidGlb() {
+    return Error("cannot export: the glTF exporter wrote an invalid .glb");
+}
+
+// Header (magic, version, length), then chunks of (length, type, data); the
+// first chunk is the JSON. Returns the JSON chunk's length.
+std::size_t checkedJsonLength(const std::string& glb) {
     if (glb.size() < 20 || glb.compare(0, 4, "glTF") != 0)
-        throw invalid();
+        throw invalidGlb();
     const std::size_t jsonLength = readU32(glb, 12);
     if (readU32(glb, 16) != 0x4E4F534Au || jsonLength > glb.size() - 20)
-        throw invalid();
+        throw invalidGlb();
+    return jsonLength;
+}
+
+}  // namespace
+
+std::string glbJson(const std::string& glb) {
+    return glb.substr(20, checkedJsonLength(glb));
+}
+
+std::string glbWithJson(const std::string& glb, const std::string& json) {
+    const std::size_t oldLength = checkedJsonLength(glb);
+    std::string padded = json;
+    padded.append((4 - padded.size() % 4) % 4, ' ');
+    std::string out = glb.substr(0, 20) + padded + glb.substr(20 + oldLength);
+    writeU32(out, 8, static_cast<std::uint32_t>(out.size()));
+    writeU32(out, 12, static_cast<std::uint32_t>(padded.size()));
+    return out;
+}
+
+std::string zeroUnreferencedGlbBytes(std::string glb) {
+    const std::size_t jsonLength = checkedJsonLength(glb);
+    const auto invalid = invalidGlb;
     const json gltf = parseGltf(glb.substr(20, jsonLength));
     const std::size_t binHeader = 20 + jsonLength;
     if (binHeader == glb.size())

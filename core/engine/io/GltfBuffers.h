@@ -16,6 +16,14 @@ namespace rigmesh {
 // set to zero. Throws Error if the bytes are not a glTF 2.0 binary file.
 std::string zeroUnreferencedGlbBytes(std::string glb);
 
+// The JSON chunk of a .glb. Throws Error if the bytes are not a glTF 2.0
+// binary file.
+std::string glbJson(const std::string& glb);
+
+// The .glb with its JSON chunk replaced by `json` (padded with spaces to a
+// multiple of 4 bytes, as the format requires), the binary chunk unchanged.
+std::string glbWithJson(const std::string& glb, const std::string& json);
+
 // The .bin buffer of a .gltf (buffer 0) with every byte no buffer view
 // covers set to zero. Throws Error on JSON that is not glTF.
 std::string zeroUnreferencedBinBytes(const std::string& gltfJson, std::string bin);

@@ -16,10 +16,12 @@
 #include "base/StagedFile.h"
 #include "io/AssimpJoinVertices.h"
 #include "io/AssimpSceneBuilder.h"
+#include "io/BoneTipHints.h"
 #include "io/ExportFormat.h"
 #include "io/FbxSentinels.h"
 #include "io/FiniteScene.h"
 #include "io/GltfBuffers.h"
+#include "io/GltfSceneRoots.h"
 
 namespace rigmesh {
 namespace {
@@ -155,17 +157,22 @@ void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const s
                  const ExportOptions& options) {
     const ExportFormat format = exportFormatFromPath(path);
     aiScene scene;
-    buildAssimpScene(scene, parts, clip, format, options);
+    const std::vector<ExportRig> rigs = buildAssimpScene(scene, parts, clip, format, options);
     checkSceneIsFinite(scene);
     const fs::path target(path);
     checkReplaceable(target);
 
     ExportedFiles files = exportToMemory(scene, format, path);
     switch (format) {
-        case ExportFormat::Glb:
-            writeFileAtomically(target, zeroUnreferencedGlbBytes(std::move(files.main)));
+        case ExportFormat::Glb: {
+            const std::string glb = zeroUnreferencedGlbBytes(std::move(files.main));
+            writeFileAtomically(
+                target, glbWithJson(glb, withGltfLeafTails(
+                                             withRootChildrenAsSceneRoots(glbJson(glb)), rigs)));
             break;
+        }
         case ExportFormat::Gltf:
+            files.main = withGltfLeafTails(withRootChildrenAsSceneRoots(files.main), rigs);
             writeGltf(files, target);
             break;
         case ExportFormat::Fbx:
@@ -174,10 +181,11 @@ void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const s
                     std::vector<std::uint8_t>(files.main.begin(), files.main.end()));
                 files.main.assign(fixed.begin(), fixed.end());
             }
+            files.main = withFbxLeafTails(files.main, rigs);
             writeFileAtomically(target, files.main);
             break;
         case ExportFormat::Collada:
-            writeFileAtomically(target, files.main);
+            writeFileAtomically(target, withColladaBoneTips(files.main, rigs));
             break;
         case ExportFormat::Obj:
             writeObj(files, target);

@@ -5,9 +5,8 @@
 // an identity root node; one node per part carrying its mesh (the part's
 // name); for rigged formats an `Armature` node beside them holding every
 // part's bones, one node per bone named `<part>_bone<id>`, placed at the
-// bone's head and parented by the bone hierarchy; and a `BoneTips` node
-// holding a `<bone>_end` node (no skin) at each leaf bone's tail, so that
-// tails survive the round trip (Blender shows them as empties). Several parts are several skinned
+// bone's head with its +Y axis along the bone (ExportRig.h) and parented by
+// the bone hierarchy; optionally an end bone at each leaf's tail. Several parts are several skinned
 // meshes on that one hierarchy, each bound to its own bones (Assimp 5.2.5's glTF exporter writes a
 // single skin listing every bone; each mesh's weights use only its own part's bones, and
 // importScene sorts them out again). Nodes are in the bind pose; each part's `pose` is used only by
@@ -44,6 +43,9 @@ struct ExportOptions {
     bool restPose = true;
     bool animation = true;   // write the clip when there is one
     double unitScale = 1.0;  // multiplies every written coordinate
+    // An end bone `<bone>_end` at each leaf bone's tail (Blender's FBX "Add
+    // Leaf Bones"), so that importers know the leaves' lengths too.
+    bool leafBones = false;
 };
 
 // Writes `parts` (and `clip`, animating part 0; may be null) to `path`, the

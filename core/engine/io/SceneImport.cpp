@@ -5,13 +5,17 @@
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
 
+#include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
 
 #include "base/Error.h"
 #include "io/AssimpConversions.h"
 #include "io/AssimpNodeTree.h"
 #include "io/AssimpRigImport.h"
+#include "io/BoneTipHints.h"
 
 namespace rigmesh {
 namespace {
@@ -53,6 +57,18 @@ TriMesh worldMesh(const aiMesh& mesh, const Eigen::Affine3d& global) {
     return out;
 }
 
+bool isCollada(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".dae";
+}
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
 struct MeshInstance {
     unsigned mesh;
     int node;
@@ -86,6 +102,9 @@ ImportedScene importScene(const std::string& path) {
                     break;
                 }
 
+    const std::map<std::string, Vec3> colladaTips =
+        isCollada(path) ? readColladaBoneTips(readText(path)) : std::map<std::string, Vec3>();
+
     ImportedScene result;
     for (const MeshInstance& instance : instances) {
         const aiMesh& mesh = *scene.mMeshes[instance.mesh];
@@ -96,7 +115,7 @@ ImportedScene importScene(const std::string& path) {
         imported.part.mesh = worldMesh(mesh, global);
         std::string why = "it has no skeleton";
         if (mesh.mNumBones > 0)
-            why = importRig(mesh, global, tree, weightedAnywhere, imported);
+            why = importRig(mesh, global, tree, weightedAnywhere, colladaTips, imported);
         if (!why.empty()) {
             imported.needsRig = true;
             imported.part.skeleton = Skeleton();

@@ -7,10 +7,15 @@
 // shared again by Assimp's JoinIdenticalVertices (so their order may differ
 // from the exporter's). A skinned mesh gets a skeleton from the node
 // hierarchy of its bones: every bone node's head is a joint (joints at the
-// same place are one), its tail is the head of its first child bone, or its
-// `<bone>_end` tip node anywhere in the file (SceneExport.h), or else half its parent's length
-// further along its parent's direction (a tenth of the mesh's size up for a
-// lone bone). The bind pose comes from the bones' offset (inverse bind)
+// same place are one, within 1e-5 of the mesh's size), its tail is the head
+// of its first child bone, or of its end bone (`<bone>_end` without weights:
+// ours with leafBones, Blender's FBX "Add Leaf Bones"), or a `<bone>_end`
+// node anywhere (our exports before issue 18), or our tail hint (glTF
+// extras, FBX user property, BoneTipHints.h), or Blender's COLLADA tip
+// extra; else, as Blender guesses, along the bone node's +Y as long as its
+// parent (a tenth of the mesh's size for a lone bone), or half its parent's
+// length further along its parent's direction when the file's bind frames
+// are all the world axes. End bones are not bones of the part. The bind pose comes from the bones' offset (inverse bind)
 // matrices. The first animation becomes a Clip of the part whose bones it
 // moves. A mesh without bones imports with an empty skeleton and
 // needsRig = true: it can be posed once rigged, which comes later.

@@ -1,0 +1,158 @@
+#include "io/BoneTipHints.h"
+
+#include <tinyxml2.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <map>
+
+#include "base/Error.h"
+#include "io/FbxSentinels.h"
+
+namespace rigmesh {
+namespace {
+
+std::map<std::string, const ExportBoneNode*> bonesByName(const std::vector<ExportRig>& rigs) {
+    std::map<std::string, const ExportBoneNode*> byName;
+    for (const ExportRig& rig : rigs)
+        for (const ExportBoneNode& node : rig.nodes)
+            byName.emplace(node.name, &node);
+    return byName;
+}
+
+void addParameter(tinyxml2::XMLElement& technique, const char* name, const char* type,
+                  const std::string& value) {
+    tinyxml2::XMLElement* parameter = technique.InsertNewChildElement(name);
+    parameter->SetAttribute("sid", name);
+    parameter->SetAttribute("type", type);
+    parameter->SetText(value.c_str());
+}
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    return text;
+}
+
+void addTips(tinyxml2::XMLElement& parent,
+             const std::map<std::string, const ExportBoneNode*>& bones) {
+    for (tinyxml2::XMLElement* node = parent.FirstChildElement("node"); node != nullptr;
+         node = node->NextSiblingElement("node")) {
+        addTips(*node, bones);
+        const char* type = node->Attribute("type");
+        const char* name = node->Attribute("name");
+        if (type == nullptr || name == nullptr || std::string(type) != "JOINT")
+            continue;
+        const auto bone = bones.find(name);
+        if (bone == bones.end())
+            continue;
+        const Vec3 tip = bone->second->tail - bone->second->head;
+        tinyxml2::XMLElement* technique =
+            node->InsertNewChildElement("extra")->InsertNewChildElement("technique");
+        technique->SetAttribute("profile", "blender");
+        addParameter(*technique, "connect", "bool", "0");
+        addParameter(*technique, "layer", "string", "0");
+        addParameter(*technique, "roll", "float", "0");
+        addParameter(*technique, "tip_x", "float", number(tip.x()));
+        addParameter(*technique, "tip_y", "float", number(tip.y()));
+        addParameter(*technique, "tip_z", "float", number(tip.z()));
+    }
+}
+
+}  // namespace
+
+std::string withColladaBoneTips(const std::string& dae, const std::vector<ExportRig>& rigs) {
+    tinyxml2::XMLDocument document;
+    if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
+        document.RootElement() == nullptr)
+        throw Error("cannot export: the COLLADA exporter wrote invalid XML");
+    const auto bones = bonesByName(rigs);
+    tinyxml2::XMLElement* scenes =
+        document.RootElement()->FirstChildElement("library_visual_scenes");
+    for (tinyxml2::XMLElement* scene = scenes != nullptr ? scenes->FirstChildElement("visual_scene")
+                                                         : nullptr;
+         scene != nullptr; scene = scene->NextSiblingElement("visual_scene"))
+        addTips(*scene, bones);
+    tinyxml2::XMLPrinter printer;
+    document.Print(&printer);
+    return std::string(printer.CStr(), static_cast<std::size_t>(printer.CStrSize() - 1));
+}
+
+namespace {
+
+void collectTips(const tinyxml2::XMLElement& parent, std::map<std::string, Vec3>& tips) {
+    for (const tinyxml2::XMLElement* node = parent.FirstChildElement("node"); node != nullptr;
+         node = node->NextSiblingElement("node")) {
+        collectTips(*node, tips);
+        const char* name = node->Attribute("name");
+        if (name == nullptr)
+            continue;
+        for (const tinyxml2::XMLElement* extra = node->FirstChildElement("extra"); extra != nullptr;
+             extra = extra->NextSiblingElement("extra"))
+            for (const tinyxml2::XMLElement* technique = extra->FirstChildElement("technique");
+                 technique != nullptr; technique = technique->NextSiblingElement("technique")) {
+                const char* profile = technique->Attribute("profile");
+                if (profile == nullptr || std::string(profile) != "blender")
+                    continue;
+                Vec3 tip;
+                bool complete = true;
+                const char* axes[] = {"tip_x", "tip_y", "tip_z"};
+                for (int k = 0; k < 3; ++k) {
+                    const tinyxml2::XMLElement* value = technique->FirstChildElement(axes[k]);
+                    double number = 0;
+                    complete = complete && value != nullptr &&
+                               value->QueryDoubleText(&number) == tinyxml2::XML_SUCCESS &&
+                               std::isfinite(number);
+                    tip[k] = number;
+                }
+                if (complete)
+                    tips[name] = tip;
+            }
+    }
+}
+
+}  // namespace
+
+std::string withFbxLeafTails(const std::string& fbx, const std::vector<ExportRig>& rigs) {
+    std::map<std::string, Vec3> tails;
+    for (const ExportRig& rig : rigs)
+        for (const ExportBoneNode& node : rig.nodes)
+            if (node.leaf)
+                tails.emplace(node.name, node.localTail());
+    const std::vector<std::uint8_t> out = withFbxModelVectors(
+        std::vector<std::uint8_t>(fbx.begin(), fbx.end()), kTailMetadataKey, tails);
+    return std::string(out.begin(), out.end());
+}
+
+std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae) {
+    std::map<std::string, Vec3> tips;
+    tinyxml2::XMLDocument document;
+    if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
+        document.RootElement() == nullptr)
+        return tips;
+    const tinyxml2::XMLElement* scenes =
+        document.RootElement()->FirstChildElement("library_visual_scenes");
+    for (const tinyxml2::XMLElement* scene =
+             scenes != nullptr ? scenes->FirstChildElement("visual_scene") : nullptr;
+         scene != nullptr; scene = scene->NextSiblingElement("visual_scene"))
+        collectTips(*scene, tips);
+    return tips;
+}
+
+std::string withGltfLeafTails(const std::string& gltfJson, const std::vector<ExportRig>& rigs) {
+    nlohmann::json gltf = nlohmann::json::parse(gltfJson, nullptr, false);
+    if (gltf.is_discarded() || !gltf.is_object())
+        throw Error("cannot export: the glTF exporter wrote invalid JSON");
+    const auto bones = bonesByName(rigs);
+    if (gltf.contains("nodes") && gltf["nodes"].is_array())
+        for (nlohmann::json& node : gltf["nodes"]) {
+            const auto bone = bones.find(node.value("name", std::string()));
+            if (bone == bones.end() || !bone->second->leaf)
+                continue;
+            const Vec3 tail = bone->second->localTail();
+            node["extras"][kTailMetadataKey] = {tail.x(), tail.y(), tail.z()};
+        }
+    return gltf.dump();
+}
+
+}  // namespace rigmesh

@@ -1,0 +1,45 @@
+// Where each bone's tail is, written into the exported file for importers
+// that would otherwise guess it (issue 18 items 1 and 2). A bone node's
+// frame gives the tail's direction, but not a leaf bone's length, and
+// Blender's COLLADA importer reads no frame at all: it points every bone
+// along the file's up axis unless the joint carries Blender's own
+// `<extra><technique profile="blender">` with `tip_x/y/z`, the tail minus
+// the head in the file's coordinates (measured with Blender 3.4.1: with it
+// every bone's head, direction and length match ours). In glTF each leaf
+// bone's node gets `extras.rigmesh_tail`, its tail in the node's own
+// frame, which our importer (through Assimp's node metadata) reads back;
+// Blender shows it as a custom property of the bone. FBX gets the same as a
+// user property of the leaf's Model.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/ExportRig.h"
+
+namespace rigmesh {
+
+// The COLLADA text with Blender's tip extra added to every joint node of
+// `rigs` (as the node's last child, where the schema puts <extra>).
+// Throws Error on text that is not XML.
+std::string withColladaBoneTips(const std::string& dae, const std::vector<ExportRig>& rigs);
+
+// The glTF JSON with `extras.rigmesh_tail` on every leaf bone's node of
+// `rigs`. Throws Error on JSON that is not glTF.
+std::string withGltfLeafTails(const std::string& gltfJson, const std::vector<ExportRig>& rigs);
+
+// The binary FBX with a user property `rigmesh_tail` (a Vector: the tail in
+// the node's own frame) on every leaf bone's Model. Throws Error on bytes
+// that are not a binary FBX.
+std::string withFbxLeafTails(const std::string& fbx, const std::vector<ExportRig>& rigs);
+
+// The metadata key our importer reads (glTF extras, FBX user property).
+inline constexpr const char* kTailMetadataKey = "rigmesh_tail";
+
+// Per joint name: Blender's tip (tail minus head, in the armature's space)
+// from a COLLADA file's `<technique profile="blender">` extras, as our
+// exporter and Blender's write them. Empty for text that is not XML.
+std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae);
+
+}  // namespace rigmesh

@@ -1,0 +1,27 @@
+"""What the Blender check scripts share: importing one of our exports with
+each importer's default options, and our coordinates in Blender's world."""
+
+import os
+
+from mathutils import Vector
+
+
+def to_blender(point, scale=1.0):
+    """Our Y-up model coordinates to Blender's Z-up world: every importer
+    turns a Y-up file's (x, y, z) into (x, -z, y)."""
+    x, y, z = point
+    return Vector((x, -z, y)) * scale
+
+
+def import_file(path):
+    """Imports into the current scene with the importer's defaults; returns
+    the file's extension (lower case)."""
+    import bpy
+    extension = os.path.splitext(path)[1].lower()
+    if extension in (".glb", ".gltf"):
+        bpy.ops.import_scene.gltf(filepath=path)
+    elif extension == ".fbx":
+        bpy.ops.import_scene.fbx(filepath=path)
+    else:
+        bpy.ops.wm.collada_import(filepath=path)
+    return extension
