@@ -35,7 +35,6 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import blender_files  # noqa: E402
 import bmesh  # noqa: E402  (Blender modules after the NumPy fix)
 import bpy  # noqa: E402
-from mathutils import Vector  # noqa: E402
 from mathutils.kdtree import KDTree  # noqa: E402
 
 # Per format: the Blender frame of time 0 (glTF actions start at frame 0,
