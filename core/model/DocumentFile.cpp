@@ -275,6 +275,15 @@ std::shared_ptr<const Part> readPart(const json& object) {
     part->weights.warning = text(field(weights, "warning"), "weights warning");
     part->knownClosestBones = readPairs(array(object, "knownClosestBones"), vertexCount, boneCount,
                                         PairValues::Distances, "known closest bones");
+    if (object.contains("boneNames"))  // since issue 18
+        for (const json& entry : array(object, "boneNames")) {
+            if (!entry.is_array() || entry.size() != 2)
+                corrupt("a bone name is not [bone id, name]");
+            const auto bone = integer<BoneId>(entry[0], "named bone");
+            if (!part->skeleton.hasBone(bone) || part->boneNames.contains(bone))
+                corrupt("a bone name refers to a missing bone, or twice to one");
+            part->boneNames[bone] = text(entry[1], "bone name");
+        }
     return part;
 }
 
@@ -357,6 +366,8 @@ rigmesh::Clip readClip(const PartNode& node, const json& object) {
     out.interpolation =
         readMode(field(clip, "interpolation"), "clip interpolation", &interpolationFromName);
     out.mode = readMode(field(clip, "playback"), "clip playback", &playbackFromName);
+    if (clip.contains("name"))  // since issue 18
+        out.name = text(field(clip, "name"), "clip name");
     return out;
 }
 

@@ -34,6 +34,14 @@ json pairs(const std::vector<std::vector<std::pair<int, double>>>& lists) {
     return out;
 }
 
+// boneNames: [[bone id, name], ...] in bone id order.
+json boneNamesJson(const std::map<BoneId, std::string>& names) {
+    json out = json::array();
+    for (const auto& [bone, name] : names)
+        out.push_back(json::array({bone, name}));
+    return out;
+}
+
 json partJson(const Part& part) {
     json mesh;
     mesh["vertices"] = json::array();
@@ -86,6 +94,7 @@ json partJson(const Part& part) {
           {"failedBones", part.weights.failedBones},
           {"warning", part.weights.warning}}},
         {"knownClosestBones", pairs(part.knownClosestBones)},
+        {"boneNames", boneNamesJson(part.boneNames)},
     };
 }
 
@@ -102,7 +111,8 @@ json clipJson(const rigmesh::Clip& clip) {
     json keys = json::array();
     for (const auto& [time, pose] : clip.keys())
         keys.push_back({{"time", time}, {"pose", poseJson(pose)}});
-    return {{"framesPerSecond", clip.framesPerSecond()},
+    return {{"name", clip.name},
+            {"framesPerSecond", clip.framesPerSecond()},
             {"interpolation", interpolationName(clip.interpolation)},
             {"playback", playbackName(clip.mode)},
             {"keys", std::move(keys)}};

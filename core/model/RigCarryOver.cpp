@@ -50,6 +50,7 @@ CarriedRig carryRigOver(const Skeleton& from, const Skeleton& to, const rigmesh:
     out.clip = rigmesh::Clip(clip.framesPerSecond());
     out.clip.interpolation = clip.interpolation;
     out.clip.mode = clip.mode;
+    out.clip.name = clip.name;
     for (const auto& [time, key] : clip.keys())
         out.clip.insertExactKey(time, filtered(key, kept, rootKept));
     for (JointId joint : touched)

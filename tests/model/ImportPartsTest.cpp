@@ -4,6 +4,7 @@
 
 #include <QTemporaryDir>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "ModelTestSupport.h"
 #include "base/Error.h"
@@ -54,6 +55,23 @@ TEST_F(ImportParts, ImportedPartSurvivesSaveAndLoadExactly) {
         ImportPartsCommand::create(document, QString::fromStdString(path)).release());
     const QByteArray saved = bytesOf(document);
     EXPECT_EQ(DocumentFile::toBytes(DocumentFile::fromBytes(saved)), saved);
+}
+
+TEST_F(ImportParts, BlenderRigKeepsItsBoneNamesAndActionThroughSaveAndLoad) {
+    Document document;
+    document.undoStack()->push(
+        ImportPartsCommand::create(document, QStringLiteral(RIGMESH_TEST_DATA) +
+                                                 QStringLiteral("/blender_rig/capsule.glb"))
+            .release());
+    ASSERT_EQ(document.partCount(), 1);
+    const DocumentContents loaded = DocumentFile::fromBytes(bytesOf(document));
+    ASSERT_EQ(loaded.parts.size(), 1u);
+    const PartNode& node = loaded.parts.front();
+    std::set<std::string> names;
+    for (const auto& [bone, name] : node.part->boneNames)
+        names.insert(name);
+    EXPECT_EQ(names, (std::set<std::string>{"Lower", "Middle", "Upper"}));
+    EXPECT_EQ(node.clip.name, "Wave");
 }
 
 TEST_F(ImportParts, StaticMeshComesInUnriggedAndSaysSo) {

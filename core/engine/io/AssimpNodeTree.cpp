@@ -29,7 +29,8 @@ Vec3 sampleVector(const aiVectorKey* keys, unsigned count, const Vec3& fallback,
 
 }  // namespace
 
-AssimpNodeTree::AssimpNodeTree(const aiScene& scene) {
+AssimpNodeTree::AssimpNodeTree(const aiScene& scene, double scale) {
+    scale_ = Eigen::Affine3d(Eigen::Scaling(scale));
     if (scene.mRootNode == nullptr)
         return;
     std::vector<std::pair<const aiNode*, int>> stack = {{scene.mRootNode, -1}};
@@ -40,7 +41,8 @@ AssimpNodeTree::AssimpNodeTree(const aiScene& scene) {
         nodes_.push_back(node);
         parents_.push_back(parent);
         const Eigen::Affine3d local = fromAi(node->mTransformation);
-        rest_.push_back(parent < 0 ? local : rest_[static_cast<std::size_t>(parent)] * local);
+        rest_.push_back(parent < 0 ? scale_ * local
+                                   : rest_[static_cast<std::size_t>(parent)] * local);
         byName_.emplace(node->mName.C_Str(), index);
         for (unsigned c = node->mNumChildren; c-- > 0;)
             stack.emplace_back(node->mChildren[c], index);
@@ -65,7 +67,7 @@ std::vector<Eigen::Affine3d> AssimpNodeTree::animatedGlobals(const aiAnimation& 
     }
     std::vector<Eigen::Affine3d> globals(nodes_.size());
     for (std::size_t i = 0; i < nodes_.size(); ++i)  // parent first by construction
-        globals[i] = parents_[i] < 0 ? locals[i]
+        globals[i] = parents_[i] < 0 ? scale_ * locals[i]
                                      : globals[static_cast<std::size_t>(parents_[i])] * locals[i];
     return globals;
 }

@@ -15,7 +15,8 @@ namespace rigmesh {
 
 class AssimpNodeTree {
   public:
-    explicit AssimpNodeTree(const aiScene& scene);
+    // `scale`: metres per file unit, applied above the root (FBX units).
+    explicit AssimpNodeTree(const aiScene& scene, double scale = 1.0);
 
     int size() const { return static_cast<int>(nodes_.size()); }
     const aiNode& node(int i) const { return *nodes_[static_cast<std::size_t>(i)]; }
@@ -29,6 +30,7 @@ class AssimpNodeTree {
     std::vector<Eigen::Affine3d> animatedGlobals(const aiAnimation& animation, double ticks) const;
 
   private:
+    Eigen::Affine3d scale_ = Eigen::Affine3d::Identity();
     std::vector<const aiNode*> nodes_;
     std::vector<int> parents_;
     std::vector<Eigen::Affine3d> rest_;

@@ -224,19 +224,12 @@ std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
             return bind * *local;
         if (const auto tip = colladaTips.find(name); tip != colladaTips.end())
             return head(b) + armatureRotation(node, tree, boneOfNode) * tip->second;
-        // Blender's guess: along the bone's +Y, as long as its parent; a
-        // file whose bind frames are the world axes carries no direction,
-        // so the parent's direction then.
+        // Blender's guess: along the bone node's +Y, as long as its parent.
         const double length = parentBone[b] >= 0
                                   ? (head(b) - head(static_cast<unsigned>(parentBone[b]))).norm()
                                   : 0.1 * meshSize(part);
         const Vec3 axis = bind.linear() * Vec3::UnitY();
-        const bool framed = !bind.linear().isIdentity(1e-9) && axis.norm() > 0;
-        if (framed)
-            return head(b) + length * axis.normalized();
-        if (parentBone[b] >= 0)
-            return head(b) + 0.5 * (head(b) - head(static_cast<unsigned>(parentBone[b])));
-        return head(b) + length * Vec3::UnitY();
+        return head(b) + length * (axis.norm() > 0 ? Vec3(axis.normalized()) : Vec3::UnitY());
     };
 
     // Joints at the same place are one. Files store 32-bit floats and a

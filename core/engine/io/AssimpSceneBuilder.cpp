@@ -33,6 +33,20 @@ std::vector<std::string> uniquePartNames(const std::vector<ExportPart>& parts) {
     return names;
 }
 
+// Notes item 2: every node name unique. Kept bone names (an import's) may
+// meet a part's or another part's bone's: `_2`, `_3`, ... appended; an end
+// bone's name (`<bone>_end`) is taken too.
+void makeBoneNamesUnique(ExportRig& rig, std::set<std::string>& used) {
+    for (ExportBoneNode& node : rig.nodes) {
+        std::string name = node.name;
+        for (int n = 2; used.contains(name) || used.contains(name + "_end"); ++n)
+            name = node.name + "_" + std::to_string(n);
+        node.name = name;
+        used.insert(name);
+        used.insert(name + "_end");
+    }
+}
+
 aiNode* newNode(const std::string& name, const Vec3& translation) {
     auto* node = new aiNode(name);
     node->mTransformation = translationMatrix(translation);
@@ -197,6 +211,8 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
     if (!(options.unitScale > 0))
         throw Error("cannot export: the unit scale must be positive");
     const std::vector<std::string> names = uniquePartNames(parts);
+    std::set<std::string> usedNames(names.begin(), names.end());
+    usedNames.insert({"RootNode", "Armature"});
     const int influences = effectiveInfluenceLimit(format, options.maxInfluences);
 
     // Notes items 1 and 7: identity root; meshes on child nodes; bones under
@@ -219,6 +235,7 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
         rigs.push_back(makeExportRig(*parts[i].part, names[i], parts[i].placement,
                                      options.unitScale,
                                      gltf ? BoneAxes::GltfRootLeavesMinusZ : BoneAxes::PlusY));
+        makeBoneNamesUnique(rigs.back(), usedNames);
         addBones(mesh, *parts[i].part, rigs.back(), influences, options.leafBones);
         for (aiNode* root : boneNodes(rigs.back(), options.leafBones))
             armatureChildren.push_back(root);
@@ -235,8 +252,9 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
 
     if (rigged && clip != nullptr && options.animation && clip->keyCount() > 0) {
         scene.mNumAnimations = 1;
-        scene.mAnimations =
-            new aiAnimation* [1] { makeAnimation(*clip, rigs[0], names[0] + "_clip") };
+        scene.mAnimations = new aiAnimation* [1] {
+            makeAnimation(*clip, rigs[0], clip->name.empty() ? names[0] + "_clip" : clip->name)
+        };
     }
     if (format == ExportFormat::Fbx) {
         // Notes item 10: FBX defaults to centimetres; 100 says metres.

@@ -63,7 +63,10 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
         node.parent = parent;
         node.headJoint = hierarchy.jointId(frame);
         node.tailJoint = hierarchy.jointId(end);
-        node.name = partName + "_bone" + std::to_string(skeleton.bones()[b].id);
+        const BoneId id = skeleton.bones()[b].id;
+        const auto kept = part.boneNames.find(id);
+        node.name = kept != part.boneNames.end() ? sanitizedName(kept->second)
+                                                 : partName + "_bone" + std::to_string(id);
         node.head = place(hierarchy.restPosition(frame));
         node.tail = place(hierarchy.restPosition(end));
         node.leaf = bonesFrom[end].empty();

@@ -74,8 +74,9 @@ struct ExportRig {
 enum class BoneAxes { PlusY, GltfRootLeavesMinusZ };
 
 // The placement must be rigid (rotation and translation); scale goes into
-// unitScale. `partName` is the (already unique) name prefix of the bones:
-// `<partName>_bone<id>`. Throws Error on a skeleton with no root.
+// unitScale. A bone's node is named after it (Part::boneNames, sanitized),
+// else `<partName>_bone<id>`; names may repeat other parts' or nodes' (the
+// scene builder makes them unique). Throws Error on a skeleton with no root.
 ExportRig makeExportRig(const Part& part, const std::string& partName,
                         const Eigen::Affine3d& placement, double unitScale,
                         BoneAxes axes = BoneAxes::PlusY);

@@ -6,9 +6,11 @@
 #include <assimp/Importer.hpp>
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <set>
 
 #include "base/Error.h"
@@ -26,6 +28,9 @@ const aiScene* readScene(Assimp::Importer& importer, const std::string& path) {
         throw Error("cannot import " + path + ": no such file");
     // FBX pivots as extra `$AssimpFbx$` nodes would split bones from their nodes.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
+    // COLLADA nodes by their names (Blender's "Lower"), not their ids
+    // ("Rig_Lower"): the names a rigger gave the bones.
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_USE_COLLADA_NAMES, true);
     const aiScene* scene = nullptr;
     try {
         scene =
@@ -69,6 +74,80 @@ std::string readText(const std::string& path) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+// FBX says its unit in centimetres per file unit (UnitScaleFactor; 100 =
+// metres, as we write; Blender writes 1 with a 100x armature and mesh), and
+// Assimp 5.2.5 leaves it to us; Blender's importer applies it. glTF is in
+// metres, and Assimp applies COLLADA's <unit> itself.
+double metresPerFileUnit(const aiScene& scene) {
+    if (scene.mMetaData == nullptr)
+        return 1.0;
+    for (unsigned i = 0; i < scene.mMetaData->mNumProperties; ++i) {
+        if (std::string(scene.mMetaData->mKeys[i].C_Str()) != "UnitScaleFactor")
+            continue;
+        const aiMetadataEntry& entry = scene.mMetaData->mValues[i];
+        double centimetres = 0;
+        if (entry.mType == AI_DOUBLE && entry.mData != nullptr)
+            centimetres = *static_cast<const double*>(entry.mData);
+        else if (entry.mType == AI_FLOAT && entry.mData != nullptr)
+            centimetres = *static_cast<const float*>(entry.mData);
+        if (std::isfinite(centimetres) && centimetres > 0)
+            return centimetres / 100.0;
+    }
+    return 1.0;
+}
+
+// A part's name: its node's (the object a user named, e.g. Blender's
+// "Capsule"), else its mesh's (e.g. "Cylinder"), else "part".
+std::string partName(const aiMesh& mesh, const aiNode& node) {
+    for (const aiString* name : {&node.mName, &mesh.mName}) {
+        std::string text = name->C_Str();
+        // Assimp's COLLADA reader names nodes with no name after their mesh.
+        if (!text.empty() && text != "RootNode" && text.find("$Assimp") == std::string::npos)
+            return text;
+    }
+    return "part";
+}
+
+// The file's bone names on the part's bones, when they are distinct and
+// not empty (as Part::validate wants them).
+void keepBoneNames(ImportedPart& imported) {
+    const std::set<std::string> distinct(imported.boneNames.begin(), imported.boneNames.end());
+    if (distinct.size() != imported.boneNames.size() || distinct.contains(""))
+        return;
+    for (std::size_t b = 0; b < imported.boneNames.size(); ++b)
+        imported.part.boneNames[imported.part.skeleton.bones()[b].id] = imported.boneNames[b];
+}
+
+// Where a mesh's vertices are shown: for a skinned mesh whose bones' nodes
+// rest in its bind pose, a bone node's global transform times its offset
+// matrix (glTF ignores a skinned mesh node's own transform; COLLADA's
+// bind_shape_matrix, which Assimp folds into the offsets, moves the mesh,
+// and Blender shows it there); else the mesh node's global transform.
+Eigen::Affine3d meshToWorld(const aiMesh& mesh, const Eigen::Affine3d& nodeGlobal,
+                            const AssimpNodeTree& tree) {
+    std::optional<Eigen::Affine3d> skin;
+    for (unsigned b = 0; b < mesh.mNumBones; ++b) {
+        const int node = tree.find(mesh.mBones[b]->mName.C_Str());
+        if (node < 0)
+            return nodeGlobal;
+        const Eigen::Affine3d candidate =
+            tree.restGlobal(node) * fromAi(mesh.mBones[b]->mOffsetMatrix);
+        if (!candidate.matrix().allFinite())
+            return nodeGlobal;
+        if (!skin)
+            skin = candidate;
+        else if (!skin->matrix().isApprox(candidate.matrix(), 1e-5))
+            return nodeGlobal;  // the nodes rest in another pose than the bind pose
+    }
+    return skin ? *skin : nodeGlobal;
+}
+
+// Blender's FBX exporter names a take `<armature>|<action>`: the action.
+std::string actionName(const std::string& animation) {
+    const auto bar = animation.rfind('|');
+    return bar == std::string::npos ? animation : animation.substr(bar + 1);
+}
+
 struct MeshInstance {
     unsigned mesh;
     int node;
@@ -79,7 +158,7 @@ struct MeshInstance {
 ImportedScene importScene(const std::string& path) {
     Assimp::Importer importer;
     const aiScene& scene = *readScene(importer, path);
-    const AssimpNodeTree tree(scene);
+    const AssimpNodeTree tree(scene, metresPerFileUnit(scene));
 
     std::vector<MeshInstance> instances;
     std::set<unsigned> seen;
@@ -108,15 +187,16 @@ ImportedScene importScene(const std::string& path) {
     ImportedScene result;
     for (const MeshInstance& instance : instances) {
         const aiMesh& mesh = *scene.mMeshes[instance.mesh];
-        const Eigen::Affine3d& global = tree.restGlobal(instance.node);
+        const Eigen::Affine3d global = meshToWorld(mesh, tree.restGlobal(instance.node), tree);
         ImportedPart imported;
-        imported.part.name =
-            mesh.mName.length > 0 ? mesh.mName.C_Str() : tree.node(instance.node).mName.C_Str();
+        imported.part.name = partName(mesh, tree.node(instance.node));
         imported.part.mesh = worldMesh(mesh, global);
         std::string why = "it has no skeleton";
         if (mesh.mNumBones > 0)
             why = importRig(mesh, global, tree, weightedAnywhere, colladaTips, imported);
-        if (!why.empty()) {
+        if (why.empty()) {
+            keepBoneNames(imported);
+        } else {
             imported.needsRig = true;
             imported.part.skeleton = Skeleton();
             imported.part.weights = SkinWeights();
@@ -130,8 +210,10 @@ ImportedScene importScene(const std::string& path) {
         if (!result.clip && scene.mNumAnimations > 0 && !result.parts.back().needsRig) {
             result.clip =
                 importClip(*scene.mAnimations[0], mesh, global, tree, result.parts.back());
-            if (result.clip)
+            if (result.clip) {
+                result.clip->name = actionName(scene.mAnimations[0]->mName.C_Str());
                 result.clipPart = static_cast<int>(result.parts.size()) - 1;
+            }
         }
     }
     return result;

@@ -3,7 +3,13 @@
 // Assimp stays inside the .cpp files.
 //
 // Each mesh becomes a part (a mesh instanced on several nodes is taken once),
-// its vertices in world space (the node's transform applied), vertices
+// named after its node (else its mesh), its vertices in world space: a
+// skinned mesh where its bones' nodes and offset matrices put it (as glTF
+// and Blender do), another by its node's transform; in metres (an FBX's
+// UnitScaleFactor applied; Assimp applies COLLADA's unit; COLLADA nodes by
+// their names, not ids). Bone names are kept (Part::boneNames) when
+// distinct, and the animation's name (Blender's FBX `Rig|Wave` -> `Wave`)
+// as the clip's. vertices
 // shared again by Assimp's JoinIdenticalVertices (so their order may differ
 // from the exporter's). A skinned mesh gets a skeleton from the node
 // hierarchy of its bones: every bone node's head is a joint (joints at the
@@ -13,10 +19,9 @@
 // node anywhere (our exports before issue 18), or our tail hint (glTF
 // extras, FBX user property, BoneTipHints.h), or Blender's COLLADA tip
 // extra; else, as Blender guesses, along the bone node's +Y as long as its
-// parent (a tenth of the mesh's size for a lone bone), or half its parent's
-// length further along its parent's direction when the file's bind frames
-// are all the world axes. End bones are not bones of the part. The bind pose comes from the bones' offset (inverse bind)
-// matrices. The first animation becomes a Clip of the part whose bones it
+// parent (a tenth of the mesh's size for a lone bone). End bones are not
+// bones of the part. The bind pose comes from the bones'
+// offset (inverse bind) matrices. The first animation becomes a Clip of the part whose bones it
 // moves. A mesh without bones imports with an empty skeleton and
 // needsRig = true: it can be posed once rigged, which comes later.
 #pragma once

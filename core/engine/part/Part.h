@@ -4,6 +4,7 @@
 // bone edits) reuse.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct Part {
     // Per vertex: the closest bone(s) known at creation (paper 2.4's shortcut
     // for cylindrical vertices); empty where visibility had to be tested.
     ClosestBones knownClosestBones;
+    // Bone names kept from an imported file (issue 18 item 2): exported as
+    // they are (made unique); a bone without one is `<part>_bone<id>`.
+    std::map<BoneId, std::string> boneNames;
 
     // Bones as segments in the order of skeleton.bones().
     std::vector<BoneSegment> boneSegments() const;
@@ -36,7 +40,8 @@ struct Part {
     // vertices in range, per-vertex tables of the right length with indices
     // in range, a skeleton that is a tree (or no skeleton at all, for an
     // unrigged import), and weights that are finite, positive, sorted by
-    // bone and sum to 1 for every vertex. Every operation that changes a
+    // bone and sum to 1 for every vertex, bone names for existing bones,
+    // non-empty and distinct. Every operation that changes a
     // part checks its result with it; so does every reader of untrusted data.
     std::vector<std::string> validate() const;
 };

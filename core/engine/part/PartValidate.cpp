@@ -1,5 +1,6 @@
 // Part::validate(): the invariants every part keeps (see Part.h).
 #include <cmath>
+#include <set>
 #include <string>
 
 #include "part/Part.h"
@@ -121,6 +122,12 @@ std::vector<std::string> Part::validate() const {
             break;
         }
     checkBoneLists(knownClosestBones, n, bones, "known closest bones", false, problems);
+    std::set<std::string> names;
+    for (const auto& [bone, name] : boneNames)
+        if (!skeleton.hasBone(bone) || name.empty() || !names.insert(name).second) {
+            problems.add("A bone name is empty, repeated or names a missing bone.");
+            break;
+        }
     return problems.take();
 }
 

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <map>
+#include <string>
 #include <vector>
 
 #include "pose/Pose.h"
@@ -38,6 +39,9 @@ class Clip {
     // Half a frame: how close a time must be to address a key.
     double keyTolerance() const { return 0.5 / framesPerSecond_; }
 
+    // The action's name in exported files (kept from an imported file);
+    // empty: `<part>_clip`.
+    std::string name;
     Interpolation interpolation = Interpolation::Linear;
     PlaybackMode mode = PlaybackMode::Hold;
 
