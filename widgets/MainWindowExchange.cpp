@@ -115,8 +115,8 @@ void MainWindow::exportDocument() {
     if (dialog.exec() != QDialog::Accepted)
         return;
     try {
-        auto result = model::exportDocument(*document, dialog.path().toStdString(),
-                                            dialog.options(), document->selection().part, true);
+        auto result =
+            model::exportDocument(*document, dialog.path().toStdString(), dialog.options(), true);
         // Animation ticked but nothing keyed: say why the file has no animation.
         const bool rigged = QFileInfo(dialog.path()).suffix().toLower() != QLatin1String("obj");
         bool keyed = false;

@@ -32,7 +32,7 @@ int runExport(const std::vector<std::string>& arguments) {
     const auto document = model::DocumentFile::load(QString::fromStdString(documentPath));
     const bool visibleOnly = !line.flag("--hidden");
     for (const QString& warning :
-         model::exportDocument(*document, *out, options, model::kNoPart, visibleOnly).warnings)
+         model::exportDocument(*document, *out, options, visibleOnly).warnings)
         std::fprintf(stderr, "rigmesh: warning: %s\n", warning.toStdString().c_str());
     int exported = 0;
     for (const model::PartNode& node : document->parts())

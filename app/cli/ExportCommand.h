@@ -1,7 +1,7 @@
 // `rigmesh export DOC.rigmesh -o OUT.(glb|gltf|fbx|dae|obj) [options]`:
 // converts a saved document headless through the studio's own export
 // (model/DocumentExport): every visible part at its placement and pose, the
-// keyed clip of the first part with keys.
+// keyed clip of every part with keys.
 #pragma once
 
 #include <string>

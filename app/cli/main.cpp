@@ -38,7 +38,7 @@ commands:
       Replays a recipe (a JSON list of the studio's commands: sketch, pose,
       key, ...; see resources/recipes/camel.json) on a new document, prints
       one line per step and writes the document: .rigmesh natively, the other
-      formats as for build, animated by the clip of the first part with keys.
+      formats as for build: one skinned mesh per part, each with its clip.
       A bad step stops with "step N (command): reason".
   import FILE -o PARTS.rigmesh
       Reads a mesh or rigged scene (.glb, .gltf, .fbx, .dae, .obj, .ply, ...)
@@ -48,8 +48,9 @@ commands:
   export DOC.rigmesh -o OUT.glb|.gltf|.fbx|.dae|.obj [--max-influences N]
                [--current-pose] [--no-animation] [--hidden] [--leaf-bones]
       Converts a saved document as the studio's File > Export does: every
-      visible part (--hidden: every part) at its placement, rigged, animated
-      by the clip of the first part with keys (--no-animation: none); an .obj
+      visible part (--hidden: every part) at its placement, each its own
+      skinned mesh named after it, animated by its own clip
+      (--no-animation: none); an .obj
       is the rest mesh, or each part's current pose with --current-pose.
       --max-influences and --leaf-bones as for build. A bad document exits 1 with the reason.
   example

@@ -36,8 +36,7 @@ Part poseAsRest(const PartNode& node) {
 }  // namespace
 
 DocumentExportResult exportDocument(const Document& document, const std::string& path,
-                                    const ExportOptions& options, PartId preferredAnimatedPart,
-                                    bool visibleOnly) {
+                                    const ExportOptions& options, bool visibleOnly) {
     DocumentExportResult result;
     std::vector<const PartNode*> nodes;
     for (const PartNode& node : document.parts())
@@ -52,27 +51,17 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
                             "\" is not rigged yet: export it as OBJ, or hide it and export the "
                             "visible parts");
 
-    // exportScene animates part 0 with the clip: the animated part goes first.
-    const PartNode* animated = nullptr;
-    for (const PartNode* node : nodes)
-        if (node->clip.keyCount() > 0 && (node->id == preferredAnimatedPart || !animated))
-            animated = node;
-    if (animated && options.animation) {
-        for (const PartNode* node : nodes)
-            if (node != animated && node->clip.keyCount() > 0)
-                result.warnings << QObject::tr(
-                                       "the keys of \"%1\" are not exported: one part's clip is")
-                                       .arg(node->name);
-    }
     // The current pose as the rest shape: OBJ poses its mesh itself; the
-    // rigged formats get parts whose rest is that pose (their clip would be
+    // rigged formats get parts whose rest is that pose (their clips would be
     // relative to the old rest, so none is written).
     const bool bakePose = !options.restPose && isRiggedFormat(exportFormatFromPath(path));
-    if (bakePose && animated && options.animation)
-        result.warnings
-            << QObject::tr(
-                   "the clip of \"%1\" is not exported: the current pose is the file's rest shape")
-                   .arg(animated->name);
+    if (bakePose && options.animation)
+        for (const PartNode* node : nodes)
+            if (node->clip.keyCount() > 0)
+                result.warnings << QObject::tr(
+                                       "the clip of \"%1\" is not exported: the current "
+                                       "pose is the file's rest shape")
+                                       .arg(node->name);
     std::vector<Part> baked;
     baked.reserve(nodes.size());
     auto exportPart = [&](const PartNode& node) {
@@ -84,14 +73,14 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
         }
         return part;
     };
+    // Every part with its own clip (issue 18 item 3), in document order.
     std::vector<ExportPart> parts;
-    if (animated)
-        parts.push_back(exportPart(*animated));
-    for (const PartNode* node : nodes)
-        if (node != animated)
-            parts.push_back(exportPart(*node));
-    const bool withClip = animated && options.animation && !bakePose;
-    exportScene(parts, withClip ? &animated->clip : nullptr, path, options);
+    for (const PartNode* node : nodes) {
+        parts.push_back(exportPart(*node));
+        if (!bakePose && node->clip.keyCount() > 0)
+            parts.back().clip = &node->clip;
+    }
+    exportScene(parts, nullptr, path, options);
     return result;
 }
 

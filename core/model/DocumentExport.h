@@ -1,7 +1,7 @@
 // Exports a document's parts through the engine's exporter (io/SceneExport):
-// every part at its placement and current pose; the clip of one part (the
-// preferred one if it has keys, else the first part with keys) animates it,
-// since one skeleton's animation is what the formats carry per file.
+// every part at its placement and current pose, each its own skinned mesh
+// animated by its own clip (issue 18 item 3; its bones share one armature
+// node, SceneExport.h).
 #pragma once
 
 #include <QStringList>
@@ -13,13 +13,11 @@
 namespace rigmesh::model {
 
 struct DocumentExportResult {
-    QStringList warnings;  // e.g. keys of other parts that were not exported
+    QStringList warnings;  // e.g. clips not written (the pose became the rest)
 };
 
 // Throws rigmesh::Error (no parts, unknown format, write failure).
 DocumentExportResult exportDocument(const Document& document, const std::string& path,
-                                    const ExportOptions& options = {},
-                                    PartId preferredAnimatedPart = kNoPart,
-                                    bool visibleOnly = false);
+                                    const ExportOptions& options = {}, bool visibleOnly = false);
 
 }  // namespace rigmesh::model

@@ -82,8 +82,8 @@ std::vector<PartNode> partNodesFromScene(ImportedScene scene, const QString& pat
         if (node.name.isEmpty() || (node.name.startsWith(u'<') && node.name.endsWith(u'>')))
             node.name = QFileInfo(path).completeBaseName();
         node.pose = restPoseOf(node);
-        if (scene.clip && scene.clipPart == static_cast<int>(i))
-            node.clip = *scene.clip;
+        if (scene.parts[i].clip)
+            node.clip = *scene.parts[i].clip;
         nodes.push_back(std::move(node));
     }
     return nodes;

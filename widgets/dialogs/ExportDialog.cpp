@@ -43,7 +43,7 @@ ExportDialog::ExportDialog(const QString& suggestedPath, QWidget* parent) : QDia
     influences_->setToolTip(
         tr("Bones per vertex; extra influences are cut and the rest renormalised"));
     currentPose_ = new QCheckBox(tr("Current pose instead of the rest pose"), this);
-    animation_ = new QCheckBox(tr("Animation (the selected part's keyed clip)"), this);
+    animation_ = new QCheckBox(tr("Animation (each part's keyed clip)"), this);
     animation_->setChecked(true);
     leafBones_ = new QCheckBox(tr("Add leaf bones (an end bone at each leaf's tail)"), this);
     leafBones_->setToolTip(

@@ -33,6 +33,16 @@ std::vector<std::string> uniquePartNames(const std::vector<ExportPart>& parts) {
     return names;
 }
 
+// `wanted`, or `wanted_2`, `wanted_3`, ...: the first not in `used`, which
+// then holds it.
+std::string uniqueName(const std::string& wanted, std::set<std::string>& used) {
+    std::string name = wanted;
+    for (int n = 2; used.contains(name); ++n)
+        name = wanted + "_" + std::to_string(n);
+    used.insert(name);
+    return name;
+}
+
 // Notes item 2: every node name unique. Kept bone names (an import's) may
 // meet a part's or another part's bone's: `_2`, `_3`, ... appended; an end
 // bone's name (`<bone>_end`) is taken too.
@@ -216,12 +226,18 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
     const int influences = effectiveInfluenceLimit(format, options.maxInfluences);
 
     // Notes items 1 and 7: identity root; meshes on child nodes; bones under
-    // `Armature`, a sibling of the mesh nodes (notes item 12).
+    // `Armature`, a sibling of the mesh nodes (notes item 12). One armature
+    // node per part would be issue 18 item 3, but Assimp 5.2.5's files then
+    // import wrongly in Blender 3.4.1 (measured on the camel: FBX leaves
+    // every other mesh unbound, COLLADA binds all meshes to the first
+    // armature and leaves the others empty, glTF still has one skin).
     scene.mRootNode = new aiNode("RootNode");
     std::vector<aiNode*> rootChildren, armatureChildren;
+    std::vector<aiAnimation*> animations;
     scene.mNumMeshes = static_cast<unsigned>(parts.size());
     scene.mMeshes = new aiMesh*[parts.size()];
     std::vector<ExportRig> rigs;
+    std::set<std::string> usedAnimationNames;
     for (std::size_t i = 0; i < parts.size(); ++i) {
         aiMesh* mesh = makeMesh(parts[i], names[i], format, options);
         scene.mMeshes[i] = mesh;
@@ -239,6 +255,12 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
         addBones(mesh, *parts[i].part, rigs.back(), influences, options.leafBones);
         for (aiNode* root : boneNodes(rigs.back(), options.leafBones))
             armatureChildren.push_back(root);
+        const Clip* partClip = parts[i].clip != nullptr ? parts[i].clip : (i == 0 ? clip : nullptr);
+        if (partClip != nullptr && options.animation && partClip->keyCount() > 0)
+            animations.push_back(makeAnimation(
+                *partClip, rigs.back(),
+                uniqueName(partClip->name.empty() ? names[i] + "_clip" : partClip->name,
+                           usedAnimationNames)));
     }
     if (rigged) {
         aiNode* armature = new aiNode("Armature");
@@ -250,11 +272,10 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
     scene.mNumMaterials = 1;
     scene.mMaterials = new aiMaterial* [1] { makeMaterial() };
 
-    if (rigged && clip != nullptr && options.animation && clip->keyCount() > 0) {
-        scene.mNumAnimations = 1;
-        scene.mAnimations = new aiAnimation* [1] {
-            makeAnimation(*clip, rigs[0], clip->name.empty() ? names[0] + "_clip" : clip->name)
-        };
+    if (!animations.empty()) {
+        scene.mNumAnimations = static_cast<unsigned>(animations.size());
+        scene.mAnimations = new aiAnimation*[animations.size()];
+        std::copy(animations.begin(), animations.end(), scene.mAnimations);
     }
     if (format == ExportFormat::Fbx) {
         // Notes item 10: FBX defaults to centimetres; 100 says metres.

@@ -4,15 +4,16 @@
 // Layout (the notes' items are in /work/shared/notes/assimp-blender-facts.md):
 // an identity root node; one node per part carrying its mesh (the part's
 // name); for rigged formats an `Armature` node beside them holding every
-// part's bones, one node per bone named `<part>_bone<id>`, placed at the
+// part's bones (one armature node per part is planned: AssimpSceneBuilder
+// says why not yet), one node per bone named after it or `<part>_bone<id>`, placed at the
 // bone's head with its +Y axis along the bone (ExportRig.h) and parented by
 // the bone hierarchy; optionally an end bone at each leaf's tail. Several parts are several skinned
 // meshes on that one hierarchy, each bound to its own bones (Assimp 5.2.5's glTF exporter writes a
 // single skin listing every bone; each mesh's weights use only its own part's bones, and
 // importScene sorts them out again). Nodes are in the bind pose; each part's `pose` is used only by
-// OBJ (restPose = false). The clip, if any, animates part 0's bones (one channel per bone node,
-// keys in seconds). Coordinates: our parts are y up; glTF is y up, metres, as are our FBX
-// (UnitScaleFactor 100 = metres) and COLLADA files.
+// OBJ (restPose = false). Each part's clip with keys is one animation of its bones (named after
+// the clip, else `<part>_clip`; one channel per bone node, keys in seconds). Coordinates: our parts
+// are y up; glTF is y up, metres, as are our FBX (UnitScaleFactor 100 = metres) and COLLADA files.
 #pragma once
 
 #include <string>
@@ -32,6 +33,9 @@ struct ExportPart {
     // Rigid (rotation, translation); baked into the written positions.
     Eigen::Affine3d placement = Eigen::Affine3d::Identity();
     std::string name;  // empty: the part's own name
+    // Its animation (written when it has keys and ExportOptions::animation);
+    // may be null.
+    const Clip* clip = nullptr;
 };
 
 struct ExportOptions {
@@ -48,7 +52,8 @@ struct ExportOptions {
     bool leafBones = false;
 };
 
-// Writes `parts` (and `clip`, animating part 0; may be null) to `path`, the
+// Writes `parts` to `path` (`clip`, may be null, animates part 0 when that
+// part has no clip of its own), the
 // format chosen by its extension: .glb, .gltf (+ .bin beside it), .fbx, .dae,
 // .obj (+ .mtl). Assimp exports into memory; every file is then written
 // beside its target with every write checked and renamed into place only when

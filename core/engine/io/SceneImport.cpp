@@ -185,6 +185,7 @@ ImportedScene importScene(const std::string& path) {
         isCollada(path) ? readColladaBoneTips(readText(path)) : std::map<std::string, Vec3>();
 
     ImportedScene result;
+    std::set<unsigned> claimed;  // animations given to a part
     for (const MeshInstance& instance : instances) {
         const aiMesh& mesh = *scene.mMeshes[instance.mesh];
         const Eigen::Affine3d global = meshToWorld(mesh, tree.restGlobal(instance.node), tree);
@@ -207,12 +208,16 @@ ImportedScene importScene(const std::string& path) {
                               "); rigging imported meshes comes in a later version";
         }
         result.parts.push_back(std::move(imported));
-        if (!result.clip && scene.mNumAnimations > 0 && !result.parts.back().needsRig) {
-            result.clip =
-                importClip(*scene.mAnimations[0], mesh, global, tree, result.parts.back());
-            if (result.clip) {
-                result.clip->name = actionName(scene.mAnimations[0]->mName.C_Str());
-                result.clipPart = static_cast<int>(result.parts.size()) - 1;
+        // Each animation goes to the first part whose bones it moves (a file
+        // of ours has one per animated part).
+        ImportedPart& part = result.parts.back();
+        for (unsigned a = 0; a < scene.mNumAnimations && !part.needsRig && !part.clip; ++a) {
+            if (claimed.contains(a))
+                continue;
+            part.clip = importClip(*scene.mAnimations[a], mesh, global, tree, part);
+            if (part.clip) {
+                part.clip->name = actionName(scene.mAnimations[a]->mName.C_Str());
+                claimed.insert(a);
             }
         }
     }

@@ -21,8 +21,8 @@
 // extra; else, as Blender guesses, along the bone node's +Y as long as its
 // parent (a tenth of the mesh's size for a lone bone). End bones are not
 // bones of the part. The bind pose comes from the bones'
-// offset (inverse bind) matrices. The first animation becomes a Clip of the part whose bones it
-// moves. A mesh without bones imports with an empty skeleton and
+// offset (inverse bind) matrices. Each animation becomes the Clip of the first part whose
+// bones it moves (one per part). A mesh without bones imports with an empty skeleton and
 // needsRig = true: it can be posed once rigged, which comes later.
 #pragma once
 
@@ -40,6 +40,8 @@ struct ImportedPart {
     // Per bone index (part.skeleton.bones() order): the bone's node name.
     std::vector<std::string> boneNames;
     bool needsRig = false;  // no usable skeleton or weights
+    // The first animation of the file that moves this part's bones.
+    std::optional<Clip> clip;
 };
 
 struct ImportedScene {
@@ -47,9 +49,6 @@ struct ImportedScene {
     // True if any part needs a rig; `message` then says which and why.
     bool needsRig = false;
     std::string message;
-    // The file's first animation, for parts[clipPart].
-    std::optional<Clip> clip;
-    int clipPart = -1;
 };
 
 // Throws Error naming the file and the reason when it is missing, not a

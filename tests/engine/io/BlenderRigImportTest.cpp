@@ -47,8 +47,8 @@ void expectCapsuleRig(const ImportedScene& scene, const std::string& what) {
     EXPECT_NEAR(top - bottom, 3.0, 1e-3) << what << ": the capsule's height";
     EXPECT_NEAR(bottom, 0.0, 1e-3) << what << ": the capsule stands on the origin";
 
-    ASSERT_TRUE(scene.clip.has_value()) << what;
-    EXPECT_NEAR(scene.clip->duration(), 23.0 / 24.0, 1e-3) << what;
+    ASSERT_TRUE(scene.parts[0].clip.has_value()) << what;
+    EXPECT_NEAR(scene.parts[0].clip->duration(), 23.0 / 24.0, 1e-3) << what;
     // Middle bends 40 degrees half way (frame 12 of 1..24).
     JointId middleHead = kNoJoint;
     for (const Bone& bone : part.skeleton.bones())
@@ -56,7 +56,8 @@ void expectCapsuleRig(const ImportedScene& scene, const std::string& what) {
             middleHead = bone.head;
     // Blender's glTF and COLLADA exporters put frame 1 at 1/24 s, its FBX
     // exporter at 0 s: the file's times are kept.
-    const Pose bent = scene.clip->evaluate(scene.clip->keyTimes().front() + 11.0 / 24.0);
+    const Pose bent =
+        scene.parts[0].clip->evaluate(scene.parts[0].clip->keyTimes().front() + 11.0 / 24.0);
     const double angle = 2 * std::acos(std::min(1.0, std::abs(bent.rotation(middleHead).w())));
     EXPECT_NEAR(angle * 180 / M_PI, 40.0, 0.5) << what;
 }
@@ -67,7 +68,7 @@ TEST_P(BlenderRig, KeepsBoneNamesSizeAndAction) {
     const ImportedScene scene = importScene(capsule(GetParam()));
     expectCapsuleRig(scene, GetParam());
     if (GetParam() != ".dae") {  // Blender's COLLADA exporter names animations after objects
-        EXPECT_EQ(scene.clip->name, "Wave");
+        EXPECT_EQ(scene.parts[0].clip->name, "Wave");
     }
 }
 
@@ -77,12 +78,13 @@ TEST_P(BlenderRig, SurvivesOurExportAndImportInTheSameFormat) {
     const std::string path = (iotest::scratchFolder() / ("capsule" + GetParam())).string();
     ExportPart item;
     item.part = &scene.parts[0].part;
-    exportScene({item}, scene.clip ? &*scene.clip : nullptr, path);
+    item.clip = scene.parts[0].clip ? &*scene.parts[0].clip : nullptr;
+    exportScene({item}, nullptr, path);
     const ImportedScene back = importScene(path);
     expectCapsuleRig(back, GetParam() + " exported again");
     // Assimp's COLLADA writer and reader do not keep an animation's name.
-    if (scene.clip && back.clip && GetParam() != ".dae") {
-        EXPECT_EQ(back.clip->name, scene.clip->name);
+    if (scene.parts[0].clip && back.parts[0].clip && GetParam() != ".dae") {
+        EXPECT_EQ(back.parts[0].clip->name, scene.parts[0].clip->name);
     }
 }
 

@@ -91,7 +91,7 @@ TEST(SceneImport, AStaticClosedMeshFromElsewhereNeedsARig) {
     EXPECT_TRUE(scene.needsRig);
     EXPECT_EQ(scene.parts[0].part.mesh.faceCount(), makeIcosphere(1, 2.0).faceCount());
     EXPECT_TRUE(scene.parts[0].part.weights.perVertex.empty());
-    EXPECT_FALSE(scene.clip.has_value());
+    EXPECT_FALSE(scene.parts[0].clip.has_value());
 }
 
 TEST(SceneImport, MissingBrokenAndUnsupportedFilesGiveClearErrors) {
@@ -148,26 +148,40 @@ TEST(SceneExport, BadPartsAreClearErrors) {
         "");
 }
 
-TEST(SceneExport, SeveralPartsAreSeveralSkinnedMeshesOnOneArmature) {
+TEST(SceneExport, EachPartIsItsOwnSkinnedMeshWithItsOwnClip) {
     const Part& tube = iotest::sharedPart("tube");
     const Part& branch = iotest::sharedPart("y_branch");
     ExportPart a = item(tube), b = item(branch), c = item(tube);
     b.placement = Eigen::Translation3d(3, 0, 0) * Eigen::AngleAxisd(0.5, Vec3::UnitZ());
-    const fs::path path = iotest::scratchFolder() / "three.glb";
-    const Clip clip = poseDemoClip(tube);
-    exportScene({a, b, c}, &clip, path.string());
-    const ImportedScene scene = importScene(path.string());
-    ASSERT_EQ(scene.parts.size(), 3u);
-    EXPECT_FALSE(scene.needsRig) << scene.message;
-    EXPECT_EQ(scene.clipPart, 0);
-    EXPECT_EQ(scene.parts[0].part.skeleton.boneCount(), tube.skeleton.boneCount());
-    EXPECT_EQ(scene.parts[1].part.skeleton.boneCount(), branch.skeleton.boneCount());
-    // Unique names: the second tube's bones are tube_2_bone<id>.
-    EXPECT_EQ(scene.parts[2].boneNames.at(0).rfind("tube_2_bone", 0), 0u);
-    // The placement is baked into the second part's joints.
-    const Vec3 root = branch.skeleton.joint(branch.skeleton.root()).position;
-    const Skeleton& placed = scene.parts[1].part.skeleton;
-    EXPECT_LE((placed.joint(placed.root()).position - b.placement * root).norm(), 1e-5);
+    Clip tubeClip = poseDemoClip(tube), branchClip = poseDemoClip(branch);
+    branchClip.name = "wave";
+    a.clip = &tubeClip;
+    b.clip = &branchClip;
+    for (const char* extension : {".glb", ".fbx", ".dae"}) {
+        const fs::path path = iotest::scratchFolder() / (std::string("three") + extension);
+        exportScene({a, b, c}, nullptr, path.string());
+        const ImportedScene scene = importScene(path.string());
+        ASSERT_EQ(scene.parts.size(), 3u) << extension;
+        EXPECT_FALSE(scene.needsRig) << scene.message;
+        EXPECT_EQ(scene.parts[0].part.skeleton.boneCount(), tube.skeleton.boneCount());
+        EXPECT_EQ(scene.parts[1].part.skeleton.boneCount(), branch.skeleton.boneCount());
+        // Unique names: the second tube's bones are tube_2_bone<id>.
+        EXPECT_EQ(scene.parts[2].boneNames.at(0).rfind("tube_2_bone", 0), 0u);
+        // Each animated part has its own clip, with its name; the third none.
+        ASSERT_TRUE(scene.parts[0].clip.has_value()) << extension;
+        ASSERT_TRUE(scene.parts[1].clip.has_value()) << extension;
+        EXPECT_FALSE(scene.parts[2].clip.has_value()) << extension;
+        EXPECT_EQ(scene.parts[0].clip->keyCount(), tubeClip.keyCount()) << extension;
+        EXPECT_EQ(scene.parts[1].clip->keyCount(), branchClip.keyCount()) << extension;
+        if (std::string(extension) != ".dae") {  // Assimp's COLLADA pair drops names
+            EXPECT_EQ(scene.parts[0].clip->name, "tube_clip");
+            EXPECT_EQ(scene.parts[1].clip->name, "wave");
+        }
+        // The placement is baked into the second part's joints.
+        const Vec3 root = branch.skeleton.joint(branch.skeleton.root()).position;
+        const Skeleton& placed = scene.parts[1].part.skeleton;
+        EXPECT_LE((placed.joint(placed.root()).position - b.placement * root).norm(), 1e-5);
+    }
 }
 
 }  // namespace
