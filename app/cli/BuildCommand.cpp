@@ -21,6 +21,7 @@
 #include "io/RigJson.h"
 #include "io/SceneExport.h"
 #include "mesh/MeshWriter.h"
+#include "part/PartDetail.h"
 #include "pipeline/SketchToPart.h"
 #include "sketch/Sketch.h"
 
@@ -81,7 +82,8 @@ DebugOverlay skeletonOverlay(const Skeleton& skeleton) {
 
 int runBuild(const std::vector<std::string>& arguments) {
     CommandLine line(arguments,
-                     {"-o", "--stats", "--debug-svg", "--edge-length", "--rig", "--max-influences"},
+                     {"-o", "--stats", "--debug-svg", "--edge-length", "--rig", "--max-influences",
+                      "--subdivide", "--decimate"},
                      {"--no-smoothing", "--plain-dp", "--pose-demo", "--leaf-bones"});
     if (line.positional().size() != 1)
         throw Error("build needs exactly one sketch file (.json or .svg), or 'example'");
@@ -106,14 +108,25 @@ int runBuild(const std::vector<std::string>& arguments) {
             .count();
     const nlohmann::json statistics =
         buildStatistics(sketch.name, result, report, checksMilliseconds);
+    // At a detail level, every file (mesh, rig JSON) describes the written
+    // surface, not the built one.
+    std::optional<Part> detailed;
+    ExportOptions writeSettings = exportSettings;
+    if (exportSettings.subdivisionLevels > 0 || exportSettings.decimateToFaces > 0) {
+        detailed = subdividedPart(part, exportSettings.subdivisionLevels);
+        if (exportSettings.decimateToFaces > 0)
+            detailed = decimatedPart(*detailed, exportSettings.decimateToFaces);
+        writeSettings.subdivisionLevels = writeSettings.decimateToFaces = 0;
+    }
+    const Part& written = detailed ? *detailed : part;
     if (auto out = line.value("-o")) {
         std::optional<Clip> clip;
         if (line.flag("--pose-demo"))
-            clip = poseDemoClip(part);
-        writeOutput(part, *out, exportSettings, clip);
+            clip = poseDemoClip(written);
+        writeOutput(written, *out, writeSettings, clip);
     }
     if (auto rig = line.value("--rig"))
-        writeTextFile(*rig, rigToJson(part));
+        writeTextFile(*rig, rigToJson(written));
     if (auto svg = line.value("--debug-svg"))
         writeTextFile(*svg, debugSvg(result.surface, {skeletonOverlay(part.skeleton)}));
     if (auto stats = line.value("--stats"))

@@ -25,6 +25,16 @@ ExportOptions exportOptions(const CommandLine& line) {
         options.maxInfluences = static_cast<int>(*influences);
     }
     options.leafBones = line.flag("--leaf-bones");
+    if (auto levels = line.number("--subdivide")) {
+        if (*levels < 0 || *levels > 4 || *levels != std::floor(*levels))
+            throw Error("--subdivide must be a whole number from 0 to 4");
+        options.subdivisionLevels = static_cast<int>(*levels);
+    }
+    if (auto faces = line.number("--decimate")) {
+        if (*faces < 4 || *faces > 1e8 || *faces != std::floor(*faces))
+            throw Error("--decimate must be a whole number of faces from 4 to 100000000");
+        options.decimateToFaces = static_cast<int>(*faces);
+    }
     return options;
 }
 

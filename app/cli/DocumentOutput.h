@@ -15,7 +15,8 @@ class QCoreApplication;
 namespace rigmesh::cli {
 
 // --max-influences N (a whole number >= 0; 0 = all the format allows);
-// --leaf-bones (an end bone at each leaf's tail).
+// --leaf-bones (an end bone at each leaf's tail); --subdivide N (Loop, 0..4)
+// and --decimate FACES (quadric, per part).
 ExportOptions exportOptions(const CommandLine& line);
 
 // True for a path ending in .rigmesh (any case).

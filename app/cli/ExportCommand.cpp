@@ -14,7 +14,7 @@
 namespace rigmesh::cli {
 
 int runExport(const std::vector<std::string>& arguments) {
-    CommandLine line(arguments, {"-o", "--max-influences"},
+    CommandLine line(arguments, {"-o", "--max-influences", "--subdivide", "--decimate"},
                      {"--current-pose", "--no-animation", "--hidden", "--leaf-bones"});
     if (line.positional().size() != 1)
         throw Error("export needs exactly one document (.rigmesh)");

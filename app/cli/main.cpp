@@ -19,7 +19,8 @@ const char* kUsage = R"(usage: rigmesh COMMAND [ARGS]
 
 commands:
   build SKETCH [-o OUT.glb|.gltf|.fbx|.dae|.obj|.ply|.off] [--max-influences N]
-               [--leaf-bones] [--pose-demo] [--rig FILE.json] [--stats FILE.json]
+               [--leaf-bones] [--subdivide N] [--decimate FACES]
+               [--pose-demo] [--rig FILE.json] [--stats FILE.json]
                [--debug-svg FILE.svg] [--edge-length L] [--no-smoothing] [--plain-dp]
       Turns a sketched silhouette (.json or .svg) into a rigged part: a closed
       surface, a skeleton and skin weights, and prints its figures. SKETCH may
@@ -30,7 +31,11 @@ commands:
       glTF keeps at most 4). Each bone node's +Y axis runs along its bone, as
       Blender expects; --leaf-bones adds an end bone `<bone>_end` at each leaf
       bone's tail (like Blender's "Add Leaf Bones"), so that every importer
-      also knows the leaves' lengths. --pose-demo adds a 3-key animation: rest at 0 s,
+      also knows the leaves' lengths. --subdivide N (0-4) refines the written
+      surface by N rounds of Loop subdivision, --decimate FACES coarsens it
+      to at most FACES triangles (quadric error, every kept vertex an
+      original one); skin weights are carried, the rig is unchanged, and
+      the --rig file describes the written surface. --pose-demo adds a 3-key animation: rest at 0 s,
       an IK bend of the end joint at 0.5 s, rest at 1 s. --rig writes joints,
       bones and weights as JSON; --plain-dp uses plain Douglas-Peucker
       instead of the paper's CDP.
@@ -47,12 +52,13 @@ commands:
       limits, so a broken file cannot take them down.
   export DOC.rigmesh -o OUT.glb|.gltf|.fbx|.dae|.obj [--max-influences N]
                [--current-pose] [--no-animation] [--hidden] [--leaf-bones]
+               [--subdivide N] [--decimate FACES]
       Converts a saved document as the studio's File > Export does: every
       visible part (--hidden: every part) at its placement, each its own
       skinned mesh named after it, animated by its own clip
       (--no-animation: none); an .obj
       is the rest mesh, or each part's current pose with --current-pose.
-      --max-influences and --leaf-bones as for build. A bad document exits 1 with the reason.
+      --max-influences, --leaf-bones, --subdivide and --decimate as for build. A bad document exits 1 with the reason.
   example
       Builds the embedded example sketch into a rigged part and prints its figures.
   version

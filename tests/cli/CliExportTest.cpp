@@ -108,6 +108,29 @@ TEST(CliExport, OptionsReachTheExport) {
         << bad.err;
 }
 
+TEST(CliExport, DetailLevelsReachTheExportAndBadOnesAreRefused) {
+    const fs::path plain = scratch("plain.glb"), finer = scratch("finer.glb");
+    ASSERT_EQ(runCli("export " + quoted(savedDocument()) + " -o " + quoted(plain)).exitCode, 0);
+    const auto result = runCli("export " + quoted(savedDocument()) + " -o " + quoted(finer) +
+                               " --subdivide 1 --leaf-bones");
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    const json before = glbJson(plain), after = glbJson(finer);
+    const auto count = [](const json& gltf) {
+        return gltf["accessors"][gltf["meshes"][0]["primitives"][0]["attributes"]["POSITION"]
+                                     .get<int>()]["count"]
+            .get<int>();
+    };
+    EXPECT_GT(count(after), 3 * count(before));
+    EXPECT_GT(after["nodes"].size(), before["nodes"].size());  // the end bones
+
+    for (const char* option : {" --subdivide 5", " --decimate 2", " --decimate 10.5"}) {
+        const auto bad =
+            runCli("export " + quoted(savedDocument()) + " -o " + quoted(finer) + option);
+        EXPECT_EQ(bad.exitCode, 1) << option;
+        EXPECT_NE(bad.err.find("must be a whole number"), std::string::npos) << bad.err;
+    }
+}
+
 void expectBadDocument(const std::string& bytes, const std::string& reason) {
     const fs::path document = scratch("bad.rigmesh");
     writeFile(document, bytes);

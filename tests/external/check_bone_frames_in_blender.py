@@ -1,7 +1,8 @@
 """Imports one RigMesh export into an empty Blender scene with the importer's
 default options and checks what a rigger sees of the armature (issue 18
 item 1): every bone's head on our head, its tail within 1 degree of our
-head-to-tail direction, and its length within 1% of ours; no stray empties.
+head-to-tail direction, and its length within 1% of ours; no stray empties;
+every vertex weighted (also after --subdivide and --decimate, item 4).
 
 usage: blender -b --factory-startup --python-exit-code 1 \
            --python check_bone_frames_in_blender.py -- EXPORT RIG_JSON [--leaf-bones]
@@ -104,6 +105,12 @@ def main(arguments):
           f"largest error {worst_head[0]:.2g} of the model's size ({worst_head[1] or '-'})")
     check("tail directions", worst_angle[0] <= 1.0,
           f"largest angle {worst_angle[0]:.3g} degrees ({worst_angle[1] or '-'})")
+    meshes = [o for o in objects if o.type == "MESH"]
+    unweighted = sum(1 for mesh in meshes for v in mesh.data.vertices
+                     if not any(g.weight > 0 for g in v.groups))
+    total = sum(len(mesh.data.vertices) for mesh in meshes)
+    check("every vertex weighted", total > 0 and unweighted == 0,
+          f"{unweighted} of {total} vertices without a bone weight")
     check("lengths" + ("" if check_leaf_lengths else " (leaves: Blender guesses)"),
           worst_length[0] <= 0.01,
           f"largest error {100 * worst_length[0]:.3g}% ({worst_length[1] or '-'})")

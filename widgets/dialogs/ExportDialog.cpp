@@ -49,10 +49,26 @@ ExportDialog::ExportDialog(const QString& suggestedPath, QWidget* parent) : QDia
     leafBones_->setToolTip(
         tr("Like Blender's FBX option: importers then also know how long "
            "each leaf bone is"));
+    subdivide_ = new QSpinBox(this);
+    subdivide_->setRange(0, 4);
+    subdivide_->setSpecialValueText(tr("none"));
+    subdivide_->setToolTip(
+        tr("Rounds of Loop subdivision: each makes four triangles of one; "
+           "skin weights are carried"));
+    decimate_ = new QSpinBox(this);
+    decimate_->setRange(0, 10'000'000);
+    decimate_->setSingleStep(500);
+    decimate_->setSpecialValueText(tr("keep all"));
+    decimate_->setSuffix(tr(" faces"));
+    decimate_->setToolTip(
+        tr("At most this many triangles per part (quadric error); every kept "
+           "vertex keeps its weights"));
     auto* form = new QFormLayout(this);
     form->addRow(tr("File"), pathRow);
     form->addRow(tr("Format"), format_);
     form->addRow(tr("Influences"), influences_);
+    form->addRow(tr("Subdivide"), subdivide_);
+    form->addRow(tr("Decimate to"), decimate_);
     form->addRow(QString(), currentPose_);
     form->addRow(QString(), animation_);
     form->addRow(QString(), leafBones_);
@@ -101,6 +117,8 @@ ExportOptions ExportDialog::options() const {
     options.restPose = !currentPose_->isChecked();
     options.animation = animation_->isChecked();
     options.leafBones = leafBones_->isChecked();
+    options.subdivisionLevels = subdivide_->value();
+    options.decimateToFaces = decimate_->value();
     return options;
 }
 

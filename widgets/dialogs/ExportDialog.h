@@ -31,6 +31,8 @@ class ExportDialog : public QDialog {
     QCheckBox* currentPose_;
     QCheckBox* animation_;
     QCheckBox* leafBones_;
+    QSpinBox* subdivide_;
+    QSpinBox* decimate_;
 };
 
 }  // namespace rigmesh::widgets

@@ -22,6 +22,7 @@
 #include "io/FiniteScene.h"
 #include "io/GltfBuffers.h"
 #include "io/GltfSceneRoots.h"
+#include "part/PartDetail.h"
 
 namespace rigmesh {
 namespace {
@@ -151,13 +152,34 @@ void writeObj(const ExportedFiles& files, const fs::path& target) {
     stagedObj.commit();
 }
 
+// The parts at the options' detail level (held in `detailed`), or `parts`.
+std::vector<ExportPart> withDetailLevel(const std::vector<ExportPart>& parts,
+                                        const ExportOptions& options, std::vector<Part>& detailed) {
+    if (options.subdivisionLevels == 0 && options.decimateToFaces == 0)
+        return parts;
+    std::vector<ExportPart> items = parts;
+    detailed.reserve(parts.size());
+    for (ExportPart& item : items) {
+        if (item.part == nullptr)
+            continue;
+        Part part = subdividedPart(*item.part, options.subdivisionLevels);
+        if (options.decimateToFaces > 0)
+            part = decimatedPart(part, options.decimateToFaces);
+        detailed.push_back(std::move(part));
+        item.part = &detailed.back();
+    }
+    return items;
+}
+
 }  // namespace
 
 void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const std::string& path,
                  const ExportOptions& options) {
     const ExportFormat format = exportFormatFromPath(path);
     aiScene scene;
-    const std::vector<ExportRig> rigs = buildAssimpScene(scene, parts, clip, format, options);
+    std::vector<Part> detailed;
+    const std::vector<ExportPart> items = withDetailLevel(parts, options, detailed);
+    const std::vector<ExportRig> rigs = buildAssimpScene(scene, items, clip, format, options);
     checkSceneIsFinite(scene);
     const fs::path target(path);
     checkReplaceable(target);

@@ -50,6 +50,11 @@ struct ExportOptions {
     // An end bone `<bone>_end` at each leaf bone's tail (Blender's FBX "Add
     // Leaf Bones"), so that importers know the leaves' lengths too.
     bool leafBones = false;
+    // Detail levels (issue 18 item 4, part/PartDetail.h): Loop subdivision
+    // rounds (0..4), then decimation to at most this many faces per part
+    // (0: none). Skin weights are carried, the rig is unchanged.
+    int subdivisionLevels = 0;
+    int decimateToFaces = 0;
 };
 
 // Writes `parts` to `path` (`clip`, may be null, animates part 0 when that
