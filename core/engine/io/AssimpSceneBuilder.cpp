@@ -225,12 +225,15 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
     usedNames.insert({"RootNode", "Armature"});
     const int influences = effectiveInfluenceLimit(format, options.maxInfluences);
 
-    // Notes items 1 and 7: identity root; meshes on child nodes; bones under
-    // `Armature`, a sibling of the mesh nodes (notes item 12). One armature
-    // node per part would be issue 18 item 3, but Assimp 5.2.5's files then
-    // import wrongly in Blender 3.4.1 (measured on the camel: FBX leaves
-    // every other mesh unbound, COLLADA binds all meshes to the first
-    // armature and leaves the others empty, glTF still has one skin).
+    // Notes items 1 and 7: identity root; meshes on child nodes. Issue 18
+    // item 3, one armature and mesh per part: in FBX each part's armature
+    // node `<part>_armature` holds its mesh node and its root bones, as
+    // Blender's own FBX files do (measured with Blender 3.4.1 on the camel:
+    // with the mesh nodes beside the armatures, every other mesh came in
+    // unbound). COLLADA and glTF keep every bone under one `Armature`
+    // beside the mesh nodes (notes item 12): Blender's COLLADA importer
+    // binds every mesh to the first armature and leaves the others empty,
+    // and Assimp writes one glTF skin for all meshes.
     scene.mRootNode = new aiNode("RootNode");
     std::vector<aiNode*> rootChildren, armatureChildren;
     std::vector<aiAnimation*> animations;
@@ -253,8 +256,16 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
                                      gltf ? BoneAxes::GltfRootLeavesMinusZ : BoneAxes::PlusY));
         makeBoneNamesUnique(rigs.back(), usedNames);
         addBones(mesh, *parts[i].part, rigs.back(), influences, options.leafBones);
-        for (aiNode* root : boneNodes(rigs.back(), options.leafBones))
-            armatureChildren.push_back(root);
+        std::vector<aiNode*> bones = boneNodes(rigs.back(), options.leafBones);
+        if (format == ExportFormat::Fbx) {
+            rootChildren.pop_back();  // the mesh node goes into its armature
+            bones.insert(bones.begin(), meshNode);
+            aiNode* armature = new aiNode(uniqueName(names[i] + "_armature", usedNames));
+            setChildren(armature, bones);
+            rootChildren.push_back(armature);
+        } else {
+            armatureChildren.insert(armatureChildren.end(), bones.begin(), bones.end());
+        }
         const Clip* partClip = parts[i].clip != nullptr ? parts[i].clip : (i == 0 ? clip : nullptr);
         if (partClip != nullptr && options.animation && partClip->keyCount() > 0)
             animations.push_back(makeAnimation(
@@ -262,7 +273,7 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
                 uniqueName(partClip->name.empty() ? names[i] + "_clip" : partClip->name,
                            usedAnimationNames)));
     }
-    if (rigged) {
+    if (!armatureChildren.empty()) {
         aiNode* armature = new aiNode("Armature");
         setChildren(armature, armatureChildren);
         rootChildren.push_back(armature);

@@ -3,9 +3,11 @@
 //
 // Layout (the notes' items are in /work/shared/notes/assimp-blender-facts.md):
 // an identity root node; one node per part carrying its mesh (the part's
-// name); for rigged formats an `Armature` node beside them holding every
-// part's bones (one armature node per part is planned: AssimpSceneBuilder
-// says why not yet), one node per bone named after it or `<part>_bone<id>`, placed at the
+// name); for rigged formats the bones: in FBX under one armature node per
+// part, `<part>_armature`, which also holds the part's mesh node; in glTF
+// and COLLADA under one `Armature` node beside the mesh nodes (Blender's
+// importers of those make one armature anyway: AssimpSceneBuilder.cpp). One
+// node per bone named after it or `<part>_bone<id>`, placed at the
 // bone's head with its +Y axis along the bone (ExportRig.h) and parented by
 // the bone hierarchy; optionally an end bone at each leaf's tail. Several parts are several skinned
 // meshes on that one hierarchy, each bound to its own bones (Assimp 5.2.5's glTF exporter writes a

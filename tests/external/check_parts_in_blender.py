@@ -1,0 +1,55 @@
+"""Opens a several-part RigMesh export with Blender's default importer and
+checks that every part arrives (issue 18 item 3): a mesh object named after
+the part, bound (Armature modifier) to an armature with bones. In FBX each
+part has its own armature `<part>_armature`; Blender's COLLADA and glTF
+importers make one armature for all (see AssimpSceneBuilder.cpp).
+
+usage: blender -b --factory-startup --python-exit-code 1 \
+           --python check_parts_in_blender.py -- FILE PART...
+Exits 1 if a check failed, 2 on bad arguments.
+"""
+
+import os
+import sys
+
+try:
+    import numpy
+except ImportError:
+    print("check_parts_in_blender: NumPy is missing in Blender's Python; "
+          "install python3-numpy (scripts/setup.sh)")
+    sys.exit(1)
+numpy.bool = bool  # Blender 3.4.1's glTF importer uses np.bool
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_files  # noqa: E402
+import bpy  # noqa: E402
+
+
+def main(arguments):
+    if len(arguments) < 2:
+        print(__doc__)
+        return 2
+    path, parts = arguments[0], arguments[1:]
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    extension = blender_files.import_file(path)
+    objects = bpy.context.scene.objects
+    failures = 0
+    print(f"check_parts_in_blender: {os.path.basename(path)}")
+    for part in parts:
+        mesh = objects.get(part)
+        modifiers = [m for m in mesh.modifiers if m.type == "ARMATURE"] if mesh else []
+        armature = modifiers[0].object if modifiers else None
+        ok = mesh is not None and mesh.type == "MESH" and armature is not None and \
+            len(armature.data.bones) > 0
+        if ok and extension == ".fbx":
+            ok = armature.name == part + "_armature" and mesh.parent == armature
+        detail = (f"bound to {armature.name} ({len(armature.data.bones)} bones)" if armature
+                  else "missing or unbound")
+        print(f"  [{'PASS' if ok else 'FAIL'}] part {part}: {detail}")
+        failures += 0 if ok else 1
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    separator = sys.argv.index("--") if "--" in sys.argv else len(sys.argv)
+    sys.exit(main(sys.argv[separator + 1:]))
