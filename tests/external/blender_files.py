@@ -2,8 +2,16 @@
 each importer's default options, and our coordinates in Blender's world."""
 
 import os
+import sys
 
-from mathutils import Vector
+try:
+    import numpy
+except ImportError:  # Debian's blender does not pull it in; the importers need it
+    print("NumPy is missing in Blender's Python; install python3-numpy (scripts/setup.sh)")
+    sys.exit(1)
+numpy.bool = bool  # Blender 3.4.1's glTF add-on uses np.bool, which NumPy 1.24 removed
+
+from mathutils import Vector  # noqa: E402
 
 
 def to_blender(point, scale=1.0):

@@ -22,14 +22,6 @@ import os
 import re
 import sys
 
-try:
-    import numpy
-except ImportError:
-    print("check_bone_frames_in_blender: NumPy is missing in Blender's Python; "
-          "install python3-numpy (scripts/setup.sh)")
-    sys.exit(1)
-numpy.bool = bool  # Blender 3.4.1's glTF importer uses np.bool (NumPy 1.24 removed it)
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import blender_files  # noqa: E402
 import bpy  # noqa: E402

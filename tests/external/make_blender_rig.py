@@ -17,13 +17,8 @@ import math
 import os
 import sys
 
-try:
-    import numpy
-except ImportError:
-    print("make_blender_rig: NumPy is missing in Blender's Python; install python3-numpy")
-    sys.exit(1)
-numpy.bool = bool  # Blender 3.4.1's glTF exporter uses np.bool
-
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_files  # noqa: E402, F401  (NumPy for the glTF exporter)
 import bpy  # noqa: E402
 
 BONES = [("Lower", 0.0, 1.0), ("Middle", 1.0, 2.0), ("Upper", 2.0, 3.0)]
