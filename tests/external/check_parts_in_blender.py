@@ -1,8 +1,8 @@
 """Opens a several-part RigMesh export with Blender's default importer and
 checks that every part arrives (issue 18 item 3): a mesh object named after
-the part, bound (Armature modifier) to an armature with bones. In FBX each
-part has its own armature `<part>_armature`; Blender's COLLADA and glTF
-importers make one armature for all (see AssimpSceneBuilder.cpp).
+the part, bound (Armature modifier) to an armature with bones. In glTF and
+FBX each part has its own armature `<part>_armature`; Blender's COLLADA
+importer makes one armature for all (see AssimpSceneBuilder.cpp).
 
 usage: blender -b --factory-startup --python-exit-code 1 \
            --python check_parts_in_blender.py -- FILE PART...
@@ -33,7 +33,7 @@ def main(arguments):
         armature = modifiers[0].object if modifiers else None
         ok = mesh is not None and mesh.type == "MESH" and armature is not None and \
             len(armature.data.bones) > 0
-        if ok and extension == ".fbx":
+        if ok and extension != ".dae":
             ok = armature.name == part + "_armature" and mesh.parent == armature
         detail = (f"bound to {armature.name} ({len(armature.data.bones)} bones)" if armature
                   else "missing or unbound")

@@ -226,14 +226,15 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
     const int influences = effectiveInfluenceLimit(format, options.maxInfluences);
 
     // Notes items 1 and 7: identity root; meshes on child nodes. Issue 18
-    // item 3, one armature and mesh per part: in FBX each part's armature
-    // node `<part>_armature` holds its mesh node and its root bones, as
-    // Blender's own FBX files do (measured with Blender 3.4.1 on the camel:
-    // with the mesh nodes beside the armatures, every other mesh came in
-    // unbound). COLLADA and glTF keep every bone under one `Armature`
-    // beside the mesh nodes (notes item 12): Blender's COLLADA importer
-    // binds every mesh to the first armature and leaves the others empty,
-    // and Assimp writes one glTF skin for all meshes.
+    // item 3, one armature and mesh per part: each part's root bones under
+    // its own node `<part>_armature`. In FBX that node also holds the part's
+    // mesh node, as Blender's own FBX files do (measured with Blender 3.4.1
+    // on the camel: with the mesh nodes beside the armatures, every other
+    // mesh came in unbound); in glTF the mesh node stays a scene root and
+    // GltfSkins.h gives each mesh its own skin. COLLADA keeps every bone
+    // under one `Armature` beside the mesh nodes (notes item 12): Blender's
+    // COLLADA importer binds every mesh to the first armature anyway and
+    // leaves the others empty.
     scene.mRootNode = new aiNode("RootNode");
     std::vector<aiNode*> rootChildren, armatureChildren;
     std::vector<aiAnimation*> animations;
@@ -257,9 +258,11 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
         makeBoneNamesUnique(rigs.back(), usedNames);
         addBones(mesh, *parts[i].part, rigs.back(), influences, options.leafBones);
         std::vector<aiNode*> bones = boneNodes(rigs.back(), options.leafBones);
-        if (format == ExportFormat::Fbx) {
-            rootChildren.pop_back();  // the mesh node goes into its armature
-            bones.insert(bones.begin(), meshNode);
+        if (format != ExportFormat::Collada) {
+            if (format == ExportFormat::Fbx) {  // the mesh node goes into its armature
+                rootChildren.pop_back();
+                bones.insert(bones.begin(), meshNode);
+            }
             aiNode* armature = new aiNode(uniqueName(names[i] + "_armature", usedNames));
             setChildren(armature, bones);
             rootChildren.push_back(armature);

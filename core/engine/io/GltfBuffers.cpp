@@ -82,6 +82,42 @@ std::string glbWithJson(const std::string& glb, const std::string& json) {
     return out;
 }
 
+GlbChunks splitGlb(const std::string& glb) {
+    const std::size_t jsonLength = checkedJsonLength(glb);
+    GlbChunks chunks;
+    chunks.json = glb.substr(20, jsonLength);
+    const std::size_t binHeader = 20 + jsonLength;
+    if (binHeader == glb.size())
+        return chunks;
+    if (glb.size() - binHeader < 8 || readU32(glb, binHeader + 4) != 0x004E4942u)
+        throw invalidGlb();
+    const std::size_t binLength = readU32(glb, binHeader);
+    if (binLength > glb.size() - binHeader - 8)
+        throw invalidGlb();
+    chunks.bin = glb.substr(binHeader + 8, binLength);
+    return chunks;
+}
+
+std::string joinGlb(const GlbChunks& chunks) {
+    std::string json = chunks.json, bin = chunks.bin;
+    json.append((4 - json.size() % 4) % 4, ' ');
+    bin.append((4 - bin.size() % 4) % 4, '\0');
+    std::string out(20, '\0');
+    out.replace(0, 4, "glTF");
+    writeU32(out, 4, 2);
+    writeU32(out, 12, static_cast<std::uint32_t>(json.size()));
+    writeU32(out, 16, 0x4E4F534Au);
+    out += json;
+    if (!bin.empty()) {
+        std::string header(8, '\0');
+        writeU32(header, 0, static_cast<std::uint32_t>(bin.size()));
+        writeU32(header, 4, 0x004E4942u);
+        out += header + bin;
+    }
+    writeU32(out, 8, static_cast<std::uint32_t>(out.size()));
+    return out;
+}
+
 std::string zeroUnreferencedGlbBytes(std::string glb) {
     const std::size_t jsonLength = checkedJsonLength(glb);
     const auto invalid = invalidGlb;

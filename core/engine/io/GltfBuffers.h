@@ -24,6 +24,16 @@ std::string glbJson(const std::string& glb);
 // multiple of 4 bytes, as the format requires), the binary chunk unchanged.
 std::string glbWithJson(const std::string& glb, const std::string& json);
 
+// A .glb's JSON text and binary chunk (empty if none), and back: the JSON
+// padded with spaces and the binary chunk with zeros to multiples of 4.
+// Throws Error if the bytes are not a glTF 2.0 binary file.
+struct GlbChunks {
+    std::string json;
+    std::string bin;
+};
+GlbChunks splitGlb(const std::string& glb);
+std::string joinGlb(const GlbChunks& chunks);
+
 // The .bin buffer of a .gltf (buffer 0) with every byte no buffer view
 // covers set to zero. Throws Error on JSON that is not glTF.
 std::string zeroUnreferencedBinBytes(const std::string& gltfJson, std::string bin);

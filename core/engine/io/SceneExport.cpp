@@ -22,6 +22,7 @@
 #include "io/FiniteScene.h"
 #include "io/GltfBuffers.h"
 #include "io/GltfSceneRoots.h"
+#include "io/GltfSkins.h"
 #include "part/PartDetail.h"
 
 namespace rigmesh {
@@ -152,6 +153,15 @@ void writeObj(const ExportedFiles& files, const fs::path& target) {
     stagedObj.commit();
 }
 
+// What Assimp's glTF needs after export: its root node lifted out, one skin
+// per armature, leaf tail hints (GltfSceneRoots.h, GltfSkins.h,
+// BoneTipHints.h).
+std::string gltfPostPasses(const std::string& json, std::string& bin,
+                           const std::vector<ExportRig>& rigs) {
+    const std::string lifted = withRootChildrenAsSceneRoots(json);
+    return withGltfLeafTails(withOneSkinPerArmature(lifted, bin), rigs);
+}
+
 // The parts at the options' detail level (held in `detailed`), or `parts`.
 std::vector<ExportPart> withDetailLevel(const std::vector<ExportPart>& parts,
                                         const ExportOptions& options, std::vector<Part>& detailed) {
@@ -187,14 +197,13 @@ void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const s
     ExportedFiles files = exportToMemory(scene, format, path);
     switch (format) {
         case ExportFormat::Glb: {
-            const std::string glb = zeroUnreferencedGlbBytes(std::move(files.main));
-            writeFileAtomically(
-                target, glbWithJson(glb, withGltfLeafTails(
-                                             withRootChildrenAsSceneRoots(glbJson(glb)), rigs)));
+            GlbChunks glb = splitGlb(zeroUnreferencedGlbBytes(std::move(files.main)));
+            glb.json = gltfPostPasses(glb.json, glb.bin, rigs);
+            writeFileAtomically(target, joinGlb(glb));
             break;
         }
         case ExportFormat::Gltf:
-            files.main = withGltfLeafTails(withRootChildrenAsSceneRoots(files.main), rigs);
+            files.main = gltfPostPasses(files.main, files.companions["bin"], rigs);
             writeGltf(files, target);
             break;
         case ExportFormat::Fbx:

@@ -3,10 +3,11 @@
 //
 // Layout (the notes' items are in /work/shared/notes/assimp-blender-facts.md):
 // an identity root node; one node per part carrying its mesh (the part's
-// name); for rigged formats the bones: in FBX under one armature node per
-// part, `<part>_armature`, which also holds the part's mesh node; in glTF
-// and COLLADA under one `Armature` node beside the mesh nodes (Blender's
-// importers of those make one armature anyway: AssimpSceneBuilder.cpp). One
+// name); for rigged formats each part's bones under its own armature node
+// `<part>_armature` (in FBX holding the part's mesh node too; glTF gets one
+// skin per part, GltfSkins.h), except in COLLADA: one `Armature` node beside
+// the mesh nodes (Blender's COLLADA importer makes one armature anyway:
+// AssimpSceneBuilder.cpp). One
 // node per bone named after it or `<part>_bone<id>`, placed at the
 // bone's head with its +Y axis along the bone (ExportRig.h) and parented by
 // the bone hierarchy; optionally an end bone at each leaf's tail. Several parts are several skinned

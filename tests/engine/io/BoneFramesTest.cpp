@@ -122,6 +122,38 @@ TEST(GltfScene, SkinnedMeshIsASceneRootAndNoRootNodeIsWritten) {
         EXPECT_NE(node.value("name", ""), "RootNode");
 }
 
+TEST(GltfScene, EachPartHasItsOwnSkinOfItsOwnBones) {
+    const Part& tube = iotest::sharedPart("tube");
+    const Part& biped = iotest::sharedPart("biped");
+    ExportPart a, b;
+    a.part = &tube;
+    b.part = &biped;
+    const std::string path = (iotest::scratchFolder() / "two.glb").string();
+    exportScene({a, b}, nullptr, path);
+    const nlohmann::json gltf = nlohmann::json::parse(glbJson(readAll(path)));
+    ASSERT_EQ(gltf["skins"].size(), 2u);
+    std::map<std::string, int> bonesOfPart = {{"tube", tube.skeleton.boneCount()},
+                                              {"biped", biped.skeleton.boneCount()}};
+    for (const auto& node : gltf["nodes"]) {
+        if (!node.contains("skin"))
+            continue;
+        const std::string part = node["name"];
+        const auto& skin = gltf["skins"][node["skin"].get<std::size_t>()];
+        EXPECT_EQ(skin["name"], part + "_armature");
+        ASSERT_EQ(static_cast<int>(skin["joints"].size()), bonesOfPart.at(part));
+        for (const auto& joint : skin["joints"])
+            EXPECT_EQ(gltf["nodes"][joint.get<std::size_t>()]["name"].get<std::string>().rfind(
+                          part + "_bone", 0),
+                      0u);
+    }
+    // And back: each part with its own bones and weights.
+    const ImportedScene back = importScene(path);
+    ASSERT_EQ(back.parts.size(), 2u);
+    EXPECT_FALSE(back.needsRig) << back.message;
+    EXPECT_EQ(back.parts[0].part.skeleton.boneCount() + back.parts[1].part.skeleton.boneCount(),
+              tube.skeleton.boneCount() + biped.skeleton.boneCount());
+}
+
 TEST(GltfScene, LiftingTheRootRenumbersEveryNodeReference) {
     const nlohmann::json before = {{"scenes", {{{"nodes", {0}}}}},
                                    {"nodes",

@@ -50,9 +50,9 @@ TEST_P(Structure, NodesBonesWeightsAndChannels) {
     int count = 0;
     collect(scene->mRootNode, byName, count);
     EXPECT_EQ(static_cast<int>(byName.size()), count) << "node names are not unique";
-    // FBX: one armature node per part, holding its mesh and bones (issue 18
-    // item 3); the others: every bone under `Armature`.
-    const std::string armature = extension == ".fbx" ? sketch + "_armature" : "Armature";
+    // One armature node per part (issue 18 item 3), but for COLLADA: every
+    // bone under `Armature`.
+    const std::string armature = extension == ".dae" ? "Armature" : sketch + "_armature";
     ASSERT_TRUE(byName.contains(armature));
     ASSERT_GE(scene->mNumMeshes, 1u);
     ASSERT_GE(scene->mNumMaterials, 1u);
