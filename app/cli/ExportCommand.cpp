@@ -14,8 +14,9 @@
 namespace rigmesh::cli {
 
 int runExport(const std::vector<std::string>& arguments) {
-    CommandLine line(arguments, {"-o", "--max-influences", "--subdivide", "--decimate"},
-                     {"--current-pose", "--no-animation", "--hidden", "--leaf-bones"});
+    CommandLine line(
+        arguments, {"-o", "--max-influences", "--subdivide", "--decimate"},
+        {"--current-pose", "--pose-as-key", "--no-animation", "--hidden", "--leaf-bones"});
     if (line.positional().size() != 1)
         throw Error("export needs exactly one document (.rigmesh)");
     const std::string documentPath = line.positional()[0];
@@ -25,7 +26,8 @@ int runExport(const std::vector<std::string>& arguments) {
     checkDocumentOutputPath(*out, false);
     // As the studio's export dialog sets them.
     ExportOptions options = exportOptions(line);
-    options.restPose = !line.flag("--current-pose");
+    options.restPose = !line.flag("--current-pose") && !line.flag("--pose-as-key");
+    options.poseAsKey = line.flag("--pose-as-key");
     options.animation = !line.flag("--no-animation");
 
     const auto application = ensureCoreApplication();

@@ -51,13 +51,15 @@ commands:
       through this command in a separate process with time and memory
       limits, so a broken file cannot take them down.
   export DOC.rigmesh -o OUT.glb|.gltf|.fbx|.dae|.obj [--max-influences N]
-               [--current-pose] [--no-animation] [--hidden] [--leaf-bones]
+               [--current-pose | --pose-as-key] [--no-animation] [--hidden] [--leaf-bones]
                [--subdivide N] [--decimate FACES]
       Converts a saved document as the studio's File > Export does: every
       visible part (--hidden: every part) at its placement, each its own
       skinned mesh named after it, animated by its own clip
       (--no-animation: none); an .obj
-      is the rest mesh, or each part's current pose with --current-pose.
+      is the rest mesh, or each part's current pose with --current-pose
+      (rigged formats: as their rest shape); --pose-as-key keeps the rest
+      shape and writes each part's current pose as a one-key animation.
       --max-influences, --leaf-bones, --subdivide and --decimate as for build. A bad document exits 1 with the reason.
   example
       Builds the embedded example sketch into a rigged part and prints its figures.

@@ -54,14 +54,23 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
     // The current pose as the rest shape: OBJ poses its mesh itself; the
     // rigged formats get parts whose rest is that pose (their clips would be
     // relative to the old rest, so none is written).
-    const bool bakePose = !options.restPose && isRiggedFormat(exportFormatFromPath(path));
-    if (bakePose && options.animation)
+    // Or, with poseAsKey, the rest shape stays and each part's pose is a
+    // one-key animation (issue 11 item 3).
+    const bool rigged = isRiggedFormat(exportFormatFromPath(path));
+    const bool poseKey = !options.restPose && options.poseAsKey && rigged;
+    const bool bakePose = !options.restPose && !poseKey && rigged;
+    if ((bakePose || poseKey) && options.animation)
         for (const PartNode* node : nodes)
             if (node->clip.keyCount() > 0)
-                result.warnings << QObject::tr(
-                                       "the clip of \"%1\" is not exported: the current "
-                                       "pose is the file's rest shape")
+                result.warnings << (bakePose
+                                        ? QObject::tr("the clip of \"%1\" is not exported: "
+                                                      "the current pose is the file's rest "
+                                                      "shape")
+                                        : QObject::tr("the clip of \"%1\" is not exported: "
+                                                      "its current pose is the file's one key"))
                                        .arg(node->name);
+    std::vector<rigmesh::Clip> poseClips;
+    poseClips.reserve(nodes.size());
     std::vector<Part> baked;
     baked.reserve(nodes.size());
     auto exportPart = [&](const PartNode& node) {
@@ -77,10 +86,18 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
     std::vector<ExportPart> parts;
     for (const PartNode* node : nodes) {
         parts.push_back(exportPart(*node));
-        if (!bakePose && node->clip.keyCount() > 0)
+        if (poseKey) {
+            poseClips.emplace_back(node->clip.framesPerSecond());
+            poseClips.back().name = node->name.toStdString() + "_pose";
+            poseClips.back().setKey(0.0, node->pose);
+            parts.back().clip = &poseClips.back();
+        } else if (!bakePose && node->clip.keyCount() > 0) {
             parts.back().clip = &node->clip;
+        }
     }
-    exportScene(parts, nullptr, path, options);
+    ExportOptions written = options;
+    written.animation = options.animation || poseKey;  // the key is the pose itself
+    exportScene(parts, nullptr, path, written);
     return result;
 }
 

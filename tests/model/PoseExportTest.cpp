@@ -76,6 +76,39 @@ TEST_P(PoseExport, CurrentPoseBecomesTheRestShapeAndMatchesOurSkinning) {
     EXPECT_LT(largestGap(joints.jointPositions, backJoints), 1e-5 * size);
 }
 
+TEST_P(PoseExport, CurrentPoseAsOneKeyKeepsTheRestShapeAndSkinsToThePose) {
+    QTemporaryDir folder;
+    ASSERT_TRUE(folder.isValid());
+    Document document;
+    const PartId id = addPart(document, sharedStroke("y_branch"));
+    const PartNode& node = document.part(id);
+    const JointId end = endJoints(node.part->skeleton).front();
+    document.undoStack()->push(
+        new SetPoseCommand(document, id, dragged(node, end, Vec3(0.4, 0.6, 0.3)), end));
+    const std::vector<Vec3> posed = posePart(*node.part, node.pose).mesh.vertices;
+    const std::vector<Vec3> rest = node.part->mesh.vertices;
+    Eigen::AlignedBox3d box;
+    for (const Vec3& p : rest)
+        box.extend(p);
+    const double size = box.diagonal().norm();
+    ASSERT_GT(largestGap(posed, rest), 0.02 * size) << "the pose must move the mesh";
+
+    const QString path = folder.filePath(QStringLiteral("key.") + QLatin1String(GetParam()));
+    ExportOptions options;
+    options.restPose = false;
+    options.poseAsKey = true;
+    options.animation = false;  // the key is written anyway: it is the pose
+    exportDocument(document, path.toStdString(), options);
+    const std::vector<PartNode> imported = readImportedParts(path);
+    ASSERT_EQ(imported.size(), 1u);
+    const PartNode& back = imported.front();
+    // The rest shape stays; the one key skins it to the pose.
+    EXPECT_LT(largestGap(rest, back.part->mesh.vertices), 1e-5 * size);
+    ASSERT_EQ(back.clip.keyCount(), 1);
+    const std::vector<Vec3> keyed = posePart(*back.part, back.clip.evaluate(0.0)).mesh.vertices;
+    EXPECT_LT(largestGap(posed, keyed), 1e-4 * size);
+}
+
 INSTANTIATE_TEST_SUITE_P(RiggedFormats, PoseExport, testing::Values("glb", "fbx", "dae"));
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QStandardItemModel>
 
 namespace rigmesh::widgets {
 namespace {
@@ -42,7 +43,13 @@ ExportDialog::ExportDialog(const QString& suggestedPath, QWidget* parent) : QDia
     influences_->setSpecialValueText(tr("all the format allows"));
     influences_->setToolTip(
         tr("Bones per vertex; extra influences are cut and the rest renormalised"));
-    currentPose_ = new QCheckBox(tr("Current pose instead of the rest pose"), this);
+    pose_ = new QComboBox(this);
+    pose_->addItem(tr("Rest pose"));
+    pose_->addItem(tr("Current pose as the rest shape"));
+    pose_->addItem(tr("Current pose as one key"));
+    pose_->setToolTip(
+        tr("As one key, the file keeps the rest shape and the skeleton opens "
+           "in the current pose (an animation of a single key at 0 s)"));
     animation_ = new QCheckBox(tr("Animation (each part's keyed clip)"), this);
     animation_->setChecked(true);
     leafBones_ = new QCheckBox(tr("Add leaf bones (an end bone at each leaf's tail)"), this);
@@ -69,7 +76,7 @@ ExportDialog::ExportDialog(const QString& suggestedPath, QWidget* parent) : QDia
     form->addRow(tr("Influences"), influences_);
     form->addRow(tr("Subdivide"), subdivide_);
     form->addRow(tr("Decimate to"), decimate_);
-    form->addRow(QString(), currentPose_);
+    form->addRow(tr("Pose"), pose_);
     form->addRow(QString(), animation_);
     form->addRow(QString(), leafBones_);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
@@ -100,8 +107,10 @@ void ExportDialog::formatChanged() {
         path_->setText(info.path() + QLatin1Char('/') + info.completeBaseName() + QLatin1Char('.') +
                        suffix);
     const bool obj = suffix == QLatin1String("obj");
-    // Every format can carry the current pose (rigged ones as their rest shape).
-    currentPose_->setEnabled(true);
+    // Every format can carry the current pose; as a key only the rigged ones.
+    if (obj && pose_->currentIndex() == 2)
+        pose_->setCurrentIndex(1);
+    qobject_cast<QStandardItemModel*>(pose_->model())->item(2)->setEnabled(!obj);
     animation_->setEnabled(!obj);
     influences_->setEnabled(!obj);
     leafBones_->setEnabled(!obj);
@@ -114,7 +123,8 @@ QString ExportDialog::path() const {
 ExportOptions ExportDialog::options() const {
     ExportOptions options;
     options.maxInfluences = influences_->value();
-    options.restPose = !currentPose_->isChecked();
+    options.restPose = pose_->currentIndex() == 0;
+    options.poseAsKey = pose_->currentIndex() == 2;
     options.animation = animation_->isChecked();
     options.leafBones = leafBones_->isChecked();
     options.subdivisionLevels = subdivide_->value();

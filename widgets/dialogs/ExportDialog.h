@@ -28,7 +28,7 @@ class ExportDialog : public QDialog {
     QLineEdit* path_;
     QComboBox* format_;
     QSpinBox* influences_;
-    QCheckBox* currentPose_;
+    QComboBox* pose_;
     QCheckBox* animation_;
     QCheckBox* leafBones_;
     QSpinBox* subdivide_;

@@ -48,6 +48,10 @@ struct ExportOptions {
     // Rest mesh, or each part's current pose: OBJ poses its mesh; for the
     // rigged formats model::exportDocument makes the pose the rest shape.
     bool restPose = true;
+    // With restPose = false in a rigged format: keep the rest shape and write
+    // each part's current pose as an animation of a single key at 0 s
+    // instead of making it the rest shape (model::exportDocument).
+    bool poseAsKey = false;
     bool animation = true;   // write the clip when there is one
     double unitScale = 1.0;  // multiplies every written coordinate
     // An end bone `<bone>_end` at each leaf bone's tail (Blender's FBX "Add
