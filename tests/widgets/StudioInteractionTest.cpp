@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QDoubleSpinBox>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTreeView>
@@ -149,6 +150,44 @@ TEST_F(Studio, DraggingAJointChangesThePoseInOneUndoStep) {
     const auto& rotations = document()->part(id).pose.rotations;
     for (const auto& [joint, q] : rotations)
         EXPECT_NEAR(q.angularDistance(Eigen::Quaterniond::Identity()), 0.0, 1e-12);
+}
+
+TEST_F(Studio, TypedJointRotationPosesTheJointOneUndoStepPerValue) {
+    window->activateSketchTool();
+    const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
+    drag(viewport(), ellipseStroke(centre, 260, 50));
+    ASSERT_EQ(document()->partCount(), 1);
+    const model::PartId id = document()->parts().front().id;
+    const Skeleton& skeleton = document()->part(id).part->skeleton;
+    const JointId joint = skeleton.root();
+    document()->setSelection({id, joint});
+    auto* x = window->findChild<QDoubleSpinBox*>(QStringLiteral("jointRotationX"));
+    auto* z = window->findChild<QDoubleSpinBox*>(QStringLiteral("jointRotationZ"));
+    ASSERT_NE(x, nullptr);
+    ASSERT_NE(z, nullptr);
+    EXPECT_TRUE(x->isVisibleTo(window.get()));
+    const int stepsBefore = document()->undoStack()->count();
+    x->setValue(30.0);
+    z->setValue(-45.0);
+    EXPECT_EQ(document()->undoStack()->count(), stepsBefore + 2) << "one undo step per value";
+    const Eigen::Quaterniond expected =
+        Eigen::AngleAxisd(-M_PI / 4, Vec3::UnitZ()) * Eigen::AngleAxisd(M_PI / 6, Vec3::UnitX());
+    EXPECT_LT(document()->part(id).pose.rotation(joint).angularDistance(expected), 1e-9);
+    EXPECT_NEAR(x->value(), 30.0, 1e-6) << "the panel shows the angles as typed";
+    EXPECT_NEAR(z->value(), -45.0, 1e-6);
+    // For people: the panel beside the turned part.
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_joint_rotation.png"));
+    document()->undoStack()->undo();
+    EXPECT_LT(document()->part(id).pose.rotation(joint).angularDistance(
+                  Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 6, Vec3::UnitX()))),
+              1e-9);
+    EXPECT_NEAR(z->value(), 0.0, 1e-6) << "the panel follows undo";
+    document()->undoStack()->undo();
+    EXPECT_LT(
+        document()->part(id).pose.rotation(joint).angularDistance(Eigen::Quaterniond::Identity()),
+        1e-12);
+    document()->clearSelection();
+    EXPECT_FALSE(x->isVisibleTo(window.get()));
 }
 
 TEST_F(Studio, DraggingAPartMovesItAndCtrlDragTurnsIt) {

@@ -3,15 +3,41 @@
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <memory>
 
 #include "base/Error.h"
 #include "model/Document.h"
 #include "model/commands/RebuildPartCommand.h"
+#include "model/commands/SetPoseCommand.h"
 
 namespace rigmesh::widgets {
+namespace {
+
+// Blender's XYZ Euler of a rotation R = Rz Ry Rx, in degrees, with Y in
+// [-90, 90] (Eigen's eulerAngles puts the first angle in [0, 180] instead,
+// which shows (30, 0, -45) as (-150, -180, 135)). At Y = +-90 (gimbal lock)
+// X is 0 and Z takes the whole turn.
+Vec3 xyzEulerDegrees(const Eigen::Quaterniond& rotation) {
+    const Eigen::Matrix3d r = rotation.normalized().toRotationMatrix();
+    const double y = std::asin(std::clamp(-r(2, 0), -1.0, 1.0));
+    double x = 0, z = 0;
+    if (std::abs(r(2, 0)) < 1.0 - 1e-12) {
+        x = std::atan2(r(2, 1), r(2, 2));
+        z = std::atan2(r(1, 0), r(0, 0));
+    } else {
+        z = std::atan2(-r(0, 1), r(1, 1));
+    }
+    return Vec3(x, y, z) * (180.0 / M_PI);
+}
+
+}  // namespace
 
 PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
@@ -34,6 +60,22 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(figures_);
     layout->addLayout(form);
     layout->addWidget(rebuildButton_);
+    poseBox_ = new QGroupBox(tr("Joint rotation (XYZ Euler)"), this);
+    auto* poseForm = new QFormLayout(poseBox_);
+    const char* axes[] = {QT_TR_NOOP("X"), QT_TR_NOOP("Y"), QT_TR_NOOP("Z")};
+    for (int k = 0; k < 3; ++k) {
+        euler_[k] = new QDoubleSpinBox(poseBox_);
+        euler_[k]->setObjectName(QStringLiteral("jointRotation") + QLatin1Char("XYZ"[k]));
+        euler_[k]->setRange(-180.0, 180.0);
+        euler_[k]->setDecimals(1);
+        euler_[k]->setWrapping(true);
+        euler_[k]->setSuffix(QStringLiteral("\u00b0"));
+        euler_[k]->setKeyboardTracking(false);  // one command per typed value
+        euler_[k]->setToolTip(tr("The selected joint's rotation from rest, in degrees"));
+        poseForm->addRow(tr(axes[k]), euler_[k]);
+        connect(euler_[k], &QDoubleSpinBox::valueChanged, this, &PropertiesPanel::setJointRotation);
+    }
+    layout->addWidget(poseBox_);
     layout->addStretch();
     connect(rebuildButton_, &QPushButton::clicked, this, &PropertiesPanel::rebuild);
     refresh();
@@ -52,6 +94,7 @@ void PropertiesPanel::setDocument(model::Document* document) {
 }
 
 void PropertiesPanel::refresh() {
+    refreshPose();
     const model::PartNode* node =
         document_ ? document_->findPart(document_->selection().part) : nullptr;
     const bool hasPart = node && node->part;
@@ -80,6 +123,49 @@ void PropertiesPanel::refresh() {
              : QString()));
     edgeLength_->setValue(node->options.targetEdgeLength);
     smoothing_->setChecked(node->options.smoothing);
+}
+
+void PropertiesPanel::refreshPose() {
+    const model::PartNode* node =
+        document_ ? document_->findPart(document_->selection().part) : nullptr;
+    const JointId joint = document_ ? document_->selection().joint : kNoJoint;
+    const bool shown = node && node->part && node->part->skeleton.hasJoint(joint);
+    poseBox_->setVisible(shown);
+    if (!shown)
+        return;
+    poseBox_->setTitle(tr("Joint %1 rotation (XYZ Euler)").arg(joint));
+    const Vec3 xyz = xyzEulerDegrees(node->pose.rotation(joint));
+    for (int k = 0; k < 3; ++k) {
+        const QSignalBlocker blocker(euler_[k]);
+        euler_[k]->setValue(xyz[k]);
+    }
+}
+
+void PropertiesPanel::setJointRotation() {
+    if (!document_)
+        return;
+    const model::Selection selection = document_->selection();
+    const model::PartNode* node = document_->findPart(selection.part);
+    if (!node || !node->part || !node->part->skeleton.hasJoint(selection.joint))
+        return;
+    const Eigen::Quaterniond rotation =
+        Eigen::AngleAxisd(euler_[2]->value() * M_PI / 180.0, Vec3::UnitZ()) *
+        Eigen::AngleAxisd(euler_[1]->value() * M_PI / 180.0, Vec3::UnitY()) *
+        Eigen::AngleAxisd(euler_[0]->value() * M_PI / 180.0, Vec3::UnitX());
+    const rigmesh::Pose from = node->pose;
+    rigmesh::Pose pose = from;
+    pose.setRotation(selection.joint, rotation.normalized());
+    try {
+        // Each typed value is its own undo step: applied first, then pushed
+        // as already applied, which never merges with the previous one.
+        auto command = std::make_unique<model::SetPoseCommand>(*document_, selection.part, from,
+                                                               pose, selection.joint, true);
+        document_->setPose(selection.part, pose);
+        document_->undoStack()->push(command.release());
+    } catch (const rigmesh::Error& error) {
+        emit statusMessage(tr("Not posed: %1").arg(QString::fromStdString(error.what())), 8000);
+        refreshPose();
+    }
 }
 
 void PropertiesPanel::rebuild() {

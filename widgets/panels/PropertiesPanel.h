@@ -1,12 +1,16 @@
 // The properties panel: figures of the selected part (vertices, faces,
 // joints, bones, regions) and its build options; "Rebuild" rebuilds the part
-// from its stroke with the edited options as one undoable command.
+// from its stroke with the edited options as one undoable command. With a
+// joint selected, its pose rotation as XYZ Euler angles in degrees
+// (Blender's default: X first, then Y, then Z, each about the parent's axes),
+// editable: each edit is an undoable SetPoseCommand.
 #pragma once
 
 #include <QWidget>
 
 class QCheckBox;
 class QDoubleSpinBox;
+class QGroupBox;
 class QLabel;
 class QPushButton;
 
@@ -27,7 +31,9 @@ class PropertiesPanel : public QWidget {
 
   private:
     void refresh();
+    void refreshPose();
     void rebuild();
+    void setJointRotation();
 
     model::Document* document_ = nullptr;
     QLabel* title_;
@@ -35,6 +41,8 @@ class PropertiesPanel : public QWidget {
     QDoubleSpinBox* edgeLength_;
     QCheckBox* smoothing_;
     QPushButton* rebuildButton_;
+    QGroupBox* poseBox_;
+    QDoubleSpinBox* euler_[3];
 };
 
 }  // namespace rigmesh::widgets
