@@ -37,6 +37,14 @@ class Studio : public testing::Test {
         settle(window.get());
     }
     widgets::Viewport* viewport() const { return window->currentView()->viewport(); }
+    // Sketches a long ellipse across the viewport: the new part's id.
+    model::PartId sketchEllipse() {
+        window->activateSketchTool();
+        const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
+        drag(viewport(), ellipseStroke(centre, 260, 50));
+        EXPECT_EQ(document()->partCount(), 1);
+        return document()->partCount() > 0 ? document()->parts().front().id : model::kNoPart;
+    }
     model::Document* document() const { return window->currentDocument(); }
 
     QTemporaryDir recovery;
@@ -104,11 +112,8 @@ TEST_F(Studio, LargeCircleDrawnFastInFewEventsBecomesAPart) {
 }
 
 TEST_F(Studio, DraggingAJointChangesThePoseInOneUndoStep) {
-    window->activateSketchTool();
-    const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
-    drag(viewport(), ellipseStroke(centre, 260, 50));
-    ASSERT_EQ(document()->partCount(), 1);
-    const model::PartId id = document()->parts().front().id;
+    const model::PartId id = sketchEllipse();
+    ASSERT_NE(id, model::kNoPart);
     const Skeleton& skeleton = document()->part(id).part->skeleton;
     ASSERT_GE(skeleton.boneCount(), 1);
     // The joint farthest from the root: dragging it bends the chain.
@@ -153,11 +158,8 @@ TEST_F(Studio, DraggingAJointChangesThePoseInOneUndoStep) {
 }
 
 TEST_F(Studio, TypedJointRotationPosesTheJointOneUndoStepPerValue) {
-    window->activateSketchTool();
-    const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
-    drag(viewport(), ellipseStroke(centre, 260, 50));
-    ASSERT_EQ(document()->partCount(), 1);
-    const model::PartId id = document()->parts().front().id;
+    const model::PartId id = sketchEllipse();
+    ASSERT_NE(id, model::kNoPart);
     const Skeleton& skeleton = document()->part(id).part->skeleton;
     const JointId joint = skeleton.root();
     document()->setSelection({id, joint});
