@@ -8,8 +8,12 @@
 #include <QTemporaryDir>
 #include <QTreeView>
 #include <QUndoStack>
+#include <QtMath>
+#include <algorithm>
+#include <set>
 
 #include "DocumentView.h"
+#include "EmbeddedExamples.h"
 #include "MainWindow.h"
 #include "StudioTestSupport.h"
 #include "model/Document.h"
@@ -18,6 +22,7 @@
 #include "model/commands/CreatePartCommand.h"
 #include "model/commands/ImportPartsCommand.h"
 #include "panels/OutlinerPanel.h"
+#include "pose/Skinning.h"
 #include "sketch/Sketch.h"
 
 namespace rigmesh {
@@ -190,6 +195,126 @@ TEST_F(Studio, TypedJointRotationPosesTheJointOneUndoStepPerValue) {
         1e-12);
     document()->clearSelection();
     EXPECT_FALSE(x->isVisibleTo(window.get()));
+}
+
+TEST_F(Studio, DraggingABoneAnywhereTurnsItAboutItsHead) {
+    const model::PartId id = sketchEllipse();
+    ASSERT_NE(id, model::kNoPart);
+    const Skeleton& skeleton = document()->part(id).part->skeleton;
+    // A bone whose head is not the root: FK turns its head joint only.
+    const Bone* grabbed = nullptr;
+    for (const Bone& bone : skeleton.bones())
+        if (bone.head != skeleton.root())
+            grabbed = &bone;
+    ASSERT_NE(grabbed, nullptr);
+    window->activatePoseTool();  // first: the tool's options may resize the viewport
+    QTest::qWait(50);
+    const QSizeF size(viewport()->size());
+    const QVector3D head =
+        viewport()->camera().project(viewport()->jointWorldPosition(id, grabbed->head), size);
+    const QVector3D tail =
+        viewport()->camera().project(viewport()->jointWorldPosition(id, grabbed->tail), size);
+    const QPointF middle((head.x() + tail.x()) / 2, (head.y() + tail.y()) / 2);
+    const QPointF pivot(head.x(), head.y());
+    ASSERT_FALSE(viewport()->jointAt(middle).has_value()) << "the bone's middle is no joint";
+    const int stepsBefore = document()->undoStack()->count();
+    // Sweep 30 degrees around the head on screen.
+    std::vector<QPointF> arc;
+    const QPointF arm = middle - pivot;
+    for (int i = 0; i <= 10; ++i) {
+        const double a = qDegreesToRadians(3.0 * i);
+        arc.emplace_back(pivot.x() + arm.x() * std::cos(a) - arm.y() * std::sin(a),
+                         pivot.y() + arm.x() * std::sin(a) + arm.y() * std::cos(a));
+    }
+    drag(viewport(), arc);
+    EXPECT_EQ(document()->undoStack()->count(), stepsBefore + 1) << "one drag, one undo step";
+    const rigmesh::Pose& pose = document()->part(id).pose;
+    EXPECT_NEAR(pose.rotation(grabbed->head).angularDistance(Eigen::Quaterniond::Identity()),
+                qDegreesToRadians(30.0), qDegreesToRadians(3.0));  // perspective
+    for (const auto& [joint, q] : pose.rotations) {
+        if (joint != grabbed->head) {
+            EXPECT_NEAR(q.angularDistance(Eigen::Quaterniond::Identity()), 0.0, 1e-12)
+                << "joint " << joint << " turned";
+        }
+    }
+    EXPECT_EQ(document()->selection().joint, grabbed->head) << "the turned joint is selected";
+}
+
+TEST_F(Studio, DraggingAHandMovesNoVertexOfTheOtherLimbs) {
+    const Sketch sketch = parseSketchJson(resources::exampleSketchJson(), "example.json");
+    document()->undoStack()->push(
+        model::CreatePartCommand::create(*document(), sketch.points, "biped").release());
+    viewport()->frameAll();
+    const model::PartId id = document()->parts().front().id;
+    const Part& part = *document()->part(id).part;
+    const Skeleton& skeleton = part.skeleton;
+    // Each leaf's limb: the bones from it up to the first junction.
+    auto limbOf = [&](JointId leaf) {
+        std::set<int> bones;
+        for (JointId j = leaf; j != skeleton.root() && (j == leaf || skeleton.degree(j) == 2);) {
+            const Bone* up = nullptr;
+            for (const Bone& bone : skeleton.bones())
+                if (bone.tail == j)
+                    up = &bone;
+            if (!up)
+                break;
+            bones.insert(skeleton.indexOfBone(up->id));
+            j = up->head;
+        }
+        return bones;
+    };
+    // A hand: the leaf farthest sideways.
+    JointId hand = kNoJoint;
+    double side = -1;
+    std::set<int> otherLimbs;
+    for (const Joint& joint : skeleton.joints())
+        if (skeleton.degree(joint.id) == 1 && std::abs(joint.position.x()) > side) {
+            side = std::abs(joint.position.x());
+            hand = joint.id;
+        }
+    for (const Joint& joint : skeleton.joints())
+        if (skeleton.degree(joint.id) == 1 && joint.id != hand)
+            for (int bone : limbOf(joint.id))
+                otherLimbs.insert(bone);
+    ASSERT_FALSE(limbOf(hand).empty());
+    ASSERT_FALSE(otherLimbs.empty());
+    window->activatePoseTool();
+    QTest::qWait(50);
+    const QVector3D at = viewport()->camera().project(viewport()->jointWorldPosition(id, hand),
+                                                      QSizeF(viewport()->size()));
+    std::vector<QPointF> path;
+    for (int i = 0; i <= 10; ++i)
+        path.emplace_back(at.x() - 3.0 * i, at.y() - 6.0 * i);
+    drag(viewport(), path);
+    ASSERT_FALSE(document()->part(id).pose.rotations.empty());
+    const std::vector<Vec3> posed = posePart(part, document()->part(id).pose).mesh.vertices;
+    // Every vertex of another limb (its largest weight on one of that limb's
+    // bones) that the dragged limb's bones do not weight stays exactly where
+    // it was: the drag turned nothing else. (Vertices blended with the
+    // dragged limb at its junction move with it, as they should.)
+    const std::set<int> dragged = limbOf(hand);
+    int checked = 0, blended = 0, moved = 0;
+    for (std::size_t v = 0; v < posed.size(); ++v) {
+        const auto& list = part.weights.perVertex[v];
+        const auto dominant =
+            std::max_element(list.begin(), list.end(),
+                             [](const auto& a, const auto& b) { return a.second < b.second; });
+        if (dominant == list.end() || !otherLimbs.contains(dominant->first))
+            continue;
+        bool weightedByDragged = false;
+        for (const auto& [bone, w] : list)
+            weightedByDragged = weightedByDragged || dragged.contains(bone);
+        if (weightedByDragged) {
+            ++blended;
+            continue;
+        }
+        ++checked;
+        moved += (posed[v] - part.mesh.vertices[v]).norm() > 1e-9 ? 1 : 0;
+    }
+    std::fprintf(stderr, "other-limb vertices: %d untouched by the dragged limb, %d blended\n",
+                 checked, blended);
+    EXPECT_GT(checked, static_cast<int>(posed.size()) / 5);
+    EXPECT_EQ(moved, 0) << "vertices of the other limbs moved (of " << checked << ")";
 }
 
 TEST_F(Studio, DraggingAPartMovesItAndCtrlDragTurnsIt) {

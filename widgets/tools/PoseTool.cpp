@@ -29,16 +29,19 @@ JointId parentJoint(const Skeleton& skeleton, JointId joint) {
 
 QString PoseTool::hint() const {
     return tr(
-        "Pose: drag a joint (IK, this limb only); Alt + drag reaches through the whole body; Ctrl "
-        "+ "
-        "drag turns its bone (FK); Shift + click pins or unpins a joint");
+        "Pose: drag a joint (IK, this limb only); Alt + drag reaches through the whole body; drag "
+        "a "
+        "bone, or Ctrl + drag a joint, to turn it (FK); Shift + click pins or unpins a joint");
 }
 
 void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
     model::Document& document = *viewport.document();
     const auto hit = viewport.jointAt(event->position());
     if (!hit) {
-        emit hintMessage(tr("Click on a joint to pose the part"));
+        if (const auto bone = viewport.boneAt(event->position()))
+            grabBone(viewport, *bone, event->position());
+        else
+            emit hintMessage(tr("Click on a joint or a bone to pose the part"));
         return;
     }
     document.setSelection(*hit);
@@ -65,6 +68,25 @@ void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
             return;
         }
     }
+    drag_ = drag;
+}
+
+void PoseTool::grabBone(Viewport& viewport, const BoneHit& bone, const QPointF& pixel) {
+    // FK by the bone (issue 11 item 2): it turns about its end nearer the
+    // root, whose rotation it is (the pose rotates a joint's child bones).
+    model::Document& document = *viewport.document();
+    const model::PartNode& node = document.part(bone.part);
+    const Skeleton& skeleton = node.part->skeleton;
+    const bool reversed = parentJoint(skeleton, bone.from) == bone.to;  // never reoriented
+    Drag drag;
+    drag.part = bone.part;
+    drag.pivot = reversed ? bone.to : bone.from;
+    drag.joint = reversed ? bone.from : bone.to;
+    drag.grabPoint = viewport.jointWorldPosition(bone.part, drag.joint);
+    drag.startPixel = pixel;
+    drag.startPose = node.pose;
+    drag.forward = true;
+    document.setSelection({bone.part, drag.pivot});
     drag_ = drag;
 }
 

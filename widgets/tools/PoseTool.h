@@ -1,9 +1,10 @@
 // Pose tool (paper section 3: the rig is there to be used while modelling).
 // Drag a joint: inverse kinematics moves the chain from it up to the root or
-// the nearest pinned joint, bone lengths kept. Ctrl + drag a joint: forward
-// kinematics, its bone turns about its head in the view plane. Shift + click
-// a joint: pin or unpin it. Every drag is one undo step (SetPoseCommand
-// merges consecutive poses of the same joint).
+// the nearest junction or pinned joint (Alt: the root), bone lengths kept.
+// Drag a bone anywhere along it, or Ctrl + drag a joint: forward kinematics,
+// the bone turns about its head in the view plane. Shift + click a joint: pin
+// or unpin it. Every drag is previewed live and pushed as one undo step on
+// release.
 #pragma once
 
 #include <QObject>
@@ -13,6 +14,8 @@
 #include "viewport/ViewportTool.h"
 
 namespace rigmesh::widgets {
+
+struct BoneHit;
 
 class PoseTool : public QObject, public ViewportTool {
     Q_OBJECT
@@ -29,6 +32,7 @@ class PoseTool : public QObject, public ViewportTool {
     void hintMessage(const QString& message);
 
   private:
+    void grabBone(Viewport& viewport, const BoneHit& bone, const QPointF& pixel);
     void dragWithIk(Viewport& viewport, const QPointF& pixel);
     void rotateWithFk(Viewport& viewport, const QPointF& pixel);
 

@@ -1,5 +1,7 @@
 #include "viewport/Viewport.h"
 
+#include <algorithm>
+
 #include <QGuiApplication>
 #include <QOpenGLContext>
 
@@ -344,6 +346,39 @@ std::optional<model::Selection> Viewport::jointAt(const QPointF& pixel) const {
             if (d < bestDistance) {
                 bestDistance = d;
                 best = model::Selection{node.id, joint.id};
+            }
+        }
+    }
+    return best;
+}
+
+std::optional<BoneHit> Viewport::boneAt(const QPointF& pixel) const {
+    constexpr double kPickRadiusPixels = 6.0;
+    std::optional<BoneHit> best;
+    double bestDistance = kPickRadiusPixels;
+    const QSizeF screenSize(size());
+    for (const model::PartNode& node : document_->parts()) {
+        if (!node.visible || !node.part)
+            continue;
+        const Skeleton& skeleton = node.part->skeleton;
+        const PosedSkeleton& posed = posedSkeleton(node);
+        auto screenOf = [&](JointId joint) {
+            const Vec3& p = posed.jointPositions[skeleton.indexOfJoint(joint)];
+            const QVector3D s = camera_.project(toQt(toWorld(node.placement, p)), screenSize);
+            return QPointF(s.x(), s.y());
+        };
+        for (const Bone& bone : skeleton.bones()) {
+            const QPointF a = screenOf(bone.head), b = screenOf(bone.tail);
+            const QPointF ab = b - a;
+            const double length2 = QPointF::dotProduct(ab, ab);
+            const double t =
+                length2 > 0 ? std::clamp(QPointF::dotProduct(pixel - a, ab) / length2, 0.0, 1.0)
+                            : 0.0;
+            const QPointF nearest = a + t * ab;
+            const double d = std::hypot(pixel.x() - nearest.x(), pixel.y() - nearest.y());
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = BoneHit{node.id, bone.head, bone.tail};
             }
         }
     }

@@ -18,6 +18,12 @@
 namespace rigmesh::widgets {
 
 class SceneRenderer;
+// A bone under the mouse: its part and its two joints (head, tail).
+struct BoneHit {
+    model::PartId part = model::kNoPart;
+    JointId from = kNoJoint, to = kNoJoint;
+};
+
 class ViewportTool;
 
 class Viewport : public QOpenGLWidget {
@@ -58,6 +64,9 @@ class Viewport : public QOpenGLWidget {
 
     // The joint drawn nearest to a pixel (within a few pixels), if any.
     std::optional<model::Selection> jointAt(const QPointF& pixel) const;
+    // The bone drawn nearest to a pixel (within a few pixels of its segment on
+    // screen), if any.
+    std::optional<BoneHit> boneAt(const QPointF& pixel) const;
     // The visible part under a pixel, if any.
     std::optional<model::PartId> partAt(const QPointF& pixel) const;
 
