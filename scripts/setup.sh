@@ -12,7 +12,7 @@ packages=(
     libcgal-dev libgmp-dev libmpfr-dev libboost-dev
     libeigen3-dev libsuitesparse-dev
     nlohmann-json3-dev libtinyxml2-dev libassimp-dev
-    qt6-base-dev libqt6opengl6-dev libgl-dev libgl1-mesa-dri
+    qt6-base-dev libqt6opengl6-dev libgl-dev libgl1-mesa-dri libqt6svg6
     xvfb xauth
     libgtest-dev libgmock-dev libbenchmark-dev
     blender python3-numpy

@@ -7,6 +7,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QIcon>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
@@ -34,6 +35,12 @@
 #include "tools/SketchTool.h"
 #include "viewport/Viewport.h"
 
+// The tool icons are compiled into this static library: register them
+// explicitly (Q_INIT_RESOURCE must be called outside any namespace).
+static void registerIconResources() {
+    Q_INIT_RESOURCE(icons);
+}
+
 namespace rigmesh::widgets {
 namespace {
 
@@ -60,6 +67,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
                                                            QStandardPaths::AppLocalDataLocation) +
                                                            QStringLiteral("/recovery")
                                                      : recoveryDirectory) {
+    registerIconResources();
     setObjectName(QStringLiteral("RigMeshStudioMainWindow"));
     tabs_->setTabsClosable(true);
     tabs_->setDocumentMode(true);
@@ -189,12 +197,17 @@ void MainWindow::createActions() {
 
     auto* tools = menuBar()->addMenu(tr("&Tools"));
     toolGroup_ = new QActionGroup(this);
-    selectToolAction_ = add(tools, tr("&Select / Move"), QKeySequence(Qt::Key_Q),
-                            &MainWindow::activateSelectTool, QStyle::SP_ArrowUp);
-    sketchToolAction_ = add(tools, tr("S&ketch Part"), QKeySequence(Qt::Key_S),
-                            &MainWindow::activateSketchTool, QStyle::SP_FileDialogContentsView);
-    poseToolAction_ = add(tools, tr("&Pose"), QKeySequence(Qt::Key_P),
-                          &MainWindow::activatePoseTool, QStyle::SP_MediaPlay);
+    // Our own icons (resources/icons, drawn by Qt's SVG icon engine,
+    // libqt6svg6) say what each tool does.
+    selectToolAction_ =
+        add(tools, tr("&Select / Move"), QKeySequence(Qt::Key_Q), &MainWindow::activateSelectTool);
+    selectToolAction_->setIcon(QIcon(QStringLiteral(":/icons/select.svg")));
+    sketchToolAction_ =
+        add(tools, tr("S&ketch Part"), QKeySequence(Qt::Key_S), &MainWindow::activateSketchTool);
+    sketchToolAction_->setIcon(QIcon(QStringLiteral(":/icons/sketch.svg")));
+    poseToolAction_ =
+        add(tools, tr("&Pose"), QKeySequence(Qt::Key_P), &MainWindow::activatePoseTool);
+    poseToolAction_->setIcon(QIcon(QStringLiteral(":/icons/pose.svg")));
     tools->addSeparator();
     add(tools, tr("&Reset Pose"), QKeySequence(Qt::ALT | Qt::Key_R), &MainWindow::resetPose);
     for (QAction* a : {selectToolAction_, sketchToolAction_, poseToolAction_}) {

@@ -4,6 +4,8 @@
 
 #include <QAction>
 #include <QDoubleSpinBox>
+#include <QIcon>
+#include <QImage>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTreeView>
@@ -55,6 +57,21 @@ class Studio : public testing::Test {
     QTemporaryDir recovery;
     std::unique_ptr<widgets::MainWindow> window;
 };
+
+TEST_F(Studio, ToolIconsAreOurOwnAndDraw) {
+    // A missing SVG icon engine (libqt6svg6) would leave the tools blank.
+    for (const char* name : {"sketch", "select", "pose"}) {
+        const QIcon icon(QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name)));
+        const QImage image = icon.pixmap(24, 24).toImage();
+        ASSERT_FALSE(image.isNull()) << name;
+        int drawn = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                drawn += qAlpha(image.pixel(x, y)) > 0 ? 1 : 0;
+        EXPECT_GT(drawn, 40) << name << " draws almost nothing";
+    }
+    window->grab().copy(0, 0, 400, 60).save(QStringLiteral(RIGMESH_TEST_OUTPUT "/toolbar.png"));
+}
 
 TEST_F(Studio, MouseStrokeInTheViewportCreatesARiggedPart) {
     window->activateSketchTool();
