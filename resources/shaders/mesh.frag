@@ -5,10 +5,15 @@ in vec3 viewNormal;
 
 uniform vec3 baseColour;
 uniform float highlight;  // 0 = normal, 1 = selected
+uniform int flatColour;   // 1: baseColour as is (the selection outline)
 
 out vec4 fragColour;
 
 void main() {
+    if (flatColour == 1) {
+        fragColour = vec4(baseColour, 1.0);
+        return;
+    }
     vec3 n = normalize(viewNormal);
     vec3 toEye = normalize(-viewPosition);
     if (!gl_FrontFacing) n = -n;

@@ -15,6 +15,8 @@ uniform int dualQuaternionSkinning;  // 1 = DQS, 0 = LBS
 uniform vec4 boneReal[128];          // rotation part (x, y, z, w)
 uniform vec4 boneDual[128];          // translation part
 uniform vec4 boneRows[384];          // 3 rows of each bone's affine matrix
+uniform float outlinePixels;         // > 0: the selection outline pass (see below)
+uniform vec2 viewportPixels;
 
 out vec3 viewPosition;
 out vec3 viewNormal;
@@ -63,4 +65,13 @@ void main() {
     viewPosition = eye.xyz;
     viewNormal = mat3(view) * mat3(model) * n;
     gl_Position = projection * eye;
+    // Selection outline (an inverted hull): the back faces, drawn first,
+    // pushed outwards on screen by a fixed number of pixels along the
+    // projected normal, so a band of them shows around the silhouette.
+    if (outlinePixels > 0.0) {
+        vec2 screenNormal = (projection * vec4(viewNormal, 0.0)).xy;
+        if (length(screenNormal) > 1e-6)
+            gl_Position.xy += normalize(screenNormal) * outlinePixels * 2.0 / viewportPixels *
+                              gl_Position.w;
+    }
 }

@@ -73,6 +73,28 @@ TEST_F(Studio, ToolIconsAreOurOwnAndDraw) {
     window->grab().copy(0, 0, 400, 60).save(QStringLiteral(RIGMESH_TEST_OUTPUT "/toolbar.png"));
 }
 
+TEST_F(Studio, SelectedPartIsOutlined) {
+    const model::PartId id = sketchEllipse();
+    ASSERT_NE(id, model::kNoPart);
+    // Pixels of the outline's orange (1.0, 0.55, 0.1), flat, unlit.
+    auto outlinePixels = [&] {
+        const QImage frame = viewport()->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        int count = 0;
+        for (int y = 0; y < frame.height(); ++y)
+            for (int x = 0; x < frame.width(); ++x) {
+                const QRgb p = frame.pixel(x, y);
+                count += qRed(p) > 240 && std::abs(qGreen(p) - 140) < 12 && qBlue(p) < 40 ? 1 : 0;
+            }
+        return count;
+    };
+    document()->setSelection({id, kNoJoint});
+    const int selected = outlinePixels();
+    document()->clearSelection();
+    const int unselected = outlinePixels();
+    EXPECT_GT(selected, 500) << "an outline around the selected part";
+    EXPECT_LT(unselected, selected / 20);
+}
+
 TEST_F(Studio, MouseStrokeInTheViewportCreatesARiggedPart) {
     window->activateSketchTool();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);

@@ -154,7 +154,7 @@ void SceneRenderer::render(const RenderScene& scene, const OrbitCamera& camera,
 
     if (scene.showGrid)
         drawGrid(scene, viewProjection);
-    drawParts(scene, view, projection);
+    drawParts(scene, view, projection, QVector2D(pixels.width(), pixels.height()));
     // Overlays stay visible through the surface, like Blender's bone overlay.
     glDisable(GL_DEPTH_TEST);
     drawColoured(scene.lines, GL_LINES, viewProjection, 1.0f);
@@ -172,10 +172,13 @@ void SceneRenderer::render(const RenderScene& scene, const OrbitCamera& camera,
 }
 
 void SceneRenderer::drawParts(const RenderScene& scene, const QMatrix4x4& view,
-                              const QMatrix4x4& projection) {
+                              const QMatrix4x4& projection, const QVector2D& pixels) {
     meshProgram_.bind();
     meshProgram_.setUniformValue("view", view);
     meshProgram_.setUniformValue("projection", projection);
+    meshProgram_.setUniformValue("viewportPixels", pixels);
+    meshProgram_.setUniformValue("outlinePixels", 0.0f);
+    meshProgram_.setUniformValue("flatColour", 0);
     meshProgram_.setUniformValue("dualQuaternionSkinning", scene.dualQuaternionSkinning ? 1 : 0);
     for (const RenderPart& item : scene.parts) {
         GpuMesh& gpu = meshFor(item.part);
@@ -188,9 +191,22 @@ void SceneRenderer::drawParts(const RenderScene& scene, const QMatrix4x4& view,
             meshProgram_.setUniformValueArray("boneDual", item.boneDual.data(), bones);
             meshProgram_.setUniformValueArray("boneRows", item.boneRows.data(), 3 * bones);
         }
+        gpu.vao.bind();
+        if (item.selected) {
+            // The selection outline: back faces pushed out by a few pixels,
+            // in Blender's selection orange, before the part itself.
+            meshProgram_.setUniformValue("outlinePixels", 2.5f);
+            meshProgram_.setUniformValue("flatColour", 1);
+            meshProgram_.setUniformValue("baseColour", QVector3D(1.0f, 0.55f, 0.1f));
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_FRONT);
+            glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+            glDisable(GL_CULL_FACE);
+            meshProgram_.setUniformValue("outlinePixels", 0.0f);
+            meshProgram_.setUniformValue("flatColour", 0);
+        }
         meshProgram_.setUniformValue("baseColour", item.colour);
         meshProgram_.setUniformValue("highlight", item.selected ? 1.0f : 0.0f);
-        gpu.vao.bind();
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.0f, 1.0f);
         glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
