@@ -19,6 +19,7 @@
 #include <QUndoView>
 
 #include "DocumentView.h"
+#include "MouseHint.h"
 #include "base/Error.h"
 #include "dialogs/ExportDialog.h"
 #include "model/Autosave.h"
@@ -77,6 +78,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
     connect(sketchTool_, &SketchTool::hintMessage, this,
             [this](const QString& m) { showStatus(m, 5000); });
     connect(properties_, &PropertiesPanel::statusMessage, this, &MainWindow::showStatus);
+    mouseHint_ = new MouseHint(tabs_);
     createActions();
     createDocks();
 
@@ -87,6 +89,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
         resize(1280, 800);
     rebuildRecentMenu();
     updateTitle();
+    mouseHint_->showOnFirstRun();
     showStatus(tr("Ready: S sketches a part, Q selects, P poses; middle drag orbits, wheel zooms"));
 }
 
@@ -221,6 +224,10 @@ void MainWindow::createActions() {
     sketchToolAction_->setChecked(true);
 
     auto* help = menuBar()->addMenu(tr("&Help"));
+    add(help, tr("&Mouse Gestures"), QKeySequence(), [this] {
+        mouseHint_->show();
+        mouseHint_->raise();
+    });
     add(help, tr("&About RigMesh Studio"), QKeySequence(), [this] {
         QMessageBox::about(this, tr("About RigMesh Studio"),
                            tr("<b>RigMesh Studio</b><p>Sketch a silhouette, get a rigged part: "
@@ -267,6 +274,11 @@ DocumentView* MainWindow::addDocument(std::unique_ptr<model::Document> document)
         if (view == currentView())
             updateTitle();
     };
+    // The first part a user makes shows they have the gestures.
+    connect(doc, &model::Document::partInserted, mouseHint_, [this] {
+        if (mouseHint_->isVisible())
+            mouseHint_->dismiss();
+    });
     connect(doc, &model::Document::modifiedChanged, this, refreshTab);
     connect(doc, &model::Document::filePathChanged, this, refreshTab);
     autosaves_[view] = new model::Autosave(doc, recoveryDirectory_, view);

@@ -23,6 +23,8 @@ class Document;
 
 namespace rigmesh::widgets {
 
+class MouseHint;
+
 class DocumentView;
 class OutlinerPanel;
 class PropertiesPanel;
@@ -98,6 +100,7 @@ class MainWindow : public QMainWindow {
     QString recoveryDirectory_;
     int untitledCount_ = 0;  // new documents are "Untitled 1", "Untitled 2", ...
     std::map<DocumentView*, model::Autosave*> autosaves_;
+    MouseHint* mouseHint_ = nullptr;
 };
 
 }  // namespace rigmesh::widgets

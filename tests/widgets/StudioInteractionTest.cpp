@@ -6,6 +6,7 @@
 #include <QDoubleSpinBox>
 #include <QIcon>
 #include <QImage>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTreeView>
@@ -93,6 +94,30 @@ TEST_F(Studio, SelectedPartIsOutlined) {
     const int unselected = outlinePixels();
     EXPECT_GT(selected, 500) << "an outline around the selected part";
     EXPECT_LT(unselected, selected / 20);
+}
+
+TEST(StudioFirstRun, MouseHintShowsOnceUntilTheFirstPartIsMade) {
+    QSettings().remove(QStringLiteral("hints/mouseShown"));
+    QTemporaryDir recovery;
+    auto window = std::make_unique<widgets::MainWindow>(recovery.path());
+    window->resize(1200, 800);
+    window->newDocument();
+    settle(window.get());
+    auto* hint = window->findChild<QWidget*>(QStringLiteral("MouseHint"));
+    ASSERT_NE(hint, nullptr);
+    EXPECT_TRUE(hint->isVisible()) << "a first run shows the mouse gestures";
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_first_run.png"));
+    window->activateSketchTool();
+    widgets::Viewport* viewport = window->currentView()->viewport();
+    drag(viewport,
+         ellipseStroke(QPointF(viewport->width() / 2.0, viewport->height() / 2.0), 200, 60));
+    ASSERT_EQ(window->currentDocument()->partCount(), 1);
+    EXPECT_FALSE(hint->isVisible()) << "the first part closes it";
+    // The next start does not show it again.
+    auto again = std::make_unique<widgets::MainWindow>(recovery.path());
+    again->newDocument();
+    settle(again.get());
+    EXPECT_FALSE(again->findChild<QWidget*>(QStringLiteral("MouseHint"))->isVisible());
 }
 
 TEST_F(Studio, MouseStrokeInTheViewportCreatesARiggedPart) {
