@@ -213,9 +213,9 @@ void MainWindow::createActions() {
     poseToolAction_->setIcon(QIcon(QStringLiteral(":/icons/pose.svg")));
     tools->addSeparator();
     add(tools, tr("&Reset Pose"), QKeySequence(Qt::ALT | Qt::Key_R), &MainWindow::resetPose);
-    for (QAction* a : {selectToolAction_, sketchToolAction_, poseToolAction_}) {
-        a->setCheckable(true);
-        toolGroup_->addAction(a);
+    for (const auto& [action, tool] : toolPairs()) {
+        action->setCheckable(true);
+        toolGroup_->addAction(action);
     }
     toolbar->addSeparator();
     toolbar->addAction(selectToolAction_);
@@ -432,33 +432,38 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->accept();
 }
 
-void MainWindow::activateSelectTool() {
-    selectToolAction_->setChecked(true);
+// One activation path for every tool: its action checked, the current
+// view's viewport given the tool, its hint in the status bar.
+void MainWindow::activateTool(QAction* action, ViewportTool* tool) {
+    action->setChecked(true);
     if (auto* v = currentView())
-        v->viewport()->setTool(selectTool_);
-    showStatus(selectTool_->hint());
+        v->viewport()->setTool(tool);
+    showStatus(tool->hint());
+}
+
+void MainWindow::activateSelectTool() {
+    activateTool(selectToolAction_, selectTool_);
 }
 
 void MainWindow::activateSketchTool() {
-    sketchToolAction_->setChecked(true);
-    if (auto* v = currentView())
-        v->viewport()->setTool(sketchTool_);
-    showStatus(sketchTool_->hint());
-}
-
-ViewportTool* MainWindow::activeTool() const {
-    if (sketchToolAction_->isChecked())
-        return sketchTool_;
-    if (poseToolAction_->isChecked())
-        return poseTool_;
-    return selectTool_;
+    activateTool(sketchToolAction_, sketchTool_);
 }
 
 void MainWindow::activatePoseTool() {
-    poseToolAction_->setChecked(true);
-    if (auto* v = currentView())
-        v->viewport()->setTool(poseTool_);
-    showStatus(poseTool_->hint());
+    activateTool(poseToolAction_, poseTool_);
+}
+
+ViewportTool* MainWindow::activeTool() const {
+    for (const auto& [action, tool] : toolPairs())
+        if (action->isChecked())
+            return tool;
+    return selectTool_;
+}
+
+std::vector<std::pair<QAction*, ViewportTool*>> MainWindow::toolPairs() const {
+    return {{selectToolAction_, selectTool_},
+            {sketchToolAction_, sketchTool_},
+            {poseToolAction_, poseTool_}};
 }
 
 void MainWindow::resetPose() {

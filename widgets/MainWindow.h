@@ -10,6 +10,8 @@
 #include <QUndoGroup>
 #include <map>
 #include <memory>
+#include <utility>
+#include <vector>
 
 class QTabWidget;
 class QUndoView;
@@ -73,6 +75,9 @@ class MainWindow : public QMainWindow {
     void createDocks();
     void currentTabChanged(int index);
     class ViewportTool* activeTool() const;
+    void activateTool(QAction* action, class ViewportTool* tool);
+    // Every tool with its action, in toolbar order.
+    std::vector<std::pair<QAction*, class ViewportTool*>> toolPairs() const;
     void updateTitle();
     bool saveDocument(DocumentView* view, const QString& path);
     bool maybeSave(DocumentView* view);

@@ -304,6 +304,33 @@ TEST_F(Studio, DraggingABoneAnywhereTurnsItAboutItsHead) {
     EXPECT_EQ(document()->selection().joint, grabbed->head) << "the turned joint is selected";
 }
 
+TEST_F(Studio, DraggingTheRingOfTheSelectedJointTurnsIt) {
+    const model::PartId id = sketchEllipse();
+    ASSERT_NE(id, model::kNoPart);
+    const Skeleton& skeleton = document()->part(id).part->skeleton;
+    const JointId joint = skeleton.root();
+    window->activatePoseTool();
+    QTest::qWait(50);
+    document()->setSelection({id, joint});
+    const QVector3D at = viewport()->camera().project(viewport()->jointWorldPosition(id, joint),
+                                                      QSizeF(viewport()->size()));
+    const QPointF centre(at.x(), at.y());
+    // Grab the ring straight above the joint (44 px out) and sweep 40 degrees.
+    std::vector<QPointF> arc;
+    for (int i = 0; i <= 10; ++i) {
+        const double a = qDegreesToRadians(-90.0 + 4.0 * i);
+        arc.emplace_back(centre.x() + 44.0 * std::cos(a), centre.y() + 44.0 * std::sin(a));
+    }
+    ASSERT_FALSE(viewport()->jointAt(arc.front()).has_value());
+    const int stepsBefore = document()->undoStack()->count();
+    drag(viewport(), arc);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_pose_ring.png"));
+    EXPECT_EQ(document()->undoStack()->count(), stepsBefore + 1);
+    const double turned =
+        document()->part(id).pose.rotation(joint).angularDistance(Eigen::Quaterniond::Identity());
+    EXPECT_NEAR(turned, qDegreesToRadians(40.0), qDegreesToRadians(4.0));
+}
+
 TEST_F(Studio, DraggingAHandMovesNoVertexOfTheOtherLimbs) {
     const Sketch sketch = parseSketchJson(resources::exampleSketchJson(), "example.json");
     document()->undoStack()->push(

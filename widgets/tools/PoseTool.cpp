@@ -8,35 +8,34 @@
 #include "model/commands/SetJointPinnedCommand.h"
 #include "model/commands/SetPoseCommand.h"
 #include "pose/InverseKinematics.h"
+#include "viewport/RenderScene.h"
+#include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
 
 namespace rigmesh::widgets {
 namespace {
 
-Vec3 toEigen(const QVector3D& v) {
-    return Vec3(v.x(), v.y(), v.z());
-}
-
-// The joint at the head of the bone that ends at `joint` (its parent), if any.
-JointId parentJoint(const Skeleton& skeleton, JointId joint) {
-    for (const Bone& bone : skeleton.bones())
-        if (bone.tail == joint)
-            return bone.head;
-    return kNoJoint;
-}
+// The rotation ring around the selected joint: its radius and the band
+// either side of it that grabs it.
+constexpr double kRingRadiusPixels = 44.0;
+constexpr double kRingBandPixels = 6.0;
 
 }  // namespace
 
 QString PoseTool::hint() const {
     return tr(
-        "Pose: drag a joint (IK, this limb only); Alt + drag reaches through the whole body; drag "
-        "a "
-        "bone, or Ctrl + drag a joint, to turn it (FK); Shift + click pins or unpins a joint");
+        "Pose: drag a joint (IK, this limb only); Alt + drag reaches through the whole "
+        "body; drag a bone, Ctrl + drag a joint or drag the selected joint's ring to turn "
+        "it (FK); Shift + click pins or unpins a joint");
 }
 
 void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
     model::Document& document = *viewport.document();
     const auto hit = viewport.jointAt(event->position());
+    if (!hit && onRing(viewport, event->position())) {
+        grabRing(viewport, event->position());
+        return;
+    }
     if (!hit) {
         if (const auto bone = viewport.boneAt(event->position()))
             grabBone(viewport, *bone, event->position());
@@ -61,7 +60,7 @@ void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
     drag.wholeBody = (event->modifiers() & Qt::AltModifier) != 0;
     if (event->modifiers() & Qt::ControlModifier) {
         drag.forward = true;
-        drag.pivot = parentJoint(node.part->skeleton, hit->joint);
+        drag.pivot = poseParent(node.part->skeleton, hit->joint);
         if (drag.pivot == kNoJoint) {
             emit hintMessage(
                 tr("The root joint has no bone to turn: drag it without Ctrl to move the chain"));
@@ -71,13 +70,85 @@ void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
     drag_ = drag;
 }
 
+std::optional<QPointF> PoseTool::ringCentre(const Viewport& viewport) const {
+    const model::Document& document = *viewport.document();
+    const model::Selection selection = document.selection();
+    const model::PartNode* node = document.findPart(selection.part);
+    if (!node || !node->visible || !node->part || !node->part->skeleton.hasJoint(selection.joint))
+        return std::nullopt;
+    const QVector3D at = viewport.camera().project(
+        viewport.jointWorldPosition(selection.part, selection.joint), QSizeF(viewport.size()));
+    return QPointF(at.x(), at.y());
+}
+
+bool PoseTool::onRing(const Viewport& viewport, const QPointF& pixel) const {
+    const auto centre = ringCentre(viewport);
+    if (!centre)
+        return false;
+    const double d = std::hypot(pixel.x() - centre->x(), pixel.y() - centre->y());
+    return std::abs(d - kRingRadiusPixels) <= kRingBandPixels;
+}
+
+void PoseTool::grabRing(Viewport& viewport, const QPointF& pixel) {
+    // The ring turns the selected joint itself about the view axis: its
+    // rotation, which carries its child bones (Blender's R on a pose bone).
+    const model::Document& document = *viewport.document();
+    const model::Selection selection = document.selection();
+    Drag drag;
+    drag.part = selection.part;
+    drag.joint = selection.joint;
+    drag.pivot = selection.joint;
+    drag.grabPoint = viewport.jointWorldPosition(selection.part, selection.joint);
+    drag.startPixel = pixel;
+    drag.startPose = document.part(selection.part).pose;
+    drag.forward = true;
+    drag_ = drag;
+}
+
+void PoseTool::hover(Viewport& viewport, QMouseEvent* event) {
+    const bool hovered = onRing(viewport, event->position());
+    if (hovered != ringHovered_) {
+        ringHovered_ = hovered;
+        viewport.update();
+    }
+}
+
+void PoseTool::addOverlay(const Viewport& viewport, ColouredVertices& lines) const {
+    const auto centre = ringCentre(viewport);
+    if (!centre)
+        return;
+    const model::Selection selection = viewport.document()->selection();
+    const QVector3D through = viewport.jointWorldPosition(selection.part, selection.joint);
+    const bool active = ringHovered_ || (drag_ && drag_->forward && drag_->pivot == drag_->joint);
+    const QVector3D colour = active ? QVector3D(1.0f, 0.8f, 0.4f) : QVector3D(1.0f, 0.55f, 0.1f);
+    // The ring on the view plane through the joint, as segments; two small
+    // arrowheads on it say "turn".
+    auto onScreen = [&](double angle, double radius) {
+        return viewport.viewPlanePoint(
+            QPointF(centre->x() + radius * std::cos(angle), centre->y() + radius * std::sin(angle)),
+            through);
+    };
+    constexpr int kSegments = 64;
+    for (int i = 0; i < kSegments; ++i) {
+        lines.add(onScreen(2 * M_PI * i / kSegments, kRingRadiusPixels), colour);
+        lines.add(onScreen(2 * M_PI * (i + 1) / kSegments, kRingRadiusPixels), colour);
+    }
+    for (const double angle : {M_PI / 4, M_PI + M_PI / 4}) {
+        const QVector3D tip = onScreen(angle, kRingRadiusPixels);
+        for (const double side : {-5.0, 5.0}) {
+            lines.add(tip, colour);
+            lines.add(onScreen(angle - 0.16, kRingRadiusPixels + side), colour);
+        }
+    }
+}
+
 void PoseTool::grabBone(Viewport& viewport, const BoneHit& bone, const QPointF& pixel) {
     // FK by the bone (issue 11 item 2): it turns about its end nearer the
     // root, whose rotation it is (the pose rotates a joint's child bones).
     model::Document& document = *viewport.document();
     const model::PartNode& node = document.part(bone.part);
     const Skeleton& skeleton = node.part->skeleton;
-    const bool reversed = parentJoint(skeleton, bone.from) == bone.to;  // never reoriented
+    const bool reversed = poseParent(skeleton, bone.from) == bone.to;  // never reoriented
     Drag drag;
     drag.part = bone.part;
     drag.pivot = reversed ? bone.to : bone.from;
@@ -122,20 +193,19 @@ void PoseTool::rotateWithFk(Viewport& viewport, const QPointF& pixel) {
     // The angle swept around the pivot on screen, about the view direction.
     const QVector3D pivotWorld = viewport.jointWorldPosition(drag_->part, drag_->pivot);
     const QVector3D pivotScreen = viewport.camera().project(pivotWorld, QSizeF(viewport.size()));
-    const double start = std::atan2(drag_->startPixel.y() - pivotScreen.y(),
-                                    drag_->startPixel.x() - pivotScreen.x());
-    const double now = std::atan2(pixel.y() - pivotScreen.y(), pixel.x() - pivotScreen.x());
+    const double sweep =
+        screenSweep(QPointF(pivotScreen.x(), pivotScreen.y()), drag_->startPixel, pixel);
     const Vec3 viewAxis = toEigen(viewport.camera().forward());
     // Screen y points down: a clockwise sweep on screen is a positive turn
     // about the view direction.
-    const Eigen::Quaterniond worldTurn(Eigen::AngleAxisd(now - start, viewAxis));
+    const Eigen::Quaterniond worldTurn(Eigen::AngleAxisd(sweep, viewAxis));
     const Eigen::Quaterniond partTurn =
         node.placement.rotation.conjugate() * worldTurn * node.placement.rotation;
     // Local rotations compose in the parent's frame: L' = W_parent^-1 R W_parent L.
     const PosedSkeleton& posed = viewport.posedSkeleton(node);
     Pose pose = drag_->startPose;
     const Skeleton& skeleton = node.part->skeleton;
-    const JointId grand = parentJoint(skeleton, drag_->pivot);
+    const JointId grand = poseParent(skeleton, drag_->pivot);
     const Eigen::Quaterniond parentWorld =
         grand == kNoJoint ? Eigen::Quaterniond::Identity()
                           : posed.jointTransforms[skeleton.indexOfJoint(grand)].rotation;

@@ -2,9 +2,10 @@
 // Drag a joint: inverse kinematics moves the chain from it up to the root or
 // the nearest junction or pinned joint (Alt: the root), bone lengths kept.
 // Drag a bone anywhere along it, or Ctrl + drag a joint: forward kinematics,
-// the bone turns about its head in the view plane. Shift + click a joint: pin
-// or unpin it. Every drag is previewed live and pushed as one undo step on
-// release.
+// the bone turns about its head in the view plane. The selected joint wears a
+// rotation ring: drag it to turn the joint about the view axis (Blender's R).
+// Shift + click a joint: pin or unpin it. Every drag is previewed live and
+// pushed as one undo step on release.
 #pragma once
 
 #include <QObject>
@@ -27,11 +28,17 @@ class PoseTool : public QObject, public ViewportTool {
     void move(Viewport& viewport, QMouseEvent* event) override;
     void release(Viewport& viewport, QMouseEvent* event) override;
     void cancel(Viewport& viewport) override;
+    void hover(Viewport& viewport, QMouseEvent* event) override;
+    void addOverlay(const Viewport& viewport, ColouredVertices& lines) const override;
 
   signals:
     void hintMessage(const QString& message);
 
   private:
+    // The selected joint's place on screen, when the ring is shown.
+    std::optional<QPointF> ringCentre(const Viewport& viewport) const;
+    bool onRing(const Viewport& viewport, const QPointF& pixel) const;
+    void grabRing(Viewport& viewport, const QPointF& pixel);
     void grabBone(Viewport& viewport, const BoneHit& bone, const QPointF& pixel);
     void dragWithIk(Viewport& viewport, const QPointF& pixel);
     void rotateWithFk(Viewport& viewport, const QPointF& pixel);
@@ -47,6 +54,7 @@ class PoseTool : public QObject, public ViewportTool {
         Pose startPose;
     };
     std::optional<Drag> drag_;
+    bool ringHovered_ = false;
 };
 
 }  // namespace rigmesh::widgets

@@ -5,6 +5,7 @@
 
 #include "base/Error.h"
 #include "model/commands/MovePartCommand.h"
+#include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
 
 namespace rigmesh::widgets {
@@ -52,21 +53,16 @@ void SelectTool::move(Viewport& viewport, QMouseEvent* event) {
         for (const Vec3& v : node.part->mesh.vertices)
             box.extend(v);
         const Vec3 centre = startPlacement_.rotation * box.center() + startPlacement_.translation;
-        const QVector3D screen = viewport.camera().project(
-            QVector3D(float(centre.x()), float(centre.y()), float(centre.z())),
-            QSizeF(viewport.size()));
-        const double start = std::atan2(grabPixel_.y() - screen.y(), grabPixel_.x() - screen.x());
-        const double now =
-            std::atan2(event->position().y() - screen.y(), event->position().x() - screen.x());
-        const QVector3D axis = viewport.camera().forward();
+        const QVector3D screen = viewport.camera().project(toQt(centre), QSizeF(viewport.size()));
+        const double sweep =
+            screenSweep(QPointF(screen.x(), screen.y()), grabPixel_, event->position());
         const Eigen::Quaterniond turn(
-            Eigen::AngleAxisd(now - start, Vec3(axis.x(), axis.y(), axis.z())));
+            Eigen::AngleAxisd(sweep, toEigen(viewport.camera().forward())));
         target.rotation = (turn * startPlacement_.rotation).normalized();
         target.translation = turn * (startPlacement_.translation - centre) + centre;
     } else {
         const QVector3D now = viewport.viewPlanePoint(event->position(), grabPoint_);
-        target.translation +=
-            Vec3(now.x() - grabPoint_.x(), now.y() - grabPoint_.y(), now.z() - grabPoint_.z());
+        target.translation += toEigen(now - grabPoint_);
     }
     // A live preview; the drag becomes one command on release.
     document.setPlacement(*dragged_, target);

@@ -2,6 +2,7 @@
 
 #include <QLineF>
 
+#include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
 
 namespace rigmesh::widgets {
@@ -91,7 +92,7 @@ void SketchTool::release(Viewport& viewport, QMouseEvent* event) {
     stroke.reserve(pixels_.size());
     for (const QPointF& pixel : pixels_) {
         const QVector3D world = viewport.sketchPlanePoint(pixel);
-        const Vec3 local = toPlane * (Vec3(world.x(), world.y(), world.z()) - plane.translation);
+        const Vec3 local = toPlane * (toEigen(world) - plane.translation);
         stroke.emplace_back(local.x(), local.y());
     }
     pixels_.clear();

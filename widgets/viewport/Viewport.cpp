@@ -13,17 +13,11 @@
 
 #include "pose/ForwardKinematics.h"
 #include "viewport/SceneRenderer.h"
+#include "viewport/ViewMath.h"
 #include "viewport/ViewportTool.h"
 
 namespace rigmesh::widgets {
 namespace {
-
-QVector3D toQt(const Vec3& v) {
-    return QVector3D(float(v.x()), float(v.y()), float(v.z()));
-}
-Vec3 toEigen(const QVector3D& v) {
-    return Vec3(v.x(), v.y(), v.z());
-}
 
 QMatrix4x4 placementMatrix(const model::Placement& placement) {
     Eigen::Affine3d affine = Eigen::Translation3d(placement.translation) * placement.rotation;
@@ -299,6 +293,8 @@ RenderScene Viewport::gatherScene() const {
     }
     for (const QVector3D& p : strokeOverlay_)
         scene.stroke.add(p, QVector3D(1.0f, 0.45f, 0.2f));
+    if (tool_)
+        tool_->addOverlay(*this, scene.lines);
     return scene;
 }
 
@@ -429,8 +425,12 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         update();
         return;
     }
-    if (tool_)
+    if (!tool_)
+        return;
+    if (event->buttons() & Qt::LeftButton)
         tool_->move(*this, event);
+    else
+        tool_->hover(*this, event);
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
@@ -443,6 +443,8 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {
+    if (tool_ && tool_->wheel(*this, event))
+        return;
     camera_.dolly(event->angleDelta().y() / 120.0);
     update();
 }

@@ -41,6 +41,7 @@ class Viewport : public QOpenGLWidget {
 
     model::Document* document() const { return document_; }
     OrbitCamera& camera() { return camera_; }
+    const OrbitCamera& camera() const { return camera_; }
     void setTool(ViewportTool* tool);  // not owned; nullptr = navigation only
     ViewportTool* tool() const { return tool_; }
 

@@ -1,13 +1,21 @@
 // A tool the viewport hands its left-button mouse events to (sketch, select,
-// pose). Camera navigation (middle button, wheel) stays with the viewport.
+// pose), in the manner of Krita's tool base: press, move and release for a
+// drag (previewed live, one command pushed on release), hover for mouse
+// moves without a button, the wheel (before the camera), overlay lines drawn
+// over the 3D view and an options widget. Camera navigation (middle button,
+// the wheel a tool leaves) stays with the viewport.
 #pragma once
 
 #include <QMouseEvent>
 #include <QString>
+#include <QWheelEvent>
+
+class QWidget;
 
 namespace rigmesh::widgets {
 
 class Viewport;
+struct ColouredVertices;
 
 class ViewportTool {
   public:
@@ -20,6 +28,15 @@ class ViewportTool {
     virtual void release(Viewport& viewport, QMouseEvent* event) = 0;
     // Called when the tool stops being the active one.
     virtual void cancel(Viewport&) {}
+    // The mouse moved with no button held.
+    virtual void hover(Viewport&, QMouseEvent*) {}
+    // True if the tool used the wheel (then the camera does not zoom).
+    virtual bool wheel(Viewport&, QWheelEvent*) { return false; }
+    // Handles, rings and guides drawn over the 3D view with the skeleton:
+    // world-space line segments (pairs of points) added to `lines`.
+    virtual void addOverlay(const Viewport&, ColouredVertices&) const {}
+    // The tool's settings, shown while it is active; none by default.
+    virtual QWidget* optionsWidget() { return nullptr; }
 };
 
 }  // namespace rigmesh::widgets
