@@ -8,9 +8,11 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QIcon>
+#include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
+#include <QStackedWidget>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyle>
@@ -249,6 +251,16 @@ void MainWindow::createDocks() {
     dock(tr("Properties"), "propertiesDock", properties_, Qt::RightDockWidgetArea);
     dock(tr("History"), "historyDock", history_, Qt::LeftDockWidgetArea);
     history_->setEmptyLabel(tr("<original>"));
+    // The active tool's options (ViewportTool::optionsWidget), one page each.
+    toolOptions_ = new QStackedWidget(this);
+    auto* none = new QLabel(tr("This tool has no options."), toolOptions_);
+    none->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    none->setMargin(6);
+    toolOptions_->addWidget(none);
+    for (const auto& [action, tool] : toolPairs())
+        if (QWidget* options = tool->optionsWidget())
+            toolOptions_->addWidget(options);
+    dock(tr("Tool Options"), "toolOptionsDock", toolOptions_, Qt::LeftDockWidgetArea);
 }
 
 DocumentView* MainWindow::addDocument(std::unique_ptr<model::Document> document) {
@@ -436,6 +448,8 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 // view's viewport given the tool, its hint in the status bar.
 void MainWindow::activateTool(QAction* action, ViewportTool* tool) {
     action->setChecked(true);
+    QWidget* options = tool->optionsWidget();
+    toolOptions_->setCurrentIndex(options ? toolOptions_->indexOf(options) : 0);
     if (auto* v = currentView())
         v->viewport()->setTool(tool);
     showStatus(tool->hint());

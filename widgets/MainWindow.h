@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+class QStackedWidget;
 class QTabWidget;
 class QUndoView;
 class QMenu;
@@ -106,6 +107,7 @@ class MainWindow : public QMainWindow {
     int untitledCount_ = 0;  // new documents are "Untitled 1", "Untitled 2", ...
     std::map<DocumentView*, model::Autosave*> autosaves_;
     MouseHint* mouseHint_ = nullptr;
+    QStackedWidget* toolOptions_ = nullptr;
 };
 
 }  // namespace rigmesh::widgets

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QIcon>
 #include <QImage>
@@ -302,6 +303,45 @@ TEST_F(Studio, DraggingABoneAnywhereTurnsItAboutItsHead) {
         }
     }
     EXPECT_EQ(document()->selection().joint, grabbed->head) << "the turned joint is selected";
+}
+
+TEST_F(Studio, PoseToolOptionReachesThroughTheWholeBody) {
+    const Sketch sketch = parseSketchJson(resources::exampleSketchJson(), "example.json");
+    document()->undoStack()->push(
+        model::CreatePartCommand::create(*document(), sketch.points, "biped").release());
+    viewport()->frameAll();
+    const model::PartId id = document()->parts().front().id;
+    const Skeleton& skeleton = document()->part(id).part->skeleton;
+    window->activatePoseTool();
+    QTest::qWait(50);
+    auto* wholeBody = window->findChild<QCheckBox*>(QStringLiteral("poseWholeBody"));
+    ASSERT_NE(wholeBody, nullptr);
+    EXPECT_TRUE(wholeBody->isVisibleTo(window.get())) << "the Tool Options dock shows it";
+    wholeBody->setChecked(true);
+    // A hand (the leaf farthest sideways), dragged: with the option on, the
+    // chain passes its junction, so a joint of degree 3 or more turns.
+    JointId hand = kNoJoint;
+    double side = -1;
+    for (const Joint& joint : skeleton.joints())
+        if (skeleton.degree(joint.id) == 1 && std::abs(joint.position.x()) > side) {
+            side = std::abs(joint.position.x());
+            hand = joint.id;
+        }
+    const QVector3D at = viewport()->camera().project(viewport()->jointWorldPosition(id, hand),
+                                                      QSizeF(viewport()->size()));
+    std::vector<QPointF> path;
+    for (int i = 0; i <= 10; ++i)
+        path.emplace_back(at.x() - 4.0 * i, at.y() - 8.0 * i);
+    drag(viewport(), path);
+    bool junctionTurned = false;
+    for (const auto& [joint, q] : document()->part(id).pose.rotations)
+        junctionTurned =
+            junctionTurned || (skeleton.degree(joint) >= 3 &&
+                               q.angularDistance(Eigen::Quaterniond::Identity()) > 1e-6);
+    EXPECT_TRUE(junctionTurned);
+    wholeBody->setChecked(false);
+    window->activateSketchTool();
+    EXPECT_FALSE(wholeBody->isVisibleTo(window.get())) << "other tools show their own options";
 }
 
 TEST_F(Studio, DraggingTheRingOfTheSelectedJointTurnsIt) {

@@ -1,5 +1,7 @@
 #include "tools/PoseTool.h"
 
+#include <QCheckBox>
+#include <QVBoxLayout>
 #include <QtMath>
 #include <cmath>
 
@@ -57,7 +59,8 @@ void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
     drag.grabPoint = viewport.jointWorldPosition(hit->part, hit->joint);
     drag.startPixel = event->position();
     drag.startPose = node.pose;
-    drag.wholeBody = (event->modifiers() & Qt::AltModifier) != 0;
+    // Alt flips the tool option for this drag.
+    drag.wholeBody = wholeBodyByDefault_ != ((event->modifiers() & Qt::AltModifier) != 0);
     if (event->modifiers() & Qt::ControlModifier) {
         drag.forward = true;
         drag.pivot = poseParent(node.part->skeleton, hit->joint);
@@ -103,6 +106,22 @@ void PoseTool::grabRing(Viewport& viewport, const QPointF& pixel) {
     drag.startPose = document.part(selection.part).pose;
     drag.forward = true;
     drag_ = drag;
+}
+
+QWidget* PoseTool::optionsWidget() {
+    if (options_)
+        return options_;
+    options_ = new QWidget;
+    auto* layout = new QVBoxLayout(options_);
+    auto* wholeBody = new QCheckBox(tr("IK reaches through the whole body"), options_);
+    wholeBody->setObjectName(QStringLiteral("poseWholeBody"));
+    wholeBody->setToolTip(
+        tr("Off: a drag moves the limb up to the nearest junction or pinned "
+           "joint. Alt + drag does the other for one drag."));
+    connect(wholeBody, &QCheckBox::toggled, this, [this](bool on) { wholeBodyByDefault_ = on; });
+    layout->addWidget(wholeBody);
+    layout->addStretch();
+    return options_;
 }
 
 void PoseTool::hover(Viewport& viewport, QMouseEvent* event) {

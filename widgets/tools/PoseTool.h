@@ -30,6 +30,8 @@ class PoseTool : public QObject, public ViewportTool {
     void cancel(Viewport& viewport) override;
     void hover(Viewport& viewport, QMouseEvent* event) override;
     void addOverlay(const Viewport& viewport, ColouredVertices& lines) const override;
+    // "Reach through the whole body" (what Alt does for one drag).
+    QWidget* optionsWidget() override;
 
   signals:
     void hintMessage(const QString& message);
@@ -55,6 +57,8 @@ class PoseTool : public QObject, public ViewportTool {
     };
     std::optional<Drag> drag_;
     bool ringHovered_ = false;
+    bool wholeBodyByDefault_ = false;
+    QWidget* options_ = nullptr;  // owned by the options dock once shown
 };
 
 }  // namespace rigmesh::widgets
