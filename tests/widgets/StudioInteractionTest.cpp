@@ -46,6 +46,25 @@ class Studio : public testing::Test {
         settle(window.get());
     }
     widgets::Viewport* viewport() const { return window->currentView()->viewport(); }
+    // The example biped as a part, framed: its id.
+    model::PartId addExampleBiped() {
+        const Sketch sketch = parseSketchJson(resources::exampleSketchJson(), "example.json");
+        document()->undoStack()->push(
+            model::CreatePartCommand::create(*document(), sketch.points, "biped").release());
+        viewport()->frameAll();
+        return document()->parts().front().id;
+    }
+    // A hand: the leaf joint farthest sideways.
+    static JointId sidewaysHand(const Skeleton& skeleton) {
+        JointId hand = kNoJoint;
+        double side = -1;
+        for (const Joint& joint : skeleton.joints())
+            if (skeleton.degree(joint.id) == 1 && std::abs(joint.position.x()) > side) {
+                side = std::abs(joint.position.x());
+                hand = joint.id;
+            }
+        return hand;
+    }
     // Sketches a long ellipse across the viewport: the new part's id.
     model::PartId sketchEllipse() {
         window->activateSketchTool();
@@ -306,11 +325,7 @@ TEST_F(Studio, DraggingABoneAnywhereTurnsItAboutItsHead) {
 }
 
 TEST_F(Studio, PoseToolOptionReachesThroughTheWholeBody) {
-    const Sketch sketch = parseSketchJson(resources::exampleSketchJson(), "example.json");
-    document()->undoStack()->push(
-        model::CreatePartCommand::create(*document(), sketch.points, "biped").release());
-    viewport()->frameAll();
-    const model::PartId id = document()->parts().front().id;
+    const model::PartId id = addExampleBiped();
     const Skeleton& skeleton = document()->part(id).part->skeleton;
     window->activatePoseTool();
     QTest::qWait(50);
@@ -320,13 +335,7 @@ TEST_F(Studio, PoseToolOptionReachesThroughTheWholeBody) {
     wholeBody->setChecked(true);
     // A hand (the leaf farthest sideways), dragged: with the option on, the
     // chain passes its junction, so a joint of degree 3 or more turns.
-    JointId hand = kNoJoint;
-    double side = -1;
-    for (const Joint& joint : skeleton.joints())
-        if (skeleton.degree(joint.id) == 1 && std::abs(joint.position.x()) > side) {
-            side = std::abs(joint.position.x());
-            hand = joint.id;
-        }
+    const JointId hand = sidewaysHand(skeleton);
     const QVector3D at = viewport()->camera().project(viewport()->jointWorldPosition(id, hand),
                                                       QSizeF(viewport()->size()));
     std::vector<QPointF> path;
@@ -372,11 +381,7 @@ TEST_F(Studio, DraggingTheRingOfTheSelectedJointTurnsIt) {
 }
 
 TEST_F(Studio, DraggingAHandMovesNoVertexOfTheOtherLimbs) {
-    const Sketch sketch = parseSketchJson(resources::exampleSketchJson(), "example.json");
-    document()->undoStack()->push(
-        model::CreatePartCommand::create(*document(), sketch.points, "biped").release());
-    viewport()->frameAll();
-    const model::PartId id = document()->parts().front().id;
+    const model::PartId id = addExampleBiped();
     const Part& part = *document()->part(id).part;
     const Skeleton& skeleton = part.skeleton;
     // Each leaf's limb: the bones from it up to the first junction.
@@ -394,15 +399,8 @@ TEST_F(Studio, DraggingAHandMovesNoVertexOfTheOtherLimbs) {
         }
         return bones;
     };
-    // A hand: the leaf farthest sideways.
-    JointId hand = kNoJoint;
-    double side = -1;
+    const JointId hand = sidewaysHand(skeleton);
     std::set<int> otherLimbs;
-    for (const Joint& joint : skeleton.joints())
-        if (skeleton.degree(joint.id) == 1 && std::abs(joint.position.x()) > side) {
-            side = std::abs(joint.position.x());
-            hand = joint.id;
-        }
     for (const Joint& joint : skeleton.joints())
         if (skeleton.degree(joint.id) == 1 && joint.id != hand)
             for (int bone : limbOf(joint.id))
