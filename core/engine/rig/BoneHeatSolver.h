@@ -15,6 +15,10 @@
 // L positive semi-definite. Cotangents scale by 1, A by s^2 and H by s^-2, so
 // the system is invariant under scaling mesh and bones together.
 //
+// Faces with a repeated corner, a zero-length edge or collinear corners have
+// no angles; they are left out (a vertex with only such faces takes the mean
+// of its neighbours), so no cotangent pins a vertex with a huge diagonal.
+//
 // Obtuse triangles keep their negative cotangents, as in Pinocchio: L is the
 // P1 finite element stiffness, positive semi-definite for any triangle shape.
 // Negative weights or weights above 1 this may produce are clamped afterwards.

@@ -245,6 +245,52 @@ TEST(BoneHeatSolver, WeightsBelowTheThresholdAreDropped) {
     }
 }
 
+// A junction patch can emit triangles with a repeated corner or three
+// collinear corners. Their cotangents (~1e8) once pinned a vertex at 0 in
+// every solve, so it fell back to one bone among neighbours at 0.2-0.4
+// (issue 19). The solver leaves such faces out: the other vertices get
+// the weights of the clean mesh, and a vertex with only degenerate
+// faces takes the mean of its neighbours.
+TEST(BoneHeatSolver, DegenerateFacesLeaveNoSpike) {
+    const TwoBoneTube tube;
+    const int segments = 24;
+    TriMesh mesh = tube.mesh;
+    // Ring 18 is just before the joint (ring 20), where both bones matter.
+    const int onRing = 18 * segments + 3;
+    const int nextOnRing = onRing + 1;
+    const int nextRing = onRing + segments;
+    mesh.faces.push_back({onRing, onRing, nextRing});  // repeated corner
+    mesh.faces.push_back({onRing, nextRing, nextRing});
+    // A vertex in the middle of an edge, used only by a collinear face.
+    const int middle = mesh.vertexCount();
+    mesh.vertices.push_back(0.5 * (mesh.vertices[onRing] + mesh.vertices[nextOnRing]));
+    mesh.faces.push_back({onRing, middle, nextOnRing});
+
+    const BoneHeatSolver solver(mesh, tube.bones);
+    const BoneHeatSolver clean(tube.mesh, tube.bones);
+    // No pinning: every diagonal entry stays of the order of its neighbours'.
+    const Eigen::VectorXd diagonal = solver.systemMatrix().diagonal();
+    EXPECT_LT(diagonal.maxCoeff(), 100.0 * clean.systemMatrix().diagonal().maxCoeff());
+
+    for (int bone = 0; bone < 2; ++bone) {
+        const Eigen::VectorXd raw = solver.solveBone(bone);
+        const Eigen::VectorXd reference = clean.solveBone(bone);
+        // Up to the pull of the added vertex's tiny heat (1e-6 per edge).
+        EXPECT_LT((raw.head(tube.mesh.vertexCount()) - reference).lpNorm<Eigen::Infinity>(), 1e-6)
+            << "bone " << bone;
+        EXPECT_NEAR(raw[middle], 0.5 * (raw[onRing] + raw[nextOnRing]), 1e-4) << "bone " << bone;
+    }
+    const SkinWeights weights = solver.solveAll();
+    expectPartitionOfUnity(weights, mesh.vertexCount(), 2);
+    const std::vector<double> first = boneWeights(weights, 0);
+    for (int v : {onRing, middle}) {
+        for (int neighbour : {nextOnRing, nextRing, onRing - segments}) {
+            EXPECT_LT(std::abs(first[v] - first[neighbour]), 0.2)
+                << "vertex " << v << " against " << neighbour;
+        }
+    }
+}
+
 TEST(BoneHeatSolver, InvalidInputIsRejectedWithAnError) {
     const TwoBoneTube tube;
     EXPECT_THROW(computeBoneHeatWeights(tube.mesh, {}), Error);
