@@ -86,6 +86,10 @@ void validateInput(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
     if (!(options.heatConstant > 0.0) || !std::isfinite(options.heatConstant)) {
         throw Error("The heat constant must be a positive number.");
     }
+    if (!(options.taperEnd >= 0.0) || !(options.taperStart >= options.taperEnd) ||
+        !(options.taperStart < 1.0)) {
+        throw Error("The weight taper needs 0 <= end <= start < 1.");
+    }
     if (options.threads < 1) {
         throw Error("The skin weight solver needs at least one thread.");
     }
@@ -104,6 +108,16 @@ bool hasAngles(const std::array<int, 3>& face, const std::vector<Vec3>& position
         }
     }
     return true;
+}
+
+double taperedWeight(double w, const BoneHeatOptions& options) {
+    if (!(w >= options.taperEnd) || !(w > 0.0)) {
+        return 0.0;
+    }
+    if (w >= options.taperStart) {
+        return w;
+    }
+    return options.taperStart * (w - options.taperEnd) / (options.taperStart - options.taperEnd);
 }
 
 }  // namespace
@@ -434,17 +448,16 @@ SkinWeights BoneHeatSolver::solveAll() const {
         }
     });
 
-    // Pinocchio's post-processing, with a threshold: negatives to 0, drop tiny
-    // weights, renormalise; an emptied vertex follows its closest bone.
+    // Pinocchio's post-processing with Blender's taper: negatives to 0, small
+    // weights faded out, renormalise; an emptied vertex follows its closest bone.
     SkinWeights result;
     result.perVertex.resize(n);
-    const double minWeight = impl_->options.minWeight;
     for (int v = 0; v < n; ++v) {
         auto& weights = result.perVertex[v];
         double total = 0.0;
         for (int b = 0; b < boneTotal; ++b) {
-            const double w = solutions(v, b);
-            if (w >= minWeight && w > 0.0) {
+            const double w = taperedWeight(solutions(v, b), impl_->options);
+            if (w > 0.0) {
                 weights.emplace_back(b, w);
                 total += w;
             }

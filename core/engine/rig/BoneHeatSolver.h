@@ -42,8 +42,15 @@ struct BoneHeatOptions {
     double heatConstant = 1.0;
     // Bones are solved in parallel on this many threads (visibility too).
     int threads = 2;
-    // Weights below this are dropped before renormalising.
-    double minWeight = 1e-4;
+    // Small weights fade to zero before renormalising, as Blender's bone heat
+    // does (source/blender/editors/armature/meshlaplacian.cc,
+    // heat_limit_weight): a raw weight w below taperEnd is dropped, one in
+    // [taperEnd, taperStart) becomes taperStart (w - taperEnd) / (taperStart -
+    // taperEnd), continuous at both ends; larger ones are kept. Heat decays
+    // exponentially but never reaches zero, so without the taper every bone
+    // leaves a small weight far down its neighbours (issue 19).
+    double taperEnd = 0.025;
+    double taperStart = 0.05;
     // Relative tolerance under which equally close visible bones share a vertex.
     double tieTolerance = 1e-2;
 };

@@ -228,21 +228,33 @@ TEST(BoneHeatSolver, VerticesWithEmptyClosestListAreTestedForVisibility) {
     EXPECT_EQ(solver.closestBones()[tube.mesh.vertexCount() - 2].at(0).first, 0);
 }
 
-TEST(BoneHeatSolver, WeightsBelowTheThresholdAreDropped) {
+// Blender's taper (meshlaplacian.cc heat_limit_weight): raw weights below the
+// end are dropped, those between end and start fade linearly from 0 to start.
+TEST(BoneHeatSolver, SmallWeightsFadeToZeroBetweenTaperEndAndStart) {
     const TwoBoneTube tube;
     BoneHeatOptions options;
-    options.minWeight = 0.2;
-    const SkinWeights weights = computeBoneHeatWeights(tube.mesh, tube.bones, {}, options);
+    options.taperEnd = 0.1;
+    options.taperStart = 0.2;
+    const BoneHeatSolver solver(tube.mesh, tube.bones, {}, options);
+    const SkinWeights weights = solver.solveAll();
     expectPartitionOfUnity(weights, tube.mesh.vertexCount(), 2);
-    for (const auto& list : weights.perVertex) {
-        double total = 0.0;
-        for (const auto& entry : list) {
-            total += entry.second;
-        }
-        for (const auto& entry : list) {
-            EXPECT_GE(entry.second, 0.2 * total - 1e-12);
-        }
+    const Eigen::VectorXd raw0 = solver.solveBone(0);
+    const Eigen::VectorXd raw1 = solver.solveBone(1);
+    int dropped = 0;
+    int faded = 0;
+    for (int v = 0; v < tube.mesh.vertexCount(); ++v) {
+        const double r0 = raw0[v];
+        const double r1 = raw1[v];
+        auto tapered = [](double w) { return w < 0.1 ? 0.0 : w < 0.2 ? 0.2 * (w - 0.1) / 0.1 : w; };
+        const double t0 = tapered(r0);
+        const double t1 = tapered(r1);
+        dropped += (r0 > 0.0 && r0 < 0.1) || (r1 > 0.0 && r1 < 0.1) ? 1 : 0;
+        faded += (r0 >= 0.1 && r0 < 0.2) || (r1 >= 0.1 && r1 < 0.2) ? 1 : 0;
+        EXPECT_NEAR(boneWeights(weights, 0)[v], t0 / (t0 + t1), 1e-12) << "vertex " << v;
+        EXPECT_NEAR(boneWeights(weights, 1)[v], t1 / (t0 + t1), 1e-12) << "vertex " << v;
     }
+    EXPECT_GT(dropped, 0);
+    EXPECT_GT(faded, 0);
 }
 
 // A junction patch can emit triangles with a repeated corner or three
@@ -298,6 +310,10 @@ TEST(BoneHeatSolver, InvalidInputIsRejectedWithAnError) {
     broken.faces.push_back({0, 1, broken.vertexCount()});
     EXPECT_THROW(computeBoneHeatWeights(broken, tube.bones), Error);
     EXPECT_THROW(computeBoneHeatWeights(tube.mesh, tube.bones, ClosestBones(3)), Error);
+    BoneHeatOptions reversedTaper;
+    reversedTaper.taperEnd = 0.1;
+    reversedTaper.taperStart = 0.05;
+    EXPECT_THROW(computeBoneHeatWeights(tube.mesh, tube.bones, {}, reversedTaper), Error);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     EXPECT_THROW(computeBoneHeatWeights(tube.mesh, {{Vec3(nan, 0, 0), Vec3(1, 0, 0)}}), Error);
 }
