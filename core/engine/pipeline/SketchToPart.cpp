@@ -61,35 +61,35 @@ std::vector<std::pair<int, double>> closestAmongNeighbours(const Skeleton& skele
                                                            const std::vector<BoneId>& owners,
                                                            const Vec3& p) {
     auto distanceTo = [&](BoneId id) { return pointSegmentDistance(p, segmentOf(skeleton, id)); };
+    std::vector<std::pair<BoneId, double>> candidates;
     double best = std::numeric_limits<double>::infinity();
-    for (BoneId id : owners)
-        best = std::min(best, distanceTo(id));
-    std::vector<JointId> nearJoints;
-    for (BoneId id : owners)
-        for (JointId joint : {skeleton.bone(id).head, skeleton.bone(id).tail})
-            for (BoneId other : skeleton.bonesAt(joint))
-                for (JointId end : {skeleton.bone(other).head, skeleton.bone(other).tail})
-                    nearJoints.push_back(end);
-    std::vector<BoneId> candidates = owners;
-    for (JointId joint : nearJoints)
-        for (BoneId other : skeleton.bonesAt(joint)) {
-            if (std::find(candidates.begin(), candidates.end(), other) != candidates.end())
-                continue;
-            const double d = distanceTo(other);
-            if (d < best * (1 - kTieTolerance))
-                return {};
-            if (d <= best * (1 + kTieTolerance))
-                candidates.push_back(other);  // a tie the visibility test would list too
-        }
+    for (BoneId id : owners) {
+        candidates.emplace_back(id, distanceTo(id));
+        best = std::min(best, candidates.back().second);
+    }
+    const std::size_t ownerCount = candidates.size();
     double nearest = best;
-    for (BoneId id : candidates)
-        nearest = std::min(nearest, distanceTo(id));
+    for (std::size_t o = 0; o < ownerCount; ++o)
+        for (JointId joint : {skeleton.bone(owners[o]).head, skeleton.bone(owners[o]).tail})
+            for (BoneId across : skeleton.bonesAt(joint))
+                for (JointId end : {skeleton.bone(across).head, skeleton.bone(across).tail})
+                    for (BoneId other : skeleton.bonesAt(end)) {
+                        if (std::any_of(candidates.begin(), candidates.end(),
+                                        [&](const auto& c) { return c.first == other; }))
+                            continue;
+                        const double d = distanceTo(other);
+                        if (d < best * (1 - kTieTolerance))
+                            return {};
+                        if (d <= best * (1 + kTieTolerance)) {
+                            // A tie the visibility test would list too.
+                            candidates.emplace_back(other, d);
+                            nearest = std::min(nearest, d);
+                        }
+                    }
     std::vector<std::pair<int, double>> closest;
-    for (BoneId id : candidates) {
-        const double d = distanceTo(id);
+    for (const auto& [id, d] : candidates)
         if (d <= nearest * (1 + kTieTolerance))
             closest.emplace_back(skeleton.indexOfBone(id), d);
-    }
     return closest;
 }
 

@@ -95,19 +95,21 @@ void validateInput(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
     }
 }
 
-bool hasAngles(const std::array<int, 3>& face, const std::vector<Vec3>& positions) {
+// Twice the area of a triangle with usable angles, 0 for a degenerate one.
+// Every corner's |e1 x e2| is this same number, so the smallest sine is
+// twice the area over the product of the two longest edges.
+double usableDoubleArea(const std::array<int, 3>& face, const std::vector<Vec3>& positions) {
     if (face[0] == face[1] || face[1] == face[2] || face[0] == face[2]) {
-        return false;
+        return 0.0;
     }
-    for (int c = 0; c < 3; ++c) {
-        const Vec3 e1 = positions[face[(c + 1) % 3]] - positions[face[c]];
-        const Vec3 e2 = positions[face[(c + 2) % 3]] - positions[face[c]];
-        const double scale = e1.norm() * e2.norm();
-        if (!(scale > 0.0) || !(e1.cross(e2).norm() >= kMinSineRelative * scale)) {
-            return false;
-        }
-    }
-    return true;
+    const Vec3& a = positions[face[0]];
+    const Vec3& b = positions[face[1]];
+    const Vec3& c = positions[face[2]];
+    std::array<double, 3> lengths{(b - a).norm(), (c - b).norm(), (a - c).norm()};
+    std::sort(lengths.begin(), lengths.end());
+    const double doubleArea = (b - a).cross(c - a).norm();
+    return doubleArea > 0.0 && doubleArea >= kMinSineRelative * lengths[1] * lengths[2] ? doubleArea
+                                                                                        : 0.0;
 }
 
 double taperedWeight(double w, const BoneHeatOptions& options) {
@@ -209,13 +211,11 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
         for (int corner : face) {
             inAnyFace[corner] = 1;
         }
-        if (!hasAngles(face, positions)) {
+        const double doubleArea = usableDoubleArea(face, positions);
+        if (doubleArea == 0.0) {
             degenerate.push_back(face);
             continue;
         }
-        const double doubleArea = (positions[face[1]] - positions[face[0]])
-                                      .cross(positions[face[2]] - positions[face[0]])
-                                      .norm();
         for (int c = 0; c < 3; ++c) {
             const int i = face[c];
             const int j = face[(c + 1) % 3];
@@ -225,7 +225,7 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
             // The corner at i weighs the opposite edge (j, k) by cot/2.
             const Vec3 e1 = positions[j] - positions[i];
             const Vec3 e2 = positions[k] - positions[i];
-            const double halfCot = 0.5 * e1.dot(e2) / e1.cross(e2).norm();
+            const double halfCot = 0.5 * e1.dot(e2) / doubleArea;
             triplets.emplace_back(std::min(j, k), std::max(j, k), -halfCot);
             triplets.emplace_back(j, j, halfCot);
             triplets.emplace_back(k, k, halfCot);
