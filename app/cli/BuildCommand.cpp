@@ -125,8 +125,12 @@ int runBuild(const std::vector<std::string>& arguments) {
             clip = poseDemoClip(written);
         writeOutput(written, *out, writeSettings, clip);
     }
-    if (auto rig = line.value("--rig"))
-        writeTextFile(*rig, rigToJson(written));
+    if (auto rig = line.value("--rig")) {
+        // The rig names the mesh it indexes: the -o file, in the same vertex order.
+        const auto out = line.value("-o");
+        writeTextFile(
+            *rig, rigToJson(written, out ? std::filesystem::path(*out).filename().string() : ""));
+    }
     if (auto svg = line.value("--debug-svg"))
         writeTextFile(*svg, debugSvg(result.surface, {skeletonOverlay(part.skeleton)}));
     if (auto stats = line.value("--stats"))

@@ -11,6 +11,10 @@ namespace {
 
 // JSON has no Infinity or NaN (nlohmann would write null): refuse them.
 void checkRigIsFinite(const Part& part) {
+    for (std::size_t v = 0; v < part.mesh.vertices.size(); ++v)
+        if (!part.mesh.vertices[v].allFinite())
+            throw Error("cannot write the rig: vertex " + std::to_string(v) +
+                        " is not at a finite position");
     for (const Joint& joint : part.skeleton.joints())
         if (!joint.position.allFinite())
             throw Error("cannot write the rig: joint " + std::to_string(joint.id) +
@@ -24,7 +28,7 @@ void checkRigIsFinite(const Part& part) {
 
 }  // namespace
 
-std::string rigToJson(const Part& part) {
+std::string rigToJson(const Part& part, const std::string& meshFile) {
     checkRigIsFinite(part);
     const Skeleton& skeleton = part.skeleton;
     nlohmann::json rig;
@@ -43,6 +47,12 @@ std::string rigToJson(const Part& part) {
                                 {"parent", parent ? skeleton.indexOfBone(*parent) : -1},
                                 {"length", skeleton.boneLength(bone.id)}});
     }
+    if (!meshFile.empty())
+        rig["mesh"] = meshFile;
+    rig["vertex_count"] = part.mesh.vertices.size();
+    rig["vertices"] = nlohmann::json::array();
+    for (const Vec3& p : part.mesh.vertices)
+        rig["vertices"].push_back({p.x(), p.y(), p.z()});
     rig["weights"] = nlohmann::json::array();
     for (const auto& vertex : part.weights.perVertex) {
         nlohmann::json influences = nlohmann::json::array();

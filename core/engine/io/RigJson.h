@@ -1,8 +1,13 @@
 // The rig of a part as JSON, so other tools can check it:
 // {"joints": [{"id", "position": [x, y, z]}], "root": joint index,
 //  "bones": [{"id", "head": joint index, "tail": joint index, "parent": bone index or -1,
-//  "length"}], "weights": [[[bone index, weight], ...] per mesh vertex, in mesh order],
+//  "length"}], "mesh": the mesh file written with it (when given),
+//  "vertex_count": n, "vertices": [[x, y, z] per mesh vertex],
+//  "weights": [[[bone index, weight], ...] per mesh vertex],
 //  "failed_bones": [...], "warning": "..."}
+// Vertices and weights are in the part's mesh order, which every mesh file
+// of one `rigmesh build` shares (OBJ, OFF, PLY, glTF, FBX, COLLADA; issue
+// 19), so a reader can pair them by index and check the pairing by position.
 #pragma once
 
 #include <array>
@@ -14,7 +19,8 @@
 
 namespace rigmesh {
 
-std::string rigToJson(const Part& part);
+// `meshFile` names the mesh file the weights go with (left out when empty).
+std::string rigToJson(const Part& part, const std::string& meshFile = {});
 
 // A colour per vertex from its dominant bone (distinct hues per bone), for
 // showing weights in any mesh viewer (PLY vertex colours).

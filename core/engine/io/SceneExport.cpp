@@ -23,6 +23,7 @@
 #include "io/GltfBuffers.h"
 #include "io/GltfSceneRoots.h"
 #include "io/GltfSkins.h"
+#include "io/ObjSceneText.h"
 #include "part/PartDetail.h"
 
 namespace rigmesh {
@@ -56,7 +57,7 @@ unsigned preprocessing(ExportFormat format) {
 }
 
 // The files Assimp produced in memory: the main file and its companions by
-// extension ("bin" for .gltf, "mtl" for .obj).
+// extension ("bin" for .gltf).
 struct ExportedFiles {
     std::string main;
     std::map<std::string, std::string> companions;
@@ -83,9 +84,6 @@ ExportedFiles exportToMemory(aiScene& scene, ExportFormat format, const std::str
                                                     next->size);
     return files;
 }
-
-// Assimp names in-memory companions after its placeholder file name.
-const std::string kAssimpBlobName = "$blobfile";
 
 std::string fnv1aHex(const std::string& bytes) {
     std::uint64_t hash = 14695981039346656037ull;
@@ -138,18 +136,14 @@ void writeGltf(const ExportedFiles& files, const fs::path& target) {
     }
 }
 
-// .obj + .mtl: the .mtl goes first, so that the .obj never names a missing one.
-void writeObj(const ExportedFiles& files, const fs::path& target) {
-    std::string obj = files.main;
+// .obj + .mtl, written by us in each mesh's own vertex order
+// (ObjSceneText.h); the .mtl goes first, so that the .obj never names a
+// missing one.
+void writeObj(const aiScene& scene, const fs::path& target) {
     const fs::path mtlPath = fs::path(target).replace_extension(".mtl");
-    const std::string placeholder = "mtllib " + kAssimpBlobName + ".mtl";
-    const auto at = obj.find(placeholder);
-    if (at != std::string::npos)
-        obj.replace(at, placeholder.size(), "mtllib " + mtlPath.filename().string());
-    StagedFile stagedObj(target, obj);
-    const auto mtl = files.companions.find("mtl");
-    if (mtl != files.companions.end())
-        StagedFile(mtlPath, mtl->second).commit();
+    const ObjText text = objSceneText(scene, mtlPath.filename().string());
+    StagedFile stagedObj(target, text.obj);
+    StagedFile(mtlPath, text.mtl).commit();
     stagedObj.commit();
 }
 
@@ -193,6 +187,10 @@ void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const s
     checkSceneIsFinite(scene);
     const fs::path target(path);
     checkReplaceable(target);
+    if (format == ExportFormat::Obj) {
+        writeObj(scene, target);
+        return;
+    }
 
     ExportedFiles files = exportToMemory(scene, format, path);
     switch (format) {
@@ -219,8 +217,7 @@ void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const s
             writeFileAtomically(target, withColladaBoneTips(files.main, rigs));
             break;
         case ExportFormat::Obj:
-            writeObj(files, target);
-            break;
+            break;  // written above
     }
 }
 

@@ -3,13 +3,94 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <optional>
+#include <utility>
 
 namespace rigmesh {
 namespace {
 
+constexpr double kTieTolerance = 1e-2;  // relative, as in the bone heat solver
+
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
+}
+
+BoneSegment segmentOf(const Skeleton& skeleton, BoneId id) {
+    const Bone& bone = skeleton.bone(id);
+    return {skeleton.joint(bone.head).position, skeleton.joint(bone.tail).position};
+}
+
+void addUnique(std::vector<BoneId>& bones, BoneId id) {
+    if (std::find(bones.begin(), bones.end(), id) == bones.end())
+        bones.push_back(id);
+}
+
+// A section's bone owns a vertex only between the planes through its end
+// joints normal to it (issue 19): past the plane at a joint with one other
+// bone, that bone competes too (it is the closer one there, or ties at the
+// joint); past a branching joint's plane the vertex is left to the
+// visibility test (nullopt). Otherwise a limb bone could reach past its joint
+// into the next bone's territory.
+std::optional<std::vector<BoneId>> ownersWithinJointPlanes(const Skeleton& skeleton,
+                                                           const std::vector<BoneId>& sectionBones,
+                                                           const Vec3& p) {
+    std::vector<BoneId> owners;
+    for (BoneId id : sectionBones) {
+        addUnique(owners, id);
+        const Bone& bone = skeleton.bone(id);
+        const double t = closestSegmentParameter(p, segmentOf(skeleton, id));
+        for (const auto& [past, end] : {std::pair{t <= 0.0, bone.head}, {t >= 1.0, bone.tail}}) {
+            if (!past || skeleton.degree(end) < 2)
+                continue;  // within the bone, or beyond a tip (the cap is its own)
+            if (skeleton.degree(end) > 2)
+                return std::nullopt;
+            for (BoneId other : skeleton.bonesAt(end))
+                addUnique(owners, other);
+        }
+    }
+    return owners;
+}
+
+// The closest of `owners` and their neighbours, with every bone within the
+// tie tolerance, as closestVisibleBones would list them. Near a joint a
+// neighbouring bone (across the joint, or across a junction: up to two joints
+// away) may be closer than the owners: then the shortcut does not hold and
+// the vertex is left to the visibility test (empty list).
+std::vector<std::pair<int, double>> closestAmongNeighbours(const Skeleton& skeleton,
+                                                           const std::vector<BoneId>& owners,
+                                                           const Vec3& p) {
+    auto distanceTo = [&](BoneId id) { return pointSegmentDistance(p, segmentOf(skeleton, id)); };
+    std::vector<std::pair<BoneId, double>> candidates;
+    double best = std::numeric_limits<double>::infinity();
+    for (BoneId id : owners) {
+        candidates.emplace_back(id, distanceTo(id));
+        best = std::min(best, candidates.back().second);
+    }
+    const std::size_t ownerCount = candidates.size();
+    double nearest = best;
+    for (std::size_t o = 0; o < ownerCount; ++o)
+        for (JointId joint : {skeleton.bone(owners[o]).head, skeleton.bone(owners[o]).tail})
+            for (BoneId across : skeleton.bonesAt(joint))
+                for (JointId end : {skeleton.bone(across).head, skeleton.bone(across).tail})
+                    for (BoneId other : skeleton.bonesAt(end)) {
+                        if (std::any_of(candidates.begin(), candidates.end(),
+                                        [&](const auto& c) { return c.first == other; }))
+                            continue;
+                        const double d = distanceTo(other);
+                        if (d < best * (1 - kTieTolerance))
+                            return {};
+                        if (d <= best * (1 + kTieTolerance)) {
+                            // A tie the visibility test would list too.
+                            candidates.emplace_back(other, d);
+                            nearest = std::min(nearest, d);
+                        }
+                    }
+    std::vector<std::pair<int, double>> closest;
+    for (const auto& [id, d] : candidates)
+        if (d <= nearest * (1 + kTieTolerance))
+            closest.emplace_back(skeleton.indexOfBone(id), d);
+    return closest;
 }
 
 }  // namespace
@@ -17,7 +98,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 ClosestBones closestBonesFromConstruction(const SketchSurface& surface,
                                           const std::vector<CylinderSections>& cylinders,
                                           const PartSkeleton& rig) {
-    constexpr double kTieTolerance = 1e-2;  // relative, as in the bone heat solver
     const Skeleton& skeleton = rig.skeleton;
     ClosestBones closest(surface.mesh.vertices.size());
     for (std::size_t v = 0; v < closest.size(); ++v) {
@@ -30,43 +110,14 @@ ClosestBones closestBonesFromConstruction(const SketchSurface& surface,
             section = origin.axisPosition > 0 ? -2 : -1;  // which tip
         const int count = static_cast<int>(cylinder.sections.size());
         const Vec3& p = surface.mesh.vertices[v];
-        auto distanceTo = [&](BoneId id) {
-            const Bone& bone = skeleton.bone(id);
-            return pointSegmentDistance(p, BoneSegment{skeleton.joint(bone.head).position,
-                                                       skeleton.joint(bone.tail).position});
-        };
-        std::vector<BoneId> owners;
+        std::vector<BoneId> sectionBones;
         for (BoneId id : bonesOfSection(rig, origin.region, section, count))
             if (skeleton.hasBone(id))
-                owners.push_back(id);
-        if (owners.empty())
+                sectionBones.push_back(id);
+        const auto owners = ownersWithinJointPlanes(skeleton, sectionBones, p);
+        if (!owners || owners->empty())
             continue;
-        double best = std::numeric_limits<double>::infinity();
-        for (BoneId id : owners)
-            best = std::min(best, distanceTo(id));
-        // Near a joint a neighbouring bone (across the joint, or across a
-        // junction: up to two joints away) may be closer than the section's
-        // own: then the shortcut does not hold and the vertex is left to the
-        // visibility test.
-        std::vector<JointId> nearJoints;
-        for (BoneId id : owners)
-            for (JointId joint : {skeleton.bone(id).head, skeleton.bone(id).tail})
-                for (BoneId other : skeleton.bonesAt(joint))
-                    for (JointId end : {skeleton.bone(other).head, skeleton.bone(other).tail})
-                        nearJoints.push_back(end);
-        bool neighbourCloser = false;
-        for (JointId joint : nearJoints)
-            for (BoneId other : skeleton.bonesAt(joint))
-                if (std::find(owners.begin(), owners.end(), other) == owners.end() &&
-                    distanceTo(other) < best * (1 - kTieTolerance))
-                    neighbourCloser = true;
-        if (neighbourCloser)
-            continue;
-        for (BoneId id : owners) {
-            const double d = distanceTo(id);
-            if (d <= best * (1 + kTieTolerance))
-                closest[v].emplace_back(skeleton.indexOfBone(id), d);
-        }
+        closest[v] = closestAmongNeighbours(skeleton, *owners, p);
     }
     return closest;
 }

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -16,9 +17,14 @@ namespace rigmesh {
 
 namespace {
 
-// A cotangent never exceeds 1e8 in magnitude: a sliver triangle's cross
-// product is bounded below relative to its edges, so the bound is scale-free.
+// A triangle with an angle whose sine is below this (relative, so
+// scale-free), a repeated corner or a zero-length edge has no usable angles:
+// its cotangents would reach 1e8 and pin a vertex (issue 19). Such faces are
+// left out of the Laplacian and the areas, so every cotangent stays below 1e8.
 constexpr double kMinSineRelative = 1e-8;
+// The heat of a vertex with only degenerate triangles, per edge weight.
+constexpr double kOrphanHeatPerEdge = 1e-6;
+
 // d^2 is bounded below by this fraction of the vertex area, so that a vertex
 // lying on its bone gets a very large but finite heat (scale-free too).
 constexpr double kMinDistanceSquaredPerArea = 1e-12;
@@ -80,9 +86,40 @@ void validateInput(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
     if (!(options.heatConstant > 0.0) || !std::isfinite(options.heatConstant)) {
         throw Error("The heat constant must be a positive number.");
     }
+    if (!(options.taperEnd >= 0.0) || !(options.taperStart >= options.taperEnd) ||
+        !(options.taperStart < 1.0)) {
+        throw Error("The weight taper needs 0 <= end <= start < 1.");
+    }
     if (options.threads < 1) {
         throw Error("The skin weight solver needs at least one thread.");
     }
+}
+
+// Twice the area of a triangle with usable angles, 0 for a degenerate one.
+// Every corner's |e1 x e2| is this same number, so the smallest sine is
+// twice the area over the product of the two longest edges.
+double usableDoubleArea(const std::array<int, 3>& face, const std::vector<Vec3>& positions) {
+    if (face[0] == face[1] || face[1] == face[2] || face[0] == face[2]) {
+        return 0.0;
+    }
+    const Vec3& a = positions[face[0]];
+    const Vec3& b = positions[face[1]];
+    const Vec3& c = positions[face[2]];
+    std::array<double, 3> lengths{(b - a).norm(), (c - b).norm(), (a - c).norm()};
+    std::sort(lengths.begin(), lengths.end());
+    const double doubleArea = (b - a).cross(c - a).norm();
+    return doubleArea > 0.0 && doubleArea >= kMinSineRelative * lengths[1] * lengths[2] ? doubleArea
+                                                                                        : 0.0;
+}
+
+double taperedWeight(double w, const BoneHeatOptions& options) {
+    if (!(w >= options.taperEnd) || !(w > 0.0)) {
+        return 0.0;
+    }
+    if (w >= options.taperStart) {
+        return w;
+    }
+    return options.taperStart * (w - options.taperEnd) / (options.taperStart - options.taperEnd);
 }
 
 }  // namespace
@@ -162,40 +199,65 @@ void BoneHeatSolver::Impl::findClosestBones(const TriMesh& mesh, const ClosestBo
 
 void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
     const int n = vertexCount();
-    // A_i: the area of the triangles around vertex i (Pinocchio's vertex area).
     Eigen::VectorXd area = Eigen::VectorXd::Zero(n);
-    std::vector<char> used(n, 0);
+    // Per vertex: how many usable triangles it has, and the uniform weights
+    // of the edges of its unusable ones (used only if it has no other).
+    std::vector<int> goodFaces(n, 0);
+    std::vector<char> inAnyFace(n, 0);
     std::vector<Eigen::Triplet<double>> triplets;
     triplets.reserve(mesh.faces.size() * 6 + n);
+    std::vector<std::array<int, 3>> degenerate;
     for (const auto& face : mesh.faces) {
-        const double doubleArea = (positions[face[1]] - positions[face[0]])
-                                      .cross(positions[face[2]] - positions[face[0]])
-                                      .norm();
+        for (int corner : face) {
+            inAnyFace[corner] = 1;
+        }
+        const double doubleArea = usableDoubleArea(face, positions);
+        if (doubleArea == 0.0) {
+            degenerate.push_back(face);
+            continue;
+        }
         for (int c = 0; c < 3; ++c) {
             const int i = face[c];
             const int j = face[(c + 1) % 3];
             const int k = face[(c + 2) % 3];
-            used[i] = 1;
-            area[i] += 0.5 * doubleArea;
+            ++goodFaces[i];
+            area[i] += 0.5 * doubleArea;  // the one-ring area (see BoneHeatSolver.h)
             // The corner at i weighs the opposite edge (j, k) by cot/2.
             const Vec3 e1 = positions[j] - positions[i];
             const Vec3 e2 = positions[k] - positions[i];
-            const double sine =
-                std::max(e1.cross(e2).norm(), kMinSineRelative * e1.norm() * e2.norm());
-            if (!(sine > 0.0)) {
-                continue;  // a zero-length edge: no stiffness
-            }
-            const double halfCot = 0.5 * e1.dot(e2) / sine;
+            const double halfCot = 0.5 * e1.dot(e2) / doubleArea;
             triplets.emplace_back(std::min(j, k), std::max(j, k), -halfCot);
             triplets.emplace_back(j, j, halfCot);
             triplets.emplace_back(k, k, halfCot);
         }
     }
+    // A vertex whose every triangle is degenerate (a junction patch can emit
+    // such slivers) has no area and no angles: it takes the mean of its
+    // neighbours (uniform weights on its edges) instead of being pinned.
+    std::vector<double> orphanDegree(n, 0.0);
+    for (const auto& face : degenerate) {
+        for (int c = 0; c < 3; ++c) {
+            const int a = face[c];
+            const int b = face[(c + 1) % 3];
+            if (a == b || (goodFaces[a] > 0 && goodFaces[b] > 0)) {
+                continue;
+            }
+            triplets.emplace_back(std::min(a, b), std::max(a, b), -1.0);
+            triplets.emplace_back(a, a, 1.0);
+            triplets.emplace_back(b, b, 1.0);
+            orphanDegree[a] += 1.0;
+            orphanDegree[b] += 1.0;
+        }
+    }
 
     heat = Eigen::VectorXd::Zero(n);
     for (int v = 0; v < n; ++v) {
-        if (!used[v]) {
-            heat[v] = 1.0;  // no triangle: pin w_v = p_v
+        if (!inAnyFace[v]) {
+            heat[v] = 1.0;  // no triangle at all: w_v = p_v
+        } else if (goodFaces[v] == 0) {
+            // Keeps the system definite if a whole cluster is degenerate,
+            // without pulling the vertex away from its neighbours' mean.
+            heat[v] = kOrphanHeatPerEdge * std::max(orphanDegree[v], 1.0);
         } else if (!closest[v].empty()) {
             double d = closest[v].front().second;
             for (const auto& entry : closest[v]) {
@@ -386,17 +448,16 @@ SkinWeights BoneHeatSolver::solveAll() const {
         }
     });
 
-    // Pinocchio's post-processing, with a threshold: negatives to 0, drop tiny
-    // weights, renormalise; an emptied vertex follows its closest bone.
+    // Pinocchio's post-processing with Blender's taper: negatives to 0, small
+    // weights faded out, renormalise; an emptied vertex follows its closest bone.
     SkinWeights result;
     result.perVertex.resize(n);
-    const double minWeight = impl_->options.minWeight;
     for (int v = 0; v < n; ++v) {
         auto& weights = result.perVertex[v];
         double total = 0.0;
         for (int b = 0; b < boneTotal; ++b) {
-            const double w = solutions(v, b);
-            if (w >= minWeight && w > 0.0) {
+            const double w = taperedWeight(solutions(v, b), impl_->options);
+            if (w > 0.0) {
                 weights.emplace_back(b, w);
                 total += w;
             }

@@ -17,24 +17,6 @@ namespace {
 // closest visible bones or at most this much (relatively) farther than them.
 constexpr double kKnownBoneSlack = 0.05;
 
-const std::vector<parttest::KnownDefect> kWrongKnownBoneDefects = {
-    {"biped",
-     "vertices of a limb's first or last cross section next to the shoulder and hip junctions "
-     "are given their limb's bone from construction although a junction bone is up to 30% "
-     "closer and visible (e.g. vertex 131: bone 0 at 0.608, visible bone 11 at 0.426)"},
-    {"open_gap",
-     "cross section 64 of 80 is assigned to the long bone 0 although the short tip bone 1 is "
-     "about 15% closer and visible (vertex 1441: bone 0 at 0.466, bone 1 at 0.399): the "
-     "section-to-bone split does not follow the joint between them"},
-    {"star",
-     "the first cross section of two arms next to the body keeps the arm's bone although body "
-     "bones are 6% closer and visible (vertex 0: bone 0 at 0.498, bones 2 and 7 at 0.468)"},
-    {"y_branch",
-     "the last cross section of a branch next to the junction keeps the branch's bone "
-     "although a junction bone is 5-11% closer and visible (vertex 566: bone 1 at 0.602, "
-     "bone 2 at 0.541)"},
-};
-
 class PartBookkeeping : public ::testing::TestWithParam<std::string> {
   protected:
     const SketchToPartResult& result() const { return parttest::sharedPart(GetParam()); }
@@ -124,13 +106,39 @@ TEST_P(PartBookkeeping, KnownClosestBonesAreTheClosestVisibleBones) {
     std::cout << "[ measured ] " << GetParam() << " known closest bones farther than the closest "
               << "visible one: " << wrong << "/" << known << " (first: vertex " << firstWrong
               << ")\n";
-    const std::string defect = parttest::knownDefect(kWrongKnownBoneDefects, GetParam());
-    if (wrong > 0 && !defect.empty())
-        GTEST_SKIP() << "known defect: " << defect << " (" << wrong << " of " << known
-                     << " vertices, first " << firstWrong << ")";
-    if (wrong == 0 && !defect.empty())
-        std::cout << "[ note ] known defect no longer reproduces on " << GetParam() << "\n";
     EXPECT_EQ(wrong, 0) << "first wrong vertex " << firstWrong;
+}
+
+// Issue 19: the construction shortcut gives the bones the visibility test
+// gives, ties included: a section's bone stops at the planes through its end
+// joints, and neighbours within the tie tolerance share the vertex. Measured:
+// every known list equals the tested one on every sketch but biped (7 of
+// 1554 differ) and open_gap (21 of 2391), where the test picks another bone
+// no more than 5% closer (the check above).
+TEST_P(PartBookkeeping, KnownClosestBonesListTheSameBonesAsTheVisibilityTest) {
+    const Part& part = result().part;
+    const ClosestBones& visible = parttest::sharedClosestVisibleBones(GetParam());
+    int known = 0;
+    int different = 0;
+    for (std::size_t v = 0; v < visible.size(); ++v) {
+        if (part.knownClosestBones[v].empty())
+            continue;
+        ++known;
+        auto bonesOf = [](const std::vector<std::pair<int, double>>& list) {
+            std::vector<int> bones;
+            for (const auto& entry : list)
+                bones.push_back(entry.first);
+            std::sort(bones.begin(), bones.end());
+            return bones;
+        };
+        if (bonesOf(part.knownClosestBones[v]) != bonesOf(visible[v]))
+            ++different;
+    }
+    std::cout << "[ measured ] " << GetParam()
+              << " known closest bones unlike the tested ones: " << different << "/" << known
+              << "\n";
+    ASSERT_GT(known, 0);
+    EXPECT_LE(different, known / 100) << "more than 1% of the known lists differ";
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedSketches, PartBookkeeping,
