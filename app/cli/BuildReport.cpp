@@ -1,5 +1,7 @@
 #include "BuildReport.h"
 
+#include "mesh/SurfaceQuality.h"
+
 #include <cstdio>
 
 namespace rigmesh::cli {
@@ -31,6 +33,13 @@ nlohmann::json buildStatistics(const std::string& name, const SketchToPartResult
                           {"skeleton", rigged.skeletonMilliseconds},
                           {"weights", rigged.weightsMilliseconds},
                           {"mesh_checks", meshChecksMilliseconds}};
+    // Issue 10's figures: creases and the front silhouette against the outline.
+    const NormalAngles angles = normalAngles(result.surface.mesh);
+    stats["surface_quality"] = {
+        {"normal_angle_p50_degrees", angles.p50},
+        {"normal_angle_p99_degrees", angles.p99},
+        {"normal_angle_max_degrees", angles.max},
+        {"silhouette_iou", silhouetteIoU(result.surface.mesh, result.polygon.points)}};
     stats["mesh"] = {{"checks_passed", report.passesChecks()},
                      {"closed", report.isClosed()},
                      {"manifold", report.isManifold()},
