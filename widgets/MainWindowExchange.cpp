@@ -115,8 +115,12 @@ void MainWindow::exportDocument() {
     if (dialog.exec() != QDialog::Accepted)
         return;
     try {
-        auto result =
-            model::exportDocument(*document, dialog.path().toStdString(), dialog.options(), true);
+        // The file's baked pose is the shape the view shows (View > Dual
+        // Quaternion Skinning).
+        ExportOptions options = dialog.options();
+        options.skinning =
+            dqsAction_->isChecked() ? SkinningMethod::DualQuaternion : SkinningMethod::LinearBlend;
+        auto result = model::exportDocument(*document, dialog.path().toStdString(), options, true);
         // Animation ticked but nothing keyed: say why the file has no animation.
         const bool rigged = QFileInfo(dialog.path()).suffix().toLower() != QLatin1String("obj");
         bool keyed = false;

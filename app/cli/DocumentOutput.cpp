@@ -25,6 +25,8 @@ ExportOptions exportOptions(const CommandLine& line) {
         options.maxInfluences = static_cast<int>(*influences);
     }
     options.leafBones = line.flag("--leaf-bones");
+    if (line.flag("--linear-blend"))
+        options.skinning = SkinningMethod::LinearBlend;
     if (auto levels = line.number("--subdivide")) {
         if (*levels < 0 || *levels > 4 || *levels != std::floor(*levels))
             throw Error("--subdivide must be a whole number from 0 to 4");

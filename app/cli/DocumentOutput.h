@@ -15,7 +15,8 @@ class QCoreApplication;
 namespace rigmesh::cli {
 
 // --max-influences N (a whole number >= 0; 0 = all the format allows);
-// --leaf-bones (an end bone at each leaf's tail); --subdivide N (Loop, 0..4)
+// --leaf-bones (an end bone at each leaf's tail); --linear-blend (bake poses
+// with linear blend skinning, as Blender deforms by default); --subdivide N (Loop, 0..4)
 // and --decimate FACES (quadric, per part).
 ExportOptions exportOptions(const CommandLine& line);
 

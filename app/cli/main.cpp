@@ -52,7 +52,7 @@ commands:
       limits, so a broken file cannot take them down.
   export DOC.rigmesh -o OUT.glb|.gltf|.fbx|.dae|.obj [--max-influences N]
                [--current-pose | --pose-as-key] [--no-animation] [--hidden] [--leaf-bones]
-               [--subdivide N] [--decimate FACES]
+               [--subdivide N] [--decimate FACES] [--linear-blend]
       Converts a saved document as the studio's File > Export does: every
       visible part (--hidden: every part) at its placement, each its own
       skinned mesh named after it, animated by its own clip
@@ -60,6 +60,8 @@ commands:
       is the rest mesh, or each part's current pose with --current-pose
       (rigged formats: as their rest shape); --pose-as-key keeps the rest
       shape and writes each part's current pose as a one-key animation.
+      Poses are baked with dual quaternion skinning, or with --linear-blend
+      as Blender deforms by default (its Armature's Preserve Volume off).
       --max-influences, --leaf-bones, --subdivide and --decimate as for build. A bad document exits 1 with the reason.
   example
       Builds the embedded example sketch into a rigged part and prints its figures.

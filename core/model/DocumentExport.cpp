@@ -23,9 +23,9 @@ ExportPart exportPartOf(const PartNode& node) {
 // whose files carry a rest shape and a skeleton): skinned vertices, every
 // joint at its posed place, weights and bookkeeping unchanged. The file then
 // opens in that pose with an identity bind, and still deforms.
-Part poseAsRest(const PartNode& node) {
+Part poseAsRest(const PartNode& node, SkinningMethod method) {
     Part baked = *node.part;
-    baked.mesh = posePart(*node.part, node.pose).mesh;
+    baked.mesh = posePart(*node.part, node.pose, SkinningOptions{method}).mesh;
     const PosedSkeleton posed = forwardKinematics(node.part->skeleton, node.pose);
     const std::vector<Joint> joints = node.part->skeleton.joints();
     for (std::size_t j = 0; j < joints.size(); ++j)
@@ -76,7 +76,7 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
     auto exportPart = [&](const PartNode& node) {
         ExportPart part = exportPartOf(node);
         if (bakePose) {
-            baked.push_back(poseAsRest(node));
+            baked.push_back(poseAsRest(node, options.skinning));
             part.part = &baked.back();
             part.pose = rigmesh::Pose{};
         }

@@ -25,6 +25,9 @@ elif path.endswith(".fbx"):
 else:
     bpy.ops.wm.collada_import(filepath=path)
 
+# A file with the pose as a one-key animation (--pose-as-key) shows it once
+# the animation is evaluated: any frame, the key holds.
+bpy.context.scene.frame_set(bpy.context.scene.frame_current)
 depsgraph = bpy.context.evaluated_depsgraph_get()
 seen = []
 for obj in bpy.context.scene.objects:

@@ -160,7 +160,7 @@ aiMesh* makeMesh(const ExportPart& item, const std::string& name, ExportFormat f
     TriMesh mesh = part.mesh;
     // A part without a skeleton (imported unrigged) has only its rest pose.
     if (format == ExportFormat::Obj && !options.restPose && part.skeleton.jointCount() > 0)
-        mesh = posePart(part, item.pose).mesh;
+        mesh = posePart(part, item.pose, SkinningOptions{options.skinning}).mesh;
     const std::vector<Vec3> normals = vertexNormals(mesh);
     const Eigen::Matrix3d rotation = item.placement.rotation();
 

@@ -27,6 +27,7 @@
 #include "part/Part.h"
 #include "pose/Clip.h"
 #include "pose/Pose.h"
+#include "pose/Skinning.h"
 
 namespace rigmesh {
 
@@ -52,6 +53,10 @@ struct ExportOptions {
     // each part's current pose as an animation of a single key at 0 s
     // instead of making it the rest shape (model::exportDocument).
     bool poseAsKey = false;
+    // How a pose is baked into written vertices (OBJ's posed mesh, the
+    // current pose as the rest shape): the studio's view setting. Animated
+    // files are skinned by the importer (Blender: linear blend by default).
+    SkinningMethod skinning = SkinningMethod::DualQuaternion;
     bool animation = true;   // write the clip when there is one
     double unitScale = 1.0;  // multiplies every written coordinate
     // An end bone `<bone>_end` at each leaf bone's tail (Blender's FBX "Add
