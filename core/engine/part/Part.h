@@ -17,13 +17,20 @@ namespace rigmesh {
 
 struct Part {
     std::string name;
-    std::vector<Vec2> outline;  // the cleaned sketch polygon it was built from
+    // The cleaned sketch polygon it was built from; empty once the part is no
+    // longer one sketch (a merge, an import).
+    std::vector<Vec2> outline;
     TriMesh mesh;
-    std::vector<VertexOrigin> origins;  // per vertex: region and axis position
-    std::vector<int> mirror;            // per vertex: its reflection through the sketch plane
+    // Per vertex: its sketch region and axis position. Only a fresh sketch
+    // has them; any topology edit clears them rather than keep stale values.
+    std::vector<VertexOrigin> origins;
+    // Per vertex: its reflection through the sketch plane; empty once the
+    // part is not mirror symmetric any more.
+    std::vector<int> mirror;
     Skeleton skeleton;
     // Per vertex (bone index = position in skeleton.bones()), non-negative,
-    // summing to 1.
+    // summing to 1. Edits that add or remove bones work on ids
+    // (part/BoneWeights.h) and convert back.
     SkinWeights weights;
     // Per vertex: the closest bone(s) known at creation (paper 2.4's shortcut
     // for cylindrical vertices); empty where visibility had to be tested.
@@ -44,6 +51,10 @@ struct Part {
     // non-empty and distinct. Every operation that changes a
     // part checks its result with it; so does every reader of untrusted data.
     std::vector<std::string> validate() const;
+    // validate() plus what every modelling operation (merge, cut, bone edits)
+    // must keep: a closed, manifold, consistently oriented surface and a
+    // rigged one (imported meshes may be open, so validate() does not ask).
+    std::vector<std::string> validateSolid() const;
 };
 
 }  // namespace rigmesh

@@ -3,6 +3,7 @@
 #include <set>
 #include <string>
 
+#include "mesh/MeshChecks.h"
 #include "part/Part.h"
 
 namespace rigmesh {
@@ -129,6 +130,23 @@ std::vector<std::string> Part::validate() const {
             break;
         }
     return problems.take();
+}
+
+std::vector<std::string> Part::validateSolid() const {
+    std::vector<std::string> problems = validate();
+    if (!problems.empty())
+        return problems;
+    if (skeleton.boneCount() == 0)
+        problems.push_back("The part has no skeleton.");
+    const MeshReport report = analyseMesh(mesh, false);
+    if (!report.isClosed())
+        problems.push_back("The surface has " + std::to_string(report.boundaryEdges) +
+                           " boundary edges.");
+    if (!report.isManifold())
+        problems.push_back("The surface is not a manifold.");
+    if (report.inconsistentlyOrientedEdges > 0)
+        problems.push_back("The surface is not consistently oriented.");
+    return problems;
 }
 
 }  // namespace rigmesh

@@ -12,22 +12,14 @@
 #include "base/Error.h"
 #include "base/ParallelFor.h"
 #include "rig/BoneVisibility.h"
+#include "rig/HeatTerms.h"
 
 namespace rigmesh {
 
 namespace {
 
-// A triangle with an angle whose sine is below this (relative, so
-// scale-free), a repeated corner or a zero-length edge has no usable angles:
-// its cotangents would reach 1e8 and pin a vertex (issue 19). Such faces are
-// left out of the Laplacian and the areas, so every cotangent stays below 1e8.
-constexpr double kMinSineRelative = 1e-8;
 // The heat of a vertex with only degenerate triangles, per edge weight.
 constexpr double kOrphanHeatPerEdge = 1e-6;
-
-// d^2 is bounded below by this fraction of the vertex area, so that a vertex
-// lying on its bone gets a very large but finite heat (scale-free too).
-constexpr double kMinDistanceSquaredPerArea = 1e-12;
 
 // One CHOLMOD workspace. CHOLMOD is thread-safe when every thread has its own
 // cholmod_common; the factor itself is only read by cholmod_solve2.
@@ -93,33 +85,6 @@ void validateInput(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
     if (options.threads < 1) {
         throw Error("The skin weight solver needs at least one thread.");
     }
-}
-
-// Twice the area of a triangle with usable angles, 0 for a degenerate one.
-// Every corner's |e1 x e2| is this same number, so the smallest sine is
-// twice the area over the product of the two longest edges.
-double usableDoubleArea(const std::array<int, 3>& face, const std::vector<Vec3>& positions) {
-    if (face[0] == face[1] || face[1] == face[2] || face[0] == face[2]) {
-        return 0.0;
-    }
-    const Vec3& a = positions[face[0]];
-    const Vec3& b = positions[face[1]];
-    const Vec3& c = positions[face[2]];
-    std::array<double, 3> lengths{(b - a).norm(), (c - b).norm(), (a - c).norm()};
-    std::sort(lengths.begin(), lengths.end());
-    const double doubleArea = (b - a).cross(c - a).norm();
-    return doubleArea > 0.0 && doubleArea >= kMinSineRelative * lengths[1] * lengths[2] ? doubleArea
-                                                                                        : 0.0;
-}
-
-double taperedWeight(double w, const BoneHeatOptions& options) {
-    if (!(w >= options.taperEnd) || !(w > 0.0)) {
-        return 0.0;
-    }
-    if (w >= options.taperStart) {
-        return w;
-    }
-    return options.taperStart * (w - options.taperEnd) / (options.taperStart - options.taperEnd);
 }
 
 }  // namespace
@@ -263,9 +228,7 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
             for (const auto& entry : closest[v]) {
                 d = std::min(d, entry.second);
             }
-            // A_i H_i = c A_i / d^2: both scale as s^0 under scaling by s.
-            heat[v] = options.heatConstant * area[v] /
-                      std::max(d * d, kMinDistanceSquaredPerArea * area[v]);
+            heat[v] = heatTerm(area[v], d, options);
         }
         triplets.emplace_back(v, v, heat[v]);
     }

@@ -142,6 +142,32 @@ void Skeleton::collapseBone(BoneId id, const Vec3& mergedPosition) {
     rebuildIndex();
 }
 
+JointId Skeleton::splitBone(BoneId id, const Vec3& position) {
+    const JointId oldTail = bone(id).tail;
+    const JointId middle = addJoint(position);
+    bones_[indexOfBone(id)].tail = middle;
+    addBone(middle, oldTail);
+    return middle;
+}
+
+void Skeleton::mergeJoints(JointId keep, JointId gone) {
+    if (!hasJoint(keep) || !hasJoint(gone))
+        throw Error("Only existing joints can be merged.");
+    if (keep == gone)
+        return;
+    for (Bone& b : bones_) {
+        if (b.head == gone)
+            b.head = keep;
+        if (b.tail == gone)
+            b.tail = keep;
+    }
+    std::erase_if(bones_, [](const Bone& b) { return b.head == b.tail; });
+    joints_.erase(joints_.begin() + indexOfJoint(gone));
+    if (root_ == gone)
+        root_ = keep;
+    rebuildIndex();
+}
+
 void Skeleton::setRoot(JointId id) {
     indexOfJoint(id);
     root_ = id;

@@ -61,6 +61,14 @@ class Skeleton {
     // short bones inside connecting regions (paper 2.3, Fig. 6 (b)).
     void collapseBone(BoneId id, const Vec3& mergedPosition);
 
+    // Inserts a joint at `position` on the bone (paper 3.2 "split", 3.3): the
+    // bone keeps its id and now ends at the new joint; a new bone runs from
+    // there to the old tail. Returns the new joint.
+    JointId splitBone(BoneId id, const Vec3& position);
+    // Joint `gone` becomes `keep`: every bone touching it is rewired, it is
+    // removed (paper 3.2 "snap": two skeletons joined at coincident joints).
+    void mergeJoints(JointId keep, JointId gone);
+
     void setRoot(JointId id);
     JointId root() const { return root_; }  // kNoJoint only when there are no joints
     // Flips bones so that every head is nearer the root than its tail (by

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "SharedSketchPart.h"
 #include "SketchToSurfaceTestSupport.h"
 #include "pipeline/SketchToPart.h"
 #include "pose/ForwardKinematics.h"
@@ -20,16 +21,8 @@
 
 namespace rigmesh::posetest {
 
-// sketchToPart on a shared sketch, cached for the whole test binary.
 inline const Part& sharedPart(const std::string& sketch) {
-    static std::map<std::string, Part> cache;
-    auto found = cache.find(sketch);
-    if (found == cache.end())
-        found =
-            cache
-                .emplace(sketch, sketchToPart(testsupport::sharedSketchPoints(sketch), sketch).part)
-                .first;
-    return found->second;
+    return testsupport::sharedSketchPart(sketch);
 }
 
 inline double boundingBoxDiagonal(const std::vector<Vec3>& points) {

@@ -1,0 +1,248 @@
+#include "merge/MergeParts.h"
+
+#include <algorithm>
+#include <chrono>
+#include <set>
+
+#include "base/Error.h"
+#include "merge/MeshUnion.h"
+#include "merge/SeamSmoothing.h"
+#include "part/CarryAcross.h"
+#include "rig/LocalBoneHeat.h"
+
+namespace rigmesh {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double meanEdgeLength(const TriMesh& mesh) {
+    double total = 0.0;
+    for (const auto& face : mesh.faces)
+        for (int c = 0; c < 3; ++c)
+            total += (mesh.vertices[face[c]] - mesh.vertices[face[(c + 1) % 3]]).norm();
+    return mesh.faces.empty() ? 0.0 : total / (3.0 * mesh.faceCount());
+}
+
+// The target's weights by merged bone id. After a split the bone keeps its
+// id and its weights, and the vertices weighted on it seed the inclusion
+// test: those nearer the new tail half fail it and are solved again (3.2.2).
+WeightsById targetWeights(const Part& target, const SkeletonJoin& join, BoneId splitBone,
+                          std::vector<int>& seeds) {
+    WeightsById weights = weightsById(target.skeleton, target.weights);
+    if (!join.splitTail)
+        return weights;
+    for (std::size_t v = 0; v < weights.size(); ++v)
+        for (const auto& entry : weights[v])
+            if (entry.first == splitBone)
+                seeds.push_back(static_cast<int>(v));
+    return weights;
+}
+
+WeightsById draggedWeights(const Part& dragged, const SkeletonJoin& join) {
+    WeightsById weights = weightsById(dragged.skeleton, dragged.weights);
+    for (auto& list : weights) {
+        for (auto& entry : list)
+            entry.first = join.draggedBones.at(entry.first);
+        normaliseWeights(list);
+    }
+    return weights;
+}
+
+// Paper 3.2: bones that are no vertex's largest weight go (a leaf bone with
+// its end joint; an inner bone collapses onto its busier end). Returns the
+// removed bones; the vertices that lost weight are added to `touched`.
+std::vector<BoneId> pruneBones(Skeleton& skeleton, WeightsById& weights,
+                               const std::set<BoneId>& keep, std::map<JointId, JointId>& renamed,
+                               std::vector<int>& touched) {
+    std::vector<BoneId> pruned;
+    while (skeleton.boneCount() > 1) {
+        std::set<BoneId> leading;
+        for (const auto& list : weights)
+            if (!list.empty())
+                leading.insert(std::max_element(list.begin(), list.end(), [](auto& a, auto& b) {
+                                   return a.second < b.second;
+                               })->first);
+        std::optional<BoneId> victim;
+        for (const Bone& bone : skeleton.bones()) {
+            if (leading.contains(bone.id) || keep.contains(bone.id))
+                continue;
+            const bool leaf = skeleton.degree(bone.head) == 1 || skeleton.degree(bone.tail) == 1;
+            if (!victim || leaf) {
+                victim = bone.id;
+                if (leaf)
+                    break;
+            }
+        }
+        if (!victim)
+            break;
+        const Bone bone = skeleton.bone(*victim);
+        if (skeleton.degree(bone.tail) == 1 || skeleton.degree(bone.head) == 1) {
+            const JointId end = skeleton.degree(bone.tail) == 1 ? bone.tail : bone.head;
+            skeleton.removeJoint(end);
+        } else {
+            const bool tailBusier = skeleton.degree(bone.tail) > skeleton.degree(bone.head);
+            const Vec3 at = skeleton.joint(tailBusier ? bone.tail : bone.head).position;
+            skeleton.collapseBone(bone.id, at);
+            for (auto& [from, to] : renamed)
+                if (to == bone.tail)
+                    to = bone.head;
+        }
+        pruned.push_back(bone.id);
+        for (std::size_t v = 0; v < weights.size(); ++v) {
+            const auto before = weights[v].size();
+            std::erase_if(weights[v], [&](const auto& e) { return e.first == bone.id; });
+            if (weights[v].size() != before) {
+                normaliseWeights(weights[v]);
+                touched.push_back(static_cast<int>(v));
+            }
+        }
+    }
+    std::erase_if(renamed, [&](const auto& entry) { return !skeleton.hasJoint(entry.second); });
+    return pruned;
+}
+
+}  // namespace
+
+double percentileWeightDifference(const WeightsById& a, const WeightsById& b, double fraction) {
+    std::vector<double> differences;
+    for (std::size_t v = 0; v < a.size() && v < b.size(); ++v) {
+        std::map<BoneId, double> d;
+        for (const auto& [bone, w] : a[v])
+            d[bone] += w;
+        for (const auto& [bone, w] : b[v])
+            d[bone] -= w;
+        double l1 = 0.0;
+        for (const auto& [bone, w] : d)
+            l1 += std::abs(w);
+        differences.push_back(l1);
+    }
+    if (differences.empty())
+        return 0.0;
+    const auto at =
+        differences.begin() +
+        static_cast<std::ptrdiff_t>(fraction * static_cast<double>(differences.size() - 1));
+    std::nth_element(differences.begin(), at, differences.end());
+    return *at;
+}
+
+MergeResult mergeParts(const Part& target, const Part& dragged, const MergeRequest& request) {
+    const auto start = Clock::now();
+    if (target.skeleton.boneCount() == 0 || dragged.skeleton.boneCount() == 0)
+        throw Error("Only rigged parts can be merged; rig the imported mesh first.");
+    MergeResult result;
+    SkeletonJoin join = joinSkeletons(target.skeleton, dragged.skeleton, request.join);
+    result.draggedTranslation = join.draggedTranslation;
+    TriMesh draggedMesh = dragged.mesh;
+    for (Vec3& p : draggedMesh.vertices)
+        p += join.draggedTranslation;
+
+    // 3.2.1: the union and the seam remeshed at the part's edge length.
+    auto stage = Clock::now();
+    const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(target.mesh);
+    MeshUnionResult merged = unionMeshes(target.mesh, draggedMesh, edge);
+    result.stats.unionMs = millisecondsSince(stage);
+
+    std::vector<CarrySource> inputs(2);
+    inputs[0].mesh = &target.mesh;
+    std::vector<int> splitSeeds;
+    inputs[0].weights = targetWeights(target, join, request.join.targetBone, splitSeeds);
+    inputs[0].mirror = target.mirror;
+    inputs[1].mesh = &draggedMesh;
+    inputs[1].weights = draggedWeights(dragged, join);
+    inputs[1].mirror = dragged.mirror;
+    CarriedData carried = carryAcross(merged.sources, inputs);
+
+    stage = Clock::now();
+    result.movedVertices = smoothSeam(merged.mesh, merged.loop);
+    result.stats.smoothingMs = millisecondsSince(stage);
+
+    // Prune (3.2), keeping the bones the user asked for, then a central root.
+    std::set<BoneId> keep;
+    if (join.connectingBone)
+        keep.insert(*join.connectingBone);
+    if (join.splitTail) {
+        keep.insert(*join.splitTail);
+        keep.insert(request.join.targetBone);
+    }
+    std::vector<int> seeds;
+    for (int v = 0; v < merged.mesh.vertexCount(); ++v) {
+        const VertexSource& source = merged.sources[v];
+        if (merged.onLoop[v] ||
+            (source.kind == VertexSource::Kind::Vertex && source.mesh == 0 &&
+             std::binary_search(splitSeeds.begin(), splitSeeds.end(), source.index)))
+            seeds.push_back(v);
+    }
+    result.draggedJoints = join.draggedJoints;
+    result.prunedBones =
+        pruneBones(join.skeleton, carried.weights, keep, result.draggedJoints, seeds);
+    join.skeleton.setRoot(chooseCentralRoot(join.skeleton));
+    join.skeleton.reorient();
+
+    // 3.2.2 (or 2.4 on the whole part).
+    stage = Clock::now();
+    std::vector<int> unknown = carried.needWeights;
+    for (int v = 0; v < merged.mesh.vertexCount(); ++v)
+        if (carried.weights[v].empty())
+            unknown.push_back(v);
+    std::sort(unknown.begin(), unknown.end());
+    unknown.erase(std::unique(unknown.begin(), unknown.end()), unknown.end());
+    WeightsById weights;
+    std::vector<BoneId> extra(keep.begin(), keep.end());
+    std::erase_if(extra, [&](BoneId id) { return !join.skeleton.hasBone(id); });
+    result.requestedBones = extra;
+    if (request.reskin == Reskin::Local) {
+        LocalBoneHeatOptions options;
+        options.heat = request.heat;
+        LocalBoneHeatResult local = recomputeWeightsLocally(
+            merged.mesh, join.skeleton, carried.weights, seeds, unknown, extra, options);
+        weights = std::move(local.weights);
+        result.stats.verticesInvolved = local.verticesInvolved();
+        result.stats.bonesInvolved = static_cast<int>(local.bones.size());
+    } else {
+        weights = recomputeWeightsGlobally(merged.mesh, join.skeleton, request.heat);
+        result.stats.verticesInvolved = merged.mesh.vertexCount();
+        result.stats.bonesInvolved = join.skeleton.boneCount();
+    }
+    result.stats.reskinMs = millisecondsSince(stage);
+    if (request.compareGlobal) {
+        stage = Clock::now();
+        const WeightsById global =
+            recomputeWeightsGlobally(merged.mesh, join.skeleton, request.heat);
+        result.stats.globalMs = millisecondsSince(stage);
+        result.stats.p90WeightDifference = percentileWeightDifference(weights, global, 0.9);
+    }
+
+    Part& part = result.part;
+    part.name = target.name;
+    // A merged part is no longer one sketch: outline and sketch regions say so
+    // by being empty (Part.h).
+    part.mesh = std::move(merged.mesh);
+    part.mirror = std::move(carried.mirror);
+    part.skeleton = std::move(join.skeleton);
+    part.weights = weightsByIndex(part.skeleton, weights);
+    for (const auto& [id, name] : target.boneNames)
+        if (part.skeleton.hasBone(id))
+            part.boneNames[id] = name;
+    for (const auto& [id, name] : dragged.boneNames)
+        if (part.skeleton.hasBone(join.draggedBones.at(id)))
+            part.boneNames[join.draggedBones.at(id)] = name;
+    result.sources = std::move(merged.sources);
+    result.stats.vertices = part.mesh.vertexCount();
+    result.stats.bones = part.skeleton.boneCount();
+    result.stats.prunedBones = static_cast<int>(result.prunedBones.size());
+    result.stats.smoothedVertices = static_cast<int>(result.movedVertices.size());
+
+    const std::vector<std::string> problems = part.validateSolid();
+    if (!problems.empty())
+        throw Error("The merge gave an invalid part (" + problems.front() +
+                    "); nothing was changed.");
+    result.stats.totalMs = millisecondsSince(start);
+    return result;
+}
+
+}  // namespace rigmesh

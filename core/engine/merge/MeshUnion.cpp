@@ -1,0 +1,267 @@
+#include "merge/MeshUnion.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cstring>
+#include <deque>
+#include <unordered_map>
+
+#include "base/Error.h"
+
+namespace rigmesh {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using VertexIndex = SurfaceMesh::Vertex_index;
+using FaceIndex = SurfaceMesh::Face_index;
+using EdgeIndex = SurfaceMesh::Edge_index;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace params = CGAL::parameters;
+
+Vec3 toVec(const Point& p) {
+    return {p.x(), p.y(), p.z()};
+}
+
+SurfaceMesh toSurfaceMesh(const TriMesh& mesh, const char* which) {
+    SurfaceMesh surface;
+    surface.reserve(mesh.vertexCount(), mesh.faceCount() * 3 / 2, mesh.faceCount());
+    for (const Vec3& v : mesh.vertices)
+        surface.add_vertex(Point(v.x(), v.y(), v.z()));
+    for (const auto& [a, b, c] : mesh.faces) {
+        const FaceIndex f = surface.add_face(VertexIndex(a), VertexIndex(b), VertexIndex(c));
+        if (f == SurfaceMesh::null_face())
+            throw Error(std::string("The surface of ") + which +
+                        " is not a manifold, so it cannot be merged.");
+    }
+    if (!CGAL::is_closed(surface))
+        throw Error(std::string("The surface of ") + which +
+                    " has a hole, so it does not bound a volume and cannot be merged.");
+    return surface;
+}
+
+// Exact positions of both inputs: corefinement copies the points of every
+// vertex it does not create, so a bitwise match is an unchanged vertex.
+struct PointKey {
+    std::array<double, 3> xyz;
+    bool operator==(const PointKey& other) const { return xyz == other.xyz; }
+};
+struct PointKeyHash {
+    std::size_t operator()(const PointKey& key) const {
+        std::size_t h = 0;
+        for (double d : key.xyz) {
+            std::uint64_t bits;
+            std::memcpy(&bits, &d, sizeof bits);
+            h ^= std::hash<std::uint64_t>{}(bits) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+        }
+        return h;
+    }
+};
+PointKey keyOf(const Vec3& p) {
+    return {{p.x(), p.y(), p.z()}};
+}
+
+Vec3 barycentricOf(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 e0 = b - a, e1 = c - a, d = p - a;
+    const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1);
+    const double d20 = d.dot(e0), d21 = d.dot(e1);
+    const double denominator = d00 * d11 - d01 * d01;
+    if (!(std::abs(denominator) > 0.0))
+        return {1.0, 0.0, 0.0};
+    const double v = (d11 * d20 - d01 * d21) / denominator;
+    const double w = (d00 * d21 - d01 * d20) / denominator;
+    Vec3 result(1.0 - v - w, v, w);
+    result = result.cwiseMax(0.0);
+    return result / result.sum();
+}
+
+// The closest point of either input's surface, as a triangle source.
+class SourceTriangles {
+  public:
+    SourceTriangles(const TriMesh& first, const TriMesh& second) : meshes_{&first, &second} {
+        for (int m = 0; m < 2; ++m)
+            for (int f = 0; f < meshes_[m]->faceCount(); ++f) {
+                const auto& face = meshes_[m]->faces[f];
+                const Vec3& a = meshes_[m]->vertices[face[0]];
+                const Vec3& b = meshes_[m]->vertices[face[1]];
+                const Vec3& c = meshes_[m]->vertices[face[2]];
+                triangles_.emplace_back(Point(a.x(), a.y(), a.z()), Point(b.x(), b.y(), b.z()),
+                                        Point(c.x(), c.y(), c.z()));
+                owners_.push_back({m, f});
+            }
+        tree_.insert(triangles_.begin(), triangles_.end());
+        tree_.accelerate_distance_queries();
+    }
+
+    VertexSource sourceOf(const Vec3& p) const {
+        const auto [closest, primitive] =
+            tree_.closest_point_and_primitive(Point(p.x(), p.y(), p.z()));
+        const auto [mesh, face] = owners_[primitive - triangles_.begin()];
+        const auto& corners = meshes_[mesh]->faces[face];
+        const auto& v = meshes_[mesh]->vertices;
+        return VertexSource::triangle(
+            mesh, face, barycentricOf(toVec(closest), v[corners[0]], v[corners[1]], v[corners[2]]));
+    }
+
+  private:
+    using Triangle = Kernel::Triangle_3;
+    using Iterator = std::vector<Triangle>::const_iterator;
+    using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
+    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+    std::array<const TriMesh*, 2> meshes_;
+    std::vector<Triangle> triangles_;
+    std::vector<std::pair<int, int>> owners_;
+    Tree tree_;
+};
+
+// Faces with a corner within `rings` edges of a constrained (loop) edge.
+std::vector<FaceIndex> facesNearLoop(const SurfaceMesh& mesh,
+                                     const SurfaceMesh::Property_map<EdgeIndex, bool>& onLoop,
+                                     int rings) {
+    std::vector<int> depth(mesh.number_of_vertices(), -1);
+    std::deque<VertexIndex> queue;
+    for (EdgeIndex e : mesh.edges())
+        if (onLoop[e])
+            for (int end = 0; end < 2; ++end) {
+                const VertexIndex v = mesh.vertex(e, end);
+                if (depth[v.idx()] < 0) {
+                    depth[v.idx()] = 0;
+                    queue.push_back(v);
+                }
+            }
+    while (!queue.empty()) {
+        const VertexIndex v = queue.front();
+        queue.pop_front();
+        if (depth[v.idx()] >= rings)
+            continue;
+        for (VertexIndex w : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+            if (depth[w.idx()] < 0) {
+                depth[w.idx()] = depth[v.idx()] + 1;
+                queue.push_back(w);
+            }
+    }
+    std::vector<FaceIndex> faces;
+    for (FaceIndex f : mesh.faces())
+        for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+            if (depth[v.idx()] >= 0) {
+                faces.push_back(f);
+                break;
+            }
+    return faces;
+}
+
+}  // namespace
+
+MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double seamEdgeLength) {
+    SurfaceMesh a = toSurfaceMesh(first, "the target part");
+    SurfaceMesh b = toSurfaceMesh(second, "the dragged part");
+    SurfaceMesh out;
+    auto loopEdges = out.add_property_map<EdgeIndex, bool>("e:loop", false).first;
+    bool ok = false;
+    try {
+        ok = PMP::corefine_and_compute_union(a, b, out, params::throw_on_self_intersection(true),
+                                             params::throw_on_self_intersection(true),
+                                             params::edge_is_constrained_map(loopEdges));
+    } catch (const PMP::Corefinement::Self_intersection_exception&) {
+        throw Error(
+            "One of the surfaces intersects itself, so the parts cannot be merged. "
+            "Rebuild it with a larger edge length or smoothing, then merge again.");
+    }
+    if (!ok)
+        throw Error(
+            "The merged surface would not be a manifold (the parts touch at a point or "
+            "along a line). Move the dragged part so that it overlaps the other one, "
+            "then merge again.");
+
+    // Where every vertex came from: an unchanged input vertex (bitwise), or
+    // a new point on the loop (a point on either input surface).
+    std::unordered_map<PointKey, VertexSource, PointKeyHash> inputVertices;
+    for (int v = second.vertexCount() - 1; v >= 0; --v)
+        inputVertices[keyOf(second.vertices[v])] = VertexSource::vertex(1, v);
+    for (int v = first.vertexCount() - 1; v >= 0; --v)
+        inputVertices[keyOf(first.vertices[v])] = VertexSource::vertex(0, v);
+    const SourceTriangles sourceTriangles(first, second);
+    std::array<int, 2> keptFrom{0, 0};
+    auto sourceIndex = out.add_property_map<VertexIndex, int>("v:source", -1).first;
+    VertexSources unionSources;
+    std::vector<Vec3> unionPositions;
+    for (VertexIndex v : out.vertices()) {
+        const Vec3 p = toVec(out.point(v));
+        auto found = inputVertices.find(keyOf(p));
+        VertexSource source =
+            found != inputVertices.end() ? found->second : sourceTriangles.sourceOf(p);
+        if (source.kind == VertexSource::Kind::Vertex)
+            ++keptFrom[source.mesh];
+        sourceIndex[v] = static_cast<int>(unionSources.size());
+        unionSources.push_back(source);
+        unionPositions.push_back(p);
+    }
+    const bool hasLoop = std::any_of(out.edges().begin(), out.edges().end(),
+                                     [&](EdgeIndex e) { return loopEdges[e]; });
+    if (!hasLoop) {
+        if (keptFrom[0] > 0 && keptFrom[1] > 0)
+            throw Error(
+                "The parts do not touch. Drag one part so that it overlaps the other, "
+                "then merge.");
+        throw Error(
+            "One part lies entirely inside the other, so merging would only delete it. "
+            "Drag it so that it sticks out of the other part, then merge.");
+    }
+
+    MeshUnionResult result;
+    if (seamEdgeLength > 0.0) {
+        // Remesh the cut faces (paper 3.2.1 glues the meshes by splitting
+        // edges; we also even them out) with the loop as a constraint.
+        const std::vector<FaceIndex> band = facesNearLoop(out, loopEdges, 2);
+        PMP::isotropic_remeshing(
+            band, seamEdgeLength, out,
+            params::number_of_iterations(3).edge_is_constrained_map(loopEdges).protect_constraints(
+                false));
+        out.collect_garbage();
+    }
+
+    std::vector<int> outIndex(out.number_of_vertices() + out.number_of_removed_vertices(), -1);
+    for (VertexIndex v : out.vertices()) {
+        const Vec3 p = toVec(out.point(v));
+        const int s = sourceIndex[v];
+        outIndex[v.idx()] = result.mesh.vertexCount();
+        result.mesh.vertices.push_back(p);
+        if (s >= 0 && unionPositions[s] == p) {
+            result.sources.push_back(unionSources[s]);
+        } else {
+            result.sources.push_back(sourceTriangles.sourceOf(p));
+            ++result.remeshedVertices;
+        }
+    }
+    for (FaceIndex f : out.faces()) {
+        std::array<int, 3> face{};
+        int corner = 0;
+        for (VertexIndex v : CGAL::vertices_around_face(out.halfedge(f), out))
+            face[corner++] = outIndex[v.idx()];
+        result.mesh.faces.push_back(face);
+    }
+    result.onLoop.assign(result.mesh.vertices.size(), 0);
+    for (EdgeIndex e : out.edges())
+        if (loopEdges[e]) {
+            const int p = outIndex[out.vertex(e, 0).idx()];
+            const int q = outIndex[out.vertex(e, 1).idx()];
+            result.loop.push_back({p, q});
+            result.onLoop[p] = result.onLoop[q] = 1;
+        }
+    return result;
+}
+
+}  // namespace rigmesh

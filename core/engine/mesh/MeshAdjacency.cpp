@@ -1,0 +1,21 @@
+#include "mesh/MeshAdjacency.h"
+
+#include <algorithm>
+
+namespace rigmesh {
+
+std::vector<std::vector<int>> vertexNeighbours(const TriMesh& mesh) {
+    std::vector<std::vector<int>> neighbours(mesh.vertices.size());
+    for (const auto& face : mesh.faces)
+        for (int c = 0; c < 3; ++c) {
+            neighbours[face[c]].push_back(face[(c + 1) % 3]);
+            neighbours[face[c]].push_back(face[(c + 2) % 3]);
+        }
+    for (auto& list : neighbours) {
+        std::sort(list.begin(), list.end());
+        list.erase(std::unique(list.begin(), list.end()), list.end());
+    }
+    return neighbours;
+}
+
+}  // namespace rigmesh

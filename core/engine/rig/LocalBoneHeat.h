@@ -1,0 +1,46 @@
+// Local skin weight re-computation after a merge (paper 3.2.2): only the
+// vertices near the merge boundary whose weights are clearly wrong, a
+// transition band around them and the bones they involve are solved again,
+// with the weights of the excluded neighbours as boundary values.
+#pragma once
+
+#include <vector>
+
+#include "mesh/TriMesh.h"
+#include "part/BoneWeights.h"
+#include "rig/BoneHeatSolver.h"
+#include "rig/Skeleton.h"
+
+namespace rigmesh {
+
+struct LocalBoneHeatOptions {
+    BoneHeatOptions heat;
+    double transitionFactor = 1.5;  // the paper's c
+};
+
+struct LocalBoneHeatResult {
+    WeightsById weights;          // every vertex; unchanged outside `recomputed`
+    std::vector<int> failedTest;  // "red": the inclusion test put them in
+    std::vector<int> transition;  // "yellow": the transition band
+    std::vector<BoneId> bones;    // bones involved, sorted
+    int verticesInvolved() const { return static_cast<int>(failedTest.size() + transition.size()); }
+};
+
+// `weights` are the carried weights (an empty list for a vertex without any);
+// `seeds` the merge boundary, where the breadth-first inclusion test starts;
+// `unknown` the seeds with no trustworthy weights, included whatever the test
+// says; `extraBones` bones that must take part (a new connecting bone).
+// Throws Error if the skeleton has no bone.
+LocalBoneHeatResult recomputeWeightsLocally(const TriMesh& mesh, const Skeleton& skeleton,
+                                            const WeightsById& weights,
+                                            const std::vector<int>& seeds,
+                                            const std::vector<int>& unknown,
+                                            const std::vector<BoneId>& extraBones = {},
+                                            const LocalBoneHeatOptions& options = {});
+
+// The whole part's weights as in section 2.4 (every vertex tested for
+// visibility), keyed by bone id: the global re-computation.
+WeightsById recomputeWeightsGlobally(const TriMesh& mesh, const Skeleton& skeleton,
+                                     const BoneHeatOptions& options = {});
+
+}  // namespace rigmesh
