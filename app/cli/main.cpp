@@ -39,12 +39,17 @@ commands:
       an IK bend of the end joint at 0.5 s, rest at 1 s. --rig writes joints,
       bones and weights as JSON; --plain-dp uses plain Douglas-Peucker
       instead of the paper's CDP.
-  run RECIPE.json [-o OUT.rigmesh|.glb|.gltf|.fbx|.dae|.obj]
-      Replays a recipe (a JSON list of the studio's commands: sketch, pose,
-      key, ...; see resources/recipes/camel.json) on a new document, prints
-      one line per step and writes the document: .rigmesh natively, the other
-      formats as for build: one skinned mesh per part, each with its clip.
-      A bad step stops with "step N (command): reason".
+  run RECIPE.json [-o OUT.rigmesh|.glb|.gltf|.fbx|.dae|.obj] [--stats FILE.json]
+               [--compare-global]
+      Replays a recipe (a JSON list of the studio's commands: sketch, merge,
+      pose, key, ...; see resources/recipes/camel.json) on a new document,
+      prints one line per step and writes the document: .rigmesh natively,
+      the other formats as for build: one skinned mesh per part, each with
+      its clip. A bad step stops with "step N (command): reason". --stats
+      writes each step's time and, for each merge, the vertices and bones of
+      the part and of the local re-skin and its times; --compare-global also
+      solves the global re-skin and reports its time and the 90th percentile
+      of the per-vertex L1 difference (paper Table 1).
   import FILE -o PARTS.rigmesh
       Reads a mesh or rigged scene (.glb, .gltf, .fbx, .dae, .obj, .ply, ...)
       and writes its parts as a document. The studio and `run` read imports

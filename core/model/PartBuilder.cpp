@@ -30,4 +30,34 @@ std::shared_ptr<const Part> buildPart(const std::vector<Vec2>& stroke, const QSt
     return std::make_shared<const Part>(std::move(result.part));
 }
 
+BuiltPart buildPartForDocument(const Document& document, const std::vector<Vec2>& stroke,
+                               const QString& name, const BuildOptions& options) {
+    checkBuildOptions(stroke, options);
+    BuildOptions used = options;
+    if (used.targetEdgeLength == 0.0)
+        used.targetEdgeLength = documentEdgeLength(document);
+    auto build = [&](const BuildOptions& o) {
+        SketchToPartResult result = sketchToPart(stroke, name.toStdString(), engineOptions(o));
+        used.targetEdgeLength = result.surface.targetEdgeLength;
+        return std::make_shared<const Part>(std::move(result.part));
+    };
+    if (options.targetEdgeLength == 0.0 && used.targetEdgeLength > 0.0) {
+        try {
+            return {build(used), used};
+        } catch (const Error&) {
+            // Too coarse (or too fine) for this sketch: its own length.
+            used.targetEdgeLength = 0.0;
+        }
+    }
+    std::shared_ptr<const Part> part = build(used);
+    return {std::move(part), used};
+}
+
+double documentEdgeLength(const Document& document) {
+    for (const PartNode& node : document.parts())
+        if (!node.stroke.empty())
+            return node.options.targetEdgeLength;
+    return 0.0;
+}
+
 }  // namespace rigmesh::model

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "base/Types.h"
+#include "model/Document.h"
 #include "model/PartNode.h"
 #include "pipeline/SketchToPart.h"
 
@@ -24,5 +25,23 @@ void checkBuildOptions(const std::vector<Vec2>& stroke, const BuildOptions& opti
 // Throws rigmesh::Error with a user-readable reason on a bad stroke or options.
 std::shared_ptr<const Part> buildPart(const std::vector<Vec2>& stroke, const QString& name,
                                       const BuildOptions& options);
+
+struct BuiltPart {
+    std::shared_ptr<const Part> part;
+    BuildOptions options;  // with the edge length actually used (never 0)
+};
+
+// One resolution per document (issue 12 item 5): a new sketch with the
+// automatic edge length gets the document's (documentEdgeLength), so merged
+// surfaces are uniform; the first part, or a sketch too small to build at
+// that length, gets its own automatic length. The options returned record
+// the length used. Throws as buildPart does.
+BuiltPart buildPartForDocument(const Document& document, const std::vector<Vec2>& stroke,
+                               const QString& name, const BuildOptions& options);
+
+// The edge length the document's sketched parts share: the first sketched
+// part's; 0 if there is none or it was built with the automatic length by an
+// older version.
+double documentEdgeLength(const Document& document);
 
 }  // namespace rigmesh::model

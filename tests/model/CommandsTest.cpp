@@ -186,6 +186,9 @@ TEST(Commands, RebuildIsOneUndoableStep) {
     Document document;
     const PartId a = addPart(document, testStrokes()[0]);
     const auto original = document.part(a).part;
+    // A new part records the edge length it was built with (issue 12 item 5).
+    const BuildOptions created = document.part(a).options;
+    EXPECT_GT(created.targetEdgeLength, 0.0);
     const int count = document.undoStack()->count();
     QSignalSpy changed(&document, &Document::partChanged);
     BuildOptions options;
@@ -200,7 +203,7 @@ TEST(Commands, RebuildIsOneUndoableStep) {
     EXPECT_EQ(document.part(a).options, options);
     document.undoStack()->undo();
     EXPECT_EQ(document.part(a).part, original);  // undo swaps the pointer back
-    EXPECT_EQ(document.part(a).options, BuildOptions{});
+    EXPECT_EQ(document.part(a).options, created);
 }
 
 TEST(Commands, RebuildWithBadOptionsPushesNothing) {

@@ -1,6 +1,7 @@
 // The shipped example recipe runs with the model's runner (what `rigmesh run`
-// does, without the executable): seven parts, one leg keyed three times, and
-// its history written back as a recipe replays to the same bytes.
+// does, without the executable): the paper's camel session (Fig. 10) of
+// seven sketches merged into one part with one skeleton, one leg keyed three
+// times, and its history written back as a recipe replays to the same bytes.
 #include "ModelTestSupport.h"
 #include "RecipeTestSupport.h"
 #include "model/recipe/RecipeFromHistory.h"
@@ -8,25 +9,59 @@
 namespace rigmesh::model::test {
 namespace {
 
-TEST(ExampleRecipe, CamelRunsAndItsHistoryReplaysExactly) {
+const std::string kCamel = std::string(RIGMESH_RESOURCES) + "/recipes/camel.json";
+
+TEST(ExampleRecipe, CamelIsMergedIntoOneRiggedPartAndItsHistoryReplaysExactly) {
     Document document;
     std::vector<RecipeStepReport> reports;
-    runRecipeFile(document, std::string(RIGMESH_RESOURCES) + "/recipes/camel.json",
+    runRecipeFile(document, kCamel,
                   [&](const RecipeStepReport& report) { reports.push_back(report); });
-    ASSERT_EQ(document.partCount(), 7);
-    EXPECT_EQ(reports.size(), 13u);
-    const PartNode& leg = document.parts()[3];
-    EXPECT_EQ(leg.name, QStringLiteral("front_left"));
-    ASSERT_EQ(leg.clip.keyCount(), 3);
-    EXPECT_EQ(leg.clip.keyTimes(), (std::vector<double>{0.0, 0.5, 1.0}));
-    EXPECT_FALSE(identicalPoses(leg.clip.key(0.0), leg.clip.key(0.5)));
-    EXPECT_FALSE(identicalPoses(leg.clip.key(0.5), leg.clip.key(1.0)));
-    EXPECT_EQ(leg.clip.interpolation, Interpolation::Smooth);
-    EXPECT_EQ(leg.clip.mode, PlaybackMode::Loop);
+    ASSERT_EQ(document.partCount(), 1);
+    EXPECT_EQ(reports.size(), 20u);
+    const PartNode& camel = document.parts()[0];
+    EXPECT_EQ(camel.name, QStringLiteral("body"));
+    EXPECT_TRUE(camel.part->validateSolid().empty());
+    // Body 3 joints, four legs 2 each, neck 2 more (one snapped), head 1 more.
+    EXPECT_EQ(camel.part->skeleton.jointCount(), 14);
+    EXPECT_TRUE(camel.part->skeleton.validate().empty());
+    // One resolution for the document: about the paper's 6,582 vertices.
+    EXPECT_GT(camel.part->mesh.vertexCount(), 5000);
+    EXPECT_LT(camel.part->mesh.vertexCount(), 8000);
+    ASSERT_EQ(camel.clip.keyCount(), 3);
+    EXPECT_EQ(camel.clip.keyTimes(), (std::vector<double>{0.0, 0.5, 1.0}));
+    EXPECT_FALSE(identicalPoses(camel.clip.key(0.0), camel.clip.key(0.5)));
+    EXPECT_FALSE(identicalPoses(camel.clip.key(0.5), camel.clip.key(1.0)));
+    EXPECT_EQ(camel.clip.interpolation, Interpolation::Smooth);
+    EXPECT_EQ(camel.clip.mode, PlaybackMode::Loop);
 
     Document replay;
     RecipeRunner(replay).run(parseRecipe(recipeFromHistory(document).dump(), "history"));
     EXPECT_EQ(bytesOf(replay), bytesOf(document));
+}
+
+// Paper Table 1: each merge re-skins a small part of the camel, and the
+// local weights stay close to the global ones (p90 of the L1 difference at
+// most 0.07, the paper's largest being 0.0632).
+TEST(ExampleRecipe, CamelMergesAreLocalAndCloseToTheGlobalWeights) {
+    Document document;
+    std::vector<RecipeStepReport> merges;
+    recipe::StepOptions options;
+    options.compareGlobalReskin = true;
+    runRecipeFile(
+        document, kCamel,
+        [&](const RecipeStepReport& report) {
+            if (report.command == "merge")
+                merges.push_back(report);
+        },
+        options);
+    ASSERT_EQ(merges.size(), 6u);
+    for (const RecipeStepReport& merge : merges) {
+        SCOPED_TRACE(merge.summary);
+        const nlohmann::json& stats = merge.stats;
+        EXPECT_LE(stats["p90_weight_difference"].get<double>(), 0.07);
+        EXPECT_LT(stats["vertices_involved"].get<int>(), stats["vertices"].get<int>() / 2);
+        EXPECT_LE(stats["bones_involved"].get<int>(), stats["bones"].get<int>());
+    }
 }
 
 }  // namespace

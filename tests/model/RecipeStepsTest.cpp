@@ -130,10 +130,11 @@ TEST(RecipeSteps, MoveReplacesTheGivenPlacementFields) {
 
 TEST(RecipeSteps, RebuildKeepsTheOptionsNotGiven) {
     Sketched s;
+    const double edgeLength = s.node(0).options.targetEdgeLength;
     runSteps(s.document,
              {{{"command", "rebuild"}, {"part", "body"}, {"options", {{"smoothing", false}}}}});
     EXPECT_FALSE(s.node(0).options.smoothing);
-    EXPECT_EQ(s.node(0).options.targetEdgeLength, 0.0);
+    EXPECT_EQ(s.node(0).options.targetEdgeLength, edgeLength);
     EXPECT_EQ(s.stack().text(s.stack().index() - 1), QStringLiteral("Rebuild body"));
 }
 

@@ -20,6 +20,11 @@ double millisecondsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+BoneSegment segmentOf(const Skeleton& skeleton, BoneId id) {
+    const Bone& bone = skeleton.bone(id);
+    return {skeleton.joint(bone.head).position, skeleton.joint(bone.tail).position};
+}
+
 double meanEdgeLength(const TriMesh& mesh) {
     double total = 0.0;
     for (const auto& face : mesh.faces)
@@ -53,23 +58,61 @@ WeightsById draggedWeights(const Part& dragged, const SkeletonJoin& join) {
     return weights;
 }
 
+// A new bone (connect, split) may now be the closest bone of vertices far
+// from the loop, inside the target (paper Fig. 9: the connecting bone runs
+// through the body). Those whose distance to it is below the distance to
+// their leading bone join the seeds; the inclusion test (3.2.2) then decides.
+void addVerticesNearerToNewBones(const TriMesh& mesh, const Skeleton& skeleton,
+                                 const WeightsById& weights, const std::vector<BoneId>& added,
+                                 std::vector<int>& seeds) {
+    if (added.empty())
+        return;
+    std::vector<BoneSegment> newBones;
+    for (BoneId id : added)
+        newBones.push_back(segmentOf(skeleton, id));
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+        if (weights[v].empty())
+            continue;
+        const BoneId leading =
+            std::max_element(weights[v].begin(), weights[v].end(), [](auto& a, auto& b) {
+                return a.second < b.second;
+            })->first;
+        if (!skeleton.hasBone(leading))
+            continue;
+        const double own = pointSegmentDistance(mesh.vertices[v], segmentOf(skeleton, leading));
+        for (const BoneSegment& bone : newBones)
+            if (pointSegmentDistance(mesh.vertices[v], bone) < own) {
+                seeds.push_back(v);
+                break;
+            }
+    }
+}
+
+// The bones that are some vertex's largest weight.
+std::set<BoneId> leadingBones(const WeightsById& weights) {
+    std::set<BoneId> leading;
+    for (const auto& list : weights)
+        if (!list.empty())
+            leading.insert(std::max_element(list.begin(), list.end(), [](auto& a, auto& b) {
+                               return a.second < b.second;
+                           })->first);
+    return leading;
+}
+
 // Paper 3.2: bones that are no vertex's largest weight go (a leaf bone with
-// its end joint; an inner bone collapses onto its busier end). Returns the
-// removed bones; the vertices that lost weight are added to `touched`.
+// its end joint; an inner bone collapses onto its busier end). Only bones
+// that led vertices before the merge are candidates, i.e. bones the union
+// buried: a bone that never led any (a connecting bone, made for posing)
+// stays. Returns the removed bones; vertices that lost weight join `touched`.
 std::vector<BoneId> pruneBones(Skeleton& skeleton, WeightsById& weights,
-                               const std::set<BoneId>& keep, std::map<JointId, JointId>& renamed,
-                               std::vector<int>& touched) {
+                               const std::set<BoneId>& candidates,
+                               std::map<JointId, JointId>& renamed, std::vector<int>& touched) {
     std::vector<BoneId> pruned;
     while (skeleton.boneCount() > 1) {
-        std::set<BoneId> leading;
-        for (const auto& list : weights)
-            if (!list.empty())
-                leading.insert(std::max_element(list.begin(), list.end(), [](auto& a, auto& b) {
-                                   return a.second < b.second;
-                               })->first);
+        const std::set<BoneId> leading = leadingBones(weights);
         std::optional<BoneId> victim;
         for (const Bone& bone : skeleton.bones()) {
-            if (leading.contains(bone.id) || keep.contains(bone.id))
+            if (leading.contains(bone.id) || !candidates.contains(bone.id))
                 continue;
             const bool leaf = skeleton.degree(bone.head) == 1 || skeleton.degree(bone.tail) == 1;
             if (!victim || leaf) {
@@ -108,7 +151,7 @@ std::vector<BoneId> pruneBones(Skeleton& skeleton, WeightsById& weights,
 
 }  // namespace
 
-double percentileWeightDifference(const WeightsById& a, const WeightsById& b, double fraction) {
+std::vector<double> weightDifferences(const WeightsById& a, const WeightsById& b) {
     std::vector<double> differences;
     for (std::size_t v = 0; v < a.size() && v < b.size(); ++v) {
         std::map<BoneId, double> d;
@@ -121,12 +164,15 @@ double percentileWeightDifference(const WeightsById& a, const WeightsById& b, do
             l1 += std::abs(w);
         differences.push_back(l1);
     }
-    if (differences.empty())
+    return differences;
+}
+
+double percentile(std::vector<double> values, double fraction) {
+    if (values.empty())
         return 0.0;
-    const auto at =
-        differences.begin() +
-        static_cast<std::ptrdiff_t>(fraction * static_cast<double>(differences.size() - 1));
-    std::nth_element(differences.begin(), at, differences.end());
+    const auto at = values.begin() +
+                    static_cast<std::ptrdiff_t>(fraction * static_cast<double>(values.size() - 1));
+    std::nth_element(values.begin(), at, values.end());
     return *at;
 }
 
@@ -178,8 +224,12 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
             seeds.push_back(v);
     }
     result.draggedJoints = join.draggedJoints;
+    std::set<BoneId> candidates = leadingBones(inputs[0].weights);
+    candidates.merge(leadingBones(inputs[1].weights));
+    for (BoneId id : keep)
+        candidates.erase(id);
     result.prunedBones =
-        pruneBones(join.skeleton, carried.weights, keep, result.draggedJoints, seeds);
+        pruneBones(join.skeleton, carried.weights, candidates, result.draggedJoints, seeds);
     join.skeleton.setRoot(chooseCentralRoot(join.skeleton));
     join.skeleton.reorient();
 
@@ -195,6 +245,7 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
     std::vector<BoneId> extra(keep.begin(), keep.end());
     std::erase_if(extra, [&](BoneId id) { return !join.skeleton.hasBone(id); });
     result.requestedBones = extra;
+    addVerticesNearerToNewBones(merged.mesh, join.skeleton, carried.weights, extra, seeds);
     if (request.reskin == Reskin::Local) {
         LocalBoneHeatOptions options;
         options.heat = request.heat;
@@ -214,7 +265,13 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
         const WeightsById global =
             recomputeWeightsGlobally(merged.mesh, join.skeleton, request.heat);
         result.stats.globalMs = millisecondsSince(stage);
-        result.stats.p90WeightDifference = percentileWeightDifference(weights, global, 0.9);
+        const std::vector<double> differences = weightDifferences(weights, global);
+        result.stats.p90WeightDifference = percentile(differences, 0.9);
+        result.stats.p99WeightDifference = percentile(differences, 0.99);
+        double sum = 0.0;
+        for (double d : differences)
+            sum += d;
+        result.stats.meanWeightDifference = sum / static_cast<double>(differences.size());
     }
 
     Part& part = result.part;

@@ -33,8 +33,10 @@ struct MergeStats {
     int prunedBones = 0;
     int smoothedVertices = 0;
     double unionMs = 0, smoothingMs = 0, reskinMs = 0, totalMs = 0;
-    double globalMs = -1;             // with compareGlobal
-    double p90WeightDifference = -1;  // L1 per vertex, local vs global, with compareGlobal
+    double globalMs = -1;  // with compareGlobal
+    // The per-vertex L1 difference of the local and the global weights (with
+    // compareGlobal): 90th and 99th percentiles and mean.
+    double p90WeightDifference = -1, p99WeightDifference = -1, meanWeightDifference = -1;
 };
 
 struct MergeResult {
@@ -55,7 +57,9 @@ struct MergeResult {
 // overlap, a union that is not a manifold.
 MergeResult mergeParts(const Part& target, const Part& dragged, const MergeRequest& request);
 
-// The 90th percentile of the per-vertex L1 difference of two weightings.
-double percentileWeightDifference(const WeightsById& a, const WeightsById& b, double fraction);
+// The per-vertex L1 difference of two weightings of the same vertices.
+std::vector<double> weightDifferences(const WeightsById& a, const WeightsById& b);
+// The value below which `fraction` of `values` lie (nearest rank).
+double percentile(std::vector<double> values, double fraction);
 
 }  // namespace rigmesh

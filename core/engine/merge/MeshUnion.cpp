@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstring>
 #include <deque>
+#include <tuple>
 #include <unordered_map>
 
 #include "base/Error.h"
@@ -163,6 +164,60 @@ std::vector<FaceIndex> facesNearLoop(const SurfaceMesh& mesh,
     return faces;
 }
 
+// The mesh in an order that depends only on its geometry and sources, not
+// on CGAL's internal order (its box intersection sorts by address): input
+// vertices by (mesh, index), new ones by position; faces by their corners,
+// each starting at its smallest. Recipe replays and undo then give the same
+// bytes.
+template <typename SourceOf>
+MeshUnionResult canonicalResult(const SurfaceMesh& mesh,
+                                const SurfaceMesh::Property_map<EdgeIndex, bool>& loopEdges,
+                                SourceOf&& sourceOf) {
+    struct Entry {
+        VertexIndex vertex;
+        Vec3 position;
+        VertexSource source;
+    };
+    std::vector<Entry> entries;
+    for (VertexIndex v : mesh.vertices()) {
+        const Vec3 p = toVec(mesh.point(v));
+        entries.push_back({v, p, sourceOf(p)});
+    }
+    auto rank = [](const Entry& e) {
+        const bool copy = e.source.kind == VertexSource::Kind::Vertex;
+        return std::make_tuple(copy ? 0 : 1, copy ? e.source.mesh : 0, copy ? e.source.index : 0,
+                               e.position.x(), e.position.y(), e.position.z());
+    };
+    std::sort(entries.begin(), entries.end(),
+              [&](const Entry& a, const Entry& b) { return rank(a) < rank(b); });
+    std::vector<int> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), -1);
+    MeshUnionResult result;
+    for (const Entry& e : entries) {
+        index[e.vertex.idx()] = result.mesh.vertexCount();
+        result.mesh.vertices.push_back(e.position);
+        result.sources.push_back(e.source);
+    }
+    for (FaceIndex f : mesh.faces()) {
+        std::array<int, 3> face{};
+        int corner = 0;
+        for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+            face[corner++] = index[v.idx()];
+        std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
+        result.mesh.faces.push_back(face);
+    }
+    std::sort(result.mesh.faces.begin(), result.mesh.faces.end());
+    result.onLoop.assign(result.mesh.vertices.size(), 0);
+    for (EdgeIndex e : mesh.edges())
+        if (loopEdges[e]) {
+            const int p = index[mesh.vertex(e, 0).idx()];
+            const int q = index[mesh.vertex(e, 1).idx()];
+            result.loop.push_back({std::min(p, q), std::max(p, q)});
+            result.onLoop[p] = result.onLoop[q] = 1;
+        }
+    std::sort(result.loop.begin(), result.loop.end());
+    return result;
+}
+
 }  // namespace
 
 MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double seamEdgeLength) {
@@ -194,24 +249,16 @@ MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double 
     for (int v = first.vertexCount() - 1; v >= 0; --v)
         inputVertices[keyOf(first.vertices[v])] = VertexSource::vertex(0, v);
     const SourceTriangles sourceTriangles(first, second);
-    std::array<int, 2> keptFrom{0, 0};
-    auto sourceIndex = out.add_property_map<VertexIndex, int>("v:source", -1).first;
-    VertexSources unionSources;
-    std::vector<Vec3> unionPositions;
-    for (VertexIndex v : out.vertices()) {
-        const Vec3 p = toVec(out.point(v));
+    auto sourceOf = [&](const Vec3& p) {
         auto found = inputVertices.find(keyOf(p));
-        VertexSource source =
-            found != inputVertices.end() ? found->second : sourceTriangles.sourceOf(p);
+        return found != inputVertices.end() ? found->second : sourceTriangles.sourceOf(p);
+    };
+    MeshUnionResult result = canonicalResult(out, loopEdges, sourceOf);
+    std::array<int, 2> keptFrom{0, 0};
+    for (const VertexSource& source : result.sources)
         if (source.kind == VertexSource::Kind::Vertex)
             ++keptFrom[source.mesh];
-        sourceIndex[v] = static_cast<int>(unionSources.size());
-        unionSources.push_back(source);
-        unionPositions.push_back(p);
-    }
-    const bool hasLoop = std::any_of(out.edges().begin(), out.edges().end(),
-                                     [&](EdgeIndex e) { return loopEdges[e]; });
-    if (!hasLoop) {
+    if (result.loop.empty()) {
         if (keptFrom[0] > 0 && keptFrom[1] > 0)
             throw Error(
                 "The parts do not touch. Drag one part so that it overlaps the other, "
@@ -220,48 +267,39 @@ MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double 
             "One part lies entirely inside the other, so merging would only delete it. "
             "Drag it so that it sticks out of the other part, then merge.");
     }
+    if (!(seamEdgeLength > 0.0))
+        return result;
 
-    MeshUnionResult result;
-    if (seamEdgeLength > 0.0) {
-        // Remesh the cut faces (paper 3.2.1 glues the meshes by splitting
-        // edges; we also even them out) with the loop as a constraint.
-        const std::vector<FaceIndex> band = facesNearLoop(out, loopEdges, 2);
-        PMP::isotropic_remeshing(
-            band, seamEdgeLength, out,
-            params::number_of_iterations(3).edge_is_constrained_map(loopEdges).protect_constraints(
-                false));
-        out.collect_garbage();
-    }
-
-    std::vector<int> outIndex(out.number_of_vertices() + out.number_of_removed_vertices(), -1);
-    for (VertexIndex v : out.vertices()) {
-        const Vec3 p = toVec(out.point(v));
-        const int s = sourceIndex[v];
-        outIndex[v.idx()] = result.mesh.vertexCount();
-        result.mesh.vertices.push_back(p);
-        if (s >= 0 && unionPositions[s] == p) {
-            result.sources.push_back(unionSources[s]);
-        } else {
-            result.sources.push_back(sourceTriangles.sourceOf(p));
-            ++result.remeshedVertices;
-        }
-    }
-    for (FaceIndex f : out.faces()) {
-        std::array<int, 3> face{};
-        int corner = 0;
-        for (VertexIndex v : CGAL::vertices_around_face(out.halfedge(f), out))
-            face[corner++] = outIndex[v.idx()];
-        result.mesh.faces.push_back(face);
-    }
-    result.onLoop.assign(result.mesh.vertices.size(), 0);
-    for (EdgeIndex e : out.edges())
-        if (loopEdges[e]) {
-            const int p = outIndex[out.vertex(e, 0).idx()];
-            const int q = outIndex[out.vertex(e, 1).idx()];
-            result.loop.push_back({p, q});
-            result.onLoop[p] = result.onLoop[q] = 1;
-        }
-    return result;
+    // Remesh the cut faces (paper 3.2.1 glues the meshes by splitting edges;
+    // we also even them out) with the loop as a constraint, on the canonical
+    // mesh so the result does not depend on CGAL's internal order.
+    SurfaceMesh seam;
+    for (const Vec3& v : result.mesh.vertices)
+        seam.add_vertex(Point(v.x(), v.y(), v.z()));
+    for (const auto& [a0, b0, c0] : result.mesh.faces)
+        seam.add_face(VertexIndex(a0), VertexIndex(b0), VertexIndex(c0));
+    auto seamLoop = seam.add_property_map<EdgeIndex, bool>("e:loop", false).first;
+    for (const auto& [p0, q0] : result.loop)
+        seamLoop[seam.edge(seam.halfedge(VertexIndex(p0), VertexIndex(q0)))] = true;
+    const std::vector<FaceIndex> band = facesNearLoop(seam, seamLoop, 2);
+    PMP::isotropic_remeshing(
+        band, seamEdgeLength, seam,
+        params::number_of_iterations(3).edge_is_constrained_map(seamLoop).protect_constraints(
+            false));
+    seam.collect_garbage();
+    std::unordered_map<PointKey, VertexSource, PointKeyHash> unionVertices;
+    for (int v = 0; v < result.mesh.vertexCount(); ++v)
+        unionVertices[keyOf(result.mesh.vertices[v])] = result.sources[v];
+    int remeshed = 0;
+    MeshUnionResult remeshedResult = canonicalResult(seam, seamLoop, [&](const Vec3& p) {
+        auto found = unionVertices.find(keyOf(p));
+        if (found != unionVertices.end())
+            return found->second;
+        ++remeshed;
+        return sourceTriangles.sourceOf(p);
+    });
+    remeshedResult.remeshedVertices = remeshed;
+    return remeshedResult;
 }
 
 }  // namespace rigmesh

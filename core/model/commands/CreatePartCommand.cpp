@@ -17,9 +17,10 @@ std::unique_ptr<CreatePartCommand> CreatePartCommand::create(Document& document,
     const PartId id = document.nextPartId();
     PartNode node;
     node.name = name.isEmpty() ? tr("Part %1").arg(id) : name;
-    node.part = buildPart(stroke, node.name, options);
+    BuiltPart built = buildPartForDocument(document, stroke, node.name, options);
+    node.part = std::move(built.part);
     node.stroke = std::move(stroke);
-    node.options = options;
+    node.options = built.options;
     node.placement = placement;
     node.pose = restPoseOf(node);
     node.id = document.allocatePartId();

@@ -72,9 +72,9 @@ void writeRecipeFile(const nlohmann::json& recipe, const std::string& path) {
 }
 
 void runRecipeFile(Document& document, const std::string& path,
-                   const RecipeRunner::StepCallback& onStep) {
+                   const RecipeRunner::StepCallback& onStep, const recipe::StepOptions& options) {
     const nlohmann::json recipe = readRecipeFile(path);
-    RecipeRunner(document, std::filesystem::path(path).parent_path()).run(recipe, onStep);
+    RecipeRunner(document, std::filesystem::path(path).parent_path(), options).run(recipe, onStep);
 }
 
 }  // namespace rigmesh::model

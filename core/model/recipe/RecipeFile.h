@@ -7,6 +7,7 @@
 
 #include "model/Document.h"
 #include "model/recipe/RecipeRunner.h"
+#include "model/recipe/RecipeStepCommands.h"
 
 namespace rigmesh::model {
 
@@ -33,6 +34,7 @@ void writeRecipeFile(const nlohmann::json& recipe, const std::string& path);
 // folder. Throws rigmesh::Error for an unreadable or malformed file and
 // RecipeError for a bad step.
 void runRecipeFile(Document& document, const std::string& path,
-                   const RecipeRunner::StepCallback& onStep = {});
+                   const RecipeRunner::StepCallback& onStep = {},
+                   const recipe::StepOptions& options = {});
 
 }  // namespace rigmesh::model

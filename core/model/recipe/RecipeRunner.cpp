@@ -1,6 +1,7 @@
 #include "model/recipe/RecipeRunner.h"
 
 #include <QUndoStack>
+#include <chrono>
 #include <utility>
 
 #include "model/recipe/RecipeFile.h"
@@ -36,8 +37,9 @@ std::string summaryOf(const Document& document, const std::string& command, cons
 
 }  // namespace
 
-RecipeRunner::RecipeRunner(Document& document, std::filesystem::path baseDirectory)
-    : document_(document), baseDirectory_(std::move(baseDirectory)) {}
+RecipeRunner::RecipeRunner(Document& document, std::filesystem::path baseDirectory,
+                           recipe::StepOptions options)
+    : document_(document), baseDirectory_(std::move(baseDirectory)), options_(options) {}
 
 void RecipeRunner::run(const nlohmann::json& recipe, const StepCallback& onStep) {
     const nlohmann::json& steps = recipeSteps(recipe);
@@ -53,8 +55,9 @@ RecipeStepReport RecipeRunner::apply(const nlohmann::json& step, int number) {
     const std::string command = stepCommandName(step, number);
     recipe::StepCommand made;
     QString text;
+    const auto start = std::chrono::steady_clock::now();
     try {
-        made = recipe::commandForStep(document_, command, step, baseDirectory_);
+        made = recipe::commandForStep(document_, command, step, baseDirectory_, options_);
         text = made.command->text();
         // The stack takes the command only once its redo() has run; until
         // then (a redo that throws) the unique_ptr still owns it.
@@ -65,7 +68,10 @@ RecipeStepReport RecipeRunner::apply(const nlohmann::json& step, int number) {
     } catch (const std::exception& error) {
         throw RecipeError(number, command, error.what());
     }
-    return {number, command, summaryOf(document_, command, text, made)};
+    const double milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return {number, command, summaryOf(document_, command, text, made), milliseconds,
+            std::move(made.stats)};
 }
 
 }  // namespace rigmesh::model

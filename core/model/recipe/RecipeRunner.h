@@ -34,6 +34,13 @@
 //   key           "part", "time" (seconds): keys the current pose
 //   delete_key    "part", "time"
 //   move_key      "part", "from", "to" (seconds)
+//   merge         "part" (the dragged part), "into" (the target), "mode":
+//                 "snap" (default) | "split" | "connect", "joint" (of the
+//                 dragged part) and "target" (of the target): a joint id or a
+//                 point [x, y, z] in document coordinates (the nearest joint;
+//                 for split the point projected on the target's nearest
+//                 bone), optional "reskin": "local" (default) | "global"
+//                 (paper 3.2; the merged part keeps the target's id and name)
 //   clip_settings "part", optional "frameRate", "interpolation" ("linear" |
 //                 "smooth"), "playback" ("hold" | "loop")
 //
@@ -50,13 +57,16 @@
 
 #include "model/Document.h"
 #include "model/recipe/RecipeError.h"
+#include "model/recipe/RecipeStepCommands.h"
 
 namespace rigmesh::model {
 
 struct RecipeStepReport {
-    int number = 0;       // from 1
-    std::string command;  // "sketch", "pose", ...
-    std::string summary;  // one line: the command's undo text and what the step found
+    int number = 0;             // from 1
+    std::string command;        // "sketch", "pose", ...
+    std::string summary;        // one line: the command's undo text and what the step found
+    double milliseconds = 0.0;  // building the command and pushing it
+    nlohmann::json stats;       // the step's own figures (merges), null if none
 };
 
 class RecipeRunner {
@@ -65,7 +75,8 @@ class RecipeRunner {
 
     // Stroke files of "sketch" steps are looked up relative to
     // `baseDirectory` (the recipe file's folder; the working folder if empty).
-    explicit RecipeRunner(Document& document, std::filesystem::path baseDirectory = {});
+    explicit RecipeRunner(Document& document, std::filesystem::path baseDirectory = {},
+                          recipe::StepOptions options = {});
 
     // Checks the recipe's format and version (rigmesh::Error), then applies
     // the steps in order, calling `onStep` after each. Throws RecipeError on
@@ -77,6 +88,7 @@ class RecipeRunner {
   private:
     Document& document_;
     std::filesystem::path baseDirectory_;
+    recipe::StepOptions options_;
 };
 
 }  // namespace rigmesh::model

@@ -13,6 +13,7 @@
 #include "model/commands/DeletePartCommand.h"
 #include "model/commands/ImportPartsCommand.h"
 #include "model/commands/KeyPoseCommand.h"
+#include "model/commands/MergePartsCommand.h"
 #include "model/commands/MoveKeyCommand.h"
 #include "model/commands/MovePartCommand.h"
 #include "model/commands/RebuildPartCommand.h"
@@ -36,6 +37,7 @@ struct Context {
     Document& document;
     const json& step;
     const std::filesystem::path& baseDirectory;
+    const StepOptions& options;
 
     bool has(const char* key) const { return step.contains(key); }
     const json& required(const char* key) const {
@@ -173,10 +175,63 @@ StepCommand importFile(const Context& c) {
     return {std::move(command), ids.empty() ? kNoPart : ids.front(), {}};
 }
 
+// A joint by id (a number) or by a point in document coordinates.
+JointChoice readJointChoice(const json& value, const std::string& what) {
+    if (value.is_array())
+        return readVec3(value, what);
+    return readJointId(value, what);
+}
+
+json mergeStats(const MergeStats& s) {
+    json stats = {{"vertices", s.vertices},
+                  {"bones", s.bones},
+                  {"vertices_involved", s.verticesInvolved},
+                  {"bones_involved", s.bonesInvolved},
+                  {"pruned_bones", s.prunedBones},
+                  {"smoothed_vertices", s.smoothedVertices},
+                  {"union_ms", s.unionMs},
+                  {"smoothing_ms", s.smoothingMs},
+                  {"reskin_ms", s.reskinMs},
+                  {"total_ms", s.totalMs}};
+    if (s.globalMs >= 0.0) {
+        stats["global_ms"] = s.globalMs;
+        stats["global_vertices_involved"] = s.vertices;
+        stats["global_bones_involved"] = s.bones;
+        stats["p90_weight_difference"] = s.p90WeightDifference;
+        stats["p99_weight_difference"] = s.p99WeightDifference;
+        stats["mean_weight_difference"] = s.meanWeightDifference;
+    }
+    return stats;
+}
+
+StepCommand merge(const Context& c) {
+    const PartId dragged = c.part();
+    const PartId into = resolvePart(c.document, c.required("into"));
+    MergeSpec spec;
+    const std::string mode = c.has("mode") ? readText(c.step["mode"], "\"mode\"") : "snap";
+    if (mode != "snap" && mode != "split" && mode != "connect")
+        throw Error("\"mode\" must be \"snap\", \"split\" or \"connect\"");
+    spec.mode = mode == "snap"    ? MergeMode::Snap
+                : mode == "split" ? MergeMode::Split
+                                  : MergeMode::Connect;
+    spec.draggedJoint = readJointChoice(c.required("joint"), "\"joint\"");
+    spec.target = readJointChoice(c.required("target"), "\"target\"");
+    const std::string reskin = c.has("reskin") ? readText(c.step["reskin"], "\"reskin\"") : "local";
+    if (reskin != "local" && reskin != "global")
+        throw Error("\"reskin\" must be \"local\" or \"global\"");
+    spec.reskin = reskin == "local" ? Reskin::Local : Reskin::Global;
+    spec.compareGlobal = c.options.compareGlobalReskin;
+    auto command = MergePartsCommand::create(c.document, dragged, into, spec);
+    const std::string detail = command->summary().toStdString();
+    json stats = mergeStats(command->stats());
+    return {std::move(command), into, detail, std::move(stats)};
+}
+
 const std::map<std::string, StepKind>& stepKinds() {
     static const std::map<std::string, StepKind> kinds = {
         {"sketch", {{"stroke", "points", "name", "placement", "options"}, sketch}},
         {"import", {{"file"}, importFile}},
+        {"merge", {{"part", "into", "mode", "joint", "target", "reskin"}, merge}},
         {"delete",
          {{"part"},
           [](const Context& c) {
@@ -264,7 +319,7 @@ const std::map<std::string, StepKind>& stepKinds() {
 }  // namespace
 
 StepCommand commandForStep(Document& document, const std::string& name, const json& step,
-                           const std::filesystem::path& baseDirectory) {
+                           const std::filesystem::path& baseDirectory, const StepOptions& options) {
     const auto& kinds = stepKinds();
     const auto kind = kinds.find(name);
     if (kind == kinds.end())
@@ -273,7 +328,7 @@ StepCommand commandForStep(Document& document, const std::string& name, const js
         if (key != "command" && key != "comment" && !kind->second.fields.contains(key))
             throw Error("unknown field \"" + key + "\"");
     }
-    return kind->second.build(Context{document, step, baseDirectory});
+    return kind->second.build(Context{document, step, baseDirectory, options});
 }
 
 std::vector<std::string> stepCommandNames() {

@@ -18,13 +18,20 @@ struct StepCommand {
     std::unique_ptr<QUndoCommand> command;
     PartId part = kNoPart;  // the part the step works on (a new part's id for "sketch")
     std::string detail;     // what the step found out, for its summary ("" if nothing)
+    nlohmann::json stats = nullptr;  // figures for `rigmesh run --stats` (null if none)
+};
+
+// How steps run beyond what the recipe says (command-line switches).
+struct StepOptions {
+    bool compareGlobalReskin = false;  // merges also time the global re-skin
 };
 
 // The command for `step` (an object whose "command" is `name`) on the
 // document as it is now; nothing is pushed. Stroke files are relative to
 // `baseDirectory`. Throws rigmesh::Error with the reason only.
 StepCommand commandForStep(Document& document, const std::string& name, const nlohmann::json& step,
-                           const std::filesystem::path& baseDirectory);
+                           const std::filesystem::path& baseDirectory,
+                           const StepOptions& options = {});
 
 // Every command name a step may have.
 std::vector<std::string> stepCommandNames();

@@ -1,0 +1,192 @@
+#include "model/commands/MergePartsCommand.h"
+
+#include <nlohmann/json.hpp>
+
+#include "base/Error.h"
+#include "model/RigCarryOver.h"
+#include "model/recipe/RecipeJson.h"
+
+namespace rigmesh::model {
+
+namespace {
+
+Vec3 toPart(const Placement& placement, const Vec3& world) {
+    return placement.rotation.conjugate() * (world - placement.translation);
+}
+
+Vec3 toWorld(const Placement& placement, const Vec3& local) {
+    return placement.rotation * local + placement.translation;
+}
+
+// The part as seen from `frame`: its vertices and joints moved from its own
+// placement into the frame's coordinates.
+Part inFrameOf(const Part& part, const Placement& own, const Placement& frame) {
+    Part moved = part;
+    for (Vec3& p : moved.mesh.vertices)
+        p = toPart(frame, toWorld(own, p));
+    for (const Joint& joint : std::vector<Joint>(moved.skeleton.joints()))
+        moved.skeleton.setJointPosition(joint.id, toPart(frame, toWorld(own, joint.position)));
+    return moved;
+}
+
+JointId nearestJoint(const Skeleton& skeleton, const Vec3& point) {
+    JointId best = kNoJoint;
+    double bestDistance = 0.0;
+    for (const Joint& joint : skeleton.joints()) {
+        const double d = (joint.position - point).squaredNorm();
+        if (best == kNoJoint || d < bestDistance) {
+            best = joint.id;
+            bestDistance = d;
+        }
+    }
+    return best;
+}
+
+BoneId nearestBone(const Part& part, const Vec3& point) {
+    const std::vector<BoneSegment> segments = part.boneSegments();
+    int best = 0;
+    for (int b = 1; b < static_cast<int>(segments.size()); ++b)
+        if (pointSegmentDistance(point, segments[b]) < pointSegmentDistance(point, segments[best]))
+            best = b;
+    return part.skeleton.bones()[best].id;
+}
+
+// A joint choice of a part (given in the part's own frame as `part`, placed
+// at `placement`) as an id; throws if the id is unknown.
+JointId resolveJoint(const JointChoice& choice, const Part& part, const Placement& placement,
+                     const QString& partName) {
+    if (const auto* id = std::get_if<JointId>(&choice)) {
+        if (!part.skeleton.hasJoint(*id))
+            throw Error(partName.toStdString() + " has no joint " + std::to_string(*id));
+        return *id;
+    }
+    return nearestJoint(part.skeleton, toPart(placement, std::get<Vec3>(choice)));
+}
+
+}  // namespace
+
+std::unique_ptr<MergePartsCommand> MergePartsCommand::create(Document& document, PartId dragged,
+                                                             PartId target, const MergeSpec& spec) {
+    if (dragged == target)
+        throw Error("A part cannot be merged into itself.");
+    const PartNode& from = document.part(dragged);
+    const PartNode& into = document.part(target);
+    if (!from.part || !into.part || from.part->skeleton.boneCount() == 0 ||
+        into.part->skeleton.boneCount() == 0)
+        throw Error("Only rigged parts can be merged; rig the imported mesh first.");
+
+    const Part draggedPart = inFrameOf(*from.part, from.placement, into.placement);
+    MergeSpec resolved = spec;
+    MergeRequest request;
+    request.join.mode = spec.mode;
+    // The dragged joint is chosen in document coordinates, i.e. in its own
+    // placement (the frame change keeps joint ids).
+    request.join.draggedJoint =
+        resolveJoint(spec.draggedJoint, *from.part, from.placement, from.name);
+    resolved.draggedJoint = request.join.draggedJoint;
+    if (spec.mode == MergeMode::Split) {
+        const Vec3 point =
+            std::holds_alternative<Vec3>(spec.target)
+                ? toPart(into.placement, std::get<Vec3>(spec.target))
+                : into.part->skeleton
+                      .joint(resolveJoint(spec.target, *into.part, into.placement, into.name))
+                      .position;
+        request.join.targetBone = nearestBone(*into.part, point);
+        request.join.splitPoint = point;
+        resolved.target = toWorld(into.placement, point);
+    } else {
+        request.join.targetJoint = resolveJoint(spec.target, *into.part, into.placement, into.name);
+        resolved.target = request.join.targetJoint;
+    }
+    request.reskin = spec.reskin;
+    request.compareGlobal = spec.compareGlobal;
+    request.edgeLength = into.options.targetEdgeLength;
+    MergeResult result = mergeParts(*into.part, draggedPart, request);
+    return std::unique_ptr<MergePartsCommand>(
+        new MergePartsCommand(document, dragged, target, resolved, std::move(result)));
+}
+
+MergePartsCommand::MergePartsCommand(Document& document, PartId dragged, PartId target,
+                                     const MergeSpec& spec, MergeResult result)
+    : document_(document),
+      draggedId_(dragged),
+      targetId_(target),
+      draggedIndex_(document.indexOf(dragged)),
+      targetIndex_(document.indexOf(target)),
+      spec_(spec),
+      draggedNode_(document.part(dragged)),
+      targetNode_(document.part(target)),
+      stats_(result.stats) {
+    mergedNode_ = targetNode_;
+    // A merged part is no longer one sketch: it cannot be rebuilt from a stroke.
+    mergedNode_.stroke.clear();
+    mergedNode_.part = std::make_shared<const Part>(std::move(result.part));
+    const CarriedRig carried =
+        carryRigOver(targetNode_.part->skeleton, mergedNode_.part->skeleton, targetNode_.pose,
+                     targetNode_.pinnedJoints, targetNode_.clip);
+    mergedNode_.pose = carried.pose;
+    mergedNode_.pinnedJoints = carried.pinned;
+    mergedNode_.clip = carried.clip;
+    droppedJoints_ = carried.droppedJoints;
+    const PartNode& d = draggedNode_;
+    if (!identicalPoses(d.pose, restPoseOf(d)) || !d.pinnedJoints.empty() || !d.clip.keys().empty())
+        droppedDragged_ = true;
+    setText(tr("Merge %1 into %2").arg(d.name, targetNode_.name));
+}
+
+QString MergePartsCommand::summary() const {
+    QString text = tr("merged in %1 ms: %2 vertices, %3 bones; %4 vertices and %5 bones re-skinned")
+                       .arg(stats_.totalMs, 0, 'f', 0)
+                       .arg(stats_.vertices)
+                       .arg(stats_.bones)
+                       .arg(stats_.verticesInvolved)
+                       .arg(stats_.bonesInvolved);
+    if (stats_.prunedBones > 0)
+        text += tr("; %n bone(s) pruned", nullptr, stats_.prunedBones);
+    if (droppedJoints_ > 0)
+        text +=
+            tr("; the pose, pins and keys of %n joint(s) were dropped", nullptr, droppedJoints_);
+    if (droppedDragged_)
+        text += tr("; %1's pose, pins and keys were dropped").arg(draggedNode_.name);
+    return text;
+}
+
+void MergePartsCommand::redo() {
+    document_.removePart(draggedId_);
+    const int index = document_.indexOf(targetId_);
+    document_.removePart(targetId_);
+    document_.insertPart(index, mergedNode_);
+}
+
+void MergePartsCommand::undo() {
+    document_.removePart(targetId_);
+    // Re-insert in index order so each lands where it was.
+    if (draggedIndex_ < targetIndex_) {
+        document_.insertPart(draggedIndex_, draggedNode_);
+        document_.insertPart(targetIndex_, targetNode_);
+    } else {
+        document_.insertPart(targetIndex_, targetNode_);
+        document_.insertPart(draggedIndex_, draggedNode_);
+    }
+}
+
+nlohmann::json MergePartsCommand::recipeStep() const {
+    auto choice = [](const JointChoice& c) -> nlohmann::json {
+        if (const auto* id = std::get_if<JointId>(&c))
+            return *id;
+        const Vec3& p = std::get<Vec3>(c);
+        return {p.x(), p.y(), p.z()};
+    };
+    const char* mode = spec_.mode == MergeMode::Snap    ? "snap"
+                       : spec_.mode == MergeMode::Split ? "split"
+                                                        : "connect";
+    return {{"command", "merge"},
+            {"part", draggedIndex_},
+            {"into", targetIndex_},
+            {"mode", mode},
+            {"joint", choice(spec_.draggedJoint)},
+            {"target", choice(spec_.target)},
+            {"reskin", spec_.reskin == Reskin::Local ? "local" : "global"}};
+}
+
+}  // namespace rigmesh::model
