@@ -33,6 +33,7 @@
 #include "model/recipe/RecipeFromHistory.h"
 #include "panels/OutlinerPanel.h"
 #include "panels/PropertiesPanel.h"
+#include "tools/MergeTool.h"
 #include "tools/PoseTool.h"
 #include "tools/SelectTool.h"
 #include "tools/SketchTool.h"
@@ -66,6 +67,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
       selectTool_(new SelectTool(this)),
       sketchTool_(new SketchTool(this)),
       poseTool_(new PoseTool(this)),
+      mergeTool_(new MergeTool(this)),
       recoveryDirectory_(recoveryDirectory.isEmpty() ? QStandardPaths::writableLocation(
                                                            QStandardPaths::AppLocalDataLocation) +
                                                            QStringLiteral("/recovery")
@@ -213,6 +215,9 @@ void MainWindow::createActions() {
     poseToolAction_ =
         add(tools, tr("&Pose"), QKeySequence(Qt::Key_P), &MainWindow::activatePoseTool);
     poseToolAction_->setIcon(QIcon(QStringLiteral(":/icons/pose.svg")));
+    mergeToolAction_ =
+        add(tools, tr("&Merge Parts"), QKeySequence(Qt::Key_M), &MainWindow::activateMergeTool);
+    mergeToolAction_->setIcon(QIcon(QStringLiteral(":/icons/merge.svg")));
     tools->addSeparator();
     add(tools, tr("&Reset Pose"), QKeySequence(Qt::ALT | Qt::Key_R), &MainWindow::resetPose);
     for (const auto& [action, tool] : toolPairs()) {
@@ -223,6 +228,7 @@ void MainWindow::createActions() {
     toolbar->addAction(selectToolAction_);
     toolbar->addAction(sketchToolAction_);
     toolbar->addAction(poseToolAction_);
+    toolbar->addAction(mergeToolAction_);
     sketchToolAction_->setChecked(true);
 
     auto* help = menuBar()->addMenu(tr("&Help"));
@@ -467,6 +473,10 @@ void MainWindow::activatePoseTool() {
     activateTool(poseToolAction_, poseTool_);
 }
 
+void MainWindow::activateMergeTool() {
+    activateTool(mergeToolAction_, mergeTool_);
+}
+
 ViewportTool* MainWindow::activeTool() const {
     for (const auto& [action, tool] : toolPairs())
         if (action->isChecked())
@@ -477,7 +487,8 @@ ViewportTool* MainWindow::activeTool() const {
 std::vector<std::pair<QAction*, ViewportTool*>> MainWindow::toolPairs() const {
     return {{selectToolAction_, selectTool_},
             {sketchToolAction_, sketchTool_},
-            {poseToolAction_, poseTool_}};
+            {poseToolAction_, poseTool_},
+            {mergeToolAction_, mergeTool_}};
 }
 
 void MainWindow::resetPose() {

@@ -31,6 +31,7 @@ class MouseHint;
 class DocumentView;
 class OutlinerPanel;
 class PropertiesPanel;
+class MergeTool;
 class PoseTool;
 class SelectTool;
 class SketchTool;
@@ -65,6 +66,7 @@ class MainWindow : public QMainWindow {
     void activateSelectTool();
     void activateSketchTool();
     void activatePoseTool();
+    void activateMergeTool();
     void resetPose();
     void deleteSelection();
 
@@ -97,12 +99,14 @@ class MainWindow : public QMainWindow {
     QAction* selectToolAction_ = nullptr;
     QAction* sketchToolAction_ = nullptr;
     QAction* poseToolAction_ = nullptr;
+    QAction* mergeToolAction_ = nullptr;
     QAction* wireframeAction_ = nullptr;
     QAction* dqsAction_ = nullptr;
     QAction* gridAction_ = nullptr;
     SelectTool* selectTool_;
     SketchTool* sketchTool_;
     PoseTool* poseTool_;
+    MergeTool* mergeTool_;
     QString recoveryDirectory_;
     int untitledCount_ = 0;  // new documents are "Untitled 1", "Untitled 2", ...
     std::map<DocumentView*, model::Autosave*> autosaves_;

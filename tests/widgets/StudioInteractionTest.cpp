@@ -525,3 +525,86 @@ TEST_F(Studio, SavedDocumentReopensWithTheSameContent) {
 
 }  // namespace
 }  // namespace rigmesh
+
+namespace rigmesh {
+namespace {
+
+// The camel body and a leg overlapping its front (the recipe's placement).
+class StudioMerge : public testing::Test {
+  protected:
+    void SetUp() override {
+        ASSERT_TRUE(recovery.isValid());
+        window = std::make_unique<widgets::MainWindow>(recovery.path());
+        window->resize(1200, 800);
+        window->newDocument();
+        settle(window.get());
+        model::Document& d = *window->currentDocument();
+        const std::string dir = RIGMESH_SHARED_SKETCHES;
+        d.undoStack()->push(model::CreatePartCommand::create(
+                                d, readSketchFile(dir + "/camel_body.json").points, "body")
+                                .release());
+        model::Placement legPlace;
+        legPlace.translation = Vec3(1.7, -0.55, 0.3);
+        d.undoStack()->push(
+            model::CreatePartCommand::create(d, readSketchFile(dir + "/camel_leg.json").points,
+                                             "leg", {}, legPlace)
+                .release());
+        viewport()->frameAll();
+        window->activateMergeTool();
+        QTest::qWait(50);
+    }
+    widgets::Viewport* viewport() const { return window->currentView()->viewport(); }
+    model::Document* document() const { return window->currentDocument(); }
+    // A pixel on the leg's lower half, far from the body.
+    QPointF onTheLeg() const {
+        const QVector3D p =
+            viewport()->camera().project(QVector3D(1.7f, -2.6f, 0.3f), QSizeF(viewport()->size()));
+        return {p.x(), p.y()};
+    }
+    std::vector<QPointF> shortDrag() const {
+        std::vector<QPointF> path;
+        for (int i = 0; i <= 6; ++i)
+            path.emplace_back(onTheLeg().x() + i, onTheLeg().y() - i);
+        return path;
+    }
+
+    QTemporaryDir recovery;
+    std::unique_ptr<widgets::MainWindow> window;
+};
+
+TEST_F(StudioMerge, DraggingALegIntoTheBodyMergesThemInOneUndoStep) {
+    ASSERT_EQ(document()->partCount(), 2);
+    ASSERT_TRUE(viewport()->partAt(onTheLeg()).has_value());
+    const QByteArray before = model::DocumentFile::toBytes(*document());
+    const int steps = document()->undoStack()->count();
+    drag(viewport(), shortDrag());
+    ASSERT_EQ(document()->partCount(), 1) << window->statusBar()->currentMessage().toStdString();
+    EXPECT_EQ(document()->undoStack()->count(), steps + 1);
+    EXPECT_TRUE(document()->parts()[0].part->validateSolid().empty());
+    EXPECT_TRUE(window->statusBar()->currentMessage().contains(QStringLiteral("merged in")))
+        << window->statusBar()->currentMessage().toStdString();
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
+}
+
+TEST_F(StudioMerge, EscapeDuringTheDragPutsThePartBackAndMergesNothing) {
+    const model::PartId leg = document()->parts()[1].id;
+    const model::Placement start = document()->part(leg).placement;
+    const int steps = document()->undoStack()->count();
+    const std::vector<QPointF> path = shortDrag();
+    viewport()->setFocus(Qt::MouseFocusReason);
+    test::sendMouse(viewport(), QEvent::MouseButtonPress, path.front(), Qt::LeftButton,
+                    Qt::LeftButton);
+    for (const QPointF& p : path)
+        test::sendMouse(viewport(), QEvent::MouseMove, p, Qt::NoButton, Qt::LeftButton);
+    EXPECT_FALSE(document()->part(leg).placement == start);  // the live preview
+    QTest::keyClick(viewport(), Qt::Key_Escape);
+    EXPECT_EQ(document()->part(leg).placement, start);
+    test::sendMouse(viewport(), QEvent::MouseButtonRelease, path.back(), Qt::LeftButton,
+                    Qt::NoButton);
+    EXPECT_EQ(document()->partCount(), 2);
+    EXPECT_EQ(document()->undoStack()->count(), steps);
+}
+
+}  // namespace
+}  // namespace rigmesh

@@ -111,12 +111,13 @@ void PropertiesPanel::refresh() {
     const Part& part = *node->part;
     title_->setText(node->name);
     figures_->setText(
-        tr("%1 vertices, %2 faces\n%3 joints, %4 bones\nstroke of %5 points")
+        tr("%1 vertices, %2 faces\n%3 joints, %4 bones\n")
             .arg(part.mesh.vertexCount())
             .arg(part.mesh.faceCount())
             .arg(part.skeleton.jointCount())
-            .arg(part.skeleton.boneCount())
-            .arg(node->stroke.size()) +
+            .arg(part.skeleton.boneCount()) +
+        (!node->stroke.empty() ? tr("stroke of %1 points").arg(node->stroke.size())
+                               : tr("made by merging or importing: no stroke to rebuild from")) +
         (part.skeleton.jointCount() == 0
              ? tr("\nNot rigged: imported as a static mesh. Rigging imported meshes is "
                   "not available yet.")

@@ -454,6 +454,10 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
         frameAll();
     } else if (event->key() == Qt::Key_Period && (event->modifiers() & Qt::KeypadModifier)) {
         frameSelected();
+    } else if (event->key() == Qt::Key_Escape && tool_) {
+        // Esc cuts the tool's drag short: what it previewed is put back.
+        tool_->cancel(*this);
+        update();
     } else {
         QOpenGLWidget::keyPressEvent(event);
     }
