@@ -583,6 +583,8 @@ TEST_F(StudioMerge, DraggingALegIntoTheBodyMergesThemInOneUndoStep) {
     EXPECT_TRUE(document()->parts()[0].part->validateSolid().empty());
     EXPECT_TRUE(window->statusBar()->currentMessage().contains(QStringLiteral("merged in")))
         << window->statusBar()->currentMessage().toStdString();
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_merged.png"));
     QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
     EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
 }
@@ -598,6 +600,8 @@ TEST_F(StudioMerge, EscapeDuringTheDragPutsThePartBackAndMergesNothing) {
     for (const QPointF& p : path)
         test::sendMouse(viewport(), QEvent::MouseMove, p, Qt::NoButton, Qt::LeftButton);
     EXPECT_FALSE(document()->part(leg).placement == start);  // the live preview
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_merge_drag.png"));
     QTest::keyClick(viewport(), Qt::Key_Escape);
     EXPECT_EQ(document()->part(leg).placement, start);
     test::sendMouse(viewport(), QEvent::MouseButtonRelease, path.back(), Qt::LeftButton,
