@@ -1,8 +1,5 @@
 #include "merge/SeamSmoothing.h"
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
-
 #include <functional>
 #include <limits>
 #include <map>
@@ -10,6 +7,7 @@
 #include <queue>
 #include <set>
 
+#include "mesh/Fairing.h"
 #include "mesh/MeshAdjacency.h"
 
 namespace rigmesh {
@@ -88,46 +86,8 @@ std::vector<int> seamBand(const TriMesh& mesh, const std::vector<std::array<int,
 std::vector<int> smoothSeam(TriMesh& mesh, const std::vector<std::array<int, 2>>& loop,
                             const SeamSmoothingOptions& options) {
     const std::vector<int> band = seamBand(mesh, loop, options);
-    if (band.empty())
-        return band;
-    const int n = mesh.vertexCount();
-    const std::vector<std::vector<int>> neighbours = vertexNeighbours(mesh);
-    std::vector<int> unknown(n, -1);
-    for (std::size_t i = 0; i < band.size(); ++i)
-        unknown[band[i]] = static_cast<int>(i);
-    // Rows: the uniform Laplacian at every band vertex and its one ring, so
-    // the fill meets the held surface with matching slope.
-    std::set<int> rows(band.begin(), band.end());
-    for (int v : band)
-        rows.insert(neighbours[v].begin(), neighbours[v].end());
-
-    std::vector<Eigen::Triplet<double>> triplets;
-    Eigen::MatrixXd heldPart = Eigen::MatrixXd::Zero(static_cast<int>(rows.size()), 3);
-    int row = 0;
-    for (int v : rows) {
-        const double inverseDegree = 1.0 / static_cast<double>(neighbours[v].size());
-        auto add = [&](int vertex, double coefficient) {
-            if (unknown[vertex] >= 0)
-                triplets.emplace_back(row, unknown[vertex], coefficient);
-            else
-                heldPart.row(row) += coefficient * mesh.vertices[vertex].transpose();
-        };
-        add(v, 1.0);
-        for (int w : neighbours[v])
-            add(w, -inverseDegree);
-        ++row;
-    }
-    Eigen::SparseMatrix<double> a(row, static_cast<int>(band.size()));
-    a.setFromTriplets(triplets.begin(), triplets.end());
-    const Eigen::SparseMatrix<double> normal = a.transpose() * a;
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
-    if (solver.info() != Eigen::Success)
+    if (band.empty() || !fairPositions(mesh, band))
         return {};
-    const Eigen::MatrixXd solution = solver.solve(-(a.transpose() * heldPart));
-    if (solver.info() != Eigen::Success || !solution.allFinite())
-        return {};
-    for (std::size_t i = 0; i < band.size(); ++i)
-        mesh.vertices[band[i]] = solution.row(static_cast<int>(i)).transpose();
     return band;
 }
 

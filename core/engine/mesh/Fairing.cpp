@@ -1,0 +1,69 @@
+#include "mesh/Fairing.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <set>
+
+#include "mesh/MeshAdjacency.h"
+
+namespace rigmesh {
+
+bool fairValues(const TriMesh& mesh, const std::vector<int>& free, Eigen::MatrixXd& values) {
+    if (free.empty())
+        return true;
+    const int n = mesh.vertexCount();
+    const std::vector<std::vector<int>> neighbours = vertexNeighbours(mesh);
+    std::vector<int> unknown(n, -1);
+    for (std::size_t i = 0; i < free.size(); ++i)
+        unknown[free[i]] = static_cast<int>(i);
+    // Rows: the Laplacian at every free vertex and its one ring, so the fill
+    // meets the held values with matching slope.
+    std::set<int> rows(free.begin(), free.end());
+    for (int v : free)
+        rows.insert(neighbours[v].begin(), neighbours[v].end());
+
+    std::vector<Eigen::Triplet<double>> triplets;
+    Eigen::MatrixXd heldPart = Eigen::MatrixXd::Zero(static_cast<int>(rows.size()), values.cols());
+    int row = 0;
+    for (int v : rows) {
+        if (neighbours[v].empty())
+            continue;
+        const double inverseDegree = 1.0 / static_cast<double>(neighbours[v].size());
+        auto add = [&](int vertex, double coefficient) {
+            if (unknown[vertex] >= 0)
+                triplets.emplace_back(row, unknown[vertex], coefficient);
+            else
+                heldPart.row(row) += coefficient * values.row(vertex);
+        };
+        add(v, 1.0);
+        for (int w : neighbours[v])
+            add(w, -inverseDegree);
+        ++row;
+    }
+    Eigen::SparseMatrix<double> a(row, static_cast<int>(free.size()));
+    a.setFromTriplets(triplets.begin(), triplets.end());
+    const Eigen::SparseMatrix<double> normal = a.transpose() * a;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
+    if (solver.info() != Eigen::Success)
+        return false;
+    const Eigen::MatrixXd solution = solver.solve(-(a.transpose() * heldPart.topRows(row)));
+    if (solver.info() != Eigen::Success || !solution.allFinite())
+        return false;
+    for (std::size_t i = 0; i < free.size(); ++i)
+        values.row(free[i]) = solution.row(static_cast<int>(i));
+    return true;
+}
+
+bool fairPositions(TriMesh& mesh, const std::vector<int>& free) {
+    Eigen::MatrixXd positions(mesh.vertexCount(), 3);
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+        positions.row(v) = mesh.vertices[v].transpose();
+    if (!fairValues(mesh, free, positions))
+        return false;
+    for (int v : free)
+        mesh.vertices[v] = positions.row(v).transpose();
+    return true;
+}
+
+}  // namespace rigmesh
