@@ -1,0 +1,272 @@
+#include "cut/CutPart.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <set>
+
+#include "base/Error.h"
+#include "cut/PlaneSplit.h"
+#include "geometry/ConstrainedTriangulation.h"
+#include "mesh/Fairing.h"
+#include "part/BoneWeights.h"
+#include "surface/PatchLattice.h"
+
+namespace rigmesh {
+
+namespace {
+
+double meanEdgeLength(const TriMesh& mesh) {
+    double total = 0.0;
+    for (const auto& face : mesh.faces)
+        for (int c = 0; c < 3; ++c)
+            total += (mesh.vertices[face[c]] - mesh.vertices[face[(c + 1) % 3]]).norm();
+    return mesh.faces.empty() ? 0.0 : total / (3.0 * mesh.faceCount());
+}
+
+// Fills one hole with a planar patch (paper 3.1: GridMesh-like; here our
+// lattice + CDT, as the sketch patches of 2.2). The loop runs the way the
+// patch must (PlaneSplit.h); returns the new vertices.
+std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const Vec3& normal,
+                          double edgeLength) {
+    const Vec3 u = normal.unitOrthogonal();
+    Vec3 v = normal.cross(u);
+    std::vector<Vec2> boundary;
+    for (int i : loop)
+        boundary.emplace_back(u.dot(mesh.vertices[i]), v.dot(mesh.vertices[i]));
+    double area = 0.0;
+    for (std::size_t i = 0; i < boundary.size(); ++i) {
+        const Vec2& a = boundary[i];
+        const Vec2& b = boundary[(i + 1) % boundary.size()];
+        area += a.x() * b.y() - a.y() * b.x();
+    }
+    if (area < 0.0) {  // make the loop counter-clockwise in (u, v)
+        v = -v;
+        for (Vec2& p : boundary)
+            p.y() = -p.y();
+    }
+    const double offset = normal.dot(mesh.vertices[loop.front()]);
+    const std::vector<Vec2> interior = latticeInside(boundary, edgeLength);
+    const PatchTriangulation patch =
+        triangulatePatch(boundary, interior, std::vector<bool>(boundary.size(), false));
+    std::vector<int> index(patch.points.size());
+    std::vector<int> added;
+    for (std::size_t i = 0; i < patch.points.size(); ++i) {
+        if (i < loop.size() && (patch.points[i] - boundary[i]).norm() == 0.0) {
+            index[i] = loop[i];
+            continue;
+        }
+        index[i] = mesh.vertexCount();
+        added.push_back(index[i]);
+        const Vec2& p = patch.points[i];
+        mesh.vertices.push_back(p.x() * u + p.y() * v + offset * normal);
+    }
+    for (const auto& t : patch.triangles)
+        mesh.faces.push_back({index[t[0]], index[t[1]], index[t[2]]});
+    return added;
+}
+
+// The skeleton with every bone that crosses the plane split at the crossing.
+// `tailHalf` maps a split bone to its new half beyond the crossing.
+Skeleton splitCrossingBones(const Skeleton& skeleton, const Vec3& point, const Vec3& normal,
+                            std::map<BoneId, BoneId>& tailHalf) {
+    Skeleton split = skeleton;
+    for (const Bone& bone : skeleton.bones()) {
+        const Vec3 head = skeleton.joint(bone.head).position;
+        const Vec3 tail = skeleton.joint(bone.tail).position;
+        const double a = normal.dot(head - point);
+        const double b = normal.dot(tail - point);
+        if ((a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0)) {
+            const JointId middle = split.splitBone(bone.id, head + a / (a - b) * (tail - head));
+            for (BoneId id : split.bonesAt(middle))
+                if (id != bone.id)
+                    tailHalf[bone.id] = id;
+        }
+    }
+    return split;
+}
+
+// The joints on `side` of the plane and those on it (a split's new joints
+// belong to both pieces).
+Skeleton skeletonOnSide(const Skeleton& split, const Vec3& point, const Vec3& normal, int side,
+                        double tolerance) {
+    Skeleton piece = split;
+    for (const Joint& joint : split.joints()) {
+        const double d = normal.dot(joint.position - point);
+        if (side * d < -tolerance)
+            piece.removeJoint(joint.id);
+    }
+    return piece;
+}
+
+// A piece's skeleton can fall apart where the cut took the joint that held
+// its limbs together (a star cut near its centre: the arms on one side meet
+// only at the centre joint on the other). Each stray component is joined by
+// a bone from its joint nearest to the main component, so each piece keeps
+// one tree (paper 3.1).
+void joinComponents(Skeleton& skeleton) {
+    while (true) {
+        std::map<JointId, int> component;
+        int count = 0;
+        for (const Joint& joint : skeleton.joints()) {
+            if (component.contains(joint.id))
+                continue;
+            std::vector<JointId> stack{joint.id};
+            component[joint.id] = count;
+            while (!stack.empty()) {
+                const JointId j = stack.back();
+                stack.pop_back();
+                for (BoneId b : skeleton.bonesAt(j)) {
+                    const Bone& bone = skeleton.bone(b);
+                    const JointId other = bone.head == j ? bone.tail : bone.head;
+                    if (component.emplace(other, count).second)
+                        stack.push_back(other);
+                }
+            }
+            ++count;
+        }
+        if (count <= 1)
+            return;
+        // The closest pair between component 0 and any other.
+        JointId from = kNoJoint, to = kNoJoint;
+        double best = 0.0;
+        for (const Joint& a : skeleton.joints())
+            for (const Joint& b : skeleton.joints())
+                if (component[a.id] == 0 && component[b.id] != 0) {
+                    const double d = (a.position - b.position).norm();
+                    if (from == kNoJoint || d < best) {
+                        from = a.id;
+                        to = b.id;
+                        best = d;
+                    }
+                }
+        if (best == 0.0)
+            skeleton.mergeJoints(from, to);
+        else
+            skeleton.addBone(from, to);
+    }
+}
+
+}  // namespace
+
+CutResult cutPart(const Part& part, const CutRequest& request) {
+    const auto start = std::chrono::steady_clock::now();
+    if (part.skeleton.boneCount() == 0)
+        throw Error("Only rigged parts can be cut; rig the imported mesh first.");
+    if (!(request.normal.norm() > 0.0) || !request.normal.allFinite() || !request.point.allFinite())
+        throw Error("The cut needs a plane: a finite point and a non-zero normal.");
+    const Vec3 normal = request.normal.normalized();
+    std::vector<MeshPiece> pieces = splitByPlane(part.mesh, request.point, normal);
+    if (pieces.size() < 2)
+        throw Error(
+            "The cut does not cross the part. Draw it across the part, from one side "
+            "of its outline to the other.");
+    if (pieces.size() > 2)
+        throw Error("The cut crosses the part more than once (it would make " +
+                    std::to_string(pieces.size()) +
+                    " pieces). Cut where it crosses only once, or cut again.");
+    std::sort(pieces.begin(), pieces.end(),
+              [](const MeshPiece& a, const MeshPiece& b) { return a.side < b.side; });
+    if (pieces[0].side == pieces[1].side)
+        throw Error("The cut leaves two pieces on the same side of its plane; cut elsewhere.");
+
+    const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(part.mesh);
+    std::map<BoneId, BoneId> tailHalf;
+    const Skeleton split = splitCrossingBones(part.skeleton, request.point, normal, tailHalf);
+    const WeightsById weights = weightsById(part.skeleton, part.weights);
+
+    CutResult result;
+    for (int k = 0; k < 2; ++k) {
+        MeshPiece& piece = pieces[k];
+        Part& out = result.pieces[k];
+        out.name = part.name;
+        out.skeleton = skeletonOnSide(split, request.point, normal, piece.side, 1e-9 * edge);
+        if (out.skeleton.boneCount() == 0)
+            throw Error(
+                "The cut leaves a piece without a bone. Cut across a bone, nearer the "
+                "middle of the part.");
+        joinComponents(out.skeleton);
+        if (!out.skeleton.validate().empty())
+            throw Error("The cut leaves a piece whose skeleton is not one tree; cut elsewhere.");
+        out.skeleton.setRoot(chooseCentralRoot(out.skeleton));
+        out.skeleton.reorient();
+
+        // The holes become patches; a smooth cut fairs their interior.
+        out.mesh = std::move(piece.mesh);
+        std::vector<int>& patch = result.patches[k];
+        for (const std::vector<int>& hole : piece.holes) {
+            const std::vector<int> added = fillHole(out.mesh, hole, normal, edge);
+            patch.insert(patch.end(), added.begin(), added.end());
+        }
+        if (request.style == CutStyle::Smooth)
+            fairPositions(out.mesh, patch);
+
+        // Weights: the bones this piece kept (a split bone's far half stands
+        // in for it), renormalised; the patch filled by least squares.
+        auto pieceBone = [&](BoneId id) -> std::optional<BoneId> {
+            if (out.skeleton.hasBone(id))
+                return id;
+            auto half = tailHalf.find(id);
+            if (half != tailHalf.end() && out.skeleton.hasBone(half->second))
+                return half->second;
+            return std::nullopt;
+        };
+        WeightsById pieceWeights(out.mesh.vertexCount());
+        for (int v = 0; v < static_cast<int>(piece.sources.size()); ++v) {
+            const VertexSource& s = piece.sources[v];
+            std::vector<std::pair<BoneId, double>> list;
+            if (s.kind == VertexSource::Kind::Vertex) {
+                list = weights[s.index];
+            } else if (s.kind == VertexSource::Kind::Triangle) {
+                const auto& face = part.mesh.faces[s.index];
+                for (int c = 0; c < 3; ++c)
+                    for (const auto& [bone, w] : weights[face[c]])
+                        list.emplace_back(bone, s.barycentric[c] * w);
+            }
+            for (const auto& [bone, w] : list)
+                if (auto id = pieceBone(bone))
+                    pieceWeights[v].emplace_back(*id, w);
+            normaliseWeights(pieceWeights[v]);
+        }
+        std::vector<int> unknown = patch;
+        for (int v = 0; v < static_cast<int>(piece.sources.size()); ++v)
+            if (pieceWeights[v].empty())
+                unknown.push_back(v);
+        std::vector<BoneId> bones;
+        for (const Bone& bone : out.skeleton.bones())
+            bones.push_back(bone.id);
+        std::sort(bones.begin(), bones.end());
+        Eigen::MatrixXd values = Eigen::MatrixXd::Zero(out.mesh.vertexCount(), bones.size());
+        for (int v = 0; v < out.mesh.vertexCount(); ++v)
+            for (const auto& [bone, w] : pieceWeights[v])
+                values(v, std::lower_bound(bones.begin(), bones.end(), bone) - bones.begin()) = w;
+        if (!fairValues(out.mesh, unknown, values))
+            throw Error("The patch's skin weights could not be solved; cut elsewhere.");
+        for (int v : unknown) {
+            pieceWeights[v].clear();
+            for (std::size_t b = 0; b < bones.size(); ++b)
+                if (values(v, b) > 1e-6)
+                    pieceWeights[v].emplace_back(bones[b], values(v, b));
+            normaliseWeights(pieceWeights[v]);
+            if (pieceWeights[v].empty())
+                pieceWeights[v].emplace_back(bones.front(), 1.0);
+        }
+        out.weights = weightsByIndex(out.skeleton, pieceWeights);
+        for (const auto& [id, name] : part.boneNames)
+            if (out.skeleton.hasBone(id))
+                out.boneNames[id] = name;
+        result.sources[k] = std::move(piece.sources);
+        result.sources[k].resize(out.mesh.vertexCount());  // patch vertices: New
+        const std::vector<std::string> problems = out.validateSolid();
+        if (!problems.empty())
+            throw Error("The cut gave an invalid piece (" + problems.front() +
+                        "); nothing was changed.");
+    }
+    result.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace rigmesh

@@ -1,0 +1,141 @@
+// Cutting a rigged part by a plane (paper 3.1): every shared sketch cut
+// across its width at three places in both styles gives two closed,
+// manifold, genus-0 rigged pieces whose volumes add up to the part's, or is
+// refused with a message; untouched vertices keep their positions.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "SharedSketchPart.h"
+#include "base/Error.h"
+#include "cut/CutPart.h"
+#include "mesh/MeshChecks.h"
+
+namespace rigmesh {
+namespace {
+
+struct CutCase {
+    std::string sketch;
+    double at;  // along the bounding box's longer side, 0..1
+    CutStyle style;
+};
+
+Eigen::AlignedBox3d boxOf(const TriMesh& mesh) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : mesh.vertices)
+        box.extend(v);
+    return box;
+}
+
+CutRequest planeAcross(const Part& part, double at, CutStyle style) {
+    const Eigen::AlignedBox3d box = boxOf(part.mesh);
+    const int axis = box.sizes().x() >= box.sizes().y() ? 0 : 1;
+    CutRequest request;
+    request.point = box.min() + at * box.sizes();
+    // Slightly tilted, so no plane runs along a sketch's symmetry.
+    request.normal = Vec3::Unit(axis) + 0.1 * Vec3::Unit(1 - axis);
+    request.style = style;
+    return request;
+}
+
+class CutSharedSketch : public testing::TestWithParam<CutCase> {};
+
+TEST_P(CutSharedSketch, GivesTwoValidPiecesOrARefusal) {
+    const CutCase& c = GetParam();
+    const Part& part = testsupport::sharedSketchPart(c.sketch);
+    CutResult result;
+    try {
+        result = cutPart(part, planeAcross(part, c.at, c.style));
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_TRUE(message.find("more than once") != std::string::npos ||
+                    message.find("without a bone") != std::string::npos)
+            << message;
+        return;
+    }
+    double volume = 0.0;
+    int patchVertices = 0;
+    for (int k = 0; k < 2; ++k) {
+        const Part& piece = result.pieces[k];
+        const MeshReport report = analyseMesh(piece.mesh, true);
+        EXPECT_TRUE(report.isWatertightGenus0()) << "piece " << k;
+        EXPECT_TRUE(report.isOutwardOriented()) << "piece " << k;
+        EXPECT_EQ(report.selfIntersectingFacePairs, 0) << "piece " << k;
+        const auto problems = piece.validateSolid();
+        EXPECT_TRUE(problems.empty()) << (problems.empty() ? "" : problems.front());
+        volume += report.volume;
+        patchVertices += static_cast<int>(result.patches[k].size());
+        // Untouched vertices keep their positions bit for bit.
+        for (int v = 0; v < piece.mesh.vertexCount(); ++v) {
+            const VertexSource& s = result.sources[k][v];
+            if (s.kind == VertexSource::Kind::Vertex) {
+                ASSERT_EQ(piece.mesh.vertices[v], part.mesh.vertices[s.index]);
+            }
+        }
+    }
+    const double whole = analyseMesh(part.mesh, false).volume;
+    if (c.style == CutStyle::Sharp) {
+        // Flat patches: the pieces share the part's volume exactly.
+        EXPECT_NEAR(volume / whole, 1.0, 1e-6);
+    } else {
+        // A smooth patch bulges (Fig. 7 middle), by less than a hemisphere
+        // on a disc of the hole's area for each patch.
+        double bulge = 0.0;
+        for (int k = 0; k < 2; ++k) {
+            const Part& piece = result.pieces[k];
+            std::vector<char> patch(piece.mesh.vertexCount(), 0);
+            for (int v : result.patches[k])
+                patch[v] = 1;
+            double area = 0.0;
+            for (const auto& f : piece.mesh.faces)
+                if (patch[f[0]] || patch[f[1]] || patch[f[2]])
+                    area += 0.5 * (piece.mesh.vertices[f[1]] - piece.mesh.vertices[f[0]])
+                                      .cross(piece.mesh.vertices[f[2]] - piece.mesh.vertices[f[0]])
+                                      .norm();
+            bulge += 2.0 / 3.0 * std::pow(area, 1.5) / std::sqrt(M_PI);
+        }
+        EXPECT_GE(volume, whole * (1.0 - 1e-6));
+        EXPECT_LE(volume - whole, bulge);
+    }
+    EXPECT_GT(patchVertices, 0);
+    // Each piece keeps one tree; every bone went to a piece (split ones in
+    // two halves, one per piece).
+    for (const Part& piece : result.pieces) {
+        EXPECT_TRUE(piece.skeleton.validate().empty());
+        EXPECT_GT(piece.skeleton.boneCount(), 0);
+    }
+    EXPECT_GE(result.pieces[0].skeleton.boneCount() + result.pieces[1].skeleton.boneCount(),
+              part.skeleton.boneCount());
+}
+
+std::vector<CutCase> cutCases() {
+    std::vector<CutCase> list;
+    for (const std::string& sketch : testsupport::sharedSketchNames(false))
+        for (double at : {0.3, 0.5, 0.7})
+            for (CutStyle style : {CutStyle::Smooth, CutStyle::Sharp})
+                list.push_back({sketch, at, style});
+    return list;
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedSketches, CutSharedSketch, testing::ValuesIn(cutCases()),
+                         [](const testing::TestParamInfo<CutCase>& param) {
+                             return param.param.sketch + "_" +
+                                    std::to_string(static_cast<int>(param.param.at * 100)) +
+                                    (param.param.style == CutStyle::Smooth ? "_smooth" : "_sharp");
+                         });
+
+TEST(CutRefusals, APlaneBesideThePartIsRefused) {
+    const Part& part = testsupport::sharedSketchPart("tube");
+    CutRequest request = planeAcross(part, 0.5, CutStyle::Smooth);
+    request.point += 100.0 * request.normal;
+    try {
+        cutPart(part, request);
+        FAIL() << "cut a plane that misses the part";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("does not cross"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace rigmesh
