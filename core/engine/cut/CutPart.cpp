@@ -11,20 +11,13 @@
 #include "cut/PlaneSplit.h"
 #include "geometry/ConstrainedTriangulation.h"
 #include "mesh/Fairing.h"
+#include "mesh/MeshAdjacency.h"
 #include "part/BoneWeights.h"
 #include "surface/PatchLattice.h"
 
 namespace rigmesh {
 
 namespace {
-
-double meanEdgeLength(const TriMesh& mesh) {
-    double total = 0.0;
-    for (const auto& face : mesh.faces)
-        for (int c = 0; c < 3; ++c)
-            total += (mesh.vertices[face[c]] - mesh.vertices[face[(c + 1) % 3]]).norm();
-    return mesh.faces.empty() ? 0.0 : total / (3.0 * mesh.faceCount());
-}
 
 // Fills one hole with a planar patch (paper 3.1: GridMesh-like; here our
 // lattice + CDT, as the sketch patches of 2.2). The loop runs the way the

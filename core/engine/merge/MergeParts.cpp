@@ -7,6 +7,7 @@
 #include "base/Error.h"
 #include "merge/MeshUnion.h"
 #include "merge/SeamSmoothing.h"
+#include "mesh/MeshAdjacency.h"
 #include "part/CarryAcross.h"
 #include "rig/LocalBoneHeat.h"
 
@@ -23,14 +24,6 @@ double millisecondsSince(Clock::time_point start) {
 BoneSegment segmentOf(const Skeleton& skeleton, BoneId id) {
     const Bone& bone = skeleton.bone(id);
     return {skeleton.joint(bone.head).position, skeleton.joint(bone.tail).position};
-}
-
-double meanEdgeLength(const TriMesh& mesh) {
-    double total = 0.0;
-    for (const auto& face : mesh.faces)
-        for (int c = 0; c < 3; ++c)
-            total += (mesh.vertices[face[c]] - mesh.vertices[face[(c + 1) % 3]]).norm();
-    return mesh.faces.empty() ? 0.0 : total / (3.0 * mesh.faceCount());
 }
 
 // The target's weights by merged bone id. After a split the bone keeps its

@@ -18,4 +18,12 @@ std::vector<std::vector<int>> vertexNeighbours(const TriMesh& mesh) {
     return neighbours;
 }
 
+double meanEdgeLength(const TriMesh& mesh) {
+    double total = 0.0;
+    for (const auto& face : mesh.faces)
+        for (int c = 0; c < 3; ++c)
+            total += (mesh.vertices[face[c]] - mesh.vertices[face[(c + 1) % 3]]).norm();
+    return mesh.faces.empty() ? 0.0 : total / (3.0 * mesh.faceCount());
+}
+
 }  // namespace rigmesh

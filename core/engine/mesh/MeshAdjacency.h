@@ -11,4 +11,8 @@ namespace rigmesh {
 // Per vertex: its neighbours along edges, sorted, each once.
 std::vector<std::vector<int>> vertexNeighbours(const TriMesh& mesh);
 
+// The mean length of the faces' edges (inner edges counted twice): a part's
+// working edge length when none is given.
+double meanEdgeLength(const TriMesh& mesh);
+
 }  // namespace rigmesh
