@@ -66,3 +66,24 @@ TEST(ExampleRecipe, CamelMergesAreLocalAndCloseToTheGlobalWeights) {
 
 }  // namespace
 }  // namespace rigmesh::model::test
+
+namespace rigmesh::model::test {
+namespace {
+
+// The paper's squid work-around (Fig. 16): a longer shape, cut apart; the
+// head keeps a skeleton along its long axis.
+TEST(ExampleRecipe, SquidHeadIsCutFromALongerShape) {
+    Document document;
+    runRecipeFile(document, std::string(RIGMESH_RESOURCES) + "/recipes/squid.json");
+    ASSERT_EQ(document.partCount(), 1);
+    const PartNode& mantle = document.parts()[0];
+    EXPECT_EQ(mantle.name, QStringLiteral("mantle"));
+    EXPECT_TRUE(mantle.part->validateSolid().empty());
+    for (const BoneSegment& bone : mantle.part->boneSegments()) {
+        const Vec3 along = (bone.tail - bone.head).normalized();
+        EXPECT_GT(std::abs(along.y()), 0.9) << "bones run along the head's long axis";
+    }
+}
+
+}  // namespace
+}  // namespace rigmesh::model::test

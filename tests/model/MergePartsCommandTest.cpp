@@ -119,3 +119,67 @@ TEST(DocumentResolution, SketchesAfterTheFirstShareItsEdgeLength) {
 
 }  // namespace
 }  // namespace rigmesh::model::test
+
+namespace rigmesh::model::test {
+namespace {
+
+// CutPartCommand (paper 3.1): one step that turns one part into two; undo
+// gives the part back byte for byte; the history replays exactly.
+TEST(CutPartCommand, IsOneUndoStepAndUndoRestoresThePartExactly) {
+    Document document;
+    runSteps(document, {{{"command", "sketch"},
+                         {"points", pointsOf(sharedStroke("tube"))},
+                         {"name", "tube"}}});
+    const QByteArray before = bytesOf(document);
+    const int count = document.undoStack()->count();
+    const PartId next = document.nextPartId();
+    runSteps(document, {{{"command", "cut"},
+                         {"part", "tube"},
+                         {"plane", {{"point", {0.0, 0.0, 0.0}}, {"normal", {1.0, 0.2, 0.0}}}},
+                         {"style", "sharp"},
+                         {"names", {"left", "right"}}}});
+    EXPECT_EQ(document.undoStack()->count(), count + 1);
+    ASSERT_EQ(document.partCount(), 2);
+    EXPECT_EQ(document.parts()[0].name, QStringLiteral("left"));
+    EXPECT_EQ(document.parts()[1].name, QStringLiteral("right"));
+    EXPECT_EQ(document.parts()[1].id, next);
+    for (const PartNode& node : document.parts()) {
+        EXPECT_TRUE(node.part->validateSolid().empty());
+        EXPECT_TRUE(node.stroke.empty());
+    }
+    const QByteArray after = bytesOf(document);
+    document.undoStack()->undo();
+    EXPECT_EQ(bytesOf(document), before);
+    EXPECT_EQ(document.nextPartId(), next);
+    document.undoStack()->redo();
+    EXPECT_EQ(bytesOf(document), after);
+    Document replay;
+    RecipeRunner(replay).run(parseRecipe(recipeFromHistory(document).dump(), "history"));
+    EXPECT_EQ(bytesOf(replay), after);
+}
+
+TEST(CutPartCommand, AStrokeInAViewCutsAndABadCutChangesNothing) {
+    Document document;
+    runSteps(document, {{{"command", "sketch"},
+                         {"points", pointsOf(sharedStroke("tube"))},
+                         {"name", "tube"}}});
+    const QByteArray before = bytesOf(document);
+    // A stroke beside the part: refused, nothing changes.
+    EXPECT_NE(stepError(document, {{{"command", "cut"},
+                                    {"part", "tube"},
+                                    {"stroke", {{40.0, -5.0}, {40.0, 5.0}}},
+                                    {"view", {{"direction", {0, 0, -1}}, {"up", {0, 1, 0}}}}}})
+                  .find("does not cross"),
+              std::string::npos);
+    EXPECT_EQ(bytesOf(document), before);
+    // A vertical stroke across the middle, seen from the front.
+    runSteps(document, {{{"command", "cut"},
+                         {"part", "tube"},
+                         {"stroke", {{0.05, -5.0}, {0.0, 5.0}}},
+                         {"view", {{"direction", {0, 0, -1}}, {"up", {0, 1, 0}}}}}});
+    ASSERT_EQ(document.partCount(), 2);
+    EXPECT_EQ(document.parts()[1].name, QStringLiteral("tube 2"));
+}
+
+}  // namespace
+}  // namespace rigmesh::model::test

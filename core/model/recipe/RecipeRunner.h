@@ -41,6 +41,14 @@
 //                 for split the point projected on the target's nearest
 //                 bone), optional "reskin": "local" (default) | "global"
 //                 (paper 3.2; the merged part keeps the target's id and name)
+//   cut           "part" and either "plane": {"point": [x, y, z], "normal":
+//                 [x, y, z]} in document coordinates, or "stroke": [[x, y],
+//                 ...] with "view": {"direction": [x, y, z], "up": [x, y, z]}
+//                 (the stroke on the view plane through the part's centre; the
+//                 plane holds the line through its ends and the view
+//                 direction); optional "style": "smooth" (default) | "sharp",
+//                 "names": [behind, in front] (paper 3.1; the piece behind
+//                 the plane keeps the part's id)
 //   clip_settings "part", optional "frameRate", "interpolation" ("linear" |
 //                 "smooth"), "playback" ("hold" | "loop")
 //

@@ -9,6 +9,7 @@
 #include "model/ClipModes.h"
 #include "model/PoseDrag.h"
 #include "model/commands/CreatePartCommand.h"
+#include "model/commands/CutPartCommand.h"
 #include "model/commands/DeleteKeyCommand.h"
 #include "model/commands/DeletePartCommand.h"
 #include "model/commands/ImportPartsCommand.h"
@@ -227,11 +228,74 @@ StepCommand merge(const Context& c) {
     return {std::move(command), into, detail, std::move(stats)};
 }
 
+// The cut's plane: "plane": {"point", "normal"} in document coordinates, or
+// "stroke" [[x, y], ...] drawn in "view" {"direction", "up"} on the view
+// plane through the part's centre: the plane holds the line through the
+// stroke's ends and the view direction (paper 3.1; a curved stroke is cut
+// along that line).
+void readCutPlane(const Context& c, const PartNode& node, CutSpec& spec) {
+    if (c.has("plane") == c.has("stroke"))
+        throw Error("the step needs either \"plane\" or \"stroke\" with \"view\"");
+    if (c.has("plane")) {
+        const json& plane = c.step["plane"];
+        if (!plane.is_object() || !plane.contains("point") || !plane.contains("normal"))
+            throw Error("\"plane\" needs \"point\" and \"normal\"");
+        spec.point = readVec3(plane["point"], "\"plane\" \"point\"");
+        spec.normal = readVec3(plane["normal"], "\"plane\" \"normal\"");
+        return;
+    }
+    const std::vector<Vec2> stroke = readPoints(c.step["stroke"]);
+    const json& view = c.required("view");
+    if (!view.is_object() || !view.contains("direction") || !view.contains("up"))
+        throw Error("\"view\" needs \"direction\" and \"up\"");
+    const Vec3 direction = readVec3(view["direction"], "\"view\" \"direction\"").normalized();
+    const Vec3 up = readVec3(view["up"], "\"view\" \"up\"");
+    const Vec3 right = direction.cross(up).normalized();
+    const Vec3 trueUp = right.cross(direction);
+    if (stroke.size() < 2 || !right.allFinite())
+        throw Error(
+            "the cut needs a stroke of two points or more and a view whose up is not "
+            "its direction");
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : node.part->mesh.vertices)
+        box.extend(node.placement.rotation * v + node.placement.translation);
+    auto onPlane = [&](const Vec2& p) { return box.center() + p.x() * right + p.y() * trueUp; };
+    const Vec3 a = onPlane(stroke.front());
+    const Vec3 b = onPlane(stroke.back());
+    spec.point = a;
+    spec.normal = (b - a).cross(direction);
+    if (!(spec.normal.norm() > 0.0))
+        throw Error("the cut's stroke must not start and end at the same point");
+}
+
+StepCommand cut(const Context& c) {
+    const PartId id = c.part();
+    CutSpec spec;
+    readCutPlane(c, c.node(id), spec);
+    const std::string style = c.has("style") ? readText(c.step["style"], "\"style\"") : "smooth";
+    if (style != "smooth" && style != "sharp")
+        throw Error("\"style\" must be \"smooth\" or \"sharp\"");
+    spec.style = style == "smooth" ? CutStyle::Smooth : CutStyle::Sharp;
+    if (c.has("names")) {
+        const json& names = c.step["names"];
+        if (!names.is_array() || names.size() != 2)
+            throw Error("\"names\" must be two names");
+        for (int k = 0; k < 2; ++k)
+            spec.names[k] = QString::fromStdString(readText(names[k], "\"names\""));
+    }
+    auto command = CutPartCommand::create(c.document, id, spec);
+    std::ostringstream detail;
+    detail << "cut in " << static_cast<int>(command->milliseconds() + 0.5) << " ms";
+    json stats = {{"ms", command->milliseconds()}};
+    return {std::move(command), id, detail.str(), std::move(stats)};
+}
+
 const std::map<std::string, StepKind>& stepKinds() {
     static const std::map<std::string, StepKind> kinds = {
         {"sketch", {{"stroke", "points", "name", "placement", "options"}, sketch}},
         {"import", {{"file"}, importFile}},
         {"merge", {{"part", "into", "mode", "joint", "target", "reskin"}, merge}},
+        {"cut", {{"part", "plane", "stroke", "view", "style", "names"}, cut}},
         {"delete",
          {{"part"},
           [](const Context& c) {

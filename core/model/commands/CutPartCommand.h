@@ -1,0 +1,51 @@
+// Cut a part in two by a plane (paper 3.1) as one undoable step: the engine
+// cut (cut/CutPart.h) runs in create(), before anything is pushed, so a
+// refused cut throws rigmesh::Error and changes nothing. Redo replaces the
+// part by the piece behind the plane (same id) and inserts the piece in
+// front after it (a new id); undo restores the part exactly. Both pieces
+// keep the pose, pins and keys of the joints they still have.
+#pragma once
+
+#include <QCoreApplication>
+#include <QUndoCommand>
+#include <memory>
+
+#include "cut/CutPart.h"
+#include "model/Document.h"
+#include "model/recipe/RecipeStepSource.h"
+
+namespace rigmesh::model {
+
+struct CutSpec {
+    Vec3 point = Vec3::Zero();  // the plane, in document coordinates
+    Vec3 normal = Vec3::UnitX();
+    CutStyle style = CutStyle::Smooth;
+    QString names[2];  // empty: the part's name, and "<name> 2"
+};
+
+class CutPartCommand : public QUndoCommand, public RecipeStepSource {
+    Q_DECLARE_TR_FUNCTIONS(CutPartCommand)
+  public:
+    // Throws rigmesh::Error: unknown part, or a cut the engine refuses.
+    static std::unique_ptr<CutPartCommand> create(Document& document, PartId part,
+                                                  const CutSpec& spec);
+
+    void redo() override;
+    void undo() override;
+    nlohmann::json recipeStep() const override;
+    PartId newPart() const { return pieces_[1].id; }
+    double milliseconds() const { return milliseconds_; }
+
+  private:
+    CutPartCommand(Document& document, PartId part, const CutSpec& spec);
+
+    Document& document_;
+    PartId id_;
+    int index_;
+    CutSpec spec_;
+    PartNode original_;
+    PartNode pieces_[2];
+    double milliseconds_ = 0.0;
+};
+
+}  // namespace rigmesh::model
