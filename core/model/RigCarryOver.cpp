@@ -1,5 +1,7 @@
 #include "model/RigCarryOver.h"
 
+#include "model/PartNode.h"
+
 namespace rigmesh::model {
 namespace {
 
@@ -56,6 +58,20 @@ CarriedRig carryRigOver(const Skeleton& from, const Skeleton& to, const rigmesh:
     for (JointId joint : touched)
         (kept.contains(joint) ? out.keptJoints : out.droppedJoints) += 1;
     return out;
+}
+
+PartNode editedNode(const PartNode& from, std::shared_ptr<const Part> part, int* droppedJoints) {
+    PartNode node = from;
+    node.stroke.clear();
+    node.part = std::move(part);
+    const CarriedRig carried = carryRigOver(from.part->skeleton, node.part->skeleton, from.pose,
+                                            from.pinnedJoints, from.clip);
+    node.pose = carried.pose;
+    node.pinnedJoints = carried.pinned;
+    node.clip = carried.clip;
+    if (droppedJoints)
+        *droppedJoints = carried.droppedJoints;
+    return node;
 }
 
 }  // namespace rigmesh::model

@@ -5,8 +5,10 @@
 // counted, so the user can be told.
 #pragma once
 
+#include <memory>
 #include <set>
 
+#include "part/Part.h"
 #include "pose/Clip.h"
 #include "pose/Pose.h"
 #include "rig/Skeleton.h"
@@ -24,5 +26,15 @@ struct CarriedRig {
 CarriedRig carryRigOver(const rigmesh::Skeleton& from, const rigmesh::Skeleton& to,
                         const rigmesh::Pose& pose, const std::set<rigmesh::JointId>& pinned,
                         const rigmesh::Clip& clip);
+
+struct PartNode;
+
+// A node whose part a topology edit replaced (merge, cut, bone edits): a copy
+// of `from` with `part` in its place, no stroke (it is no longer one sketch,
+// so it cannot be rebuilt) and the pose, pins and keys `from` had for the
+// joints the new skeleton keeps. `droppedJoints` (if given) gets the count
+// of those it could not keep.
+PartNode editedNode(const PartNode& from, std::shared_ptr<const Part> part,
+                    int* droppedJoints = nullptr);
 
 }  // namespace rigmesh::model

@@ -30,20 +30,12 @@ CutPartCommand::CutPartCommand(Document& document, PartId part, const CutSpec& s
     CutResult cut = cutPart(*original_.part, request);
     milliseconds_ = cut.milliseconds;
     for (int k = 0; k < 2; ++k) {
-        PartNode& piece = pieces_[k];
-        piece = original_;
-        piece.stroke.clear();  // no longer one sketch: not rebuildable
-        piece.name = !spec.names[k].isEmpty() ? spec.names[k]
-                     : k == 0                 ? original_.name
-                                              : tr("%1 2").arg(original_.name);
-        cut.pieces[k].name = piece.name.toStdString();
-        piece.part = std::make_shared<const Part>(std::move(cut.pieces[k]));
-        const CarriedRig carried =
-            carryRigOver(original_.part->skeleton, piece.part->skeleton, original_.pose,
-                         original_.pinnedJoints, original_.clip);
-        piece.pose = carried.pose;
-        piece.pinnedJoints = carried.pinned;
-        piece.clip = carried.clip;
+        const QString name = !spec.names[k].isEmpty() ? spec.names[k]
+                             : k == 0                 ? original_.name
+                                                      : tr("%1 2").arg(original_.name);
+        cut.pieces[k].name = name.toStdString();
+        pieces_[k] = editedNode(original_, std::make_shared<const Part>(std::move(cut.pieces[k])));
+        pieces_[k].name = name;
     }
     pieces_[1].id = document.allocatePartId();
     spec_.names[0] = pieces_[0].name;

@@ -117,17 +117,8 @@ MergePartsCommand::MergePartsCommand(Document& document, PartId dragged, PartId 
       draggedNode_(document.part(dragged)),
       targetNode_(document.part(target)),
       stats_(result.stats) {
-    mergedNode_ = targetNode_;
-    // A merged part is no longer one sketch: it cannot be rebuilt from a stroke.
-    mergedNode_.stroke.clear();
-    mergedNode_.part = std::make_shared<const Part>(std::move(result.part));
-    const CarriedRig carried =
-        carryRigOver(targetNode_.part->skeleton, mergedNode_.part->skeleton, targetNode_.pose,
-                     targetNode_.pinnedJoints, targetNode_.clip);
-    mergedNode_.pose = carried.pose;
-    mergedNode_.pinnedJoints = carried.pinned;
-    mergedNode_.clip = carried.clip;
-    droppedJoints_ = carried.droppedJoints;
+    mergedNode_ = editedNode(targetNode_, std::make_shared<const Part>(std::move(result.part)),
+                             &droppedJoints_);
     const PartNode& d = draggedNode_;
     if (!identicalPoses(d.pose, restPoseOf(d)) || !d.pinnedJoints.empty() || !d.clip.keys().empty())
         droppedDragged_ = true;
