@@ -1,0 +1,150 @@
+#include "cut/BoneEdits.h"
+
+#include <algorithm>
+#include <chrono>
+#include <set>
+
+#include "base/Error.h"
+#include "mesh/MeshAdjacency.h"
+#include "part/BoneWeights.h"
+#include "rig/LocalBoneHeat.h"
+
+namespace rigmesh {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The closest split that still leaves both halves a bone of some length.
+constexpr double kEndFraction = 0.05;
+
+BoneId leadingBone(const std::vector<std::pair<BoneId, double>>& weights) {
+    return std::max_element(weights.begin(), weights.end(),
+                            [](const auto& a, const auto& b) { return a.second < b.second; })
+        ->first;
+}
+
+BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& weights,
+                      const std::vector<int>& seeds, const std::vector<int>& unknown,
+                      const std::vector<BoneId>& bones, Clock::time_point start) {
+    skeleton.reorient();
+    const LocalBoneHeatResult local =
+        recomputeWeightsLocally(part.mesh, skeleton, weights, seeds, unknown, bones);
+    BoneEditResult result;
+    result.part = part;
+    result.part.skeleton = std::move(skeleton);
+    result.part.weights = weightsByIndex(result.part.skeleton, local.weights);
+    // Closest bones known from the sketch no longer hold where bones changed.
+    result.part.knownClosestBones.clear();
+    std::erase_if(result.part.boneNames,
+                  [&](const auto& entry) { return !result.part.skeleton.hasBone(entry.first); });
+    result.reskinned = local.failedTest;
+    result.reskinned.insert(result.reskinned.end(), local.transition.begin(),
+                            local.transition.end());
+    std::sort(result.reskinned.begin(), result.reskinned.end());
+    result.bonesInvolved = static_cast<int>(local.bones.size());
+    const std::vector<std::string> problems = result.part.validateSolid();
+    if (!problems.empty())
+        throw Error("The bone edit gave an invalid part (" + problems.front() +
+                    "); nothing was changed.");
+    result.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    return result;
+}
+
+void requireRigged(const Part& part, BoneId bone) {
+    if (part.skeleton.boneCount() == 0)
+        throw Error("The part has no skeleton.");
+    if (!part.skeleton.hasBone(bone))
+        throw Error("The part has no bone " + std::to_string(bone) + ".");
+}
+
+}  // namespace
+
+BoneId nearestBone(const Part& part, const Vec3& point) {
+    const std::vector<BoneSegment> segments = part.boneSegments();
+    if (segments.empty())
+        throw Error("The part has no skeleton.");
+    int best = 0;
+    for (int b = 1; b < static_cast<int>(segments.size()); ++b)
+        if (pointSegmentDistance(point, segments[b]) < pointSegmentDistance(point, segments[best]))
+            best = b;
+    return part.skeleton.bones()[best].id;
+}
+
+BoneEditResult splitBoneAt(const Part& part, BoneId bone, const Vec3& at) {
+    const auto start = Clock::now();
+    requireRigged(part, bone);
+    const Bone& b = part.skeleton.bone(bone);
+    const BoneSegment segment{part.skeleton.joint(b.head).position,
+                              part.skeleton.joint(b.tail).position};
+    const double t = closestSegmentParameter(at, segment);
+    if (t < kEndFraction || t > 1.0 - kEndFraction)
+        throw Error(
+            "That is too close to a joint to split the bone; pick a point nearer its "
+            "middle.");
+    const Vec3 point = segment.head + t * (segment.tail - segment.head);
+    const Vec3 direction = (segment.tail - segment.head).normalized();
+    Skeleton skeleton = part.skeleton;
+    const JointId middle = skeleton.splitBone(bone, point);
+    BoneId tailHalf = bone;
+    for (BoneId id : skeleton.bonesAt(middle))
+        if (id != bone)
+            tailHalf = id;
+
+    // The cut loop (paper 3.3: a cut perpendicular to the bone through the
+    // new joint): vertices led by the bone with a neighbour across the plane.
+    const WeightsById weights = weightsById(part.skeleton, part.weights);
+    const std::vector<std::vector<int>> neighbours = vertexNeighbours(part.mesh);
+    auto side = [&](int v) { return direction.dot(part.mesh.vertices[v] - point) >= 0.0; };
+    std::vector<int> seeds;
+    for (int v = 0; v < part.mesh.vertexCount(); ++v) {
+        if (weights[v].empty() || leadingBone(weights[v]) != bone)
+            continue;
+        for (int w : neighbours[v])
+            if (side(w) != side(v)) {
+                seeds.push_back(v);
+                break;
+            }
+    }
+    if (seeds.empty())
+        throw Error("No part of the surface is led by that bone where it would be split.");
+    BoneEditResult result =
+        finish(part, std::move(skeleton), weights, seeds, {}, {bone, tailHalf}, start);
+    result.newJoint = middle;
+    return result;
+}
+
+BoneEditResult deleteBone(const Part& part, BoneId bone) {
+    const auto start = Clock::now();
+    requireRigged(part, bone);
+    if (part.skeleton.boneCount() < 2)
+        throw Error("A part keeps at least one bone; this is its only one.");
+    const Bone b = part.skeleton.bone(bone);
+    std::set<BoneId> neighbours;
+    for (JointId end : {b.head, b.tail})
+        for (BoneId id : part.skeleton.bonesAt(end))
+            if (id != bone)
+                neighbours.insert(id);
+    Skeleton skeleton = part.skeleton;
+    skeleton.collapseBone(
+        bone, 0.5 * (part.skeleton.joint(b.head).position + part.skeleton.joint(b.tail).position));
+
+    // The collapsed piece (paper 3.3: between the cuts through the far joints
+    // of the neighbouring bones): every vertex led by the bone or a
+    // neighbour, all of them solved again.
+    WeightsById weights = weightsById(part.skeleton, part.weights);
+    std::vector<int> piece;
+    for (int v = 0; v < part.mesh.vertexCount(); ++v) {
+        if (weights[v].empty())
+            continue;
+        const BoneId leading = leadingBone(weights[v]);
+        if (leading == bone || neighbours.contains(leading))
+            piece.push_back(v);
+        std::erase_if(weights[v], [&](const auto& e) { return e.first == bone; });
+        normaliseWeights(weights[v]);
+    }
+    return finish(part, std::move(skeleton), weights, piece, piece,
+                  std::vector<BoneId>(neighbours.begin(), neighbours.end()), start);
+}
+
+}  // namespace rigmesh
