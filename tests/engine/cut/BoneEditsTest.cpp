@@ -65,10 +65,13 @@ TEST_P(BoneEdits, SplittingTheLongestBoneAddsOneJointAndReskinsLocally) {
         EXPECT_GT(w, 0.0) << b2;
 }
 
-TEST_P(BoneEdits, DeletingTheShortestBoneRemovesOneJointAndKeepsATree) {
+TEST_P(BoneEdits, DeletingTheShortestBoneRemovesOneJointOrIsRefusedForTheOnlyBone) {
     const Part& part = testsupport::sharedSketchPart(GetParam());
-    if (part.skeleton.boneCount() < 2)
-        GTEST_SKIP() << "one bone only";
+    if (part.skeleton.boneCount() < 2) {
+        // A part keeps at least one bone: the delete is refused.
+        EXPECT_THROW(deleteBone(part, shortestBone(part)), Error);
+        return;
+    }
     const BoneEditResult result = deleteBone(part, shortestBone(part));
     EXPECT_EQ(result.part.skeleton.boneCount(), part.skeleton.boneCount() - 1);
     EXPECT_EQ(result.part.skeleton.jointCount(), part.skeleton.jointCount() - 1);
