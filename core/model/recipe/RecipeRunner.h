@@ -49,6 +49,11 @@
 //                 direction); optional "style": "smooth" (default) | "sharp",
 //                 "names": [behind, in front] (paper 3.1; the piece behind
 //                 the plane keeps the part's id)
+//   split_bone    "part" and "bone" (an id) or "at": [x, y, z] (document
+//                 coordinates: the nearest bone); the bone is split at the
+//                 point of it nearest to "at" (default: its middle) (3.3)
+//   delete_bone   "part" and "bone" or "at": the bone's joints merge at its
+//                 middle (3.3)
 //   clip_settings "part", optional "frameRate", "interpolation" ("linear" |
 //                 "smooth"), "playback" ("hold" | "loop")
 //

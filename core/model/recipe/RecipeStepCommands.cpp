@@ -8,6 +8,7 @@
 #include "base/Error.h"
 #include "model/ClipModes.h"
 #include "model/PoseDrag.h"
+#include "model/commands/BoneEditCommand.h"
 #include "model/commands/CreatePartCommand.h"
 #include "model/commands/CutPartCommand.h"
 #include "model/commands/DeleteKeyCommand.h"
@@ -290,12 +291,52 @@ StepCommand cut(const Context& c) {
     return {std::move(command), id, detail.str(), std::move(stats)};
 }
 
+// "bone": an id, or "at": a point in document coordinates (the nearest bone).
+BoneId readBone(const Context& c, const PartNode& node) {
+    if (!node.part || node.part->skeleton.boneCount() == 0)
+        throw Error(partLabel(node) + " has no skeleton");
+    if (c.has("bone")) {
+        const BoneId bone = readJointId(c.step["bone"], "\"bone\"");
+        if (!node.part->skeleton.hasBone(bone))
+            throw Error(partLabel(node) + " has no bone " + std::to_string(bone));
+        return bone;
+    }
+    const Vec3 at = readVec3(c.required("at"), "\"at\"");
+    return nearestBone(*node.part,
+                       node.placement.rotation.conjugate() * (at - node.placement.translation));
+}
+
+StepCommand boneEdit(const Context& c, bool split) {
+    const PartId id = c.part();
+    const PartNode& node = c.node(id);
+    const BoneId bone = readBone(c, node);
+    std::unique_ptr<BoneEditCommand> command;
+    if (split) {
+        // Without "at", the bone's middle.
+        const Bone& b = node.part->skeleton.bone(bone);
+        const Vec3 middle = 0.5 * (node.part->skeleton.joint(b.head).position +
+                                   node.part->skeleton.joint(b.tail).position);
+        const Vec3 at = c.has("at") ? readVec3(c.step["at"], "\"at\"")
+                                    : node.placement.rotation * middle + node.placement.translation;
+        command = BoneEditCommand::split(c.document, id, bone, at);
+    } else {
+        command = BoneEditCommand::remove(c.document, id, bone);
+    }
+    const std::string detail = command->summary().toStdString();
+    json stats = {{"ms", command->milliseconds()}};
+    return {std::move(command), id, detail, std::move(stats)};
+}
+
 const std::map<std::string, StepKind>& stepKinds() {
     static const std::map<std::string, StepKind> kinds = {
         {"sketch", {{"stroke", "points", "name", "placement", "options"}, sketch}},
         {"import", {{"file"}, importFile}},
         {"merge", {{"part", "into", "mode", "joint", "target", "reskin"}, merge}},
         {"cut", {{"part", "plane", "stroke", "view", "style", "names"}, cut}},
+        {"split_bone",
+         {{"part", "bone", "at"}, [](const Context& c) { return boneEdit(c, true); }}},
+        {"delete_bone",
+         {{"part", "bone", "at"}, [](const Context& c) { return boneEdit(c, false); }}},
         {"delete",
          {{"part"},
           [](const Context& c) {
