@@ -33,6 +33,7 @@
 #include "model/recipe/RecipeFromHistory.h"
 #include "panels/OutlinerPanel.h"
 #include "panels/PropertiesPanel.h"
+#include "tools/CutTool.h"
 #include "tools/MergeTool.h"
 #include "tools/PoseTool.h"
 #include "tools/SelectTool.h"
@@ -68,6 +69,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
       sketchTool_(new SketchTool(this)),
       poseTool_(new PoseTool(this)),
       mergeTool_(new MergeTool(this)),
+      cutTool_(new CutTool(this)),
       recoveryDirectory_(recoveryDirectory.isEmpty() ? QStandardPaths::writableLocation(
                                                            QStandardPaths::AppLocalDataLocation) +
                                                            QStringLiteral("/recovery")
@@ -218,6 +220,9 @@ void MainWindow::createActions() {
     mergeToolAction_ =
         add(tools, tr("&Merge Parts"), QKeySequence(Qt::Key_M), &MainWindow::activateMergeTool);
     mergeToolAction_->setIcon(QIcon(QStringLiteral(":/icons/merge.svg")));
+    cutToolAction_ =
+        add(tools, tr("&Cut Part"), QKeySequence(Qt::Key_C), &MainWindow::activateCutTool);
+    cutToolAction_->setIcon(QIcon(QStringLiteral(":/icons/cut.svg")));
     tools->addSeparator();
     add(tools, tr("&Reset Pose"), QKeySequence(Qt::ALT | Qt::Key_R), &MainWindow::resetPose);
     for (const auto& [action, tool] : toolPairs()) {
@@ -229,6 +234,7 @@ void MainWindow::createActions() {
     toolbar->addAction(sketchToolAction_);
     toolbar->addAction(poseToolAction_);
     toolbar->addAction(mergeToolAction_);
+    toolbar->addAction(cutToolAction_);
     sketchToolAction_->setChecked(true);
 
     auto* help = menuBar()->addMenu(tr("&Help"));
@@ -477,6 +483,10 @@ void MainWindow::activateMergeTool() {
     activateTool(mergeToolAction_, mergeTool_);
 }
 
+void MainWindow::activateCutTool() {
+    activateTool(cutToolAction_, cutTool_);
+}
+
 ViewportTool* MainWindow::activeTool() const {
     for (const auto& [action, tool] : toolPairs())
         if (action->isChecked())
@@ -488,7 +498,8 @@ std::vector<std::pair<QAction*, ViewportTool*>> MainWindow::toolPairs() const {
     return {{selectToolAction_, selectTool_},
             {sketchToolAction_, sketchTool_},
             {poseToolAction_, poseTool_},
-            {mergeToolAction_, mergeTool_}};
+            {mergeToolAction_, mergeTool_},
+            {cutToolAction_, cutTool_}};
 }
 
 void MainWindow::resetPose() {

@@ -31,6 +31,7 @@ class MouseHint;
 class DocumentView;
 class OutlinerPanel;
 class PropertiesPanel;
+class CutTool;
 class MergeTool;
 class PoseTool;
 class SelectTool;
@@ -67,6 +68,7 @@ class MainWindow : public QMainWindow {
     void activateSketchTool();
     void activatePoseTool();
     void activateMergeTool();
+    void activateCutTool();
     void resetPose();
     void deleteSelection();
 
@@ -100,6 +102,7 @@ class MainWindow : public QMainWindow {
     QAction* sketchToolAction_ = nullptr;
     QAction* poseToolAction_ = nullptr;
     QAction* mergeToolAction_ = nullptr;
+    QAction* cutToolAction_ = nullptr;
     QAction* wireframeAction_ = nullptr;
     QAction* dqsAction_ = nullptr;
     QAction* gridAction_ = nullptr;
@@ -107,6 +110,7 @@ class MainWindow : public QMainWindow {
     SketchTool* sketchTool_;
     PoseTool* poseTool_;
     MergeTool* mergeTool_;
+    CutTool* cutTool_;
     QString recoveryDirectory_;
     int untitledCount_ = 0;  // new documents are "Untitled 1", "Untitled 2", ...
     std::map<DocumentView*, model::Autosave*> autosaves_;

@@ -4,6 +4,7 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QCursor>
 #include <QDoubleSpinBox>
 #include <QIcon>
 #include <QImage>
@@ -608,6 +609,54 @@ TEST_F(StudioMerge, EscapeDuringTheDragPutsThePartBackAndMergesNothing) {
                     Qt::NoButton);
     EXPECT_EQ(document()->partCount(), 2);
     EXPECT_EQ(document()->undoStack()->count(), steps);
+}
+
+// The pixel of a document point.
+QPointF pixelOf(const widgets::Viewport& viewport, const Vec3& point) {
+    const QVector3D p = viewport.camera().project(
+        QVector3D(float(point.x()), float(point.y()), float(point.z())), QSizeF(viewport.size()));
+    return {p.x(), p.y()};
+}
+
+TEST_F(StudioMerge, ALineAcrossThePartCutsItInTwoInOneUndoStep) {
+    window->activateCutTool();
+    const QByteArray before = model::DocumentFile::toBytes(*document());
+    // Across the body's back half, from above it to below it.
+    const QPointF top = pixelOf(*viewport(), Vec3(-1.2, 1.6, 0.0));
+    const QPointF bottom = pixelOf(*viewport(), Vec3(-1.1, -1.6, 0.0));
+    ASSERT_FALSE(viewport()->partAt(top).has_value());
+    ASSERT_FALSE(viewport()->partAt(bottom).has_value());
+    drag(viewport(), {top, (top + bottom) / 2, bottom});
+    ASSERT_EQ(document()->partCount(), 3) << window->statusBar()->currentMessage().toStdString();
+    for (const model::PartNode& node : document()->parts())
+        EXPECT_TRUE(node.part->validateSolid().empty());
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_cut.png"));
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
+    // A line that starts on the part cuts nothing and says why.
+    drag(viewport(), {pixelOf(*viewport(), Vec3(-1.2, 0.0, 0.0)), bottom});
+    EXPECT_EQ(document()->partCount(), 2);
+    EXPECT_TRUE(window->statusBar()->currentMessage().contains(QStringLiteral("Nothing cut")));
+}
+
+TEST_F(StudioMerge, KSplitsTheBoneUnderTheCursorAndShiftKDeletesIt) {
+    const model::PartId leg = document()->parts()[1].id;
+    ASSERT_EQ(document()->part(leg).part->skeleton.boneCount(), 1);
+    viewport()->setFocus(Qt::MouseFocusReason);
+    const QPointF knee = pixelOf(*viewport(), Vec3(1.7, -2.0, 0.3));
+    QCursor::setPos(viewport()->mapToGlobal(knee.toPoint()));
+    QTest::qWait(20);
+    QTest::keyClick(viewport(), Qt::Key_K);
+    ASSERT_EQ(document()->part(leg).part->skeleton.boneCount(), 2)
+        << window->statusBar()->currentMessage().toStdString();
+    EXPECT_TRUE(document()->part(leg).part->validateSolid().empty());
+    QCursor::setPos(viewport()->mapToGlobal(pixelOf(*viewport(), Vec3(1.7, -3.0, 0.3)).toPoint()));
+    QTest::qWait(20);
+    QTest::keyClick(viewport(), Qt::Key_K, Qt::ShiftModifier);
+    EXPECT_EQ(document()->part(leg).part->skeleton.boneCount(), 1);
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_EQ(document()->part(leg).part->skeleton.boneCount(), 2);
 }
 
 }  // namespace

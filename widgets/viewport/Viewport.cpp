@@ -1,5 +1,10 @@
 #include "viewport/Viewport.h"
 
+#include <QContextMenuEvent>
+#include <QCursor>
+
+#include "viewport/BoneEditActions.h"
+
 #include <algorithm>
 
 #include <QGuiApplication>
@@ -449,11 +454,23 @@ void Viewport::wheelEvent(QWheelEvent* event) {
     update();
 }
 
+void Viewport::contextMenuEvent(QContextMenuEvent* event) {
+    if (!showBoneMenu(*this, event->pos(), event->globalPos()))
+        QOpenGLWidget::contextMenuEvent(event);
+}
+
 void Viewport::keyPressEvent(QKeyEvent* event) {
     if (event->key() == Qt::Key_Home) {
         frameAll();
     } else if (event->key() == Qt::Key_Period && (event->modifiers() & Qt::KeypadModifier)) {
         frameSelected();
+    } else if (event->key() == Qt::Key_K) {
+        // Skeleton refinement (3.3) on the bone under the cursor.
+        const QPointF cursor = mapFromGlobal(QCursor::pos());
+        const bool done = (event->modifiers() & Qt::ShiftModifier) ? deleteBoneUnder(*this, cursor)
+                                                                   : splitBoneUnder(*this, cursor);
+        if (!done)
+            emit statusMessage(tr("Point at a bone: K splits it there, Shift+K deletes it"));
     } else if (event->key() == Qt::Key_Escape && tool_) {
         // Esc cuts the tool's drag short: what it previewed is put back.
         tool_->cancel(*this);

@@ -1,0 +1,32 @@
+// Cut tool (C), paper 3.1: drag a line across a part, from outside it to
+// outside it; on release the part is cut by the plane through that line and
+// the view direction into two rigged parts. The cut face is smooth
+// (tangent-continuous); Shift + release makes it flat (a crease). A stroke
+// that does not cross a part completely cuts nothing and says so. One undo
+// step.
+#pragma once
+
+#include <QObject>
+#include <QPointF>
+#include <vector>
+
+#include "viewport/ViewportTool.h"
+
+namespace rigmesh::widgets {
+
+class CutTool : public QObject, public ViewportTool {
+    Q_OBJECT
+  public:
+    using QObject::QObject;
+    QString name() const override { return tr("Cut"); }
+    QString hint() const override;
+    void press(Viewport& viewport, QMouseEvent* event) override;
+    void move(Viewport& viewport, QMouseEvent* event) override;
+    void release(Viewport& viewport, QMouseEvent* event) override;
+    void cancel(Viewport& viewport) override;
+
+  private:
+    std::vector<QPointF> pixels_;
+};
+
+}  // namespace rigmesh::widgets
