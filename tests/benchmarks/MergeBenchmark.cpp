@@ -1,4 +1,5 @@
-// The paper's Table 1 bar at the camel session's last step (Fig. 10: the
+// Part edits at the size of the paper's camel. Merges: the Table 1 bar at
+// the camel session's last step (Fig. 10: the
 // head merged into the body, legs and neck, about 6k vertices): the union
 // with seam remeshing and local smoothing (3.2.1), the local re-skin
 // (3.2.2), the global re-skin (2.4 on the whole part), and whole merges.
@@ -6,11 +7,15 @@
 // The camel is built by the shipped recipe (resources/recipes/camel.json) up
 // to its last merge, with the model's recipe runner, once per program.
 // Re-skin times are the merge's own measurement of that stage
-// (MergeStats::reskinMs) reported as manual time.
+// (MergeStats::reskinMs) reported as manual time. Cut (3.1), bone split and
+// bone delete (3.3) run on the finished camel (issue 13's bar: 20, 30 and
+// 40 ms at about 6.5k vertices).
 #include <benchmark/benchmark.h>
 
 #include <QCoreApplication>
 
+#include "cut/BoneEdits.h"
+#include "cut/CutPart.h"
 #include "merge/MergeParts.h"
 #include "merge/MeshUnion.h"
 #include "merge/SeamSmoothing.h"
@@ -104,6 +109,66 @@ void reskinStage(benchmark::State& state, Reskin reskin) {
 void wholeMerge(benchmark::State& state, Reskin reskin) {
     timeMerges(state, reskin, false);
 }
+
+// The finished camel (about 6k vertices): what cut and bone edits work on.
+const Part& mergedCamel() {
+    static const Part camel =
+        mergeParts(lastMerge().body, lastMerge().head, lastMerge().request).part;
+    return camel;
+}
+
+// Paper 3.1: across the body between the legs (it crosses once).
+void cutCamel(benchmark::State& state, CutStyle style) {
+    CutRequest request;
+    request.point = Vec3(0.2, 0.0, 0.0);
+    request.normal = Vec3(1.0, 0.1, 0.0);
+    request.style = style;
+    for (auto _ : state)
+        benchmark::DoNotOptimize(cutPart(mergedCamel(), request));
+    state.counters["vertices"] = mergedCamel().mesh.vertexCount();
+}
+
+BoneId longestBone(const Part& part) {
+    BoneId best = part.skeleton.bones().front().id;
+    for (const Bone& bone : part.skeleton.bones())
+        if (part.skeleton.boneLength(bone.id) > part.skeleton.boneLength(best))
+            best = bone.id;
+    return best;
+}
+
+// Paper 3.3: the longest bone split at its middle (a knee in a leg).
+void splitBone(benchmark::State& state) {
+    const Part& camel = mergedCamel();
+    const BoneId bone = longestBone(camel);
+    const Bone& b = camel.skeleton.bone(bone);
+    const Vec3 middle =
+        0.5 * (camel.skeleton.joint(b.head).position + camel.skeleton.joint(b.tail).position);
+    BoneEditResult result;
+    for (auto _ : state)
+        result = splitBoneAt(camel, bone, middle);
+    state.counters["vertices"] = camel.mesh.vertexCount();
+    state.counters["reskinned"] = static_cast<double>(result.reskinned.size());
+}
+
+// Paper 3.3: the neck's upper bone deleted (nearest the head's back).
+void deleteBone(benchmark::State& state) {
+    const Part& camel = mergedCamel();
+    const BoneId bone = nearestBone(camel, Vec3(3.0, 2.2, 0.0));
+    BoneEditResult result;
+    for (auto _ : state)
+        result = rigmesh::deleteBone(camel, bone);
+    state.counters["vertices"] = camel.mesh.vertexCount();
+    state.counters["reskinned"] = static_cast<double>(result.reskinned.size());
+}
+
+BENCHMARK_CAPTURE(cutCamel, smooth, CutStyle::Smooth)
+    ->Name("Edit/camel/cut_smooth")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cutCamel, sharp, CutStyle::Sharp)
+    ->Name("Edit/camel/cut_sharp")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(splitBone)->Name("Edit/camel/split_bone")->Unit(benchmark::kMillisecond);
+BENCHMARK(deleteBone)->Name("Edit/camel/delete_bone")->Unit(benchmark::kMillisecond);
 
 BENCHMARK(unionAndSmoothing)
     ->Name("Merge/camel_head/union_and_smoothing")

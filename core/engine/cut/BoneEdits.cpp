@@ -83,7 +83,6 @@ BoneEditResult splitBoneAt(const Part& part, BoneId bone, const Vec3& at) {
             "That is too close to a joint to split the bone; pick a point nearer its "
             "middle.");
     const Vec3 point = segment.head + t * (segment.tail - segment.head);
-    const Vec3 direction = (segment.tail - segment.head).normalized();
     Skeleton skeleton = part.skeleton;
     const JointId middle = skeleton.splitBone(bone, point);
     BoneId tailHalf = bone;
@@ -91,21 +90,16 @@ BoneEditResult splitBoneAt(const Part& part, BoneId bone, const Vec3& at) {
         if (id != bone)
             tailHalf = id;
 
-    // The cut loop (paper 3.3: a cut perpendicular to the bone through the
-    // new joint): vertices led by the bone with a neighbour across the plane.
+    // Paper 3.3 cuts perpendicular to the bone through the new joint and
+    // merges back; the merge's inclusion test (3.2.2) starts at the cut loop.
+    // There both halves are equally close, so every vertex passes; the test
+    // starts instead from every vertex the bone leads, and those beyond the
+    // new joint (now closest to the far half, which has no weight) fail it.
     const WeightsById weights = weightsById(part.skeleton, part.weights);
-    const std::vector<std::vector<int>> neighbours = vertexNeighbours(part.mesh);
-    auto side = [&](int v) { return direction.dot(part.mesh.vertices[v] - point) >= 0.0; };
     std::vector<int> seeds;
-    for (int v = 0; v < part.mesh.vertexCount(); ++v) {
-        if (weights[v].empty() || leadingBone(weights[v]) != bone)
-            continue;
-        for (int w : neighbours[v])
-            if (side(w) != side(v)) {
-                seeds.push_back(v);
-                break;
-            }
-    }
+    for (int v = 0; v < part.mesh.vertexCount(); ++v)
+        if (!weights[v].empty() && leadingBone(weights[v]) == bone)
+            seeds.push_back(v);
     if (seeds.empty())
         throw Error("No part of the surface is led by that bone where it would be split.");
     BoneEditResult result =

@@ -61,8 +61,17 @@ TEST_P(BoneEdits, SplittingTheLongestBoneAddsOneJointAndReskinsLocally) {
     EXPECT_TRUE(result.part.skeleton.validate().empty());
     EXPECT_TRUE(result.part.skeleton.hasJoint(result.newJoint));
     expectLocal(part, result);
-    for (const auto& [b2, w] : result.part.weights.perVertex.front())
-        EXPECT_GT(w, 0.0) << b2;
+    // The far half took over the vertices beyond the new joint.
+    EXPECT_FALSE(result.reskinned.empty());
+    std::vector<int> leads(result.part.skeleton.boneCount(), 0);
+    for (const auto& list : result.part.weights.perVertex)
+        ++leads[std::max_element(list.begin(), list.end(), [](auto& x, auto& y) {
+                    return x.second < y.second;
+                })->first];
+    const Bone& half = result.part.skeleton.bone(bone);
+    for (BoneId id : result.part.skeleton.bonesAt(result.newJoint))
+        EXPECT_GT(leads[result.part.skeleton.indexOfBone(id)], 0)
+            << "bone " << id << " (split from " << bone << ", head " << half.head << ")";
 }
 
 TEST_P(BoneEdits, DeletingTheShortestBoneRemovesOneJointOrIsRefusedForTheOnlyBone) {
