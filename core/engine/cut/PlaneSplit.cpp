@@ -3,6 +3,7 @@
 #include <CGAL/Polygon_mesh_processing/clip.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
+#include <optional>
 #include <unordered_map>
 
 #include "mesh/CgalSurfaceMesh.h"
@@ -11,6 +12,62 @@ namespace rigmesh {
 
 using namespace cgal;
 namespace PMP = CGAL::Polygon_mesh_processing;
+
+namespace {
+
+// The points where the plane crosses the input's edges, each as a point on
+// one of the edge's faces: a new vertex of the split is one of them (CGAL
+// constructs it in its own arithmetic, so the nearest one is taken). A few
+// hundred points, searched linearly: cheaper than a search tree over every
+// triangle.
+class EdgeCrossings {
+  public:
+    EdgeCrossings(const TriMesh& mesh, const Vec3& point, const Vec3& normal) {
+        std::vector<double> side(mesh.vertices.size());
+        for (std::size_t v = 0; v < side.size(); ++v)
+            side[v] = normal.dot(mesh.vertices[v] - point);
+        for (int f = 0; f < mesh.faceCount(); ++f) {
+            const auto& face = mesh.faces[f];
+            for (int c = 0; c < 3; ++c) {
+                const int a = face[c], b = face[(c + 1) % 3];
+                if (a > b ||
+                    !((side[a] < 0.0 && side[b] > 0.0) || (side[a] > 0.0 && side[b] < 0.0)))
+                    continue;  // each edge once (from its face with a < b)
+                const double t = side[a] / (side[a] - side[b]);
+                Vec3 barycentric = Vec3::Zero();
+                barycentric[c] = 1.0 - t;
+                barycentric[(c + 1) % 3] = t;
+                crossings_.push_back({mesh.vertices[a] + t * (mesh.vertices[b] - mesh.vertices[a]),
+                                      VertexSource::triangle(0, f, barycentric)});
+            }
+        }
+    }
+
+    // The crossing nearest to `p`; nullopt if there is none.
+    std::optional<VertexSource> sourceOf(const Vec3& p) const {
+        const Crossing* best = nullptr;
+        double bestDistance = 0.0;
+        for (const Crossing& c : crossings_) {
+            const double d = (c.point - p).squaredNorm();
+            if (!best || d < bestDistance) {
+                best = &c;
+                bestDistance = d;
+            }
+        }
+        if (!best)
+            return std::nullopt;
+        return best->source;
+    }
+
+  private:
+    struct Crossing {
+        Vec3 point;
+        VertexSource source;
+    };
+    std::vector<Crossing> crossings_;
+};
+
+}  // namespace
 
 std::vector<MeshPiece> splitByPlane(const TriMesh& mesh, const Vec3& point, const Vec3& normal) {
     SurfaceMesh surface = toSurfaceMesh(mesh, "the part");
@@ -22,7 +79,7 @@ std::vector<MeshPiece> splitByPlane(const TriMesh& mesh, const Vec3& point, cons
     std::unordered_map<PointKey, int, PointKeyHash> inputVertex;
     for (int v = mesh.vertexCount() - 1; v >= 0; --v)
         inputVertex[keyOf(mesh.vertices[v])] = v;
-    const SourceTriangles sourceTriangles({&mesh});
+    const EdgeCrossings crossings(mesh, point, n);
 
     std::vector<MeshPiece> pieces;
     for (const SurfaceMesh& component : components) {
@@ -35,9 +92,13 @@ std::vector<MeshPiece> splitByPlane(const TriMesh& mesh, const Vec3& point, cons
             index[v.idx()] = piece.mesh.vertexCount();
             piece.mesh.vertices.push_back(p);
             auto found = inputVertex.find(keyOf(p));
-            piece.sources.push_back(found != inputVertex.end()
-                                        ? VertexSource::vertex(0, found->second)
-                                        : sourceTriangles.sourceOf(p));
+            if (found != inputVertex.end()) {
+                piece.sources.push_back(VertexSource::vertex(0, found->second));
+            } else if (auto crossing = crossings.sourceOf(p)) {
+                piece.sources.push_back(*crossing);
+            } else {
+                piece.sources.push_back(SourceTriangles({&mesh}).sourceOf(p));
+            }
             const double d = n.dot(p - point);
             if (std::abs(d) > std::abs(farthest))
                 farthest = d;
