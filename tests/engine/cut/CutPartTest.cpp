@@ -139,3 +139,35 @@ TEST(CutRefusals, APlaneBesideThePartIsRefused) {
 
 }  // namespace
 }  // namespace rigmesh
+
+#include "merge/MergeParts.h"
+
+namespace rigmesh {
+namespace {
+
+// Cut then merge back (paper 3.3's way of refining a bone): the two smooth
+// pieces, snapped at the joint the cut made, merge into one valid part.
+TEST(CutThenMerge, TheTwoPiecesOfACutMergeBackIntoOneValidPart) {
+    for (const std::string sketch : {"tube", "banana", "camel_leg"}) {
+        SCOPED_TRACE(sketch);
+        const Part& part = testsupport::sharedSketchPart(sketch);
+        const CutResult cut = cutPart(part, planeAcross(part, 0.5, CutStyle::Smooth));
+        // The joint both pieces share: made by the cut, at the same place.
+        JointId shared = kNoJoint;
+        for (const Joint& joint : cut.pieces[0].skeleton.joints())
+            if (!part.skeleton.hasJoint(joint.id) && cut.pieces[1].skeleton.hasJoint(joint.id))
+                shared = joint.id;
+        ASSERT_NE(shared, kNoJoint);
+        MergeRequest request;
+        request.join.mode = MergeMode::Snap;
+        request.join.draggedJoint = shared;
+        request.join.targetJoint = shared;
+        const MergeResult merged = mergeParts(cut.pieces[0], cut.pieces[1], request);
+        EXPECT_TRUE(merged.part.validateSolid().empty());
+        EXPECT_TRUE(analyseMesh(merged.part.mesh, false).isWatertightGenus0());
+        EXPECT_EQ(merged.draggedTranslation, Vec3::Zero());
+    }
+}
+
+}  // namespace
+}  // namespace rigmesh
