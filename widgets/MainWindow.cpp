@@ -195,6 +195,29 @@ void MainWindow::createActions() {
         if (auto* v = currentView())
             v->viewport()->setDualQuaternionSkinning(on);
     });
+    // Skin weight views (issue 14 item 1), like Blender's weight paint display.
+    auto* weights = viewMenu_->addMenu(tr("&Weights"));
+    weightViewGroup_ = new QActionGroup(this);
+    const std::pair<QString, WeightView> views[] = {
+        {tr("&Off"), WeightView::Off},
+        {tr("&Selected Bone (select its joint)"), WeightView::SelectedBone},
+        {tr("&Dominant Bone"), WeightView::DominantBone},
+        {tr("&Influence Count"), WeightView::Influences}};
+    for (const auto& [text, view] : views) {
+        QAction* action = weights->addAction(text);
+        action->setCheckable(true);
+        action->setChecked(view == WeightView::Off);
+        action->setData(static_cast<int>(view));
+        weightViewGroup_->addAction(action);
+        connect(action, &QAction::triggered, this, [this, view = view] {
+            if (auto* v = currentView())
+                v->viewport()->setWeightView(view);
+            if (view == WeightView::SelectedBone)
+                showStatus(tr("Weights of the selected joint's bone: blue 0, green 0.5, red 1, "
+                              "dark blue none"),
+                           6000);
+        });
+    }
     gridAction_ = viewMenu_->addAction(tr("&Grid"));
     gridAction_->setCheckable(true);
     gridAction_->setChecked(true);
@@ -332,6 +355,8 @@ void MainWindow::currentTabChanged(int) {
         view->viewport()->setWireframe(wireframeAction_->isChecked());
         view->viewport()->setDualQuaternionSkinning(dqsAction_->isChecked());
         view->viewport()->setGridVisible(gridAction_->isChecked());
+        view->viewport()->setWeightView(
+            static_cast<WeightView>(weightViewGroup_->checkedAction()->data().toInt()));
     }
     updateTitle();
 }

@@ -102,6 +102,7 @@ class MainWindow : public QMainWindow {
     QAction* sketchToolAction_ = nullptr;
     QAction* poseToolAction_ = nullptr;
     QAction* mergeToolAction_ = nullptr;
+    QActionGroup* weightViewGroup_ = nullptr;
     QAction* cutToolAction_ = nullptr;
     QAction* wireframeAction_ = nullptr;
     QAction* dqsAction_ = nullptr;

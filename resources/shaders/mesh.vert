@@ -6,6 +6,7 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec4 inBones;
 layout(location = 3) in vec4 inWeights;
+layout(location = 4) in float inInfluences;  // how many bones weigh the vertex
 
 uniform mat4 model;
 uniform mat4 view;
@@ -17,9 +18,42 @@ uniform vec4 boneDual[128];          // translation part
 uniform vec4 boneRows[384];          // 3 rows of each bone's affine matrix
 uniform float outlinePixels;         // > 0: the selection outline pass (see below)
 uniform vec2 viewportPixels;
+uniform int weightView;  // 0 off, 1 selected bone, 2 dominant bone, 3 influences
+uniform int weightBone;  // the selected bone's index, -1 none
 
 out vec3 viewPosition;
 out vec3 viewNormal;
+out vec3 weightColour;
+
+// Blender's weight ramp: blue (0), cyan, green (0.5), yellow, red (1).
+vec3 weightRamp(float w) {
+    vec3 stops[5] = vec3[5](vec3(0.0, 0.0, 1.0), vec3(0.0, 1.0, 1.0), vec3(0.0, 1.0, 0.0),
+                            vec3(1.0, 1.0, 0.0), vec3(1.0, 0.0, 0.0));
+    float x = clamp(w, 0.0, 1.0) * 4.0;
+    int i = min(int(x), 3);
+    return mix(stops[i], stops[i + 1], x - float(i));
+}
+
+// A distinct colour per bone index (golden-angle hues).
+vec3 boneColour(int bone) {
+    float h = fract(float(bone) * 0.618034);
+    vec3 k = clamp(abs(fract(h + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0, 0.0, 1.0);
+    return mix(vec3(0.35), k, 0.75);
+}
+
+vec3 weightViewColour() {
+    if (weightView == 1) {
+        float w = 0.0;
+        for (int k = 0; k < 4; ++k)
+            if (int(inBones[k]) == weightBone) w += inWeights[k];
+        // Zero weight has its own colour, as in Blender's "Show Zero Weights".
+        return w <= 0.0 ? vec3(0.05, 0.05, 0.25) : weightRamp(w);
+    }
+    if (weightView == 2) return boneColour(int(inBones.x));
+    // 1 blue, 2 green, 3 yellow, 4 orange; more than 4 (cut for glTF): magenta.
+    if (inInfluences > 4.5) return vec3(1.0, 0.0, 1.0);
+    return weightRamp((clamp(inInfluences, 1.0, 4.0) - 1.0) / 3.0 * 0.85);
+}
 
 vec3 rotate(vec4 q, vec3 v) { return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v); }
 
@@ -60,6 +94,7 @@ void main() {
             n = sn;
         }
     }
+    weightColour = weightView > 0 ? weightViewColour() : vec3(0.0);
     vec4 world = model * vec4(p, 1.0);
     vec4 eye = view * world;
     viewPosition = eye.xyz;

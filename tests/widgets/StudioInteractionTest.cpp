@@ -447,6 +447,44 @@ TEST_F(Studio, DraggingAHandMovesNoVertexOfTheOtherLimbs) {
     EXPECT_EQ(moved, 0) << "vertices of the other limbs moved (of " << checked << ")";
 }
 
+// Issue 14 item 1: the weight views colour the surface on the GPU. The
+// selected joint's bone shows hot (red) where it leads and cold (blue) or
+// dark (zero) elsewhere; dominant bones show several colours.
+TEST_F(Studio, WeightViewsColourTheSurfaceBySkinWeights) {
+    const model::PartId biped = addExampleBiped();
+    const Skeleton& skeleton = document()->part(biped).part->skeleton;
+    const JointId hand = sidewaysHand(skeleton);
+    document()->setSelection({biped, hand});
+    auto count = [&](auto&& test) {
+        const QImage image = viewport()->grabFramebuffer();
+        int n = 0;
+        for (int y = 0; y < image.height(); y += 2)
+            for (int x = 0; x < image.width(); x += 2)
+                n += test(QColor(image.pixel(x, y))) ? 1 : 0;
+        return n;
+    };
+    auto red = [](const QColor& c) { return c.red() > 150 && c.green() < 90 && c.blue() < 90; };
+    auto blue = [](const QColor& c) { return c.blue() > 120 && c.red() < 60 && c.green() < 90; };
+    // Before the view is on, only the grid's red axis is red.
+    const int redBefore = count(red);
+    const int blueBefore = count(blue);
+    viewport()->setWeightView(widgets::WeightView::SelectedBone);
+    QTest::qWait(50);
+    EXPECT_GT(count(red), redBefore + 50) << "the hand's bone leads its hand";
+    EXPECT_GT(count(blue), blueBefore + 50) << "the rest of the body is cold or zero";
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_weights_bone.png"));
+    viewport()->setWeightView(widgets::WeightView::DominantBone);
+    QTest::qWait(50);
+    std::set<QRgb> colours;
+    const QImage image = viewport()->grabFramebuffer();
+    for (int y = 0; y < image.height(); y += 3)
+        for (int x = 0; x < image.width(); x += 3)
+            colours.insert(image.pixel(x, y) & 0xF0F0F0);
+    EXPECT_GT(colours.size(), 20u);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_weights_dominant.png"));
+    viewport()->setWeightView(widgets::WeightView::Off);
+}
+
 TEST_F(Studio, DraggingAPartMovesItAndCtrlDragTurnsIt) {
     window->activateSketchTool();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);

@@ -12,11 +12,23 @@
 
 namespace rigmesh::widgets {
 
+// How parts are coloured (issue 14 item 1): by their own colour, or by skin
+// weights computed on the GPU from the vertex attributes.
+enum class WeightView {
+    Off,
+    SelectedBone,  // the selected bone's weight, Blender's blue-green-red ramp
+    DominantBone,  // each vertex in its largest bone's colour
+    Influences,    // how many bones weigh the vertex (over 4 flagged)
+};
+
 struct RenderPart {
     std::shared_ptr<const Part> part;
     QMatrix4x4 model;  // the part's placement in the world
     QVector3D colour{0.72f, 0.75f, 0.82f};
     bool selected = false;
+    // The bone whose weights the SelectedBone view shows (its index in
+    // part->skeleton.bones()), -1 for none.
+    int weightBone = -1;
     // Skinning per bone (order of part->skeleton.bones()): unit dual
     // quaternions (x, y, z, w) and 3x4 matrix rows; empty = the rest pose.
     std::vector<QVector4D> boneReal, boneDual, boneRows;
@@ -40,6 +52,7 @@ struct RenderScene {
     bool wireframe = false;
     bool dualQuaternionSkinning = true;
     bool showGrid = true;
+    WeightView weightView = WeightView::Off;
     float gridHeight = 0.0f;  // the ground grid lies in the plane y = gridHeight
     float gridSpacing = 0.1f;
     int gridLines = 20;  // on each side of the origin

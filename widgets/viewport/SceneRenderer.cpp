@@ -85,13 +85,17 @@ SceneRenderer::GpuMesh& SceneRenderer::meshFor(const std::shared_ptr<const Part>
     gpu.part = part;
     const TriMesh& mesh = part->mesh;
     const auto normals = vertexNormals(mesh);
-    // Interleaved: position (3), normal (3), 4 bone indices, 4 weights. The
-    // four largest influences are kept and renormalised for the GPU.
+    // Interleaved: position (3), normal (3), 4 bone indices, 4 weights, the
+    // number of influences. The four largest influences are kept (largest
+    // first) and renormalised for the GPU; the count is of all of them, so
+    // the Influences view can flag vertices over four.
     std::vector<float> data;
-    data.reserve(mesh.vertices.size() * 14);
+    data.reserve(mesh.vertices.size() * 15);
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
         std::array<std::pair<int, double>, 4> top{};
+        std::size_t influenceCount = 0;
         if (v < part->weights.perVertex.size()) {
+            influenceCount = part->weights.perVertex[v].size();
             auto influences = part->weights.perVertex[v];
             std::sort(influences.begin(), influences.end(),
                       [](const auto& a, const auto& b) { return a.second > b.second; });
@@ -109,6 +113,7 @@ SceneRenderer::GpuMesh& SceneRenderer::meshFor(const std::shared_ptr<const Part>
             data.push_back(static_cast<float>(std::min(top[k].first, kMaxBones - 1)));
         for (int k = 0; k < 4; ++k)
             data.push_back(static_cast<float>(top[k].second / sum));
+        data.push_back(static_cast<float>(influenceCount));
     }
     std::vector<GLuint> indices;
     indices.reserve(mesh.faces.size() * 3);
@@ -121,8 +126,8 @@ SceneRenderer::GpuMesh& SceneRenderer::meshFor(const std::shared_ptr<const Part>
     gpu.vertices.create();
     gpu.vertices.bind();
     gpu.vertices.allocate(data.data(), static_cast<int>(data.size() * sizeof(float)));
-    const int stride = 14 * sizeof(float);
-    for (int attribute = 0; attribute < 4; ++attribute)
+    const int stride = 15 * sizeof(float);
+    for (int attribute = 0; attribute < 5; ++attribute)
         glEnableVertexAttribArray(attribute);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
@@ -131,6 +136,8 @@ SceneRenderer::GpuMesh& SceneRenderer::meshFor(const std::shared_ptr<const Part>
                           reinterpret_cast<void*>(6 * sizeof(float)));
     glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride,
                           reinterpret_cast<void*>(10 * sizeof(float)));
+    glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(14 * sizeof(float)));
     gpu.indices.create();
     gpu.indices.bind();
     gpu.indices.allocate(indices.data(), static_cast<int>(indices.size() * sizeof(GLuint)));
@@ -180,11 +187,13 @@ void SceneRenderer::drawParts(const RenderScene& scene, const QMatrix4x4& view,
     meshProgram_.setUniformValue("outlinePixels", 0.0f);
     meshProgram_.setUniformValue("flatColour", 0);
     meshProgram_.setUniformValue("dualQuaternionSkinning", scene.dualQuaternionSkinning ? 1 : 0);
+    meshProgram_.setUniformValue("weightView", static_cast<int>(scene.weightView));
     for (const RenderPart& item : scene.parts) {
         GpuMesh& gpu = meshFor(item.part);
         gpu.usedThisFrame = true;
         const int bones = std::min<int>(static_cast<int>(item.boneReal.size()), kMaxBones);
         meshProgram_.setUniformValue("model", item.model);
+        meshProgram_.setUniformValue("weightBone", item.weightBone);
         meshProgram_.setUniformValue("boneCount", bones);
         if (bones > 0) {
             meshProgram_.setUniformValueArray("boneReal", item.boneReal.data(), bones);

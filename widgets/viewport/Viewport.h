@@ -48,6 +48,8 @@ class Viewport : public QOpenGLWidget {
     void setWireframe(bool on);
     void setDualQuaternionSkinning(bool on);
     void setGridVisible(bool on);
+    void setWeightView(WeightView view);
+    WeightView weightView() const { return weightView_; }
     bool wireframe() const { return wireframe_; }
     bool dualQuaternionSkinning() const { return dualQuaternion_; }
 
@@ -107,6 +109,7 @@ class Viewport : public QOpenGLWidget {
     bool wireframe_ = false;
     bool dualQuaternion_ = true;
     bool gridVisible_ = true;
+    WeightView weightView_ = WeightView::Off;
     bool framedOnce_ = false;
     struct PosedCacheEntry {
         const Part* part = nullptr;
