@@ -473,6 +473,16 @@ TEST_F(Studio, WeightViewsColourTheSurfaceBySkinWeights) {
     EXPECT_GT(count(red), redBefore + 50) << "the hand's bone leads its hand";
     EXPECT_GT(count(blue), blueBefore + 50) << "the rest of the body is cold or zero";
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_weights_bone.png"));
+    // Hovering the hand lists its vertex's weights in the status bar.
+    const Vec3 handAt = skeleton.joint(hand).position;
+    const QVector3D p = viewport()->camera().project(
+        QVector3D(float(handAt.x()), float(handAt.y()), float(handAt.z())),
+        QSizeF(viewport()->size()));
+    test::sendMouse(viewport(), QEvent::MouseMove, QPointF(p.x(), p.y()), Qt::NoButton,
+                    Qt::NoButton);
+    const QString status = window->statusBar()->currentMessage();
+    EXPECT_TRUE(status.startsWith(QStringLiteral("Vertex ")) && status.contains("of biped: bone"))
+        << status.toStdString();
     viewport()->setWeightView(widgets::WeightView::DominantBone);
     QTest::qWait(50);
     std::set<QRgb> colours;

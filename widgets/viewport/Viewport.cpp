@@ -403,8 +403,13 @@ std::optional<BoneHit> Viewport::boneAt(const QPointF& pixel) const {
 }
 
 std::optional<model::PartId> Viewport::partAt(const QPointF& pixel) const {
+    const std::optional<SurfaceHit> hit = surfaceAt(pixel);
+    return hit ? std::optional<model::PartId>(hit->part) : std::nullopt;
+}
+
+std::optional<Viewport::SurfaceHit> Viewport::surfaceAt(const QPointF& pixel) const {
     const Ray ray = camera_.rayThrough(pixel, QSizeF(size()));
-    std::optional<model::PartId> best;
+    std::optional<SurfaceHit> best;
     double nearest = std::numeric_limits<double>::infinity();
     for (const model::PartNode& node : document_->parts()) {
         if (!node.visible || !node.part)
@@ -418,11 +423,44 @@ std::optional<model::PartId> Viewport::partAt(const QPointF& pixel) const {
             double t = rayTriangle(origin, direction, v[f[0]], v[f[1]], v[f[2]]);
             if (t < nearest) {
                 nearest = t;
-                best = node.id;
+                const Vec3 at = origin + t * direction;
+                int corner = 0;
+                for (int c = 1; c < 3; ++c)
+                    if ((v[f[c]] - at).squaredNorm() < (v[f[corner]] - at).squaredNorm())
+                        corner = c;
+                best = SurfaceHit{node.id, f[corner]};
             }
         }
     }
     return best;
+}
+
+QString Viewport::weightsAt(const QPointF& pixel) const {
+    const std::optional<SurfaceHit> hit = surfaceAt(pixel);
+    if (!hit)
+        return {};
+    const model::PartNode& node = document_->part(hit->part);
+    const Part& part = *node.part;
+    if (hit->vertex >= static_cast<int>(part.weights.perVertex.size()))
+        return tr("Vertex %1 of %2: no weights").arg(hit->vertex).arg(node.name);
+    auto weights = part.weights.perVertex[hit->vertex];
+    std::sort(weights.begin(), weights.end(),
+              [](const auto& a, const auto& b) { return a.second > b.second; });
+    QStringList listed;
+    for (const auto& [bone, w] : weights) {
+        const BoneId id = part.skeleton.bones()[bone].id;
+        auto name = part.boneNames.find(id);
+        const QString label =
+            name != part.boneNames.end()
+                ? QString::fromStdString(name->second)
+                : tr("bone %1 (to %2)")
+                      .arg(id)
+                      .arg(model::jointDisplayName(part.skeleton.bones()[bone].tail));
+        listed << QStringLiteral("%1 %2").arg(label).arg(w, 0, 'f', 3);
+    }
+    return tr("Vertex %1 of %2: %3")
+        .arg(hit->vertex)
+        .arg(node.name, listed.join(QStringLiteral(", ")));
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
@@ -445,6 +483,11 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
             camera_.orbit(delta);
         update();
         return;
+    }
+    if (!(event->buttons() & Qt::LeftButton) && weightView_ != WeightView::Off) {
+        const QString weights = weightsAt(event->position());
+        if (!weights.isEmpty())
+            emit statusMessage(weights);
     }
     if (!tool_)
         return;

@@ -72,6 +72,16 @@ class Viewport : public QOpenGLWidget {
     std::optional<BoneHit> boneAt(const QPointF& pixel) const;
     // The visible part under a pixel, if any.
     std::optional<model::PartId> partAt(const QPointF& pixel) const;
+    // The visible surface under a pixel: the part and the nearest corner of
+    // the face hit (rest shape), if any.
+    struct SurfaceHit {
+        model::PartId part = model::kNoPart;
+        int vertex = -1;
+    };
+    std::optional<SurfaceHit> surfaceAt(const QPointF& pixel) const;
+    // "Vertex 12 of arm: bone 3 0.82, bone 2 0.18": the weights under a
+    // pixel, for the status bar while a weight view is on (issue 14 item 2).
+    QString weightsAt(const QPointF& pixel) const;
 
     // World position of a joint of a part in its current placement and pose.
     QVector3D jointWorldPosition(model::PartId part, JointId joint) const;
