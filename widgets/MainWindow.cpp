@@ -202,7 +202,8 @@ void MainWindow::createActions() {
         {tr("&Off"), WeightView::Off},
         {tr("&Selected Bone (select its joint)"), WeightView::SelectedBone},
         {tr("&Dominant Bone"), WeightView::DominantBone},
-        {tr("&Influence Count"), WeightView::Influences}};
+        {tr("&Influence Count"), WeightView::Influences},
+        {tr("Difference from &Global Weights"), WeightView::GlobalDifference}};
     for (const auto& [text, view] : views) {
         QAction* action = weights->addAction(text);
         action->setCheckable(true);

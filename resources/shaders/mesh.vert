@@ -7,6 +7,7 @@ layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec4 inBones;
 layout(location = 3) in vec4 inWeights;
 layout(location = 4) in float inInfluences;  // how many bones weigh the vertex
+layout(location = 5) in float inDifference;  // L1 distance to global weights (view 4)
 
 uniform mat4 model;
 uniform mat4 view;
@@ -18,7 +19,7 @@ uniform vec4 boneDual[128];          // translation part
 uniform vec4 boneRows[384];          // 3 rows of each bone's affine matrix
 uniform float outlinePixels;         // > 0: the selection outline pass (see below)
 uniform vec2 viewportPixels;
-uniform int weightView;  // 0 off, 1 selected bone, 2 dominant bone, 3 influences
+uniform int weightView;  // 0 off, 1 selected bone, 2 dominant bone, 3 influences, 4 difference
 uniform int weightBone;  // the selected bone's index, -1 none
 
 out vec3 viewPosition;
@@ -50,6 +51,8 @@ vec3 weightViewColour() {
         return w <= 0.0 ? vec3(0.05, 0.05, 0.25) : weightRamp(w);
     }
     if (weightView == 2) return boneColour(int(inBones.x));
+    // Blue: as the global computation; red: 0.25 or more apart (of 2 at most).
+    if (weightView == 4) return weightRamp(inDifference / 0.25);
     // 1 blue, 2 green, 3 yellow, 4 orange; more than 4 (cut for glTF): magenta.
     if (inInfluences > 4.5) return vec3(1.0, 0.0, 1.0);
     return weightRamp((clamp(inInfluences, 1.0, 4.0) - 1.0) / 3.0 * 0.85);

@@ -634,6 +634,21 @@ TEST_F(StudioMerge, DraggingALegIntoTheBodyMergesThemInOneUndoStep) {
         << window->statusBar()->currentMessage().toStdString();
     QTest::qWait(50);
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_merged.png"));
+    // The paper's Fig. 9a view: where the local re-skin differs from a
+    // global one (near the seam, warmer than the untouched blue).
+    viewport()->setWeightView(widgets::WeightView::GlobalDifference);
+    QTest::qWait(50);
+    const QImage difference = viewport()->grabFramebuffer();
+    int warm = 0, cold = 0;
+    for (int y = 0; y < difference.height(); y += 2)
+        for (int x = 0; x < difference.width(); x += 2) {
+            const QColor c(difference.pixel(x, y));
+            warm += c.green() > 120 && c.blue() < 200 ? 1 : 0;
+            cold += c.blue() > 120 && c.green() < 60 && c.red() < 60 ? 1 : 0;
+        }
+    EXPECT_GT(cold, warm) << "most of the part is as the global computation";
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_weights_difference.png"));
+    viewport()->setWeightView(widgets::WeightView::Off);
     QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
     EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
 }

@@ -19,6 +19,9 @@ enum class WeightView {
     SelectedBone,  // the selected bone's weight, Blender's blue-green-red ramp
     DominantBone,  // each vertex in its largest bone's colour
     Influences,    // how many bones weigh the vertex (over 4 flagged)
+    // The L1 distance to a fresh global computation (paper Fig. 9a, 15):
+    // where merges and cuts left weights the whole part would not have.
+    GlobalDifference,
 };
 
 struct RenderPart {

@@ -5,6 +5,11 @@
 #include <algorithm>
 #include <array>
 
+#include "base/Error.h"
+#include "merge/MergeParts.h"
+#include "part/BoneWeights.h"
+#include "rig/LocalBoneHeat.h"
+
 // The shaders are compiled into this static library: register them
 // explicitly (Q_INIT_RESOURCE must be called outside any namespace).
 static void registerShaderResources() {
@@ -44,9 +49,34 @@ struct SceneRenderer::GpuMesh {
     QOpenGLVertexArrayObject vao;
     QOpenGLBuffer vertices{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer indices{QOpenGLBuffer::IndexBuffer};
+    // Per vertex: the L1 distance between its weights and a fresh global
+    // computation (the GlobalDifference view), made the first time it is shown.
+    QOpenGLBuffer difference{QOpenGLBuffer::VertexBuffer};
     int indexCount = 0;
     bool usedThisFrame = false;
 };
+
+namespace {
+
+// The paper's Fig. 9a / 15 view: how far each vertex's weights are from
+// what section 2.4 would give on the whole part now.
+std::vector<float> differenceFromGlobal(const Part& part) {
+    std::vector<float> out(part.mesh.vertices.size(), 0.0f);
+    if (part.skeleton.boneCount() == 0)
+        return out;
+    try {
+        const WeightsById global = recomputeWeightsGlobally(part.mesh, part.skeleton);
+        const std::vector<double> d =
+            weightDifferences(weightsById(part.skeleton, part.weights), global);
+        for (std::size_t v = 0; v < d.size() && v < out.size(); ++v)
+            out[v] = static_cast<float>(d[v]);
+    } catch (const Error&) {
+        // No global solution to compare with: the view shows no difference.
+    }
+    return out;
+}
+
+}  // namespace
 
 SceneRenderer::SceneRenderer() = default;
 SceneRenderer::~SceneRenderer() = default;
@@ -191,6 +221,17 @@ void SceneRenderer::drawParts(const RenderScene& scene, const QMatrix4x4& view,
     for (const RenderPart& item : scene.parts) {
         GpuMesh& gpu = meshFor(item.part);
         gpu.usedThisFrame = true;
+        if (scene.weightView == WeightView::GlobalDifference && !gpu.difference.isCreated()) {
+            const std::vector<float> difference = differenceFromGlobal(*item.part);
+            gpu.vao.bind();
+            gpu.difference.create();
+            gpu.difference.bind();
+            gpu.difference.allocate(difference.data(),
+                                    static_cast<int>(difference.size() * sizeof(float)));
+            glEnableVertexAttribArray(5);
+            glVertexAttribPointer(5, 1, GL_FLOAT, GL_FALSE, sizeof(float), nullptr);
+            gpu.vao.release();
+        }
         const int bones = std::min<int>(static_cast<int>(item.boneReal.size()), kMaxBones);
         meshProgram_.setUniformValue("model", item.model);
         meshProgram_.setUniformValue("weightBone", item.weightBone);
