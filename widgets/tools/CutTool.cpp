@@ -14,7 +14,10 @@ namespace {
 
 // A stroke shorter than this on screen is a click.
 constexpr double kMinimumPixels = 20.0;
-constexpr int kSamples = 64;
+// The stroke keeps a point every this many pixels; the crossing test looks
+// at a few points along each of its segments.
+constexpr double kSpacingPixels = 8.0;
+constexpr int kSamplesPerSegment = 4;
 
 }  // namespace
 
@@ -32,28 +35,39 @@ void CutTool::press(Viewport& viewport, QMouseEvent* event) {
 void CutTool::move(Viewport& viewport, QMouseEvent* event) {
     if (pixels_.empty() || !(event->buttons() & Qt::LeftButton))
         return;
-    pixels_.resize(1);
     pixels_.push_back(event->position());
-    // The cut is the straight line from where the drag began.
-    viewport.setStrokeOverlay(
-        {viewport.sketchPlanePoint(pixels_.front()), viewport.sketchPlanePoint(pixels_.back())});
+    std::vector<QVector3D> overlay;
+    for (const QPointF& p : pixels_)
+        overlay.push_back(viewport.sketchPlanePoint(p));
+    viewport.setStrokeOverlay(std::move(overlay));
 }
 
 void CutTool::release(Viewport& viewport, QMouseEvent* event) {
     if (pixels_.empty())
         return;
-    const QPointF a = pixels_.front();
-    const QPointF b = event->position();
+    pixels_.push_back(event->position());
+    // Every few pixels along the drag: the stroke the cut sweeps.
+    std::vector<QPointF> stroke{pixels_.front()};
+    for (const QPointF& p : pixels_)
+        if (QLineF(stroke.back(), p).length() >= kSpacingPixels)
+            stroke.push_back(p);
+    if (stroke.back() != pixels_.back())
+        stroke.push_back(pixels_.back());
     pixels_.clear();
     viewport.setStrokeOverlay({});
+    const QPointF a = stroke.front();
+    const QPointF b = stroke.back();
     if (QLineF(a, b).length() < kMinimumPixels)
         return;  // a click
-    // The part the line crosses most, which neither end may touch (paper
+    // The part the stroke crosses most, which neither end may touch (paper
     // 3.1: the stroke must cross the silhouette completely).
     std::map<model::PartId, int> crossed;
-    for (int i = 1; i < kSamples; ++i)
-        if (auto part = viewport.partAt(a + (b - a) * (static_cast<double>(i) / kSamples)))
-            ++crossed[*part];
+    for (std::size_t i = 0; i + 1 < stroke.size(); ++i)
+        for (int k = 0; k < kSamplesPerSegment; ++k)
+            if (auto part =
+                    viewport.partAt(stroke[i] + (stroke[i + 1] - stroke[i]) *
+                                                    (static_cast<double>(k) / kSamplesPerSegment)))
+                ++crossed[*part];
     if (crossed.empty()) {
         emit viewport.statusMessage(tr("Nothing cut: the line does not cross a part"));
         return;
@@ -72,12 +86,18 @@ void CutTool::release(Viewport& viewport, QMouseEvent* event) {
     Eigen::AlignedBox3d box;
     for (const Vec3& v : node.part->mesh.vertices)
         box.extend(node.placement.rotation * v + node.placement.translation);
+    // The stroke on the view plane through the part's centre, in that
+    // plane's (right, up) coordinates: the recipe's form.
     const QVector3D centre = toQt(box.center());
-    const Vec3 from = toEigen(viewport.viewPlanePoint(a, centre));
-    const Vec3 to = toEigen(viewport.viewPlanePoint(b, centre));
     model::CutSpec spec;
-    spec.point = from;
-    spec.normal = (to - from).cross(toEigen(viewport.camera().forward()));
+    spec.viewDirection = toEigen(viewport.camera().forward()).normalized();
+    const Vec3 up = toEigen(viewport.camera().up());
+    const Vec3 right = spec.viewDirection.cross(up).normalized();
+    spec.viewUp = right.cross(spec.viewDirection);
+    for (const QPointF& pixel : stroke) {
+        const Vec3 p = toEigen(viewport.viewPlanePoint(pixel, centre)) - box.center();
+        spec.viewStroke.emplace_back(p.dot(right), p.dot(spec.viewUp));
+    }
     spec.style = (event->modifiers() & Qt::ShiftModifier) ? CutStyle::Sharp : CutStyle::Smooth;
     try {
         auto command = model::CutPartCommand::create(document, part, spec);

@@ -1,6 +1,7 @@
-// Cut tool (C), paper 3.1: drag a line across a part, from outside it to
-// outside it; on release the part is cut by the plane through that line and
-// the view direction into two rigged parts. The cut face is smooth
+// Cut tool (C), paper 3.1: drag a stroke across a part, from outside it to
+// outside it; on release the part is cut along the surface the stroke
+// sweeps in the view direction (a plane for a straight stroke) into two
+// rigged parts. The cut face is smooth
 // (tangent-continuous); Shift + release makes it flat (a crease). A stroke
 // that does not cross a part completely cuts nothing and says so. One undo
 // step.

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "base/Error.h"
-#include "cut/PlaneSplit.h"
+#include "cut/SurfaceSplit.h"
 #include "geometry/ConstrainedTriangulation.h"
 #include "mesh/Fairing.h"
 #include "mesh/MeshAdjacency.h"
@@ -21,26 +21,23 @@ namespace {
 
 // Fills one hole with a planar patch (paper 3.1: GridMesh-like; here our
 // lattice + CDT, as the sketch patches of 2.2). The loop runs the way the
-// patch must (PlaneSplit.h); returns the new vertices.
-std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const Vec3& normal,
+// patch must (SurfaceSplit.h); returns the new vertices.
+std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const CutSurface& surface,
                           double edgeLength) {
-    const Vec3 u = normal.unitOrthogonal();
-    Vec3 v = normal.cross(u);
     std::vector<Vec2> boundary;
     for (int i : loop)
-        boundary.emplace_back(u.dot(mesh.vertices[i]), v.dot(mesh.vertices[i]));
+        boundary.push_back(surface.toPatch(mesh.vertices[i]));
     double area = 0.0;
     for (std::size_t i = 0; i < boundary.size(); ++i) {
         const Vec2& a = boundary[i];
         const Vec2& b = boundary[(i + 1) % boundary.size()];
         area += a.x() * b.y() - a.y() * b.x();
     }
-    if (area < 0.0) {  // make the loop counter-clockwise in (u, v)
-        v = -v;
-        for (Vec2& p : boundary)
-            p.y() = -p.y();
-    }
-    const double offset = normal.dot(mesh.vertices[loop.front()]);
+    // Counter-clockwise in the patch's frame (mirrored if need be), so the
+    // triangles run as the hole's border does.
+    const double flip = area < 0.0 ? -1.0 : 1.0;
+    for (Vec2& p : boundary)
+        p.y() *= flip;
     const std::vector<Vec2> interior = latticeInside(boundary, edgeLength);
     const PatchTriangulation patch =
         triangulatePatch(boundary, interior, std::vector<bool>(boundary.size(), false));
@@ -54,7 +51,7 @@ std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const Vec
         index[i] = mesh.vertexCount();
         added.push_back(index[i]);
         const Vec2& p = patch.points[i];
-        mesh.vertices.push_back(p.x() * u + p.y() * v + offset * normal);
+        mesh.vertices.push_back(surface.fromPatch(Vec2(p.x(), flip * p.y())));
     }
     for (const auto& t : patch.triangles)
         mesh.faces.push_back({index[t[0]], index[t[1]], index[t[2]]});
@@ -63,16 +60,16 @@ std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const Vec
 
 // The skeleton with every bone that crosses the plane split at the crossing.
 // `tailHalf` maps a split bone to its new half beyond the crossing.
-Skeleton splitCrossingBones(const Skeleton& skeleton, const Vec3& point, const Vec3& normal,
+Skeleton splitCrossingBones(const Skeleton& skeleton, const CutSurface& surface,
                             std::map<BoneId, BoneId>& tailHalf) {
     Skeleton split = skeleton;
     for (const Bone& bone : skeleton.bones()) {
         const Vec3 head = skeleton.joint(bone.head).position;
         const Vec3 tail = skeleton.joint(bone.tail).position;
-        const double a = normal.dot(head - point);
-        const double b = normal.dot(tail - point);
+        const double a = surface.side(head);
+        const double b = surface.side(tail);
         if ((a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0)) {
-            const JointId middle = split.splitBone(bone.id, head + a / (a - b) * (tail - head));
+            const JointId middle = split.splitBone(bone.id, surface.crossing(head, tail));
             for (BoneId id : split.bonesAt(middle))
                 if (id != bone.id)
                     tailHalf[bone.id] = id;
@@ -83,11 +80,11 @@ Skeleton splitCrossingBones(const Skeleton& skeleton, const Vec3& point, const V
 
 // The joints on `side` of the plane and those on it (a split's new joints
 // belong to both pieces).
-Skeleton skeletonOnSide(const Skeleton& split, const Vec3& point, const Vec3& normal, int side,
+Skeleton skeletonOnSide(const Skeleton& split, const CutSurface& surface, int side,
                         double tolerance) {
     Skeleton piece = split;
     for (const Joint& joint : split.joints()) {
-        const double d = normal.dot(joint.position - point);
+        const double d = surface.side(joint.position);
         if (side * d < -tolerance)
             piece.removeJoint(joint.id);
     }
@@ -148,10 +145,16 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
     const auto start = std::chrono::steady_clock::now();
     if (part.skeleton.boneCount() == 0)
         throw Error("Only rigged parts can be cut; rig the imported mesh first.");
-    if (!(request.normal.norm() > 0.0) || !request.normal.allFinite() || !request.point.allFinite())
+    if (request.stroke.empty() && (!(request.normal.norm() > 0.0) || !request.normal.allFinite() ||
+                                   !request.point.allFinite()))
         throw Error("The cut needs a plane: a finite point and a non-zero normal.");
-    const Vec3 normal = request.normal.normalized();
-    std::vector<MeshPiece> pieces = splitByPlane(part.mesh, request.point, normal);
+    for (const Vec3& p : request.stroke)
+        if (!p.allFinite())
+            throw Error("The cut's stroke has a point that is not a finite number.");
+    const CutSurface surface = request.stroke.empty()
+                                   ? CutSurface::plane(request.point, request.normal)
+                                   : CutSurface::swept(request.stroke, request.sweep);
+    std::vector<MeshPiece> pieces = splitBySurface(part.mesh, surface);
     if (pieces.size() < 2)
         throw Error(
             "The cut does not cross the part. Draw it across the part, from one side "
@@ -167,7 +170,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
 
     const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(part.mesh);
     std::map<BoneId, BoneId> tailHalf;
-    const Skeleton split = splitCrossingBones(part.skeleton, request.point, normal, tailHalf);
+    const Skeleton split = splitCrossingBones(part.skeleton, surface, tailHalf);
     const WeightsById weights = weightsById(part.skeleton, part.weights);
 
     CutResult result;
@@ -175,7 +178,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
         MeshPiece& piece = pieces[k];
         Part& out = result.pieces[k];
         out.name = part.name;
-        out.skeleton = skeletonOnSide(split, request.point, normal, piece.side, 1e-9 * edge);
+        out.skeleton = skeletonOnSide(split, surface, piece.side, 1e-9 * edge);
         if (out.skeleton.boneCount() == 0)
             throw Error(
                 "The cut leaves a piece without a bone. Cut across a bone, nearer the "
@@ -190,7 +193,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
         out.mesh = std::move(piece.mesh);
         std::vector<int>& patch = result.patches[k];
         for (const std::vector<int>& hole : piece.holes) {
-            const std::vector<int> added = fillHole(out.mesh, hole, normal, edge);
+            const std::vector<int> added = fillHole(out.mesh, hole, surface, edge);
             patch.insert(patch.end(), added.begin(), added.end());
         }
         if (request.style == CutStyle::Smooth)

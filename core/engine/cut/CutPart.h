@@ -19,8 +19,13 @@ namespace rigmesh {
 enum class CutStyle { Smooth, Sharp };
 
 struct CutRequest {
+    // The plane, used when `stroke` is empty.
     Vec3 point = Vec3::Zero();
     Vec3 normal = Vec3::UnitX();
+    // Or a stroke swept along `sweep` (the view direction): a curved stroke
+    // cuts along the ruled surface it sweeps (CutSurface).
+    std::vector<Vec3> stroke;
+    Vec3 sweep = Vec3::UnitZ();
     CutStyle style = CutStyle::Smooth;
     double edgeLength = 0.0;  // of the patch; 0 = the part's mean edge
 };

@@ -37,7 +37,7 @@ inline Vec3 toVec(const Point& p) {
     return {p.x(), p.y(), p.z()};
 }
 
-inline SurfaceMesh toSurfaceMesh(const TriMesh& mesh, const char* which) {
+inline SurfaceMesh toSurfaceMesh(const TriMesh& mesh, const char* which, bool closed = true) {
     SurfaceMesh surface;
     surface.reserve(mesh.vertexCount(), mesh.faceCount() * 3 / 2, mesh.faceCount());
     for (const Vec3& v : mesh.vertices)
@@ -47,7 +47,7 @@ inline SurfaceMesh toSurfaceMesh(const TriMesh& mesh, const char* which) {
         if (f == SurfaceMesh::null_face())
             throw Error(std::string("The surface of ") + which + " is not a manifold.");
     }
-    if (!CGAL::is_closed(surface))
+    if (closed && !CGAL::is_closed(surface))
         throw Error(std::string("The surface of ") + which +
                     " has a hole, so it does not bound a volume.");
     return surface;

@@ -1,5 +1,6 @@
 #include "model/commands/CutPartCommand.h"
 
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include "base/Error.h"
@@ -20,11 +21,28 @@ CutPartCommand::CutPartCommand(Document& document, PartId part, const CutSpec& s
       original_(document.part(part)) {
     if (!original_.part)
         throw Error("The part has no surface to cut.");
-    // The plane in the part's own frame.
+    // The plane or the swept stroke in the part's own frame.
     CutRequest request;
     const Placement& placement = original_.placement;
-    request.point = placement.rotation.conjugate() * (spec.point - placement.translation);
-    request.normal = placement.rotation.conjugate() * spec.normal;
+    const Eigen::Quaterniond inverse = placement.rotation.conjugate();
+    request.point = inverse * (spec.point - placement.translation);
+    request.normal = inverse * spec.normal;
+    if (!spec.viewStroke.empty()) {
+        const Vec3 direction = spec.viewDirection.normalized();
+        const Vec3 right = direction.cross(spec.viewUp).normalized();
+        const Vec3 up = right.cross(direction);
+        if (!right.allFinite() || !direction.allFinite())
+            throw Error("The cut's view needs a direction and an up that is not along it.");
+        Eigen::AlignedBox3d box;
+        for (const Vec3& v : original_.part->mesh.vertices)
+            box.extend(v);
+        // The view plane through the part's centre.
+        const Vec3 centre = placement.rotation * box.center() + placement.translation;
+        for (const Vec2& p : spec.viewStroke)
+            request.stroke.push_back(inverse *
+                                     (centre + p.x() * right + p.y() * up - placement.translation));
+        request.sweep = inverse * direction;
+    }
     request.style = spec.style;
     request.edgeLength = original_.options.targetEdgeLength;
     CutResult cut = cutPart(*original_.part, request);
@@ -57,13 +75,21 @@ void CutPartCommand::undo() {
 }
 
 nlohmann::json CutPartCommand::recipeStep() const {
-    return {{"command", "cut"},
-            {"part", index_},
-            {"plane",
-             {{"point", {spec_.point.x(), spec_.point.y(), spec_.point.z()}},
-              {"normal", {spec_.normal.x(), spec_.normal.y(), spec_.normal.z()}}}},
-            {"style", spec_.style == CutStyle::Smooth ? "smooth" : "sharp"},
-            {"names", {spec_.names[0].toStdString(), spec_.names[1].toStdString()}}};
+    auto vec3 = [](const Vec3& v) { return nlohmann::json{v.x(), v.y(), v.z()}; };
+    nlohmann::json step = {{"command", "cut"},
+                           {"part", index_},
+                           {"style", spec_.style == CutStyle::Smooth ? "smooth" : "sharp"},
+                           {"names", {spec_.names[0].toStdString(), spec_.names[1].toStdString()}}};
+    if (spec_.viewStroke.empty()) {
+        step["plane"] = {{"point", vec3(spec_.point)}, {"normal", vec3(spec_.normal)}};
+    } else {
+        nlohmann::json stroke = nlohmann::json::array();
+        for (const Vec2& p : spec_.viewStroke)
+            stroke.push_back({p.x(), p.y()});
+        step["stroke"] = std::move(stroke);
+        step["view"] = {{"direction", vec3(spec_.viewDirection)}, {"up", vec3(spec_.viewUp)}};
+    }
+    return step;
 }
 
 }  // namespace rigmesh::model

@@ -9,6 +9,7 @@
 #include <QCoreApplication>
 #include <QUndoCommand>
 #include <memory>
+#include <vector>
 
 #include "cut/CutPart.h"
 #include "model/Document.h"
@@ -19,6 +20,12 @@ namespace rigmesh::model {
 struct CutSpec {
     Vec3 point = Vec3::Zero();  // the plane, in document coordinates
     Vec3 normal = Vec3::UnitX();
+    // Or a stroke drawn in a view: points (right, up) on the view plane
+    // through the part's centre, swept along the view direction (paper 3.1);
+    // used when not empty.
+    std::vector<Vec2> viewStroke;
+    Vec3 viewDirection = -Vec3::UnitZ();
+    Vec3 viewUp = Vec3::UnitY();
     CutStyle style = CutStyle::Smooth;
     QString names[2];  // empty: the part's name, and "<name> 2"
 };

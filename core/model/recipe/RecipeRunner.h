@@ -44,9 +44,9 @@
 //   cut           "part" and either "plane": {"point": [x, y, z], "normal":
 //                 [x, y, z]} in document coordinates, or "stroke": [[x, y],
 //                 ...] with "view": {"direction": [x, y, z], "up": [x, y, z]}
-//                 (the stroke on the view plane through the part's centre; the
-//                 plane holds the line through its ends and the view
-//                 direction); optional "style": "smooth" (default) | "sharp",
+//                 (the stroke on the view plane through the part's centre, cut
+//                 along the surface it sweeps in the view direction: a plane
+//                 for a straight stroke); optional "style": "smooth" (default) | "sharp",
 //                 "names": [behind, in front] (paper 3.1; the piece behind
 //                 the plane keeps the part's id)
 //   split_bone    "part" and "bone" (an id) or "at": [x, y, z] (document

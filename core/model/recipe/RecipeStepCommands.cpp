@@ -229,12 +229,11 @@ StepCommand merge(const Context& c) {
     return {std::move(command), into, detail, std::move(stats)};
 }
 
-// The cut's plane: "plane": {"point", "normal"} in document coordinates, or
+// The cut: "plane": {"point", "normal"} in document coordinates, or
 // "stroke" [[x, y], ...] drawn in "view" {"direction", "up"} on the view
-// plane through the part's centre: the plane holds the line through the
-// stroke's ends and the view direction (paper 3.1; a curved stroke is cut
-// along that line).
-void readCutPlane(const Context& c, const PartNode& node, CutSpec& spec) {
+// plane through the part's centre, swept along the view direction (paper
+// 3.1: a plane for a straight stroke).
+void readCutPlane(const Context& c, CutSpec& spec) {
     if (c.has("plane") == c.has("stroke"))
         throw Error("the step needs either \"plane\" or \"stroke\" with \"view\"");
     if (c.has("plane")) {
@@ -245,34 +244,20 @@ void readCutPlane(const Context& c, const PartNode& node, CutSpec& spec) {
         spec.normal = readVec3(plane["normal"], "\"plane\" \"normal\"");
         return;
     }
-    const std::vector<Vec2> stroke = readPoints(c.step["stroke"]);
+    spec.viewStroke = readPoints(c.step["stroke"]);
     const json& view = c.required("view");
     if (!view.is_object() || !view.contains("direction") || !view.contains("up"))
         throw Error("\"view\" needs \"direction\" and \"up\"");
-    const Vec3 direction = readVec3(view["direction"], "\"view\" \"direction\"").normalized();
-    const Vec3 up = readVec3(view["up"], "\"view\" \"up\"");
-    const Vec3 right = direction.cross(up).normalized();
-    const Vec3 trueUp = right.cross(direction);
-    if (stroke.size() < 2 || !right.allFinite())
-        throw Error(
-            "the cut needs a stroke of two points or more and a view whose up is not "
-            "its direction");
-    Eigen::AlignedBox3d box;
-    for (const Vec3& v : node.part->mesh.vertices)
-        box.extend(node.placement.rotation * v + node.placement.translation);
-    auto onPlane = [&](const Vec2& p) { return box.center() + p.x() * right + p.y() * trueUp; };
-    const Vec3 a = onPlane(stroke.front());
-    const Vec3 b = onPlane(stroke.back());
-    spec.point = a;
-    spec.normal = (b - a).cross(direction);
-    if (!(spec.normal.norm() > 0.0))
-        throw Error("the cut's stroke must not start and end at the same point");
+    spec.viewDirection = readVec3(view["direction"], "\"view\" \"direction\"");
+    spec.viewUp = readVec3(view["up"], "\"view\" \"up\"");
+    if (spec.viewStroke.size() < 2)
+        throw Error("the cut needs a stroke of two points or more");
 }
 
 StepCommand cut(const Context& c) {
     const PartId id = c.part();
     CutSpec spec;
-    readCutPlane(c, c.node(id), spec);
+    readCutPlane(c, spec);
     const std::string style = c.has("style") ? readText(c.step["style"], "\"style\"") : "smooth";
     if (style != "smooth" && style != "sharp")
         throw Error("\"style\" must be \"smooth\" or \"sharp\"");

@@ -171,3 +171,61 @@ TEST(CutThenMerge, TheTwoPiecesOfACutMergeBackIntoOneValidPart) {
 
 }  // namespace
 }  // namespace rigmesh
+
+#include "cut/CutSurface.h"
+
+namespace rigmesh {
+namespace {
+
+// Paper 3.1: a curved stroke cuts along the surface it sweeps in the view
+// direction. A "<" across each part, swept along z: two valid pieces whose
+// flat patch lies on that bent surface, not on a plane.
+TEST(CurvedCut, ABentStrokeCutsAlongTheSurfaceItSweeps) {
+    for (const std::string sketch : {"tube", "banana", "camel_body"}) {
+        SCOPED_TRACE(sketch);
+        const Part& part = testsupport::sharedSketchPart(sketch);
+        const Eigen::AlignedBox3d box = boxOf(part.mesh);
+        const bool wide = box.sizes().x() >= box.sizes().y();
+        // Across the shorter side, bending by a quarter of the part's width.
+        const double across = wide ? box.sizes().y() : box.sizes().x();
+        auto at = [&](double along, double side) {
+            const Vec3 c = box.center();
+            return wide ? Vec3(c.x() + along, c.y() + side, 0.0)
+                        : Vec3(c.x() + side, c.y() + along, 0.0);
+        };
+        CutRequest request;
+        request.style = CutStyle::Sharp;
+        request.sweep = Vec3::UnitZ();
+        const double bend = 0.25 * across;
+        for (int i = 0; i <= 8; ++i) {
+            const double s = -0.75 * across + 1.5 * across * i / 8.0;
+            request.stroke.push_back(at(bend * (1.0 - std::abs(s) / (0.75 * across)), s));
+        }
+        const CutResult cut = cutPart(part, request);
+        const CutSurface surface = CutSurface::swept(request.stroke, request.sweep);
+        const Vec3 chordNormal =
+            (request.stroke.back() - request.stroke.front()).cross(Vec3::UnitZ()).normalized();
+        double offChord = 0.0;
+        for (int k = 0; k < 2; ++k) {
+            const Part& piece = cut.pieces[k];
+            const MeshReport report = analyseMesh(piece.mesh, true);
+            EXPECT_TRUE(report.isWatertightGenus0());
+            EXPECT_EQ(report.selfIntersectingFacePairs, 0);
+            EXPECT_TRUE(piece.validateSolid().empty());
+            for (int v : cut.patches[k]) {
+                EXPECT_LT(std::abs(surface.side(piece.mesh.vertices[v])), 1e-6 * across);
+                offChord = std::max(offChord, std::abs(chordNormal.dot(piece.mesh.vertices[v] -
+                                                                       request.stroke.front())));
+            }
+        }
+        EXPECT_GT(offChord, 0.1 * bend) << "the patch follows the bent stroke";
+        const double whole = analyseMesh(part.mesh, false).volume;
+        EXPECT_NEAR((analyseMesh(cut.pieces[0].mesh, false).volume +
+                     analyseMesh(cut.pieces[1].mesh, false).volume) /
+                        whole,
+                    1.0, 1e-6);
+    }
+}
+
+}  // namespace
+}  // namespace rigmesh

@@ -1,4 +1,4 @@
-#include "cut/PlaneSplit.h"
+#include "cut/SurfaceSplit.h"
 
 #include <CGAL/Polygon_mesh_processing/clip.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -22,10 +22,10 @@ namespace {
 // triangle.
 class EdgeCrossings {
   public:
-    EdgeCrossings(const TriMesh& mesh, const Vec3& point, const Vec3& normal) {
+    EdgeCrossings(const TriMesh& mesh, const CutSurface& surface) {
         std::vector<double> side(mesh.vertices.size());
         for (std::size_t v = 0; v < side.size(); ++v)
-            side[v] = normal.dot(mesh.vertices[v] - point);
+            side[v] = surface.side(mesh.vertices[v]);
         for (int f = 0; f < mesh.faceCount(); ++f) {
             const auto& face = mesh.faces[f];
             for (int c = 0; c < 3; ++c) {
@@ -69,17 +69,25 @@ class EdgeCrossings {
 
 }  // namespace
 
-std::vector<MeshPiece> splitByPlane(const TriMesh& mesh, const Vec3& point, const Vec3& normal) {
+std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut) {
     SurfaceMesh surface = toSurfaceMesh(mesh, "the part");
-    const Vec3 n = normal.normalized();
-    PMP::split(surface, Kernel::Plane_3(n.x(), n.y(), n.z(), -n.dot(point)));
+    if (cut.isPlane()) {
+        const Vec3& n = cut.planeNormal();
+        PMP::split(surface, Kernel::Plane_3(n.x(), n.y(), n.z(), -n.dot(cut.planePoint())));
+    } else {
+        Eigen::AlignedBox3d box;
+        for (const Vec3& v : mesh.vertices)
+            box.extend(v);
+        SurfaceMesh splitter = toSurfaceMesh(cut.strip(box), "the cut", false);
+        PMP::split(surface, splitter);
+    }
     std::vector<SurfaceMesh> components;
     PMP::split_connected_components(surface, components);
 
     std::unordered_map<PointKey, int, PointKeyHash> inputVertex;
     for (int v = mesh.vertexCount() - 1; v >= 0; --v)
         inputVertex[keyOf(mesh.vertices[v])] = v;
-    const EdgeCrossings crossings(mesh, point, n);
+    const EdgeCrossings crossings(mesh, cut);
 
     std::vector<MeshPiece> pieces;
     for (const SurfaceMesh& component : components) {
@@ -99,7 +107,7 @@ std::vector<MeshPiece> splitByPlane(const TriMesh& mesh, const Vec3& point, cons
             } else {
                 piece.sources.push_back(SourceTriangles({&mesh}).sourceOf(p));
             }
-            const double d = n.dot(p - point);
+            const double d = cut.side(p);
             if (std::abs(d) > std::abs(farthest))
                 farthest = d;
         }
