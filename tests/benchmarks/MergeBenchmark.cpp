@@ -161,6 +161,20 @@ void deleteBone(benchmark::State& state) {
     state.counters["reskinned"] = static_cast<double>(result.reskinned.size());
 }
 
+// A bent stroke across the body (a ruled cut surface, paper 3.1).
+void cutCamelCurved(benchmark::State& state) {
+    CutRequest request;
+    request.sweep = Vec3::UnitZ();
+    for (int i = 0; i <= 8; ++i) {
+        const double y = -2.0 + 0.5 * i;
+        request.stroke.push_back(Vec3(0.2 + 0.4 * (1.0 - std::abs(y) / 2.0), y, 0.0));
+    }
+    for (auto _ : state)
+        benchmark::DoNotOptimize(cutPart(mergedCamel(), request));
+    state.counters["vertices"] = mergedCamel().mesh.vertexCount();
+}
+
+BENCHMARK(cutCamelCurved)->Name("Edit/camel/cut_curved_smooth")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(cutCamel, smooth, CutStyle::Smooth)
     ->Name("Edit/camel/cut_smooth")
     ->Unit(benchmark::kMillisecond);
