@@ -1,5 +1,7 @@
 #include "model/SceneItemModel.h"
 
+#include "part/BoneWeights.h"
+
 #include <algorithm>
 
 #include "model/commands/RenamePartCommand.h"
@@ -105,8 +107,17 @@ QVariant SceneItemModel::displayData(const SceneNode& node, int column) const {
                                          .arg(p.x(), 0, 'f', 3)
                                          .arg(p.y(), 0, 'f', 3)
                                          .arg(p.z(), 0, 'f', 3);
-            return part->pinnedJoints.contains(node.jointId()) ? tr("%1 (pinned)").arg(position)
-                                                               : position;
+            QString text = position;
+            // The bone ending at the joint and how many vertices it leads
+            // (issue 14 item 2).
+            for (int b = 0; b < skeleton->boneCount(); ++b)
+                if (skeleton->bones()[b].tail == node.jointId()) {
+                    const std::vector<int> leads =
+                        leadingVertexCounts(part->part->weights, skeleton->boneCount());
+                    text += tr(", bone %1: %n vertices", nullptr, leads[b])
+                                .arg(skeleton->bones()[b].id);
+                }
+            return part->pinnedJoints.contains(node.jointId()) ? tr("%1 (pinned)").arg(text) : text;
         }
     }
     return {};

@@ -17,6 +17,23 @@ Kind kindOf(const QModelIndex& index) {
     return static_cast<Kind>(index.data(SceneItemModel::KindRole).toInt());
 }
 
+// Issue 14 item 2: each joint row says how many vertices the bone ending at
+// it leads; over all bones they are every vertex.
+TEST(SceneItemModel, JointRowsShowTheVertexCountOfTheirBone) {
+    Document document;
+    const PartId id = addPart(document, testStrokes()[3], QStringLiteral("Y"));
+    SceneItemModel model(&document);
+    const Part& part = *document.part(id).part;
+    int total = 0;
+    for (const Bone& bone : part.skeleton.bones()) {
+        const QString info = model.indexOfJoint(id, bone.tail).siblingAtColumn(1).data().toString();
+        const QString marker = QStringLiteral("bone %1: ").arg(bone.id);
+        ASSERT_TRUE(info.contains(marker)) << info.toStdString();
+        total += info.section(marker, 1).section(QLatin1Char(' '), 0, 0).toInt();
+    }
+    EXPECT_EQ(total, part.mesh.vertexCount());
+}
+
 TEST(SceneItemModel, PartsSkeletonAndJointHierarchy) {
     Document document;
     const PartId id = addPart(document, testStrokes()[3], QStringLiteral("Y"));

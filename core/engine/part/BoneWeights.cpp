@@ -49,6 +49,20 @@ ClosestBones closestByIndex(const Skeleton& skeleton, const ClosestBonesById& cl
     return result;
 }
 
+std::vector<int> leadingVertexCounts(const SkinWeights& weights, int boneCount) {
+    std::vector<int> counts(std::max(boneCount, 0), 0);
+    for (const auto& list : weights.perVertex) {
+        if (list.empty())
+            continue;
+        const int bone = std::max_element(list.begin(), list.end(), [](auto& a, auto& b) {
+                             return a.second < b.second;
+                         })->first;
+        if (bone >= 0 && bone < boneCount)
+            ++counts[bone];
+    }
+    return counts;
+}
+
 void normaliseWeights(std::vector<std::pair<BoneId, double>>& weights) {
     std::map<BoneId, double> merged;
     for (const auto& [bone, w] : weights)

@@ -24,6 +24,10 @@ ClosestBonesById closestById(const Skeleton& skeleton, const ClosestBones& close
 // Entries for bones the skeleton no longer has are dropped.
 ClosestBones closestByIndex(const Skeleton& skeleton, const ClosestBonesById& closest);
 
+// Per bone (position in skeleton.bones()): how many vertices have it as
+// their largest weight (paper 3.2's "most influential" bones).
+std::vector<int> leadingVertexCounts(const SkinWeights& weights, int boneCount);
+
 // Sorts by bone, merges repeated bones, drops non-positive weights and
 // rescales to sum 1; an empty list stays empty.
 void normaliseWeights(std::vector<std::pair<BoneId, double>>& weights);
