@@ -11,21 +11,22 @@
 #include <string>
 #include <string_view>
 
+#include "base/JsonRead.h"
 #include "model/BoundedCbor.h"
 #include "model/ClipModes.h"
 #include "model/DocumentNodeJson.h"
 #include "model/PartBuilder.h"
+#include "part/PartJson.h"
 
 namespace rigmesh::model {
 
 namespace {
 
 using nlohmann::json;
+using namespace jsonread;
 
 // A document nests about 7 levels; anything deeper is not ours.
 constexpr int kMaxNesting = 32;
-// Skin weights of a vertex sum to 1 up to rounding (and float imports).
-constexpr double kWeightSumTolerance = 1e-6;
 // Placement rotations are unit quaternions up to rounding.
 constexpr double kUnitTolerance = 1e-6;
 
@@ -42,249 +43,6 @@ QString tr(const char* text) {
 
 [[noreturn]] void corrupt(const std::string& detail) {
     fail(tr("The document is corrupt: %1.").arg(QString::fromStdString(detail)));
-}
-
-// ---- Reading: every access checked, every failure a DocumentFileError ----
-
-const json& field(const json& object, const char* key) {
-    if (!object.is_object())
-        corrupt("expected a map holding \"" + std::string(key) + "\"");
-    const auto it = object.find(key);
-    if (it == object.end())
-        corrupt("missing \"" + std::string(key) + "\"");
-    return *it;
-}
-
-const json& array(const json& object, const char* key) {
-    const json& value = field(object, key);
-    if (!value.is_array())
-        corrupt("\"" + std::string(key) + "\" is not a list");
-    return value;
-}
-
-// Any number, finite or not: for readers that name the part in their own
-// finiteness message.
-double rawNumber(const json& value, const char* what) {
-    if (!value.is_number())
-        corrupt(std::string(what) + " is not a number");
-    return value.get<double>();
-}
-
-// Every number in a document is finite: NaN or infinity anywhere is damage.
-double number(const json& value, const char* what) {
-    const double out = rawNumber(value, what);
-    if (!std::isfinite(out))
-        corrupt(std::string(what) + " holds a value that is not finite");
-    return out;
-}
-
-template <typename Int>
-Int integer(const json& value, const char* what) {
-    if (!value.is_number_integer())
-        corrupt(std::string(what) + " is not an integer");
-    if (value.is_number_unsigned()) {
-        const auto v = value.get<std::uint64_t>();
-        if (v > static_cast<std::uint64_t>(std::numeric_limits<Int>::max()))
-            corrupt(std::string(what) + " is out of range");
-        return static_cast<Int>(v);
-    }
-    const auto v = value.get<std::int64_t>();
-    if (v < static_cast<std::int64_t>(std::numeric_limits<Int>::min()) ||
-        (v > 0 && static_cast<std::uint64_t>(v) >
-                      static_cast<std::uint64_t>(std::numeric_limits<Int>::max())))
-        corrupt(std::string(what) + " is out of range");
-    return static_cast<Int>(v);
-}
-
-bool boolean(const json& value, const char* what) {
-    if (!value.is_boolean())
-        corrupt(std::string(what) + " is not true or false");
-    return value.get<bool>();
-}
-
-std::string text(const json& value, const char* what) {
-    if (!value.is_string())
-        corrupt(std::string(what) + " is not text");
-    return value.get<std::string>();
-}
-
-std::vector<double> numbers(const json& list, std::size_t multiple, const char* what,
-                            double (*read)(const json&, const char*) = &number) {
-    if (!list.is_array() || list.size() % multiple != 0)
-        corrupt(std::string(what) + " has the wrong length");
-    std::vector<double> out;
-    out.reserve(list.size());
-    for (const json& v : list)
-        out.push_back(read(v, what));
-    return out;
-}
-
-std::vector<Vec2> readVec2s(const json& list, const char* what) {
-    const std::vector<double> flat = numbers(list, 2, what);
-    std::vector<Vec2> out;
-    for (std::size_t i = 0; i < flat.size(); i += 2)
-        out.emplace_back(flat[i], flat[i + 1]);
-    return out;
-}
-
-enum class PairValues { Weights, Distances };
-
-std::vector<std::vector<std::pair<int, double>>> readPairs(const json& list, std::size_t count,
-                                                           int indexLimit, PairValues values,
-                                                           const char* what) {
-    if (!list.is_array() || (list.size() != count && !list.empty()))
-        corrupt(std::string(what) + " does not have one entry per vertex");
-    std::vector<std::vector<std::pair<int, double>>> out;
-    out.reserve(list.size());
-    for (const json& flat : list) {
-        if (!flat.is_array() || flat.size() % 2 != 0)
-            corrupt(std::string(what) + " has a malformed entry");
-        auto& entry = out.emplace_back();
-        for (std::size_t i = 0; i < flat.size(); i += 2) {
-            const int index = integer<int>(flat[i], what);
-            if (index < 0 || index >= indexLimit)
-                corrupt(std::string(what) + " refers to a missing bone");
-            const double value = number(flat[i + 1], what);
-            if (value < 0)
-                corrupt(std::string(what) + " holds a negative value");
-            entry.emplace_back(index, value);
-        }
-        if (values == PairValues::Weights && !entry.empty()) {
-            double sum = 0;
-            for (const auto& pair : entry)
-                sum += pair.second;
-            if (std::abs(sum - 1.0) > kWeightSumTolerance)
-                corrupt(std::string(what) + " of vertex " + std::to_string(out.size() - 1) +
-                        " sum to " + std::to_string(sum) + " instead of 1");
-        }
-    }
-    return out;
-}
-
-Skeleton readSkeleton(const json& object) {
-    const json& joints = field(object, "joints");
-    const json& jointIds = array(joints, "ids");
-    const std::vector<double> positions = numbers(array(joints, "positions"), 3, "joint positions");
-    if (positions.size() != 3 * jointIds.size())
-        corrupt("joint ids and positions differ in number");
-    std::vector<Joint> jointList;
-    std::set<JointId> known;
-    for (std::size_t i = 0; i < jointIds.size(); ++i) {
-        const auto id = integer<JointId>(jointIds[i], "joint id");
-        if (id == kNoJoint || !known.insert(id).second)
-            corrupt("duplicate or invalid joint id");
-        jointList.push_back(
-            {id, Vec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2])});
-    }
-    const json& bones = field(object, "bones");
-    const json& boneIds = array(bones, "ids");
-    const json& heads = array(bones, "heads");
-    const json& tails = array(bones, "tails");
-    if (heads.size() != boneIds.size() || tails.size() != boneIds.size())
-        corrupt("bone ids, heads and tails differ in number");
-    std::vector<Bone> boneList;
-    std::set<BoneId> knownBones;
-    for (std::size_t i = 0; i < boneIds.size(); ++i) {
-        const Bone bone{integer<BoneId>(boneIds[i], "bone id"),
-                        integer<JointId>(heads[i], "bone head"),
-                        integer<JointId>(tails[i], "bone tail")};
-        if (!knownBones.insert(bone.id).second)
-            corrupt("duplicate bone id");
-        if (!known.contains(bone.head) || !known.contains(bone.tail))
-            corrupt("a bone refers to a missing joint");
-        boneList.push_back(bone);
-    }
-    const auto root = integer<JointId>(field(object, "root"), "skeleton root");
-    if (root != kNoJoint ? !known.contains(root) : !known.empty())
-        corrupt("the skeleton root is not one of its joints");
-    Skeleton skeleton = Skeleton::restore(std::move(jointList), std::move(boneList), root);
-    if (skeleton.jointCount() > 0)
-        if (const std::vector<std::string> problems = skeleton.validate(); !problems.empty())
-            corrupt("the skeleton is not a tree: " + problems.front());
-    return skeleton;
-}
-
-std::shared_ptr<const Part> readPart(const json& object) {
-    auto part = std::make_shared<Part>();
-    part->name = text(field(object, "name"), "part name");
-    part->outline = readVec2s(field(object, "outline"), "outline");
-
-    const json& mesh = field(object, "mesh");
-    const std::vector<double> vertices = numbers(array(mesh, "vertices"), 3, "mesh vertices");
-    for (std::size_t i = 0; i < vertices.size(); i += 3)
-        part->mesh.vertices.emplace_back(vertices[i], vertices[i + 1], vertices[i + 2]);
-    const int vertexCount = part->mesh.vertexCount();
-    const json& faces = array(mesh, "faces");
-    if (faces.size() % 3 != 0)
-        corrupt("mesh faces have the wrong length");
-    for (std::size_t i = 0; i < faces.size(); i += 3) {
-        std::array<int, 3> face{};
-        for (int k = 0; k < 3; ++k) {
-            face[k] = integer<int>(faces[i + k], "face index");
-            if (face[k] < 0 || face[k] >= vertexCount)
-                corrupt("a face refers to a missing vertex");
-        }
-        part->mesh.faces.push_back(face);
-    }
-
-    const json& origins = field(object, "origins");
-    const json& kind = array(origins, "kind");
-    const json& region = array(origins, "region");
-    const json& section = array(origins, "section");
-    const json& axis = array(origins, "axisPosition");
-    const json& outline = array(origins, "onOutline");
-    const std::size_t originCount = kind.size();
-    if (region.size() != originCount || section.size() != originCount ||
-        axis.size() != originCount || outline.size() != originCount ||
-        (originCount != 0 && originCount != vertices.size() / 3))
-        corrupt("vertex origins do not have one entry per vertex");
-    for (std::size_t i = 0; i < originCount; ++i) {
-        const int k = integer<int>(kind[i], "origin kind");
-        if (k != static_cast<int>(RegionKind::Cylindrical) &&
-            k != static_cast<int>(RegionKind::Connecting))
-            corrupt("unknown vertex origin kind");
-        part->origins.push_back(
-            {static_cast<RegionKind>(k), integer<int>(region[i], "origin region"),
-             integer<int>(section[i], "origin section"), number(axis[i], "origin axis position"),
-             boolean(outline[i], "origin on outline")});
-    }
-
-    const json& mirror = array(object, "mirror");
-    if (!mirror.empty() && static_cast<int>(mirror.size()) != vertexCount)
-        corrupt("the mirror map does not have one entry per vertex");
-    for (const json& m : mirror) {
-        const int index = integer<int>(m, "mirror index");
-        if (index < 0 || index >= vertexCount)
-            corrupt("the mirror map refers to a missing vertex");
-        part->mirror.push_back(index);
-    }
-
-    part->skeleton = readSkeleton(field(object, "skeleton"));
-    const int boneCount = part->skeleton.boneCount();
-    const json& weights = field(object, "weights");
-    if (boneCount > 0 && static_cast<int>(array(weights, "perVertex").size()) != vertexCount)
-        corrupt("a rigged part needs skin weights for every vertex");
-    part->weights.perVertex = readPairs(array(weights, "perVertex"), vertexCount, boneCount,
-                                        PairValues::Weights, "skin weights");
-    for (const json& b : array(weights, "failedBones")) {
-        const int bone = integer<int>(b, "failed bone");
-        if (bone < 0 || bone >= boneCount)
-            corrupt("failed bones refer to a missing bone");
-        part->weights.failedBones.push_back(bone);
-    }
-    part->weights.warning = text(field(weights, "warning"), "weights warning");
-    part->knownClosestBones = readPairs(array(object, "knownClosestBones"), vertexCount, boneCount,
-                                        PairValues::Distances, "known closest bones");
-    if (object.contains("boneNames"))  // since issue 18
-        for (const json& entry : array(object, "boneNames")) {
-            if (!entry.is_array() || entry.size() != 2)
-                corrupt("a bone name is not [bone id, name]");
-            const auto bone = integer<BoneId>(entry[0], "named bone");
-            if (!part->skeleton.hasBone(bone) || part->boneNames.contains(bone))
-                corrupt("a bone name refers to a missing bone, or twice to one");
-            part->boneNames[bone] = text(entry[1], "bone name");
-        }
-    return part;
 }
 
 std::string partLabel(const PartNode& node) {
@@ -411,7 +169,7 @@ PartNode readNode(const json& object) {
     }
     if (!object.contains("part"))
         corrupt("a part has no geometry");
-    node.part = readPart(object.at("part"));
+    node.part = std::make_shared<const Part>(partFromJson(object.at("part")));
     node.pose = readPose(node, object);
     node.pinnedJoints = readPinned(node, object);
     node.clip = readClip(node, object);

@@ -1,0 +1,264 @@
+#include "part/PartJson.h"
+
+#include <array>
+#include <cmath>
+#include <set>
+
+#include "base/JsonRead.h"
+#include "base/JsonWrite.h"
+
+namespace rigmesh {
+
+using nlohmann::json;
+using namespace jsonread;
+
+namespace {
+
+// Skin weights of a vertex sum to 1 up to rounding (and float imports).
+constexpr double kWeightSumTolerance = 1e-6;
+
+json pairs(const std::vector<std::vector<std::pair<int, double>>>& lists) {
+    json out = json::array();
+    for (const auto& list : lists) {
+        json flat = json::array();
+        for (const auto& [index, value] : list) {
+            flat.push_back(index);
+            flat.push_back(value);
+        }
+        out.push_back(std::move(flat));
+    }
+    return out;
+}
+
+// boneNames: [[bone id, name], ...] in bone id order.
+json boneNamesJson(const std::map<BoneId, std::string>& names) {
+    json out = json::array();
+    for (const auto& [bone, name] : names)
+        out.push_back(json::array({bone, name}));
+    return out;
+}
+
+}  // namespace
+
+json partToJson(const Part& part) {
+    json mesh;
+    mesh["vertices"] = json::array();
+    for (const Vec3& v : part.mesh.vertices)
+        for (int k = 0; k < 3; ++k)
+            mesh["vertices"].push_back(v[k]);
+    mesh["faces"] = json::array();
+    for (const auto& f : part.mesh.faces)
+        for (int k = 0; k < 3; ++k)
+            mesh["faces"].push_back(f[k]);
+
+    json origins = {{"kind", json::array()},
+                    {"region", json::array()},
+                    {"section", json::array()},
+                    {"axisPosition", json::array()},
+                    {"onOutline", json::array()}};
+    for (const VertexOrigin& o : part.origins) {
+        origins["kind"].push_back(static_cast<int>(o.kind));
+        origins["region"].push_back(o.region);
+        origins["section"].push_back(o.section);
+        origins["axisPosition"].push_back(o.axisPosition);
+        origins["onOutline"].push_back(o.onOutline);
+    }
+
+    json joints = {{"ids", json::array()}, {"positions", json::array()}};
+    for (const Joint& j : part.skeleton.joints()) {
+        joints["ids"].push_back(j.id);
+        for (int k = 0; k < 3; ++k)
+            joints["positions"].push_back(j.position[k]);
+    }
+    json bones = {{"ids", json::array()}, {"heads", json::array()}, {"tails", json::array()}};
+    for (const Bone& b : part.skeleton.bones()) {
+        bones["ids"].push_back(b.id);
+        bones["heads"].push_back(b.head);
+        bones["tails"].push_back(b.tail);
+    }
+
+    return {
+        {"name", part.name},
+        {"outline", jsonwrite::flatVec2s(part.outline)},
+        {"mesh", std::move(mesh)},
+        {"origins", std::move(origins)},
+        {"mirror", part.mirror},
+        {"skeleton",
+         {{"joints", std::move(joints)},
+          {"bones", std::move(bones)},
+          {"root", part.skeleton.root()}}},
+        {"weights",
+         {{"perVertex", pairs(part.weights.perVertex)},
+          {"failedBones", part.weights.failedBones},
+          {"warning", part.weights.warning}}},
+        {"knownClosestBones", pairs(part.knownClosestBones)},
+        {"boneNames", boneNamesJson(part.boneNames)},
+    };
+}
+
+namespace {
+
+enum class PairValues { Weights, Distances };
+
+std::vector<std::vector<std::pair<int, double>>> readPairs(const json& list, std::size_t count,
+                                                           int indexLimit, PairValues values,
+                                                           const char* what) {
+    if (!list.is_array() || (list.size() != count && !list.empty()))
+        fail(std::string(what) + " does not have one entry per vertex");
+    std::vector<std::vector<std::pair<int, double>>> out;
+    out.reserve(list.size());
+    for (const json& flat : list) {
+        if (!flat.is_array() || flat.size() % 2 != 0)
+            fail(std::string(what) + " has a malformed entry");
+        auto& entry = out.emplace_back();
+        for (std::size_t i = 0; i < flat.size(); i += 2) {
+            const int index = integer<int>(flat[i], what);
+            if (index < 0 || index >= indexLimit)
+                fail(std::string(what) + " refers to a missing bone");
+            const double value = number(flat[i + 1], what);
+            if (value < 0)
+                fail(std::string(what) + " holds a negative value");
+            entry.emplace_back(index, value);
+        }
+        if (values == PairValues::Weights && !entry.empty()) {
+            double sum = 0;
+            for (const auto& pair : entry)
+                sum += pair.second;
+            if (std::abs(sum - 1.0) > kWeightSumTolerance)
+                fail(std::string(what) + " of vertex " + std::to_string(out.size() - 1) +
+                     " sum to " + std::to_string(sum) + " instead of 1");
+        }
+    }
+    return out;
+}
+
+Skeleton readSkeleton(const json& object) {
+    const json& joints = field(object, "joints");
+    const json& jointIds = array(joints, "ids");
+    const std::vector<double> positions = numbers(array(joints, "positions"), 3, "joint positions");
+    if (positions.size() != 3 * jointIds.size())
+        fail("joint ids and positions differ in number");
+    std::vector<Joint> jointList;
+    std::set<JointId> known;
+    for (std::size_t i = 0; i < jointIds.size(); ++i) {
+        const auto id = integer<JointId>(jointIds[i], "joint id");
+        if (id == kNoJoint || !known.insert(id).second)
+            fail("duplicate or invalid joint id");
+        jointList.push_back(
+            {id, Vec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2])});
+    }
+    const json& bones = field(object, "bones");
+    const json& boneIds = array(bones, "ids");
+    const json& heads = array(bones, "heads");
+    const json& tails = array(bones, "tails");
+    if (heads.size() != boneIds.size() || tails.size() != boneIds.size())
+        fail("bone ids, heads and tails differ in number");
+    std::vector<Bone> boneList;
+    std::set<BoneId> knownBones;
+    for (std::size_t i = 0; i < boneIds.size(); ++i) {
+        const Bone bone{integer<BoneId>(boneIds[i], "bone id"),
+                        integer<JointId>(heads[i], "bone head"),
+                        integer<JointId>(tails[i], "bone tail")};
+        if (!knownBones.insert(bone.id).second)
+            fail("duplicate bone id");
+        if (!known.contains(bone.head) || !known.contains(bone.tail))
+            fail("a bone refers to a missing joint");
+        boneList.push_back(bone);
+    }
+    const auto root = integer<JointId>(field(object, "root"), "skeleton root");
+    if (root != kNoJoint ? !known.contains(root) : !known.empty())
+        fail("the skeleton root is not one of its joints");
+    Skeleton skeleton = Skeleton::restore(std::move(jointList), std::move(boneList), root);
+    if (skeleton.jointCount() > 0)
+        if (const std::vector<std::string> problems = skeleton.validate(); !problems.empty())
+            fail("the skeleton is not a tree: " + problems.front());
+    return skeleton;
+}
+
+}  // namespace
+
+Part partFromJson(const json& object) {
+    Part stored;
+    Part* part = &stored;
+    part->name = text(field(object, "name"), "part name");
+    part->outline = readVec2s(field(object, "outline"), "outline");
+
+    const json& mesh = field(object, "mesh");
+    const std::vector<double> vertices = numbers(array(mesh, "vertices"), 3, "mesh vertices");
+    for (std::size_t i = 0; i < vertices.size(); i += 3)
+        part->mesh.vertices.emplace_back(vertices[i], vertices[i + 1], vertices[i + 2]);
+    const int vertexCount = part->mesh.vertexCount();
+    const json& faces = array(mesh, "faces");
+    if (faces.size() % 3 != 0)
+        fail("mesh faces have the wrong length");
+    for (std::size_t i = 0; i < faces.size(); i += 3) {
+        std::array<int, 3> face{};
+        for (int k = 0; k < 3; ++k) {
+            face[k] = integer<int>(faces[i + k], "face index");
+            if (face[k] < 0 || face[k] >= vertexCount)
+                fail("a face refers to a missing vertex");
+        }
+        part->mesh.faces.push_back(face);
+    }
+
+    const json& origins = field(object, "origins");
+    const json& kind = array(origins, "kind");
+    const json& region = array(origins, "region");
+    const json& section = array(origins, "section");
+    const json& axis = array(origins, "axisPosition");
+    const json& outline = array(origins, "onOutline");
+    const std::size_t originCount = kind.size();
+    if (region.size() != originCount || section.size() != originCount ||
+        axis.size() != originCount || outline.size() != originCount ||
+        (originCount != 0 && originCount != vertices.size() / 3))
+        fail("vertex origins do not have one entry per vertex");
+    for (std::size_t i = 0; i < originCount; ++i) {
+        const int k = integer<int>(kind[i], "origin kind");
+        if (k != static_cast<int>(RegionKind::Cylindrical) &&
+            k != static_cast<int>(RegionKind::Connecting))
+            fail("unknown vertex origin kind");
+        part->origins.push_back(
+            {static_cast<RegionKind>(k), integer<int>(region[i], "origin region"),
+             integer<int>(section[i], "origin section"), number(axis[i], "origin axis position"),
+             boolean(outline[i], "origin on outline")});
+    }
+
+    const json& mirror = array(object, "mirror");
+    if (!mirror.empty() && static_cast<int>(mirror.size()) != vertexCount)
+        fail("the mirror map does not have one entry per vertex");
+    for (const json& m : mirror) {
+        const int index = integer<int>(m, "mirror index");
+        if (index < 0 || index >= vertexCount)
+            fail("the mirror map refers to a missing vertex");
+        part->mirror.push_back(index);
+    }
+
+    part->skeleton = readSkeleton(field(object, "skeleton"));
+    const int boneCount = part->skeleton.boneCount();
+    const json& weights = field(object, "weights");
+    if (boneCount > 0 && static_cast<int>(array(weights, "perVertex").size()) != vertexCount)
+        fail("a rigged part needs skin weights for every vertex");
+    part->weights.perVertex = readPairs(array(weights, "perVertex"), vertexCount, boneCount,
+                                        PairValues::Weights, "skin weights");
+    for (const json& b : array(weights, "failedBones")) {
+        const int bone = integer<int>(b, "failed bone");
+        if (bone < 0 || bone >= boneCount)
+            fail("failed bones refer to a missing bone");
+        part->weights.failedBones.push_back(bone);
+    }
+    part->weights.warning = text(field(weights, "warning"), "weights warning");
+    part->knownClosestBones = readPairs(array(object, "knownClosestBones"), vertexCount, boneCount,
+                                        PairValues::Distances, "known closest bones");
+    if (object.contains("boneNames"))  // since issue 18
+        for (const json& entry : array(object, "boneNames")) {
+            if (!entry.is_array() || entry.size() != 2)
+                fail("a bone name is not [bone id, name]");
+            const auto bone = integer<BoneId>(entry[0], "named bone");
+            if (!part->skeleton.hasBone(bone) || part->boneNames.contains(bone))
+                fail("a bone name refers to a missing bone, or twice to one");
+            part->boneNames[bone] = text(entry[1], "bone name");
+        }
+    return stored;
+}
+
+}  // namespace rigmesh
