@@ -1,0 +1,138 @@
+#include "part/WeightPaint.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "base/Error.h"
+#include "mesh/MeshAdjacency.h"
+
+namespace rigmesh {
+
+namespace {
+
+// Weights below this are dropped after a dab (far below the 1e-6 a sum may
+// be off by).
+constexpr double kDropBelow = 1e-9;
+
+double weightOf(const std::vector<std::pair<int, double>>& list, int bone) {
+    for (const auto& [b, w] : list)
+        if (b == bone)
+            return w;
+    return 0.0;
+}
+
+// Sets `bone` to `target` in `list`, the other unlocked bones scaled to take
+// up the difference. False if that cannot be done (only locked bones left).
+bool setWeight(std::vector<std::pair<int, double>>& list, int bone, double target,
+               const std::vector<char>& lockedIndex) {
+    double lockedSum = 0.0, freeSum = 0.0;
+    for (const auto& [b, w] : list) {
+        if (b == bone)
+            continue;
+        (lockedIndex[b] ? lockedSum : freeSum) += w;
+    }
+    target = std::clamp(target, 0.0, 1.0 - lockedSum);
+    const double freeTarget = 1.0 - lockedSum - target;
+    if (freeSum <= 0.0 && (freeTarget > kDropBelow || target == weightOf(list, bone)))
+        return false;  // nothing unlocked to hand the rest to, or to take it from
+    std::map<int, double> out;
+    for (const auto& [b, w] : list)
+        if (b != bone)
+            out[b] = lockedIndex[b] ? w : (freeSum > 0.0 ? w * freeTarget / freeSum : 0.0);
+    out[bone] = target;
+    // Locked weights are kept bit for bit; by construction the weights sum
+    // to 1 up to rounding.
+    list.clear();
+    for (const auto& [b, w] : out)
+        if (w > kDropBelow)
+            list.emplace_back(b, w);
+    return true;
+}
+
+}  // namespace
+
+DabResult paintWeights(Part& part, const WeightDab& dab) {
+    const Skeleton& skeleton = part.skeleton;
+    if (!skeleton.hasBone(dab.bone))
+        throw Error("The part has no bone " + std::to_string(dab.bone) + " to paint.");
+    if (dab.locked.contains(dab.bone))
+        throw Error("Bone " + std::to_string(dab.bone) + " is locked; unlock it to paint it.");
+    if (!(dab.radius > 0.0) || !std::isfinite(dab.radius) || !(dab.strength >= 0.0) ||
+        !(dab.strength <= 1.0) || !(dab.value >= 0.0) || !(dab.value <= 1.0) ||
+        !dab.centre.allFinite())
+        throw Error(
+            "A brush needs a finite centre, a positive radius, and a strength and value "
+            "between 0 and 1.");
+    if (dab.mirror && part.mirror.size() != part.mesh.vertices.size())
+        throw Error(
+            "This part is not mirror symmetric any more (merged or cut), so X-mirror "
+            "cannot paint it.");
+    const int bone = skeleton.indexOfBone(dab.bone);
+    std::vector<char> lockedIndex(skeleton.boneCount(), 0);
+    for (BoneId id : dab.locked)
+        if (skeleton.hasBone(id))
+            lockedIndex[skeleton.indexOfBone(id)] = 1;
+
+    // The vertices under the brush (and their reflections) with their falloff.
+    std::map<int, double> influence;
+    auto gather = [&](const Vec3& centre) {
+        for (int v = 0; v < part.mesh.vertexCount(); ++v) {
+            const double d = (part.mesh.vertices[v] - centre).norm() / dab.radius;
+            if (d < 1.0) {
+                const double f = dab.strength * (1.0 - d * d) * (1.0 - d * d);
+                double& slot = influence[v];
+                slot = std::max(slot, f);
+            }
+        }
+    };
+    gather(dab.centre);
+    if (dab.mirror)
+        gather(Vec3(dab.centre.x(), dab.centre.y(), -dab.centre.z()));
+
+    std::vector<std::vector<int>> neighbours;
+    if (dab.mode == BrushMode::Smooth)
+        neighbours = vertexNeighbours(part.mesh);
+    auto& weights = part.weights.perVertex;
+    const std::vector<std::vector<std::pair<int, double>>> old = weights;
+    DabResult result;
+    for (const auto& [v, f] : influence) {
+        const double w = weightOf(old[v], bone);
+        double target = w;
+        switch (dab.mode) {
+            case BrushMode::Add:
+                target = w + f * (1.0 - w);
+                break;
+            case BrushMode::Subtract:
+                target = w * (1.0 - f);
+                break;
+            case BrushMode::Replace:
+                target = w + f * (dab.value - w);
+                break;
+            case BrushMode::Smooth: {
+                double mean = 0.0;
+                for (int n : neighbours[v])
+                    mean += weightOf(old[n], bone);
+                mean /= std::max<std::size_t>(neighbours[v].size(), 1);
+                target = w + f * (mean - w);
+                break;
+            }
+        }
+        if (target == w)
+            continue;
+        std::vector<std::pair<int, double>> updated = old[v];
+        if (!setWeight(updated, bone, target, lockedIndex)) {
+            ++result.skippedLocked;
+            continue;
+        }
+        if (updated == old[v])
+            continue;
+        result.changed.push_back(v);
+        result.before.push_back(old[v]);
+        result.after.push_back(updated);
+        weights[v] = std::move(updated);
+    }
+    return result;
+}
+
+}  // namespace rigmesh
