@@ -54,6 +54,12 @@
 //                 point of it nearest to "at" (default: its middle) (3.3)
 //   delete_bone   "part" and "bone" or "at": the bone's joints merge at its
 //                 middle (3.3)
+//   paint_weights "part", "bone" (id), "center": [x, y, z] (document
+//                 coordinates), "radius"; optional "mode": "add" (default) |
+//                 "subtract" | "replace" | "smooth", "strength" (0..1, default
+//                 0.5), "value" (replace: the weight painted towards, default
+//                 1), "mirror" (X-mirror through the sketch plane), "locked":
+//                 [bone ids] (issue 14)
 //   clip_settings "part", optional "frameRate", "interpolation" ("linear" |
 //                 "smooth"), "playback" ("hold" | "loop")
 //

@@ -18,6 +18,7 @@
 #include "model/commands/MergePartsCommand.h"
 #include "model/commands/MoveKeyCommand.h"
 #include "model/commands/MovePartCommand.h"
+#include "model/commands/PaintWeightsCommand.h"
 #include "model/commands/RebuildPartCommand.h"
 #include "model/commands/RenamePartCommand.h"
 #include "model/commands/ResetPoseCommand.h"
@@ -312,12 +313,51 @@ StepCommand boneEdit(const Context& c, bool split) {
     return {std::move(command), id, detail, std::move(stats)};
 }
 
+StepCommand paintWeightsStep(const Context& c) {
+    const PartId id = c.part();
+    const PartNode& node = c.node(id);
+    WeightDab dab;
+    dab.bone = readJointId(c.required("bone"), "\"bone\"");
+    if (!node.part || !node.part->skeleton.hasBone(dab.bone))
+        throw Error(partLabel(node) + " has no bone " + std::to_string(dab.bone));
+    const std::string mode = c.has("mode") ? readText(c.step["mode"], "\"mode\"") : "add";
+    const std::map<std::string, BrushMode> modes{{"add", BrushMode::Add},
+                                                 {"subtract", BrushMode::Subtract},
+                                                 {"replace", BrushMode::Replace},
+                                                 {"smooth", BrushMode::Smooth}};
+    if (!modes.contains(mode))
+        throw Error("\"mode\" must be \"add\", \"subtract\", \"replace\" or \"smooth\"");
+    dab.mode = modes.at(mode);
+    dab.centre = readVec3(c.required("center"), "\"center\"");
+    dab.radius = c.number("radius");
+    dab.strength = c.has("strength") ? c.number("strength") : 0.5;
+    if (c.has("value"))
+        dab.value = c.number("value");
+    dab.mirror = c.has("mirror") && readBool(c.step["mirror"], "\"mirror\"");
+    if (c.has("locked")) {
+        if (!c.step["locked"].is_array())
+            throw Error("\"locked\" must be a list of bone ids");
+        for (const json& bone : c.step["locked"])
+            dab.locked.insert(readJointId(bone, "\"locked\""));
+    }
+    auto command = PaintWeightsCommand::create(c.document, id, dab);
+    std::ostringstream detail;
+    detail << command->changedVertices() << " vertices changed";
+    if (command->skippedVertices() > 0)
+        detail << ", " << command->skippedVertices()
+               << " left as they were (no unlocked bone to take up the difference)";
+    return {std::move(command), id, detail.str()};
+}
+
 const std::map<std::string, StepKind>& stepKinds() {
     static const std::map<std::string, StepKind> kinds = {
         {"sketch", {{"stroke", "points", "name", "placement", "options"}, sketch}},
         {"import", {{"file"}, importFile}},
         {"merge", {{"part", "into", "mode", "joint", "target", "reskin"}, merge}},
         {"cut", {{"part", "plane", "stroke", "view", "style", "names"}, cut}},
+        {"paint_weights",
+         {{"part", "bone", "mode", "center", "radius", "strength", "value", "mirror", "locked"},
+          paintWeightsStep}},
         {"split_bone",
          {{"part", "bone", "at"}, [](const Context& c) { return boneEdit(c, true); }}},
         {"delete_bone",
