@@ -13,7 +13,8 @@ TEST(PaintWeightsCommand, ADabIsOneUndoStepSavedAndReplayed) {
     runSteps(document, {{{"command", "sketch"},
                          {"points", pointsOf(sharedStroke("biped"))},
                          {"name", "biped"},
-                         {"placement", {{"translation", {2.0, 0.0, 0.0}}}}}});
+                         {"placement", {{"translation", {2.0, 0.0, 0.0}}}}},
+                        {{"command", "key"}, {"part", "biped"}, {"time", 0.5}}});
     const QByteArray before = bytesOf(document);
     const Part& part = *document.parts()[0].part;
     const BoneId bone = part.skeleton.bones().front().id;
@@ -31,6 +32,7 @@ TEST(PaintWeightsCommand, ADabIsOneUndoStepSavedAndReplayed) {
     const QByteArray painted = bytesOf(document);
     EXPECT_NE(painted, before);
     EXPECT_TRUE(document.parts()[0].part->validate().empty());
+    EXPECT_EQ(document.parts()[0].clip.keyCount(), 1) << "painting keeps the keys";
     // Saved and read back exactly.
     EXPECT_EQ(DocumentFile::toBytes(DocumentFile::fromBytes(painted)), painted);
     document.undoStack()->undo();

@@ -48,12 +48,16 @@ PaintWeightsCommand::PaintWeightsCommand(Document& document, PartId part, const 
     setText(tr("Paint Weights of %1").arg(document.part(part).name));
 }
 
+// Only the weights change: the skeleton, and with it the pose, pins and
+// keys, stay as they are.
 void PaintWeightsCommand::redo() {
-    document_.replacePart(id_, after_, document_.part(id_).options);
+    const PartNode& node = document_.part(id_);
+    document_.replacePart(id_, after_, node.options, node.pose, node.pinnedJoints, node.clip);
 }
 
 void PaintWeightsCommand::undo() {
-    document_.replacePart(id_, before_, document_.part(id_).options);
+    const PartNode& node = document_.part(id_);
+    document_.replacePart(id_, before_, node.options, node.pose, node.pinnedJoints, node.clip);
 }
 
 nlohmann::json PaintWeightsCommand::recipeStep() const {
