@@ -35,6 +35,7 @@
 #include "panels/PropertiesPanel.h"
 #include "tools/CutTool.h"
 #include "tools/MergeTool.h"
+#include "tools/PaintTool.h"
 #include "tools/PoseTool.h"
 #include "tools/SelectTool.h"
 #include "tools/SketchTool.h"
@@ -70,6 +71,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
       poseTool_(new PoseTool(this)),
       mergeTool_(new MergeTool(this)),
       cutTool_(new CutTool(this)),
+      paintTool_(new PaintTool(this)),
       recoveryDirectory_(recoveryDirectory.isEmpty() ? QStandardPaths::writableLocation(
                                                            QStandardPaths::AppLocalDataLocation) +
                                                            QStringLiteral("/recovery")
@@ -247,6 +249,9 @@ void MainWindow::createActions() {
     cutToolAction_ =
         add(tools, tr("&Cut Part"), QKeySequence(Qt::Key_C), &MainWindow::activateCutTool);
     cutToolAction_->setIcon(QIcon(QStringLiteral(":/icons/cut.svg")));
+    paintToolAction_ =
+        add(tools, tr("Paint &Weights"), QKeySequence(Qt::Key_W), &MainWindow::activatePaintTool);
+    paintToolAction_->setIcon(QIcon(QStringLiteral(":/icons/paint.svg")));
     tools->addSeparator();
     add(tools, tr("&Reset Pose"), QKeySequence(Qt::ALT | Qt::Key_R), &MainWindow::resetPose);
     for (const auto& [action, tool] : toolPairs()) {
@@ -259,6 +264,7 @@ void MainWindow::createActions() {
     toolbar->addAction(poseToolAction_);
     toolbar->addAction(mergeToolAction_);
     toolbar->addAction(cutToolAction_);
+    toolbar->addAction(paintToolAction_);
     sketchToolAction_->setChecked(true);
 
     auto* help = menuBar()->addMenu(tr("&Help"));
@@ -513,6 +519,14 @@ void MainWindow::activateCutTool() {
     activateTool(cutToolAction_, cutTool_);
 }
 
+void MainWindow::activatePaintTool() {
+    activateTool(paintToolAction_, paintTool_);
+    // Painting shows what it paints: the selected bone's weights.
+    for (QAction* action : weightViewGroup_->actions())
+        if (static_cast<WeightView>(action->data().toInt()) == WeightView::SelectedBone)
+            action->trigger();
+}
+
 ViewportTool* MainWindow::activeTool() const {
     for (const auto& [action, tool] : toolPairs())
         if (action->isChecked())
@@ -521,11 +535,9 @@ ViewportTool* MainWindow::activeTool() const {
 }
 
 std::vector<std::pair<QAction*, ViewportTool*>> MainWindow::toolPairs() const {
-    return {{selectToolAction_, selectTool_},
-            {sketchToolAction_, sketchTool_},
-            {poseToolAction_, poseTool_},
-            {mergeToolAction_, mergeTool_},
-            {cutToolAction_, cutTool_}};
+    return {{selectToolAction_, selectTool_}, {sketchToolAction_, sketchTool_},
+            {poseToolAction_, poseTool_},     {mergeToolAction_, mergeTool_},
+            {cutToolAction_, cutTool_},       {paintToolAction_, paintTool_}};
 }
 
 void MainWindow::resetPose() {

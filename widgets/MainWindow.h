@@ -32,6 +32,7 @@ class DocumentView;
 class OutlinerPanel;
 class PropertiesPanel;
 class CutTool;
+class PaintTool;
 class MergeTool;
 class PoseTool;
 class SelectTool;
@@ -69,6 +70,7 @@ class MainWindow : public QMainWindow {
     void activatePoseTool();
     void activateMergeTool();
     void activateCutTool();
+    void activatePaintTool();
     void resetPose();
     void deleteSelection();
 
@@ -104,6 +106,7 @@ class MainWindow : public QMainWindow {
     QAction* mergeToolAction_ = nullptr;
     QActionGroup* weightViewGroup_ = nullptr;
     QAction* cutToolAction_ = nullptr;
+    QAction* paintToolAction_ = nullptr;
     QAction* wireframeAction_ = nullptr;
     QAction* dqsAction_ = nullptr;
     QAction* gridAction_ = nullptr;
@@ -112,6 +115,7 @@ class MainWindow : public QMainWindow {
     PoseTool* poseTool_;
     MergeTool* mergeTool_;
     CutTool* cutTool_;
+    PaintTool* paintTool_;
     QString recoveryDirectory_;
     int untitledCount_ = 0;  // new documents are "Untitled 1", "Untitled 2", ...
     std::map<DocumentView*, model::Autosave*> autosaves_;

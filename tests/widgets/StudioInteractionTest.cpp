@@ -495,6 +495,61 @@ TEST_F(Studio, WeightViewsColourTheSurfaceBySkinWeights) {
     viewport()->setWeightView(widgets::WeightView::Off);
 }
 
+// Issue 14 item 3: a brush stroke over the hand paints the selected bone's
+// weights there only, keeps every sum at 1, is one undo step, and Esc in
+// the middle of a stroke puts the weights back.
+TEST_F(Studio, PaintingTheHandChangesItsWeightsInOneUndoStep) {
+    const model::PartId biped = addExampleBiped();
+    const Part& rest = *document()->part(biped).part;
+    const JointId hand = sidewaysHand(rest.skeleton);
+    // The bone ending at the shoulder: paint it onto the hand.
+    JointId shoulder = kNoJoint;
+    for (const Bone& bone : rest.skeleton.bones())
+        if (bone.tail == hand)
+            shoulder = bone.head;
+    ASSERT_NE(shoulder, kNoJoint);
+    document()->setSelection({biped, shoulder});
+    window->activatePaintTool();
+    QTest::qWait(50);
+    const QByteArray before = model::DocumentFile::toBytes(*document());
+    const int steps = document()->undoStack()->count();
+    const Vec3 h = rest.skeleton.joint(hand).position;
+    const QVector3D p = viewport()->camera().project(QVector3D(float(h.x()), float(h.y()), 0.2f),
+                                                     QSizeF(viewport()->size()));
+    // From the hand towards the body, on the arm.
+    const double inward = h.x() < 0.0 ? 1.0 : -1.0;
+    std::vector<QPointF> stroke;
+    for (int i = 0; i <= 12; ++i)
+        stroke.emplace_back(p.x() + inward * 5 * i, p.y());
+    ASSERT_TRUE(viewport()->surfaceAt(stroke.front()).has_value());
+    drag(viewport(), stroke);
+    EXPECT_EQ(document()->undoStack()->count(), steps + 1)
+        << "a stroke is one undo step: " << window->statusBar()->currentMessage().toStdString();
+    const Part& painted = *document()->part(biped).part;
+    EXPECT_TRUE(painted.validate().empty());
+    EXPECT_NE(painted.weights.perVertex, rest.weights.perVertex);
+    // Far from the hand (the other side of the body) nothing changed.
+    for (int v = 0; v < painted.mesh.vertexCount(); ++v)
+        if (painted.mesh.vertices[v].x() * h.x() < 0.0) {
+            ASSERT_EQ(painted.weights.perVertex[v], rest.weights.perVertex[v]) << v;
+        }
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_paint.png"));
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
+    // Esc in the middle of a stroke puts the weights back.
+    viewport()->setFocus(Qt::MouseFocusReason);
+    test::sendMouse(viewport(), QEvent::MouseButtonPress, stroke.front(), Qt::LeftButton,
+                    Qt::LeftButton);
+    for (const QPointF& point : stroke)
+        test::sendMouse(viewport(), QEvent::MouseMove, point, Qt::NoButton, Qt::LeftButton);
+    QTest::keyClick(viewport(), Qt::Key_Escape);
+    test::sendMouse(viewport(), QEvent::MouseButtonRelease, stroke.back(), Qt::LeftButton,
+                    Qt::NoButton);
+    EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
+    EXPECT_EQ(document()->undoStack()->count(), steps + 1);  // the undone stroke, redoable
+}
+
 TEST_F(Studio, DraggingAPartMovesItAndCtrlDragTurnsIt) {
     window->activateSketchTool();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);

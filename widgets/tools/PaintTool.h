@@ -1,0 +1,59 @@
+// Weight paint tool (W), issue 14 item 3, in the manner of Blender's weight
+// paint mode: drag over a part to paint the weight of the selected joint's
+// bone (the one the Selected Bone weight view shows, which the tool turns
+// on). Tool Options: Add, Subtract, Replace or Smooth, the radius in screen
+// pixels (its circle drawn at the cursor), strength, the Replace weight and
+// X-mirror. Every dab auto-normalises; a stroke is one undo step (a macro of
+// its dabs, each a PaintWeightsCommand the recipe replays). Esc puts the
+// weights back.
+#pragma once
+
+#include <QObject>
+#include <QPointF>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "model/Document.h"
+#include "part/WeightPaint.h"
+#include "viewport/ViewportTool.h"
+
+namespace rigmesh::widgets {
+
+class PaintTool : public QObject, public ViewportTool {
+    Q_OBJECT
+  public:
+    using QObject::QObject;
+    QString name() const override { return tr("Paint Weights"); }
+    QString hint() const override;
+    void press(Viewport& viewport, QMouseEvent* event) override;
+    void move(Viewport& viewport, QMouseEvent* event) override;
+    void release(Viewport& viewport, QMouseEvent* event) override;
+    void cancel(Viewport& viewport) override;
+    void hover(Viewport& viewport, QMouseEvent* event) override;
+    void addOverlay(const Viewport& viewport, ColouredVertices& lines) const override;
+    QWidget* optionsWidget() override;
+
+    // The brush (options), for tests and the options widget.
+    BrushMode mode = BrushMode::Add;
+    double radiusPixels = 40.0;
+    double strength = 0.5;
+    double value = 1.0;
+    bool mirror = false;
+
+  private:
+    // A dab where the cursor is, if it is over the stroke's part.
+    void dab(Viewport& viewport, const QPointF& pixel);
+
+    QWidget* options_ = nullptr;
+    std::optional<model::PartId> part_;
+    BoneId bone_ = 0;
+    std::shared_ptr<const Part> before_;  // the part as the stroke found it
+    std::shared_ptr<Part> working_;       // with the stroke's dabs so far
+    std::vector<WeightDab> dabs_;         // centres in document coordinates
+    QPointF lastDab_;
+    QPointF cursor_;
+    bool cursorInView_ = false;
+};
+
+}  // namespace rigmesh::widgets
