@@ -20,16 +20,9 @@ namespace {
 std::optional<BoneId> selectedBone(const model::Document& document) {
     const model::Selection selection = document.selection();
     const model::PartNode* node = document.findPart(selection.part);
-    if (!node || !node->part || selection.joint == kNoJoint)
+    if (!node || !node->part)
         return std::nullopt;
-    const Skeleton& skeleton = node->part->skeleton;
-    for (const Bone& bone : skeleton.bones())
-        if (bone.tail == selection.joint)
-            return bone.id;
-    const std::vector<BoneId> children = skeleton.childrenOf(selection.joint);
-    if (children.empty())
-        return std::nullopt;
-    return children.front();
+    return boneForJoint(node->part->skeleton, selection.joint);
 }
 
 }  // namespace

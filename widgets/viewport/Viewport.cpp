@@ -24,19 +24,6 @@
 namespace rigmesh::widgets {
 namespace {
 
-// The bone a selected joint stands for in the weight view: the bone ending
-// at it (the one a pose of the joint's parent turns), or, at the root, its
-// first child bone. Its index in skeleton.bones(), -1 if none.
-int weightBoneOf(const Skeleton& skeleton, JointId joint) {
-    if (!skeleton.hasJoint(joint))
-        return -1;
-    for (int b = 0; b < skeleton.boneCount(); ++b)
-        if (skeleton.bones()[b].tail == joint)
-            return b;
-    const std::vector<BoneId> children = skeleton.childrenOf(joint);
-    return children.empty() ? -1 : skeleton.indexOfBone(children.front());
-}
-
 QMatrix4x4 placementMatrix(const model::Placement& placement) {
     Eigen::Affine3d affine = Eigen::Translation3d(placement.translation) * placement.rotation;
     QMatrix4x4 m;
@@ -288,7 +275,8 @@ RenderScene Viewport::gatherScene() const {
         item.colour = partColour(node.id);
         item.selected = node.id == selection.part;
         if (item.selected && selection.joint != kNoJoint)
-            item.weightBone = weightBoneOf(node.part->skeleton, selection.joint);
+            if (const auto bone = boneForJoint(node.part->skeleton, selection.joint))
+                item.weightBone = node.part->skeleton.indexOfBone(*bone);
         const PosedSkeleton& posed = posedSkeleton(node);
         setSkinning(item, posed);
         scene.parts.push_back(std::move(item));

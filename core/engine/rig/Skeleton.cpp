@@ -444,4 +444,16 @@ JointId chooseCentralRoot(const Skeleton& s) {
     return s.joints()[best].id;
 }
 
+std::optional<BoneId> boneForJoint(const Skeleton& skeleton, JointId joint) {
+    if (!skeleton.hasJoint(joint))
+        return std::nullopt;
+    for (const Bone& bone : skeleton.bones())
+        if (bone.tail == joint)
+            return bone.id;
+    const std::vector<BoneId> children = skeleton.childrenOf(joint);
+    if (children.empty())
+        return std::nullopt;
+    return children.front();
+}
+
 }  // namespace rigmesh

@@ -119,6 +119,11 @@ class Skeleton {
     BoneId nextBoneId_ = 0;
 };
 
+// The bone a joint stands for when a tool or view needs one (the weight
+// views, the paint tool): the bone ending at it, or, at the root, its first
+// child bone; none for an unknown joint or a lone root.
+std::optional<BoneId> boneForJoint(const Skeleton& skeleton, JointId joint);
+
 // The graph centre by bone lengths: the joint minimising the longest path to
 // any other joint. Ties prefer joints of degree >= 3, then the earlier joint.
 // On a disconnected skeleton, the centre of the component with the most

@@ -51,12 +51,12 @@ PaintWeightsCommand::PaintWeightsCommand(Document& document, PartId part, const 
 // Only the weights change: the skeleton, and with it the pose, pins and
 // keys, stay as they are.
 void PaintWeightsCommand::redo() {
-    const PartNode& node = document_.part(id_);
+    const PartNode node = document_.part(id_);  // a copy: replacePart changes the node
     document_.replacePart(id_, after_, node.options, node.pose, node.pinnedJoints, node.clip);
 }
 
 void PaintWeightsCommand::undo() {
-    const PartNode& node = document_.part(id_);
+    const PartNode node = document_.part(id_);
     document_.replacePart(id_, before_, node.options, node.pose, node.pinnedJoints, node.clip);
 }
 
