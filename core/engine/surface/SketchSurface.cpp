@@ -162,8 +162,15 @@ class HalfSurfaceBuilder {
     // 2.2): theta = 0 at the left end point, pi at the right one.
     std::vector<int> addRing(const CrossSection& section, const VertexOrigin& origin) {
         const double radius = section.radius();
-        const int segments = std::max(2, static_cast<int>(std::lround(std::numbers::pi * radius /
-                                                                      options_.targetEdgeLength)));
+        const double spacing = section.spacing > 0
+                                   ? std::min(section.spacing, options_.targetEdgeLength)
+                                   : options_.targetEdgeLength;
+        // Cap slices shrink towards the tip; below six segments the last
+        // rings make a pyramid of the tip (a crease of 45 degrees or more).
+        constexpr int kMinimumCapSegments = 6;
+        const int minimum = section.inCap ? kMinimumCapSegments : 2;
+        const int segments =
+            std::max(minimum, static_cast<int>(std::lround(std::numbers::pi * radius / spacing)));
         const Vec2 centre = section.centre();
         const Vec2 direction =
             radius > 0 ? Vec2((section.right - section.left) / (2 * radius)) : Vec2(1, 0);
