@@ -47,12 +47,13 @@ TEST_P(SharedSketchSurface, CreasesAndSilhouetteNoWorseThanMeasured) {
                 GetParam().c_str(), result.part.mesh.vertexCount(), angles.p50, angles.p99,
                 angles.max, iou);
     // Guards just past today's worst (measured 2026-11-24, after resolution
-    // follows thickness: p99 26.3 and max 56.5 on biped, at a junction seam;
-    // IoU 0.916 on open_gap against the cleaned outline): crease and
-    // silhouette must not get worse on any sketch.
-    EXPECT_LE(angles.p99, 27.0);
-    EXPECT_LE(angles.max, 57.5);
-    EXPECT_GE(iou, 0.91);
+    // follows thickness, finer junction patches and held junction outlines:
+    // p99 23.5 and max 53.6 on biped, at a junction seam; IoU 0.916 on
+    // open_gap against the cleaned outline): crease and silhouette must not
+    // get worse on any sketch.
+    EXPECT_LE(angles.p99, 24.0);
+    EXPECT_LE(angles.max, 54.5);
+    EXPECT_GE(iou, 0.915);
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedSketches, SharedSketchSurface,
