@@ -8,6 +8,7 @@
 #include <set>
 
 #include "base/Error.h"
+#include "base/ParallelFor.h"
 #include "cut/SurfaceSplit.h"
 #include "geometry/ConstrainedTriangulation.h"
 #include "mesh/Fairing.h"
@@ -174,92 +175,98 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
     const WeightsById weights = weightsById(part.skeleton, part.weights);
 
     CutResult result;
-    for (int k = 0; k < 2; ++k) {
-        MeshPiece& piece = pieces[k];
-        Part& out = result.pieces[k];
-        out.name = part.name;
-        out.skeleton = skeletonOnSide(split, surface, piece.side, 1e-9 * edge);
-        if (out.skeleton.boneCount() == 0)
-            throw Error(
-                "The cut leaves a piece without a bone. Cut across a bone, nearer the "
-                "middle of the part.");
-        joinComponents(out.skeleton);
-        if (!out.skeleton.validate().empty())
-            throw Error("The cut leaves a piece whose skeleton is not one tree; cut elsewhere.");
-        out.skeleton.setRoot(chooseCentralRoot(out.skeleton));
-        out.skeleton.reorient();
+    // The two pieces are independent: one thread each (the first error is
+    // rethrown here).
+    parallelFor(2, 2, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            MeshPiece& piece = pieces[k];
+            Part& out = result.pieces[k];
+            out.name = part.name;
+            out.skeleton = skeletonOnSide(split, surface, piece.side, 1e-9 * edge);
+            if (out.skeleton.boneCount() == 0)
+                throw Error(
+                    "The cut leaves a piece without a bone. Cut across a bone, nearer the "
+                    "middle of the part.");
+            joinComponents(out.skeleton);
+            if (!out.skeleton.validate().empty())
+                throw Error(
+                    "The cut leaves a piece whose skeleton is not one tree; cut elsewhere.");
+            out.skeleton.setRoot(chooseCentralRoot(out.skeleton));
+            out.skeleton.reorient();
 
-        // The holes become patches; a smooth cut fairs their interior.
-        out.mesh = std::move(piece.mesh);
-        std::vector<int>& patch = result.patches[k];
-        for (const std::vector<int>& hole : piece.holes) {
-            const std::vector<int> added = fillHole(out.mesh, hole, surface, edge);
-            patch.insert(patch.end(), added.begin(), added.end());
-        }
-        if (request.style == CutStyle::Smooth)
-            fairPositions(out.mesh, patch);
-
-        // Weights: the bones this piece kept (a split bone's far half stands
-        // in for it), renormalised; the patch filled by least squares.
-        auto pieceBone = [&](BoneId id) -> std::optional<BoneId> {
-            if (out.skeleton.hasBone(id))
-                return id;
-            auto half = tailHalf.find(id);
-            if (half != tailHalf.end() && out.skeleton.hasBone(half->second))
-                return half->second;
-            return std::nullopt;
-        };
-        WeightsById pieceWeights(out.mesh.vertexCount());
-        for (int v = 0; v < static_cast<int>(piece.sources.size()); ++v) {
-            const VertexSource& s = piece.sources[v];
-            std::vector<std::pair<BoneId, double>> list;
-            if (s.kind == VertexSource::Kind::Vertex) {
-                list = weights[s.index];
-            } else if (s.kind == VertexSource::Kind::Triangle) {
-                const auto& face = part.mesh.faces[s.index];
-                for (int c = 0; c < 3; ++c)
-                    for (const auto& [bone, w] : weights[face[c]])
-                        list.emplace_back(bone, s.barycentric[c] * w);
+            // The holes become patches; a smooth cut fairs their interior.
+            out.mesh = std::move(piece.mesh);
+            std::vector<int>& patch = result.patches[k];
+            for (const std::vector<int>& hole : piece.holes) {
+                const std::vector<int> added = fillHole(out.mesh, hole, surface, edge);
+                patch.insert(patch.end(), added.begin(), added.end());
             }
-            for (const auto& [bone, w] : list)
-                if (auto id = pieceBone(bone))
-                    pieceWeights[v].emplace_back(*id, w);
-            normaliseWeights(pieceWeights[v]);
+            if (request.style == CutStyle::Smooth)
+                fairPositions(out.mesh, patch);
+
+            // Weights: the bones this piece kept (a split bone's far half stands
+            // in for it), renormalised; the patch filled by least squares.
+            auto pieceBone = [&](BoneId id) -> std::optional<BoneId> {
+                if (out.skeleton.hasBone(id))
+                    return id;
+                auto half = tailHalf.find(id);
+                if (half != tailHalf.end() && out.skeleton.hasBone(half->second))
+                    return half->second;
+                return std::nullopt;
+            };
+            WeightsById pieceWeights(out.mesh.vertexCount());
+            for (int v = 0; v < static_cast<int>(piece.sources.size()); ++v) {
+                const VertexSource& s = piece.sources[v];
+                std::vector<std::pair<BoneId, double>> list;
+                if (s.kind == VertexSource::Kind::Vertex) {
+                    list = weights[s.index];
+                } else if (s.kind == VertexSource::Kind::Triangle) {
+                    const auto& face = part.mesh.faces[s.index];
+                    for (int c = 0; c < 3; ++c)
+                        for (const auto& [bone, w] : weights[face[c]])
+                            list.emplace_back(bone, s.barycentric[c] * w);
+                }
+                for (const auto& [bone, w] : list)
+                    if (auto id = pieceBone(bone))
+                        pieceWeights[v].emplace_back(*id, w);
+                normaliseWeights(pieceWeights[v]);
+            }
+            std::vector<int> unknown = patch;
+            for (int v = 0; v < static_cast<int>(piece.sources.size()); ++v)
+                if (pieceWeights[v].empty())
+                    unknown.push_back(v);
+            std::vector<BoneId> bones;
+            for (const Bone& bone : out.skeleton.bones())
+                bones.push_back(bone.id);
+            std::sort(bones.begin(), bones.end());
+            Eigen::MatrixXd values = Eigen::MatrixXd::Zero(out.mesh.vertexCount(), bones.size());
+            for (int v = 0; v < out.mesh.vertexCount(); ++v)
+                for (const auto& [bone, w] : pieceWeights[v])
+                    values(v, std::lower_bound(bones.begin(), bones.end(), bone) - bones.begin()) =
+                        w;
+            if (!fairValues(out.mesh, unknown, values))
+                throw Error("The patch's skin weights could not be solved; cut elsewhere.");
+            for (int v : unknown) {
+                pieceWeights[v].clear();
+                for (std::size_t b = 0; b < bones.size(); ++b)
+                    if (values(v, b) > 1e-6)
+                        pieceWeights[v].emplace_back(bones[b], values(v, b));
+                normaliseWeights(pieceWeights[v]);
+                if (pieceWeights[v].empty())
+                    pieceWeights[v].emplace_back(bones.front(), 1.0);
+            }
+            out.weights = weightsByIndex(out.skeleton, pieceWeights);
+            for (const auto& [id, name] : part.boneNames)
+                if (out.skeleton.hasBone(id))
+                    out.boneNames[id] = name;
+            result.sources[k] = std::move(piece.sources);
+            result.sources[k].resize(out.mesh.vertexCount());  // patch vertices: New
+            const std::vector<std::string> problems = out.validateSolid();
+            if (!problems.empty())
+                throw Error("The cut gave an invalid piece (" + problems.front() +
+                            "); nothing was changed.");
         }
-        std::vector<int> unknown = patch;
-        for (int v = 0; v < static_cast<int>(piece.sources.size()); ++v)
-            if (pieceWeights[v].empty())
-                unknown.push_back(v);
-        std::vector<BoneId> bones;
-        for (const Bone& bone : out.skeleton.bones())
-            bones.push_back(bone.id);
-        std::sort(bones.begin(), bones.end());
-        Eigen::MatrixXd values = Eigen::MatrixXd::Zero(out.mesh.vertexCount(), bones.size());
-        for (int v = 0; v < out.mesh.vertexCount(); ++v)
-            for (const auto& [bone, w] : pieceWeights[v])
-                values(v, std::lower_bound(bones.begin(), bones.end(), bone) - bones.begin()) = w;
-        if (!fairValues(out.mesh, unknown, values))
-            throw Error("The patch's skin weights could not be solved; cut elsewhere.");
-        for (int v : unknown) {
-            pieceWeights[v].clear();
-            for (std::size_t b = 0; b < bones.size(); ++b)
-                if (values(v, b) > 1e-6)
-                    pieceWeights[v].emplace_back(bones[b], values(v, b));
-            normaliseWeights(pieceWeights[v]);
-            if (pieceWeights[v].empty())
-                pieceWeights[v].emplace_back(bones.front(), 1.0);
-        }
-        out.weights = weightsByIndex(out.skeleton, pieceWeights);
-        for (const auto& [id, name] : part.boneNames)
-            if (out.skeleton.hasBone(id))
-                out.boneNames[id] = name;
-        result.sources[k] = std::move(piece.sources);
-        result.sources[k].resize(out.mesh.vertexCount());  // patch vertices: New
-        const std::vector<std::string> problems = out.validateSolid();
-        if (!problems.empty())
-            throw Error("The cut gave an invalid piece (" + problems.front() +
-                        "); nothing was changed.");
-    }
+    });
     result.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -77,7 +77,7 @@ Vec3 CutSurface::crossing(const Vec3& a, const Vec3& b) const {
         return a + sa / (sa - sb) * (b - a);
     // Bisection: the side is continuous along the segment.
     Vec3 lo = a, hi = b;
-    for (int i = 0; i < 60; ++i) {
+    for (int i = 0; i < 40; ++i) {  // 2^-40 of the segment: far below any edge
         const Vec3 mid = 0.5 * (lo + hi);
         const double sm = side(mid);
         if ((sm < 0.0) == (sa < 0.0)) {

@@ -1,6 +1,6 @@
 #include "mesh/Fairing.h"
 
-#include <Eigen/SparseCholesky>
+#include <Eigen/CholmodSupport>
 #include <Eigen/SparseCore>
 
 #include <set>
@@ -44,7 +44,8 @@ bool fairValues(const TriMesh& mesh, const std::vector<int>& free, Eigen::Matrix
     Eigen::SparseMatrix<double> a(row, static_cast<int>(free.size()));
     a.setFromTriplets(triplets.begin(), triplets.end());
     const Eigen::SparseMatrix<double> normal = a.transpose() * a;
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
+    // CHOLMOD, as Least-Squares Meshes (2.2) and bone heat (2.4) use.
+    Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
     if (solver.info() != Eigen::Success)
         return false;
     const Eigen::MatrixXd solution = solver.solve(-(a.transpose() * heldPart.topRows(row)));
