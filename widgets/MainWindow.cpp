@@ -30,6 +30,7 @@
 #include "model/commands/DeletePartCommand.h"
 #include "model/commands/ImportPartsCommand.h"
 #include "model/commands/ResetPoseCommand.h"
+#include "model/commands/WeightCleanupCommand.h"
 #include "model/recipe/RecipeFromHistory.h"
 #include "panels/OutlinerPanel.h"
 #include "panels/PropertiesPanel.h"
@@ -254,6 +255,39 @@ void MainWindow::createActions() {
     paintToolAction_->setIcon(QIcon(QStringLiteral(":/icons/paint.svg")));
     tools->addSeparator();
     add(tools, tr("&Reset Pose"), QKeySequence(Qt::ALT | Qt::Key_R), &MainWindow::resetPose);
+    // Blender's Weights menu clean-ups on the selected part (issue 14).
+    auto* cleanups = tools->addMenu(tr("Weigh&ts"));
+    auto cleanup = [this](auto make) {
+        model::Document* document = currentDocument();
+        if (!document || !document->contains(document->selection().part)) {
+            showStatus(tr("Select a part first"), 4000);
+            return;
+        }
+        try {
+            auto command = make(*document, document->selection().part);
+            const QString text = tr("%1: %n vertices changed", nullptr, command->changedVertices())
+                                     .arg(command->text());
+            document->undoStack()->push(command.release());
+            showStatus(text, 6000);
+        } catch (const Error& error) {
+            showStatus(QString::fromStdString(error.what()), 6000);
+        }
+    };
+    add(cleanups, tr("&Normalize All"), QKeySequence(), [cleanup] {
+        cleanup([](model::Document& d, model::PartId id) {
+            return model::WeightCleanupCommand::normalizeAll(d, id);
+        });
+    });
+    add(cleanups, tr("&Clean (below 0.01)"), QKeySequence(), [cleanup] {
+        cleanup([](model::Document& d, model::PartId id) {
+            return model::WeightCleanupCommand::clean(d, id, 0.01);
+        });
+    });
+    add(cleanups, tr("&Limit Total (4 bones)"), QKeySequence(), [cleanup] {
+        cleanup([](model::Document& d, model::PartId id) {
+            return model::WeightCleanupCommand::limitTotal(d, id, 4);
+        });
+    });
     for (const auto& [action, tool] : toolPairs()) {
         action->setCheckable(true);
         toolGroup_->addAction(action);

@@ -55,3 +55,30 @@ TEST(PaintWeightsCommand, ADabIsOneUndoStepSavedAndReplayed) {
 
 }  // namespace
 }  // namespace rigmesh::model::test
+
+namespace rigmesh::model::test {
+namespace {
+
+TEST(WeightCleanupCommand, CleanAndLimitAreOneUndoStepEachAndReplay) {
+    Document document;
+    runSteps(
+        document,
+        {{{"command", "sketch"}, {"points", pointsOf(sharedStroke("biped"))}, {"name", "biped"}}});
+    const QByteArray before = bytesOf(document);
+    runSteps(document, {{{"command", "clean_weights"}, {"part", "biped"}, {"threshold", 0.1}},
+                        {{"command", "limit_weights"}, {"part", "biped"}, {"influences", 2}},
+                        {{"command", "normalize_weights"}, {"part", "biped"}}});
+    for (const auto& list : document.parts()[0].part->weights.perVertex)
+        EXPECT_LE(list.size(), 2u);
+    EXPECT_TRUE(document.parts()[0].part->validate().empty());
+    const QByteArray after = bytesOf(document);
+    Document replay;
+    RecipeRunner(replay).run(parseRecipe(recipeFromHistory(document).dump(), "history"));
+    EXPECT_EQ(bytesOf(replay), after);
+    for (int i = 0; i < 3; ++i)
+        document.undoStack()->undo();
+    EXPECT_EQ(bytesOf(document), before);
+}
+
+}  // namespace
+}  // namespace rigmesh::model::test

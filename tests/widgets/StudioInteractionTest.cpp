@@ -548,6 +548,17 @@ TEST_F(Studio, PaintingTheHandChangesItsWeightsInOneUndoStep) {
                     Qt::NoButton);
     EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
     EXPECT_EQ(document()->undoStack()->count(), steps + 1);  // the undone stroke, redoable
+
+    // Tools > Weights > Limit Total keeps at most four bones per vertex.
+    QAction* limit = nullptr;
+    for (QAction* action : window->findChildren<QAction*>())
+        if (action->text() == QStringLiteral("&Limit Total (4 bones)"))
+            limit = action;
+    ASSERT_NE(limit, nullptr);
+    limit->trigger();
+    for (const auto& list : document()->part(biped).part->weights.perVertex)
+        EXPECT_LE(list.size(), 4u);
+    EXPECT_TRUE(document()->part(biped).part->validate().empty());
 }
 
 TEST_F(Studio, DraggingAPartMovesItAndCtrlDragTurnsIt) {

@@ -135,4 +135,56 @@ DabResult paintWeights(Part& part, const WeightDab& dab) {
     return result;
 }
 
+namespace {
+
+// Keeps the entries `keep` says yes to (always the largest), renormalised.
+template <typename Keep>
+int filterWeights(Part& part, Keep&& keep) {
+    int changed = 0;
+    for (auto& list : part.weights.perVertex) {
+        if (list.empty())
+            continue;
+        std::vector<std::pair<int, double>> sorted = list;
+        std::sort(sorted.begin(), sorted.end(),
+                  [](const auto& a, const auto& b) { return a.second > b.second; });
+        std::vector<std::pair<int, double>> kept;
+        for (std::size_t rank = 0; rank < sorted.size(); ++rank)
+            if (rank == 0 || keep(sorted[rank], rank))
+                kept.push_back(sorted[rank]);
+        double sum = 0.0;
+        for (const auto& entry : kept)
+            sum += entry.second;
+        if (kept.size() == list.size() && std::abs(sum - 1.0) <= 1e-12)
+            continue;  // already as asked: left bit for bit
+        for (auto& entry : kept)
+            entry.second /= sum;
+        std::sort(kept.begin(), kept.end());
+        if (kept != list) {
+            list = std::move(kept);
+            ++changed;
+        }
+    }
+    return changed;
+}
+
+}  // namespace
+
+int normalizeAllWeights(Part& part) {
+    return filterWeights(part, [](const auto&, std::size_t) { return true; });
+}
+
+int cleanWeights(Part& part, double threshold) {
+    if (!(threshold >= 0.0) || !(threshold < 1.0))
+        throw Error("The clean threshold must be at least 0 and below 1.");
+    return filterWeights(part,
+                         [&](const auto& entry, std::size_t) { return entry.second >= threshold; });
+}
+
+int limitWeightInfluences(Part& part, int influences) {
+    if (influences < 1)
+        throw Error("A vertex needs at least one influence.");
+    return filterWeights(
+        part, [&](const auto&, std::size_t rank) { return static_cast<int>(rank) < influences; });
+}
+
 }  // namespace rigmesh

@@ -42,4 +42,17 @@ struct DabResult {
 // a part without a mirror map.
 DabResult paintWeights(Part& part, const WeightDab& dab);
 
+// Whole-part clean-ups, as Blender's Weights menu has them (issue 14 item
+// 3). Each returns how many vertices changed; a vertex already as asked is
+// left bit for bit.
+// Normalize All: every vertex's weights rescaled to sum to 1 (after paint
+// or imports that left them off).
+int normalizeAllWeights(Part& part);
+// Clean: weights below `threshold` dropped, the rest renormalised (a vertex
+// never loses its largest weight).
+int cleanWeights(Part& part, double threshold);
+// Limit Total: at most `influences` bones per vertex (the largest kept),
+// renormalised; what glTF's four influences need.
+int limitWeightInfluences(Part& part, int influences);
+
 }  // namespace rigmesh

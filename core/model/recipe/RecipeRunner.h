@@ -60,6 +60,9 @@
 //                 0.5), "value" (replace: the weight painted towards, default
 //                 1), "mirror" (X-mirror through the sketch plane), "locked":
 //                 [bone ids] (issue 14)
+//   normalize_weights "part"; clean_weights "part", optional "threshold"
+//                 (default 0.01); limit_weights "part", optional "influences"
+//                 (default 4): Blender's Normalize All, Clean, Limit Total
 //   clip_settings "part", optional "frameRate", "interpolation" ("linear" |
 //                 "smooth"), "playback" ("hold" | "loop")
 //

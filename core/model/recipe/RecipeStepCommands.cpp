@@ -26,6 +26,7 @@
 #include "model/commands/SetJointPinnedCommand.h"
 #include "model/commands/SetPartVisibleCommand.h"
 #include "model/commands/SetPoseCommand.h"
+#include "model/commands/WeightCleanupCommand.h"
 #include "model/recipe/RecipeJson.h"
 #include "model/recipe/RecipePartRef.h"
 #include "sketch/Sketch.h"
@@ -355,6 +356,28 @@ const std::map<std::string, StepKind>& stepKinds() {
         {"import", {{"file"}, importFile}},
         {"merge", {{"part", "into", "mode", "joint", "target", "reskin"}, merge}},
         {"cut", {{"part", "plane", "stroke", "view", "style", "names"}, cut}},
+        {"normalize_weights",
+         {{"part"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              return StepCommand{WeightCleanupCommand::normalizeAll(c.document, id), id, {}};
+          }}},
+        {"clean_weights",
+         {{"part", "threshold"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              const double threshold = c.has("threshold") ? c.number("threshold") : 0.01;
+              return StepCommand{WeightCleanupCommand::clean(c.document, id, threshold), id, {}};
+          }}},
+        {"limit_weights",
+         {{"part", "influences"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              const int influences =
+                  c.has("influences") ? static_cast<int>(c.number("influences")) : 4;
+              return StepCommand{
+                  WeightCleanupCommand::limitTotal(c.document, id, influences), id, {}};
+          }}},
         {"paint_weights",
          {{"part", "bone", "mode", "center", "radius", "strength", "value", "mirror", "locked"},
           paintWeightsStep}},

@@ -105,3 +105,32 @@ TEST(WeightPaint, SmoothEvensOutABoneAndReplaceMovesTowardsTheValue) {
 
 }  // namespace
 }  // namespace rigmesh
+
+namespace rigmesh {
+namespace {
+
+// Blender's Normalize All, Clean and Limit Total: sums 1, no weight below
+// the threshold but the largest, at most N influences; untouched vertices
+// bit for bit.
+TEST(WeightCleanup, CleanLimitAndNormalizeKeepValidWeights) {
+    Part part = testsupport::sharedSketchPart("biped");
+    EXPECT_EQ(normalizeAllWeights(part), 0) << "already normalised: nothing changes";
+    const int cleaned = cleanWeights(part, 0.2);
+    EXPECT_GT(cleaned, 0);
+    EXPECT_TRUE(part.validate().empty());
+    for (const auto& list : part.weights.perVertex)
+        for (const auto& [bone, w] : list)
+            if (list.size() > 1) {
+                EXPECT_GE(w, 0.2 * 0.999);
+            }
+    Part limited = testsupport::sharedSketchPart("biped");
+    limitWeightInfluences(limited, 1);
+    EXPECT_TRUE(limited.validate().empty());
+    for (const auto& list : limited.weights.perVertex)
+        EXPECT_EQ(list.size(), 1u);
+    EXPECT_THROW(limitWeightInfluences(limited, 0), Error);
+    EXPECT_THROW(cleanWeights(limited, 1.0), Error);
+}
+
+}  // namespace
+}  // namespace rigmesh
