@@ -16,7 +16,7 @@ jobs="${JOBS:-$(nproc)}"
 
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DRIGMESH_BUILD_TESTS=ON -DRIGMESH_BUILD_BENCHMARKS=ON
-programs="${PROGRAMS:-sketch_to_surface rigged_part bone_heat pose merge}"
+programs="${PROGRAMS:-sketch_to_surface rigged_part bone_heat pose merge weight_paint}"
 cmake --build "$build" $(printf -- "--target bench_%s " $programs) -j "$jobs"
 
 mkdir -p "$results"

@@ -30,10 +30,10 @@
 #include "model/commands/DeletePartCommand.h"
 #include "model/commands/ImportPartsCommand.h"
 #include "model/commands/ResetPoseCommand.h"
-#include "model/commands/WeightCleanupCommand.h"
 #include "model/recipe/RecipeFromHistory.h"
 #include "panels/OutlinerPanel.h"
 #include "panels/PropertiesPanel.h"
+#include "panels/WeightsPanel.h"
 #include "tools/CutTool.h"
 #include "tools/MergeTool.h"
 #include "tools/PaintTool.h"
@@ -66,6 +66,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
       tabs_(new QTabWidget(this)),
       outliner_(new OutlinerPanel(this)),
       properties_(new PropertiesPanel(this)),
+      weights_(new WeightsPanel(this)),
       history_(new QUndoView(&undoGroup_, this)),
       selectTool_(new SelectTool(this)),
       sketchTool_(new SketchTool(this)),
@@ -87,6 +88,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
     connect(sketchTool_, &SketchTool::hintMessage, this,
             [this](const QString& m) { showStatus(m, 5000); });
     connect(properties_, &PropertiesPanel::statusMessage, this, &MainWindow::showStatus);
+    connect(weights_, &WeightsPanel::statusMessage, this, &MainWindow::showStatus);
     mouseHint_ = new MouseHint(tabs_);
     createActions();
     createDocks();
@@ -255,39 +257,7 @@ void MainWindow::createActions() {
     paintToolAction_->setIcon(QIcon(QStringLiteral(":/icons/paint.svg")));
     tools->addSeparator();
     add(tools, tr("&Reset Pose"), QKeySequence(Qt::ALT | Qt::Key_R), &MainWindow::resetPose);
-    // Blender's Weights menu clean-ups on the selected part (issue 14).
-    auto* cleanups = tools->addMenu(tr("Weigh&ts"));
-    auto cleanup = [this](auto make) {
-        model::Document* document = currentDocument();
-        if (!document || !document->contains(document->selection().part)) {
-            showStatus(tr("Select a part first"), 4000);
-            return;
-        }
-        try {
-            auto command = make(*document, document->selection().part);
-            const QString text = tr("%1: %n vertices changed", nullptr, command->changedVertices())
-                                     .arg(command->text());
-            document->undoStack()->push(command.release());
-            showStatus(text, 6000);
-        } catch (const Error& error) {
-            showStatus(QString::fromStdString(error.what()), 6000);
-        }
-    };
-    add(cleanups, tr("&Normalize All"), QKeySequence(), [cleanup] {
-        cleanup([](model::Document& d, model::PartId id) {
-            return model::WeightCleanupCommand::normalizeAll(d, id);
-        });
-    });
-    add(cleanups, tr("&Clean (below 0.01)"), QKeySequence(), [cleanup] {
-        cleanup([](model::Document& d, model::PartId id) {
-            return model::WeightCleanupCommand::clean(d, id, 0.01);
-        });
-    });
-    add(cleanups, tr("&Limit Total (4 bones)"), QKeySequence(), [cleanup] {
-        cleanup([](model::Document& d, model::PartId id) {
-            return model::WeightCleanupCommand::limitTotal(d, id, 4);
-        });
-    });
+    createWeightMenu(tools);
     for (const auto& [action, tool] : toolPairs()) {
         action->setCheckable(true);
         toolGroup_->addAction(action);
@@ -322,9 +292,16 @@ void MainWindow::createDocks() {
         widget->setWidget(content);
         addDockWidget(area, widget);
         viewMenu_->addAction(widget->toggleViewAction());
+        return widget;
     };
     dock(tr("Outliner"), "outlinerDock", outliner_, Qt::RightDockWidgetArea);
-    dock(tr("Properties"), "propertiesDock", properties_, Qt::RightDockWidgetArea);
+    QDockWidget* propertiesDock =
+        dock(tr("Properties"), "propertiesDock", properties_, Qt::RightDockWidgetArea);
+    // A tab beside Properties (Blender's Properties editor has a tab per
+    // data kind), so the view keeps its width.
+    tabifyDockWidget(propertiesDock,
+                     dock(tr("Skin Weights"), "weightsDock", weights_, Qt::RightDockWidgetArea));
+    propertiesDock->raise();
     dock(tr("History"), "historyDock", history_, Qt::LeftDockWidgetArea);
     history_->setEmptyLabel(tr("<original>"));
     // The active tool's options (ViewportTool::optionsWidget), one page each.
@@ -391,6 +368,7 @@ void MainWindow::currentTabChanged(int) {
     undoGroup_.setActiveStack(document ? document->undoStack() : nullptr);
     outliner_->setDocument(document);
     properties_->setDocument(document);
+    weights_->setDocument(document, view ? view->viewport() : nullptr);
     if (view) {
         view->viewport()->setTool(activeTool());  // the checked tool, whichever it is
         view->viewport()->setWireframe(wireframeAction_->isChecked());

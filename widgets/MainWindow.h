@@ -31,6 +31,7 @@ class MouseHint;
 class DocumentView;
 class OutlinerPanel;
 class PropertiesPanel;
+class WeightsPanel;
 class CutTool;
 class PaintTool;
 class MergeTool;
@@ -51,6 +52,8 @@ class MainWindow : public QMainWindow {
     model::Document* currentDocument() const;
     QTabWidget* tabs() const { return tabs_; }
     OutlinerPanel* outliner() const { return outliner_; }
+    WeightsPanel* weightsPanel() const { return weights_; }
+    PropertiesPanel* propertiesPanel() const { return properties_; }
 
     bool openFile(const QString& path);
     // Offers to restore documents left in the recovery folder by a crash.
@@ -80,6 +83,8 @@ class MainWindow : public QMainWindow {
   private:
     void createActions();
     void createDocks();
+    // Tools > Weights: the clean-ups, Smooth All and Check Rig (MainWindowWeights.cpp).
+    void createWeightMenu(QMenu* tools);
     void currentTabChanged(int index);
     class ViewportTool* activeTool() const;
     void activateTool(QAction* action, class ViewportTool* tool);
@@ -96,6 +101,7 @@ class MainWindow : public QMainWindow {
     QUndoGroup undoGroup_;
     OutlinerPanel* outliner_;
     PropertiesPanel* properties_;
+    WeightsPanel* weights_;
     QUndoView* history_;
     QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;

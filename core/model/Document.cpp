@@ -222,6 +222,18 @@ void Document::replacePart(PartId id, std::shared_ptr<const Part> part,
     replacePart(id, std::move(part), options, rest, {}, emptiedClip(node.clip));
 }
 
+void Document::replaceSkinning(PartId id, std::shared_ptr<const Part> part) {
+    PartNode& node = mutablePart(id);
+    if (!part || !node.part || part->mesh.vertexCount() != node.part->mesh.vertexCount() ||
+        part->skeleton.boneCount() != node.part->skeleton.boneCount() ||
+        part->skeleton.jointCount() != node.part->skeleton.jointCount())
+        throw Error("Only the skin weights of a part can change this way.");
+    if (node.part == part)
+        return;
+    node.part = std::move(part);
+    emit partChanged(id, Change::Geometry);
+}
+
 void Document::applyPose(PartId id, const rigmesh::Pose& pose) {
     PartNode& node = mutablePart(id);
     checkPose(node, pose);

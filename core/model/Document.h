@@ -111,6 +111,12 @@ class Document : public QObject {
     // are cleared and the clip loses its keys (keeping its settings): joint
     // ids may not survive a new skeleton.
     void replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options);
+    // Swaps the engine part for one with the same mesh and skeleton whose
+    // skin weights or bone locks differ (paint, weight clean-ups, locks):
+    // pose, pins and keys stay as they are, and a running pose preview too.
+    // Throws rigmesh::Error (nothing changed) if the new part's skeleton or
+    // vertex count differs.
+    void replaceSkinning(PartId id, std::shared_ptr<const Part> part);
     // Throws rigmesh::Error when the pose names a joint the part's skeleton
     // does not have or holds a non-finite or zero quaternion / translation.
     // Ends any pose preview of the part (see previewPose).

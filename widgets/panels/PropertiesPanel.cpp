@@ -5,6 +5,7 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
@@ -40,6 +41,11 @@ Vec3 xyzEulerDegrees(const Eigen::Quaterniond& rotation) {
 }  // namespace
 
 PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
+    confirmDiscard = [this](const QString& question) {
+        return QMessageBox::question(this, tr("Rebuild"), question,
+                                     QMessageBox::Yes | QMessageBox::Cancel,
+                                     QMessageBox::Cancel) == QMessageBox::Yes;
+    };
     auto* layout = new QVBoxLayout(this);
     title_ = new QLabel(this);
     title_->setStyleSheet(QStringLiteral("font-weight: bold"));
@@ -176,6 +182,17 @@ void PropertiesPanel::rebuild() {
     model::BuildOptions options;
     options.targetEdgeLength = edgeLength_->value();
     options.smoothing = smoothing_->isChecked();
+    // A rebuild recomputes the weights from the sketch: ask before painted
+    // weights go (issue 14 item 3).
+    const model::PartNode* node = document_->findPart(id);
+    if (node && node->part && node->part->weightsPainted &&
+        !confirmDiscard(tr("%1 has hand-painted skin weights. Rebuilding recomputes them from "
+                           "the sketch and the painting is lost (Undo brings it back). "
+                           "Rebuild anyway?")
+                            .arg(node->name))) {
+        emit statusMessage(tr("Not rebuilt: the painted weights are kept"), 6000);
+        return;
+    }
     try {
         auto command = model::RebuildPartCommand::create(*document_, id, options);
         const QString dropped = command->droppedMessage();

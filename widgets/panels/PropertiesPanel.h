@@ -3,10 +3,12 @@
 // from its stroke with the edited options as one undoable command. With a
 // joint selected, its pose rotation as XYZ Euler angles in degrees
 // (Blender's default: X first, then Y, then Z, each about the parent's axes),
-// editable: each edit is an undoable SetPoseCommand.
+// editable: each edit is an undoable SetPoseCommand. A rebuild that would
+// discard hand-painted weights asks first.
 #pragma once
 
 #include <QWidget>
+#include <functional>
 
 class QCheckBox;
 class QDoubleSpinBox;
@@ -25,6 +27,9 @@ class PropertiesPanel : public QWidget {
   public:
     explicit PropertiesPanel(QWidget* parent = nullptr);
     void setDocument(model::Document* document);
+    // Asks whether to go on with a rebuild that discards painted weights (a
+    // Yes/Cancel message box; tests answer it themselves).
+    std::function<bool(const QString& question)> confirmDiscard;
 
   signals:
     void statusMessage(const QString& message, int timeoutMs = 0);

@@ -7,7 +7,9 @@
 #include <QLabel>
 
 #include "base/Error.h"
+#include "model/BoneDisplayName.h"
 #include "model/commands/PaintWeightsCommand.h"
+#include "part/WeightLists.h"
 #include "viewport/RenderScene.h"
 #include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
@@ -30,13 +32,18 @@ std::optional<BoneId> selectedBone(const model::Document& document) {
 QString PaintTool::hint() const {
     return tr(
         "Paint Weights: select a joint (its bone is painted, shown red to blue), then drag "
-        "over the part; Tool Options set the brush; Esc puts the stroke back");
+        "over the part; Ctrl + click samples a vertex; Tool Options set the brush; Esc puts "
+        "the stroke back");
 }
 
 void PaintTool::press(Viewport& viewport, QMouseEvent* event) {
     model::Document& document = *viewport.document();
     if (viewport.weightView() != WeightView::SelectedBone)
         viewport.setWeightView(WeightView::SelectedBone);
+    if (event->modifiers() & Qt::ControlModifier) {
+        sample(viewport, event->position());
+        return;
+    }
     const std::optional<BoneId> bone = selectedBone(document);
     const auto hit = viewport.surfaceAt(event->position());
     if (!bone || !hit || hit->part != document.selection().part) {
@@ -45,10 +52,19 @@ void PaintTool::press(Viewport& viewport, QMouseEvent* event) {
                "that part"));
         return;
     }
+    before_ = document.part(hit->part).part;
+    if (before_->lockedBones.contains(*bone)) {
+        emit viewport.statusMessage(
+            tr("%1 is locked: unlock it in the Skin Weights panel to paint it")
+                .arg(model::boneDisplayName(*before_, *bone)));
+        before_.reset();
+        return;
+    }
     part_ = hit->part;
     bone_ = *bone;
-    before_ = document.part(*part_).part;
     working_ = std::make_shared<Part>(*before_);
+    painter_ = std::make_unique<WeightPainter>(working_->mesh);
+    skipped_ = 0;
     dabs_.clear();
     dab(viewport, event->position());
     lastDab_ = event->position();
@@ -74,9 +90,9 @@ void PaintTool::dab(Viewport& viewport, const QPointF& pixel) {
     const auto hit = viewport.surfaceAt(pixel);
     if (!hit || hit->part != *part_)
         return;
-    const model::PartNode node = document.part(*part_);  // a copy: replacePart changes it
+    const model::Placement placement = document.part(*part_).placement;
     const Vec3 local = working_->mesh.vertices[hit->vertex];
-    const Vec3 centre = node.placement.rotation * local + node.placement.translation;
+    const Vec3 centre = placement.rotation * local + placement.translation;
     // The radius in pixels as a length at the surface's depth.
     const QVector3D at = toQt(centre);
     const double radius = (viewport.viewPlanePoint(pixel + QPointF(radiusPixels, 0.0), at) -
@@ -85,23 +101,50 @@ void PaintTool::dab(Viewport& viewport, const QPointF& pixel) {
     WeightDab dab;
     dab.bone = bone_;
     dab.mode = mode;
+    dab.falloff = falloff;
     dab.centre = centre;
     dab.radius = radius;
     dab.strength = strength;
     dab.value = value;
     dab.mirror = mirror && working_->mirror.size() == working_->mesh.vertices.size();
+    if (frontFacesOnly)
+        dab.towardsViewer = -toEigen(viewport.camera().forward());
     WeightDab partDab = dab;
     partDab.centre = local;
+    if (dab.towardsViewer)
+        partDab.towardsViewer = placement.rotation.conjugate() * *dab.towardsViewer;
+    partDab.locked = working_->lockedBones;
     try {
-        paintWeights(*working_, partDab);
+        skipped_ += painter_->paint(*working_, partDab).skippedLocked;
     } catch (const Error& error) {
         emit viewport.statusMessage(QString::fromStdString(error.what()));
         return;
     }
     dabs_.push_back(dab);
-    // A live preview; the stroke becomes commands on release.
-    document.replacePart(*part_, std::make_shared<const Part>(*working_), node.options, node.pose,
-                         node.pinnedJoints, node.clip);
+    // A live preview; the stroke becomes one command on release.
+    document.replaceSkinning(*part_, std::make_shared<const Part>(*working_));
+}
+
+void PaintTool::sample(Viewport& viewport, const QPointF& pixel) {
+    const model::Document& document = *viewport.document();
+    const auto hit = viewport.surfaceAt(pixel);
+    if (!hit)
+        return;
+    viewport.setInspectedVertex(Viewport::SurfaceHit{hit->part, hit->vertex});
+    const Part& part = *document.part(hit->part).part;
+    const std::optional<BoneId> bone = selectedBone(document);
+    if (!bone || hit->part != document.selection().part ||
+        hit->vertex >= static_cast<int>(part.weights.perVertex.size())) {
+        emit viewport.statusMessage(viewport.weightsAt(pixel));
+        return;
+    }
+    value = weightOfIndex(part.weights.perVertex[hit->vertex], part.skeleton.indexOfBone(*bone));
+    if (valueBox_)
+        valueBox_->setValue(value);
+    emit viewport.statusMessage(tr("Sampled %1 = %2 at vertex %3: the Replace brush paints it")
+                                    .arg(model::boneDisplayName(part, *bone))
+                                    .arg(value, 0, 'f', 3)
+                                    .arg(hit->vertex));
 }
 
 void PaintTool::release(Viewport& viewport, QMouseEvent*) {
@@ -109,38 +152,47 @@ void PaintTool::release(Viewport& viewport, QMouseEvent*) {
         return;
     model::Document& document = *viewport.document();
     const model::PartId part = *part_;
-    part_.reset();
-    if (!document.contains(part) || dabs_.empty())
-        return;
-    // Back to where the stroke started, then the dabs as commands: one undo
-    // step, each dab a recipe step.
-    const model::PartNode node = document.part(part);
-    document.replacePart(part, before_, node.options, node.pose, node.pinnedJoints, node.clip);
-    document.undoStack()->beginMacro(tr("Paint Weights of %1").arg(node.name));
-    int changed = 0;
-    for (const WeightDab& dab : dabs_) {
-        auto command = model::PaintWeightsCommand::create(document, part, dab);
-        changed += command->changedVertices();
-        document.undoStack()->push(command.release());
+    if (document.contains(part) && !dabs_.empty()) {
+        // Back to where the stroke started, then the stroke as one command.
+        document.replaceSkinning(part, before_);
+        try {
+            auto command = model::PaintWeightsCommand::create(document, part, dabs_);
+            if (command->changedVertices() == 0) {
+                // Nothing to undo: no step in the history for it.
+                emit viewport.statusMessage(
+                    command->skippedVertices() > 0
+                        ? tr("The stroke changed no weights: every other bone there is locked")
+                        : tr("The stroke changed no weights: they are already as it paints"));
+                endStroke();
+                return;
+            }
+            QString message = tr("Painted %n dab(s), %1 vertices changed", nullptr,
+                                 static_cast<int>(dabs_.size()))
+                                  .arg(command->changedVertices());
+            if (command->skippedVertices() > 0)
+                message += tr("; %n vertex visit(s) skipped: every other bone there is locked",
+                              nullptr, command->skippedVertices());
+            document.undoStack()->push(command.release());
+            emit viewport.statusMessage(message);
+        } catch (const Error& error) {
+            emit viewport.statusMessage(QString::fromStdString(error.what()));
+        }
     }
-    document.undoStack()->endMacro();
-    emit viewport.statusMessage(
-        tr("Painted %n dab(s), %1 vertex changes", nullptr, static_cast<int>(dabs_.size()))
-            .arg(changed));
-    dabs_.clear();
-    working_.reset();
-    before_.reset();
+    endStroke();
 }
 
 void PaintTool::cancel(Viewport& viewport) {
     if (part_ && viewport.document()->contains(*part_)) {
-        const model::PartNode node = viewport.document()->part(*part_);
-        viewport.document()->replacePart(*part_, before_, node.options, node.pose,
-                                         node.pinnedJoints, node.clip);
+        viewport.document()->replaceSkinning(*part_, before_);
         emit viewport.statusMessage(tr("Stroke put back"));
     }
+    endStroke();
+}
+
+void PaintTool::endStroke() {
     part_.reset();
     dabs_.clear();
+    painter_.reset();
     working_.reset();
     before_.reset();
 }
@@ -185,6 +237,13 @@ QWidget* PaintTool::optionsWidget() {
     connect(modes, &QComboBox::currentIndexChanged, this,
             [this](int index) { mode = static_cast<BrushMode>(index); });
     form->addRow(tr("Brush"), modes);
+    auto* falloffs = new QComboBox(options_);
+    falloffs->setObjectName(QStringLiteral("paintFalloff"));
+    falloffs->addItems({tr("Smooth"), tr("Linear"), tr("Sharp"), tr("Constant")});
+    falloffs->setToolTip(tr("How the brush's strength falls off from its centre to its rim"));
+    connect(falloffs, &QComboBox::currentIndexChanged, this,
+            [this](int index) { falloff = static_cast<BrushFalloff>(index); });
+    form->addRow(tr("Falloff"), falloffs);
     auto* radius = new QDoubleSpinBox(options_);
     radius->setRange(2.0, 400.0);
     radius->setSuffix(tr(" px"));
@@ -197,13 +256,21 @@ QWidget* PaintTool::optionsWidget() {
     strengthBox->setValue(strength);
     connect(strengthBox, &QDoubleSpinBox::valueChanged, this, [this](double v) { strength = v; });
     form->addRow(tr("Strength"), strengthBox);
-    auto* weight = new QDoubleSpinBox(options_);
-    weight->setRange(0.0, 1.0);
-    weight->setSingleStep(0.05);
-    weight->setValue(value);
-    weight->setToolTip(tr("The weight the Replace brush paints towards"));
-    connect(weight, &QDoubleSpinBox::valueChanged, this, [this](double v) { value = v; });
-    form->addRow(tr("Weight"), weight);
+    valueBox_ = new QDoubleSpinBox(options_);
+    valueBox_->setObjectName(QStringLiteral("paintValue"));
+    valueBox_->setRange(0.0, 1.0);
+    valueBox_->setSingleStep(0.05);
+    valueBox_->setDecimals(3);
+    valueBox_->setValue(value);
+    valueBox_->setToolTip(tr("The weight the Replace brush paints towards (Ctrl + click samples)"));
+    connect(valueBox_, &QDoubleSpinBox::valueChanged, this, [this](double v) { value = v; });
+    form->addRow(tr("Weight"), valueBox_);
+    auto* front = new QCheckBox(tr("Front faces only"), options_);
+    front->setObjectName(QStringLiteral("paintFrontFacesOnly"));
+    front->setChecked(frontFacesOnly);
+    front->setToolTip(tr("Off: the brush also paints the far side of the part, through it"));
+    connect(front, &QCheckBox::toggled, this, [this](bool on) { frontFacesOnly = on; });
+    form->addRow(front);
     auto* mirrorBox = new QCheckBox(tr("X-mirror (through the sketch plane)"), options_);
     connect(mirrorBox, &QCheckBox::toggled, this, [this](bool on) { mirror = on; });
     form->addRow(mirrorBox);

@@ -1,11 +1,15 @@
 // Weight paint tool (W), issue 14 item 3, in the manner of Blender's weight
 // paint mode: drag over a part to paint the weight of the selected joint's
 // bone (the one the Selected Bone weight view shows, which the tool turns
-// on). Tool Options: Add, Subtract, Replace or Smooth, the radius in screen
-// pixels (its circle drawn at the cursor), strength, the Replace weight and
-// X-mirror. Every dab auto-normalises; a stroke is one undo step (a macro of
-// its dabs, each a PaintWeightsCommand the recipe replays). Esc puts the
-// weights back.
+// on). Tool Options: Add, Subtract, Replace or Smooth, the falloff, the
+// radius in screen pixels (its circle drawn at the cursor), strength, the
+// Replace weight, front faces only (on by default: a brush never paints
+// through a limb onto its far side) and X-mirror. Every dab auto-normalises
+// and keeps the part's locked bones; a stroke is one undo step (one
+// PaintWeightsCommand the recipe replays). Ctrl + click samples: the
+// vertex's weights are pinned in the Weights panel and the Replace weight
+// becomes the bone's weight there (Blender's Sample Weight). Esc puts the
+// stroke back.
 #pragma once
 
 #include <QObject>
@@ -17,6 +21,8 @@
 #include "model/Document.h"
 #include "part/WeightPaint.h"
 #include "viewport/ViewportTool.h"
+
+class QDoubleSpinBox;
 
 namespace rigmesh::widgets {
 
@@ -36,6 +42,8 @@ class PaintTool : public QObject, public ViewportTool {
 
     // The brush (options), for tests and the options widget.
     BrushMode mode = BrushMode::Add;
+    BrushFalloff falloff = BrushFalloff::Smooth;
+    bool frontFacesOnly = true;
     double radiusPixels = 40.0;
     double strength = 0.5;
     double value = 1.0;
@@ -44,13 +52,19 @@ class PaintTool : public QObject, public ViewportTool {
   private:
     // A dab where the cursor is, if it is over the stroke's part.
     void dab(Viewport& viewport, const QPointF& pixel);
+    // Ctrl + click: pins the vertex's weights and takes the bone's weight.
+    void sample(Viewport& viewport, const QPointF& pixel);
+    void endStroke();
 
     QWidget* options_ = nullptr;
+    QDoubleSpinBox* valueBox_ = nullptr;
     std::optional<model::PartId> part_;
     BoneId bone_ = 0;
-    std::shared_ptr<const Part> before_;  // the part as the stroke found it
-    std::shared_ptr<Part> working_;       // with the stroke's dabs so far
-    std::vector<WeightDab> dabs_;         // centres in document coordinates
+    std::shared_ptr<const Part> before_;      // the part as the stroke found it
+    std::shared_ptr<Part> working_;           // with the stroke's dabs so far
+    std::unique_ptr<WeightPainter> painter_;  // over working_'s mesh
+    int skipped_ = 0;                         // vertex visits no dab could change
+    std::vector<WeightDab> dabs_;             // centres in document coordinates
     QPointF lastDab_;
     QPointF cursor_;
     bool cursorInView_ = false;

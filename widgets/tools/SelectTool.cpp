@@ -12,7 +12,8 @@ namespace rigmesh::widgets {
 
 QString SelectTool::hint() const {
     return tr(
-        "Select: click a part or a joint; drag a part to move it, Ctrl + drag to turn it; "
+        "Select: click a part or a joint (with a weight view on, the click pins the vertex's "
+        "weights in the Skin Weights panel); drag a part to move it, Ctrl + drag to turn it; "
         "middle drag orbits, Shift + middle drag pans, wheel zooms");
 }
 
@@ -28,6 +29,11 @@ void SelectTool::press(Viewport& viewport, QMouseEvent* event) {
         return;
     }
     document.setSelection({*part, kNoJoint});
+    // With a weight view on, a click also pins the vertex's weights in the
+    // Weights panel (issue 14 item 2).
+    if (viewport.weightView() != WeightView::Off)
+        if (const auto hit = viewport.surfaceAt(event->position()))
+            viewport.setInspectedVertex(*hit);
     dragged_ = part;
     grabPoint_ =
         viewport.sketchPlanePoint(event->position());  // the plane stays fixed during the drag

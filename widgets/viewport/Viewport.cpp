@@ -302,6 +302,7 @@ RenderScene Viewport::gatherScene() const {
     }
     for (const QVector3D& p : strokeOverlay_)
         scene.stroke.add(p, QVector3D(1.0f, 0.45f, 0.2f));
+    addInspectionMarks(scene);
     if (tool_)
         tool_->addOverlay(*this, scene.lines);
     return scene;

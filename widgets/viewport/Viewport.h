@@ -83,6 +83,16 @@ class Viewport : public QOpenGLWidget {
     // pixel, for the status bar while a weight view is on (issue 14 item 2).
     QString weightsAt(const QPointF& pixel) const;
 
+    // Weight inspection (issue 14 item 2): the vertex whose weights the
+    // Weights panel shows (pinned by a click with a weight view on, or the
+    // paint tool's Ctrl + click), and the vertices Check Rig selected; both
+    // are drawn as marks where the posed surface has them.
+    void setInspectedVertex(std::optional<SurfaceHit> vertex);
+    const std::optional<SurfaceHit>& inspectedVertex() const { return inspected_; }
+    void setMarkedVertices(model::PartId part, std::vector<int> vertices);
+    const std::vector<int>& markedVertices() const { return marked_; }
+    model::PartId markedPart() const { return markedPart_; }
+
     // World position of a joint of a part in its current placement and pose.
     QVector3D jointWorldPosition(model::PartId part, JointId joint) const;
     // The part's skeleton in its current pose (cached per part and pose).
@@ -95,6 +105,8 @@ class Viewport : public QOpenGLWidget {
   signals:
     // A tool's hint or a message for the status bar.
     void statusMessage(const QString& message);
+    // setInspectedVertex() changed the pinned vertex.
+    void inspectedVertexChanged();
 
   protected:
     void initializeGL() override;
@@ -108,6 +120,8 @@ class Viewport : public QOpenGLWidget {
 
   private:
     RenderScene gatherScene() const;
+    // The inspected and marked vertices, posed, as points (ViewportInspection.cpp).
+    void addInspectionMarks(RenderScene& scene) const;
     void frameBox(const Eigen::AlignedBox3d& box);
     Eigen::AlignedBox3d sceneBox(bool selectedOnly) const;
 
@@ -127,6 +141,9 @@ class Viewport : public QOpenGLWidget {
         PosedSkeleton posed;
     };
     mutable std::map<model::PartId, PosedCacheEntry> posedCache_;
+    std::optional<SurfaceHit> inspected_;
+    model::PartId markedPart_ = model::kNoPart;
+    std::vector<int> marked_;
     QPointF lastMouse_;
     bool navigating_ = false;
 };

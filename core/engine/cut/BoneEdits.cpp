@@ -38,6 +38,8 @@ BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& we
     result.part.knownClosestBones.clear();
     std::erase_if(result.part.boneNames,
                   [&](const auto& entry) { return !result.part.skeleton.hasBone(entry.first); });
+    std::erase_if(result.part.lockedBones,
+                  [&](BoneId id) { return !result.part.skeleton.hasBone(id); });
     result.reskinned = local.failedTest;
     result.reskinned.insert(result.reskinned.end(), local.transition.begin(),
                             local.transition.end());

@@ -259,6 +259,10 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
             for (const auto& [id, name] : part.boneNames)
                 if (out.skeleton.hasBone(id))
                     out.boneNames[id] = name;
+            for (BoneId id : part.lockedBones)
+                if (out.skeleton.hasBone(id))
+                    out.lockedBones.insert(id);
+            out.weightsPainted = part.weightsPainted;
             result.sources[k] = std::move(piece.sources);
             result.sources[k].resize(out.mesh.vertexCount());  // patch vertices: New
             const std::vector<std::string> problems = out.validateSolid();

@@ -281,6 +281,15 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
     for (const auto& [id, name] : dragged.boneNames)
         if (part.skeleton.hasBone(join.draggedBones.at(id)))
             part.boneNames[join.draggedBones.at(id)] = name;
+    // Locks and hand-painted weights outside the re-skinned band survive
+    // (issue 14): both parts' locks on surviving bones, painted if either was.
+    for (BoneId id : target.lockedBones)
+        if (part.skeleton.hasBone(id))
+            part.lockedBones.insert(id);
+    for (BoneId id : dragged.lockedBones)
+        if (part.skeleton.hasBone(join.draggedBones.at(id)))
+            part.lockedBones.insert(join.draggedBones.at(id));
+    part.weightsPainted = target.weightsPainted || dragged.weightsPainted;
     result.sources = std::move(merged.sources);
     result.stats.vertices = part.mesh.vertexCount();
     result.stats.bones = part.skeleton.boneCount();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,14 @@ struct Part {
     // Bone names kept from an imported file (issue 18 item 2): exported as
     // they are (made unique); a bone without one is `<part>_bone<id>`.
     std::map<BoneId, std::string> boneNames;
+    // Bones whose weights painting and the weight clean-ups keep as they are
+    // (issue 14 item 3): an editing aid saved with the part, like Blender's
+    // vertex group locks. Every id is a bone of the skeleton.
+    std::set<BoneId> lockedBones;
+    // True once the weights were edited by hand (paint, clean-ups): a
+    // rebuild from the sketch would recompute them, so the studio asks first.
+    // Merges and cuts keep it (they re-skin only near the seam).
+    bool weightsPainted = false;
 
     // Bones as segments in the order of skeleton.bones().
     std::vector<BoneSegment> boneSegments() const;
@@ -48,7 +57,7 @@ struct Part {
     // in range, a skeleton that is a tree (or no skeleton at all, for an
     // unrigged import), and weights that are finite, positive, sorted by
     // bone and sum to 1 for every vertex, bone names for existing bones,
-    // non-empty and distinct. Every operation that changes a
+    // non-empty and distinct, locked bones that exist. Every operation that changes a
     // part checks its result with it; so does every reader of untrusted data.
     std::vector<std::string> validate() const;
     // validate() plus what every modelling operation (merge, cut, bone edits)

@@ -77,7 +77,7 @@ json partToJson(const Part& part) {
         bones["tails"].push_back(b.tail);
     }
 
-    return {
+    json out = {
         {"name", part.name},
         {"outline", jsonwrite::flatVec2s(part.outline)},
         {"mesh", std::move(mesh)},
@@ -94,6 +94,12 @@ json partToJson(const Part& part) {
         {"knownClosestBones", pairs(part.knownClosestBones)},
         {"boneNames", boneNamesJson(part.boneNames)},
     };
+    // Written only when set, so parts nobody painted keep their bytes.
+    if (!part.lockedBones.empty())
+        out["lockedBones"] = part.lockedBones;
+    if (part.weightsPainted)
+        out["weightsPainted"] = true;
+    return out;
 }
 
 namespace {
@@ -258,6 +264,14 @@ Part partFromJson(const json& object) {
                 fail("a bone name refers to a missing bone, or twice to one");
             part->boneNames[bone] = text(entry[1], "bone name");
         }
+    if (object.contains("lockedBones"))  // since issue 14
+        for (const json& entry : array(object, "lockedBones")) {
+            const auto bone = integer<BoneId>(entry, "locked bone");
+            if (!part->skeleton.hasBone(bone) || !part->lockedBones.insert(bone).second)
+                fail("a locked bone refers to a missing bone, or twice to one");
+        }
+    if (object.contains("weightsPainted"))  // since issue 14
+        part->weightsPainted = boolean(field(object, "weightsPainted"), "weightsPainted");
     return stored;
 }
 

@@ -129,6 +129,12 @@ std::vector<std::string> Part::validate() const {
             problems.add("A bone name is empty, repeated or names a missing bone.");
             break;
         }
+    for (BoneId bone : lockedBones)
+        if (!skeleton.hasBone(bone)) {
+            problems.add("Bone " + std::to_string(bone) +
+                         " is locked but the skeleton has no such bone.");
+            break;
+        }
     return problems.take();
 }
 

@@ -2,59 +2,48 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <unordered_map>
 
 #include "base/Error.h"
 #include "mesh/MeshAdjacency.h"
+#include "part/WeightLists.h"
+#include "pose/VertexNormals.h"
 
 namespace rigmesh {
 
-namespace {
-
-// Weights below this are dropped after a dab (far below the 1e-6 a sum may
-// be off by).
-constexpr double kDropBelow = 1e-9;
-
-double weightOf(const std::vector<std::pair<int, double>>& list, int bone) {
-    for (const auto& [b, w] : list)
-        if (b == bone)
-            return w;
+double brushFalloff(BrushFalloff falloff, double d) {
+    d = std::clamp(d, 0.0, 1.0);
+    switch (falloff) {
+        case BrushFalloff::Smooth:
+            return (1.0 - d * d) * (1.0 - d * d);
+        case BrushFalloff::Linear:
+            return 1.0 - d;
+        case BrushFalloff::Sharp:
+            return (1.0 - d) * (1.0 - d);
+        case BrushFalloff::Constant:
+            return 1.0;
+    }
     return 0.0;
 }
 
-// Sets `bone` to `target` in `list`, the other unlocked bones scaled to take
-// up the difference. False if that cannot be done (only locked bones left).
-bool setWeight(std::vector<std::pair<int, double>>& list, int bone, double target,
-               const std::vector<char>& lockedIndex) {
-    double lockedSum = 0.0, freeSum = 0.0;
-    for (const auto& [b, w] : list) {
-        if (b == bone)
-            continue;
-        (lockedIndex[b] ? lockedSum : freeSum) += w;
-    }
-    target = std::clamp(target, 0.0, 1.0 - lockedSum);
-    const double freeTarget = 1.0 - lockedSum - target;
-    if (freeSum <= 0.0 && (freeTarget > kDropBelow || target == weightOf(list, bone)))
-        return false;  // nothing unlocked to hand the rest to, or to take it from
-    std::map<int, double> out;
-    for (const auto& [b, w] : list)
-        if (b != bone)
-            out[b] = lockedIndex[b] ? w : (freeSum > 0.0 ? w * freeTarget / freeSum : 0.0);
-    out[bone] = target;
-    // Locked weights are kept bit for bit; by construction the weights sum
-    // to 1 up to rounding.
-    list.clear();
-    for (const auto& [b, w] : out)
-        if (w > kDropBelow)
-            list.emplace_back(b, w);
-    return true;
+WeightPainter::WeightPainter(const TriMesh& mesh) : mesh_(mesh) {}
+
+const std::vector<std::vector<int>>& WeightPainter::neighbours() {
+    if (neighbours_.empty() && mesh_.vertexCount() > 0)
+        neighbours_ = vertexNeighbours(mesh_);
+    return neighbours_;
 }
 
-}  // namespace
+const std::vector<Vec3>& WeightPainter::normals() {
+    if (normals_.empty() && mesh_.vertexCount() > 0)
+        normals_ = vertexNormals(mesh_);
+    return normals_;
+}
 
-DabResult paintWeights(Part& part, const WeightDab& dab) {
-    const Skeleton& skeleton = part.skeleton;
-    if (!skeleton.hasBone(dab.bone))
+namespace {
+
+void checkDab(const Part& part, const WeightDab& dab) {
+    if (!part.skeleton.hasBone(dab.bone))
         throw Error("The part has no bone " + std::to_string(dab.bone) + " to paint.");
     if (dab.locked.contains(dab.bone))
         throw Error("Bone " + std::to_string(dab.bone) + " is locked; unlock it to paint it.");
@@ -64,40 +53,57 @@ DabResult paintWeights(Part& part, const WeightDab& dab) {
         throw Error(
             "A brush needs a finite centre, a positive radius, and a strength and value "
             "between 0 and 1.");
+    if (dab.towardsViewer && (!dab.towardsViewer->allFinite() || dab.towardsViewer->norm() == 0.0))
+        throw Error("Front faces only needs a finite, non-zero view direction.");
     if (dab.mirror && part.mirror.size() != part.mesh.vertices.size())
         throw Error(
             "This part is not mirror symmetric any more (merged or cut), so X-mirror "
             "cannot paint it.");
-    const int bone = skeleton.indexOfBone(dab.bone);
-    std::vector<char> lockedIndex(skeleton.boneCount(), 0);
-    for (BoneId id : dab.locked)
-        if (skeleton.hasBone(id))
-            lockedIndex[skeleton.indexOfBone(id)] = 1;
+}
 
-    // The vertices under the brush (and their reflections) with their falloff.
-    std::map<int, double> influence;
-    auto gather = [&](const Vec3& centre) {
-        for (int v = 0; v < part.mesh.vertexCount(); ++v) {
-            const double d = (part.mesh.vertices[v] - centre).norm() / dab.radius;
-            if (d < 1.0) {
-                const double f = dab.strength * (1.0 - d * d) * (1.0 - d * d);
-                double& slot = influence[v];
-                slot = std::max(slot, f);
-            }
+}  // namespace
+
+DabResult WeightPainter::paint(Part& part, const WeightDab& dab) {
+    if (part.mesh.vertexCount() != mesh_.vertexCount())
+        throw Error("The weight painter was made for another mesh.");
+    checkDab(part, dab);
+    const Skeleton& skeleton = part.skeleton;
+    const int bone = skeleton.indexOfBone(dab.bone);
+    const std::vector<char> lockedIndex = lockedBoneIndices(skeleton, dab.locked);
+
+    // The vertices under the brush (and under its reflection through the
+    // sketch plane z = 0) with their strength.
+    std::unordered_map<int, double> influence;
+    auto gather = [&](const Vec3& centre, const std::optional<Vec3>& towardsViewer) {
+        const double r2 = dab.radius * dab.radius;
+        const std::vector<Vec3>* normal = towardsViewer ? &normals() : nullptr;
+        for (int v = 0; v < mesh_.vertexCount(); ++v) {
+            const double d2 = (mesh_.vertices[v] - centre).squaredNorm();
+            if (d2 >= r2)
+                continue;
+            if (normal && (*normal)[v].dot(*towardsViewer) <= 0.0)
+                continue;  // faces away: the far side of the limb
+            const double f = dab.strength * brushFalloff(dab.falloff, std::sqrt(d2) / dab.radius);
+            double& slot = influence[v];
+            slot = std::max(slot, f);
         }
     };
-    gather(dab.centre);
-    if (dab.mirror)
-        gather(Vec3(dab.centre.x(), dab.centre.y(), -dab.centre.z()));
+    gather(dab.centre, dab.towardsViewer);
+    if (dab.mirror) {
+        std::optional<Vec3> mirroredView;
+        if (dab.towardsViewer)
+            mirroredView =
+                Vec3(dab.towardsViewer->x(), dab.towardsViewer->y(), -dab.towardsViewer->z());
+        gather(Vec3(dab.centre.x(), dab.centre.y(), -dab.centre.z()), mirroredView);
+    }
 
-    std::vector<std::vector<int>> neighbours;
-    if (dab.mode == BrushMode::Smooth)
-        neighbours = vertexNeighbours(part.mesh);
+    // Every target from the weights as the dab found them (Smooth reads the
+    // neighbours), then every change: no vertex sees another's new value.
     auto& weights = part.weights.perVertex;
-    const std::vector<std::vector<std::pair<int, double>>> old = weights;
-    DabResult result;
+    std::vector<std::pair<int, double>> targets;
+    targets.reserve(influence.size());
     for (const auto& [v, f] : influence) {
-        const double w = weightOf(old[v], bone);
+        const double w = weightOfIndex(weights[v], bone);
         double target = w;
         switch (dab.mode) {
             case BrushMode::Add:
@@ -110,81 +116,38 @@ DabResult paintWeights(Part& part, const WeightDab& dab) {
                 target = w + f * (dab.value - w);
                 break;
             case BrushMode::Smooth: {
+                const std::vector<int>& around = neighbours()[v];
                 double mean = 0.0;
-                for (int n : neighbours[v])
-                    mean += weightOf(old[n], bone);
-                mean /= std::max<std::size_t>(neighbours[v].size(), 1);
+                for (int n : around)
+                    mean += weightOfIndex(weights[n], bone);
+                mean /= static_cast<double>(std::max<std::size_t>(around.size(), 1));
                 target = w + f * (mean - w);
                 break;
             }
         }
-        if (target == w)
-            continue;
-        std::vector<std::pair<int, double>> updated = old[v];
-        if (!setWeight(updated, bone, target, lockedIndex)) {
+        if (target != w)
+            targets.emplace_back(v, target);
+    }
+    std::sort(targets.begin(), targets.end());
+
+    DabResult result;
+    for (const auto& [v, target] : targets) {
+        std::vector<std::pair<int, double>> updated = weights[v];
+        if (!setWeightKeepingLocks(updated, bone, target, lockedIndex)) {
             ++result.skippedLocked;
             continue;
         }
-        if (updated == old[v])
+        if (updated == weights[v])
             continue;
         result.changed.push_back(v);
-        result.before.push_back(old[v]);
-        result.after.push_back(updated);
         weights[v] = std::move(updated);
     }
     return result;
 }
 
-namespace {
-
-// Keeps the entries `keep` says yes to (always the largest), renormalised.
-template <typename Keep>
-int filterWeights(Part& part, Keep&& keep) {
-    int changed = 0;
-    for (auto& list : part.weights.perVertex) {
-        if (list.empty())
-            continue;
-        std::vector<std::pair<int, double>> sorted = list;
-        std::sort(sorted.begin(), sorted.end(),
-                  [](const auto& a, const auto& b) { return a.second > b.second; });
-        std::vector<std::pair<int, double>> kept;
-        for (std::size_t rank = 0; rank < sorted.size(); ++rank)
-            if (rank == 0 || keep(sorted[rank], rank))
-                kept.push_back(sorted[rank]);
-        double sum = 0.0;
-        for (const auto& entry : kept)
-            sum += entry.second;
-        if (kept.size() == list.size() && std::abs(sum - 1.0) <= 1e-12)
-            continue;  // already as asked: left bit for bit
-        for (auto& entry : kept)
-            entry.second /= sum;
-        std::sort(kept.begin(), kept.end());
-        if (kept != list) {
-            list = std::move(kept);
-            ++changed;
-        }
-    }
-    return changed;
-}
-
-}  // namespace
-
-int normalizeAllWeights(Part& part) {
-    return filterWeights(part, [](const auto&, std::size_t) { return true; });
-}
-
-int cleanWeights(Part& part, double threshold) {
-    if (!(threshold >= 0.0) || !(threshold < 1.0))
-        throw Error("The clean threshold must be at least 0 and below 1.");
-    return filterWeights(part,
-                         [&](const auto& entry, std::size_t) { return entry.second >= threshold; });
-}
-
-int limitWeightInfluences(Part& part, int influences) {
-    if (influences < 1)
-        throw Error("A vertex needs at least one influence.");
-    return filterWeights(
-        part, [&](const auto&, std::size_t rank) { return static_cast<int>(rank) < influences; });
+DabResult paintWeights(Part& part, const WeightDab& dab) {
+    WeightPainter painter(part.mesh);
+    return painter.paint(part, dab);
 }
 
 }  // namespace rigmesh

@@ -1,13 +1,16 @@
 // Painting skin weights (issue 14 item 3), as Blender's weight paint and
 // Maya's Paint Skin Weights do: a dab raises (Add), lowers (Subtract), sets
 // (Replace) or evens out (Smooth) one bone's weight within a radius, with a
-// smooth falloff; the vertex's other unlocked bones take up the difference
+// chosen falloff; the vertex's other unlocked bones take up the difference
 // so its weights keep summing to 1 (auto-normalise); locked bones never
 // change, and a vertex whose other bones are all locked is skipped, never
 // divided by zero. X-mirror paints the reflection through the sketch plane
-// too (Part::mirror).
+// too (Part::mirror). "Front faces only" leaves out vertices whose normal
+// turns away from the viewer, so a brush never paints through a limb onto
+// its far side (Blender's option of the same name).
 #pragma once
 
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -17,42 +20,61 @@ namespace rigmesh {
 
 enum class BrushMode { Add, Subtract, Replace, Smooth };
 
+// How a dab's strength falls off from its centre (d = distance / radius):
+// Smooth (1 - d^2)^2, Linear 1 - d, Sharp (1 - d)^2, Constant 1.
+enum class BrushFalloff { Smooth, Linear, Sharp, Constant };
+
 struct WeightDab {
     BoneId bone = 0;
     BrushMode mode = BrushMode::Add;
+    BrushFalloff falloff = BrushFalloff::Smooth;
     Vec3 centre = Vec3::Zero();  // in the part's coordinates
     double radius = 0.1;
     double strength = 0.5;  // 0..1, at the centre
     double value = 1.0;     // Replace: the weight painted towards
     bool mirror = false;
+    // Front faces only: the direction towards the viewer (any length > 0),
+    // in the same coordinates as `centre`; vertices whose rest normal points
+    // away from it are not painted. None: paint through.
+    std::optional<Vec3> towardsViewer;
     std::set<BoneId> locked;
 };
 
 struct DabResult {
-    // The vertices whose weights changed, with their weights before and after.
+    // The vertices whose weights changed, ascending.
     std::vector<int> changed;
-    std::vector<std::vector<std::pair<int, double>>> before, after;
     // Vertices left as they were: every other bone locked, or no other bone
     // to hand the difference to (subtracting from a vertex with one bone).
     int skippedLocked = 0;
 };
 
-// Paints one dab into `part` (its weights only). Throws Error for an unknown
-// or locked bone, a radius or strength out of range, or a mirror request on
-// a part without a mirror map.
-DabResult paintWeights(Part& part, const WeightDab& dab);
+// The brush's strength at distance d (in radii, 0..1) from its centre.
+double brushFalloff(BrushFalloff falloff, double d);
 
-// Whole-part clean-ups, as Blender's Weights menu has them (issue 14 item
-// 3). Each returns how many vertices changed; a vertex already as asked is
-// left bit for bit.
-// Normalize All: every vertex's weights rescaled to sum to 1 (after paint
-// or imports that left them off).
-int normalizeAllWeights(Part& part);
-// Clean: weights below `threshold` dropped, the rest renormalised (a vertex
-// never loses its largest weight).
-int cleanWeights(Part& part, double threshold);
-// Limit Total: at most `influences` bones per vertex (the largest kept),
-// renormalised; what glTF's four influences need.
-int limitWeightInfluences(Part& part, int influences);
+// Paints dabs into parts of one mesh, keeping what every dab of a stroke
+// needs (the vertex neighbours for Smooth, the rest normals for front faces
+// only) so that a dab costs time in proportion to the vertices it touches
+// plus one pass over the positions (geometry-central's solver-class idiom).
+class WeightPainter {
+  public:
+    // `mesh` must outlive the painter and be the mesh of every part painted.
+    explicit WeightPainter(const TriMesh& mesh);
+
+    // Paints one dab into `part` (its weights only). Throws Error for an
+    // unknown or locked bone, a radius or strength out of range, a mirror
+    // request on a part without a mirror map, or a part of another mesh.
+    DabResult paint(Part& part, const WeightDab& dab);
+
+  private:
+    const std::vector<std::vector<int>>& neighbours();
+    const std::vector<Vec3>& normals();
+
+    const TriMesh& mesh_;
+    std::vector<std::vector<int>> neighbours_;
+    std::vector<Vec3> normals_;
+};
+
+// One dab on its own (builds what it needs each call).
+DabResult paintWeights(Part& part, const WeightDab& dab);
 
 }  // namespace rigmesh

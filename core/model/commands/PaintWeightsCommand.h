@@ -1,41 +1,50 @@
-// One weight paint dab (issue 14 item 3) as an undoable step: the engine dab
-// (part/WeightPaint.h) runs in create(), so a refused dab (locked or unknown
-// bone, bad brush) throws rigmesh::Error and changes nothing. Undo gives the
-// part's weights back exactly. The recipe step is "paint_weights".
+// One weight paint stroke (issue 14 item 3) as one undoable step: its dabs
+// (part/WeightPaint.h) painted in order on a copy in create(), so a refused
+// dab (locked or unknown bone, bad brush) throws rigmesh::Error and changes
+// nothing. The part's locked bones are kept as well as the dabs' own. Undo
+// gives the weights back exactly; a stroke that changed weights marks them
+// painted (Part::weightsPainted). The recipe step is "paint_weights": one
+// dab's "center" and "radius", or a stroke's "dabs".
 #pragma once
 
 #include <QCoreApplication>
-#include <QUndoCommand>
 #include <memory>
+#include <vector>
 
-#include "model/Document.h"
-#include "model/recipe/RecipeStepSource.h"
+#include "model/commands/SkinningEditCommand.h"
 #include "part/WeightPaint.h"
 
 namespace rigmesh::model {
 
-class PaintWeightsCommand : public QUndoCommand, public RecipeStepSource {
+class PaintWeightsCommand : public SkinningEditCommand {
     Q_DECLARE_TR_FUNCTIONS(PaintWeightsCommand)
   public:
-    // `dab.centre` is in document coordinates.
+    // Dab centres and view directions (WeightDab::towardsViewer) are in
+    // document coordinates. Every dab of a stroke shares everything but its
+    // centre and radius (Error otherwise); a stroke has at least one dab.
     static std::unique_ptr<PaintWeightsCommand> create(Document& document, PartId part,
-                                                       const WeightDab& dab);
+                                                       std::vector<WeightDab> dabs);
+    static std::unique_ptr<PaintWeightsCommand> create(Document& document, PartId part,
+                                                       const WeightDab& dab) {
+        return create(document, part, std::vector<WeightDab>{dab});
+    }
 
-    void redo() override;
-    void undo() override;
-    nlohmann::json recipeStep() const override;
-    int changedVertices() const { return changed_; }
+    // Vertex visits left as they were: nothing unlocked to take up the change.
     int skippedVertices() const { return skipped_; }
 
   private:
-    PaintWeightsCommand(Document& document, PartId part, const WeightDab& dab);
+    PaintWeightsCommand(Document& document, PartId part)
+        : SkinningEditCommand(document, part, "paint") {}
+    nlohmann::json step(const std::vector<WeightDab>& dabs) const;
 
-    Document& document_;
-    PartId id_;
-    int index_;
-    WeightDab dab_;  // centre in document coordinates
-    std::shared_ptr<const Part> before_, after_;
-    int changed_ = 0, skipped_ = 0;
+    int skipped_ = 0;
 };
+
+// The recipe's names of brush modes and falloffs ("add", "smooth", ...), and
+// back (std::nullopt for an unknown name).
+const char* brushModeName(BrushMode mode);
+const char* brushFalloffName(BrushFalloff falloff);
+std::optional<BrushMode> brushModeNamed(const std::string& name);
+std::optional<BrushFalloff> brushFalloffNamed(const std::string& name);
 
 }  // namespace rigmesh::model

@@ -1,20 +1,19 @@
-// A whole-part weight clean-up (Normalize All, Clean, Limit Total; issue 14
-// item 3) as one undoable step; the recipe steps normalize_weights,
-// clean_weights and limit_weights. The engine runs in the factory, so a bad
-// argument throws rigmesh::Error and changes nothing.
+// A whole-part weight clean-up (Normalize All, Clean, Limit Total, Smooth
+// All; issue 14 item 3) as one undoable step, keeping the part's locked
+// bones; the recipe steps normalize_weights, clean_weights, limit_weights
+// and smooth_weights. A clean-up that changes weights marks them painted
+// (Part::weightsPainted), so a rebuild asks before discarding them.
 #pragma once
 
 #include <QCoreApplication>
-#include <QUndoCommand>
 #include <memory>
-#include <nlohmann/json.hpp>
 
-#include "model/Document.h"
-#include "model/recipe/RecipeStepSource.h"
+#include "model/commands/SkinningEditCommand.h"
+#include "part/WeightCleanup.h"
 
 namespace rigmesh::model {
 
-class WeightCleanupCommand : public QUndoCommand, public RecipeStepSource {
+class WeightCleanupCommand : public SkinningEditCommand {
     Q_DECLARE_TR_FUNCTIONS(WeightCleanupCommand)
   public:
     static std::unique_ptr<WeightCleanupCommand> normalizeAll(Document& document, PartId part);
@@ -22,21 +21,15 @@ class WeightCleanupCommand : public QUndoCommand, public RecipeStepSource {
                                                        double threshold);
     static std::unique_ptr<WeightCleanupCommand> limitTotal(Document& document, PartId part,
                                                             int influences);
-
-    void redo() override;
-    void undo() override;
-    nlohmann::json recipeStep() const override;
-    int changedVertices() const { return changed_; }
+    static std::unique_ptr<WeightCleanupCommand> smoothAll(Document& document, PartId part,
+                                                           const SmoothAllOptions& options);
 
   private:
-    WeightCleanupCommand(Document& document, PartId part);
-
-    Document& document_;
-    PartId id_;
-    int index_;
-    nlohmann::json step_;
-    std::shared_ptr<const Part> before_, after_;
-    int changed_ = 0;
+    WeightCleanupCommand(Document& document, PartId part)
+        : SkinningEditCommand(document, part, "clean up") {}
+    // Runs `edit` on a copy and records the result with its recipe step.
+    template <typename Edit>
+    void apply(Edit&& edit, nlohmann::json step, const QString& text);
 };
 
 }  // namespace rigmesh::model

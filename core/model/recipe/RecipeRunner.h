@@ -54,15 +54,25 @@
 //                 point of it nearest to "at" (default: its middle) (3.3)
 //   delete_bone   "part" and "bone" or "at": the bone's joints merge at its
 //                 middle (3.3)
-//   paint_weights "part", "bone" (id), "center": [x, y, z] (document
-//                 coordinates), "radius"; optional "mode": "add" (default) |
-//                 "subtract" | "replace" | "smooth", "strength" (0..1, default
-//                 0.5), "value" (replace: the weight painted towards, default
-//                 1), "mirror" (X-mirror through the sketch plane), "locked":
-//                 [bone ids] (issue 14)
+//   paint_weights "part", "bone" (id), and either "center": [x, y, z]
+//                 (document coordinates) with "radius" (one dab) or "dabs":
+//                 [{"center", "radius"}, ...] (a stroke: one undo step);
+//                 optional "mode": "add" (default) | "subtract" | "replace"
+//                 | "smooth", "falloff": "smooth" (default) | "linear" |
+//                 "sharp" | "constant", "strength" (0..1, default 0.5),
+//                 "value" (replace: the weight painted towards, default 1),
+//                 "mirror" (X-mirror through the sketch plane),
+//                 "frontFacesOnly": [x, y, z] (the direction towards the
+//                 viewer: vertices facing away are not painted), "locked":
+//                 [bone ids] (besides the part's locked bones) (issue 14)
 //   normalize_weights "part"; clean_weights "part", optional "threshold"
 //                 (default 0.01); limit_weights "part", optional "influences"
-//                 (default 4): Blender's Normalize All, Clean, Limit Total
+//                 (default 4); smooth_weights "part", optional "factor" (0..1,
+//                 default 0.5), "iterations" (1..100, default 1): Blender's
+//                 Normalize All, Clean, Limit Total and Smooth, keeping
+//                 locked bones
+//   lock_bone, unlock_bone "part", "bone": painting and the clean-ups keep
+//                 a locked bone's weights
 //   clip_settings "part", optional "frameRate", "interpolation" ("linear" |
 //                 "smooth"), "playback" ("hold" | "loop")
 //

@@ -18,7 +18,6 @@
 #include "model/commands/MergePartsCommand.h"
 #include "model/commands/MoveKeyCommand.h"
 #include "model/commands/MovePartCommand.h"
-#include "model/commands/PaintWeightsCommand.h"
 #include "model/commands/RebuildPartCommand.h"
 #include "model/commands/RenamePartCommand.h"
 #include "model/commands/ResetPoseCommand.h"
@@ -26,9 +25,10 @@
 #include "model/commands/SetJointPinnedCommand.h"
 #include "model/commands/SetPartVisibleCommand.h"
 #include "model/commands/SetPoseCommand.h"
-#include "model/commands/WeightCleanupCommand.h"
 #include "model/recipe/RecipeJson.h"
 #include "model/recipe/RecipePartRef.h"
+#include "model/recipe/RecipeStepKind.h"
+#include "model/recipe/RecipeWeightSteps.h"
 #include "sketch/Sketch.h"
 
 namespace rigmesh::model::recipe {
@@ -36,47 +36,6 @@ namespace rigmesh::model::recipe {
 namespace {
 
 using nlohmann::json;
-
-struct Context {
-    Document& document;
-    const json& step;
-    const std::filesystem::path& baseDirectory;
-    const StepOptions& options;
-
-    bool has(const char* key) const { return step.contains(key); }
-    const json& required(const char* key) const {
-        if (!step.contains(key))
-            throw Error(std::string("the step needs \"") + key + "\"");
-        return step[key];
-    }
-    PartId part() const { return resolvePart(document, required("part")); }
-    const PartNode& node(PartId id) const { return document.part(id); }
-    double number(const char* key) const {
-        return readNumber(required(key), std::string("\"") + key + "\"");
-    }
-    // A joint of the part, by the step's "joint".
-    JointId joint(const PartNode& node) const {
-        const JointId joint = readJointId(required("joint"), "\"joint\"");
-        checkJoint(node, joint);
-        return joint;
-    }
-    static void checkJoint(const PartNode& node, JointId joint) {
-        if (!node.part || !node.part->skeleton.hasJoint(joint))
-            throw Error(partLabel(node) + " has no joint " + std::to_string(joint));
-    }
-};
-
-using Builder = std::function<StepCommand(const Context&)>;
-
-struct StepKind {
-    std::set<std::string> fields;  // besides "command" and "comment"
-    Builder build;
-};
-
-template <typename Command, typename... Args>
-StepCommand make(PartId part, Args&&... args) {
-    return {std::make_unique<Command>(std::forward<Args>(args)...), part, {}};
-}
 
 StepCommand sketch(const Context& c) {
     if (c.has("stroke") == c.has("points"))
@@ -314,73 +273,12 @@ StepCommand boneEdit(const Context& c, bool split) {
     return {std::move(command), id, detail, std::move(stats)};
 }
 
-StepCommand paintWeightsStep(const Context& c) {
-    const PartId id = c.part();
-    const PartNode& node = c.node(id);
-    WeightDab dab;
-    dab.bone = readJointId(c.required("bone"), "\"bone\"");
-    if (!node.part || !node.part->skeleton.hasBone(dab.bone))
-        throw Error(partLabel(node) + " has no bone " + std::to_string(dab.bone));
-    const std::string mode = c.has("mode") ? readText(c.step["mode"], "\"mode\"") : "add";
-    const std::map<std::string, BrushMode> modes{{"add", BrushMode::Add},
-                                                 {"subtract", BrushMode::Subtract},
-                                                 {"replace", BrushMode::Replace},
-                                                 {"smooth", BrushMode::Smooth}};
-    if (!modes.contains(mode))
-        throw Error("\"mode\" must be \"add\", \"subtract\", \"replace\" or \"smooth\"");
-    dab.mode = modes.at(mode);
-    dab.centre = readVec3(c.required("center"), "\"center\"");
-    dab.radius = c.number("radius");
-    dab.strength = c.has("strength") ? c.number("strength") : 0.5;
-    if (c.has("value"))
-        dab.value = c.number("value");
-    dab.mirror = c.has("mirror") && readBool(c.step["mirror"], "\"mirror\"");
-    if (c.has("locked")) {
-        if (!c.step["locked"].is_array())
-            throw Error("\"locked\" must be a list of bone ids");
-        for (const json& bone : c.step["locked"])
-            dab.locked.insert(readJointId(bone, "\"locked\""));
-    }
-    auto command = PaintWeightsCommand::create(c.document, id, dab);
-    std::ostringstream detail;
-    detail << command->changedVertices() << " vertices changed";
-    if (command->skippedVertices() > 0)
-        detail << ", " << command->skippedVertices()
-               << " left as they were (no unlocked bone to take up the difference)";
-    return {std::move(command), id, detail.str()};
-}
-
 const std::map<std::string, StepKind>& stepKinds() {
-    static const std::map<std::string, StepKind> kinds = {
+    static const std::map<std::string, StepKind> kinds = withWeightSteps({
         {"sketch", {{"stroke", "points", "name", "placement", "options"}, sketch}},
         {"import", {{"file"}, importFile}},
         {"merge", {{"part", "into", "mode", "joint", "target", "reskin"}, merge}},
         {"cut", {{"part", "plane", "stroke", "view", "style", "names"}, cut}},
-        {"normalize_weights",
-         {{"part"},
-          [](const Context& c) {
-              const PartId id = c.part();
-              return StepCommand{WeightCleanupCommand::normalizeAll(c.document, id), id, {}};
-          }}},
-        {"clean_weights",
-         {{"part", "threshold"},
-          [](const Context& c) {
-              const PartId id = c.part();
-              const double threshold = c.has("threshold") ? c.number("threshold") : 0.01;
-              return StepCommand{WeightCleanupCommand::clean(c.document, id, threshold), id, {}};
-          }}},
-        {"limit_weights",
-         {{"part", "influences"},
-          [](const Context& c) {
-              const PartId id = c.part();
-              const int influences =
-                  c.has("influences") ? static_cast<int>(c.number("influences")) : 4;
-              return StepCommand{
-                  WeightCleanupCommand::limitTotal(c.document, id, influences), id, {}};
-          }}},
-        {"paint_weights",
-         {{"part", "bone", "mode", "center", "radius", "strength", "value", "mirror", "locked"},
-          paintWeightsStep}},
         {"split_bone",
          {{"part", "bone", "at"}, [](const Context& c) { return boneEdit(c, true); }}},
         {"delete_bone",
@@ -465,7 +363,7 @@ const std::map<std::string, StepKind>& stepKinds() {
               return make<MoveKeyCommand>(id, c.document, id, c.number("from"), c.number("to"));
           }}},
         {"clip_settings", {{"part", "frameRate", "interpolation", "playback"}, clipSettings}},
-    };
+    });
     return kinds;
 }
 

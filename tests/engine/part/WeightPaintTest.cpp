@@ -4,19 +4,15 @@
 #include <gtest/gtest.h>
 
 #include "SharedSketchPart.h"
+#include "PartWeightOf.h"
 #include "base/Error.h"
+#include "part/WeightCleanup.h"
 #include "part/WeightPaint.h"
 
 namespace rigmesh {
 namespace {
 
-double weightOf(const Part& part, int v, BoneId bone) {
-    const int index = part.skeleton.indexOfBone(bone);
-    for (const auto& [b, w] : part.weights.perVertex[v])
-        if (b == index)
-            return w;
-    return 0.0;
-}
+using testsupport::weightOf;
 
 struct Painted {
     Part part;

@@ -1,0 +1,69 @@
+#include "part/WeightLists.h"
+
+#include <algorithm>
+#include <map>
+
+namespace rigmesh {
+
+double weightOfIndex(const WeightList& list, int bone) {
+    for (const auto& [b, w] : list)
+        if (b == bone)
+            return w;
+    return 0.0;
+}
+
+std::vector<char> lockedBoneIndices(const Skeleton& skeleton, const std::set<BoneId>& locked) {
+    std::vector<char> index(skeleton.boneCount(), 0);
+    for (BoneId id : locked)
+        if (skeleton.hasBone(id))
+            index[skeleton.indexOfBone(id)] = 1;
+    return index;
+}
+
+bool setWeightKeepingLocks(WeightList& list, int bone, double target,
+                           const std::vector<char>& lockedIndex) {
+    double lockedSum = 0.0, freeSum = 0.0;
+    for (const auto& [b, w] : list) {
+        if (b == bone)
+            continue;
+        (lockedIndex[b] ? lockedSum : freeSum) += w;
+    }
+    target = std::clamp(target, 0.0, std::max(0.0, 1.0 - lockedSum));
+    const double freeTarget = 1.0 - lockedSum - target;
+    if (freeSum <= 0.0 && (freeTarget > kDroppedWeight || target == weightOfIndex(list, bone)))
+        return false;  // nothing unlocked to hand the rest to, or to take it from
+    std::map<int, double> out;
+    for (const auto& [b, w] : list)
+        if (b != bone)
+            out[b] = lockedIndex[b] ? w : (freeSum > 0.0 ? w * freeTarget / freeSum : 0.0);
+    out[bone] = target;
+    // By construction the weights sum to 1 up to rounding.
+    list.clear();
+    for (const auto& [b, w] : out)
+        if (w > kDroppedWeight || (lockedIndex[b] && w > 0.0))
+            list.emplace_back(b, w);
+    return true;
+}
+
+bool normaliseKeepingLocks(WeightList& list, const std::vector<char>& lockedIndex) {
+    double lockedSum = 0.0, freeSum = 0.0;
+    for (const auto& [b, w] : list)
+        (lockedIndex[b] ? lockedSum : freeSum) += w;
+    const double room = std::max(0.0, 1.0 - lockedSum);
+    if (freeSum <= 0.0)
+        return room <= kDroppedWeight;  // only locked weights: nothing to rescale
+    WeightList out;
+    out.reserve(list.size());
+    for (const auto& [b, w] : list) {
+        const double scaled = lockedIndex[b] ? w : w * room / freeSum;
+        if (scaled > kDroppedWeight || (lockedIndex[b] && scaled > 0.0))
+            out.emplace_back(b, scaled);
+    }
+    if (out.empty())
+        return false;
+    std::sort(out.begin(), out.end());
+    list = std::move(out);
+    return true;
+}
+
+}  // namespace rigmesh

@@ -1,0 +1,34 @@
+#include "model/commands/SkinningEditCommand.h"
+
+#include <string>
+
+#include "base/Error.h"
+
+namespace rigmesh::model {
+
+SkinningEditCommand::SkinningEditCommand(Document& document, PartId part, const char* what)
+    : document_(document),
+      id_(part),
+      index_(document.indexOf(part)),
+      name_(document.part(part).name),
+      before_(document.part(part).part) {
+    if (!before_ || before_->skeleton.boneCount() == 0)
+        throw Error(std::string("The part has no skeleton, so it has no weights to ") + what + ".");
+}
+
+void SkinningEditCommand::setResult(std::shared_ptr<const Part> after, nlohmann::json step,
+                                    int changed) {
+    after_ = std::move(after);
+    step_ = std::move(step);
+    changed_ = changed;
+}
+
+void SkinningEditCommand::redo() {
+    document_.replaceSkinning(id_, after_);
+}
+
+void SkinningEditCommand::undo() {
+    document_.replaceSkinning(id_, before_);
+}
+
+}  // namespace rigmesh::model

@@ -1,0 +1,51 @@
+// A studio window with one new document, for tests that drive it like a
+// person (StudioTestSupport.h has the mouse helpers).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <memory>
+
+#include "DocumentView.h"
+#include "EmbeddedExamples.h"
+#include "MainWindow.h"
+#include "StudioTestSupport.h"
+#include "model/Document.h"
+#include "model/commands/CreatePartCommand.h"
+#include "sketch/Sketch.h"
+
+namespace rigmesh::test {
+
+class StudioFixture : public testing::Test {
+  protected:
+    void SetUp() override {
+        ASSERT_TRUE(recovery.isValid());
+        window = std::make_unique<widgets::MainWindow>(recovery.path());
+        window->resize(1200, 800);
+        window->newDocument();
+        settle(window.get());
+    }
+    widgets::Viewport* viewport() const { return window->currentView()->viewport(); }
+    model::Document* document() const { return window->currentDocument(); }
+    // The example biped as a part, framed: its id.
+    model::PartId addExampleBiped() {
+        const Sketch sketch = parseSketchJson(resources::exampleSketchJson(), "example.json");
+        document()->undoStack()->push(
+            model::CreatePartCommand::create(*document(), sketch.points, "biped").release());
+        viewport()->frameAll();
+        return document()->parts().back().id;
+    }
+    // Where a point of the part's rest shape (at its placement) is on screen.
+    QPointF onScreen(const Vec3& p) const {
+        const QVector3D s = viewport()->camera().project(
+            QVector3D(float(p.x()), float(p.y()), float(p.z())), QSizeF(viewport()->size()));
+        return {s.x(), s.y()};
+    }
+
+    QTemporaryDir recovery;
+    std::unique_ptr<widgets::MainWindow> window;
+};
+
+}  // namespace rigmesh::test

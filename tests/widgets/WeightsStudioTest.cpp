@@ -1,0 +1,229 @@
+// The studio's weight inspection and editing (issue 14): the Weights panel
+// lists bones and locks them (a locked bone is not painted), a click pins a
+// vertex's weights, Check Rig lists and selects what it finds, and a
+// rebuild asks before it discards painted weights.
+#include <QAction>
+#include <QDockWidget>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTableWidget>
+#include <QTreeWidget>
+
+#include "StudioFixture.h"
+#include "model/DocumentFile.h"
+#include "model/recipe/RecipeRunner.h"
+#include "panels/PropertiesPanel.h"
+#include "panels/WeightsPanel.h"
+
+namespace rigmesh {
+namespace {
+
+using test::drag;
+
+class WeightsStudio : public test::StudioFixture {
+  protected:
+    // The leaf joint farthest sideways (a hand) and the bone ending there.
+    JointId hand() const {
+        const Skeleton& skeleton = part().skeleton;
+        JointId best = kNoJoint;
+        double side = -1;
+        for (const Joint& joint : skeleton.joints())
+            if (skeleton.degree(joint.id) == 1 && std::abs(joint.position.x()) > side) {
+                side = std::abs(joint.position.x());
+                best = joint.id;
+            }
+        return best;
+    }
+    // The joint the hand's bone starts at: the bone ending there (the upper
+    // arm) is painted onto the forearm, where it has room to grow.
+    JointId shoulder() const {
+        for (const Bone& bone : part().skeleton.bones())
+            if (bone.tail == hand())
+                return bone.head;
+        return kNoJoint;
+    }
+    const Part& part() const { return *document()->parts().front().part; }
+    // A stroke from the hand inwards along the arm, in front of the sketch plane.
+    std::vector<QPointF> armStroke() const {
+        const Vec3 h = part().skeleton.joint(hand()).position;
+        const QPointF p = onScreen(Vec3(h.x(), h.y(), 0.2));
+        const double inward = h.x() < 0.0 ? 1.0 : -1.0;
+        std::vector<QPointF> stroke;
+        for (int i = 0; i <= 12; ++i)
+            stroke.emplace_back(p.x() + inward * 5 * i, p.y());
+        return stroke;
+    }
+    widgets::WeightsPanel* panel() const { return window->weightsPanel(); }
+    QString status() const { return window->statusBar()->currentMessage(); }
+};
+
+TEST_F(WeightsStudio, LockingABoneInTheWeightsPanelStopsItsPaintUntilUnlocked) {
+    const model::PartId biped = addExampleBiped();
+    document()->setSelection({biped, shoulder()});
+    QTest::qWait(20);
+    QTableWidget* bones = panel()->bonesTable();
+    ASSERT_EQ(bones->rowCount(), part().skeleton.boneCount());
+    const BoneId bone = *boneForJoint(part().skeleton, shoulder());
+    int row = -1;
+    for (int r = 0; r < bones->rowCount(); ++r)
+        if (bones->item(r, 0)->data(Qt::UserRole).toUInt() == bone)
+            row = r;
+    ASSERT_GE(row, 0);
+    EXPECT_TRUE(bones->item(row, 0)->isSelected()) << "the selected joint's bone is current";
+    // Tick its lock box: one undo step.
+    const int steps = document()->undoStack()->count();
+    bones->item(row, 2)->setCheckState(Qt::Checked);
+    EXPECT_EQ(document()->undoStack()->count(), steps + 1);
+    EXPECT_TRUE(part().lockedBones.contains(bone));
+    // Painting it now changes nothing and says why.
+    const QByteArray before = model::DocumentFile::toBytes(*document());
+    window->activatePaintTool();
+    QTest::qWait(20);
+    drag(viewport(), armStroke());
+    EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
+    EXPECT_TRUE(status().contains(QStringLiteral("locked"))) << status().toStdString();
+    // Undo unlocks it (the box follows); the stroke then paints.
+    document()->undoStack()->undo();
+    QTest::qWait(20);
+    EXPECT_FALSE(part().lockedBones.contains(bone));
+    EXPECT_EQ(panel()->bonesTable()->item(row, 2)->checkState(), Qt::Unchecked);
+    drag(viewport(), armStroke());
+    EXPECT_EQ(document()->undoStack()->count(), steps + 1) << status().toStdString();
+    EXPECT_TRUE(part().weightsPainted);
+    // Clicking another bone's row selects its joint (the painted bone).
+    const int other = row == 0 ? 1 : 0;
+    panel()->bonesTable()->cellClicked(other, 0);
+    EXPECT_EQ(document()->selection().joint,
+              part()
+                  .skeleton.bone(panel()->bonesTable()->item(other, 0)->data(Qt::UserRole).toUInt())
+                  .tail);
+    // For the docs: a vertex pinned (the paint tool's Ctrl + click), the panel shown.
+    drag(viewport(), {armStroke()[4]}, Qt::ControlModifier);
+    for (auto* dock : window->findChildren<QDockWidget*>())
+        if (dock->objectName() == QStringLiteral("weightsDock"))
+            dock->raise();
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_weights_panel.png"));
+}
+
+TEST_F(WeightsStudio, ClickingAVertexWithAWeightViewOnPinsItsWeightsInThePanel) {
+    const model::PartId biped = addExampleBiped();
+    window->activateSelectTool();
+    viewport()->setWeightView(widgets::WeightView::DominantBone);
+    QTest::qWait(20);
+    const QPointF at = armStroke()[6];
+    const auto hit = viewport()->surfaceAt(at);
+    ASSERT_TRUE(hit.has_value());
+    drag(viewport(), {at});
+    ASSERT_TRUE(viewport()->inspectedVertex().has_value());
+    EXPECT_EQ(viewport()->inspectedVertex()->part, biped);
+    EXPECT_EQ(viewport()->inspectedVertex()->vertex, hit->vertex);
+    QTableWidget* table = panel()->vertexTable();
+    const auto& weights = part().weights.perVertex[hit->vertex];
+    ASSERT_EQ(table->rowCount(), static_cast<int>(weights.size()));
+    double sum = 0.0;
+    double previous = 2.0;
+    for (int r = 0; r < table->rowCount(); ++r) {
+        const double w = table->item(r, 1)->text().toDouble();
+        EXPECT_LE(w, previous) << "largest first";
+        previous = w;
+        sum += w;
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-3);
+    // The paint tool's Ctrl + click samples: pinned, and the Replace weight is
+    // the selected bone's weight there.
+    document()->setSelection({biped, hand()});
+    window->activatePaintTool();
+    QTest::qWait(20);
+    const QPointF other = armStroke()[0];
+    drag(viewport(), {other}, Qt::ControlModifier);
+    const auto sampled = viewport()->surfaceAt(other);
+    ASSERT_TRUE(sampled.has_value());
+    EXPECT_EQ(viewport()->inspectedVertex()->vertex, sampled->vertex);
+    EXPECT_TRUE(status().startsWith(QStringLiteral("Sampled"))) << status().toStdString();
+}
+
+TEST_F(WeightsStudio, CheckRigListsABoneLeadingNoVertexAndSelectsIt) {
+    const model::PartId biped = addExampleBiped();
+    const BoneId bone = *boneForJoint(part().skeleton, shoulder());
+    // Paint one bone to 1 everywhere (a constant brush as big as the part,
+    // through it): every other bone leads no vertex any more.
+    const Vec3 centre = part().skeleton.joint(hand()).position;
+    model::RecipeRunner(*document())
+        .apply({{"command", "paint_weights"},
+                {"part", 0},
+                {"bone", bone},
+                {"mode", "add"},
+                {"strength", 1.0},
+                {"falloff", "constant"},
+                {"center", {centre.x(), centre.y(), centre.z()}},
+                {"radius", 100.0}},
+               1);
+    document()->setSelection({biped, kNoJoint});
+    QAction* check = nullptr;
+    for (QAction* action : window->findChildren<QAction*>())
+        if (action->text() == QStringLiteral("Check &Rig"))
+            check = action;
+    ASSERT_NE(check, nullptr);
+    check->trigger();
+    QTreeWidget* results = panel()->checkResults();
+    ASSERT_EQ(results->topLevelItemCount(), 4);
+    QTreeWidgetItem* bones = results->topLevelItem(1);
+    const int others = part().skeleton.boneCount() - 1;
+    EXPECT_TRUE(bones->text(0).endsWith(QStringLiteral(": %1").arg(others)))
+        << bones->text(0).toStdString();
+    ASSERT_EQ(bones->childCount(), others);
+    const BoneId listed = bones->child(0)->data(0, Qt::UserRole).toUInt();
+    EXPECT_NE(listed, bone);
+    results->itemClicked(bones->child(0), 0);
+    EXPECT_EQ(document()->selection().joint, part().skeleton.bone(listed).tail);
+    // Vertices over one influence (before the paint): all marked when the
+    // group is clicked.
+    document()->undoStack()->undo();
+    panel()->findChild<QSpinBox*>()->setValue(1);
+    panel()->checkRig();
+    QTreeWidgetItem* over = panel()->checkResults()->topLevelItem(2);
+    ASSERT_GT(over->childCount(), 0);
+    panel()->checkResults()->itemClicked(over, 0);
+    EXPECT_EQ(viewport()->markedPart(), biped);
+    EXPECT_GT(viewport()->markedVertices().size(), 10u);
+    for (int v : viewport()->markedVertices())
+        EXPECT_GT(part().weights.perVertex[v].size(), 1u);
+    QTest::qWait(20);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_check_rig.png"));
+}
+
+TEST_F(WeightsStudio, RebuildAsksBeforeDiscardingPaintedWeights) {
+    const model::PartId biped = addExampleBiped();
+    document()->setSelection({biped, shoulder()});
+    window->activatePaintTool();
+    QTest::qWait(20);
+    drag(viewport(), armStroke());
+    ASSERT_TRUE(part().weightsPainted) << status().toStdString();
+    const int steps = document()->undoStack()->count();
+    widgets::PropertiesPanel* properties = window->propertiesPanel();
+    QString asked;
+    properties->confirmDiscard = [&](const QString& question) {
+        asked = question;
+        return false;
+    };
+    QPushButton* rebuild = nullptr;
+    for (QPushButton* button : properties->findChildren<QPushButton*>())
+        if (button->text() == QStringLiteral("Rebuild"))
+            rebuild = button;
+    ASSERT_NE(rebuild, nullptr);
+    rebuild->click();
+    EXPECT_TRUE(asked.contains(QStringLiteral("painted"))) << asked.toStdString();
+    EXPECT_EQ(document()->undoStack()->count(), steps) << "cancelled: nothing happens";
+    EXPECT_TRUE(part().weightsPainted);
+    properties->confirmDiscard = [](const QString&) { return true; };
+    rebuild->click();
+    EXPECT_EQ(document()->undoStack()->count(), steps + 1);
+    EXPECT_FALSE(part().weightsPainted) << "fresh weights from the sketch";
+    document()->undoStack()->undo();
+    EXPECT_TRUE(part().weightsPainted) << "undo brings the painting back";
+}
+
+}  // namespace
+}  // namespace rigmesh

@@ -1,0 +1,64 @@
+// MainWindow: Tools > Weights (issue 14 item 3), Blender's Weights menu on
+// the selected part: Normalize All, Clean, Limit Total and Smooth All, each
+// one undoable command that keeps locked bones, and Check Rig (the Weights
+// panel lists what it finds).
+#include <QAction>
+#include <QDockWidget>
+#include <QMenu>
+
+#include "MainWindow.h"
+#include "base/Error.h"
+#include "model/Document.h"
+#include "model/commands/WeightCleanupCommand.h"
+#include "panels/WeightsPanel.h"
+
+namespace rigmesh::widgets {
+
+void MainWindow::createWeightMenu(QMenu* tools) {
+    auto* menu = tools->addMenu(tr("Weigh&ts"));
+    auto cleanup = [this](auto make) {
+        model::Document* document = currentDocument();
+        if (!document || !document->contains(document->selection().part)) {
+            showStatus(tr("Select a part first"), 4000);
+            return;
+        }
+        try {
+            auto command = make(*document, document->selection().part);
+            const QString text = tr("%1: %n vertices changed", nullptr, command->changedVertices())
+                                     .arg(command->text());
+            document->undoStack()->push(command.release());
+            showStatus(text, 6000);
+        } catch (const Error& error) {
+            showStatus(QString::fromStdString(error.what()), 6000);
+        }
+    };
+    auto add = [&](const QString& text, auto make) {
+        QAction* action = menu->addAction(text);
+        connect(action, &QAction::triggered, this, [cleanup, make] { cleanup(make); });
+        return action;
+    };
+    add(tr("&Normalize All"), [](model::Document& d, model::PartId id) {
+        return model::WeightCleanupCommand::normalizeAll(d, id);
+    });
+    add(tr("&Clean (below 0.01)"), [](model::Document& d, model::PartId id) {
+        return model::WeightCleanupCommand::clean(d, id, 0.01);
+    });
+    add(tr("&Limit Total (4 bones)"), [](model::Document& d, model::PartId id) {
+        return model::WeightCleanupCommand::limitTotal(d, id, 4);
+    });
+    add(tr("&Smooth All"), [](model::Document& d, model::PartId id) {
+        return model::WeightCleanupCommand::smoothAll(d, id, SmoothAllOptions{});
+    })->setToolTip(tr("Every unlocked bone's weight halfway towards its neighbours' mean"));
+    menu->addSeparator();
+    QAction* check = menu->addAction(tr("Check &Rig"));
+    connect(check, &QAction::triggered, this, [this] {
+        for (auto* dock : findChildren<QDockWidget*>())
+            if (dock->widget() == weights_) {
+                dock->show();
+                dock->raise();
+            }
+        weights_->checkRig();
+    });
+}
+
+}  // namespace rigmesh::widgets
