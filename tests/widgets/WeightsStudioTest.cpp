@@ -3,6 +3,7 @@
 // vertex's weights, Check Rig lists and selects what it finds, and a
 // rebuild asks before it discards painted weights.
 #include <QAction>
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QPushButton>
 #include <QSpinBox>
@@ -10,6 +11,7 @@
 #include <QTableWidget>
 #include <QTreeWidget>
 
+#include "PartWeightOf.h"
 #include "StudioFixture.h"
 #include "model/DocumentFile.h"
 #include "model/recipe/RecipeRunner.h"
@@ -45,13 +47,13 @@ class WeightsStudio : public test::StudioFixture {
     }
     const Part& part() const { return *document()->parts().front().part; }
     // A stroke from the hand inwards along the arm, in front of the sketch plane.
-    std::vector<QPointF> armStroke() const {
+    std::vector<QPointF> armStroke(int points = 13, double spacing = 5.0) const {
         const Vec3 h = part().skeleton.joint(hand()).position;
         const QPointF p = onScreen(Vec3(h.x(), h.y(), 0.2));
         const double inward = h.x() < 0.0 ? 1.0 : -1.0;
         std::vector<QPointF> stroke;
-        for (int i = 0; i <= 12; ++i)
-            stroke.emplace_back(p.x() + inward * 5 * i, p.y());
+        for (int i = 0; i < points; ++i)
+            stroke.emplace_back(p.x() + inward * spacing * i, p.y());
         return stroke;
     }
     widgets::WeightsPanel* panel() const { return window->weightsPanel(); }
@@ -105,6 +107,55 @@ TEST_F(WeightsStudio, LockingABoneInTheWeightsPanelStopsItsPaintUntilUnlocked) {
             dock->raise();
     QTest::qWait(50);
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_weights_panel.png"));
+}
+
+// A stroke with X-mirror on keeps the weights mirror symmetric through the
+// sketch plane, leaves a locked bone's weights bit for bit (the other bones
+// take up the change) and undoes exactly.
+TEST_F(WeightsStudio, MirroredStrokeStaysSymmetricAndLeavesLockedBonesAlone) {
+    const model::PartId biped = addExampleBiped();
+    const Part rest = part();
+    // Lock the upper arm's bone and paint the head's bone (the topmost
+    // joint's) onto the arm: the forearm's bone gives way, the locked one
+    // stays where the stroke meets it.
+    const BoneId locked = *boneForJoint(rest.skeleton, shoulder());
+    JointId top = rest.skeleton.root();
+    for (const Joint& joint : rest.skeleton.joints())
+        if (joint.position.y() > rest.skeleton.joint(top).position.y())
+            top = joint.id;
+    const BoneId painted = *boneForJoint(rest.skeleton, top);
+    document()->setSelection({biped, top});
+    QTest::qWait(20);
+    QTableWidget* bones = panel()->bonesTable();
+    for (int r = 0; r < bones->rowCount(); ++r)
+        if (bones->item(r, 0)->data(Qt::UserRole).toUInt() == locked)
+            bones->item(r, 2)->setCheckState(Qt::Checked);
+    ASSERT_TRUE(part().lockedBones.contains(locked));
+    window->activatePaintTool();
+    window->findChild<QCheckBox*>(QStringLiteral("paintMirror"))->setChecked(true);
+    QTest::qWait(20);
+    const QByteArray before = model::DocumentFile::toBytes(*document());
+    const int steps = document()->undoStack()->count();
+    drag(viewport(), armStroke(30, 6.0));  // from the hand to the upper arm
+    ASSERT_EQ(document()->undoStack()->count(), steps + 1) << status().toStdString();
+    const Part& after = part();
+    EXPECT_TRUE(after.validate().empty());
+    EXPECT_NE(after.weights.perVertex, rest.weights.perVertex);
+    ASSERT_EQ(after.mirror.size(), after.weights.perVertex.size());
+    int lockedInStroke = 0;  // painted vertices where the locked bone has weight
+    for (int v = 0; v < after.mesh.vertexCount(); ++v) {
+        if (after.weights.perVertex[v] != rest.weights.perVertex[v] &&
+            testsupport::weightOf(rest, v, locked) > 0.0)
+            ++lockedInStroke;
+        ASSERT_NEAR(testsupport::weightOf(after, v, painted),
+                    testsupport::weightOf(after, after.mirror[v], painted), 1e-12)
+            << v;
+        ASSERT_EQ(testsupport::weightOf(after, v, locked), testsupport::weightOf(rest, v, locked))
+            << v;
+    }
+    EXPECT_GT(lockedInStroke, 0) << "the stroke reached the locked bone's vertices";
+    document()->undoStack()->undo();
+    EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
 }
 
 TEST_F(WeightsStudio, ClickingAVertexWithAWeightViewOnPinsItsWeightsInThePanel) {

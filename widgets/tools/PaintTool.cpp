@@ -272,6 +272,7 @@ QWidget* PaintTool::optionsWidget() {
     connect(front, &QCheckBox::toggled, this, [this](bool on) { frontFacesOnly = on; });
     form->addRow(front);
     auto* mirrorBox = new QCheckBox(tr("X-mirror (through the sketch plane)"), options_);
+    mirrorBox->setObjectName(QStringLiteral("paintMirror"));
     connect(mirrorBox, &QCheckBox::toggled, this, [this](bool on) { mirror = on; });
     form->addRow(mirrorBox);
     return options_;
