@@ -60,9 +60,26 @@ Brush brushFor(const Part& part) {
     return brush;
 }
 
+// The bone painted: the largest at the stroke's middle (so Smooth has a
+// gradient to even out and Add and Subtract have room both ways).
+BoneId paintedBone(const Part& part, const Brush& brush) {
+    int nearest = 0;
+    const Vec3& middle = brush.centres[brush.centres.size() / 2];
+    for (int v = 0; v < part.mesh.vertexCount(); ++v)
+        if ((part.mesh.vertices[v] - middle).squaredNorm() <
+            (part.mesh.vertices[nearest] - middle).squaredNorm())
+            nearest = v;
+    const auto& list = part.weights.perVertex[nearest];
+    const auto largest = std::max_element(list.begin(), list.end(), [](auto& a, auto& b) {
+        return a.second < b.second;
+    });
+    return part.skeleton.bones()[largest->first].id;
+}
+
 WeightDab dabAt(const Part& part, const Brush& brush, int i, BrushMode mode) {
     WeightDab dab;
-    dab.bone = part.skeleton.bones().front().id;
+    static const BoneId bone = paintedBone(part, brush);
+    dab.bone = bone;
     dab.mode = mode;
     dab.centre = brush.centres[i % brush.centres.size()];
     dab.radius = brush.radius;

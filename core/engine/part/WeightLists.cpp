@@ -1,7 +1,6 @@
 #include "part/WeightLists.h"
 
 #include <algorithm>
-#include <map>
 
 namespace rigmesh {
 
@@ -32,16 +31,24 @@ bool setWeightKeepingLocks(WeightList& list, int bone, double target,
     const double freeTarget = 1.0 - lockedSum - target;
     if (freeSum <= 0.0 && (freeTarget > kDroppedWeight || target == weightOfIndex(list, bone)))
         return false;  // nothing unlocked to hand the rest to, or to take it from
-    std::map<int, double> out;
-    for (const auto& [b, w] : list)
-        if (b != bone)
-            out[b] = lockedIndex[b] ? w : (freeSum > 0.0 ? w * freeTarget / freeSum : 0.0);
-    out[bone] = target;
-    // By construction the weights sum to 1 up to rounding.
-    list.clear();
-    for (const auto& [b, w] : out)
-        if (w > kDroppedWeight || (lockedIndex[b] && w > 0.0))
-            list.emplace_back(b, w);
+    // The list stays sorted by bone: scale in place, then put `bone` where
+    // it belongs (no allocation unless the bone is new to the vertex).
+    bool placed = false;
+    for (auto& [b, w] : list) {
+        if (b == bone) {
+            w = target;
+            placed = true;
+        } else if (!lockedIndex[b]) {
+            w = freeSum > 0.0 ? w * freeTarget / freeSum : 0.0;
+        }
+    }
+    if (!placed)
+        list.insert(std::lower_bound(list.begin(), list.end(), std::make_pair(bone, 0.0)),
+                    {bone, target});
+    // By construction the weights sum to 1 up to rounding; locked ones stay.
+    std::erase_if(list, [&](const auto& entry) {
+        return !(entry.second > kDroppedWeight || (lockedIndex[entry.first] && entry.second > 0.0));
+    });
     return true;
 }
 
