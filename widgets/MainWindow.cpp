@@ -323,6 +323,10 @@ DocumentView* MainWindow::addDocument(std::unique_ptr<model::Document> document)
     connect(view, &DocumentView::statusMessage, this, &MainWindow::showStatus);
     connect(view->viewport(), &Viewport::statusMessage, this,
             [this](const QString& m) { showStatus(m); });
+    connect(view->viewport(), &Viewport::weightViewChanged, this, [this, view](WeightView shown) {
+        if (currentView() == view)
+            showWeightView(shown);
+    });
     connect(sketchTool_, &SketchTool::strokeFinished, view,
             [this, view](const auto& stroke, const auto& plane) {
                 if (currentView() == view)
@@ -374,8 +378,7 @@ void MainWindow::currentTabChanged(int) {
         view->viewport()->setWireframe(wireframeAction_->isChecked());
         view->viewport()->setDualQuaternionSkinning(dqsAction_->isChecked());
         view->viewport()->setGridVisible(gridAction_->isChecked());
-        view->viewport()->setWeightView(
-            static_cast<WeightView>(weightViewGroup_->checkedAction()->data().toInt()));
+        showWeightView(view->viewport()->weightView());  // each document keeps its own
     }
     updateTitle();
 }

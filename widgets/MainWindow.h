@@ -18,6 +18,7 @@ class QTabWidget;
 class QUndoView;
 class QMenu;
 class QActionGroup;
+class QComboBox;
 
 namespace rigmesh::model {
 class Autosave;
@@ -27,6 +28,7 @@ class Document;
 namespace rigmesh::widgets {
 
 class MouseHint;
+enum class WeightView;  // viewport/RenderScene.h
 
 class DocumentView;
 class OutlinerPanel;
@@ -85,6 +87,9 @@ class MainWindow : public QMainWindow {
     void createDocks();
     // Tools > Weights: the clean-ups, Smooth All and Check Rig (MainWindowWeights.cpp).
     void createWeightMenu(QMenu* tools);
+    // The View > Weights choice and the Weight View toolbar follow the
+    // current document's viewport (each document keeps its own view).
+    void showWeightView(WeightView view);
     void currentTabChanged(int index);
     class ViewportTool* activeTool() const;
     void activateTool(QAction* action, class ViewportTool* tool);
@@ -111,6 +116,7 @@ class MainWindow : public QMainWindow {
     QAction* poseToolAction_ = nullptr;
     QAction* mergeToolAction_ = nullptr;
     QActionGroup* weightViewGroup_ = nullptr;
+    QComboBox* weightViewBox_ = nullptr;
     QAction* cutToolAction_ = nullptr;
     QAction* paintToolAction_ = nullptr;
     QAction* wireframeAction_ = nullptr;

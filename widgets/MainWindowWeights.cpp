@@ -3,18 +3,52 @@
 // one undoable command that keeps locked bones, and Check Rig (the Weights
 // panel lists what it finds).
 #include <QAction>
+#include <QActionGroup>
+#include <QComboBox>
 #include <QDockWidget>
+#include <QLabel>
 #include <QMenu>
+#include <QSignalBlocker>
+#include <QToolBar>
 
 #include "MainWindow.h"
 #include "base/Error.h"
 #include "model/Document.h"
 #include "model/commands/WeightCleanupCommand.h"
 #include "panels/WeightsPanel.h"
+#include "viewport/RenderScene.h"
 
 namespace rigmesh::widgets {
 
+void MainWindow::showWeightView(WeightView view) {
+    for (QAction* action : weightViewGroup_->actions())
+        if (static_cast<WeightView>(action->data().toInt()) == view)
+            action->setChecked(true);
+    if (weightViewBox_) {
+        const QSignalBlocker block(weightViewBox_);
+        weightViewBox_->setCurrentIndex(weightViewBox_->findData(static_cast<int>(view)));
+    }
+}
+
 void MainWindow::createWeightMenu(QMenu* tools) {
+    // The weight views on a toolbar too (issue 14 item 1): a list beside the
+    // tools, in step with View > Weights.
+    auto* bar = addToolBar(tr("Weight View"));
+    bar->setObjectName(QStringLiteral("weightViewToolBar"));
+    bar->addWidget(new QLabel(tr(" Weights: "), bar));
+    weightViewBox_ = new QComboBox(bar);
+    weightViewBox_->setObjectName(QStringLiteral("weightViewBox"));
+    weightViewBox_->setToolTip(tr("Colour the surface by its skin weights (View > Weights)"));
+    for (QAction* action : weightViewGroup_->actions())
+        weightViewBox_->addItem(action->text().remove(QLatin1Char('&')), action->data());
+    bar->addWidget(weightViewBox_);
+    connect(weightViewBox_, &QComboBox::activated, this, [this](int index) {
+        const QVariant view = weightViewBox_->itemData(index);
+        for (QAction* action : weightViewGroup_->actions())
+            if (action->data() == view)
+                action->trigger();
+    });
+
     auto* menu = tools->addMenu(tr("Weigh&ts"));
     auto cleanup = [this](auto make) {
         model::Document* document = currentDocument();

@@ -4,10 +4,12 @@
 // rebuild asks before it discards painted weights.
 #include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTreeWidget>
 
@@ -274,6 +276,28 @@ TEST_F(WeightsStudio, RebuildAsksBeforeDiscardingPaintedWeights) {
     EXPECT_FALSE(part().weightsPainted) << "fresh weights from the sketch";
     document()->undoStack()->undo();
     EXPECT_TRUE(part().weightsPainted) << "undo brings the painting back";
+}
+
+// Issue 14 item 1: the weight view is chosen per document, from the View
+// menu or the toolbar's list, which follow the current document.
+TEST_F(WeightsStudio, EachDocumentKeepsItsOwnWeightView) {
+    auto* box = window->findChild<QComboBox*>(QStringLiteral("weightViewBox"));
+    ASSERT_NE(box, nullptr);
+    widgets::Viewport* first = viewport();
+    box->setCurrentIndex(box->findData(static_cast<int>(widgets::WeightView::DominantBone)));
+    box->activated(box->currentIndex());
+    EXPECT_EQ(first->weightView(), widgets::WeightView::DominantBone);
+    window->newDocument();
+    QTest::qWait(20);
+    EXPECT_NE(viewport(), first);
+    EXPECT_EQ(viewport()->weightView(), widgets::WeightView::Off) << "a new document starts plain";
+    EXPECT_EQ(box->currentData().toInt(), static_cast<int>(widgets::WeightView::Off));
+    window->tabs()->setCurrentIndex(0);
+    QTest::qWait(20);
+    EXPECT_EQ(box->currentData().toInt(), static_cast<int>(widgets::WeightView::DominantBone));
+    // The paint tool turns the bone view on, and the list follows.
+    window->activatePaintTool();
+    EXPECT_EQ(box->currentData().toInt(), static_cast<int>(widgets::WeightView::SelectedBone));
 }
 
 }  // namespace

@@ -503,8 +503,11 @@ void Viewport::wheelEvent(QWheelEvent* event) {
 }
 
 void Viewport::setWeightView(WeightView view) {
+    if (view == weightView_)
+        return;
     weightView_ = view;
     update();
+    emit weightViewChanged(view);
 }
 
 void Viewport::contextMenuEvent(QContextMenuEvent* event) {

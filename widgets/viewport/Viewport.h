@@ -107,6 +107,8 @@ class Viewport : public QOpenGLWidget {
     void statusMessage(const QString& message);
     // setInspectedVertex() changed the pinned vertex.
     void inspectedVertexChanged();
+    // setWeightView() changed how the surface is coloured.
+    void weightViewChanged(rigmesh::widgets::WeightView view);
 
   protected:
     void initializeGL() override;
