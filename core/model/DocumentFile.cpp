@@ -17,6 +17,7 @@
 #include "model/DocumentNodeJson.h"
 #include "model/PartBuilder.h"
 #include "part/PartJson.h"
+#include "pose/LegacyPose.h"
 
 namespace rigmesh::model {
 
@@ -176,6 +177,16 @@ PartNode readNode(const json& object) {
     return node;
 }
 
+// Version 1 stored one rotation per joint, turning every bone leaving it:
+// the same bone transforms as per-bone rotations (pose/LegacyPose.h).
+void convertJointRotations(PartNode& node) {
+    if (!node.part || !node.part->skeleton.hasJoint(node.part->skeleton.root()))
+        return;
+    const PoseHierarchy hierarchy(node.part->skeleton);
+    node.pose = poseFromJointRotations(hierarchy, node.pose);
+    node.clip = clipFromJointRotations(hierarchy, node.clip);
+}
+
 DocumentContents readContents(const json& root) {
     if (!root.is_object() || !root.contains("format") || !root["format"].is_string() ||
         root["format"].get<std::string>() != DocumentFile::kFormatName)
@@ -196,6 +207,8 @@ DocumentContents readContents(const json& root) {
         contents.parts.push_back(readNode(node));
         if (!ids.insert(contents.parts.back().id).second)
             corrupt("two parts have the same id");
+        if (version < 2)
+            convertJointRotations(contents.parts.back());
     }
     contents.nextPartId = integer<PartId>(field(root, "nextPartId"), "next part id");
     if (contents.nextPartId == kNoPart || (!ids.empty() && contents.nextPartId <= *ids.rbegin()))

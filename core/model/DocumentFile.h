@@ -1,5 +1,5 @@
 // The native document file (.rigmesh): CBOR (RFC 8949) of one map
-//   {"format": "rigmesh-studio-document", "version": 1, "nextPartId": n,
+//   {"format": "rigmesh-studio-document", "version": 2, "nextPartId": n,
 //    "parts": [ {id, name, visible, placement, stroke, options, part: {...},
 //                pose: {rotations: [[joint, w, x, y, z], ...], rootTranslation},
 //                pinned: [joint, ...],
@@ -11,7 +11,11 @@
 // ids, root), skin weights and the known closest bones. pose and pinned are
 // optional when reading (a part without them loads in its rest pose, unpinned);
 // their joint ids must be joints of the part's skeleton and the quaternions
-// finite and non-zero. clip is optional too (absent: no keys at 24 frames per
+// finite and non-zero. Pose rotations are per bone, keyed by the joint each
+// bone ends at (the root: the whole skeleton), since version 2; version 1
+// files stored one rotation per joint turning every bone leaving it, and
+// load converted exactly (pose/LegacyPose.h): same bone transforms, same
+// deformed surface. clip is optional too (absent: no keys at 24 frames per
 // second); its keys are in time order, their poses checked like the pose.
 //
 // Why CBOR: doubles are stored as IEEE binary64 (or binary32 when that is
@@ -48,7 +52,8 @@ class DocumentFileError : public rigmesh::Error {
 namespace DocumentFile {
 
 inline constexpr const char* kFormatName = "rigmesh-studio-document";
-inline constexpr int kFormatVersion = 1;
+// 2: per-bone pose rotations (version 1 files are converted on loading).
+inline constexpr int kFormatVersion = 2;
 inline constexpr const char* kSuffix = "rigmesh";
 
 QByteArray toBytes(const DocumentContents& contents);

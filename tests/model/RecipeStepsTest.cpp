@@ -338,8 +338,9 @@ TEST(RecipeSteps, BadRecipesAreRejectedBeforeAnyStep) {
         return std::string();
     };
     EXPECT_EQ(message(json::array()).rfind("this is not a RigMesh recipe", 0), 0u);
-    EXPECT_EQ(message({{"format", "rigmesh-recipe"}, {"version", 2}, {"steps", json::array()}})
-                  .rfind("the recipe is of version 2", 0),
+    const int newer = RecipeFile::kFormatVersion + 1;
+    EXPECT_EQ(message({{"format", "rigmesh-recipe"}, {"version", newer}, {"steps", json::array()}})
+                  .rfind("the recipe is of version " + std::to_string(newer), 0),
               0u);
     EXPECT_EQ(message({{"format", "rigmesh-recipe"}, {"version", 1}}),
               "the recipe has no list of \"steps\"");

@@ -66,7 +66,7 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(figures_);
     layout->addLayout(form);
     layout->addWidget(rebuildButton_);
-    poseBox_ = new QGroupBox(tr("Joint rotation (XYZ Euler)"), this);
+    poseBox_ = new QGroupBox(tr("Bone rotation (XYZ Euler)"), this);
     auto* poseForm = new QFormLayout(poseBox_);
     const char* axes[] = {QT_TR_NOOP("X"), QT_TR_NOOP("Y"), QT_TR_NOOP("Z")};
     for (int k = 0; k < 3; ++k) {
@@ -77,7 +77,10 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
         euler_[k]->setWrapping(true);
         euler_[k]->setSuffix(QStringLiteral("\u00b0"));
         euler_[k]->setKeyboardTracking(false);  // one command per typed value
-        euler_[k]->setToolTip(tr("The selected joint's rotation from rest, in degrees"));
+        euler_[k]->setToolTip(
+            tr("The rotation from rest, in degrees, of the bone ending at the selected joint "
+               "about its head, relative to its parent bone; at the root, of the whole part "
+               "about the root"));
         poseForm->addRow(tr(axes[k]), euler_[k]);
         connect(euler_[k], &QDoubleSpinBox::valueChanged, this, &PropertiesPanel::setJointRotation);
     }
@@ -140,7 +143,11 @@ void PropertiesPanel::refreshPose() {
     poseBox_->setVisible(shown);
     if (!shown)
         return;
-    poseBox_->setTitle(tr("Joint %1 rotation (XYZ Euler)").arg(joint));
+    // A joint stands for the bone ending at it, whose rotation it keys
+    // (pose/Pose.h); the root's rotation turns the whole part.
+    const bool root = joint == node->part->skeleton.root();
+    poseBox_->setTitle(root ? tr("Root joint %1: whole part (XYZ Euler)").arg(joint)
+                            : tr("Bone to joint %1 (XYZ Euler)").arg(joint));
     const Vec3 xyz = xyzEulerDegrees(node->pose.rotation(joint));
     for (int k = 0; k < 3; ++k) {
         const QSignalBlocker blocker(euler_[k]);

@@ -287,9 +287,17 @@ RenderScene Viewport::gatherScene() const {
         };
         const QVector3D boneColour = node.id == selection.part ? QVector3D(0.95f, 0.85f, 0.45f)
                                                                : QVector3D(0.75f, 0.72f, 0.55f);
+        // The selected joint stands for the bone ending at it (what its
+        // rotation turns, pose/Pose.h): drawn in the selection's orange.
+        const std::optional<BoneId> selectedBone =
+            node.id == selection.part && selection.joint != skeleton.root()
+                ? boneForJoint(skeleton, selection.joint)
+                : std::nullopt;
         for (const Bone& bone : skeleton.bones()) {
-            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.head))), boneColour);
-            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.tail))), boneColour);
+            const QVector3D colour =
+                selectedBone == bone.id ? QVector3D(1.0f, 0.55f, 0.1f) : boneColour;
+            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.head))), colour);
+            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.tail))), colour);
         }
         for (const Joint& joint : skeleton.joints()) {
             const bool selected = node.id == selection.part && joint.id == selection.joint;

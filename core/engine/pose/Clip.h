@@ -4,7 +4,7 @@
 // clip's frame rate, so a key set "at frame 12" is found again from any time
 // that rounds to frame 12.
 //
-// Evaluation interpolates every joint's local rotation and the root
+// Evaluation interpolates every bone's rotation (Pose.h) and the root
 // translation between the two keys around the time:
 //   - Linear: slerp of rotations (shorter arc), lerp of the translation;
 //   - Smooth: squad (Shoemake 1987) through the key rotations after aligning

@@ -29,6 +29,7 @@
 #include "model/recipe/RecipePartRef.h"
 #include "model/recipe/RecipeStepKind.h"
 #include "model/recipe/RecipeWeightSteps.h"
+#include "pose/LegacyPose.h"
 #include "sketch/Sketch.h"
 
 namespace rigmesh::model::recipe {
@@ -96,9 +97,15 @@ StepCommand pose(const Context& c) {
         throw Error("\"reach\" goes with \"target\" (an IK drag), not \"rotations\"");
     const bool complete = c.has("complete") && readBool(c.step["complete"], "\"complete\"");
     rigmesh::Pose pose = complete ? rigmesh::Pose{} : node.pose;
-    for (const auto& [joint, rotation] : readRotations(c.step["rotations"])) {
+    const std::map<JointId, Eigen::Quaterniond> rotations = readRotations(c.step["rotations"]);
+    for (const auto& [joint, rotation] : rotations)
         Context::checkJoint(node, joint);
-        pose.rotations[joint] = rotation;
+    if (c.options.formatVersion >= 2) {
+        for (const auto& [joint, rotation] : rotations)
+            pose.rotations[joint] = rotation;
+    } else if (!rotations.empty()) {
+        // Version 1: a joint's rotation turned every bone leaving it.
+        setJointRotations(PoseHierarchy(node.part->skeleton), rotations, pose);
     }
     if (c.has("rootTranslation"))
         pose.rootTranslation = readVec3(c.step["rootTranslation"], "\"rootTranslation\"");
