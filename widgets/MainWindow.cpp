@@ -80,6 +80,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
                                                      : recoveryDirectory) {
     registerIconResources();
     setObjectName(QStringLiteral("RigMeshStudioMainWindow"));
+    setWindowIcon(QIcon(QStringLiteral(":/icons/rigmesh-studio.svg")));
     tabs_->setTabsClosable(true);
     tabs_->setDocumentMode(true);
     setCentralWidget(tabs_);
