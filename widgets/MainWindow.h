@@ -37,6 +37,7 @@ class MergeTool;
 class PoseTool;
 class SelectTool;
 class SketchTool;
+class TimelineDock;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -51,6 +52,7 @@ class MainWindow : public QMainWindow {
     model::Document* currentDocument() const;
     QTabWidget* tabs() const { return tabs_; }
     OutlinerPanel* outliner() const { return outliner_; }
+    TimelineDock* timeline() const { return timeline_; }
 
     bool openFile(const QString& path);
     // Offers to restore documents left in the recovery folder by a crash.
@@ -80,6 +82,7 @@ class MainWindow : public QMainWindow {
   private:
     void createActions();
     void createDocks();
+    void createTimelineActions();
     void currentTabChanged(int index);
     class ViewportTool* activeTool() const;
     void activateTool(QAction* action, class ViewportTool* tool);
@@ -97,6 +100,7 @@ class MainWindow : public QMainWindow {
     OutlinerPanel* outliner_;
     PropertiesPanel* properties_;
     QUndoView* history_;
+    TimelineDock* timeline_;
     QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QActionGroup* toolGroup_ = nullptr;

@@ -1,11 +1,14 @@
 // The native document file (.rigmesh): CBOR (RFC 8949) of one map
-//   {"format": "rigmesh-studio-document", "version": 1, "nextPartId": n,
+//   {"format": "rigmesh-studio-document", "version": 2, "nextPartId": n,
+//    "timeline": {startFrame, endFrame, framesPerSecond, currentFrame},
 //    "parts": [ {id, name, visible, placement, stroke, options, part: {...},
 //                pose: {rotations: [[joint, w, x, y, z], ...], rootTranslation},
 //                pinned: [joint, ...],
-//                clip: {framesPerSecond, interpolation: "linear" | "smooth",
-//                       playback: "hold" | "loop",
-//                       keys: [{time, pose: {rotations, rootTranslation}}, ...]}} ]}
+//                clip: {name, framesPerSecond,
+//                       interpolation: "constant" | "linear" | "smooth",
+//                       playback: "hold" | "loop" | "ping_pong",
+//                       keys: [{time, pose: {rotations, rootTranslation}}, ...]},
+//                otherClips: [clip, ...]} ]}
 // where part holds everything of the engine Part: name, outline, mesh
 // (vertices, faces), origins, mirror, skeleton (joints with ids, bones with
 // ids, root), skin weights and the known closest bones. pose and pinned are
@@ -13,6 +16,9 @@
 // their joint ids must be joints of the part's skeleton and the quaternions
 // finite and non-zero. clip is optional too (absent: no keys at 24 frames per
 // second); its keys are in time order, their poses checked like the pose.
+// clip is the active clip, otherClips the part's other named clips; names
+// are unique within a part. Version 1 files (no timeline, no otherClips) are
+// migrated on reading (DocumentMigration.h).
 //
 // Why CBOR: doubles are stored as IEEE binary64 (or binary32 when that is
 // exact), so they round-trip bit for bit without decimal printing; meshes are
@@ -48,7 +54,8 @@ class DocumentFileError : public rigmesh::Error {
 namespace DocumentFile {
 
 inline constexpr const char* kFormatName = "rigmesh-studio-document";
-inline constexpr int kFormatVersion = 1;
+// 2: the timeline and named clips (issue 15; DocumentMigration.h reads 1).
+inline constexpr int kFormatVersion = 2;
 inline constexpr const char* kSuffix = "rigmesh";
 
 QByteArray toBytes(const DocumentContents& contents);
