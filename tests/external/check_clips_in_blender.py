@@ -21,20 +21,11 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import blender_files  # noqa: E402  (fixes NumPy for the importers first)
 import bpy  # noqa: E402
+from check_in_blender import Report, deformed_positions, keyed_frames  # noqa: E402
 from mathutils.kdtree import KDTree  # noqa: E402
 
 FIRST_FRAME = {".glb": 0.0, ".gltf": 0.0, ".fbx": 1.0}  # Blender frame of 0 s
 TOLERANCE = 1e-5
-
-
-class Report:
-    def __init__(self):
-        self.failures = 0
-
-    def check(self, name, ok, detail=""):
-        print(f"  [{'PASS' if ok else 'FAIL'}] {name}{': ' + detail if detail else ''}")
-        self.failures += 0 if ok else 1
-        return ok
 
 
 def action_of(armature, clip, extension):
@@ -46,20 +37,6 @@ def actions_on(armature, extension):
     if extension == ".fbx":
         return [a for a in bpy.data.actions if a.name.startswith(armature.name + "|")]
     return [a for a in bpy.data.actions if a.name.endswith("_" + armature.name)]
-
-
-def keyed_frames(action):
-    return sorted({round(p.co.x, 3) for c in action.fcurves for p in c.keyframe_points})
-
-
-def deformed(mesh_object, frame):
-    whole = int(frame // 1)
-    bpy.context.scene.frame_set(whole, subframe=frame - whole)
-    evaluated = mesh_object.evaluated_get(bpy.context.evaluated_depsgraph_get())
-    mesh = evaluated.to_mesh()
-    positions = [evaluated.matrix_world @ v.co for v in mesh.vertices]
-    evaluated.to_mesh_clear()
-    return positions
 
 
 def main(arguments):
@@ -121,7 +98,7 @@ def main(arguments):
             matches = [tree.find(blender_files.to_blender(v["rest"])) for v in samples]
             worst_rest = max(distance for _, _, distance in matches)
             frame = first + ours["time"] * fps
-            positions = deformed(mesh_object, frame)
+            positions = deformed_positions(mesh_object, frame)
             worst, moved = 0.0, 0.0
             for vertex, (_, index, _) in zip(samples, matches):
                 target = blender_files.to_blender(vertex["posed"])
