@@ -8,6 +8,7 @@
 
 #include <QElapsedTimer>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <QUndoStack>
 
 #include "DocumentView.h"
@@ -110,6 +111,9 @@ TEST_F(Timeline, ScrubbingTheRulerShowsTheClipsPoseLiveWithoutAnUndoStep) {
     EXPECT_GT((handOnScreen() - start).length(), 0.2f) << "the viewport's hand moved up";
     EXPECT_EQ(document()->undoStack()->count(), 0);
     EXPECT_FALSE(document()->isModified());
+    // For docs/STUDIO.md: the part expanded into its joints, the key at 12 selected.
+    view()->setExpanded(part, true);
+    view()->setSelectedKeys({{part, {0.5}}});
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_timeline.png"));
 
     // Left / Right step one frame, Shift+Left / Shift+Right jump to the ends.
@@ -245,7 +249,10 @@ TEST_F(Timeline, NamedClipsFromTheDockAndOnionSkinShow) {
     document()->setCurrentFrame(6);
     widgets::Viewport* viewport = window->currentView()->viewport();
     const QImage plain = viewport->grabFramebuffer();
-    viewport->setOnionSkin(true);
+    auto* onionButton = dock->findChild<QToolButton*>(QStringLiteral("timelineOnion"));
+    ASSERT_NE(onionButton, nullptr);
+    onionButton->click();  // the dock's toggle reaches the viewport
+    EXPECT_TRUE(viewport->onionSkin());
     const QImage onion = viewport->grabFramebuffer();
     long changed = 0;
     for (int y = 0; y < plain.height(); ++y)

@@ -193,9 +193,12 @@ void SceneRenderer::render(const RenderScene& scene, const OrbitCamera& camera,
         drawGrid(scene, viewProjection);
     drawParts(scene.parts, scene, view, projection, QVector2D(pixels.width(), pixels.height()));
     if (!scene.ghosts.empty()) {
-        // Ghosts blend over what is drawn, hiding nothing behind them.
+        // Ghosts blend over what is drawn, hiding nothing behind them. They
+        // are pushed back in depth, so where a ghost lies on the part itself
+        // (what did not move) the part wins instead of flickering with it.
+        // The framebuffer's alpha stays 1: the widget is composited with it.
         glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         glDepthMask(GL_FALSE);
         drawParts(scene.ghosts, scene, view, projection,
                   QVector2D(pixels.width(), pixels.height()));
@@ -270,7 +273,8 @@ void SceneRenderer::drawParts(const std::vector<RenderPart>& parts, const Render
         meshProgram_.setUniformValue("baseColour", item.colour);
         meshProgram_.setUniformValue("highlight", item.selected ? 1.0f : 0.0f);
         glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(1.0f, 1.0f);
+        const float offset = item.opacity < 1.0f ? 8.0f : 1.0f;  // ghosts further back
+        glPolygonOffset(offset, offset);
         glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
         glDisable(GL_POLYGON_OFFSET_FILL);
         if (scene.wireframe) {
