@@ -78,6 +78,15 @@ TEST(NamedClips, KeysGoIntoTheActiveClipOnly) {
     EXPECT_EQ(findClip(t.node(), "walk")->keyCount(), 2);
 }
 
+TEST(NamedClips, ChoosingTheActiveClipAgainIsNoUndoStep) {
+    TwoClips t;
+    t.stack().push(ClipListCommand::create(t.document, t.id, "walk").release());
+    const int steps = t.stack().count();
+    t.stack().push(ClipListCommand::activate(t.document, t.id, "walk").release());
+    t.stack().push(ClipListCommand::rename(t.document, t.id, "walk", "walk").release());
+    EXPECT_EQ(t.stack().count(), steps);
+}
+
 TEST(NamedClips, DuplicateRenameAndDeleteUndoExactly) {
     TwoClips t;
     t.poseAndKey(Vec3(0.1, 0.1, 0), 0.0);

@@ -213,9 +213,12 @@ TEST_F(Timeline, SpacePlaysInRealTimeAndPauses) {
     QTest::keyClick(window.get(), Qt::Key_Space);
     const double seconds = clock.nsecsElapsed() * 1e-9;
     EXPECT_FALSE(playback->isPlaying());
-    // Real time: about 24 frames a second, whatever the drawing costs.
+    // Real time: 24 frames a second, whatever the drawing costs (never more
+    // than the clock allows; a quarter second of slack for the start and the
+    // last tick on a loaded machine).
     const int advanced = playback->framesShown() + playback->framesDropped();
-    EXPECT_NEAR(advanced, seconds * 24.0, 3.0);
+    EXPECT_LE(advanced, seconds * 24.0 + 1.0);
+    EXPECT_GE(advanced, (seconds - 0.25) * 24.0);
     EXPECT_EQ(document()->currentFrame(), advanced % 49);
     // The pose shown is the clip's at the shown frame.
     EXPECT_LT(poseDistance(node().pose, node().clip.evaluate(document()->currentTime())), 1e-12);

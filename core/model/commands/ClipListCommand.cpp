@@ -137,6 +137,10 @@ ClipListCommand::ClipListCommand(Document& document, PartId id, Clips after, nlo
       step_(std::move(step)) {
     after_.others = sortedByName(std::move(after_.others));
     checkClipNamesUnique(after_.active, after_.others);
+    // Choosing the active clip again, or renaming a clip to its name, is no step.
+    setObsolete(identicalClips(before_.active, after_.active) &&
+                std::equal(before_.others.begin(), before_.others.end(), after_.others.begin(),
+                           after_.others.end(), &identicalClips));
     setText(text);
 }
 
