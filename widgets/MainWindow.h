@@ -40,6 +40,7 @@ class MergeTool;
 class PoseTool;
 class SelectTool;
 class SketchTool;
+class TimelineDock;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -56,6 +57,7 @@ class MainWindow : public QMainWindow {
     OutlinerPanel* outliner() const { return outliner_; }
     WeightsPanel* weightsPanel() const { return weights_; }
     PropertiesPanel* propertiesPanel() const { return properties_; }
+    TimelineDock* timeline() const { return timeline_; }
 
     bool openFile(const QString& path);
     // Offers to restore documents left in the recovery folder by a crash.
@@ -90,6 +92,7 @@ class MainWindow : public QMainWindow {
     // The View > Weights choice and the Weight View toolbar follow the
     // current document's viewport (each document keeps its own view).
     void showWeightView(WeightView view);
+    void createTimelineActions();
     void currentTabChanged(int index);
     class ViewportTool* activeTool() const;
     void activateTool(QAction* action, class ViewportTool* tool);
@@ -108,6 +111,7 @@ class MainWindow : public QMainWindow {
     PropertiesPanel* properties_;
     WeightsPanel* weights_;
     QUndoView* history_;
+    TimelineDock* timeline_;
     QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QActionGroup* toolGroup_ = nullptr;

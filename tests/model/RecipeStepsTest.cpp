@@ -279,7 +279,8 @@ TEST(RecipeSteps, ErrorsNameTheStepItsCommandAndTheReason) {
         {{{"command", "clip_settings"}, {"part", 1}, {"frameRate", 0}},
          "step 1 (clip_settings): A clip's frame rate must be a positive number"},
         {{{"command", "clip_settings"}, {"part", 1}, {"interpolation", "cubic"}},
-         "step 1 (clip_settings): \"interpolation\" must be \"linear\" or \"smooth\""},
+         "step 1 (clip_settings): \"interpolation\" must be \"constant\", \"linear\" or "
+         "\"smooth\""},
     };
     const QByteArray before = bytesOf(s.document);
     for (const Case& c : cases) {

@@ -15,6 +15,7 @@
 
 #include "base/Error.h"
 #include "model/Document.h"
+#include "model/PoseChange.h"
 #include "model/commands/RebuildPartCommand.h"
 #include "model/commands/SetPoseCommand.h"
 
@@ -175,7 +176,7 @@ void PropertiesPanel::setJointRotation() {
         auto command = std::make_unique<model::SetPoseCommand>(*document_, selection.part, from,
                                                                pose, selection.joint, true);
         document_->setPose(selection.part, pose);
-        document_->undoStack()->push(command.release());
+        model::pushPoseChange(*document_, selection.part, command.release());
     } catch (const rigmesh::Error& error) {
         emit statusMessage(tr("Not posed: %1").arg(QString::fromStdString(error.what())), 8000);
         refreshPose();

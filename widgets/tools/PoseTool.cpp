@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "base/Error.h"
+#include "model/PoseChange.h"
 #include "model/PoseDrag.h"
 #include "model/commands/SetJointPinnedCommand.h"
 #include "model/commands/SetPoseCommand.h"
@@ -260,8 +261,10 @@ void PoseTool::release(Viewport& viewport, QMouseEvent*) {
     // One undo step per drag, already applied by the preview.
     model::Document& document = *viewport.document();
     if (document.contains(drag_->part) && document.posePreviewOrigin(drag_->part))
-        document.undoStack()->push(new model::SetPoseCommand(
-            document, drag_->part, document.part(drag_->part).pose, drag_->joint, true));
+        model::pushPoseChange(
+            document, drag_->part,
+            new model::SetPoseCommand(document, drag_->part, document.part(drag_->part).pose,
+                                      drag_->joint, true));
     drag_.reset();
 }
 

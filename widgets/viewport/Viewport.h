@@ -49,6 +49,9 @@ class Viewport : public QOpenGLWidget {
     void setDualQuaternionSkinning(bool on);
     void setGridVisible(bool on);
     void setWeightView(WeightView view);
+    // Ghosts of each part's previous and next keyed poses (issue 15).
+    void setOnionSkin(bool on);
+    bool onionSkin() const { return onionSkin_; }
     WeightView weightView() const { return weightView_; }
     bool wireframe() const { return wireframe_; }
     bool dualQuaternionSkinning() const { return dualQuaternion_; }
@@ -135,6 +138,7 @@ class Viewport : public QOpenGLWidget {
     bool wireframe_ = false;
     bool dualQuaternion_ = true;
     bool gridVisible_ = true;
+    bool onionSkin_ = false;
     WeightView weightView_ = WeightView::Off;
     bool framedOnce_ = false;
     struct PosedCacheEntry {

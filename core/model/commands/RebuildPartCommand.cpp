@@ -29,13 +29,15 @@ RebuildPartCommand::RebuildPartCommand(Document& document, PartId id,
       newOptions_(options),
       oldPose_(document.part(id).pose),
       oldPinned_(document.part(id).pinnedJoints),
-      oldClip_(document.part(id).clip) {
+      oldClip_(document.part(id).clip),
+      oldOtherClips_(document.part(id).otherClips) {
     // Pose, pins and keys carry over where the new skeleton keeps the joints.
-    const CarriedRig carried =
-        carryRigOver(oldPart_->skeleton, newPart_->skeleton, oldPose_, oldPinned_, oldClip_);
+    const CarriedRig carried = carryRigOver(oldPart_->skeleton, newPart_->skeleton, oldPose_,
+                                            oldPinned_, oldClip_, oldOtherClips_);
     newPose_ = carried.pose;
     newPinned_ = carried.pinned;
     newClip_ = carried.clip;
+    newOtherClips_ = carried.otherClips;
     droppedJoints_ = carried.droppedJoints;
     setText(tr("Rebuild %1").arg(document.part(id).name));
 }
@@ -50,7 +52,8 @@ QString RebuildPartCommand::droppedMessage() const {
 }
 
 void RebuildPartCommand::redo() {
-    document_.replacePart(id_, newPart_, newOptions_, newPose_, newPinned_, newClip_);
+    document_.replacePart(id_, newPart_, newOptions_, newPose_, newPinned_, newClip_,
+                          newOtherClips_);
 }
 
 nlohmann::json RebuildPartCommand::recipeStep() const {
@@ -59,7 +62,8 @@ nlohmann::json RebuildPartCommand::recipeStep() const {
 }
 
 void RebuildPartCommand::undo() {
-    document_.replacePart(id_, oldPart_, oldOptions_, oldPose_, oldPinned_, oldClip_);
+    document_.replacePart(id_, oldPart_, oldOptions_, oldPose_, oldPinned_, oldClip_,
+                          oldOtherClips_);
 }
 
 }  // namespace rigmesh::model

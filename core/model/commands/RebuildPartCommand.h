@@ -42,6 +42,7 @@ class RebuildPartCommand : public QUndoCommand, public RecipeStepSource {
     rigmesh::Pose oldPose_, newPose_;
     std::set<rigmesh::JointId> oldPinned_, newPinned_;
     rigmesh::Clip oldClip_, newClip_ = rigmesh::Clip();
+    std::vector<rigmesh::Clip> oldOtherClips_, newOtherClips_;
     int droppedJoints_ = 0;
 };
 

@@ -78,8 +78,21 @@
 //                 locked bones
 //   lock_bone, unlock_bone "part", "bone": painting and the clean-ups keep
 //                 a locked bone's weights
-//   clip_settings "part", optional "frameRate", "interpolation" ("linear" |
-//                 "smooth"), "playback" ("hold" | "loop")
+//   clip_settings "part", optional "frameRate", "interpolation" ("constant" |
+//                 "linear" | "smooth"), "playback" ("hold" | "loop" |
+//                 "ping_pong"): of the part's active clip
+//   move_keys     "part", "times": [seconds, ...], "by" (seconds): the keys
+//                 move together (a timeline drag)
+//   paste_keys    "part", "keys": [{"time", "rotations": {"<joint>": [w, x,
+//                 y, z], ...}, optional "rootTranslation"}, ...]: whole poses
+//                 keyed at their times (a timeline paste)
+//   timeline      optional "start", "end" (whole frames), "frameRate": a new
+//                 rate keeps every key on its frame (issue 15)
+//   new_clip      "part", "name": a new empty clip, made active
+//   duplicate_clip "part", "clip", "name": a copy of "clip", made active
+//   rename_clip   "part", "clip", "name"
+//   delete_clip   "part", "clip" (not the part's only clip)
+//   active_clip   "part", "clip": key, play and pose from this clip
 //
 // Each step constructs one command and pushes it on the document's undo
 // stack. A step that cannot be applied throws RecipeError ("step 3 (pose):
