@@ -387,7 +387,7 @@ TEST_F(Studio, DraggingAHandMovesNoVertexOfTheOtherLimbs) {
     const Skeleton& skeleton = part.skeleton;
     // Each leaf's limb: the bones from it up to the first junction.
     auto limbOf = [&](JointId leaf) {
-        std::set<int> bones;
+        std::set<BoneId> bones;
         for (JointId j = leaf; j != skeleton.root() && (j == leaf || skeleton.degree(j) == 2);) {
             const Bone* up = nullptr;
             for (const Bone& bone : skeleton.bones())
@@ -395,16 +395,16 @@ TEST_F(Studio, DraggingAHandMovesNoVertexOfTheOtherLimbs) {
                     up = &bone;
             if (!up)
                 break;
-            bones.insert(skeleton.indexOfBone(up->id));
+            bones.insert(up->id);
             j = up->head;
         }
         return bones;
     };
     const JointId hand = sidewaysHand(skeleton);
-    std::set<int> otherLimbs;
+    std::set<BoneId> otherLimbs;
     for (const Joint& joint : skeleton.joints())
         if (skeleton.degree(joint.id) == 1 && joint.id != hand)
-            for (int bone : limbOf(joint.id))
+            for (BoneId bone : limbOf(joint.id))
                 otherLimbs.insert(bone);
     ASSERT_FALSE(limbOf(hand).empty());
     ASSERT_FALSE(otherLimbs.empty());
@@ -422,7 +422,7 @@ TEST_F(Studio, DraggingAHandMovesNoVertexOfTheOtherLimbs) {
     // bones) that the dragged limb's bones do not weight stays exactly where
     // it was: the drag turned nothing else. (Vertices blended with the
     // dragged limb at its junction move with it, as they should.)
-    const std::set<int> dragged = limbOf(hand);
+    const std::set<BoneId> dragged = limbOf(hand);
     int checked = 0, blended = 0, moved = 0;
     for (std::size_t v = 0; v < posed.size(); ++v) {
         const auto& list = part.weights.perVertex[v];

@@ -15,7 +15,7 @@ namespace {
 // be off by).
 constexpr double kDropBelow = 1e-9;
 
-double weightOf(const std::vector<std::pair<int, double>>& list, int bone) {
+double weightOf(const std::vector<std::pair<BoneId, double>>& list, BoneId bone) {
     for (const auto& [b, w] : list)
         if (b == bone)
             return w;
@@ -24,22 +24,22 @@ double weightOf(const std::vector<std::pair<int, double>>& list, int bone) {
 
 // Sets `bone` to `target` in `list`, the other unlocked bones scaled to take
 // up the difference. False if that cannot be done (only locked bones left).
-bool setWeight(std::vector<std::pair<int, double>>& list, int bone, double target,
-               const std::vector<char>& lockedIndex) {
+bool setWeight(std::vector<std::pair<BoneId, double>>& list, BoneId bone, double target,
+               const std::set<BoneId>& locked) {
     double lockedSum = 0.0, freeSum = 0.0;
     for (const auto& [b, w] : list) {
         if (b == bone)
             continue;
-        (lockedIndex[b] ? lockedSum : freeSum) += w;
+        (locked.contains(b) ? lockedSum : freeSum) += w;
     }
     target = std::clamp(target, 0.0, 1.0 - lockedSum);
     const double freeTarget = 1.0 - lockedSum - target;
     if (freeSum <= 0.0 && (freeTarget > kDropBelow || target == weightOf(list, bone)))
         return false;  // nothing unlocked to hand the rest to, or to take it from
-    std::map<int, double> out;
+    std::map<BoneId, double> out;
     for (const auto& [b, w] : list)
         if (b != bone)
-            out[b] = lockedIndex[b] ? w : (freeSum > 0.0 ? w * freeTarget / freeSum : 0.0);
+            out[b] = locked.contains(b) ? w : (freeSum > 0.0 ? w * freeTarget / freeSum : 0.0);
     out[bone] = target;
     // Locked weights are kept bit for bit; by construction the weights sum
     // to 1 up to rounding.
@@ -68,11 +68,7 @@ DabResult paintWeights(Part& part, const WeightDab& dab) {
         throw Error(
             "This part is not mirror symmetric any more (merged or cut), so X-mirror "
             "cannot paint it.");
-    const int bone = skeleton.indexOfBone(dab.bone);
-    std::vector<char> lockedIndex(skeleton.boneCount(), 0);
-    for (BoneId id : dab.locked)
-        if (skeleton.hasBone(id))
-            lockedIndex[skeleton.indexOfBone(id)] = 1;
+    const BoneId bone = dab.bone;
 
     // The vertices under the brush (and their reflections) with their falloff.
     std::map<int, double> influence;
@@ -94,7 +90,7 @@ DabResult paintWeights(Part& part, const WeightDab& dab) {
     if (dab.mode == BrushMode::Smooth)
         neighbours = vertexNeighbours(part.mesh);
     auto& weights = part.weights.perVertex;
-    const std::vector<std::vector<std::pair<int, double>>> old = weights;
+    const WeightsById old = weights;
     DabResult result;
     for (const auto& [v, f] : influence) {
         const double w = weightOf(old[v], bone);
@@ -120,8 +116,8 @@ DabResult paintWeights(Part& part, const WeightDab& dab) {
         }
         if (target == w)
             continue;
-        std::vector<std::pair<int, double>> updated = old[v];
-        if (!setWeight(updated, bone, target, lockedIndex)) {
+        std::vector<std::pair<BoneId, double>> updated = old[v];
+        if (!setWeight(updated, bone, target, dab.locked)) {
             ++result.skippedLocked;
             continue;
         }
@@ -144,10 +140,10 @@ int filterWeights(Part& part, Keep&& keep) {
     for (auto& list : part.weights.perVertex) {
         if (list.empty())
             continue;
-        std::vector<std::pair<int, double>> sorted = list;
+        std::vector<std::pair<BoneId, double>> sorted = list;
         std::sort(sorted.begin(), sorted.end(),
                   [](const auto& a, const auto& b) { return a.second > b.second; });
-        std::vector<std::pair<int, double>> kept;
+        std::vector<std::pair<BoneId, double>> kept;
         for (std::size_t rank = 0; rank < sorted.size(); ++rank)
             if (rank == 0 || keep(sorted[rank], rank))
                 kept.push_back(sorted[rank]);

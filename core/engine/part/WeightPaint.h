@@ -31,7 +31,7 @@ struct WeightDab {
 struct DabResult {
     // The vertices whose weights changed, with their weights before and after.
     std::vector<int> changed;
-    std::vector<std::vector<std::pair<int, double>>> before, after;
+    WeightsById before, after;
     // Vertices left as they were: every other bone locked, or no other bone
     // to hand the difference to (subtracting from a vertex with one bone).
     int skippedLocked = 0;

@@ -12,7 +12,16 @@ namespace rigmesh {
 
 namespace {
 
+// A vertex's weights by bone position in the transforms (the ids looked up
+// once per vertex, into a small buffer that each thread reuses).
 using Influences = std::vector<std::pair<int, double>>;
+
+void lookUp(const std::vector<std::pair<BoneId, double>>& byId, const SkinningTransforms& t,
+            Influences& out) {
+    out.clear();
+    for (const auto& [bone, weight] : byId)
+        out.emplace_back(t.positionOf(bone), weight);
+}
 
 bool allIdentity(const Influences& influences, const SkinningTransforms& t) {
     for (const auto& [bone, weight] : influences) {
@@ -78,7 +87,13 @@ void dualQuaternionBlend(const Influences& influences, const SkinningTransforms&
 
 }  // namespace
 
-SkinningTransforms::SkinningTransforms(const std::vector<RigidTransform>& boneTransforms) {
+SkinningTransforms::SkinningTransforms(const Skeleton& skeleton,
+                                       const std::vector<RigidTransform>& boneTransforms)
+    : positions_(skeleton) {
+    if (static_cast<int>(boneTransforms.size()) != skeleton.boneCount())
+        throw Error(
+            "Skinning needs one transform per bone: " + std::to_string(boneTransforms.size()) +
+            " for " + std::to_string(skeleton.boneCount()) + " bones.");
     const std::size_t b = boneTransforms.size();
     matrices_.reserve(b);
     translations_.reserve(b);
@@ -100,24 +115,22 @@ SkinningTransforms::SkinningTransforms(const std::vector<RigidTransform>& boneTr
 }
 
 SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
-                             const std::vector<Vec3>& restNormals, const SkinWeights& weights,
+                             const std::vector<Vec3>& restNormals, const WeightsById& weights,
                              const SkinningTransforms& transforms, const SkinningOptions& options) {
     const int count = static_cast<int>(restPositions.size());
-    if (static_cast<int>(weights.perVertex.size()) != count)
-        throw Error("Skinning needs one weight list per vertex: " +
-                    std::to_string(weights.perVertex.size()) + " lists for " +
-                    std::to_string(count) + " vertices.");
+    if (static_cast<int>(weights.size()) != count)
+        throw Error("Skinning needs one weight list per vertex: " + std::to_string(weights.size()) +
+                    " lists for " + std::to_string(count) + " vertices.");
     const bool withNormals = !restNormals.empty();
     if (withNormals && static_cast<int>(restNormals.size()) != count)
         throw Error("Skinning needs one rest normal per vertex or none.");
     if (options.threads < 1)
         throw Error("Skinning needs at least one thread.");
-    for (const Influences& influences : weights.perVertex) {
+    for (const auto& influences : weights) {
         for (const auto& [bone, weight] : influences) {
-            if (bone < 0 || bone >= transforms.boneCount())
-                throw Error("A skin weight refers to bone index " + std::to_string(bone) +
-                            " but the pose has " + std::to_string(transforms.boneCount()) +
-                            " bones.");
+            if (transforms.positionOf(bone) < 0)
+                throw Error("A skin weight refers to bone " + std::to_string(bone) +
+                            ", which the posed skeleton does not have.");
         }
     }
 
@@ -128,8 +141,9 @@ SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
     const bool dqs = options.method == SkinningMethod::DualQuaternion;
 
     const auto run = [&](int begin, int end) {
+        Influences influences;
         for (int v = begin; v < end; ++v) {
-            const Influences& influences = weights.perVertex[v];
+            lookUp(weights[v], transforms, influences);
             const Vec3* n = withNormals ? &restNormals[v] : nullptr;
             Vec3* nOut = withNormals ? &out.normals[v] : nullptr;
             if (influences.empty() || allIdentity(influences, transforms)) {
@@ -154,8 +168,8 @@ SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
 PosedMesh posePart(const Part& part, const Pose& pose, const SkinningOptions& options) {
     const PosedSkeleton posed = forwardKinematics(part.skeleton, pose);
     SkinnedVertices skinned =
-        skinVertices(part.mesh.vertices, vertexNormals(part.mesh), part.weights,
-                     SkinningTransforms(posed.boneTransforms), options);
+        skinVertices(part.mesh.vertices, vertexNormals(part.mesh), part.weights.perVertex,
+                     SkinningTransforms(part.skeleton, posed.boneTransforms), options);
     PosedMesh result;
     result.mesh.faces = part.mesh.faces;
     result.mesh.vertices = std::move(skinned.positions);

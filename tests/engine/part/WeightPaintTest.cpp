@@ -11,9 +11,8 @@ namespace rigmesh {
 namespace {
 
 double weightOf(const Part& part, int v, BoneId bone) {
-    const int index = part.skeleton.indexOfBone(bone);
     for (const auto& [b, w] : part.weights.perVertex[v])
-        if (b == index)
+        if (b == bone)
             return w;
     return 0.0;
 }
