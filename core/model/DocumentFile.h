@@ -1,5 +1,5 @@
 // The native document file (.rigmesh): CBOR (RFC 8949) of one map
-//   {"format": "rigmesh-studio-document", "version": 1, "nextPartId": n,
+//   {"format": "rigmesh-studio-document", "version": 2, "nextPartId": n,
 //    "parts": [ {id, name, visible, placement, stroke, options, part: {...},
 //                pose: {rotations: [[joint, w, x, y, z], ...], rootTranslation},
 //                pinned: [joint, ...],
@@ -8,7 +8,9 @@
 //                       keys: [{time, pose: {rotations, rootTranslation}}, ...]}} ]}
 // where part holds everything of the engine Part: name, outline, mesh
 // (vertices, faces), origins, mirror, skeleton (joints with ids, bones with
-// ids, root), skin weights and the known closest bones. pose and pinned are
+// ids, root), skin weights and the known closest bones (bones by id since
+// version 2; version 1 named them by position in the bone list, and reading
+// converts them: part/PartJson.h). pose and pinned are
 // optional when reading (a part without them loads in its rest pose, unpinned);
 // their joint ids must be joints of the part's skeleton and the quaternions
 // finite and non-zero. clip is optional too (absent: no keys at 24 frames per
@@ -48,7 +50,8 @@ class DocumentFileError : public rigmesh::Error {
 namespace DocumentFile {
 
 inline constexpr const char* kFormatName = "rigmesh-studio-document";
-inline constexpr int kFormatVersion = 1;
+// 2: skin weights, failed bones and known closest bones keyed by bone id.
+inline constexpr int kFormatVersion = 2;
 inline constexpr const char* kSuffix = "rigmesh";
 
 QByteArray toBytes(const DocumentContents& contents);
