@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/Error.h"
+#include "model/MergeRigCarry.h"
 #include "model/RigCarryOver.h"
 #include "model/recipe/RecipeJson.h"
 
@@ -119,10 +120,15 @@ MergePartsCommand::MergePartsCommand(Document& document, PartId dragged, PartId 
       stats_(result.stats) {
     mergedNode_ = editedNode(targetNode_, std::make_shared<const Part>(std::move(result.part)),
                              &droppedJoints_);
-    const PartNode& d = draggedNode_;
-    if (!identicalPoses(d.pose, restPoseOf(d)) || !d.pinnedJoints.empty() || !d.clip.keys().empty())
-        droppedDragged_ = true;
-    setText(tr("Merge %1 into %2").arg(d.name, targetNode_.name));
+    // The dragged part's pose, pins and keys on their merged joint ids.
+    const DraggedRigCarry carried = carryDraggedRig(
+        mergedNode_, draggedNode_, result.draggedJoints,
+        targetNode_.placement.rotation.conjugate() * draggedNode_.placement.rotation);
+    mergedNode_.pose = carried.pose;
+    mergedNode_.pinnedJoints = carried.pinned;
+    mergedNode_.clip = carried.clip;
+    draggedCarry_ = carried.describe(draggedNode_.name);
+    setText(tr("Merge %1 into %2").arg(draggedNode_.name, targetNode_.name));
 }
 
 QString MergePartsCommand::summary() const {
@@ -136,9 +142,10 @@ QString MergePartsCommand::summary() const {
         text += tr("; %n bone(s) pruned", nullptr, stats_.prunedBones);
     if (droppedJoints_ > 0)
         text +=
-            tr("; the pose, pins and keys of %n joint(s) were dropped", nullptr, droppedJoints_);
-    if (droppedDragged_)
-        text += tr("; %1's pose, pins and keys were dropped").arg(draggedNode_.name);
+            tr("; %1 lost the pose, pins and keys of %n pruned joint(s)", nullptr, droppedJoints_)
+                .arg(targetNode_.name);
+    if (!draggedCarry_.isEmpty())
+        text += QStringLiteral("; ") + draggedCarry_;
     return text;
 }
 

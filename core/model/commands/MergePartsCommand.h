@@ -3,8 +3,9 @@
 // a refused merge throws rigmesh::Error and changes nothing. Redo replaces
 // the target by the merged part (same id, name and placement) and removes the
 // dragged part; undo restores both exactly. The target's pose, pins and keys
-// carry over for the joints the merged skeleton keeps (RigCarryOver); the
-// dragged part's are dropped, and droppedMessage() says so.
+// carry over for the joints the merged skeleton keeps (RigCarryOver), the
+// dragged part's onto their new joint ids where they still turn the same
+// bones (MergeRigCarry); summary() says what of either was dropped.
 #pragma once
 
 #include <QCoreApplication>
@@ -58,8 +59,8 @@ class MergePartsCommand : public QUndoCommand, public RecipeStepSource {
     MergeSpec spec_;  // with joints resolved to ids (split target: the point)
     PartNode draggedNode_, targetNode_, mergedNode_;
     MergeStats stats_;
-    int droppedJoints_ = 0;        // of the target
-    bool droppedDragged_ = false;  // the dragged part was posed, pinned or keyed
+    int droppedJoints_ = 0;  // of the target
+    QString draggedCarry_;   // what of the dragged part's rig was kept and dropped
 };
 
 }  // namespace rigmesh::model
