@@ -55,6 +55,9 @@ class BoneIndexTable {
         const auto found = sparse_.find(id);
         return found == sparse_.end() ? -1 : found->second;
     }
+    // True when every id is in the plain array (ids below its size).
+    bool coversAllInArray() const { return sparse_.empty(); }
+    std::size_t arraySize() const { return dense_.size(); }
 
   private:
     std::vector<int> dense_;

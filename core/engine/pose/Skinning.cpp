@@ -12,16 +12,9 @@ namespace rigmesh {
 
 namespace {
 
-// A vertex's weights by bone position in the transforms (the ids looked up
-// once per vertex, into a small buffer that each thread reuses).
-using Influences = std::vector<std::pair<int, double>>;
-
-void lookUp(const std::vector<std::pair<BoneId, double>>& byId, const SkinningTransforms& t,
-            Influences& out) {
-    out.clear();
-    for (const auto& [bone, weight] : byId)
-        out.emplace_back(t.positionOf(bone), weight);
-}
+// A vertex's weights by slot of the transforms (the bone ids themselves,
+// but for ids far beyond the bone count).
+using Influences = std::vector<std::pair<BoneId, double>>;
 
 bool allIdentity(const Influences& influences, const SkinningTransforms& t) {
     for (const auto& [bone, weight] : influences) {
@@ -89,28 +82,30 @@ void dualQuaternionBlend(const Influences& influences, const SkinningTransforms&
 
 SkinningTransforms::SkinningTransforms(const Skeleton& skeleton,
                                        const std::vector<RigidTransform>& boneTransforms)
-    : positions_(skeleton) {
+    : positions_(skeleton), slotsAreIds_(positions_.coversAllInArray()) {
     if (static_cast<int>(boneTransforms.size()) != skeleton.boneCount())
         throw Error(
             "Skinning needs one transform per bone: " + std::to_string(boneTransforms.size()) +
             " for " + std::to_string(skeleton.boneCount()) + " bones.");
-    const std::size_t b = boneTransforms.size();
-    matrices_.reserve(b);
-    translations_.reserve(b);
-    real_.reserve(b);
-    dual_.reserve(b);
-    identity_.reserve(b);
-    for (const RigidTransform& transform : boneTransforms) {
+    const std::size_t slots = slotsAreIds_ ? positions_.arraySize() : boneTransforms.size();
+    matrices_.assign(slots, Eigen::Matrix3d::Identity());
+    translations_.assign(slots, Vec3::Zero());
+    real_.assign(slots, Eigen::Vector4d(0, 0, 0, 1));
+    dual_.assign(slots, Eigen::Vector4d::Zero());
+    identity_.assign(slots, 1);  // slots of ids the skeleton lacks: never read
+    for (int b = 0; b < skeleton.boneCount(); ++b) {
+        const std::size_t slot = slotOf(skeleton.bones()[b].id);
+        const RigidTransform& transform = boneTransforms[b];
         const Eigen::Quaterniond q = transform.rotation.normalized();
         const Vec3& tr = transform.translation;
-        matrices_.push_back(q.toRotationMatrix());
-        translations_.push_back(tr);
-        real_.push_back(q.coeffs());
+        matrices_[slot] = q.toRotationMatrix();
+        translations_[slot] = tr;
+        real_[slot] = q.coeffs();
         // Dual part 0.5 * (0, t) * q (Kavan et al. 2008, section 2).
         const Vec3 dv = 0.5 * (q.w() * tr + tr.cross(q.vec()));
         const double dw = -0.5 * tr.dot(q.vec());
-        dual_.push_back(Eigen::Vector4d(dv.x(), dv.y(), dv.z(), dw));
-        identity_.push_back(transform.isIdentity() ? 1 : 0);
+        dual_[slot] = Eigen::Vector4d(dv.x(), dv.y(), dv.z(), dw);
+        identity_[slot] = transform.isIdentity() ? 1 : 0;
     }
 }
 
@@ -128,11 +123,20 @@ SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
         throw Error("Skinning needs at least one thread.");
     for (const auto& influences : weights) {
         for (const auto& [bone, weight] : influences) {
-            if (transforms.positionOf(bone) < 0)
+            if (!transforms.hasBone(bone))
                 throw Error("A skin weight refers to bone " + std::to_string(bone) +
                             ", which the posed skeleton does not have.");
         }
     }
+    // Ids far beyond the bone count: weights moved onto the slots once.
+    WeightsById bySlot;
+    if (!transforms.slotsAreIds()) {
+        bySlot = weights;
+        for (auto& influences : bySlot)
+            for (auto& [bone, weight] : influences)
+                bone = static_cast<BoneId>(transforms.slotOf(bone));
+    }
+    const WeightsById& slotted = transforms.slotsAreIds() ? weights : bySlot;
 
     SkinnedVertices out;
     out.positions.resize(count);
@@ -141,9 +145,8 @@ SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
     const bool dqs = options.method == SkinningMethod::DualQuaternion;
 
     const auto run = [&](int begin, int end) {
-        Influences influences;
         for (int v = begin; v < end; ++v) {
-            lookUp(weights[v], transforms, influences);
+            const Influences& influences = slotted[v];
             const Vec3* n = withNormals ? &restNormals[v] : nullptr;
             Vec3* nOut = withNormals ? &out.normals[v] : nullptr;
             if (influences.empty() || allIdentity(influences, transforms)) {

@@ -37,27 +37,33 @@ struct SkinningOptions {
     int threads = 2;                                         // >= 1; capped by the vertex count
 };
 
-// Per-bone data derived once per pose from the bone transforms. Accessors
-// take the bone's position in skeleton.bones(); positionOf() finds it from
-// the bone id that skin weights use.
+// Per-bone data derived once per pose from the bone transforms, stored in
+// slots: at the bone's id (so skinning reads weights keyed by id with no
+// lookup), or, for ids far beyond the bone count (a hand-edited file), at its
+// position in skeleton.bones().
 class SkinningTransforms {
   public:
     // `boneTransforms` in skeleton.bones() order (FK's PosedSkeleton). Throws
     // Error if their number differs from the skeleton's bones.
     SkinningTransforms(const Skeleton& skeleton, const std::vector<RigidTransform>& boneTransforms);
 
-    int boneCount() const { return static_cast<int>(identity_.size()); }
-    // -1 for a bone the skeleton does not have.
-    int positionOf(BoneId id) const { return positions_[id]; }
-    const Eigen::Matrix3d& rotationMatrix(int bone) const { return matrices_[bone]; }
-    const Vec3& translation(int bone) const { return translations_[bone]; }
+    bool hasBone(BoneId id) const { return positions_[id] >= 0; }
+    // Whether slots are bone ids; else slotOf() maps them.
+    bool slotsAreIds() const { return slotsAreIds_; }
+    // The slot of a bone the skeleton has.
+    std::size_t slotOf(BoneId id) const {
+        return slotsAreIds_ ? id : static_cast<std::size_t>(positions_[id]);
+    }
+    const Eigen::Matrix3d& rotationMatrix(std::size_t slot) const { return matrices_[slot]; }
+    const Vec3& translation(std::size_t slot) const { return translations_[slot]; }
     // The unit dual quaternion (real, dual) as (x, y, z, w) coefficients.
-    const Eigen::Vector4d& dualQuaternionReal(int bone) const { return real_[bone]; }
-    const Eigen::Vector4d& dualQuaternionDual(int bone) const { return dual_[bone]; }
-    bool isIdentity(int bone) const { return identity_[bone] != 0; }
+    const Eigen::Vector4d& dualQuaternionReal(std::size_t slot) const { return real_[slot]; }
+    const Eigen::Vector4d& dualQuaternionDual(std::size_t slot) const { return dual_[slot]; }
+    bool isIdentity(std::size_t slot) const { return identity_[slot] != 0; }
 
   private:
     BoneIndexTable positions_;
+    bool slotsAreIds_ = true;
     std::vector<Eigen::Matrix3d> matrices_;
     std::vector<Vec3> translations_;
     std::vector<Eigen::Vector4d> real_, dual_;

@@ -268,6 +268,32 @@ TEST(Skinning, WeightsFollowBoneIdsWhenAnEarlierBoneIsGone) {
     }
 }
 
+// Ids far beyond the bone count (a hand-edited file) take the other path
+// (per-bone data by position): the same skinning.
+TEST(Skinning, BoneIdsFarBeyondTheBoneCountSkinTheSame) {
+    const Part contiguous = syntheticTwoBoneTube();
+    Part far = contiguous;
+    std::vector<Bone> bones = contiguous.skeleton.bones();
+    const BoneId ids[] = {7, 1000000};
+    for (std::size_t b = 0; b < bones.size(); ++b)
+        bones[b].id = ids[b];
+    far.skeleton =
+        Skeleton::restore(contiguous.skeleton.joints(), bones, contiguous.skeleton.root());
+    for (auto& list : far.weights.perVertex)
+        for (auto& [bone, w] : list)
+            bone = ids[bone];
+    ASSERT_TRUE(far.validate().empty()) << far.validate().front();
+    Pose bent;
+    bent.setRotation(contiguous.skeleton.bones()[1].head,
+                     Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3::UnitY())));
+    for (SkinningMethod method : kMethods) {
+        const SkinnedVertices expected = skinPart(contiguous, bent, method);
+        const SkinnedVertices got = skinPart(far, bent, method);
+        for (std::size_t v = 0; v < got.positions.size(); ++v)
+            ASSERT_LT((got.positions[v] - expected.positions[v]).norm(), 1e-12) << v;
+    }
+}
+
 TEST(Skinning, PosePartKeepsFacesAndSkinsPositions) {
     const Part& part = sharedPart("biped");
     std::mt19937 rng(23);
