@@ -20,6 +20,7 @@
 #include "DocumentView.h"
 #include "EmbeddedExamples.h"
 #include "MainWindow.h"
+#include "StudioMergeFixture.h"
 #include "StudioTestSupport.h"
 #include "model/Document.h"
 #include "model/DocumentExport.h"
@@ -87,22 +88,22 @@ class Studio : public testing::Test {
             top = h.parent(top);
         return h.jointId(top);
     }
-    // Bone indices of the subtree below `joint`, the bone ending at it
+    // Bone ids of the subtree below `joint`, the bone ending at it
     // included: every bone a turn of that bone moves.
-    static std::set<int> bonesFrom(const Skeleton& skeleton, JointId joint) {
+    static std::set<BoneId> bonesFrom(const Skeleton& skeleton, JointId joint) {
         const PoseHierarchy h(skeleton);
         std::vector<bool> below(h.jointCount(), false);
         for (int j : h.parentFirstOrder())
             below[j] = h.jointId(j) == joint || (h.parent(j) >= 0 && below[h.parent(j)]);
-        std::set<int> bones;
+        std::set<BoneId> bones;
         for (int b = 0; b < h.boneCount(); ++b)
             if (below[h.boneTailJoint(b)])
-                bones.insert(b);
+                bones.insert(skeleton.bones()[b].id);
         return bones;
     }
     // How many of the vertices weighted only by bones outside `moving` moved
     // from the rest shape in the part's current pose; `checked` counts them.
-    int movedOutside(model::PartId id, const std::set<int>& moving, int& checked) const {
+    int movedOutside(model::PartId id, const std::set<BoneId>& moving, int& checked) const {
         const model::PartNode& node = document()->part(id);
         const std::vector<Vec3> posed = posePart(*node.part, node.pose).mesh.vertices;
         int moved = 0;
@@ -495,7 +496,7 @@ TEST_F(Studio, DraggingAHandMovesNoVertexOutsideItsArmUnlessAltIsHeld) {
     const JointId hand = sidewaysHand(skeleton);
     const JointId shoulder = limbTop(skeleton, hand);
     ASSERT_NE(shoulder, hand) << "the arm has two bones";
-    const std::set<int> arm = bonesFrom(skeleton, shoulder);
+    const std::set<BoneId> arm = bonesFrom(skeleton, shoulder);
     window->activatePoseTool();
     QTest::qWait(50);
     const QVector3D shoulderBefore = viewport()->jointWorldPosition(id, shoulder);
@@ -754,48 +755,7 @@ TEST_F(Studio, SavedDocumentReopensWithTheSameContent) {
 namespace rigmesh {
 namespace {
 
-// The camel body and a leg overlapping its front (the recipe's placement).
-class StudioMerge : public testing::Test {
-  protected:
-    void SetUp() override {
-        ASSERT_TRUE(recovery.isValid());
-        window = std::make_unique<widgets::MainWindow>(recovery.path());
-        window->resize(1200, 800);
-        window->newDocument();
-        settle(window.get());
-        model::Document& d = *window->currentDocument();
-        const std::string dir = RIGMESH_SHARED_SKETCHES;
-        d.undoStack()->push(model::CreatePartCommand::create(
-                                d, readSketchFile(dir + "/camel_body.json").points, "body")
-                                .release());
-        model::Placement legPlace;
-        legPlace.translation = Vec3(1.7, -0.55, 0.3);
-        d.undoStack()->push(
-            model::CreatePartCommand::create(d, readSketchFile(dir + "/camel_leg.json").points,
-                                             "leg", {}, legPlace)
-                .release());
-        viewport()->frameAll();
-        window->activateMergeTool();
-        QTest::qWait(50);
-    }
-    widgets::Viewport* viewport() const { return window->currentView()->viewport(); }
-    model::Document* document() const { return window->currentDocument(); }
-    // A pixel on the leg's lower half, far from the body.
-    QPointF onTheLeg() const {
-        const QVector3D p =
-            viewport()->camera().project(QVector3D(1.7f, -2.6f, 0.3f), QSizeF(viewport()->size()));
-        return {p.x(), p.y()};
-    }
-    std::vector<QPointF> shortDrag() const {
-        std::vector<QPointF> path;
-        for (int i = 0; i <= 6; ++i)
-            path.emplace_back(onTheLeg().x() + i, onTheLeg().y() - i);
-        return path;
-    }
-
-    QTemporaryDir recovery;
-    std::unique_ptr<widgets::MainWindow> window;
-};
+using widgettest::StudioMerge;
 
 TEST_F(StudioMerge, DraggingALegIntoTheBodyMergesThemInOneUndoStep) {
     ASSERT_EQ(document()->partCount(), 2);
@@ -803,6 +763,10 @@ TEST_F(StudioMerge, DraggingALegIntoTheBodyMergesThemInOneUndoStep) {
     const QByteArray before = model::DocumentFile::toBytes(*document());
     const int steps = document()->undoStack()->count();
     drag(viewport(), shortDrag());
+    QMenu* menu = choices();
+    ASSERT_NE(menu, nullptr) << "a plain release offers snap, split and connect";
+    QTest::keyClick(menu, Qt::Key_Return);  // Snap, the default item
+    rigmesh::test::waitForJobs();           // the merge runs in the background
     ASSERT_EQ(document()->partCount(), 1) << window->statusBar()->currentMessage().toStdString();
     EXPECT_EQ(document()->undoStack()->count(), steps + 1);
     EXPECT_TRUE(document()->parts()[0].part->validateSolid().empty());

@@ -138,7 +138,7 @@ void PaintTool::sample(Viewport& viewport, const QPointF& pixel) {
         emit viewport.statusMessage(viewport.weightsAt(pixel));
         return;
     }
-    value = weightOfIndex(part.weights.perVertex[hit->vertex], part.skeleton.indexOfBone(*bone));
+    value = weightOfBone(part.weights.perVertex[hit->vertex], *bone);
     if (valueBox_)
         valueBox_->setValue(value);
     emit viewport.statusMessage(tr("Sampled %1 = %2 at vertex %3: the Replace brush paints it")

@@ -66,8 +66,7 @@ std::vector<float> differenceFromGlobal(const Part& part) {
         return out;
     try {
         const WeightsById global = recomputeWeightsGlobally(part.mesh, part.skeleton);
-        const std::vector<double> d =
-            weightDifferences(weightsById(part.skeleton, part.weights), global);
+        const std::vector<double> d = weightDifferences(part.weights.perVertex, global);
         for (std::size_t v = 0; v < d.size() && v < out.size(); ++v)
             out[v] = static_cast<float>(d[v]);
     } catch (const Error&) {
@@ -119,6 +118,9 @@ SceneRenderer::GpuMesh& SceneRenderer::meshFor(const std::shared_ptr<const Part>
     // number of influences. The four largest influences are kept (largest
     // first) and renormalised for the GPU; the count is of all of them, so
     // the Influences view can flag vertices over four.
+    // The shader's bone matrices are by position in skeleton.bones(); the
+    // part's weights name bones by id.
+    const BoneIndexTable positionOf(part->skeleton);
     std::vector<float> data;
     data.reserve(mesh.vertices.size() * 15);
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
@@ -130,7 +132,7 @@ SceneRenderer::GpuMesh& SceneRenderer::meshFor(const std::shared_ptr<const Part>
             std::sort(influences.begin(), influences.end(),
                       [](const auto& a, const auto& b) { return a.second > b.second; });
             for (std::size_t k = 0; k < 4 && k < influences.size(); ++k)
-                top[k] = influences[k];
+                top[k] = {std::max(positionOf[influences[k].first], 0), influences[k].second};
         }
         double sum = top[0].second + top[1].second + top[2].second + top[3].second;
         if (sum <= 0)

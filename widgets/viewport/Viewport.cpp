@@ -468,15 +468,13 @@ QString Viewport::weightsAt(const QPointF& pixel) const {
     std::sort(weights.begin(), weights.end(),
               [](const auto& a, const auto& b) { return a.second > b.second; });
     QStringList listed;
-    for (const auto& [bone, w] : weights) {
-        const BoneId id = part.skeleton.bones()[bone].id;
+    for (const auto& [id, w] : weights) {
         auto name = part.boneNames.find(id);
-        const QString label =
-            name != part.boneNames.end()
-                ? QString::fromStdString(name->second)
-                : tr("bone %1 (to %2)")
-                      .arg(id)
-                      .arg(model::jointDisplayName(part.skeleton.bones()[bone].tail));
+        const QString label = name != part.boneNames.end()
+                                  ? QString::fromStdString(name->second)
+                                  : tr("bone %1 (to %2)")
+                                        .arg(id)
+                                        .arg(model::jointDisplayName(part.skeleton.bone(id).tail));
         listed << QStringLiteral("%1 %2").arg(label).arg(w, 0, 'f', 3);
     }
     return tr("Vertex %1 of %2: %3")

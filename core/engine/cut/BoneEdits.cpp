@@ -18,12 +18,6 @@ using Clock = std::chrono::steady_clock;
 // The closest split that still leaves both halves a bone of some length.
 constexpr double kEndFraction = 0.05;
 
-BoneId leadingBone(const std::vector<std::pair<BoneId, double>>& weights) {
-    return std::max_element(weights.begin(), weights.end(),
-                            [](const auto& a, const auto& b) { return a.second < b.second; })
-        ->first;
-}
-
 BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& weights,
                       const std::vector<int>& seeds, const std::vector<int>& unknown,
                       const std::vector<BoneId>& bones, Clock::time_point start) {
@@ -33,7 +27,8 @@ BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& we
     BoneEditResult result;
     result.part = part;
     result.part.skeleton = std::move(skeleton);
-    result.part.weights = weightsByIndex(result.part.skeleton, local.weights);
+    // A fresh value: failed bones and the warning were the old solve's.
+    result.part.weights = SkinWeightsById{local.weights, {}, {}};
     // Closest bones known from the sketch no longer hold where bones changed.
     result.part.knownClosestBones.clear();
     std::erase_if(result.part.boneNames,
@@ -97,7 +92,7 @@ BoneEditResult splitBoneAt(const Part& part, BoneId bone, const Vec3& at) {
     // There both halves are equally close, so every vertex passes; the test
     // starts instead from every vertex the bone leads, and those beyond the
     // new joint (now closest to the far half, which has no weight) fail it.
-    const WeightsById weights = weightsById(part.skeleton, part.weights);
+    const WeightsById& weights = part.weights.perVertex;
     std::vector<int> seeds;
     for (int v = 0; v < part.mesh.vertexCount(); ++v)
         if (!weights[v].empty() && leadingBone(weights[v]) == bone)
@@ -128,7 +123,7 @@ BoneEditResult deleteBone(const Part& part, BoneId bone) {
     // The collapsed piece (paper 3.3: between the cuts through the far joints
     // of the neighbouring bones): every vertex led by the bone or a
     // neighbour, all of them solved again.
-    WeightsById weights = weightsById(part.skeleton, part.weights);
+    WeightsById weights = part.weights.perVertex;
     std::vector<int> piece;
     for (int v = 0; v < part.mesh.vertexCount(); ++v) {
         if (weights[v].empty())

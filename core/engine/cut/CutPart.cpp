@@ -172,7 +172,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
     const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(part.mesh);
     std::map<BoneId, BoneId> tailHalf;
     const Skeleton split = splitCrossingBones(part.skeleton, surface, tailHalf);
-    const WeightsById weights = weightsById(part.skeleton, part.weights);
+    const WeightsById& weights = part.weights.perVertex;
 
     CutResult result;
     // The two pieces are independent: one thread each (the first error is
@@ -255,7 +255,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
                 if (pieceWeights[v].empty())
                     pieceWeights[v].emplace_back(bones.front(), 1.0);
             }
-            out.weights = weightsByIndex(out.skeleton, pieceWeights);
+            out.weights.perVertex = std::move(pieceWeights);
             for (const auto& [id, name] : part.boneNames)
                 if (out.skeleton.hasBone(id))
                     out.boneNames[id] = name;

@@ -9,7 +9,8 @@
 namespace rigmesh {
 namespace {
 
-using SparseWeights = std::map<int, double>;
+// One vertex's weights by bone id while they are summed.
+using SparseWeights = std::map<BoneId, double>;
 
 // One vertex of the next level: a weighted sum of this level's vertices.
 using Stencil = std::vector<std::pair<int, double>>;
@@ -100,8 +101,9 @@ Level loopRound(const TriMesh& mesh) {
 
 // Weights through the stencils: summed, tiny ones (below 1e-6) dropped, the
 // rest renormalised to 1.
-SkinWeights carriedWeights(const SkinWeights& weights, const std::vector<Stencil>& stencils) {
-    SkinWeights out;
+SkinWeightsById carriedWeights(const SkinWeightsById& weights,
+                               const std::vector<Stencil>& stencils) {
+    SkinWeightsById out;
     out.perVertex.reserve(stencils.size());
     for (const Stencil& stencil : stencils) {
         SparseWeights sum;
@@ -116,7 +118,7 @@ SkinWeights carriedWeights(const SkinWeights& weights, const std::vector<Stencil
                 total += it->second;
                 ++it;
             }
-        std::vector<std::pair<int, double>> list;
+        std::vector<std::pair<BoneId, double>> list;
         for (const auto& [bone, value] : sum)
             list.emplace_back(bone, value / total);
         out.perVertex.push_back(std::move(list));

@@ -17,14 +17,14 @@ namespace {
 // first), renormalised through the unlocked ones.
 template <typename Keep>
 int filterWeights(Part& part, const std::set<BoneId>& locked, Keep&& keep) {
-    const std::vector<char> lockedIndex = lockedBoneIndices(part.skeleton, locked);
+    const LockedBones lockedBones(part.skeleton, locked);
     int changed = 0;
     for (auto& list : part.weights.perVertex) {
         if (list.empty())
             continue;
         WeightList kept, unlocked;
         for (const auto& entry : list)
-            (lockedIndex[entry.first] ? kept : unlocked).push_back(entry);
+            (lockedBones.contains(entry.first) ? kept : unlocked).push_back(entry);
         std::stable_sort(unlocked.begin(), unlocked.end(),
                          [](const auto& a, const auto& b) { return a.second > b.second; });
         for (std::size_t i = 0; i < unlocked.size(); ++i)
@@ -36,7 +36,7 @@ int filterWeights(Part& part, const std::set<BoneId>& locked, Keep&& keep) {
             sum += entry.second;
         if (kept.size() == list.size() && std::abs(sum - 1.0) <= 1e-12)
             continue;  // already as asked: left bit for bit
-        if (!normaliseKeepingLocks(kept, lockedIndex))
+        if (!normaliseKeepingLocks(kept, lockedBones))
             continue;
         if (kept != list) {
             list = std::move(kept);
@@ -71,7 +71,7 @@ int smoothAllWeights(Part& part, const SmoothAllOptions& options, const std::set
     if (!(options.factor >= 0.0) || !(options.factor <= 1.0) || options.iterations < 1 ||
         options.iterations > 100)
         throw Error("Smooth All needs a factor from 0 to 1 and 1 to 100 passes.");
-    const std::vector<char> lockedIndex = lockedBoneIndices(part.skeleton, locked);
+    const LockedBones lockedBones(part.skeleton, locked);
     const std::vector<std::vector<int>> neighbours = vertexNeighbours(part.mesh);
     auto& weights = part.weights.perVertex;
     const std::vector<WeightList> original = weights;
@@ -81,11 +81,11 @@ int smoothAllWeights(Part& part, const SmoothAllOptions& options, const std::set
             const WeightList& own = previous[v];
             // Nothing to smooth where every bone is locked.
             if (std::all_of(own.begin(), own.end(),
-                            [&](const auto& entry) { return lockedIndex[entry.first]; }))
+                            [&](const auto& entry) { return lockedBones.contains(entry.first); }))
                 continue;
-            std::map<int, double> mixed;
+            std::map<BoneId, double> mixed;
             for (const auto& [b, w] : own)
-                mixed[b] = lockedIndex[b] ? w : (1.0 - options.factor) * w;
+                mixed[b] = lockedBones.contains(b) ? w : (1.0 - options.factor) * w;
             const double share =
                 neighbours[v].empty() ? 0.0 : options.factor / double(neighbours[v].size());
             if (neighbours[v].empty())
@@ -93,10 +93,10 @@ int smoothAllWeights(Part& part, const SmoothAllOptions& options, const std::set
                     mixed[b] = w;
             for (int n : neighbours[v])
                 for (const auto& [b, w] : previous[n])
-                    if (!lockedIndex[b])
+                    if (!lockedBones.contains(b))
                         mixed[b] += share * w;
             WeightList smoothed(mixed.begin(), mixed.end());
-            if (normaliseKeepingLocks(smoothed, lockedIndex))
+            if (normaliseKeepingLocks(smoothed, lockedBones))
                 weights[v] = std::move(smoothed);
         }
     }

@@ -68,8 +68,8 @@ DabResult WeightPainter::paint(Part& part, const WeightDab& dab) {
         throw Error("The weight painter was made for another mesh.");
     checkDab(part, dab);
     const Skeleton& skeleton = part.skeleton;
-    const int bone = skeleton.indexOfBone(dab.bone);
-    const std::vector<char> lockedIndex = lockedBoneIndices(skeleton, dab.locked);
+    const BoneId bone = dab.bone;
+    const LockedBones locked(skeleton, dab.locked);
 
     // The vertices under the brush (and under its reflection through the
     // sketch plane z = 0) with their strength.
@@ -103,7 +103,7 @@ DabResult WeightPainter::paint(Part& part, const WeightDab& dab) {
     std::vector<std::pair<int, double>> targets;
     targets.reserve(influence.size());
     for (const auto& [v, f] : influence) {
-        const double w = weightOfIndex(weights[v], bone);
+        const double w = weightOfBone(weights[v], bone);
         double target = w;
         switch (dab.mode) {
             case BrushMode::Add:
@@ -119,7 +119,7 @@ DabResult WeightPainter::paint(Part& part, const WeightDab& dab) {
                 const std::vector<int>& around = neighbours()[v];
                 double mean = 0.0;
                 for (int n : around)
-                    mean += weightOfIndex(weights[n], bone);
+                    mean += weightOfBone(weights[n], bone);
                 mean /= static_cast<double>(std::max<std::size_t>(around.size(), 1));
                 target = w + f * (mean - w);
                 break;
@@ -132,8 +132,8 @@ DabResult WeightPainter::paint(Part& part, const WeightDab& dab) {
 
     DabResult result;
     for (const auto& [v, target] : targets) {
-        std::vector<std::pair<int, double>> updated = weights[v];
-        if (!setWeightKeepingLocks(updated, bone, target, lockedIndex)) {
+        WeightList updated = weights[v];
+        if (!setWeightKeepingLocks(updated, bone, target, locked)) {
             ++result.skippedLocked;
             continue;
         }

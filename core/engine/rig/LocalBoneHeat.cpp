@@ -280,7 +280,7 @@ WeightsById recomputeWeightsGlobally(const TriMesh& mesh, const Skeleton& skelet
     for (const Bone& bone : skeleton.bones())
         segments.push_back(
             {skeleton.joint(bone.head).position, skeleton.joint(bone.tail).position});
-    return weightsById(skeleton, computeBoneHeatWeights(mesh, segments, {}, options));
+    return weightsById(skeleton, computeBoneHeatWeights(mesh, segments, {}, options)).perVertex;
 }
 
 }  // namespace rigmesh

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "SharedSketchPart.h"
 #include "PartWeightOf.h"
+#include "SharedSketchPart.h"
 #include "base/Error.h"
 #include "mesh/MeshAdjacency.h"
 #include "part/RigCheck.h"
@@ -126,10 +126,9 @@ TEST(WeightCleanup, LockedBonesKeepTheirWeightsThroughEveryCleanup) {
     EXPECT_GT(limitWeightInfluences(cleaned[1], 1, locked), 0);
     EXPECT_GT(smoothAllWeights(cleaned[2], {0.8, 3}, locked), 0);
     // Normalize: first put the sums off by scaling the unlocked weights.
-    const int lockedIndex = before.skeleton.indexOfBone(lockedBone);
     for (auto& list : cleaned[3].weights.perVertex)
         for (auto& [b, w] : list)
-            if (b != lockedIndex)
+            if (b != lockedBone)
                 w *= 0.5;
     EXPECT_GT(normalizeAllWeights(cleaned[3], locked), 0);
     for (const Part& part : cleaned) {
@@ -196,11 +195,11 @@ TEST(RigCheck, AFreshPartIsCleanAndEachProblemIsFound) {
     EXPECT_TRUE(checkRig(part, options).clean());
     // Paint one bone out of every vertex it leads: it leads none.
     const BoneId gone = part.skeleton.bones().back().id;
-    const int goneIndex = part.skeleton.indexOfBone(gone);
+    const BoneId other = part.skeleton.bones().front().id;
     for (auto& list : part.weights.perVertex) {
-        std::erase_if(list, [&](const auto& e) { return e.first == goneIndex; });
+        std::erase_if(list, [&](const auto& e) { return e.first == gone; });
         if (list.empty())
-            list.emplace_back(goneIndex == 0 ? 1 : 0, 1.0);
+            list.emplace_back(other, 1.0);
         double sum = 0.0;
         for (const auto& e : list)
             sum += e.second;
