@@ -86,6 +86,11 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
     registerIconResources();
     setObjectName(QStringLiteral("RigMeshStudioMainWindow"));
     setWindowIcon(QIcon(QStringLiteral(":/icons/rigmesh-studio.svg")));
+    confirmDiscardWeights = [this](const QString& question) {
+        return QMessageBox::question(this, tr("Recompute Weights"), question,
+                                     QMessageBox::Yes | QMessageBox::Cancel,
+                                     QMessageBox::Cancel) == QMessageBox::Yes;
+    };
     tabs_->setTabsClosable(true);
     tabs_->setDocumentMode(true);
     setCentralWidget(tabs_);

@@ -6,6 +6,8 @@
 // wiring; the window only routes the active document to them.
 #pragma once
 
+#include <functional>
+
 #include <QMainWindow>
 #include <QUndoGroup>
 #include <map>
@@ -63,6 +65,10 @@ class MainWindow : public QMainWindow {
     // Long work off the GUI thread (widgets/jobs) and what the window shows
     // of it.
     JobRunner* jobs() const { return jobs_; }
+    // Asked before Recompute Weights replaces hand-painted weights (the
+    // question in its argument); true goes on. A message box by default;
+    // tests answer it.
+    std::function<bool(const QString&)> confirmDiscardWeights;
     JobStatus* jobStatus() const { return jobStatus_; }
     PropertiesPanel* propertiesPanel() const { return properties_; }
     TimelineDock* timeline() const { return timeline_; }
@@ -103,8 +109,12 @@ class MainWindow : public QMainWindow {
     void createDocks();
     void finishImport(model::Document& document, const QString& file,
                       std::unique_ptr<model::ImportPartsCommand> command);
-    // Tools > Weights: the clean-ups, Smooth All and Check Rig (MainWindowWeights.cpp).
+    // Tools > Weights: the clean-ups, Smooth All, Recompute Weights and Check
+    // Rig (MainWindowWeights.cpp).
     void createWeightMenu(QMenu* tools);
+    // Bone heat over the selected part again, as a background job; asks
+    // first if its weights were painted.
+    void recomputeWeights();
     // The View > Weights choice and the Weight View toolbar follow the
     // current document's viewport (each document keeps its own view).
     void showWeightView(WeightView view);

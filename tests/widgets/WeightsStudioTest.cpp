@@ -15,6 +15,7 @@
 
 #include "PartWeightOf.h"
 #include "StudioFixture.h"
+#include "jobs/JobRunner.h"
 #include "model/DocumentFile.h"
 #include "model/recipe/RecipeRunner.h"
 #include "panels/PropertiesPanel.h"
@@ -27,6 +28,14 @@ using test::drag;
 
 class WeightsStudio : public test::StudioFixture {
   protected:
+    // The example biped with one paint stroke along its arm.
+    void paintTheArmOfTheExample() {
+        const model::PartId biped = addExampleBiped();
+        document()->setSelection({biped, shoulder()});
+        window->activatePaintTool();
+        QTest::qWait(20);
+        drag(viewport(), armStroke());
+    }
     // The leaf joint farthest sideways (a hand) and the bone ending there.
     JointId hand() const {
         const Skeleton& skeleton = part().skeleton;
@@ -253,11 +262,7 @@ TEST_F(WeightsStudio, CheckRigListsABoneLeadingNoVertexAndSelectsIt) {
 }
 
 TEST_F(WeightsStudio, RebuildAsksBeforeDiscardingPaintedWeights) {
-    const model::PartId biped = addExampleBiped();
-    document()->setSelection({biped, shoulder()});
-    window->activatePaintTool();
-    QTest::qWait(20);
-    drag(viewport(), armStroke());
+    paintTheArmOfTheExample();
     ASSERT_TRUE(part().weightsPainted) << status().toStdString();
     const int steps = document()->undoStack()->count();
     widgets::PropertiesPanel* properties = window->propertiesPanel();
@@ -281,6 +286,38 @@ TEST_F(WeightsStudio, RebuildAsksBeforeDiscardingPaintedWeights) {
     test::waitForJobs();
     EXPECT_EQ(document()->undoStack()->count(), steps + 1);
     EXPECT_FALSE(part().weightsPainted) << "fresh weights from the sketch";
+    document()->undoStack()->undo();
+    EXPECT_TRUE(part().weightsPainted) << "undo brings the painting back";
+}
+
+// Tools > Weights > Recompute Weights: asks before replacing painted
+// weights (no: nothing happens), then runs bone heat over the whole part as
+// a background job, one undo step; undo brings the painting back.
+TEST_F(WeightsStudio, RecomputeWeightsAsksThenRunsInTheBackgroundAsOneStep) {
+    paintTheArmOfTheExample();
+    ASSERT_TRUE(part().weightsPainted) << status().toStdString();
+    const int steps = document()->undoStack()->count();
+    auto* recompute = window->findChild<QAction*>(QStringLiteral("recomputeWeights"));
+    ASSERT_NE(recompute, nullptr);
+    QString asked;
+    window->confirmDiscardWeights = [&](const QString& question) {
+        asked = question;
+        return false;
+    };
+    recompute->trigger();
+    EXPECT_TRUE(asked.contains(QStringLiteral("painted"))) << asked.toStdString();
+    EXPECT_FALSE(window->jobs()->busy());
+    EXPECT_EQ(document()->undoStack()->count(), steps) << "declined: nothing happens";
+    window->confirmDiscardWeights = [](const QString&) { return true; };
+    recompute->trigger();
+    EXPECT_TRUE(window->jobs()->busy()) << "bone heat runs in the background";
+    EXPECT_EQ(document()->undoStack()->count(), steps) << "nothing changes before it is done";
+    test::waitForJobs();
+    EXPECT_EQ(document()->undoStack()->count(), steps + 1) << status().toStdString();
+    EXPECT_FALSE(part().weightsPainted) << "automatic weights again";
+    EXPECT_TRUE(part().validate().empty());
+    EXPECT_TRUE(status().contains(QStringLiteral("Recompute Weights of")))
+        << status().toStdString();
     document()->undoStack()->undo();
     EXPECT_TRUE(part().weightsPainted) << "undo brings the painting back";
 }

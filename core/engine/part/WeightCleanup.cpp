@@ -7,6 +7,7 @@
 #include "base/Error.h"
 #include "mesh/MeshAdjacency.h"
 #include "part/WeightLists.h"
+#include "rig/LocalBoneHeat.h"
 
 namespace rigmesh {
 
@@ -103,6 +104,30 @@ int smoothAllWeights(Part& part, const SmoothAllOptions& options, const std::set
     int changed = 0;
     for (std::size_t v = 0; v < weights.size(); ++v)
         changed += weights[v] != original[v];
+    return changed;
+}
+
+int recomputeWeights(Part& part, const std::set<BoneId>& locked) {
+    if (part.skeleton.boneCount() == 0)
+        throw Error("Only a part with a skeleton has weights to recompute.");
+    const LockedBones lockedBones(part.skeleton, locked);
+    const WeightsById fresh = recomputeWeightsGlobally(part.mesh, part.skeleton);
+    auto& weights = part.weights.perVertex;
+    int changed = 0;
+    for (std::size_t v = 0; v < weights.size() && v < fresh.size(); ++v) {
+        WeightList list;
+        for (const auto& entry : weights[v])
+            if (lockedBones.contains(entry.first))
+                list.push_back(entry);
+        for (const auto& entry : fresh[v])
+            if (!lockedBones.contains(entry.first))
+                list.push_back(entry);
+        std::sort(list.begin(), list.end());
+        if (!normaliseKeepingLocks(list, lockedBones) || list == weights[v])
+            continue;
+        weights[v] = std::move(list);
+        ++changed;
+    }
     return changed;
 }
 

@@ -1,5 +1,5 @@
 // The brush's falloff and "front faces only", the locks every clean-up
-// keeps, Smooth All and Check Rig (issue 14 items 2-3).
+// keeps, Smooth All, Recompute Weights and Check Rig (issue 14 items 2-3).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +12,7 @@
 #include "part/WeightCleanup.h"
 #include "part/WeightPaint.h"
 #include "pose/VertexNormals.h"
+#include "rig/LocalBoneHeat.h"
 
 namespace rigmesh {
 namespace {
@@ -219,6 +220,48 @@ TEST(RigCheck, AFreshPartIsCleanAndEachProblemIsFound) {
     EXPECT_FALSE(tight.verticesOverInfluences.empty());
     options.maxInfluences = 0;
     EXPECT_THROW(checkRig(part, options), Error);
+}
+
+// Recompute Weights: painted weights go back to the whole-part bone heat
+// (paper 2.4); a locked bone keeps its weights bit for bit and every vertex
+// still sums to 1.
+TEST(RecomputeWeights, PaintedWeightsGoBackToBoneHeatAndLockedBonesKeepTheirs) {
+    const Part& fresh = testsupport::sharedSketchPart("y_branch");
+    const WeightsById heat = recomputeWeightsGlobally(fresh.mesh, fresh.skeleton);
+    Part painted = fresh;
+    WeightDab dab;
+    const Bone& bone = painted.skeleton.bones().front();
+    dab.bone = bone.id;
+    dab.mode = BrushMode::Replace;
+    dab.value = 0.5;
+    dab.centre = 0.5 * (painted.skeleton.joint(bone.head).position +
+                        painted.skeleton.joint(bone.tail).position);
+    dab.radius =
+        (painted.skeleton.joint(bone.head).position - painted.skeleton.joint(bone.tail).position)
+            .norm();
+    dab.strength = 1.0;
+    ASSERT_GT(paintWeights(painted, dab).changed.size(), 10u);
+
+    Part unlocked = painted;
+    EXPECT_GT(recomputeWeights(unlocked, {}), 10);
+    ASSERT_TRUE(unlocked.validate().empty()) << unlocked.validate().front();
+    for (int v = 0; v < unlocked.mesh.vertexCount(); ++v) {
+        ASSERT_EQ(unlocked.weights.perVertex[v].size(), heat[v].size()) << v;
+        for (std::size_t k = 0; k < heat[v].size(); ++k) {
+            EXPECT_EQ(unlocked.weights.perVertex[v][k].first, heat[v][k].first);
+            EXPECT_NEAR(unlocked.weights.perVertex[v][k].second, heat[v][k].second, 1e-12);
+        }
+    }
+
+    Part locked = painted;
+    const std::set<BoneId> lock{dab.bone};
+    recomputeWeights(locked, lock);
+    ASSERT_TRUE(locked.validate().empty()) << locked.validate().front();
+    for (int v = 0; v < locked.mesh.vertexCount(); ++v) {
+        ASSERT_EQ(weightOf(locked, v, dab.bone), weightOf(painted, v, dab.bone)) << v;
+        ASSERT_NEAR(sumOf(locked, v), 1.0, 1e-9);
+    }
+    EXPECT_THROW(recomputeWeights(locked = Part(), {}), Error) << "no skeleton";
 }
 
 }  // namespace
