@@ -777,7 +777,7 @@ TEST_F(StudioMerge, DraggingALegIntoTheBodyMergesThemInOneUndoStep) {
     // The paper's Fig. 9a view: where the local re-skin differs from a
     // global one (near the seam, warmer than the untouched blue).
     viewport()->setWeightView(widgets::WeightView::GlobalDifference);
-    QTest::qWait(50);
+    rigmesh::test::waitForGlobalDifferences(viewport());
     const QImage difference = viewport()->grabFramebuffer();
     int warm = 0, cold = 0;
     for (int y = 0; y < difference.height(); y += 2)

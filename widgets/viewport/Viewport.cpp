@@ -18,6 +18,7 @@
 
 #include "model/OnionSkin.h"
 #include "pose/ForwardKinematics.h"
+#include "viewport/GlobalDifferences.h"
 #include "viewport/SceneRenderer.h"
 #include "viewport/ViewMath.h"
 #include "viewport/ViewportTool.h"
@@ -101,6 +102,10 @@ const PosedSkeleton& Viewport::posedSkeleton(const model::PartNode& node) const 
     return cached.posed;
 }
 
+bool Viewport::globalDifferencePending() const {
+    return globalDifferences_->pending();
+}
+
 Viewport::Viewport(model::Document* document, QWidget* parent)
     : QOpenGLWidget(parent), document_(document), renderer_(std::make_unique<SceneRenderer>()) {
     QSurfaceFormat format = requiredFormat();
@@ -108,6 +113,8 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     setFormat(format);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
+    globalDifferences_ = new GlobalDifferences(this);
+    connect(globalDifferences_, &GlobalDifferences::ready, this, [this] { update(); });
     setMinimumSize(320, 240);
     auto refresh = [this] { update(); };
     connect(document_, &model::Document::partInserted, this, refresh);
@@ -284,6 +291,8 @@ RenderScene Viewport::gatherScene() const {
         if (item.selected && selection.joint != kNoJoint)
             if (const auto bone = boneForJoint(node.part->skeleton, selection.joint))
                 item.weightBone = node.part->skeleton.indexOfBone(*bone);
+        if (weightView_ == WeightView::GlobalDifference)
+            item.globalDifference = globalDifferences_->of(node.part);
         const PosedSkeleton& posed = posedSkeleton(node);
         setSkinning(item, posed);
         if (onionSkin_ && node.part->skeleton.jointCount() > 0) {

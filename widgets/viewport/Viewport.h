@@ -26,6 +26,7 @@ struct BoneHit {
 
 class ViewportTool;
 class JobRunner;
+class GlobalDifferences;
 
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
@@ -58,6 +59,9 @@ class Viewport : public QOpenGLWidget {
     void setOnionSkin(bool on);
     bool onionSkin() const { return onionSkin_; }
     WeightView weightView() const { return weightView_; }
+    // True while the Difference from Global Weights view waits for a part's
+    // global solve (GlobalDifferences; tests wait on it).
+    bool globalDifferencePending() const;
     bool wireframe() const { return wireframe_; }
     bool dualQuaternionSkinning() const { return dualQuaternion_; }
 
@@ -146,6 +150,7 @@ class Viewport : public QOpenGLWidget {
     bool gridVisible_ = true;
     bool onionSkin_ = false;
     WeightView weightView_ = WeightView::Off;
+    GlobalDifferences* globalDifferences_ = nullptr;
     bool framedOnce_ = false;
     struct PosedCacheEntry {
         const Part* part = nullptr;
