@@ -1,5 +1,7 @@
 #include "model/commands/MergePartsCommand.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 
 #include <nlohmann/json.hpp>
@@ -70,12 +72,14 @@ JointId resolveJoint(const JointChoice& choice, const Part& part, const Placemen
 std::unique_ptr<MergePartsCommand> MergePartsCommand::create(Document& document, PartId dragged,
                                                              PartId target, const MergeSpec& spec) {
     if (dragged == target)
-        throw Error("A part cannot be merged into itself.");
+        throw Error(QCoreApplication::translate("rigmesh::model::MergePartsCommand",
+                                                "A part cannot be merged into itself.")
+                        .toStdString());
     const PartNode& from = document.part(dragged);
     const PartNode& into = document.part(target);
     if (!from.part || !into.part || from.part->skeleton.boneCount() == 0 ||
         into.part->skeleton.boneCount() == 0)
-        throw Error("Only rigged parts can be merged; rig the imported mesh first.");
+        throw Error(MessageId::MergeNeedsRiggedParts);
 
     const Part draggedPart = inFrameOf(*from.part, from.placement, into.placement);
     MergeSpec resolved = spec;
