@@ -23,6 +23,7 @@
 #include "model/Autosave.h"
 #include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
+#include "model/ErrorText.h"
 #include "model/commands/DeletePartCommand.h"
 #include "model/commands/ImportPartsCommand.h"
 #include "model/commands/ResetPoseCommand.h"
@@ -64,8 +65,8 @@ void MainWindow::importFile() {
         if (!ids.empty())
             document->setSelection({ids.front(), kNoJoint});
         currentView()->viewport()->frameAll();
-        QString message =
-            tr("Imported %1 part(s) from %2").arg(ids.size()).arg(QFileInfo(path).fileName());
+        QString message = tr("Imported %n part(s) from %1", nullptr, static_cast<int>(ids.size()))
+                              .arg(QFileInfo(path).fileName());
         if (unrigged > 0) {
             // Say so rather than fail silently: the mesh is here, its rig is not.
             message +=
@@ -76,7 +77,7 @@ void MainWindow::importFile() {
         }
         showStatus(message, 8000);
     } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(this, tr("Cannot import"), QString::fromStdString(error.what()));
+        QMessageBox::warning(this, tr("Cannot import"), model::errorText(error));
     }
 }
 
@@ -95,8 +96,7 @@ void MainWindow::saveHistoryAsRecipe() {
                        .arg(QFileInfo(path).fileName()),
                    6000);
     } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(this, tr("Cannot save the recipe"),
-                             QString::fromStdString(error.what()));
+        QMessageBox::warning(this, tr("Cannot save the recipe"), model::errorText(error));
     }
 }
 
@@ -137,7 +137,7 @@ void MainWindow::exportDocument() {
                                QLatin1Char(')')),
             8000);
     } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(error.what()));
+        QMessageBox::warning(this, tr("Cannot export"), model::errorText(error));
     }
 }
 

@@ -14,6 +14,7 @@
 #include "MainWindow.h"
 #include "base/Error.h"
 #include "model/Document.h"
+#include "model/ErrorText.h"
 #include "model/commands/WeightCleanupCommand.h"
 #include "panels/WeightsPanel.h"
 #include "viewport/RenderScene.h"
@@ -63,7 +64,7 @@ void MainWindow::createWeightMenu(QMenu* tools) {
             document->undoStack()->push(command.release());
             showStatus(text, 6000);
         } catch (const Error& error) {
-            showStatus(QString::fromStdString(error.what()), 6000);
+            showStatus(model::errorText(error), 6000);
         }
     };
     auto add = [&](const QString& text, auto make) {

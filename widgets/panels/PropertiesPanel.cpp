@@ -15,6 +15,7 @@
 
 #include "base/Error.h"
 #include "model/Document.h"
+#include "model/ErrorText.h"
 #include "model/PoseChange.h"
 #include "model/commands/RebuildPartCommand.h"
 #include "model/commands/SetPoseCommand.h"
@@ -178,7 +179,7 @@ void PropertiesPanel::setJointRotation() {
         document_->setPose(selection.part, pose);
         model::pushPoseChange(*document_, selection.part, command.release());
     } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not posed: %1").arg(QString::fromStdString(error.what())), 8000);
+        emit statusMessage(tr("Not posed: %1").arg(model::errorText(error)), 8000);
         refreshPose();
     }
 }
@@ -210,7 +211,7 @@ void PropertiesPanel::rebuild() {
                                : tr("Rebuilt %1; %2").arg(document_->part(id).name, dropped),
                            8000);
     } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not rebuilt: %1").arg(QString::fromStdString(error.what())), 8000);
+        emit statusMessage(tr("Not rebuilt: %1").arg(model::errorText(error)), 8000);
     }
 }
 

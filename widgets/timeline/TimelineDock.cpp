@@ -13,6 +13,7 @@
 
 #include "base/Error.h"
 #include "model/ClipModes.h"
+#include "model/ErrorText.h"
 #include "model/PartClips.h"
 #include "model/TimelineItemModel.h"
 #include "model/commands/ClipListCommand.h"
@@ -273,7 +274,7 @@ void TimelineDock::run(const QString& failure, Make make) {
         document_->undoStack()->push(command.release());
         emit statusMessage(text, 4000);
     } catch (const rigmesh::Error& error) {
-        emit statusMessage(failure.arg(QString::fromStdString(error.what())), 8000);
+        emit statusMessage(failure.arg(model::errorText(error)), 8000);
         refresh();
     }
 }
@@ -383,7 +384,7 @@ void TimelineDock::insertKey() {
                 : tr("Keyed %n part(s) at frame %1", nullptr, keyed).arg(document_->currentFrame()),
             4000);
     } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not keyed: %1").arg(QString::fromStdString(error.what())), 8000);
+        emit statusMessage(tr("Not keyed: %1").arg(model::errorText(error)), 8000);
     }
 }
 
@@ -431,7 +432,7 @@ void TimelineDock::pasteKeys() {
         document_->setCurrentFrame(document_->currentFrame());
         emit statusMessage(tr("Pasted at frame %1").arg(document_->currentFrame()), 4000);
     } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not pasted: %1").arg(QString::fromStdString(error.what())), 8000);
+        emit statusMessage(tr("Not pasted: %1").arg(model::errorText(error)), 8000);
     }
 }
 

@@ -4,6 +4,7 @@
 #include <QElapsedTimer>
 
 #include "base/Error.h"
+#include "model/ErrorText.h"
 #include "model/commands/MergePartsCommand.h"
 #include "model/commands/MovePartCommand.h"
 #include "rig/BoneSegment.h"
@@ -185,7 +186,7 @@ void MergeTool::release(Viewport& viewport, QMouseEvent* event) {
         emit viewport.statusMessage(tr("%1 (%2 ms in all)").arg(summary).arg(timer.elapsed()));
     } catch (const Error& error) {
         document.setPlacement(dragged, startPlacement_);
-        emit viewport.statusMessage(tr("Not merged: %1").arg(QString::fromStdString(error.what())));
+        emit viewport.statusMessage(tr("Not merged: %1").arg(model::errorText(error)));
     }
     viewport.update();
 }
