@@ -3,6 +3,7 @@
 #include <QVBoxLayout>
 
 #include "base/Error.h"
+#include "model/ErrorText.h"
 #include "model/commands/CreatePartCommand.h"
 #include "viewport/Viewport.h"
 
@@ -27,14 +28,15 @@ DocumentView::~DocumentView() {
 void DocumentView::createPartFromStroke(const std::vector<Vec2>& stroke,
                                         const model::Placement& plane) {
     try {
-        auto command = model::CreatePartCommand::create(*document_, stroke, {}, {}, plane);
+        model::BuildOptions options;
+        options.targetEdgeLength = defaultEdgeLength_;
+        auto command = model::CreatePartCommand::create(*document_, stroke, {}, options, plane);
         const model::PartId id = command->partId();
         document_->undoStack()->push(command.release());
         document_->setSelection({id, kNoJoint});
         emit statusMessage(tr("Created %1").arg(document_->part(id).name), 4000);
     } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Nothing created: %1").arg(QString::fromStdString(error.what())),
-                           8000);
+        emit statusMessage(tr("Nothing created: %1").arg(model::errorText(error)), 8000);
     }
 }
 

@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include "preferences/StudioPreferences.h"
+
 class QStackedWidget;
 class QTabWidget;
 class QUndoView;
@@ -60,6 +62,10 @@ class MainWindow : public QMainWindow {
     TimelineDock* timeline() const { return timeline_; }
 
     bool openFile(const QString& path);
+    // Puts every preference into effect at once (the language at the next
+    // start) and keeps them in QSettings (MainWindowPreferences.cpp).
+    void applyPreferences(const StudioPreferences& preferences);
+    const StudioPreferences& preferences() const { return preferences_; }
     // Offers to restore documents left in the recovery folder by a crash.
     void offerRecovery();
 
@@ -80,6 +86,8 @@ class MainWindow : public QMainWindow {
     void activatePaintTool();
     void resetPose();
     void deleteSelection();
+    // Edit > Preferences.
+    void openPreferences();
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -137,6 +145,7 @@ class MainWindow : public QMainWindow {
     std::map<DocumentView*, model::Autosave*> autosaves_;
     MouseHint* mouseHint_ = nullptr;
     QStackedWidget* toolOptions_ = nullptr;
+    StudioPreferences preferences_;
 };
 
 }  // namespace rigmesh::widgets
