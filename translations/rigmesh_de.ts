@@ -938,6 +938,13 @@
     </message>
 </context>
 <context>
+    <name>rigmesh::widgets::BusyBar</name>
+    <message>
+        <source>Working</source>
+        <translation>In Arbeit</translation>
+    </message>
+</context>
+<context>
     <name>rigmesh::widgets::CutTool</name>
     <message>
         <source>Cut: drag a line across a part, from outside it to outside it; release cuts it in two with a smooth face, Shift + release with a flat one; Esc cancels</source>
@@ -981,6 +988,14 @@
     <message>
         <source>Nothing created: %1</source>
         <translation>Nichts erstellt: %1</translation>
+    </message>
+    <message>
+        <source>Part %1</source>
+        <translation>Teil %1</translation>
+    </message>
+    <message>
+        <source>Building %1</source>
+        <translation>%1 wird gebaut</translation>
     </message>
 </context>
 <context>
@@ -1100,6 +1115,32 @@
     <message>
         <source>%1 (*.%2)</source>
         <translation>%1 (*.%2)</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::JobRunner</name>
+    <message>
+        <source>Out of memory.</source>
+        <translation>Nicht genügend Arbeitsspeicher.</translation>
+    </message>
+    <message>
+        <source>Internal error: %1</source>
+        <translation>Interner Fehler: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::JobStatus</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Stop waiting: the document stays as it was (Esc)</source>
+        <translation>Nicht mehr warten: Das Dokument bleibt, wie es war (Esc)</translation>
+    </message>
+    <message>
+        <source>%1… %2 s</source>
+        <translation>%1 … %2 s</translation>
     </message>
 </context>
 <context>
@@ -1532,6 +1573,30 @@
             <numerusform>%n Teile aus %1 importiert</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>%1 wird importiert</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled</source>
+        <translation>Import von %1 abgebrochen</translation>
+    </message>
+    <message>
+        <source>Cannot write into %1</source>
+        <translation>Kann nicht in %1 schreiben</translation>
+    </message>
+    <message>
+        <source>Exporting %1</source>
+        <translation>%1 wird exportiert</translation>
+    </message>
+    <message>
+        <source>%1 could not be replaced: %2</source>
+        <translation>%1 konnte nicht ersetzt werden: %2</translation>
+    </message>
+    <message>
+        <source>Export of %1 cancelled: nothing written</source>
+        <translation>Export von %1 abgebrochen: nichts geschrieben</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::MergeTool</name>
@@ -1940,6 +2005,18 @@ Nicht geriggt: als statisches Netz importiert. Das Riggen importierter Netze gib
     <message>
         <source>Not rebuilt: %1</source>
         <translation>Nicht neu gebaut: %1</translation>
+    </message>
+    <message>
+        <source>Select a part to rebuild</source>
+        <translation>Wählen Sie ein Teil zum Neubauen aus</translation>
+    </message>
+    <message>
+        <source>Rebuilding %1</source>
+        <translation>%1 wird neu gebaut</translation>
+    </message>
+    <message>
+        <source>Rebuild of %1 cancelled</source>
+        <translation>Neubau von %1 abgebrochen</translation>
     </message>
 </context>
 <context>

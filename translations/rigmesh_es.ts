@@ -938,6 +938,13 @@
     </message>
 </context>
 <context>
+    <name>rigmesh::widgets::BusyBar</name>
+    <message>
+        <source>Working</source>
+        <translation>Trabajando</translation>
+    </message>
+</context>
+<context>
     <name>rigmesh::widgets::CutTool</name>
     <message>
         <source>Cut: drag a line across a part, from outside it to outside it; release cuts it in two with a smooth face, Shift + release with a flat one; Esc cancels</source>
@@ -981,6 +988,14 @@
     <message>
         <source>Nothing created: %1</source>
         <translation>No se ha creado nada: %1</translation>
+    </message>
+    <message>
+        <source>Part %1</source>
+        <translation>Pieza %1</translation>
+    </message>
+    <message>
+        <source>Building %1</source>
+        <translation>Construyendo %1</translation>
     </message>
 </context>
 <context>
@@ -1100,6 +1115,32 @@
     <message>
         <source>%1 (*.%2)</source>
         <translation>%1 (*.%2)</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::JobRunner</name>
+    <message>
+        <source>Out of memory.</source>
+        <translation>Memoria insuficiente.</translation>
+    </message>
+    <message>
+        <source>Internal error: %1</source>
+        <translation>Error interno: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::JobStatus</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Stop waiting: the document stays as it was (Esc)</source>
+        <translation>Dejar de esperar: el documento queda como estaba (Esc)</translation>
+    </message>
+    <message>
+        <source>%1… %2 s</source>
+        <translation>%1… %2 s</translation>
     </message>
 </context>
 <context>
@@ -1532,6 +1573,30 @@
             <numerusform>Se han importado %n piezas de %1</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>Importando %1</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled</source>
+        <translation>Importación de %1 cancelada</translation>
+    </message>
+    <message>
+        <source>Cannot write into %1</source>
+        <translation>No se puede escribir en %1</translation>
+    </message>
+    <message>
+        <source>Exporting %1</source>
+        <translation>Exportando %1</translation>
+    </message>
+    <message>
+        <source>%1 could not be replaced: %2</source>
+        <translation>No se ha podido reemplazar %1: %2</translation>
+    </message>
+    <message>
+        <source>Export of %1 cancelled: nothing written</source>
+        <translation>Exportación de %1 cancelada: no se ha escrito nada</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::MergeTool</name>
@@ -1940,6 +2005,18 @@ Sin rig: importada como malla estática. Todavía no se pueden poner rigs a mall
     <message>
         <source>Not rebuilt: %1</source>
         <translation>No se ha reconstruido: %1</translation>
+    </message>
+    <message>
+        <source>Select a part to rebuild</source>
+        <translation>Seleccione una pieza para reconstruirla</translation>
+    </message>
+    <message>
+        <source>Rebuilding %1</source>
+        <translation>Reconstruyendo %1</translation>
+    </message>
+    <message>
+        <source>Rebuild of %1 cancelled</source>
+        <translation>Reconstrucción de %1 cancelada</translation>
     </message>
 </context>
 <context>

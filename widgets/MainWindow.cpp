@@ -24,6 +24,8 @@
 #include "MouseHint.h"
 #include "base/Error.h"
 #include "dialogs/ExportDialog.h"
+#include "jobs/JobRunner.h"
+#include "jobs/JobStatus.h"
 #include "model/Autosave.h"
 #include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
@@ -99,6 +101,10 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
         if (auto* v = currentView())
             v->viewport()->setOnionSkin(on);
     });
+    // Long work runs off the GUI thread, one job at a time (issue 16 item 3).
+    jobs_ = new JobRunner(this);
+    jobStatus_ = new JobStatus(this, jobs_);
+    properties_->setJobRunner(jobs_);
     mouseHint_ = new MouseHint(tabs_);
     createActions();
     createDocks();
@@ -358,6 +364,7 @@ DocumentView* MainWindow::addDocument(std::unique_ptr<model::Document> document)
     auto* view = new DocumentView(std::move(document), tabs_);
     model::Document* doc = view->document();
     undoGroup_.addStack(doc->undoStack());
+    view->viewport()->setJobRunner(jobs_);
     connect(view, &DocumentView::statusMessage, this, &MainWindow::showStatus);
     connect(view->viewport(), &Viewport::statusMessage, this,
             [this](const QString& m) { showStatus(m); });
@@ -532,6 +539,7 @@ bool MainWindow::closeDocument(int index) {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    jobs_->cancel();  // a running job's result would have no document to go to
     while (tabs_->count() > 0) {
         if (!closeDocument(tabs_->count() - 1)) {
             event->ignore();

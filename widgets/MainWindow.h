@@ -12,6 +12,7 @@
 #include <memory>
 #include <utility>
 #include <vector>
+#include "io/SceneExport.h"
 
 #include "preferences/StudioPreferences.h"
 
@@ -25,6 +26,7 @@ class QComboBox;
 namespace rigmesh::model {
 class Autosave;
 class Document;
+class ImportPartsCommand;
 }  // namespace rigmesh::model
 
 namespace rigmesh::widgets {
@@ -35,6 +37,8 @@ enum class WeightView;  // viewport/RenderScene.h
 class DocumentView;
 class OutlinerPanel;
 class PropertiesPanel;
+class JobRunner;
+class JobStatus;
 class WeightsPanel;
 class CutTool;
 class PaintTool;
@@ -58,6 +62,10 @@ class MainWindow : public QMainWindow {
     QTabWidget* tabs() const { return tabs_; }
     OutlinerPanel* outliner() const { return outliner_; }
     WeightsPanel* weightsPanel() const { return weights_; }
+    // Long work off the GUI thread (widgets/jobs) and what the window shows
+    // of it.
+    JobRunner* jobs() const { return jobs_; }
+    JobStatus* jobStatus() const { return jobStatus_; }
     PropertiesPanel* propertiesPanel() const { return properties_; }
     TimelineDock* timeline() const { return timeline_; }
 
@@ -76,6 +84,12 @@ class MainWindow : public QMainWindow {
     bool saveAs();
     void exportDocument();
     void importFile();
+    // Imports `path` into the current document (File > Import without the
+    // file dialog), as a background job.
+    void importPath(const QString& path);
+    // Exports the current document's visible parts to `path` (File > Export
+    // without the dialog), as a background job.
+    void exportTo(const QString& path, const ExportOptions& options);
     void saveHistoryAsRecipe();
     bool closeDocument(int index);
     void activateSelectTool();
@@ -95,6 +109,8 @@ class MainWindow : public QMainWindow {
   private:
     void createActions();
     void createDocks();
+    void finishImport(model::Document& document, const QString& file,
+                      std::unique_ptr<model::ImportPartsCommand> command);
     // Tools > Weights: the clean-ups, Smooth All and Check Rig (MainWindowWeights.cpp).
     void createWeightMenu(QMenu* tools);
     // The View > Weights choice and the Weight View toolbar follow the
@@ -146,6 +162,8 @@ class MainWindow : public QMainWindow {
     MouseHint* mouseHint_ = nullptr;
     QStackedWidget* toolOptions_ = nullptr;
     StudioPreferences preferences_;
+    JobRunner* jobs_ = nullptr;
+    JobStatus* jobStatus_ = nullptr;
 };
 
 }  // namespace rigmesh::widgets

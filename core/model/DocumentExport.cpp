@@ -42,9 +42,15 @@ Part poseAsRest(const PartNode& node, SkinningMethod method) {
 
 DocumentExportResult exportDocument(const Document& document, const std::string& path,
                                     const ExportOptions& options, bool visibleOnly) {
+    return exportParts(document.parts(), path, options, visibleOnly);
+}
+
+DocumentExportResult exportParts(const std::vector<PartNode>& documentParts,
+                                 const std::string& path, const ExportOptions& options,
+                                 bool visibleOnly) {
     DocumentExportResult result;
     std::vector<const PartNode*> nodes;
-    for (const PartNode& node : document.parts())
+    for (const PartNode& node : documentParts)
         if (node.part && (node.visible || !visibleOnly))
             nodes.push_back(&node);
     if (nodes.empty())

@@ -21,5 +21,8 @@ struct DocumentExportResult {
 // Throws rigmesh::Error (no parts, unknown format, write failure).
 DocumentExportResult exportDocument(const Document& document, const std::string& path,
                                     const ExportOptions& options = {}, bool visibleOnly = false);
+// The same from a copy of the parts (a background job's snapshot).
+DocumentExportResult exportParts(const std::vector<PartNode>& parts, const std::string& path,
+                                 const ExportOptions& options = {}, bool visibleOnly = false);
 
 }  // namespace rigmesh::model

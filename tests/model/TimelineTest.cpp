@@ -345,7 +345,7 @@ TEST(TimelineFile, BadTimelinesAndClipNamesAreCorrupt) {
     bad["parts"][0]["clip"]["interpolation"] = "cubic";
     EXPECT_NE(message(bad).find("unknown clip interpolation"), std::string::npos);
     bad = good;
-    bad["version"] = 3;
+    bad["version"] = DocumentFile::kFormatVersion + 1;
     EXPECT_NE(message(bad).find("newer"), std::string::npos);
 }
 

@@ -150,6 +150,8 @@ TEST_F(Preferences, AutosaveIntervalReachesOpenAndNewDocuments) {
 TEST_F(Preferences, MayaBindingsNavigateWithAltAndLeaveTheToolAlone) {
     const model::PartId id = addExampleBiped();
     window->activateSelectTool();
+    // The first paint frames the scene: let it happen before the camera is measured.
+    QTest::qWait(50);
     const QPointF middle(viewport()->width() / 2.0, viewport()->height() / 2.0);
     const QVector3D eye = viewport()->camera().eye();
     const model::Placement placed = document()->part(id).placement;

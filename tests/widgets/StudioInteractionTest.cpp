@@ -218,6 +218,7 @@ TEST_F(Studio, MouseStrokeInTheViewportCreatesARiggedPart) {
         test::sendMouse(viewport(), QEvent::MouseMove, stroke[i], Qt::NoButton, Qt::LeftButton);
     test::sendMouse(viewport(), QEvent::MouseButtonRelease, stroke.back(), Qt::LeftButton,
                     Qt::NoButton);
+    test::waitForJobs();  // the part is built in the background
     ASSERT_EQ(document()->partCount(), 1);
     const model::PartNode& node = document()->parts().front();
     EXPECT_GT(node.part->mesh.vertexCount(), 100);

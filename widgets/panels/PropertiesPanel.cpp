@@ -6,6 +6,7 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QMessageBox>
+#include <QPointer>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
@@ -14,8 +15,10 @@
 #include <memory>
 
 #include "base/Error.h"
+#include "jobs/JobRunner.h"
 #include "model/Document.h"
 #include "model/ErrorText.h"
+#include "model/PartBuilder.h"
 #include "model/PoseChange.h"
 #include "model/commands/RebuildPartCommand.h"
 #include "model/commands/SetPoseCommand.h"
@@ -202,17 +205,34 @@ void PropertiesPanel::rebuild() {
         emit statusMessage(tr("Not rebuilt: the painted weights are kept"), 6000);
         return;
     }
-    try {
-        auto command = model::RebuildPartCommand::create(*document_, id, options);
-        const QString dropped = command->droppedMessage();
-        document_->undoStack()->push(command.release());
-        emit statusMessage(dropped.isEmpty()
-                               ? tr("Rebuilt %1").arg(document_->part(id).name)
-                               : tr("Rebuilt %1; %2").arg(document_->part(id).name, dropped),
-                           8000);
-    } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not rebuilt: %1").arg(model::errorText(error)), 8000);
+    if (!node || !node->part) {
+        emit statusMessage(tr("Select a part to rebuild"), 4000);
+        return;
     }
+    // Built off the GUI thread from copies of the stroke (a fine edge length
+    // can take seconds); the command is made and pushed here when done.
+    const std::vector<Vec2> stroke = node->stroke;
+    const QString name = node->name;
+    QPointer<model::Document> document(document_);
+    JobRunner::runOn(
+        jobs_, tr("Rebuilding %1").arg(name),
+        [=, this]() -> JobRunner::Apply {
+            std::shared_ptr<const Part> part = model::buildPart(stroke, name, options);
+            return [=, this]() {
+                if (!document || !document->contains(id))
+                    return;
+                auto command = model::RebuildPartCommand::fromBuilt(*document, id, part, options);
+                const QString dropped = command->droppedMessage();
+                document->undoStack()->push(command.release());
+                emit statusMessage(dropped.isEmpty() ? tr("Rebuilt %1").arg(name)
+                                                     : tr("Rebuilt %1; %2").arg(name, dropped),
+                                   8000);
+            };
+        },
+        [this](const QString& reason) {
+            emit statusMessage(tr("Not rebuilt: %1").arg(reason), 8000);
+        },
+        [this, name] { emit statusMessage(tr("Rebuild of %1 cancelled").arg(name), 6000); });
 }
 
 }  // namespace rigmesh::widgets

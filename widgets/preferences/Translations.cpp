@@ -11,8 +11,13 @@
 namespace rigmesh::widgets {
 namespace {
 
+QString& translationsDirectorySetting() {
+    static QString directory;
+    return directory;
+}
+
 QString studioTranslationFile(const QString& code) {
-    return QStringLiteral(":/i18n/rigmesh_%1.qm").arg(code);
+    return translationsDirectory() + QStringLiteral("/rigmesh_%1.qm").arg(code);
 }
 
 // The translators installed last, replaced by the next call.
@@ -42,10 +47,21 @@ QString nativeName(const QString& code) {
 
 }  // namespace
 
+QString translationsDirectory() {
+    if (!translationsDirectorySetting().isEmpty())
+        return translationsDirectorySetting();
+    return QDir::cleanPath(QCoreApplication::applicationDirPath() +
+                           QStringLiteral("/../share/rigmesh-studio/translations"));
+}
+
+void setTranslationsDirectory(const QString& directory) {
+    translationsDirectorySetting() = directory;
+}
+
 QList<StudioLanguage> studioLanguages() {
     QList<StudioLanguage> languages{{QStringLiteral("en"), QStringLiteral("English")}};
     const QStringList files =
-        QDir(QStringLiteral(":/i18n")).entryList({QStringLiteral("rigmesh_*.qm")}, QDir::Files);
+        QDir(translationsDirectory()).entryList({QStringLiteral("rigmesh_*.qm")}, QDir::Files);
     for (const QString& file : files) {
         const QString code = file.mid(8, file.size() - 8 - 3);  // rigmesh_<code>.qm
         languages.append({code, nativeName(code)});

@@ -1,6 +1,7 @@
 // The languages the studio speaks and the translators that make it speak
-// one: the studio's own (translations/rigmesh_<code>.ts, compiled into
-// :/i18n) and Qt's (qtbase_<code>.qm from Qt's translations folder, where
+// one: the studio's own (translations/rigmesh_<code>.ts, compiled to .qm
+// files in share/rigmesh-studio/translations beside bin/, as the .deb
+// installs them) and Qt's (qtbase_<code>.qm from Qt's translations folder, where
 // installed: standard dialog buttons, context menus of text fields).
 #pragma once
 
@@ -13,6 +14,13 @@ struct StudioLanguage {
     QString code;        // "en", "de", "es"
     QString nativeName;  // "English", "Deutsch", "Español"
 };
+
+// Where the studio's .qm files are: ../share/rigmesh-studio/translations
+// from the program's folder (/usr/bin -> /usr/share/..., and the build
+// tree's app/ -> share/...), unless set (tests, whose programs live
+// elsewhere in the build tree).
+QString translationsDirectory();
+void setTranslationsDirectory(const QString& directory);
 
 // English first, then every language with a compiled translation.
 QList<StudioLanguage> studioLanguages();

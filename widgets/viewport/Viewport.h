@@ -27,6 +27,7 @@ struct BoneHit {
 };
 
 class ViewportTool;
+class JobRunner;
 
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
@@ -45,6 +46,10 @@ class Viewport : public QOpenGLWidget {
     OrbitCamera& camera() { return camera_; }
     const OrbitCamera& camera() const { return camera_; }
     void setTool(ViewportTool* tool);  // not owned; nullptr = navigation only
+    // Where long work goes (widgets/jobs; not owned; the window's): tools
+    // and the sketch hand it their engine calls. Null: run them here.
+    void setJobRunner(JobRunner* runner) { jobs_ = runner; }
+    JobRunner* jobRunner() const { return jobs_; }
     ViewportTool* tool() const { return tool_; }
 
     void setWireframe(bool on);
@@ -59,6 +64,8 @@ class Viewport : public QOpenGLWidget {
     bool dualQuaternionSkinning() const { return dualQuaternion_; }
     void setMouseBindings(MouseBindings bindings) { mouseBindings_ = bindings; }
     MouseBindings mouseBindings() const { return mouseBindings_; }
+    // A drag that orbits, pans or zooms the view is under way.
+    bool navigating() const { return navigation_ != Navigation::None; }
 
     // The stroke being sketched, in world space (drawn as an overlay).
     void setStrokeOverlay(std::vector<QVector3D> points);
@@ -138,6 +145,7 @@ class Viewport : public QOpenGLWidget {
     std::unique_ptr<SceneRenderer> renderer_;
     OrbitCamera camera_;
     ViewportTool* tool_ = nullptr;
+    JobRunner* jobs_ = nullptr;
     std::vector<QVector3D> strokeOverlay_;
     bool wireframe_ = false;
     bool dualQuaternion_ = true;

@@ -12,7 +12,13 @@ namespace rigmesh::model {
 std::unique_ptr<RebuildPartCommand> RebuildPartCommand::create(Document& document, PartId id,
                                                                const BuildOptions& options) {
     const PartNode& node = document.part(id);
-    std::shared_ptr<const Part> part = buildPart(node.stroke, node.name, options);
+    return fromBuilt(document, id, buildPart(node.stroke, node.name, options), options);
+}
+
+std::unique_ptr<RebuildPartCommand> RebuildPartCommand::fromBuilt(Document& document, PartId id,
+                                                                  std::shared_ptr<const Part> part,
+                                                                  const BuildOptions& options) {
+    document.part(id);  // throws on an unknown id
     return std::unique_ptr<RebuildPartCommand>(
         new RebuildPartCommand(document, id, std::move(part), options));
 }

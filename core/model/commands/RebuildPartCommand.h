@@ -23,6 +23,12 @@ class RebuildPartCommand : public QUndoCommand, public RecipeStepSource {
     static std::unique_ptr<RebuildPartCommand> create(Document& document, PartId id,
                                                       const BuildOptions& options);
 
+    // The command for a part already built from the node's stroke with
+    // `options` (buildPart, e.g. by a background job).
+    static std::unique_ptr<RebuildPartCommand> fromBuilt(Document& document, PartId id,
+                                                         std::shared_ptr<const Part> part,
+                                                         const BuildOptions& options);
+
     void redo() override;
     void undo() override;
     nlohmann::json recipeStep() const override;
