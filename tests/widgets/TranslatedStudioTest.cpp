@@ -5,9 +5,12 @@
 // docs/STUDIO.md.
 #include <gtest/gtest.h>
 
+#include <QAbstractButton>
+#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QFile>
+#include <QLabel>
 #include <QLibraryInfo>
 #include <QMenuBar>
 #include <QPushButton>
@@ -18,6 +21,8 @@
 #include "DocumentView.h"
 #include "MainWindow.h"
 #include "StudioTestSupport.h"
+#include "dialogs/ExportDialog.h"
+#include "dialogs/PreferencesDialog.h"
 #include "preferences/Translations.h"
 
 namespace rigmesh::test {
@@ -84,6 +89,41 @@ TEST_P(TranslatedStudio, AnEngineMessageReachesTheStatusBarTranslated) {
     EXPECT_TRUE(message.startsWith(GetParam().strokeCrosses)) << message.toStdString();
     window->grab().save(
         QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_%1.png").arg(QLatin1String(GetParam().code)));
+}
+
+// Every label, button and list entry of `dialog`, shown at its own size,
+// gets the width its translated text asks for: nothing is cut off.
+void expectNothingCutOff(QDialog& dialog, const QString& picture) {
+    dialog.show();
+    QTest::qWait(50);
+    for (QLabel* label : dialog.findChildren<QLabel*>()) {
+        if (!label->isVisible() || label->wordWrap())
+            continue;
+        EXPECT_GE(label->width(), label->sizeHint().width()) << label->text().toStdString();
+    }
+    for (QAbstractButton* button : dialog.findChildren<QAbstractButton*>()) {
+        if (!button->isVisible())
+            continue;
+        EXPECT_GE(button->width(), button->sizeHint().width()) << button->text().toStdString();
+    }
+    for (QComboBox* box : dialog.findChildren<QComboBox*>()) {
+        if (!box->isVisible())
+            continue;
+        EXPECT_GE(box->width(), box->minimumSizeHint().width()) << box->currentText().toStdString();
+    }
+    dialog.grab().save(picture);
+    dialog.hide();
+}
+
+TEST_P(TranslatedStudio, DialogsFitTheirTranslatedText) {
+    const QString code = QLatin1String(GetParam().code);
+    widgets::PreferencesDialog preferences(window->preferences(), window.get());
+    EXPECT_NE(preferences.windowTitle(), QStringLiteral("Preferences"));
+    expectNothingCutOff(preferences,
+                        QStringLiteral(RIGMESH_TEST_OUTPUT "/preferences_%1.png").arg(code));
+    widgets::ExportDialog exporter(QStringLiteral("/tmp/biped.glb"), window.get());
+    EXPECT_NE(exporter.windowTitle(), QStringLiteral("Export"));
+    expectNothingCutOff(exporter, QStringLiteral(RIGMESH_TEST_OUTPUT "/export_%1.png").arg(code));
 }
 
 TEST_P(TranslatedStudio, QtsOwnStringsAreTranslatedWhereInstalled) {

@@ -131,6 +131,8 @@ void PreferencesDialog::updateNotes() {
     languageNote_->setText(tr("A new language applies when RigMesh Studio starts again."));
     const auto bindings = static_cast<MouseBindings>(mouse_->currentData().toInt());
     QString text = navigationHint(bindings);
+    if (!text.isEmpty())
+        text[0] = text[0].toUpper();  // the status bar's fragment as a sentence of its own
     if (bindings == MouseBindings::Maya)
         text += QStringLiteral("; ") +
                 tr("Alt + drag is the view's, so the Pose tool reaches through the whole body "
