@@ -1241,7 +1241,7 @@
     </message>
     <message>
         <source>&amp;Wireframe</source>
-        <translation>&amp;Malla de alambre</translation>
+        <translation>Estructura de &amp;alambre</translation>
     </message>
     <message>
         <source>&amp;Dual Quaternion Skinning</source>

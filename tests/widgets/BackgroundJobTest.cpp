@@ -118,12 +118,7 @@ TEST_F(BackgroundJobs, TheChosenMouseBindingsNavigateWhileAJobRunsAndToolsWait) 
     widgets::Viewport* view = window->currentView()->viewport();
     const QPointF middle(view->width() / 2.0, view->height() / 2.0);
     auto leftDrag = [&](Qt::KeyboardModifiers modifiers) {
-        test::sendMouse(view, QEvent::MouseButtonPress, middle, Qt::LeftButton, Qt::LeftButton,
-                        modifiers);
-        test::sendMouse(view, QEvent::MouseMove, middle + QPointF(60, 20), Qt::NoButton,
-                        Qt::LeftButton, modifiers);
-        test::sendMouse(view, QEvent::MouseButtonRelease, middle + QPointF(60, 20), Qt::LeftButton,
-                        Qt::NoButton, modifiers);
+        test::buttonDrag(view, Qt::LeftButton, middle, middle + QPointF(60, 20), modifiers);
     };
     // Maya's Alt + left drag orbits while the job runs.
     const QVector3D eye = view->camera().eye();

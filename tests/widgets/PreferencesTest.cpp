@@ -175,29 +175,15 @@ TEST_F(Preferences, MayaBindingsNavigateWithAltAndLeaveTheToolAlone) {
     EXPECT_EQ(document()->part(id).placement.translation, placed.translation);
     // Alt + middle drag pans: the target moves.
     const QVector3D target = viewport()->camera().target();
-    sendMouse(viewport(), QEvent::MouseButtonPress, middle, Qt::MiddleButton, Qt::MiddleButton,
-              Qt::AltModifier);
-    sendMouse(viewport(), QEvent::MouseMove, middle + QPointF(60, 0), Qt::NoButton,
-              Qt::MiddleButton, Qt::AltModifier);
-    sendMouse(viewport(), QEvent::MouseButtonRelease, middle + QPointF(60, 0), Qt::MiddleButton,
-              Qt::NoButton, Qt::AltModifier);
+    buttonDrag(viewport(), Qt::MiddleButton, middle, middle + QPointF(60, 0), Qt::AltModifier);
     EXPECT_GT((viewport()->camera().target() - target).length(), 0.001f);
     // Alt + right drag zooms: right is closer.
     const double distance = viewport()->camera().distance();
-    sendMouse(viewport(), QEvent::MouseButtonPress, middle, Qt::RightButton, Qt::RightButton,
-              Qt::AltModifier);
-    sendMouse(viewport(), QEvent::MouseMove, middle + QPointF(120, 0), Qt::NoButton,
-              Qt::RightButton, Qt::AltModifier);
-    sendMouse(viewport(), QEvent::MouseButtonRelease, middle + QPointF(120, 0), Qt::RightButton,
-              Qt::NoButton, Qt::AltModifier);
+    buttonDrag(viewport(), Qt::RightButton, middle, middle + QPointF(120, 0), Qt::AltModifier);
     EXPECT_LT(viewport()->camera().distance(), distance);
     // A plain middle drag is no longer the view's.
     const QVector3D unmoved = viewport()->camera().eye();
-    sendMouse(viewport(), QEvent::MouseButtonPress, middle, Qt::MiddleButton, Qt::MiddleButton);
-    sendMouse(viewport(), QEvent::MouseMove, middle + QPointF(60, 30), Qt::NoButton,
-              Qt::MiddleButton);
-    sendMouse(viewport(), QEvent::MouseButtonRelease, middle + QPointF(60, 30), Qt::MiddleButton,
-              Qt::NoButton);
+    buttonDrag(viewport(), Qt::MiddleButton, middle, middle + QPointF(60, 30));
     EXPECT_EQ(viewport()->camera().eye(), unmoved);
     // The status bar and the first-run card name the Maya gestures.
     EXPECT_TRUE(widgets::navigationHint(MouseBindings::Maya).contains(QStringLiteral("Alt")));
@@ -206,12 +192,7 @@ TEST_F(Preferences, MayaBindingsNavigateWithAltAndLeaveTheToolAlone) {
 TEST_F(Preferences, BlenderBindingsOrbitPanAndZoomWithTheMiddleButton) {
     const QPointF middle(viewport()->width() / 2.0, viewport()->height() / 2.0);
     auto middleDrag = [&](QPointF by, Qt::KeyboardModifiers modifiers) {
-        sendMouse(viewport(), QEvent::MouseButtonPress, middle, Qt::MiddleButton, Qt::MiddleButton,
-                  modifiers);
-        sendMouse(viewport(), QEvent::MouseMove, middle + by, Qt::NoButton, Qt::MiddleButton,
-                  modifiers);
-        sendMouse(viewport(), QEvent::MouseButtonRelease, middle + by, Qt::MiddleButton,
-                  Qt::NoButton, modifiers);
+        buttonDrag(viewport(), Qt::MiddleButton, middle, middle + by, modifiers);
     };
     const QVector3D target = viewport()->camera().target();
     const QVector3D eye = viewport()->camera().eye();
