@@ -936,6 +936,10 @@
         <source>RigMesh Studio</source>
         <translation>RigMesh Studio</translation>
     </message>
+    <message>
+        <source>documents</source>
+        <translation>documentos</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::BusyBar</name>

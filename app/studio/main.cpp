@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addPositionalArgument(
-        QStringLiteral("documents"),
+        QCoreApplication::translate("rigmesh::studio", "documents"),
         QCoreApplication::translate("rigmesh::studio", "RigMesh documents to open"));
     QCommandLineOption screenshot(
         QStringLiteral("screenshot"),
