@@ -15,6 +15,7 @@
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTimer>
+#include <QToolButton>
 
 #include "StudioFixture.h"
 #include "dialogs/PreferencesDialog.h"
@@ -215,6 +216,16 @@ TEST_F(Preferences, DarkThemeDarkensTheWholeStudioAtOnce) {
     EXPECT_LT(QApplication::palette().color(QPalette::Window).lightness(), 70);
     EXPECT_GT(QApplication::palette().color(QPalette::WindowText).lightness(), 180);
     EXPECT_LT(window->palette().color(QPalette::Window).lightness(), 70);  // the open window too
+    // The timeline's transport icons are light on the dark buttons.
+    auto* play = window->findChild<QToolButton*>(QStringLiteral("timelinePlay"));
+    ASSERT_NE(play, nullptr);
+    const QImage icon = play->icon().pixmap(16, 16).toImage();
+    int lightest = 0;
+    for (int y = 0; y < icon.height(); ++y)
+        for (int x = 0; x < icon.width(); ++x)
+            if (qAlpha(icon.pixel(x, y)) > 200)
+                lightest = std::max(lightest, QColor(icon.pixel(x, y)).lightness());
+    EXPECT_GT(lightest, 180);
     addExampleBiped();
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_dark.png"));
     apply([](StudioPreferences& p) { p.theme = Theme::Light; });

@@ -1,6 +1,8 @@
 #include "preferences/Theme.h"
 
 #include <QApplication>
+#include <QPainter>
+#include <QPixmap>
 #include <QStyle>
 #include <QStyleFactory>
 #include <QWidget>
@@ -52,6 +54,25 @@ void applyTheme(Theme theme) {
     // tests) each window takes it here, and its children from it.
     for (QWidget* window : QApplication::topLevelWidgets())
         window->setPalette(QPalette());
+    // A widget with a style sheet keeps the palette it was polished with.
+    for (QWidget* widget : QApplication::allWidgets())
+        if (!widget->styleSheet().isEmpty())
+            widget->setStyleSheet(widget->styleSheet());
+}
+
+QIcon tintedIcon(const QIcon& icon, const QColor& colour) {
+    QIcon tinted;
+    for (int size : {16, 24, 32}) {
+        QPixmap pixmap = icon.pixmap(size, size);
+        if (pixmap.isNull())
+            continue;
+        QPainter painter(&pixmap);
+        painter.setCompositionMode(QPainter::CompositionMode_SourceIn);
+        painter.fillRect(pixmap.rect(), colour);
+        painter.end();
+        tinted.addPixmap(pixmap);
+    }
+    return tinted;
 }
 
 }  // namespace rigmesh::widgets
