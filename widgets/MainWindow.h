@@ -16,6 +16,8 @@
 #include <vector>
 #include "io/SceneExport.h"
 
+#include "preferences/StudioPreferences.h"
+
 class QStackedWidget;
 class QTabWidget;
 class QUndoView;
@@ -74,6 +76,10 @@ class MainWindow : public QMainWindow {
     TimelineDock* timeline() const { return timeline_; }
 
     bool openFile(const QString& path);
+    // Puts every preference into effect at once (the language at the next
+    // start) and keeps them in QSettings (MainWindowPreferences.cpp).
+    void applyPreferences(const StudioPreferences& preferences);
+    const StudioPreferences& preferences() const { return preferences_; }
     // Offers to restore documents left in the recovery folder by a crash.
     void offerRecovery();
 
@@ -100,6 +106,8 @@ class MainWindow : public QMainWindow {
     void activatePaintTool();
     void resetPose();
     void deleteSelection();
+    // Edit > Preferences.
+    void openPreferences();
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -163,6 +171,7 @@ class MainWindow : public QMainWindow {
     std::map<DocumentView*, model::Autosave*> autosaves_;
     MouseHint* mouseHint_ = nullptr;
     QStackedWidget* toolOptions_ = nullptr;
+    StudioPreferences preferences_;
     JobRunner* jobs_ = nullptr;
     JobStatus* jobStatus_ = nullptr;
 };

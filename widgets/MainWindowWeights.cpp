@@ -17,6 +17,7 @@
 #include "base/Error.h"
 #include "jobs/JobRunner.h"
 #include "model/Document.h"
+#include "model/ErrorText.h"
 #include "model/commands/WeightCleanupCommand.h"
 #include "panels/WeightsPanel.h"
 #include "viewport/RenderScene.h"
@@ -66,7 +67,7 @@ void MainWindow::createWeightMenu(QMenu* tools) {
             document->undoStack()->push(command.release());
             showStatus(text, 6000);
         } catch (const Error& error) {
-            showStatus(QString::fromStdString(error.what()), 6000);
+            showStatus(model::errorText(error), 6000);
         }
     };
     auto add = [&](const QString& text, auto make) {
@@ -149,7 +150,7 @@ void MainWindow::recomputeWeights() {
                     guarded->undoStack()->push(command.release());
                     showStatus(text, 6000);
                 } catch (const Error& error) {
-                    showStatus(QString::fromStdString(error.what()), 6000);
+                    showStatus(model::errorText(error), 6000);
                 }
             };
         },

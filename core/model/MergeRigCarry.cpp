@@ -11,10 +11,6 @@
 namespace rigmesh::model {
 namespace {
 
-QString tr(const char* text, int n = -1) {
-    return QCoreApplication::translate("DraggedRigCarry", text, nullptr, n);
-}
-
 // Per joint: its parent (none for the root) and the joints below it: the
 // bone ending at the joint, and what its rotation turns.
 struct BoneShape {
@@ -218,11 +214,12 @@ DraggedRigCarry carryDraggedRig(const PartNode& merged, const PartNode& dragged,
 QString DraggedRigCarry::describe(const QString& draggedName) const {
     QStringList keptParts, droppedParts;
     if (!keptRotations.empty())
-        keptParts << tr("the rotations of %n joint(s)", static_cast<int>(keptRotations.size()));
+        keptParts << tr("the rotations of %n joint(s)", nullptr,
+                        static_cast<int>(keptRotations.size()));
     if (!keptPins.empty())
-        keptParts << tr("%n pin(s)", static_cast<int>(keptPins.size()));
+        keptParts << tr("%n pin(s)", nullptr, static_cast<int>(keptPins.size()));
     if (mergedKeys > 0)
-        keptParts << tr("%n key(s)", mergedKeys);
+        keptParts << tr("%n key(s)", nullptr, mergedKeys);
     if (!droppedRotations.empty())
         droppedParts << tr("the rotations of joint(s) %1 (in the merged skeleton they would turn "
                            "other bones)")

@@ -23,6 +23,7 @@
 #include <set>
 #include <vector>
 
+#include <QCoreApplication>
 #include <QString>
 
 #include "model/PartNode.h"
@@ -32,6 +33,9 @@
 namespace rigmesh::model {
 
 struct DraggedRigCarry {
+    Q_DECLARE_TR_FUNCTIONS(DraggedRigCarry)
+
+  public:
     rigmesh::Pose pose;                     // the merged node's pose
     std::set<rigmesh::JointId> pinned;      // the merged node's pins
     rigmesh::Clip clip = rigmesh::Clip();   // the merged node's clip

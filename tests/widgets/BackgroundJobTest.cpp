@@ -16,6 +16,7 @@
 #include "jobs/JobStatus.h"
 #include "model/DocumentFile.h"
 #include "panels/PropertiesPanel.h"
+#include "viewport/Viewport.h"
 
 namespace rigmesh {
 namespace {
@@ -105,6 +106,34 @@ TEST_F(BackgroundJobs, AFineRebuildNeverStallsTheWindowAndIsOneUndoStep) {
     EXPECT_EQ(document()->undoStack()->count(), steps + 1) << "one undo step";
     EXPECT_GT(part().part->mesh.vertexCount(), 10 * vertices);
     EXPECT_FALSE(window->jobStatus()->progressShown());
+}
+
+TEST_F(BackgroundJobs, TheChosenMouseBindingsNavigateWhileAJobRunsAndToolsWait) {
+    widgets::StudioPreferences maya = window->preferences();
+    maya.mouseBindings = widgets::MouseBindings::Maya;
+    window->applyPreferences(maya);
+    startFineRebuild();
+    ASSERT_TRUE(window->jobs()->busy());
+    const QByteArray before = model::DocumentFile::toBytes(*document());
+    widgets::Viewport* view = window->currentView()->viewport();
+    const QPointF middle(view->width() / 2.0, view->height() / 2.0);
+    auto leftDrag = [&](Qt::KeyboardModifiers modifiers) {
+        test::buttonDrag(view, Qt::LeftButton, middle, middle + QPointF(60, 20), modifiers);
+    };
+    // Maya's Alt + left drag orbits while the job runs.
+    const QVector3D eye = view->camera().eye();
+    leftDrag(Qt::AltModifier);
+    EXPECT_GT((view->camera().eye() - eye).length(), 0.01f);
+    EXPECT_FALSE(view->navigating());
+    // A plain left drag is the tool's: it waits, the part stays.
+    window->activateSelectTool();
+    leftDrag(Qt::NoModifier);
+    EXPECT_TRUE(window->jobs()->busy());
+    EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
+    test::waitForJobs();
+    widgets::StudioPreferences blender = maya;
+    blender.mouseBindings = widgets::MouseBindings::Blender;
+    window->applyPreferences(blender);  // kept in QSettings: the next tests' default again
 }
 
 TEST_F(BackgroundJobs, CancellingARebuildLeavesTheDocumentAsItWas) {

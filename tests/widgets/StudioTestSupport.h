@@ -44,6 +44,15 @@ inline void waitForGlobalDifferences(widgets::Viewport* viewport, int timeoutMs 
     QTest::qWait(20);
 }
 
+// A straight drag with `button` from `from` to `to`, in one move, without
+// waiting for background jobs (view navigation: orbit, pan, zoom).
+inline void buttonDrag(QWidget* widget, Qt::MouseButton button, const QPointF& from,
+                       const QPointF& to, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    sendMouse(widget, QEvent::MouseButtonPress, from, button, button, modifiers);
+    sendMouse(widget, QEvent::MouseMove, to, Qt::NoButton, button, modifiers);
+    sendMouse(widget, QEvent::MouseButtonRelease, to, button, Qt::NoButton, modifiers);
+}
+
 // A left-button drag through `points` (pixels in the widget).
 inline void drag(QWidget* widget, const std::vector<QPointF>& points,
                  Qt::KeyboardModifiers modifiers = Qt::NoModifier) {

@@ -15,6 +15,7 @@
 
 #include "base/Error.h"
 #include "model/BoneDisplayName.h"
+#include "model/ErrorText.h"
 #include "model/commands/SetBoneLockCommand.h"
 #include "part/BoneWeights.h"
 #include "viewport/Viewport.h"
@@ -244,7 +245,7 @@ void WeightsPanel::boneLockToggled(int row) {
         document_->undoStack()->push(command.release());
         emit statusMessage(text, 4000);
     } catch (const Error& error) {
-        emit statusMessage(QString::fromStdString(error.what()), 6000);
+        emit statusMessage(model::errorText(error), 6000);
         refreshBones();
     }
 }

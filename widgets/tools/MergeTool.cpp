@@ -7,6 +7,7 @@
 
 #include "base/Error.h"
 #include "jobs/JobRunner.h"
+#include "model/ErrorText.h"
 #include "model/commands/MergePartsCommand.h"
 #include "model/commands/MovePartCommand.h"
 #include "rig/BoneSegment.h"
@@ -322,7 +323,7 @@ void MergeTool::merge(Viewport& viewport, model::PartId dragged, const Candidate
                 } catch (const Error& error) {
                     if (view)
                         emit view->statusMessage(
-                            tr("Not merged: %1").arg(QString::fromStdString(error.what())));
+                            tr("Not merged: %1").arg(model::errorText(error)));
                     return;
                 }
                 const QString summary = merge->summary();

@@ -8,6 +8,7 @@
 
 #include "base/Error.h"
 #include "model/BoneDisplayName.h"
+#include "model/ErrorText.h"
 #include "model/commands/PaintWeightsCommand.h"
 #include "part/WeightLists.h"
 #include "viewport/RenderScene.h"
@@ -117,7 +118,7 @@ void PaintTool::dab(Viewport& viewport, const QPointF& pixel) {
     try {
         skipped_ += painter_->paint(*working_, partDab).skippedLocked;
     } catch (const Error& error) {
-        emit viewport.statusMessage(QString::fromStdString(error.what()));
+        emit viewport.statusMessage(model::errorText(error));
         return;
     }
     dabs_.push_back(dab);
@@ -175,7 +176,7 @@ void PaintTool::release(Viewport& viewport, QMouseEvent*) {
             document.undoStack()->push(command.release());
             emit viewport.statusMessage(message);
         } catch (const Error& error) {
-            emit viewport.statusMessage(QString::fromStdString(error.what()));
+            emit viewport.statusMessage(model::errorText(error));
         }
     }
     endStroke();

@@ -493,8 +493,9 @@ QString Viewport::weightsAt(const QPointF& pixel) const {
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
     lastMouse_ = event->position();
-    if (event->button() == Qt::MiddleButton) {
-        navigating_ = true;
+    navigation_ = navigationFor(mouseBindings_, event->button(), event->modifiers());
+    if (navigation_ != Navigation::None) {
+        navigationButton_ = event->button();
         return;
     }
     if (event->button() == Qt::LeftButton && tool_)
@@ -504,11 +505,18 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
     const QPointF delta = event->position() - lastMouse_;
     lastMouse_ = event->position();
-    if (navigating_) {
-        if (event->modifiers() & Qt::ShiftModifier)
-            camera_.pan(delta, QSizeF(size()));
-        else
-            camera_.orbit(delta);
+    if (navigation_ != Navigation::None) {
+        switch (navigationDuring(mouseBindings_, navigation_, event->modifiers())) {
+            case Navigation::Pan:
+                camera_.pan(delta, QSizeF(size()));
+                break;
+            case Navigation::Zoom:
+                // Right or up zooms in; 60 pixels of drag are one wheel step.
+                camera_.dolly((delta.x() - delta.y()) / 60.0);
+                break;
+            default:
+                camera_.orbit(delta);
+        }
         update();
         return;
     }
@@ -526,8 +534,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
-    if (event->button() == Qt::MiddleButton) {
-        navigating_ = false;
+    if (navigation_ != Navigation::None && event->button() == navigationButton_) {
+        navigation_ = Navigation::None;
         return;
     }
     if (event->button() == Qt::LeftButton && tool_)
@@ -550,6 +558,9 @@ void Viewport::setWeightView(WeightView view) {
 }
 
 void Viewport::contextMenuEvent(QContextMenuEvent* event) {
+    // Alt + right drag zooms with Maya's bindings: no menu then.
+    if (mouseBindings_ == MouseBindings::Maya && (event->modifiers() & Qt::AltModifier))
+        return;
     if (!showBoneMenu(*this, event->pos(), event->globalPos()))
         QOpenGLWidget::contextMenuEvent(event);
 }

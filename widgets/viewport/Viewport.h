@@ -1,8 +1,9 @@
 // The 3D view of a document: a QOpenGLWidget (GL 3.3 core) that draws the
 // document's parts with GPU skinning, the ground grid and the skeleton
 // overlay, navigates like Blender (middle drag orbits, Shift + middle drag
-// pans, wheel zooms, Home frames all, numpad period frames the selection) and
-// hands left-button input to the active tool.
+// pans, wheel zooms, Home frames all, numpad period frames the selection) or,
+// by preference, like Maya (Alt + left / middle / right drag, MouseBindings.h)
+// and hands left-button input to the active tool.
 #pragma once
 
 #include <QOpenGLWidget>
@@ -12,6 +13,7 @@
 
 #include "model/Document.h"
 #include "pose/ForwardKinematics.h"
+#include "viewport/MouseBindings.h"
 #include "viewport/OrbitCamera.h"
 #include "viewport/RenderScene.h"
 
@@ -64,6 +66,10 @@ class Viewport : public QOpenGLWidget {
     bool globalDifferencePending() const;
     bool wireframe() const { return wireframe_; }
     bool dualQuaternionSkinning() const { return dualQuaternion_; }
+    void setMouseBindings(MouseBindings bindings) { mouseBindings_ = bindings; }
+    MouseBindings mouseBindings() const { return mouseBindings_; }
+    // A drag that orbits, pans or zooms the view is under way.
+    bool navigating() const { return navigation_ != Navigation::None; }
 
     // The stroke being sketched, in world space (drawn as an overlay).
     void setStrokeOverlay(std::vector<QVector3D> points);
@@ -162,7 +168,9 @@ class Viewport : public QOpenGLWidget {
     model::PartId markedPart_ = model::kNoPart;
     std::vector<int> marked_;
     QPointF lastMouse_;
-    bool navigating_ = false;
+    MouseBindings mouseBindings_ = MouseBindings::Blender;
+    Navigation navigation_ = Navigation::None;  // of the drag under way
+    Qt::MouseButton navigationButton_ = Qt::NoButton;
 };
 
 }  // namespace rigmesh::widgets

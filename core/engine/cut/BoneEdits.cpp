@@ -42,17 +42,16 @@ BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& we
     result.bonesInvolved = static_cast<int>(local.bones.size());
     const std::vector<std::string> problems = result.part.validateSolid();
     if (!problems.empty())
-        throw Error("The bone edit gave an invalid part (" + problems.front() +
-                    "); nothing was changed.");
+        throw Error(MessageId::BoneEditInvalidResult, problems.front());
     result.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     return result;
 }
 
 void requireRigged(const Part& part, BoneId bone) {
     if (part.skeleton.boneCount() == 0)
-        throw Error("The part has no skeleton.");
+        throw Error(MessageId::PartHasNoSkeleton);
     if (!part.skeleton.hasBone(bone))
-        throw Error("The part has no bone " + std::to_string(bone) + ".");
+        throw Error(MessageId::PartHasNoBone, bone);
 }
 
 }  // namespace
@@ -60,7 +59,7 @@ void requireRigged(const Part& part, BoneId bone) {
 BoneId nearestBone(const Part& part, const Vec3& point) {
     const std::vector<BoneSegment> segments = part.boneSegments();
     if (segments.empty())
-        throw Error("The part has no skeleton.");
+        throw Error(MessageId::PartHasNoSkeleton);
     int best = 0;
     for (int b = 1; b < static_cast<int>(segments.size()); ++b)
         if (pointSegmentDistance(point, segments[b]) < pointSegmentDistance(point, segments[best]))
@@ -76,9 +75,7 @@ BoneEditResult splitBoneAt(const Part& part, BoneId bone, const Vec3& at) {
                               part.skeleton.joint(b.tail).position};
     const double t = closestSegmentParameter(at, segment);
     if (t < kEndFraction || t > 1.0 - kEndFraction)
-        throw Error(
-            "That is too close to a joint to split the bone; pick a point nearer its "
-            "middle.");
+        throw Error(MessageId::SplitTooCloseToJoint);
     const Vec3 point = segment.head + t * (segment.tail - segment.head);
     Skeleton skeleton = part.skeleton;
     const JointId middle = skeleton.splitBone(bone, point);
@@ -98,7 +95,7 @@ BoneEditResult splitBoneAt(const Part& part, BoneId bone, const Vec3& at) {
         if (!weights[v].empty() && leadingBone(weights[v]) == bone)
             seeds.push_back(v);
     if (seeds.empty())
-        throw Error("No part of the surface is led by that bone where it would be split.");
+        throw Error(MessageId::SplitBoneLeadsNothing);
     BoneEditResult result =
         finish(part, std::move(skeleton), weights, seeds, {}, {bone, tailHalf}, start);
     result.newJoint = middle;
@@ -109,7 +106,8 @@ BoneEditResult deleteBone(const Part& part, BoneId bone) {
     const auto start = Clock::now();
     requireRigged(part, bone);
     if (part.skeleton.boneCount() < 2)
-        throw Error("A part keeps at least one bone; this is its only one.");
+        throw Error(MessageId::DeleteOnlyBone);
+
     const Bone b = part.skeleton.bone(bone);
     std::set<BoneId> neighbours;
     for (JointId end : {b.head, b.tail})

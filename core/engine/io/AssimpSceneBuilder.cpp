@@ -236,10 +236,9 @@ void checkPart(const ExportPart& item, bool rigged) {
         throw Error("cannot export: a part is missing");
     const Part& part = *item.part;
     if (part.mesh.vertices.empty() || part.mesh.faces.empty())
-        throw Error("cannot export part '" + part.name + "': it has no surface");
+        throw Error(MessageId::ExportPartWithoutSurface, part.name);
     if (rigged && part.weights.perVertex.size() != part.mesh.vertices.size())
-        throw Error("cannot export part '" + part.name +
-                    "': its skin weights do not match its surface");
+        throw Error(MessageId::ExportWeightsMismatch, part.name);
 }
 
 }  // namespace
@@ -248,7 +247,7 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
                                         const Clip* clip, ExportFormat format,
                                         const ExportOptions& options) {
     if (parts.empty())
-        throw Error("cannot export: there is no part");
+        throw Error(MessageId::ExportNoPart);
     const bool rigged = isRiggedFormat(format);
     for (const ExportPart& item : parts)
         checkPart(item, rigged);

@@ -167,7 +167,7 @@ double percentile(std::vector<double> values, double fraction) {
 MergeResult mergeParts(const Part& target, const Part& dragged, const MergeRequest& request) {
     const auto start = Clock::now();
     if (target.skeleton.boneCount() == 0 || dragged.skeleton.boneCount() == 0)
-        throw Error("Only rigged parts can be merged; rig the imported mesh first.");
+        throw Error(MessageId::MergeNeedsRiggedParts);
     MergeResult result;
     SkeletonJoin join = joinSkeletons(target.skeleton, dragged.skeleton, request.join);
     result.draggedTranslation = join.draggedTranslation;
@@ -293,8 +293,8 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
 
     const std::vector<std::string> problems = part.validateSolid();
     if (!problems.empty())
-        throw Error("The merge gave an invalid part (" + problems.front() +
-                    "); nothing was changed.");
+        throw Error(MessageId::MergeInvalidResult, problems.front());
+
     result.stats.totalMs = millisecondsSince(start);
     return result;
 }

@@ -132,15 +132,14 @@ SkinWeightsById carriedWeights(const SkinWeightsById& weights,
 
 Part subdividedPart(const Part& part, int levels) {
     if (levels < 0 || levels > 4)
-        throw Error("subdivision levels must be from 0 to 4, not " + std::to_string(levels));
+        throw Error(MessageId::SubdivisionLevelsOutOfRange, levels);
     Part out = part;
     const bool rigged = out.skeleton.boneCount() > 0;
     for (int level = 0; level < levels; ++level) {
         const std::size_t edges = 3 * out.mesh.faces.size() / 2;
         if (out.mesh.vertices.size() + edges > static_cast<std::size_t>(kMaxDetailVertices))
-            throw Error("subdividing '" + part.name + "' " + std::to_string(levels) +
-                        " times would give over " + std::to_string(kMaxDetailVertices) +
-                        " vertices; use fewer levels");
+            throw Error(MessageId::SubdivisionTooManyVertices, part.name, levels,
+                        kMaxDetailVertices);
         const Level next = loopRound(out.mesh);
         if (rigged)
             out.weights = carriedWeights(out.weights, next.stencils);

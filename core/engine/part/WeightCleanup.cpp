@@ -55,14 +55,14 @@ int normalizeAllWeights(Part& part, const std::set<BoneId>& locked) {
 
 int cleanWeights(Part& part, double threshold, const std::set<BoneId>& locked) {
     if (!(threshold >= 0.0) || !(threshold < 1.0))
-        throw Error("The clean threshold must be at least 0 and below 1.");
+        throw Error(MessageId::CleanThresholdOutOfRange);
     return filterWeights(part, locked,
                          [&](const auto& entry, std::size_t) { return entry.second >= threshold; });
 }
 
 int limitWeightInfluences(Part& part, int influences, const std::set<BoneId>& locked) {
     if (influences < 1)
-        throw Error("A vertex needs at least one influence.");
+        throw Error(MessageId::LimitNeedsOneInfluence);
     return filterWeights(part, locked, [&](const auto&, std::size_t keptSoFar) {
         return static_cast<int>(keptSoFar) < influences;
     });
@@ -71,7 +71,7 @@ int limitWeightInfluences(Part& part, int influences, const std::set<BoneId>& lo
 int smoothAllWeights(Part& part, const SmoothAllOptions& options, const std::set<BoneId>& locked) {
     if (!(options.factor >= 0.0) || !(options.factor <= 1.0) || options.iterations < 1 ||
         options.iterations > 100)
-        throw Error("Smooth All needs a factor from 0 to 1 and 1 to 100 passes.");
+        throw Error(MessageId::SmoothAllOutOfRange);
     const LockedBones lockedBones(part.skeleton, locked);
     const std::vector<std::vector<int>> neighbours = vertexNeighbours(part.mesh);
     auto& weights = part.weights.perVertex;

@@ -44,21 +44,17 @@ namespace {
 
 void checkDab(const Part& part, const WeightDab& dab) {
     if (!part.skeleton.hasBone(dab.bone))
-        throw Error("The part has no bone " + std::to_string(dab.bone) + " to paint.");
+        throw Error(MessageId::PaintNoSuchBone, dab.bone);
     if (dab.locked.contains(dab.bone))
-        throw Error("Bone " + std::to_string(dab.bone) + " is locked; unlock it to paint it.");
+        throw Error(MessageId::PaintBoneLocked, dab.bone);
     if (!(dab.radius > 0.0) || !std::isfinite(dab.radius) || !(dab.strength >= 0.0) ||
         !(dab.strength <= 1.0) || !(dab.value >= 0.0) || !(dab.value <= 1.0) ||
         !dab.centre.allFinite())
-        throw Error(
-            "A brush needs a finite centre, a positive radius, and a strength and value "
-            "between 0 and 1.");
+        throw Error(MessageId::PaintBrushInvalid);
     if (dab.towardsViewer && (!dab.towardsViewer->allFinite() || dab.towardsViewer->norm() == 0.0))
-        throw Error("Front faces only needs a finite, non-zero view direction.");
+        throw Error(MessageId::PaintViewDirectionInvalid);
     if (dab.mirror && part.mirror.size() != part.mesh.vertices.size())
-        throw Error(
-            "This part is not mirror symmetric any more (merged or cut), so X-mirror "
-            "cannot paint it.");
+        throw Error(MessageId::PaintMirrorAsymmetric);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "model/commands/MergePartsCommand.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 
 #include <nlohmann/json.hpp>
@@ -71,7 +73,9 @@ JointId resolveJoint(const JointChoice& choice, const Part& part, const Placemen
 std::unique_ptr<MergePartsCommand> MergePartsCommand::create(Document& document, PartId dragged,
                                                              PartId target, const MergeSpec& spec) {
     if (dragged == target)
-        throw Error("A part cannot be merged into itself.");
+        throw Error(QCoreApplication::translate("rigmesh::model::MergePartsCommand",
+                                                "A part cannot be merged into itself.")
+                        .toStdString());
     return fromComputed(document, dragged, target,
                         compute(document.part(dragged), document.part(target), spec));
 }
@@ -80,7 +84,7 @@ ComputedMerge MergePartsCommand::compute(const PartNode& from, const PartNode& i
                                          const MergeSpec& spec) {
     if (!from.part || !into.part || from.part->skeleton.boneCount() == 0 ||
         into.part->skeleton.boneCount() == 0)
-        throw Error("Only rigged parts can be merged; rig the imported mesh first.");
+        throw Error(MessageId::MergeNeedsRiggedParts);
 
     const Part draggedPart = inFrameOf(*from.part, from.placement, into.placement);
     MergeSpec resolved = spec;
