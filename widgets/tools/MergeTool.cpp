@@ -322,8 +322,7 @@ void MergeTool::merge(Viewport& viewport, model::PartId dragged, const Candidate
                                                                    std::move(*computed));
                 } catch (const Error& error) {
                     if (view)
-                        emit view->statusMessage(
-                            tr("Not merged: %1").arg(model::errorText(error)));
+                        emit view->statusMessage(tr("Not merged: %1").arg(model::errorText(error)));
                     return;
                 }
                 const QString summary = merge->summary();
