@@ -6,31 +6,18 @@
 #include <gtest/gtest.h>
 
 #include <QMenu>
-#include <QTemporaryDir>
-#include <memory>
 #include <string>
 #include <vector>
 
-#include "DocumentView.h"
-#include "MainWindow.h"
-#include "StudioTestSupport.h"
-#include "model/Document.h"
-#include "model/commands/CreatePartCommand.h"
-#include "sketch/Sketch.h"
+#include "StudioFixture.h"
 #include "tools/MergeTool.h"
 
 namespace rigmesh::widgettest {
 
-using test::settle;
-
-class StudioMerge : public testing::Test {
+class StudioMerge : public test::StudioFixture {
   protected:
     void SetUp() override {
-        ASSERT_TRUE(recovery.isValid());
-        window = std::make_unique<widgets::MainWindow>(recovery.path());
-        window->resize(1200, 800);
-        window->newDocument();
-        settle(window.get());
+        StudioFixture::SetUp();
         model::Document& d = *window->currentDocument();
         const std::string dir = RIGMESH_SHARED_SKETCHES;
         d.undoStack()->push(model::CreatePartCommand::create(
@@ -46,8 +33,6 @@ class StudioMerge : public testing::Test {
         window->activateMergeTool();
         QTest::qWait(50);
     }
-    widgets::Viewport* viewport() const { return window->currentView()->viewport(); }
-    model::Document* document() const { return window->currentDocument(); }
     // A pixel on the leg's lower half, far from the body.
     QPointF onTheLeg() const {
         const QVector3D p =
@@ -70,9 +55,6 @@ class StudioMerge : public testing::Test {
             path.emplace_back(onTheLeg().x() + i, onTheLeg().y() - i);
         return path;
     }
-
-    QTemporaryDir recovery;
-    std::unique_ptr<widgets::MainWindow> window;
 };
 
 }  // namespace rigmesh::widgettest

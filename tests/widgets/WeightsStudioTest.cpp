@@ -14,7 +14,7 @@
 #include <QTreeWidget>
 
 #include "PartWeightOf.h"
-#include "StudioFixture.h"
+#include "StudioPoseFixture.h"
 #include "jobs/JobRunner.h"
 #include "model/DocumentFile.h"
 #include "model/recipe/RecipeRunner.h"
@@ -26,7 +26,7 @@ namespace {
 
 using test::drag;
 
-class WeightsStudio : public test::StudioFixture {
+class WeightsStudio : public test::StudioPose {
   protected:
     // The example biped with one paint stroke along its arm.
     void paintTheArmOfTheExample() {
@@ -37,17 +37,7 @@ class WeightsStudio : public test::StudioFixture {
         drag(viewport(), armStroke());
     }
     // The leaf joint farthest sideways (a hand) and the bone ending there.
-    JointId hand() const {
-        const Skeleton& skeleton = part().skeleton;
-        JointId best = kNoJoint;
-        double side = -1;
-        for (const Joint& joint : skeleton.joints())
-            if (skeleton.degree(joint.id) == 1 && std::abs(joint.position.x()) > side) {
-                side = std::abs(joint.position.x());
-                best = joint.id;
-            }
-        return best;
-    }
+    JointId hand() const { return sidewaysHand(part().skeleton); }
     // The joint the hand's bone starts at: the bone ending there (the upper
     // arm) is painted onto the forearm, where it has room to grow.
     JointId shoulder() const {

@@ -35,6 +35,20 @@ int frontmostVertex(const Part& part) {
     return at;
 }
 
+// A Replace dab of constant falloff on the first bone, at full strength,
+// centred on the biped's frontmost vertex.
+WeightDab constantReplaceInFront(const Part& part, double value, double radius) {
+    WeightDab dab;
+    dab.bone = part.skeleton.bones().front().id;
+    dab.mode = BrushMode::Replace;
+    dab.falloff = BrushFalloff::Constant;
+    dab.value = value;
+    dab.strength = 1.0;
+    dab.centre = part.mesh.vertices[frontmostVertex(part)];
+    dab.radius = radius;
+    return dab;
+}
+
 TEST(BrushFalloff, ProfilesStartAtOneAndEndAtZeroExceptConstant) {
     for (BrushFalloff f : {BrushFalloff::Smooth, BrushFalloff::Linear, BrushFalloff::Sharp}) {
         EXPECT_DOUBLE_EQ(brushFalloff(f, 0.0), 1.0);
@@ -48,14 +62,7 @@ TEST(BrushFalloff, ProfilesStartAtOneAndEndAtZeroExceptConstant) {
 
 TEST(WeightPaint, ConstantFalloffReplacesEveryVertexInsideTheRadiusFully) {
     Part part = testsupport::sharedSketchPart("biped");
-    WeightDab dab;
-    dab.bone = part.skeleton.bones().front().id;
-    dab.mode = BrushMode::Replace;
-    dab.falloff = BrushFalloff::Constant;
-    dab.value = 0.25;
-    dab.strength = 1.0;
-    dab.centre = part.mesh.vertices[frontmostVertex(part)];
-    dab.radius = 0.3;
+    const WeightDab dab = constantReplaceInFront(part, 0.25, 0.3);
     paintWeights(part, dab);
     EXPECT_TRUE(part.validate().empty());
     int inside = 0;
@@ -164,15 +171,7 @@ double roughness(const Part& part) {
 TEST(WeightCleanup, SmoothAllMakesWeightsSmootherAndKeepsSums) {
     // Rough weights first: a constant-falloff Replace leaves a step.
     Part part = testsupport::sharedSketchPart("biped");
-    WeightDab dab;
-    dab.bone = part.skeleton.bones().front().id;
-    dab.mode = BrushMode::Replace;
-    dab.falloff = BrushFalloff::Constant;
-    dab.value = 1.0;
-    dab.strength = 1.0;
-    dab.centre = part.mesh.vertices[frontmostVertex(part)];
-    dab.radius = 0.4;
-    paintWeights(part, dab);
+    paintWeights(part, constantReplaceInFront(part, 1.0, 0.4));
     // Each pass makes the weights smoother; many passes much smoother.
     double previous = roughness(part);
     const double start = previous;
