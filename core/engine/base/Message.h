@@ -118,6 +118,24 @@ enum class MessageId {
     DecimationTooFewFaces,
     DecimationNotManifold,
 
+    // Rigging an imported mesh (autorig/)
+    AutoRigPartIsRigged,
+    AutoRigNoSurface,
+    AutoRigTooFewFaces,
+    AutoRigOpenBorder,
+    AutoRigSeveralPieces,
+    AutoRigSelfIntersecting,
+    AutoRigNotManifold,
+    AutoRigSkeletonFailed,
+    AutoRigCancelled,
+    AutoRigRepairWelded,
+    AutoRigRepairDegenerate,
+    AutoRigRepairDuplicateFaces,
+    AutoRigRepairUnusedVertices,
+    AutoRigRepairNonManifold,
+    AutoRigRepairFlipped,
+    AutoRigRepairHoles,
+
     Count  // not a message: the number of ids
 };
 

@@ -328,6 +328,67 @@ const char* messageTemplate(MessageId id) {
         case MessageId::DecimationNotManifold:
             return RIGMESH_TRANSLATABLE("EngineMessage",
                                         "the surface is not manifold, so it cannot be decimated");
+
+        case MessageId::AutoRigPartIsRigged:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "%1 already has a skeleton. Rig parts without one (imported meshes); to start "
+                "a sketched part's rig again, use Recompute Weights or Rebuild.");
+        case MessageId::AutoRigNoSurface:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "%1 has no surface to rig.");
+        case MessageId::AutoRigTooFewFaces:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The mesh has only %1 usable faces; a rig needs a closed surface that bounds a "
+                "volume.");
+        case MessageId::AutoRigOpenBorder:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The mesh is open: it has a hole of %1 edges, %2% of the model's size, too "
+                "large to fill without guessing its shape. Close the mesh in your modelling "
+                "tool (in Blender: select the border, Face > Fill) and import it again.");
+        case MessageId::AutoRigSeveralPieces:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The mesh is %1 separate pieces; a rig needs one closed piece. Join them into "
+                "one surface in your modelling tool, or export each piece as its own file and "
+                "rig it as its own part.");
+        case MessageId::AutoRigSelfIntersecting:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "%1 pairs of faces of the mesh cross each other, so it does not bound one "
+                "volume and its skeleton would be wrong. Remove the crossings in your "
+                "modelling tool (in Blender: the 3D-Print toolbox finds them) and import it "
+                "again.");
+        case MessageId::AutoRigNotManifold:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The mesh is not a manifold (more than two faces meet at an edge) and could "
+                "not be repaired safely. Clean it up in your modelling tool (in Blender: "
+                "Select > All by Trait > Non Manifold) and import it again.");
+        case MessageId::AutoRigSkeletonFailed:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "No skeleton could be found in the mesh: %1");
+        case MessageId::AutoRigCancelled:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "Rigging was cancelled.");
+        case MessageId::AutoRigRepairWelded:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage", "joined %1 vertices that sat at the same position (split seams)");
+        case MessageId::AutoRigRepairDegenerate:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "removed %1 degenerate faces (no area)");
+        case MessageId::AutoRigRepairDuplicateFaces:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "removed %1 duplicate faces");
+        case MessageId::AutoRigRepairUnusedVertices:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "removed %1 vertices no face uses");
+        case MessageId::AutoRigRepairNonManifold:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "split %1 vertices where separate sheets touched");
+        case MessageId::AutoRigRepairFlipped:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "turned the faces outward (they faced inward)");
+        case MessageId::AutoRigRepairHoles:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "filled %1 small holes with %2 new vertices");
     }
     return "";
 }

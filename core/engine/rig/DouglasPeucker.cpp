@@ -115,4 +115,19 @@ std::vector<int> cylindricalDouglasPeucker(const std::vector<AxisSample>& axis, 
     });
 }
 
+std::vector<int> cylindricalDouglasPeucker(const std::vector<TubeSample>& tube, double threshold) {
+    checkThreshold(threshold);
+    return simplify(static_cast<int>(tube.size()), threshold * threshold, [&](int i, int j, int k) {
+        const Vec3 ab = tube[j].point - tube[i].point;
+        const double lengthSquared = ab.squaredNorm();
+        const double t =
+            lengthSquared == 0.0
+                ? 0.0
+                : std::clamp((tube[k].point - tube[i].point).dot(ab) / lengthSquared, 0.0, 1.0);
+        const double d = (tube[k].point - (tube[i].point + t * ab)).norm();
+        const double dr = tube[k].radius - ((1.0 - t) * tube[i].radius + t * tube[j].radius);
+        return 2.0 * (d * d + dr * dr);
+    });
+}
+
 }  // namespace rigmesh

@@ -62,4 +62,19 @@ double cdpError(const CdpTrapezoid& trapezoid, const AxisSample& sample);
 // both sides (or by more than threshold on one side).
 std::vector<int> cylindricalDouglasPeucker(const std::vector<AxisSample>& axis, double threshold);
 
+// One sample of a curve skeleton in space (an imported mesh's, issue 17):
+// its point and the mean distance from it to the surface around it.
+struct TubeSample {
+    Vec3 point;
+    double radius = 0.0;
+};
+
+// CDP's rule in space, where a sample has a radius instead of a chord. With
+// d the distance from v_k to the segment v_i v_j and dr the difference
+// between r_k and the radius interpolated linearly from r_i to r_j at v_k's
+// projection, e_CDP = 2 (d^2 + dr^2): what the planar e_CDP gives for an
+// axis moved by d or a width changed by dr on both sides. Splits while max
+// e_CDP > threshold^2, so the same threshold means the same bones.
+std::vector<int> cylindricalDouglasPeucker(const std::vector<TubeSample>& tube, double threshold);
+
 }  // namespace rigmesh

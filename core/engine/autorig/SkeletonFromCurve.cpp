@@ -1,0 +1,341 @@
+#include "autorig/SkeletonFromCurve.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <map>
+#include <set>
+#include <vector>
+
+#include "base/Error.h"
+#include "rig/DouglasPeucker.h"
+
+namespace rigmesh {
+
+namespace {
+
+// The curve as an editable graph: nodes die (pruned, merged) but keep their
+// index.
+struct Graph {
+    std::vector<Vec3> points;
+    std::vector<double> radii;
+    std::vector<std::set<int>> neighbours;
+    std::vector<char> alive;
+
+    int degree(int n) const { return static_cast<int>(neighbours[n].size()); }
+    double length(int a, int b) const { return (points[a] - points[b]).norm(); }
+    void removeEdge(int a, int b) {
+        neighbours[a].erase(b);
+        neighbours[b].erase(a);
+    }
+    void kill(int n) {
+        for (int m : std::vector<int>(neighbours[n].begin(), neighbours[n].end()))
+            removeEdge(n, m);
+        alive[n] = 0;
+    }
+    std::vector<int> aliveNodes() const {
+        std::vector<int> nodes;
+        for (int n = 0; n < static_cast<int>(alive.size()); ++n)
+            if (alive[n])
+                nodes.push_back(n);
+        return nodes;
+    }
+};
+
+// A node's radius: the mean distance to the vertices that contracted onto
+// it; nodes without any take their neighbours' mean.
+std::vector<double> nodeRadii(const CurveSkeleton& curve, const TriMesh& mesh) {
+    const int count = static_cast<int>(curve.nodes.size());
+    std::vector<double> radii(count, -1.0);
+    for (int n = 0; n < count; ++n) {
+        double sum = 0.0;
+        int used = 0;
+        for (int v : curve.nodeVertices[n])
+            if (v >= 0 && v < mesh.vertexCount()) {
+                sum += (mesh.vertices[v] - curve.nodes[n]).norm();
+                ++used;
+            }
+        if (used > 0)
+            radii[n] = sum / used;
+    }
+    std::vector<std::vector<int>> adjacent(count);
+    for (const auto& [a, b] : curve.edges) {
+        adjacent[a].push_back(b);
+        adjacent[b].push_back(a);
+    }
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (int n = 0; n < count; ++n) {
+            if (radii[n] >= 0.0)
+                continue;
+            double sum = 0.0;
+            int known = 0;
+            for (int m : adjacent[n])
+                if (radii[m] >= 0.0) {
+                    sum += radii[m];
+                    ++known;
+                }
+            if (known > 0) {
+                radii[n] = sum / known;
+                changed = true;
+            }
+        }
+    }
+    for (double& r : radii)
+        r = std::max(r, 0.0);
+    return radii;
+}
+
+// Keeps the component with the most nodes and a breadth-first spanning tree
+// of it: a handle's cycle is cut where the search closes it.
+Graph spanningTree(const CurveSkeleton& curve, const TriMesh& mesh) {
+    const int count = static_cast<int>(curve.nodes.size());
+    std::vector<std::vector<int>> adjacent(count);
+    for (const auto& [a, b] : curve.edges)
+        if (a != b && a >= 0 && b >= 0 && a < count && b < count) {
+            adjacent[a].push_back(b);
+            adjacent[b].push_back(a);
+        }
+    Graph graph;
+    graph.points = curve.nodes;
+    graph.radii = nodeRadii(curve, mesh);
+    graph.neighbours.assign(count, {});
+    graph.alive.assign(count, 0);
+    std::vector<int> component(count, -1);
+    int best = -1, bestSize = 0;
+    for (int start = 0; start < count; ++start) {
+        if (component[start] >= 0)
+            continue;
+        int size = 0;
+        std::deque<int> queue{start};
+        component[start] = start;
+        while (!queue.empty()) {
+            const int n = queue.front();
+            queue.pop_front();
+            ++size;
+            for (int m : adjacent[n])
+                if (component[m] < 0) {
+                    component[m] = start;
+                    queue.push_back(m);
+                }
+        }
+        if (size > bestSize) {
+            best = start;
+            bestSize = size;
+        }
+    }
+    std::vector<char> reached(count, 0);
+    std::deque<int> queue{best};
+    reached[best] = 1;
+    while (!queue.empty()) {
+        const int n = queue.front();
+        queue.pop_front();
+        graph.alive[n] = 1;
+        for (int m : adjacent[n])
+            if (!reached[m]) {
+                reached[m] = 1;
+                graph.neighbours[n].insert(m);
+                graph.neighbours[m].insert(n);
+                queue.push_back(m);
+            }
+    }
+    return graph;
+}
+
+// The nodes from `start` through `next` on to the first node whose degree is
+// not 2 (included).
+std::vector<int> walkBranch(const Graph& graph, int start, int next) {
+    std::vector<int> branch{start, next};
+    while (graph.degree(branch.back()) == 2) {
+        const int here = branch.back();
+        const int previous = branch[branch.size() - 2];
+        const int onward = *graph.neighbours[here].begin() == previous
+                               ? *graph.neighbours[here].rbegin()
+                               : *graph.neighbours[here].begin();
+        branch.push_back(onward);
+    }
+    return branch;
+}
+
+double branchLength(const Graph& graph, const std::vector<int>& branch) {
+    double length = 0.0;
+    for (std::size_t i = 1; i < branch.size(); ++i)
+        length += graph.length(branch[i - 1], branch[i]);
+    return length;
+}
+
+// Removes the twig that falls shortest of its limit, one at a time (each
+// removal can turn a junction into a plain branch node); never below two
+// tips.
+void pruneTwigs(Graph& graph, const CurveRigOptions& options) {
+    while (true) {
+        std::vector<int> tips;
+        for (int n : graph.aliveNodes())
+            if (graph.degree(n) == 1)
+                tips.push_back(n);
+        if (tips.size() <= 2)
+            return;
+        std::vector<int> worst;
+        double worstRatio = 1.0;
+        for (int tip : tips) {
+            const std::vector<int> branch = walkBranch(graph, tip, *graph.neighbours[tip].begin());
+            const int junction = branch.back();
+            if (graph.degree(junction) < 3)
+                continue;
+            const double limit = graph.radii[junction] + options.twigTipFactor * graph.radii[tip];
+            const double ratio = limit > 0.0 ? branchLength(graph, branch) / limit : 1.0;
+            if (ratio < worstRatio) {
+                worstRatio = ratio;
+                worst = branch;
+            }
+        }
+        if (worst.empty())
+            return;
+        worst.pop_back();  // the junction stays
+        for (int n : worst)
+            graph.kill(n);
+    }
+}
+
+// Merges two junctions joined by a short branch into one node at the
+// branch's middle, repeatedly.
+void collapseJunctions(Graph& graph, const CurveRigOptions& options) {
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (int a : graph.aliveNodes()) {
+            if (graph.degree(a) < 3)
+                continue;
+            for (int next :
+                 std::vector<int>(graph.neighbours[a].begin(), graph.neighbours[a].end())) {
+                const std::vector<int> branch = walkBranch(graph, a, next);
+                const int b = branch.back();
+                if (b == a || graph.degree(b) < 3)
+                    continue;
+                const double length = branchLength(graph, branch);
+                if (length >=
+                    options.junctionCollapseFactor * std::max(graph.radii[a], graph.radii[b]))
+                    continue;
+                // Walk to the middle of the branch by length.
+                double walked = 0.0;
+                Vec3 middle = graph.points[a];
+                for (std::size_t i = 1; i < branch.size(); ++i) {
+                    const double step = graph.length(branch[i - 1], branch[i]);
+                    if (walked + step >= length / 2) {
+                        const double t = step > 0.0 ? (length / 2 - walked) / step : 0.0;
+                        middle =
+                            (1 - t) * graph.points[branch[i - 1]] + t * graph.points[branch[i]];
+                        break;
+                    }
+                    walked += step;
+                }
+                std::set<int> joined;
+                for (int n : branch)
+                    if (n != a)
+                        for (int m : graph.neighbours[n])
+                            joined.insert(m);
+                for (int n : branch)
+                    joined.erase(n);
+                graph.radii[a] = std::max(graph.radii[a], graph.radii[b]);
+                for (int n : branch)
+                    if (n != a)
+                        graph.kill(n);
+                graph.points[a] = middle;
+                for (int m : joined) {
+                    graph.neighbours[a].insert(m);
+                    graph.neighbours[m].insert(a);
+                }
+                changed = true;
+                break;
+            }
+            if (changed)
+                break;
+        }
+    }
+}
+
+// Every branch between nodes whose degree is not 2, once.
+std::vector<std::vector<int>> branches(const Graph& graph) {
+    std::vector<std::vector<int>> result;
+    std::set<std::pair<int, int>> walked;
+    for (int n : graph.aliveNodes()) {
+        if (graph.degree(n) == 2)
+            continue;
+        for (int next : graph.neighbours[n]) {
+            if (walked.contains({n, next}))
+                continue;
+            std::vector<int> branch = walkBranch(graph, n, next);
+            walked.insert({branch[branch.size() - 1], branch[branch.size() - 2]});
+            result.push_back(std::move(branch));
+        }
+    }
+    return result;
+}
+
+// CDP's kept samples of a branch, with interior joints closer than the
+// minimum bone merged (as SkeletonFromRegions does along a cylinder).
+std::vector<int> keptSamples(const Graph& graph, const std::vector<int>& branch,
+                             const CurveRigOptions& options) {
+    std::vector<TubeSample> tube;
+    double radiusSum = 0.0;
+    for (int n : branch) {
+        tube.push_back({graph.points[n], graph.radii[n]});
+        radiusSum += graph.radii[n];
+    }
+    const double meanRadius = radiusSum / static_cast<double>(branch.size());
+    const std::vector<int> kept =
+        cylindricalDouglasPeucker(tube, options.relativeThreshold * meanRadius);
+    std::vector<double> along(branch.size(), 0.0);
+    for (std::size_t i = 1; i < branch.size(); ++i)
+        along[i] = along[i - 1] + graph.length(branch[i - 1], branch[i]);
+    const double minimumBone = options.relativeMinimumBone * meanRadius;
+    std::vector<int> merged{kept.front()};
+    for (std::size_t i = 1; i + 1 < kept.size(); ++i)
+        if (along[kept[i]] - along[merged.back()] >= minimumBone)
+            merged.push_back(kept[i]);
+    if (kept.size() > 1) {
+        if (merged.size() > 1 && along[kept.back()] - along[merged.back()] < minimumBone)
+            merged.pop_back();
+        merged.push_back(kept.back());
+    }
+    return merged;
+}
+
+}  // namespace
+
+Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
+                           const CurveRigOptions& options) {
+    if (curve.nodes.size() < 2 || curve.edges.empty())
+        throw Error(MessageId::AutoRigSkeletonFailed, "the flow gave no curve.");
+    Graph graph = spanningTree(curve, mesh);
+    pruneTwigs(graph, options);
+    collapseJunctions(graph, options);
+
+    Skeleton skeleton;
+    std::map<int, JointId> jointOfNode;
+    auto jointAt = [&](int node) {
+        const auto found = jointOfNode.find(node);
+        if (found != jointOfNode.end())
+            return found->second;
+        return jointOfNode[node] = skeleton.addJoint(graph.points[node]);
+    };
+    for (const std::vector<int>& branch : branches(graph)) {
+        const std::vector<int> kept = keptSamples(graph, branch, options);
+        for (std::size_t i = 1; i < kept.size(); ++i) {
+            const JointId head = jointAt(branch[kept[i - 1]]);
+            const JointId tail = jointAt(branch[kept[i]]);
+            if (head != tail)
+                skeleton.addBone(head, tail);
+        }
+    }
+    if (skeleton.boneCount() == 0)
+        throw Error(MessageId::AutoRigSkeletonFailed, "the curve is too short for a bone.");
+    skeleton.setRoot(chooseCentralRoot(skeleton));
+    skeleton.reorient();
+    const std::vector<std::string> problems = skeleton.validate();
+    if (!problems.empty())
+        throw Error(MessageId::AutoRigSkeletonFailed, problems.front());
+    return skeleton;
+}
+
+}  // namespace rigmesh

@@ -1,0 +1,103 @@
+// The auto-rig tests' common ground: shared sketches written as plain OBJ
+// without a rig, imported through Assimp, rigged; cached per test binary.
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "MeshInside.h"
+#include "SharedSketchPart.h"
+#include "autorig/AutoRig.h"
+#include "io/SceneImport.h"
+#include "mesh/MeshWriter.h"
+#include "part/BoneWeights.h"
+#include "rig/BoneVisibility.h"
+
+namespace rigmesh::autorigtest {
+
+inline std::vector<std::string> sketchesToRig() {
+    return testsupport::sharedSketchNames(false);
+}
+
+inline int leafCount(const Skeleton& skeleton) {
+    int leaves = 0;
+    for (const Joint& joint : skeleton.joints())
+        leaves += skeleton.degree(joint.id) == 1 ? 1 : 0;
+    return leaves;
+}
+
+struct ImportedSketch {
+    Part sketched;  // the sketch's own rigged part
+    Part imported;  // its mesh read back from the OBJ, unrigged
+    AutoRigResult rigged;
+    double seconds = 0;
+};
+
+inline std::string scratchPath(const std::string& name) {
+    const auto folder = std::filesystem::temp_directory_path() / "rigmesh-autorig-tests";
+    std::filesystem::create_directories(folder);
+    return (folder / name).string();
+}
+
+inline const ImportedSketch& importedSketch(const std::string& name) {
+    static std::map<std::string, ImportedSketch> cache;
+    auto found = cache.find(name);
+    if (found == cache.end()) {
+        ImportedSketch sketch;
+        sketch.sketched = testsupport::sharedSketchPart(name);
+        const std::string path = scratchPath(name + ".obj");
+        writeMesh(sketch.sketched.mesh, path);
+        ImportedScene scene = importScene(path);
+        sketch.imported = scene.parts.at(0).part;
+        const auto start = std::chrono::steady_clock::now();
+        sketch.rigged = autoRigPart(sketch.imported);
+        sketch.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        found = cache.emplace(name, std::move(sketch)).first;
+    }
+    return found->second;
+}
+
+// The share of vertices whose largest weight is one of their closest
+// visible bones (paper 2.4's p_j), tested with BoneVisibility.
+inline double dominantIsClosestVisibleShare(const Part& part) {
+    std::vector<int> all(part.mesh.vertices.size());
+    for (std::size_t v = 0; v < all.size(); ++v)
+        all[v] = static_cast<int>(v);
+    const BoneVisibility visibility(part.mesh);
+    const ClosestBones closest =
+        closestVisibleBones(part.mesh, part.boneSegments(), visibility, all, 1e-2);
+    const SkinWeights weights = weightsByIndex(part.skeleton, part.weights);
+    int agree = 0;
+    for (std::size_t v = 0; v < all.size(); ++v) {
+        int leading = -1;
+        double best = -1.0;
+        for (const auto& [bone, w] : weights.perVertex[v])
+            if (w > best) {
+                best = w;
+                leading = bone;
+            }
+        for (const auto& [bone, distance] : closest[v])
+            if (bone == leading) {
+                ++agree;
+                break;
+            }
+    }
+    return all.empty() ? 0.0 : static_cast<double>(agree) / static_cast<double>(all.size());
+}
+
+// Points along every bone (joints included, 9 per bone) outside the surface.
+inline int bonePointsOutside(const Part& part) {
+    int outside = 0;
+    for (const BoneSegment& bone : part.boneSegments())
+        for (int i = 0; i <= 8; ++i) {
+            const Vec3 p = bone.head + (bone.tail - bone.head) * (i / 8.0);
+            outside += parttest::windingNumber(part.mesh, p) < 0.5 ? 1 : 0;
+        }
+    return outside;
+}
+
+}  // namespace rigmesh::autorigtest
