@@ -155,6 +155,14 @@ void fillSmallHoles(SurfaceMesh& mesh, const MeshRepairOptions& options,
     if (borders.empty())
         return;
     const double diagonal = boundingDiagonal(mesh);
+    double edgeSum = 0.0;
+    for (auto e : mesh.edges())
+        edgeSum += std::sqrt(
+            CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1))));
+    const double meanEdge =
+        edgeSum / static_cast<double>(std::max<std::size_t>(1, mesh.number_of_edges()));
+    const double limit =
+        std::max(options.smallHoleEdges * meanEdge, options.smallHoleFraction * diagonal);
     for (auto h : borders) {
         double length = 0.0;
         int edges = 0;
@@ -163,7 +171,7 @@ void fillSmallHoles(SurfaceMesh& mesh, const MeshRepairOptions& options,
                 CGAL::squared_distance(mesh.point(mesh.source(b)), mesh.point(mesh.target(b))));
             ++edges;
         }
-        if (length > options.smallHoleFraction * diagonal) {
+        if (length > limit) {
             const int percent = static_cast<int>(std::lround(100.0 * length / diagonal));
             throw Error(MessageId::AutoRigOpenBorder, edges, percent);
         }

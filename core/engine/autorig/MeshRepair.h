@@ -14,9 +14,11 @@ namespace rigmesh {
 
 struct MeshRepairOptions {
     // A hole is filled (CGAL PMP triangulate, refine and fair) when its
-    // border is at most this fraction of the mesh's bounding-box diagonal;
-    // a larger opening is a missing piece of shape, refused.
-    double smallHoleFraction = 0.25;
+    // border is at most this many mean edge lengths (a few faces missing)
+    // or this fraction of the mesh's bounding-box diagonal; a larger
+    // opening is a missing piece of shape, refused.
+    double smallHoleEdges = 12.0;
+    double smallHoleFraction = 0.05;
 };
 
 struct RepairedMesh {

@@ -2,29 +2,64 @@
 // as a user's file would be, and rigged (issue 17 item 4).
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <filesystem>
-#include <iostream>
-
 #include "AutoRigTestSupport.h"
 
 namespace rigmesh {
 namespace {
 
-using autorigtest::ImportedSketch;
 using autorigtest::importedSketch;
 
 class AutoRigSketch : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(AutoRigSketch, Diagnostics) {
-    const ImportedSketch& sketch = importedSketch(GetParam());
-    const Part& rigged = sketch.rigged.part;
-    std::cout << GetParam() << ": sketch leaves "
-              << autorigtest::leafCount(sketch.sketched.skeleton) << " rig leaves "
-              << autorigtest::leafCount(rigged.skeleton) << " bones " << rigged.skeleton.boneCount()
-              << " vertices " << rigged.mesh.vertexCount() << " seconds " << sketch.seconds
-              << " closest-visible share " << autorigtest::dominantIsClosestVisibleShare(rigged)
-              << " outside " << autorigtest::bonePointsOutside(rigged) << "\n";
+TEST_P(AutoRigSketch, LeafCountEqualsTheSketchedLimbCount) {
+    const auto& sketch = importedSketch(GetParam());
+    EXPECT_EQ(autorigtest::leafCount(sketch.rigged.part.skeleton),
+              autorigtest::leafCount(sketch.sketched.skeleton));
+}
+
+TEST_P(AutoRigSketch, SkeletonIsATreeInsideTheSurface) {
+    const Part& part = importedSketch(GetParam()).rigged.part;
+    EXPECT_TRUE(part.skeleton.validate().empty());
+    EXPECT_TRUE(part.skeleton.isOrientedFromRoot());
+    EXPECT_EQ(autorigtest::bonePointsOutside(part), 0);
+}
+
+TEST_P(AutoRigSketch, RiggedPartIsValidClosedAndWeighted) {
+    const Part& part = importedSketch(GetParam()).rigged.part;
+    EXPECT_TRUE(part.validateSolid().empty());
+    ASSERT_EQ(part.weights.perVertex.size(), part.mesh.vertices.size());
+    for (const auto& list : part.weights.perVertex) {
+        ASSERT_FALSE(list.empty());
+        double sum = 0.0;
+        for (const auto& [bone, weight] : list) {
+            EXPECT_GT(weight, 0.0);
+            sum += weight;
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-9);
+    }
+}
+
+TEST_P(AutoRigSketch, DominantBoneIsTheClosestVisibleBoneForAtLeast95Percent) {
+    EXPECT_GE(autorigtest::dominantIsClosestVisibleShare(importedSketch(GetParam()).rigged.part),
+              0.95);
+}
+
+TEST_P(AutoRigSketch, AGoodMeshIsRiggedVertexForVertex) {
+    const auto& sketch = importedSketch(GetParam());
+    EXPECT_TRUE(sketch.rigged.repairs.empty());
+    ASSERT_EQ(sketch.rigged.part.mesh.vertexCount(), sketch.imported.mesh.vertexCount());
+    EXPECT_EQ(sketch.rigged.part.mesh.faces, sketch.imported.mesh.faces);
+    for (int v = 0; v < sketch.imported.mesh.vertexCount(); ++v) {
+        EXPECT_EQ(sketch.rigged.sourceVertex[v], v);
+        EXPECT_EQ(sketch.rigged.part.mesh.vertices[v], sketch.imported.mesh.vertices[v]);
+    }
+}
+
+TEST_P(AutoRigSketch, BranchingSketchesGetABranchingRoot) {
+    const Skeleton& skeleton = importedSketch(GetParam()).rigged.part.skeleton;
+    if (autorigtest::leafCount(skeleton) <= 2)
+        GTEST_SKIP() << "a single chain has no branching joint";
+    EXPECT_GE(skeleton.degree(skeleton.root()), 3);
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedSketches, AutoRigSketch,

@@ -1,0 +1,231 @@
+// Bad meshes (issue 17 item 2): what is safe is repaired and said, the rest
+// refused with a message naming the problem, the part given unchanged.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "TestShapes.h"
+#include "autorig/AutoRig.h"
+#include "mesh/MeshChecks.h"
+#include "mesh/MeshPrimitives.h"
+
+namespace rigmesh {
+namespace {
+
+// A capsule-like rod along z: 2 units long, radius 0.3.
+TriMesh rod() {
+    return makeCylinderTube(24, 24, 0.3, 2.0);
+}
+
+Part unrigged(TriMesh mesh) {
+    Part part;
+    part.name = "Rod";
+    part.mesh = std::move(mesh);
+    return part;
+}
+
+bool repaired(const AutoRigResult& result, MessageId id) {
+    return std::any_of(result.repairs.begin(), result.repairs.end(),
+                       [&](const Message& m) { return m.id == id; });
+}
+
+MessageId refusal(const TriMesh& mesh) {
+    try {
+        autoRigPart(unrigged(mesh));
+    } catch (const Error& error) {
+        return error.message().id;
+    }
+    return MessageId::None;
+}
+
+void expectRiggedAndClosed(const AutoRigResult& result) {
+    EXPECT_TRUE(result.part.validateSolid().empty());
+    EXPECT_TRUE(analyseMesh(result.part.mesh).isWatertightGenus0());
+    EXPECT_GE(result.part.skeleton.boneCount(), 1);
+    EXPECT_EQ(result.sourceVertex.size(), result.part.mesh.vertices.size());
+}
+
+TEST(AutoRigRepair, AClosedRodIsRiggedWithoutRepairsAlongItsLength) {
+    const AutoRigResult result = autoRigPart(unrigged(rod()));
+    expectRiggedAndClosed(result);
+    EXPECT_TRUE(result.repairs.empty());
+    const Skeleton& skeleton = result.part.skeleton;
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const Joint& joint : skeleton.joints()) {
+        EXPECT_LT(joint.position.head<2>().norm(), 0.05);  // on the rod's axis
+        low = std::min(low, joint.position.z());
+        high = std::max(high, joint.position.z());
+    }
+    EXPECT_GT(high - low, 1.2);  // reaches well along the 2-unit rod
+}
+
+TEST(AutoRigRepair, SplitSeamsAreJoinedAndSaid) {
+    // Every face with its own three corners, as a careless exporter writes.
+    const TriMesh closed = rod();
+    TriMesh soup;
+    for (const auto& face : closed.faces) {
+        const int first = soup.vertexCount();
+        for (int corner : face)
+            soup.vertices.push_back(closed.vertices[corner]);
+        soup.faces.push_back({first, first + 1, first + 2});
+    }
+    const AutoRigResult result = autoRigPart(unrigged(soup));
+    expectRiggedAndClosed(result);
+    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairWelded));
+    EXPECT_EQ(result.part.mesh.vertexCount(), closed.vertexCount());
+    for (int v = 0; v < result.part.mesh.vertexCount(); ++v)
+        EXPECT_EQ(result.part.mesh.vertices[v], soup.vertices[result.sourceVertex[v]]);
+}
+
+TEST(AutoRigRepair, InwardFacesAreTurnedOutward) {
+    TriMesh mesh = rod();
+    for (auto& face : mesh.faces)
+        std::swap(face[1], face[2]);
+    const AutoRigResult result = autoRigPart(unrigged(mesh));
+    expectRiggedAndClosed(result);
+    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairFlipped));
+    EXPECT_GT(analyseMesh(result.part.mesh).volume, 0.0);
+}
+
+TEST(AutoRigRepair, FacesWithoutAreaAndDuplicatesAndUnusedVerticesGo) {
+    TriMesh mesh = rod();
+    mesh.faces.push_back({0, 0, 1});
+    mesh.faces.push_back(mesh.faces.front());
+    mesh.vertices.push_back(Vec3(5, 5, 5));
+    const AutoRigResult result = autoRigPart(unrigged(mesh));
+    expectRiggedAndClosed(result);
+    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairDegenerate));
+    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairDuplicateFaces));
+    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairUnusedVertices));
+    EXPECT_EQ(result.part.mesh.vertexCount(), rod().vertexCount());
+}
+
+TEST(AutoRigRepair, ASmallHoleIsFilledWithNewVerticesMarkedAsSuch) {
+    TriMesh mesh = rod();
+    // Drop the faces around one vertex in the middle of the side.
+    const int centre = 12 * 24 + 5;
+    std::erase_if(mesh.faces, [&](const std::array<int, 3>& f) {
+        return f[0] == centre || f[1] == centre || f[2] == centre;
+    });
+    ASSERT_FALSE(analyseMesh(mesh).isClosed());
+    const AutoRigResult result = autoRigPart(unrigged(mesh));
+    expectRiggedAndClosed(result);
+    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairHoles));
+    // The hole's centre vertex is unused and dropped; any vertex the fill
+    // adds says it has no source.
+    for (int v = 0; v < result.part.mesh.vertexCount(); ++v) {
+        if (result.sourceVertex[v] >= 0) {
+            EXPECT_EQ(result.part.mesh.vertices[v], mesh.vertices[result.sourceVertex[v]]);
+        }
+    }
+}
+
+TEST(AutoRigRepair, ALargeOpeningIsRefusedByName) {
+    TriMesh mesh = rod();
+    // Remove the whole cap at one end: a missing piece of the shape.
+    const int capCentre = mesh.vertexCount() - 1;
+    std::erase_if(mesh.faces, [&](const std::array<int, 3>& f) {
+        return f[0] == capCentre || f[1] == capCentre || f[2] == capCentre;
+    });
+    ASSERT_FALSE(analyseMesh(mesh).isClosed());
+    try {
+        autoRigPart(unrigged(mesh));
+        FAIL() << "an open rod was rigged";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.message().id, MessageId::AutoRigOpenBorder);
+        EXPECT_NE(std::string(error.what()).find("24 edges"), std::string::npos) << error.what();
+    }
+}
+
+TEST(AutoRigRepair, SeveralPiecesAreRefused) {
+    TriMesh mesh = rod();
+    TriMesh other = rod();
+    for (Vec3& v : other.vertices)
+        v.x() += 2.0;
+    testshapes::append(mesh, other);
+    try {
+        autoRigPart(unrigged(mesh));
+        FAIL() << "two rods were rigged as one";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.message().id, MessageId::AutoRigSeveralPieces);
+        EXPECT_NE(std::string(error.what()).find("2 separate pieces"), std::string::npos);
+    }
+}
+
+TEST(AutoRigRepair, PiecesTouchingAtAVertexAreSplitThenRefusedAsPieces) {
+    // Two tetrahedra sharing one corner: not a manifold there.
+    TriMesh mesh = testshapes::tetrahedron();
+    TriMesh other = testshapes::tetrahedron(Vec3(-1, -1, -1) + Vec3::Zero());
+    for (Vec3& v : other.vertices)
+        v = -v;  // mirrored through the shared corner (the origin)
+    for (auto& face : other.faces)
+        std::swap(face[1], face[2]);
+    testshapes::append(mesh, other);
+    EXPECT_EQ(refusal(mesh), MessageId::AutoRigSeveralPieces);
+}
+
+TEST(AutoRigRepair, ASelfIntersectingMeshIsRefused) {
+    TriMesh mesh = rod();
+    // Push one side vertex through the rod and out of the far side.
+    const int v = 12 * 24 + 5;
+    mesh.vertices[v] = -mesh.vertices[v] * 2.0 + Vec3(0, 0, 2 * mesh.vertices[v].z());
+    EXPECT_EQ(refusal(mesh), MessageId::AutoRigSelfIntersecting);
+}
+
+TEST(AutoRigRepair, TooFewFacesAreRefused) {
+    TriMesh mesh;
+    mesh.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    mesh.faces = {{0, 1, 2}};
+    EXPECT_EQ(refusal(mesh), MessageId::AutoRigTooFewFaces);
+}
+
+TEST(AutoRigRepair, CorruptPositionsAreRefused) {
+    TriMesh mesh = rod();
+    mesh.vertices[3].x() = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(autoRigPart(unrigged(mesh)), Error);
+}
+
+TEST(AutoRigRepair, AMeshWithAHandleGetsATree) {
+    const AutoRigResult result = autoRigPart(unrigged(testshapes::torus(48, 16, 1.0, 0.3)));
+    EXPECT_TRUE(result.part.validate().empty());
+    EXPECT_TRUE(result.part.skeleton.validate().empty());
+    EXPECT_GE(result.part.skeleton.boneCount(), 3);
+}
+
+TEST(AutoRig, ARiggedPartIsRefusedAndLeftAsItIs) {
+    Part part = autoRigPart(unrigged(rod())).part;
+    const Part before = part;
+    try {
+        autoRigPart(part);
+        FAIL() << "a rigged part was rigged again";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.message().id, MessageId::AutoRigPartIsRigged);
+    }
+    EXPECT_EQ(part.skeleton.boneCount(), before.skeleton.boneCount());
+    EXPECT_EQ(part.weights, before.weights);
+}
+
+TEST(AutoRig, ProgressRisesToOneAndCancelStops) {
+    std::vector<double> reported;
+    autoRigPart(unrigged(rod()), {}, [&](double fraction) {
+        reported.push_back(fraction);
+        return true;
+    });
+    ASSERT_GE(reported.size(), 4u);
+    EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end()));
+    EXPECT_EQ(reported.front(), 0.0);
+    EXPECT_EQ(reported.back(), 1.0);
+
+    int calls = 0;
+    try {
+        autoRigPart(unrigged(rod()), {}, [&](double fraction) { return ++calls < 3 || fraction < 0; });
+        FAIL() << "a cancelled rig finished";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.message().id, MessageId::AutoRigCancelled);
+    }
+    EXPECT_EQ(calls, 3);
+}
+
+}  // namespace
+}  // namespace rigmesh
