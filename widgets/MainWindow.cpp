@@ -284,6 +284,11 @@ void MainWindow::createActions() {
     paintToolAction_->setIcon(QIcon(QStringLiteral(":/icons/paint.svg")));
     tools->addSeparator();
     add(tools, tr("&Reset Pose"), QKeySequence(Qt::ALT | Qt::Key_R), &MainWindow::resetPose);
+    QAction* rig = add(tools, tr("&Auto-Rig Part"), QKeySequence(), &MainWindow::rigSelectedPart);
+    rig->setObjectName(QStringLiteral("autoRigPart"));
+    rig->setToolTip(
+        tr("Give the selected part without a skeleton (an imported mesh) a skeleton "
+           "from its shape and skin weights"));
     createWeightMenu(tools);
     for (const auto& [action, tool] : toolPairs()) {
         action->setCheckable(true);

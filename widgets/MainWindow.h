@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 #include "io/SceneExport.h"
+#include "model/PartNode.h"
 
 #include "preferences/StudioPreferences.h"
 
@@ -105,6 +106,8 @@ class MainWindow : public QMainWindow {
     void activateCutTool();
     void activatePaintTool();
     void resetPose();
+    // Tools > Auto-Rig Part on the selected part (issue 17).
+    void rigSelectedPart();
     void deleteSelection();
     // Edit > Preferences.
     void openPreferences();
@@ -123,6 +126,11 @@ class MainWindow : public QMainWindow {
     // Bone heat over the selected part again, as a background job; asks
     // first if its weights were painted.
     void recomputeWeights();
+    // Rigs the parts one after another, each a background job and one undo step.
+    void rigParts(model::Document* document, std::vector<model::PartId> ids);
+    // After an import: offers to rig the parts without a skeleton now.
+    bool offerToRig(model::Document& document, const std::vector<model::PartId>& ids,
+                    const QString& message);
     // The View > Weights choice and the Weight View toolbar follow the
     // current document's viewport (each document keeps its own view).
     void showWeightView(WeightView view);

@@ -89,22 +89,24 @@ void MainWindow::importPath(const QString& path) {
 void MainWindow::finishImport(model::Document& document, const QString& file,
                               std::unique_ptr<model::ImportPartsCommand> command) {
     const auto ids = command->partIds();
-    const int unrigged = command->unrigged();
     document.undoStack()->push(command.release());
     if (!ids.empty())
         document.setSelection({ids.front(), kNoJoint});
     if (currentView() && currentView()->document() == &document)
         currentView()->viewport()->frameAll();
+    std::vector<model::PartId> unrigged;
+    for (const model::PartId id : ids)
+        if (document.part(id).part->skeleton.jointCount() == 0)
+            unrigged.push_back(id);
     QString message =
         tr("Imported %n part(s) from %1", nullptr, static_cast<int>(ids.size())).arg(file);
-    if (unrigged > 0) {
-        // Say so rather than fail silently: the mesh is here, its rig is not.
-        message += tr(": %1 of them without a skeleton. Rigging imported meshes is not available "
-                      "yet, so they cannot be posed; you can move, save and export them as OBJ.")
-                       .arg(unrigged);
-        QMessageBox::information(this, tr("Imported without a rig"), message);
-    }
     showStatus(message, 8000);
+    if (!unrigged.empty()) {
+        // Say so rather than fail silently: the mesh is here, its rig is not yet.
+        message += tr(": %n of them without a skeleton, so they cannot be posed yet.", nullptr,
+                      static_cast<int>(unrigged.size()));
+        offerToRig(document, unrigged, message);
+    }
 }
 
 void MainWindow::saveHistoryAsRecipe() {

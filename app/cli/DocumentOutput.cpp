@@ -1,13 +1,17 @@
 #include "DocumentOutput.h"
 
 #include <QCoreApplication>
+#include <QString>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 
 #include "base/Error.h"
 #include "io/ExportFormat.h"
+#include "model/Document.h"
+#include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
 
 namespace rigmesh::cli {
@@ -56,6 +60,16 @@ void checkDocumentOutputPath(const std::string& path, bool allowNative) {
         throw Error("cannot write " + path + ": unknown format; use " +
                     (allowNative ? ".rigmesh, " : "") + ".glb, .gltf, .fbx, .dae or .obj");
     }
+}
+
+void writeDocumentOutput(const model::Document& document, const std::string& path,
+                         const ExportOptions& options) {
+    if (isNativeDocument(path))
+        model::DocumentFile::write(document, QString::fromStdString(path));
+    else
+        for (const QString& warning : model::exportDocument(document, path, options).warnings)
+            std::fprintf(stderr, "rigmesh: warning: %s\n", warning.toStdString().c_str());
+    std::printf("wrote %s\n", path.c_str());
 }
 
 std::unique_ptr<QCoreApplication> ensureCoreApplication() {

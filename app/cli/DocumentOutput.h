@@ -12,6 +12,10 @@
 
 class QCoreApplication;
 
+namespace rigmesh::model {
+class Document;
+}
+
 namespace rigmesh::cli {
 
 // --max-influences N (a whole number >= 0; 0 = all the format allows);
@@ -26,6 +30,11 @@ bool isNativeDocument(const std::string& path);
 // Throws rigmesh::Error unless `path` ends in a format exportDocument writes
 // (.glb, .gltf, .fbx, .dae, .obj) or, with allowNative, .rigmesh.
 void checkDocumentOutputPath(const std::string& path, bool allowNative);
+
+// Writes `document` to `path`: natively for .rigmesh, else exported with
+// `options` (export warnings go to stderr); then prints "wrote PATH".
+void writeDocumentOutput(const model::Document& document, const std::string& path,
+                         const ExportOptions& options = {});
 
 // A QCoreApplication for this command, or null when there is one already;
 // keep it until the command is done.

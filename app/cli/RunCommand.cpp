@@ -51,14 +51,8 @@ int runRecipe(const std::vector<std::string>& arguments) {
         writeFileAtomically(*statsPath, stats.dump(2) + "\n");
     std::printf("%d step%s, %d part%s\n", steps, steps == 1 ? "" : "s", document.partCount(),
                 document.partCount() == 1 ? "" : "s");
-    if (out) {
-        if (isNativeDocument(*out))
-            model::DocumentFile::write(document, QString::fromStdString(*out));
-        else
-            for (const QString& warning : model::exportDocument(document, *out).warnings)
-                std::fprintf(stderr, "rigmesh: warning: %s\n", warning.toStdString().c_str());
-        std::printf("wrote %s\n", out->c_str());
-    }
+    if (out)
+        writeDocumentOutput(document, *out);
     return 0;
 }
 

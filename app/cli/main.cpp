@@ -9,6 +9,7 @@
 #include "BuildCommand.h"
 #include "ExportCommand.h"
 #include "ImportCommand.h"
+#include "RigCommand.h"
 #include "RunCommand.h"
 #include "base/Error.h"
 #include "model/ModelInfo.h"
@@ -55,6 +56,14 @@ commands:
       and writes its parts as a document. The studio and `run` read imports
       through this command in a separate process with time and memory
       limits, so a broken file cannot take them down.
+  rig MESH -o OUT.rigmesh|.glb|.gltf|.fbx|.dae [--max-influences N] [--leaf-bones]
+      Reads a closed mesh (.obj, .ply, .off, .stl, .glb, .fbx, ... as import
+      does) and rigs every part without a skeleton: a skeleton from the
+      shape (mean curvature flow, bones by the same Cylindrical
+      Douglas-Peucker rule as sketches, a central root) and bone heat skin
+      weights. Seams, inward faces, degenerate faces and small holes are
+      repaired and listed; an open, many-piece or self-intersecting mesh is
+      refused with the reason. Writes the document or an export as for run.
   export DOC.rigmesh -o OUT.glb|.gltf|.fbx|.dae|.obj [--max-influences N]
                [--current-pose | --pose-as-key] [--no-animation] [--hidden] [--leaf-bones]
                [--subdivide N] [--decimate FACES] [--linear-blend]
@@ -125,6 +134,8 @@ int main(int argc, char** argv) {
             return rigmesh::cli::runRecipe(arguments);
         if (command == "import")
             return rigmesh::cli::runImport(arguments);
+        if (command == "rig")
+            return rigmesh::cli::runRig(arguments);
         if (command == "export")
             return rigmesh::cli::runExport(arguments);
         if (command == "example")

@@ -2,6 +2,7 @@
 
 #include <QPainter>
 #include <QPalette>
+#include <algorithm>
 
 namespace rigmesh::widgets {
 
@@ -32,6 +33,14 @@ void BusyBar::step() {
 void BusyBar::reset() {
     position_ = 0;
     direction_ = 1;
+    fraction_ = -1.0;
+    update();
+}
+
+void BusyBar::setFraction(double fraction) {
+    if (fraction == fraction_)
+        return;
+    fraction_ = fraction;
     update();
 }
 
@@ -42,8 +51,11 @@ void BusyBar::paintEvent(QPaintEvent*) {
     painter.setPen(palette().color(QPalette::Mid));
     painter.setBrush(palette().color(QPalette::Base));
     painter.drawRoundedRect(track, 3, 3);
-    const double blockWidth = track.width() * kBlockFraction;
-    const double left = track.left() + (track.width() - blockWidth) * position_ / kSteps;
+    const bool filling = fraction_ >= 0.0;
+    const double blockWidth =
+        filling ? track.width() * std::min(fraction_, 1.0) : track.width() * kBlockFraction;
+    const double left =
+        filling ? track.left() : track.left() + (track.width() - blockWidth) * position_ / kSteps;
     painter.setPen(Qt::NoPen);
     painter.setBrush(palette().color(QPalette::Highlight));
     painter.drawRoundedRect(QRectF(left, track.top() + 1.5, blockWidth, track.height() - 3), 2, 2);

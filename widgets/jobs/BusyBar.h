@@ -3,7 +3,8 @@
 // animates at the style's 60 frames a second, and every frame recomposes the
 // whole window around the OpenGL viewport; with software OpenGL that alone
 // stalled the event loop for tens of milliseconds. A few steps a second show
-// the same "still working" at a fraction of the cost.
+// the same "still working" at a fraction of the cost. Work that reports
+// progress fills the track instead.
 #pragma once
 
 #include <QWidget>
@@ -17,8 +18,12 @@ class BusyBar : public QWidget {
 
     // Moves the block one step along (and back at the ends).
     void step();
-    // Puts the block back at the start.
+    // Puts the block back at the start (and forgets any fraction).
     void reset();
+    // Work that knows how far it got: the track fills to `fraction` (0..1)
+    // instead of a block sliding; negative goes back to sliding.
+    void setFraction(double fraction);
+    double fraction() const { return fraction_; }
     QSize sizeHint() const override;
 
   protected:
@@ -27,6 +32,7 @@ class BusyBar : public QWidget {
   private:
     int position_ = 0;  // the block's step along the track
     int direction_ = 1;
+    double fraction_ = -1.0;
 };
 
 }  // namespace rigmesh::widgets

@@ -30,7 +30,7 @@ struct JobRunner::Job {
     Discard discard;
     Apply apply;
     QString error;
-    bool cancelledByUser = false;
+    std::shared_ptr<JobProgress> progress = std::make_shared<JobProgress>();
 };
 
 JobRunner::JobRunner(QObject* parent) : QObject(parent) {}
@@ -59,6 +59,23 @@ bool JobRunner::runOn(JobRunner* runner, const QString& title, Work work, Failed
     if (apply)
         apply();
     return true;
+}
+
+double JobRunner::fraction() const {
+    return running_ ? running_->progress->fraction() : -1.0;
+}
+
+bool JobRunner::runWithProgress(const QString& title, ProgressWork work, Failed failed,
+                                Cancelled cancelled) {
+    // The progress lives as long as the work that writes it.
+    auto progress = std::make_shared<JobProgress>();
+    progress->setFraction(0.0);
+    const bool started = run(
+        title, [work = std::move(work), progress] { return work(*progress); }, std::move(failed),
+        std::move(cancelled));
+    if (started)
+        running_->progress = progress;
+    return started;
 }
 
 bool JobRunner::run(const QString& title, Work work, Failed failed, Cancelled cancelled,
@@ -131,6 +148,7 @@ void JobRunner::cancel() {
     if (!running_)
         return;
     const std::shared_ptr<Job> job = running_;
+    job->progress->cancel();
     end();
     if (job->cancelled)
         job->cancelled();

@@ -11,9 +11,10 @@
 // so nothing else changes the document under it. A rigmesh::Error thrown by
 // the work becomes the failure message; the document is untouched.
 //
-// Cancel cannot stop the engine mid-solve (it has no cancellation points);
-// the studio is back at once, the worker finishes on its own and its result
-// is thrown away: a cancelled job leaves nothing behind.
+// Cancel gives the studio back at once. Work started with runWithProgress
+// sees it through its JobProgress and may stop early; other work (the
+// engine's solves have no cancellation points) finishes on its own. Either
+// way its result is thrown away: a cancelled job leaves nothing behind.
 #pragma once
 
 #include <QElapsedTimer>
@@ -21,6 +22,8 @@
 #include <QString>
 #include <functional>
 #include <memory>
+
+#include "jobs/JobProgress.h"
 
 namespace rigmesh::widgets {
 
@@ -31,6 +34,8 @@ class JobRunner : public QObject {
     using Apply = std::function<void()>;
     // The work: runs on a worker thread, returns what to apply.
     using Work = std::function<Apply()>;
+    // Work that reports its progress and looks for a cancel on the way.
+    using ProgressWork = std::function<Apply(JobProgress&)>;
     // Called on the GUI thread with the reason when the work threw.
     using Failed = std::function<void(const QString& reason)>;
     // Called on the GUI thread when the user cancelled.
@@ -45,6 +50,9 @@ class JobRunner : public QObject {
     // Starts a job. Returns false (and starts nothing) while another runs.
     bool run(const QString& title, Work work, Failed failed, Cancelled cancelled = {},
              Discard discard = {});
+    // The same for work that reports progress (shown as a filling bar).
+    bool runWithProgress(const QString& title, ProgressWork work, Failed failed,
+                         Cancelled cancelled = {});
     // run() on `runner`, or all at once on this thread when it is null (a
     // view without a window: tests, tools). False if the runner is busy.
     static bool runOn(JobRunner* runner, const QString& title, Work work, Failed failed,
@@ -52,6 +60,8 @@ class JobRunner : public QObject {
     bool busy() const { return running_ != nullptr; }
     QString title() const { return title_; }
     qint64 elapsedMilliseconds() const { return busy() ? clock_.elapsed() : 0; }
+    // The running job's fraction done (0..1), or negative when unknown.
+    double fraction() const;
     // True while any runner of the application has a job (tests wait on it).
     static bool anyBusy();
 

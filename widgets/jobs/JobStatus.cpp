@@ -73,13 +73,20 @@ void JobStatus::busyChanged(bool busy) {
 void JobStatus::showProgress() {
     if (!runner_->busy())
         return;
-    label_->setText(tr("%1… %2 s")
-                        .arg(runner_->title())
-                        .arg(runner_->elapsedMilliseconds() / 1000.0, 0, 'f', 1));
+    const double fraction = runner_->fraction();
+    const QString seconds = QString::number(runner_->elapsedMilliseconds() / 1000.0, 'f', 1);
+    label_->setText(
+        fraction >= 0.0
+            ? tr("%1… %2% (%3 s)").arg(runner_->title()).arg(qRound(100.0 * fraction)).arg(seconds)
+            : tr("%1… %2 s").arg(runner_->title(), seconds));
     if (bar_->isVisible()) {
-        bar_->step();
+        if (fraction >= 0.0)
+            bar_->setFraction(fraction);
+        else
+            bar_->step();
     } else {
         bar_->reset();
+        bar_->setFraction(fraction);
         label_->show();
         bar_->show();
         cancel_->show();

@@ -133,8 +133,8 @@ void PropertiesPanel::refresh() {
         (!node->stroke.empty() ? tr("stroke of %1 points").arg(node->stroke.size())
                                : tr("made by merging or importing: no stroke to rebuild from")) +
         (part.skeleton.jointCount() == 0
-             ? tr("\nNot rigged: imported as a static mesh. Rigging imported meshes is "
-                  "not available yet.")
+             ? tr("\nNot rigged: imported as a static mesh. Tools > Auto-Rig Part gives it "
+                  "a skeleton and skin weights.")
              : QString()));
     edgeLength_->setValue(node->options.targetEdgeLength);
     smoothing_->setChecked(node->options.smoothing);

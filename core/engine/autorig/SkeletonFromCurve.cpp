@@ -272,22 +272,68 @@ std::vector<std::vector<int>> branches(const Graph& graph) {
     return result;
 }
 
-// CDP's kept samples of a branch, with interior joints closer than the
-// minimum bone merged (as SkeletonFromRegions does along a cylinder).
-std::vector<int> keptSamples(const Graph& graph, const std::vector<int>& branch,
-                             const CurveRigOptions& options) {
+// The branch as CDP sees it (paper 2.1, 2.3): its samples smoothed (the
+// flow's curve zig-zags by a fraction of an edge), and the samples inside a
+// junction's ball left out, their radius swollen by the other branches'
+// vertices: the junction joint stands for the branch's first sample there,
+// as a sketched cylinder's end joint collapses into its junction.
+std::vector<int> branchSamples(const Graph& graph, const std::vector<int>& branch) {
+    const auto insideBall = [&](int junction, int node) {
+        return graph.degree(junction) >= 3 && graph.length(junction, node) < graph.radii[junction];
+    };
+    std::size_t first = 1, last = branch.size() - 1;
+    while (first < last && insideBall(branch.front(), branch[first]))
+        ++first;
+    while (last > first && insideBall(branch.back(), branch[last - 1]))
+        --last;
+    std::vector<int> samples{0};
+    for (std::size_t i = first; i < last; ++i)
+        samples.push_back(static_cast<int>(i));
+    samples.push_back(static_cast<int>(branch.size() - 1));
+    return samples;
+}
+
+std::vector<TubeSample> smoothedTube(const Graph& graph, const std::vector<int>& branch,
+                                     const std::vector<int>& samples, int iterations) {
     std::vector<TubeSample> tube;
-    double radiusSum = 0.0;
-    for (int n : branch) {
-        tube.push_back({graph.points[n], graph.radii[n]});
-        radiusSum += graph.radii[n];
+    for (int s : samples)
+        tube.push_back({graph.points[branch[s]], graph.radii[branch[s]]});
+    // A junction end takes the radius of the branch where it leaves the ball.
+    if (tube.size() > 2) {
+        if (graph.degree(branch.front()) >= 3)
+            tube.front().radius = tube[1].radius;
+        if (graph.degree(branch.back()) >= 3)
+            tube.back().radius = tube[tube.size() - 2].radius;
     }
-    const double meanRadius = radiusSum / static_cast<double>(branch.size());
+    for (int round = 0; round < iterations; ++round) {
+        std::vector<TubeSample> next = tube;
+        for (std::size_t i = 1; i + 1 < tube.size(); ++i) {
+            next[i].point = 0.5 * tube[i].point + 0.25 * (tube[i - 1].point + tube[i + 1].point);
+            next[i].radius =
+                0.5 * tube[i].radius + 0.25 * (tube[i - 1].radius + tube[i + 1].radius);
+        }
+        tube = std::move(next);
+    }
+    return tube;
+}
+
+// The joints of a branch: CDP's kept samples, interior joints closer than
+// the minimum bone merged (as SkeletonFromRegions does along a cylinder).
+// Returns their positions, the branch's two ends first and last.
+std::vector<Vec3> branchJoints(const Graph& graph, const std::vector<int>& branch,
+                               const CurveRigOptions& options) {
+    const std::vector<int> samples = branchSamples(graph, branch);
+    const std::vector<TubeSample> tube =
+        smoothedTube(graph, branch, samples, options.smoothingIterations);
+    double radiusSum = 0.0;
+    for (const TubeSample& sample : tube)
+        radiusSum += sample.radius;
+    const double meanRadius = radiusSum / static_cast<double>(tube.size());
     const std::vector<int> kept =
         cylindricalDouglasPeucker(tube, options.relativeThreshold * meanRadius);
-    std::vector<double> along(branch.size(), 0.0);
-    for (std::size_t i = 1; i < branch.size(); ++i)
-        along[i] = along[i - 1] + graph.length(branch[i - 1], branch[i]);
+    std::vector<double> along(tube.size(), 0.0);
+    for (std::size_t i = 1; i < tube.size(); ++i)
+        along[i] = along[i - 1] + (tube[i].point - tube[i - 1].point).norm();
     const double minimumBone = options.relativeMinimumBone * meanRadius;
     std::vector<int> merged{kept.front()};
     for (std::size_t i = 1; i + 1 < kept.size(); ++i)
@@ -298,7 +344,10 @@ std::vector<int> keptSamples(const Graph& graph, const std::vector<int>& branch,
             merged.pop_back();
         merged.push_back(kept.back());
     }
-    return merged;
+    std::vector<Vec3> joints;
+    for (int k : merged)
+        joints.push_back(tube[k].point);
+    return joints;
 }
 
 }  // namespace
@@ -320,12 +369,13 @@ Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
         return jointOfNode[node] = skeleton.addJoint(graph.points[node]);
     };
     for (const std::vector<int>& branch : branches(graph)) {
-        const std::vector<int> kept = keptSamples(graph, branch, options);
-        for (std::size_t i = 1; i < kept.size(); ++i) {
-            const JointId head = jointAt(branch[kept[i - 1]]);
-            const JointId tail = jointAt(branch[kept[i]]);
-            if (head != tail)
-                skeleton.addBone(head, tail);
+        const std::vector<Vec3> joints = branchJoints(graph, branch, options);
+        JointId previous = jointAt(branch.front());
+        for (std::size_t i = 1; i < joints.size(); ++i) {
+            const JointId next =
+                i + 1 == joints.size() ? jointAt(branch.back()) : skeleton.addJoint(joints[i]);
+            skeleton.addBone(previous, next);
+            previous = next;
         }
     }
     if (skeleton.boneCount() == 0)

@@ -6,9 +6,11 @@
 //    chordal axis prunes its short branches (2.1).
 // 3. Junctions closer than their thickness become one joint, so a star's
 //    body or a biped's chest gets one branching joint.
-// 4. Every branch between junctions and tips is down-sampled by Cylindrical
-//    Douglas-Peucker in space (rig/DouglasPeucker: TubeSample), threshold
-//    and minimum bone relative to the branch's mean radius as for sketches.
+// 4. Every branch between junctions and tips is smoothed and down-sampled
+//    by Cylindrical Douglas-Peucker in space (rig/DouglasPeucker:
+//    TubeSample), threshold and minimum bone relative to the branch's mean
+//    radius as for sketches; samples inside a junction's ball are left out,
+//    as a sketch's connecting region is (its junction joint stands for them).
 // 5. The root is the most central joint; bones point away from it.
 #pragma once
 
@@ -22,6 +24,9 @@ struct CurveRigOptions {
     // branch, as fractions of the branch's mean radius.
     double relativeThreshold = 0.35;
     double relativeMinimumBone = 0.5;
+    // Rounds of Laplacian smoothing of each branch's points and radii
+    // before CDP (the paper smooths the chordal axis the same way, 2.1).
+    int smoothingIterations = 5;
     // A branch from a junction to a tip is a twig when it is shorter than
     // the junction's radius plus this many times the radius at its tip.
     double twigTipFactor = 1.0;

@@ -205,7 +205,7 @@ ImportedScene importScene(const std::string& path) {
             result.needsRig = true;
             result.message += (result.message.empty() ? "" : "; ") + std::string("part '") +
                               imported.part.name + "' needs a rig before it can be posed (" + why +
-                              "); rigging imported meshes comes in a later version";
+                              "); rig it with Tools > Auto-Rig Part or `rigmesh rig`";
         }
         result.parts.push_back(std::move(imported));
         // Each animation goes to the first part whose bones it moves (a file

@@ -23,7 +23,7 @@
 // bones of the part. The bind pose comes from the bones'
 // offset (inverse bind) matrices. Each animation becomes the Clip of the first part whose
 // bones it moves (one per part). A mesh without bones imports with an empty skeleton and
-// needsRig = true: it can be posed once rigged, which comes later.
+// needsRig = true: it can be posed once rigged (autorig/AutoRig).
 #pragma once
 
 #include <optional>

@@ -2,7 +2,7 @@
 // reads) as new parts: mesh, skeleton, skin weights, and the file's clip on
 // the part it animates. A static mesh without a usable skeleton comes in as
 // an unrigged part: shown, moved, saved and exported as a mesh, posable once
-// rigged (rigging imported meshes is not available yet; unrigged() says so).
+// rigged (RigPartCommand; unrigged() says how many need it).
 // The file is read in create(), before anything is pushed.
 #pragma once
 

@@ -17,6 +17,9 @@
 //   move          "part", "placement" (the fields given replace the current ones)
 //   show, hide    "part"
 //   rebuild       "part", optional "options" (the fields given replace the current ones)
+//   rig           "part": an unrigged part (an imported mesh) gets a skeleton
+//                 by mean curvature flow, bones by the sketches' CDP rule and
+//                 bone heat weights; the mesh is repaired where safe (issue 17)
 //   pose          "part" and either
 //                   "joint" + "target": [x, y, z] in the part's frame: an IK drag
 //                   as the studio's pose tool does (current pose, pinned joints

@@ -25,6 +25,7 @@
 #include "model/commands/RebuildPartCommand.h"
 #include "model/commands/RenamePartCommand.h"
 #include "model/commands/ResetPoseCommand.h"
+#include "model/commands/RigPartCommand.h"
 #include "model/commands/SetClipSettingsCommand.h"
 #include "model/commands/SetJointPinnedCommand.h"
 #include "model/commands/SetPartVisibleCommand.h"
@@ -398,6 +399,14 @@ const std::map<std::string, StepKind>& stepKinds() {
               const BuildOptions options =
                   c.has("options") ? readOptions(c.step["options"], current) : current;
               return StepCommand{RebuildPartCommand::create(c.document, id, options), id, {}};
+          }}},
+        {"rig",
+         {{"part"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              auto command = RigPartCommand::create(c.document, id);
+              std::string detail = command->summary().toStdString();
+              return StepCommand{std::move(command), id, std::move(detail)};
           }}},
         {"pose",
          {{"part", "joint", "target", "reach", "rotations", "rootTranslation", "complete"}, pose}},

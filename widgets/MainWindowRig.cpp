@@ -1,0 +1,96 @@
+// MainWindow: Tools > Auto-Rig Part (issue 17), for an unrigged part (an
+// imported mesh): a background job with a filling progress bar and Cancel
+// that stops the skeleton's flow at its next step; the result arrives as
+// one undoable command (model/commands/RigPartCommand). After an import of
+// meshes without a rig the studio offers to rig them at once.
+#include <QMessageBox>
+#include <QPointer>
+#include <QPushButton>
+
+#include "MainWindow.h"
+#include "base/Error.h"
+#include "jobs/JobRunner.h"
+#include "model/Document.h"
+#include "model/ErrorText.h"
+#include "model/commands/RigPartCommand.h"
+
+namespace rigmesh::widgets {
+
+void MainWindow::rigSelectedPart() {
+    model::Document* document = currentDocument();
+    if (!document || !document->contains(document->selection().part)) {
+        showStatus(tr("Select a part to rig first"), 4000);
+        return;
+    }
+    const model::PartNode& node = document->part(document->selection().part);
+    if (node.part && node.part->skeleton.jointCount() > 0) {
+        showStatus(tr("%1 already has a skeleton; Auto-Rig is for parts without one, such as "
+                      "imported meshes")
+                       .arg(node.name),
+                   8000);
+        return;
+    }
+    rigParts(document, {node.id});
+}
+
+void MainWindow::rigParts(model::Document* document, std::vector<model::PartId> ids) {
+    if (!document || ids.empty())
+        return;
+    const model::PartId id = ids.front();
+    ids.erase(ids.begin());
+    if (!document->contains(id))
+        return rigParts(document, ids);
+    QPointer<model::Document> guarded(document);
+    const QString name = document->part(id).name;
+    const std::shared_ptr<const Part> part = document->part(id).part;
+    jobs_->runWithProgress(
+        tr("Rigging %1").arg(name),
+        [=, this](JobProgress& progress) -> JobRunner::Apply {
+            auto rigged = std::make_shared<model::RigPartCommand::Rigged>(
+                model::RigPartCommand::rigged(part, [&progress](double fraction) {
+                    progress.setFraction(fraction);
+                    return !progress.cancelled();
+                }));
+            return [=, this] {
+                if (!guarded)
+                    return;
+                try {
+                    auto command = model::RigPartCommand::fromRigged(*guarded, id, *rigged);
+                    const QString summary = command->summary();
+                    guarded->undoStack()->push(command.release());
+                    guarded->setSelection({id, kNoJoint});
+                    showStatus(summary, 10000);
+                } catch (const Error& error) {
+                    QMessageBox::warning(this, tr("Cannot rig %1").arg(name),
+                                         model::errorText(error));
+                    return;
+                }
+                rigParts(guarded, ids);  // the next one, if several were imported
+            };
+        },
+        [this, name](const QString& reason) {
+            QMessageBox::warning(this, tr("Cannot rig %1").arg(name), reason);
+        },
+        [this, name] { showStatus(tr("Rigging %1 cancelled").arg(name), 6000); });
+}
+
+bool MainWindow::offerToRig(model::Document& document, const std::vector<model::PartId>& ids,
+                            const QString& message) {
+    QMessageBox box(QMessageBox::Question, tr("Imported without a rig"), message,
+                    QMessageBox::NoButton, this);
+    box.setObjectName(QStringLiteral("offerToRig"));
+    box.setInformativeText(
+        tr("Auto-Rig gives a closed mesh a skeleton from its shape and skin weights, so it can "
+           "be posed, cut, merged and painted like a sketched part. You can also do it later "
+           "with Tools > Auto-Rig Part."));
+    QPushButton* rigNow = box.addButton(tr("Rig Now"), QMessageBox::AcceptRole);
+    box.addButton(tr("Not Now"), QMessageBox::RejectRole);
+    box.setDefaultButton(rigNow);
+    box.exec();
+    if (box.clickedButton() != rigNow)
+        return false;
+    rigParts(&document, ids);
+    return true;
+}
+
+}  // namespace rigmesh::widgets
