@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 
 #include "TestShapes.h"
 #include "autorig/AutoRig.h"
@@ -204,6 +205,23 @@ TEST(AutoRig, ARiggedPartIsRefusedAndLeftAsItIs) {
     }
     EXPECT_EQ(part.skeleton.boneCount(), before.skeleton.boneCount());
     EXPECT_EQ(part.weights, before.weights);
+}
+
+TEST(AutoRig, TheSameMeshGivesTheSameRigWhateverTheHeapHolds) {
+    const TriMesh mesh = testshapes::torus(40, 12, 1.0, 0.35);
+    const AutoRigResult first = autoRigPart(unrigged(mesh));
+    // Scatter the heap: blocks of many sizes, every other one freed.
+    std::vector<std::unique_ptr<char[]>> blocks;
+    for (int i = 0; i < 20000; ++i)
+        blocks.emplace_back(new char[16 + (i * 7919) % 512]);
+    for (std::size_t i = 0; i < blocks.size(); i += 2)
+        blocks[i].reset();
+    const AutoRigResult second = autoRigPart(unrigged(mesh));
+    ASSERT_EQ(second.part.skeleton.jointCount(), first.part.skeleton.jointCount());
+    for (int j = 0; j < first.part.skeleton.jointCount(); ++j)
+        EXPECT_EQ(second.part.skeleton.joints()[j].position,
+                  first.part.skeleton.joints()[j].position);
+    EXPECT_EQ(second.part.weights, first.part.weights);
 }
 
 TEST(AutoRig, ProgressRisesToOneAndCancelStops) {
