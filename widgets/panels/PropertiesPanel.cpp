@@ -56,6 +56,8 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     title_->setStyleSheet(QStringLiteral("font-weight: bold"));
     figures_ = new QLabel(this);
     figures_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Long notes (an unrigged import) wrap instead of widening the dock.
+    figures_->setWordWrap(true);
     auto* form = new QFormLayout;
     edgeLength_ = new QDoubleSpinBox(this);
     edgeLength_->setDecimals(4);
