@@ -485,6 +485,70 @@
         <source>the surface is not manifold, so it cannot be decimated</source>
         <translation>die Oberfläche ist nicht mannigfaltig und lässt sich daher nicht ausdünnen</translation>
     </message>
+    <message>
+        <source>%1 already has a skeleton. Rig parts without one (imported meshes); to start a sketched part&apos;s rig again, use Recompute Weights or Rebuild.</source>
+        <translation>%1 hat bereits ein Skelett. Riggen Sie Teile ohne Skelett (importierte Netze); um das Rig eines skizzierten Teils neu aufzubauen, verwenden Sie „Gewichte neu berechnen“ oder „Neu bauen“.</translation>
+    </message>
+    <message>
+        <source>%1 has no surface to rig.</source>
+        <translation>%1 hat keine Oberfläche zum Riggen.</translation>
+    </message>
+    <message>
+        <source>The mesh has only %1 usable faces; a rig needs a closed surface that bounds a volume.</source>
+        <translation>Das Netz hat nur %1 brauchbare Flächen; ein Rig braucht eine geschlossene Oberfläche, die ein Volumen umschließt.</translation>
+    </message>
+    <message>
+        <source>The mesh is open: it has a hole of %1 edges, %2% of the model&apos;s size, too large to fill without guessing its shape. Close the mesh in your modelling tool (in Blender: select the border, Face &gt; Fill) and import it again.</source>
+        <translation>Das Netz ist offen: es hat ein Loch aus %1 Kanten, %2 % der Modellgröße, zu groß, um es zu füllen, ohne seine Form zu raten. Schließen Sie das Netz in Ihrem Modellierprogramm (in Blender: den Rand auswählen, Fläche &gt; Füllen) und importieren Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The mesh is %1 separate pieces; a rig needs one closed piece. Join them into one surface in your modelling tool, or export each piece as its own file and rig it as its own part.</source>
+        <translation>Das Netz besteht aus %1 getrennten Stücken; ein Rig braucht ein geschlossenes Stück. Verbinden Sie sie in Ihrem Modellierprogramm zu einer Oberfläche, oder exportieren Sie jedes Stück als eigene Datei und riggen Sie es als eigenes Teil.</translation>
+    </message>
+    <message>
+        <source>%1 pairs of faces of the mesh cross each other, so it does not bound one volume and its skeleton would be wrong. Remove the crossings in your modelling tool (in Blender: the 3D-Print toolbox finds them) and import it again.</source>
+        <translation>%1 Flächenpaare des Netzes kreuzen sich, es umschließt also kein einzelnes Volumen und sein Skelett wäre falsch. Entfernen Sie die Überkreuzungen in Ihrem Modellierprogramm (in Blender findet sie die 3D-Print-Toolbox) und importieren Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The mesh is not a manifold (more than two faces meet at an edge) and could not be repaired safely. Clean it up in your modelling tool (in Blender: Select &gt; All by Trait &gt; Non Manifold) and import it again.</source>
+        <translation>Das Netz ist nicht mannigfaltig (mehr als zwei Flächen treffen sich an einer Kante) und ließ sich nicht sicher reparieren. Bereinigen Sie es in Ihrem Modellierprogramm (in Blender: Auswahl &gt; Alle nach Merkmal &gt; Nicht-Mannigfaltig) und importieren Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: %1</source>
+        <translation>Im Netz ließ sich kein Skelett finden: %1</translation>
+    </message>
+    <message>
+        <source>Rigging was cancelled.</source>
+        <translation>Das Riggen wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <source>joined %1 vertices that sat at the same position (split seams)</source>
+        <translation>%1 Vertices an derselben Position verbunden (aufgetrennte Nähte)</translation>
+    </message>
+    <message>
+        <source>removed %1 degenerate faces (no area)</source>
+        <translation>%1 entartete Flächen (ohne Fläche) entfernt</translation>
+    </message>
+    <message>
+        <source>removed %1 duplicate faces</source>
+        <translation>%1 doppelte Flächen entfernt</translation>
+    </message>
+    <message>
+        <source>removed %1 vertices no face uses</source>
+        <translation>%1 von keiner Fläche benutzte Vertices entfernt</translation>
+    </message>
+    <message>
+        <source>split %1 vertices where separate sheets touched</source>
+        <translation>%1 Vertices getrennt, an denen sich getrennte Flächenstücke berührten</translation>
+    </message>
+    <message>
+        <source>turned the faces outward (they faced inward)</source>
+        <translation>die Flächen nach außen gedreht (sie zeigten nach innen)</translation>
+    </message>
+    <message>
+        <source>filled %1 small holes with %2 new vertices</source>
+        <translation>%1 kleine Löcher mit %2 neuen Vertices gefüllt</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>
@@ -611,6 +675,31 @@
     <message>
         <source>Reset pose of %1</source>
         <translation>Pose von %1 zurücksetzen</translation>
+    </message>
+</context>
+<context>
+    <name>RigPartCommand</name>
+    <message>
+        <source>Rig %1</source>
+        <translation>%1 riggen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 rigged with %n bone(s)</source>
+        <translation>
+            <numerusform>%1 mit %n Knochen geriggt</numerusform>
+            <numerusform>%1 mit %n Knochen geriggt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; repaired: %1</source>
+        <translation>; repariert: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>; %n vertex(es) saw no bone from inside and follow the closest one</source>
+        <translation>
+            <numerusform>; %n Vertex sah von innen keinen Knochen und folgt dem nächsten</numerusform>
+            <numerusform>; %n Vertices sahen von innen keinen Knochen und folgen dem nächsten</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1198,6 +1287,10 @@
         <source>%1… %2 s</source>
         <translation>%1 … %2 s</translation>
     </message>
+    <message>
+        <source>%1… %2% (%3 s)</source>
+        <translation>%1… %2 % (%3 s)</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::KeyDrag</name>
@@ -1524,10 +1617,6 @@
         <translation>3D-Szenen (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <source>: %1 of them without a skeleton. Rigging imported meshes is not available yet, so they cannot be posed; you can move, save and export them as OBJ.</source>
-        <translation>: %1 davon ohne Skelett. Das Riggen importierter Netze gibt es noch nicht, daher lassen sie sich nicht posieren; Sie können sie verschieben, speichern und als OBJ exportieren.</translation>
-    </message>
-    <message>
         <source>Imported without a rig</source>
         <translation>Ohne Rig importiert</translation>
     </message>
@@ -1684,6 +1773,53 @@
     <message>
         <source>Weights not recomputed: %1</source>
         <translation>Gewichte nicht neu berechnet: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Auto-Rig Part</source>
+        <translation>Teil &amp;automatisch riggen</translation>
+    </message>
+    <message>
+        <source>Give the selected part without a skeleton (an imported mesh) a skeleton from its shape and skin weights</source>
+        <translation>Dem ausgewählten Teil ohne Skelett (einem importierten Netz) ein Skelett aus seiner Form und Skin-Gewichte geben</translation>
+    </message>
+    <message numerus="yes">
+        <source>: %n of them without a skeleton, so they cannot be posed yet.</source>
+        <translation>
+            <numerusform>: %n davon ohne Skelett, es lässt sich also noch nicht posieren.</numerusform>
+            <numerusform>: %n davon ohne Skelett, sie lassen sich also noch nicht posieren.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Select a part to rig first</source>
+        <translation>Wählen Sie zuerst ein Teil zum Riggen aus</translation>
+    </message>
+    <message>
+        <source>%1 already has a skeleton; Auto-Rig is for parts without one, such as imported meshes</source>
+        <translation>%1 hat bereits ein Skelett; automatisches Riggen ist für Teile ohne Skelett, etwa importierte Netze</translation>
+    </message>
+    <message>
+        <source>Rigging %1</source>
+        <translation>%1 wird geriggt</translation>
+    </message>
+    <message>
+        <source>Cannot rig %1</source>
+        <translation>%1 kann nicht geriggt werden</translation>
+    </message>
+    <message>
+        <source>Rigging %1 cancelled</source>
+        <translation>Riggen von %1 abgebrochen</translation>
+    </message>
+    <message>
+        <source>Auto-Rig gives a closed mesh a skeleton from its shape and skin weights, so it can be posed, cut, merged and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
+        <translation>Automatisches Riggen gibt einem geschlossenen Netz ein Skelett aus seiner Form und Skin-Gewichte, sodass es sich wie ein skizziertes Teil posieren, schneiden, zusammenführen und bemalen lässt. Sie können das auch später mit Werkzeuge &gt; Teil automatisch riggen tun.</translation>
+    </message>
+    <message>
+        <source>Rig Now</source>
+        <translation>Jetzt riggen</translation>
+    </message>
+    <message>
+        <source>Not Now</source>
+        <translation>Nicht jetzt</translation>
     </message>
 </context>
 <context>
@@ -2081,12 +2217,6 @@
         <translation>durch Zusammenführen oder Importieren entstanden: kein Strich zum Neubauen</translation>
     </message>
     <message>
-        <source>
-Not rigged: imported as a static mesh. Rigging imported meshes is not available yet.</source>
-        <translation>
-Nicht geriggt: als statisches Netz importiert. Das Riggen importierter Netze gibt es noch nicht.</translation>
-    </message>
-    <message>
         <source>Root joint %1: whole part (XYZ Euler)</source>
         <translation>Wurzelgelenk %1: ganzes Teil (XYZ-Euler)</translation>
     </message>
@@ -2129,6 +2259,12 @@ Nicht geriggt: als statisches Netz importiert. Das Riggen importierter Netze gib
     <message>
         <source>Rebuild of %1 cancelled</source>
         <translation>Neubau von %1 abgebrochen</translation>
+    </message>
+    <message>
+        <source>
+Not rigged: imported as a static mesh. Tools &gt; Auto-Rig Part gives it a skeleton and skin weights.</source>
+        <translation>
+Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch riggen gibt ihm ein Skelett und Skin-Gewichte.</translation>
     </message>
 </context>
 <context>

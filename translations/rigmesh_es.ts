@@ -485,6 +485,70 @@
         <source>the surface is not manifold, so it cannot be decimated</source>
         <translation>la superficie no es una variedad, así que no se puede diezmar</translation>
     </message>
+    <message>
+        <source>%1 already has a skeleton. Rig parts without one (imported meshes); to start a sketched part&apos;s rig again, use Recompute Weights or Rebuild.</source>
+        <translation>%1 ya tiene un esqueleto. Riggea piezas sin esqueleto (mallas importadas); para rehacer el rig de una pieza dibujada, usa Recalcular pesos o Reconstruir.</translation>
+    </message>
+    <message>
+        <source>%1 has no surface to rig.</source>
+        <translation>%1 no tiene superficie que riggear.</translation>
+    </message>
+    <message>
+        <source>The mesh has only %1 usable faces; a rig needs a closed surface that bounds a volume.</source>
+        <translation>La malla solo tiene %1 caras utilizables; un rig necesita una superficie cerrada que encierre un volumen.</translation>
+    </message>
+    <message>
+        <source>The mesh is open: it has a hole of %1 edges, %2% of the model&apos;s size, too large to fill without guessing its shape. Close the mesh in your modelling tool (in Blender: select the border, Face &gt; Fill) and import it again.</source>
+        <translation>La malla está abierta: tiene un agujero de %1 aristas, el %2 % del tamaño del modelo, demasiado grande para rellenarlo sin adivinar su forma. Cierra la malla en tu programa de modelado (en Blender: selecciona el borde, Cara &gt; Rellenar) e impórtala de nuevo.</translation>
+    </message>
+    <message>
+        <source>The mesh is %1 separate pieces; a rig needs one closed piece. Join them into one surface in your modelling tool, or export each piece as its own file and rig it as its own part.</source>
+        <translation>La malla está formada por %1 trozos separados; un rig necesita un solo trozo cerrado. Únelos en una superficie en tu programa de modelado, o exporta cada trozo a su propio archivo y riggéalo como su propia pieza.</translation>
+    </message>
+    <message>
+        <source>%1 pairs of faces of the mesh cross each other, so it does not bound one volume and its skeleton would be wrong. Remove the crossings in your modelling tool (in Blender: the 3D-Print toolbox finds them) and import it again.</source>
+        <translation>%1 pares de caras de la malla se cruzan, así que no encierra un único volumen y su esqueleto sería erróneo. Elimina los cruces en tu programa de modelado (en Blender los encuentra la caja de herramientas 3D-Print) e impórtala de nuevo.</translation>
+    </message>
+    <message>
+        <source>The mesh is not a manifold (more than two faces meet at an edge) and could not be repaired safely. Clean it up in your modelling tool (in Blender: Select &gt; All by Trait &gt; Non Manifold) and import it again.</source>
+        <translation>La malla no es una variedad (más de dos caras se encuentran en una arista) y no se pudo reparar con seguridad. Límpiala en tu programa de modelado (en Blender: Seleccionar &gt; Todo por rasgo &gt; No variedad) e impórtala de nuevo.</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: %1</source>
+        <translation>No se encontró ningún esqueleto en la malla: %1</translation>
+    </message>
+    <message>
+        <source>Rigging was cancelled.</source>
+        <translation>Se canceló el rigging.</translation>
+    </message>
+    <message>
+        <source>joined %1 vertices that sat at the same position (split seams)</source>
+        <translation>se unieron %1 vértices que estaban en la misma posición (costuras separadas)</translation>
+    </message>
+    <message>
+        <source>removed %1 degenerate faces (no area)</source>
+        <translation>se eliminaron %1 caras degeneradas (sin área)</translation>
+    </message>
+    <message>
+        <source>removed %1 duplicate faces</source>
+        <translation>se eliminaron %1 caras duplicadas</translation>
+    </message>
+    <message>
+        <source>removed %1 vertices no face uses</source>
+        <translation>se eliminaron %1 vértices que ninguna cara usa</translation>
+    </message>
+    <message>
+        <source>split %1 vertices where separate sheets touched</source>
+        <translation>se separaron %1 vértices donde se tocaban láminas distintas</translation>
+    </message>
+    <message>
+        <source>turned the faces outward (they faced inward)</source>
+        <translation>se giraron las caras hacia fuera (miraban hacia dentro)</translation>
+    </message>
+    <message>
+        <source>filled %1 small holes with %2 new vertices</source>
+        <translation>se rellenaron %1 agujeros pequeños con %2 vértices nuevos</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>
@@ -611,6 +675,31 @@
     <message>
         <source>Reset pose of %1</source>
         <translation>Restablecer pose de %1</translation>
+    </message>
+</context>
+<context>
+    <name>RigPartCommand</name>
+    <message>
+        <source>Rig %1</source>
+        <translation>Riggear %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 rigged with %n bone(s)</source>
+        <translation>
+            <numerusform>%1 riggeada con %n hueso</numerusform>
+            <numerusform>%1 riggeada con %n huesos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; repaired: %1</source>
+        <translation>; reparado: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>; %n vertex(es) saw no bone from inside and follow the closest one</source>
+        <translation>
+            <numerusform>; %n vértice no veía ningún hueso desde dentro y sigue al más cercano</numerusform>
+            <numerusform>; %n vértices no veían ningún hueso desde dentro y siguen al más cercano</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1198,6 +1287,10 @@
         <source>%1… %2 s</source>
         <translation>%1… %2 s</translation>
     </message>
+    <message>
+        <source>%1… %2% (%3 s)</source>
+        <translation>%1… %2 % (%3 s)</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::KeyDrag</name>
@@ -1524,10 +1617,6 @@
         <translation>Escenas 3D (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <source>: %1 of them without a skeleton. Rigging imported meshes is not available yet, so they cannot be posed; you can move, save and export them as OBJ.</source>
-        <translation>: %1 de ellas sin esqueleto. Todavía no se pueden poner rigs a mallas importadas, así que no se pueden posar; puede moverlas, guardarlas y exportarlas como OBJ.</translation>
-    </message>
-    <message>
         <source>Imported without a rig</source>
         <translation>Importado sin rig</translation>
     </message>
@@ -1684,6 +1773,53 @@
     <message>
         <source>Weights not recomputed: %1</source>
         <translation>No se han recalculado los pesos: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Auto-Rig Part</source>
+        <translation>&amp;Rig automático de la pieza</translation>
+    </message>
+    <message>
+        <source>Give the selected part without a skeleton (an imported mesh) a skeleton from its shape and skin weights</source>
+        <translation>Dar a la pieza seleccionada sin esqueleto (una malla importada) un esqueleto a partir de su forma y pesos de piel</translation>
+    </message>
+    <message numerus="yes">
+        <source>: %n of them without a skeleton, so they cannot be posed yet.</source>
+        <translation>
+            <numerusform>: %n de ellas sin esqueleto, así que aún no se puede posar.</numerusform>
+            <numerusform>: %n de ellas sin esqueleto, así que aún no se pueden posar.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Select a part to rig first</source>
+        <translation>Selecciona primero una pieza para riggear</translation>
+    </message>
+    <message>
+        <source>%1 already has a skeleton; Auto-Rig is for parts without one, such as imported meshes</source>
+        <translation>%1 ya tiene un esqueleto; el rig automático es para piezas sin esqueleto, como las mallas importadas</translation>
+    </message>
+    <message>
+        <source>Rigging %1</source>
+        <translation>Riggeando %1</translation>
+    </message>
+    <message>
+        <source>Cannot rig %1</source>
+        <translation>No se puede riggear %1</translation>
+    </message>
+    <message>
+        <source>Rigging %1 cancelled</source>
+        <translation>Rigging de %1 cancelado</translation>
+    </message>
+    <message>
+        <source>Auto-Rig gives a closed mesh a skeleton from its shape and skin weights, so it can be posed, cut, merged and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
+        <translation>El rig automático da a una malla cerrada un esqueleto a partir de su forma y pesos de piel, para que se pueda posar, cortar, fusionar y pintar como una pieza dibujada. También puedes hacerlo más tarde con Herramientas &gt; Rig automático de la pieza.</translation>
+    </message>
+    <message>
+        <source>Rig Now</source>
+        <translation>Riggear ahora</translation>
+    </message>
+    <message>
+        <source>Not Now</source>
+        <translation>Ahora no</translation>
     </message>
 </context>
 <context>
@@ -2081,12 +2217,6 @@
         <translation>creada por fusión o importación: no hay trazo desde el que reconstruir</translation>
     </message>
     <message>
-        <source>
-Not rigged: imported as a static mesh. Rigging imported meshes is not available yet.</source>
-        <translation>
-Sin rig: importada como malla estática. Todavía no se pueden poner rigs a mallas importadas.</translation>
-    </message>
-    <message>
         <source>Root joint %1: whole part (XYZ Euler)</source>
         <translation>Articulación raíz %1: toda la pieza (Euler XYZ)</translation>
     </message>
@@ -2129,6 +2259,12 @@ Sin rig: importada como malla estática. Todavía no se pueden poner rigs a mall
     <message>
         <source>Rebuild of %1 cancelled</source>
         <translation>Reconstrucción de %1 cancelada</translation>
+    </message>
+    <message>
+        <source>
+Not rigged: imported as a static mesh. Tools &gt; Auto-Rig Part gives it a skeleton and skin weights.</source>
+        <translation>
+Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la pieza le da un esqueleto y pesos de piel.</translation>
     </message>
 </context>
 <context>
