@@ -8,6 +8,7 @@
 #include <set>
 #include <vector>
 
+#include "autorig/JointsInside.h"
 #include "base/Error.h"
 #include "rig/DouglasPeucker.h"
 
@@ -319,9 +320,10 @@ std::vector<TubeSample> smoothedTube(const Graph& graph, const std::vector<int>&
 
 // The joints of a branch: CDP's kept samples, interior joints closer than
 // the minimum bone merged (as SkeletonFromRegions does along a cylinder).
-// Returns their positions, the branch's two ends first and last.
-std::vector<Vec3> branchJoints(const Graph& graph, const std::vector<int>& branch,
-                               const CurveRigOptions& options) {
+// Returns their samples (position and radius), the branch's two ends first
+// and last.
+std::vector<TubeSample> branchJoints(const Graph& graph, const std::vector<int>& branch,
+                                     const CurveRigOptions& options) {
     const std::vector<int> samples = branchSamples(graph, branch);
     const std::vector<TubeSample> tube =
         smoothedTube(graph, branch, samples, options.smoothingIterations);
@@ -344,9 +346,9 @@ std::vector<Vec3> branchJoints(const Graph& graph, const std::vector<int>& branc
             merged.pop_back();
         merged.push_back(kept.back());
     }
-    std::vector<Vec3> joints;
+    std::vector<TubeSample> joints;
     for (int k : merged)
-        joints.push_back(tube[k].point);
+        joints.push_back(tube[k]);
     return joints;
 }
 
@@ -362,24 +364,35 @@ Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
 
     Skeleton skeleton;
     std::map<int, JointId> jointOfNode;
+    std::map<JointId, double> radiusOf;
     auto jointAt = [&](int node) {
         const auto found = jointOfNode.find(node);
         if (found != jointOfNode.end())
             return found->second;
-        return jointOfNode[node] = skeleton.addJoint(graph.points[node]);
+        const JointId joint = skeleton.addJoint(graph.points[node]);
+        radiusOf[joint] = graph.radii[node];
+        return jointOfNode[node] = joint;
     };
     for (const std::vector<int>& branch : branches(graph)) {
-        const std::vector<Vec3> joints = branchJoints(graph, branch, options);
+        const std::vector<TubeSample> joints = branchJoints(graph, branch, options);
         JointId previous = jointAt(branch.front());
         for (std::size_t i = 1; i < joints.size(); ++i) {
-            const JointId next =
-                i + 1 == joints.size() ? jointAt(branch.back()) : skeleton.addJoint(joints[i]);
+            JointId next;
+            if (i + 1 == joints.size()) {
+                next = jointAt(branch.back());
+            } else {
+                next = skeleton.addJoint(joints[i].point);
+                radiusOf[next] = joints[i].radius;
+            }
             skeleton.addBone(previous, next);
             previous = next;
         }
     }
     if (skeleton.boneCount() == 0)
         throw Error(MessageId::AutoRigSkeletonFailed, "the curve is too short for a bone.");
+    // Half the local radius deep: a tip joint ends about where a sketched
+    // part's sits, in the middle of its cap.
+    pullJointsInside(skeleton, mesh, [&](JointId joint) { return 0.5 * radiusOf[joint]; });
     skeleton.setRoot(chooseCentralRoot(skeleton));
     skeleton.reorient();
     const std::vector<std::string> problems = skeleton.validate();

@@ -237,7 +237,8 @@ TEST(AutoRig, ProgressRisesToOneAndCancelStops) {
 
     int calls = 0;
     try {
-        autoRigPart(unrigged(rod()), {}, [&](double fraction) { return ++calls < 3 || fraction < 0; });
+        autoRigPart(unrigged(rod()), {},
+                    [&](double fraction) { return ++calls < 3 || fraction < 0; });
         FAIL() << "a cancelled rig finished";
     } catch (const Error& error) {
         EXPECT_EQ(error.message().id, MessageId::AutoRigCancelled);
