@@ -44,6 +44,7 @@ void mapToWorld(const LocalFrame& frame, SketchToSurfaceResult& result) {
         for (CrossSection& section : cylinder.sections) {
             move(section.left);
             move(section.right);
+            section.spacing *= frame.scale;
         }
         if (cylinder.startTip)
             move(*cylinder.startTip);

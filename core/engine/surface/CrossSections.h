@@ -22,6 +22,10 @@ struct CrossSection {
     int leftPolygonIndex = -1;   // outline index when `left` is an outline vertex to share
     int rightPolygonIndex = -1;  // likewise for `right`
     bool inCap = false;          // a slice of a cap rather than of the body
+    // The local target edge length: the document's one, or less on a thin
+    // part (CrossSectionOptions::radiusFraction); its semicircle and the
+    // spacing to its neighbours follow it. 0 = the caller's edge length.
+    double spacing = 0.0;
 
     Vec2 centre() const { return 0.5 * (left + right); }
     double radius() const { return 0.5 * (right - left).norm(); }
@@ -43,6 +47,15 @@ struct CylinderSections {
 struct CrossSectionOptions {
     int axisSmoothingIterations = 8;  // Laplacian steps on the axis and chord directions
     double smoothingStep = 0.5;       // lambda of each step
+    // Resolution follows thickness (issue 10): the local edge length is at
+    // most this fraction of the local radius, so a semicircle has at least
+    // pi / radiusFraction segments (9 at 0.35: 18 vertices around a thin
+    // part, neighbouring faces about 20 degrees apart) while parts wider
+    // than targetEdgeLength / radiusFraction keep the target edge length.
+    double radiusFraction = 0.35;
+    // Floor of the local edge length, as a fraction of the target one, so a
+    // hair-thin neck cannot ask for an unbounded number of vertices.
+    double minimumSpacingFraction = 1.0 / 16.0;
 };
 
 CylinderSections buildCrossSections(const Decomposition& decomposition, int cylinder,
