@@ -46,6 +46,10 @@ void mapToWorld(const LocalFrame& frame, SketchToSurfaceResult& result) {
             move(section.right);
             section.spacing *= frame.scale;
         }
+        for (CrossSection& chord : cylinder.axisChords) {
+            move(chord.left);
+            move(chord.right);
+        }
         if (cylinder.startTip)
             move(*cylinder.startTip);
         if (cylinder.endTip)

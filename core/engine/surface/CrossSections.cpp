@@ -73,6 +73,8 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames, Cr
     auto local = [&](double radius) { return localSpacing(radius, spacing, options); };
     first.spacing = local(first.radius());
     last.spacing = local(last.radius());
+    first.chordParameter = 0.0;
+    last.chordParameter = count - 1;
     std::vector<double> parameter(count, 0.0);
     for (int i = 1; i < count; ++i) {
         CrossSection a = sectionOf(frames[i - 1]), b = sectionOf(frames[i]);
@@ -98,6 +100,7 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames, Cr
                                (1 - f) * a.radius + f * b.radius};
             candidates.push_back(sectionOf(blended));
             candidates.back().spacing = local(blended.radius);
+            candidates.back().chordParameter = segment + f;
         }
         candidates.push_back(last);
     }
@@ -230,6 +233,11 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
                      polygonSection(cylinder.chords.back()), spacing, options);
 
     CylinderSections result;
+    for (const ChordFrame& frame : frames)
+        result.axisChords.push_back(sectionOf(frame));
+    // The end chords are the outline's own (smoothing keeps them in place).
+    result.axisChords.front() = body.front();
+    result.axisChords.back() = body.back();
     auto pathPoints = [&](const std::vector<int>& indices) {
         std::vector<Vec2> path;
         for (int i : indices)

@@ -26,6 +26,9 @@ struct CrossSection {
     // part (CrossSectionOptions::radiusFraction); its semicircle and the
     // spacing to its neighbours follow it. 0 = the caller's edge length.
     double spacing = 0.0;
+    // Where along the cylinder's smoothed chords (CylinderSections::axisChords)
+    // a body section was taken, as a fractional index; -1 for a cap slice.
+    double chordParameter = -1.0;
 
     Vec2 centre() const { return 0.5 * (left + right); }
     double radius() const { return 0.5 * (right - left).norm(); }
@@ -42,6 +45,12 @@ struct CylinderSections {
     std::vector<double> axisPosition;
     double startTipPosition = 0.0;
     double endTipPosition = 0.0;
+    // The body's smoothed chords before resampling (paper 2.1): one per chord
+    // of the chordal axis, so they depend on the outline alone, not on the
+    // edge length. The skeleton (2.3) simplifies these, so a part gets the
+    // same joints at any resolution; the first and last are the body's end
+    // sections.
+    std::vector<CrossSection> axisChords;
 };
 
 struct CrossSectionOptions {
