@@ -74,6 +74,35 @@ TEST_P(CreaseReport, WorstEdges) {
     };
     std::printf("== %s: %d vertices, edge length %.4f\n", GetParam().c_str(), mesh.vertexCount(),
                 result.targetEdgeLength);
+    // Where the creased edges are: at a tip (a vertex of a cap slice or a
+    // tip), at a junction seam (connecting and cylindrical vertices), in a
+    // patch (connecting only) or along a body (cylindrical only).
+    auto inCap = [&](int v) {
+        const VertexOrigin& o = origins[v];
+        return o.kind == RegionKind::Cylindrical &&
+               (o.section < 0 || result.cylinders[o.region].sections[o.section].inCap);
+    };
+    auto place = [&](const Edge& e) {
+        const std::array<int, 4> vs{e.a, e.b, opposite(e.fa, e.a, e.b), opposite(e.fb, e.a, e.b)};
+        int connecting = 0;
+        for (int v : vs) {
+            if (inCap(v))
+                return 0;
+            connecting += origins[v].kind == RegionKind::Connecting;
+        }
+        return connecting == 4 ? 2 : connecting > 0 ? 1 : 3;
+    };
+    const char* places[] = {"tip", "seam", "patch", "body"};
+    for (double limit : {20.0, 35.0}) {
+        std::array<int, 4> counts{};
+        for (const Edge& e : edges)
+            if (e.angle > limit)
+                ++counts[place(e)];
+        std::printf("   edges over %.0f deg:", limit);
+        for (int k = 0; k < 4; ++k)
+            std::printf(" %s %d", places[k], counts[k]);
+        std::printf(" (of %zu)\n", edges.size());
+    }
     const int n = std::min<int>(std::atoi(count), static_cast<int>(edges.size()));
     for (int i = 0; i < n; ++i) {
         const Edge& e = edges[i];
