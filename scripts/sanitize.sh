@@ -27,12 +27,12 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN
 cmake --preset asan
 cmake --build --preset asan -j "$jobs"
 status=0
-ctest --preset asan -j "$jobs" -E '^StudioWidgets$' "$@" || status=$?
+ctest --preset asan -j "$jobs" -E '^Studio(Widgets|BackgroundJobs)$' "$@" || status=$?
 # The widgets: ASan and UBSan as everywhere, but no leak check. Their only
 # leaks (2 x 56 bytes) come from a library unloaded by exit (most likely
 # the Mesa GL driver libGL dlopens), so
 # LeakSanitizer prints "<unknown module>" frames that no
 # suppression can name (full stacks, fast_unwind_on_malloc=0, make the run
 # take over 6 minutes).
-ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" ctest --preset asan -R '^StudioWidgets$' "$@" || status=$?
+ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" ctest --preset asan -R '^Studio(Widgets|BackgroundJobs)$' "$@" || status=$?
 exit "$status"

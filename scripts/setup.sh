@@ -16,6 +16,7 @@ packages=(
     xvfb xauth
     libgtest-dev libgmock-dev libbenchmark-dev
     blender python3-numpy
+    lintian appstream desktop-file-utils dpkg-dev file
 )
 # Node.js for the glTF validator: Debian's packages, unless a node and npm
 # are already there (another Node.js distribution would conflict with them).

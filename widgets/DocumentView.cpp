@@ -1,8 +1,11 @@
 #include "DocumentView.h"
 
+#include <QPointer>
 #include <QVBoxLayout>
 
 #include "base/Error.h"
+#include "jobs/JobRunner.h"
+#include "model/PartBuilder.h"
 #include "model/commands/CreatePartCommand.h"
 #include "viewport/Viewport.h"
 
@@ -26,16 +29,30 @@ DocumentView::~DocumentView() {
 
 void DocumentView::createPartFromStroke(const std::vector<Vec2>& stroke,
                                         const model::Placement& plane) {
-    try {
-        auto command = model::CreatePartCommand::create(*document_, stroke, {}, {}, plane);
-        const model::PartId id = command->partId();
-        document_->undoStack()->push(command.release());
-        document_->setSelection({id, kNoJoint});
-        emit statusMessage(tr("Created %1").arg(document_->part(id).name), 4000);
-    } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Nothing created: %1").arg(QString::fromStdString(error.what())),
-                           8000);
-    }
+    // The engine builds off the GUI thread from copies (a fine edge length
+    // can take seconds); the command is made and pushed here when done.
+    const double documentLength = model::documentEdgeLength(*document_);
+    const QString name = tr("Part %1").arg(document_->nextPartId());
+    QPointer<model::Document> document(document_.get());
+    JobRunner::runOn(
+        viewport_->jobRunner(), tr("Building %1").arg(name),
+        [=, this]() -> JobRunner::Apply {
+            model::BuiltPart built =
+                model::buildPartAtDocumentLength(documentLength, stroke, name, {});
+            return [=, this]() mutable {
+                if (!document)
+                    return;
+                auto command = model::CreatePartCommand::fromBuilt(*document, stroke, name,
+                                                                   std::move(built), plane);
+                const model::PartId id = command->partId();
+                document->undoStack()->push(command.release());
+                document->setSelection({id, kNoJoint});
+                emit statusMessage(tr("Created %1").arg(document->part(id).name), 4000);
+            };
+        },
+        [this](const QString& reason) {
+            emit statusMessage(tr("Nothing created: %1").arg(reason), 8000);
+        });
 }
 
 }  // namespace rigmesh::widgets

@@ -24,9 +24,12 @@
 #include "MouseHint.h"
 #include "base/Error.h"
 #include "dialogs/ExportDialog.h"
+#include "jobs/JobRunner.h"
+#include "jobs/JobStatus.h"
 #include "model/Autosave.h"
 #include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
+#include "model/PoseChange.h"
 #include "model/commands/DeletePartCommand.h"
 #include "model/commands/ImportPartsCommand.h"
 #include "model/commands/ResetPoseCommand.h"
@@ -34,6 +37,7 @@
 #include "panels/OutlinerPanel.h"
 #include "panels/PropertiesPanel.h"
 #include "panels/WeightsPanel.h"
+#include "timeline/TimelineDock.h"
 #include "tools/CutTool.h"
 #include "tools/MergeTool.h"
 #include "tools/PaintTool.h"
@@ -68,6 +72,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
       properties_(new PropertiesPanel(this)),
       weights_(new WeightsPanel(this)),
       history_(new QUndoView(&undoGroup_, this)),
+      timeline_(new TimelineDock(this)),
       selectTool_(new SelectTool(this)),
       sketchTool_(new SketchTool(this)),
       poseTool_(new PoseTool(this)),
@@ -80,6 +85,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
                                                      : recoveryDirectory) {
     registerIconResources();
     setObjectName(QStringLiteral("RigMeshStudioMainWindow"));
+    setWindowIcon(QIcon(QStringLiteral(":/icons/rigmesh-studio.svg")));
     tabs_->setTabsClosable(true);
     tabs_->setDocumentMode(true);
     setCentralWidget(tabs_);
@@ -89,9 +95,19 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
             [this](const QString& m) { showStatus(m, 5000); });
     connect(properties_, &PropertiesPanel::statusMessage, this, &MainWindow::showStatus);
     connect(weights_, &WeightsPanel::statusMessage, this, &MainWindow::showStatus);
+    connect(timeline_, &TimelineDock::statusMessage, this, &MainWindow::showStatus);
+    connect(timeline_, &TimelineDock::onionSkinToggled, this, [this](bool on) {
+        if (auto* v = currentView())
+            v->viewport()->setOnionSkin(on);
+    });
+    // Long work runs off the GUI thread, one job at a time (issue 16 item 3).
+    jobs_ = new JobRunner(this);
+    jobStatus_ = new JobStatus(this, jobs_);
+    properties_->setJobRunner(jobs_);
     mouseHint_ = new MouseHint(tabs_);
     createActions();
     createDocks();
+    createTimelineActions();
 
     QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
@@ -314,12 +330,35 @@ void MainWindow::createDocks() {
         if (QWidget* options = tool->optionsWidget())
             toolOptions_->addWidget(options);
     dock(tr("Tool Options"), "toolOptionsDock", toolOptions_, Qt::LeftDockWidgetArea);
+    // The timeline along the bottom, under the view, as in Blender.
+    dock(tr("Timeline"), "timelineDock", timeline_, Qt::BottomDockWidgetArea);
+}
+
+// Transport and keying (issue 15), window-wide as in Blender: a text field
+// or spin box with the focus keeps its own keys (Qt's shortcut override).
+void MainWindow::createTimelineActions() {
+    auto* menu = new QMenu(tr("&Animation"), this);
+    menuBar()->insertMenu(menuBar()->actions().last(), menu);  // before Help
+    auto add = [&](const QString& text, const QKeySequence& key, auto slot) {
+        QAction* action = menu->addAction(text);
+        action->setShortcut(key);
+        connect(action, &QAction::triggered, timeline_, slot);
+        return action;
+    };
+    add(tr("&Play / Pause"), QKeySequence(Qt::Key_Space), &TimelineDock::togglePlayback);
+    add(tr("Pre&vious Frame"), QKeySequence(Qt::Key_Left), [this] { timeline_->stepFrames(-1); });
+    add(tr("&Next Frame"), QKeySequence(Qt::Key_Right), [this] { timeline_->stepFrames(1); });
+    add(tr("Jump to &Start"), QKeySequence(Qt::SHIFT | Qt::Key_Left), &TimelineDock::jumpToStart);
+    add(tr("Jump to &End"), QKeySequence(Qt::SHIFT | Qt::Key_Right), &TimelineDock::jumpToEnd);
+    menu->addSeparator();
+    add(tr("&Insert Key"), QKeySequence(Qt::Key_I), &TimelineDock::insertKey);
 }
 
 DocumentView* MainWindow::addDocument(std::unique_ptr<model::Document> document) {
     auto* view = new DocumentView(std::move(document), tabs_);
     model::Document* doc = view->document();
     undoGroup_.addStack(doc->undoStack());
+    view->viewport()->setJobRunner(jobs_);
     connect(view, &DocumentView::statusMessage, this, &MainWindow::showStatus);
     connect(view->viewport(), &Viewport::statusMessage, this,
             [this](const QString& m) { showStatus(m); });
@@ -373,11 +412,13 @@ void MainWindow::currentTabChanged(int) {
     outliner_->setDocument(document);
     properties_->setDocument(document);
     weights_->setDocument(document, view ? view->viewport() : nullptr);
+    timeline_->setDocument(document);
     if (view) {
         view->viewport()->setTool(activeTool());  // the checked tool, whichever it is
         view->viewport()->setWireframe(wireframeAction_->isChecked());
         view->viewport()->setDualQuaternionSkinning(dqsAction_->isChecked());
         view->viewport()->setGridVisible(gridAction_->isChecked());
+        view->viewport()->setOnionSkin(timeline_->onionSkin());
         showWeightView(view->viewport()->weightView());  // each document keeps its own
     }
     updateTitle();
@@ -491,6 +532,7 @@ bool MainWindow::closeDocument(int index) {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    jobs_->cancel();  // a running job's result would have no document to go to
     while (tabs_->count() > 0) {
         if (!closeDocument(tabs_->count() - 1)) {
             event->ignore();
@@ -561,7 +603,8 @@ void MainWindow::resetPose() {
         showStatus(tr("Select a part to reset its pose"), 4000);
         return;
     }
-    document->undoStack()->push(new model::ResetPoseCommand(*document, document->selection().part));
+    const model::PartId id = document->selection().part;
+    model::pushPoseChange(*document, id, new model::ResetPoseCommand(*document, id));
 }
 
 void MainWindow::deleteSelection() {

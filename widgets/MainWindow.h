@@ -12,6 +12,7 @@
 #include <memory>
 #include <utility>
 #include <vector>
+#include "io/SceneExport.h"
 
 class QStackedWidget;
 class QTabWidget;
@@ -23,6 +24,7 @@ class QComboBox;
 namespace rigmesh::model {
 class Autosave;
 class Document;
+class ImportPartsCommand;
 }  // namespace rigmesh::model
 
 namespace rigmesh::widgets {
@@ -33,6 +35,8 @@ enum class WeightView;  // viewport/RenderScene.h
 class DocumentView;
 class OutlinerPanel;
 class PropertiesPanel;
+class JobRunner;
+class JobStatus;
 class WeightsPanel;
 class CutTool;
 class PaintTool;
@@ -40,6 +44,7 @@ class MergeTool;
 class PoseTool;
 class SelectTool;
 class SketchTool;
+class TimelineDock;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -55,7 +60,12 @@ class MainWindow : public QMainWindow {
     QTabWidget* tabs() const { return tabs_; }
     OutlinerPanel* outliner() const { return outliner_; }
     WeightsPanel* weightsPanel() const { return weights_; }
+    // Long work off the GUI thread (widgets/jobs) and what the window shows
+    // of it.
+    JobRunner* jobs() const { return jobs_; }
+    JobStatus* jobStatus() const { return jobStatus_; }
     PropertiesPanel* propertiesPanel() const { return properties_; }
+    TimelineDock* timeline() const { return timeline_; }
 
     bool openFile(const QString& path);
     // Offers to restore documents left in the recovery folder by a crash.
@@ -68,6 +78,12 @@ class MainWindow : public QMainWindow {
     bool saveAs();
     void exportDocument();
     void importFile();
+    // Imports `path` into the current document (File > Import without the
+    // file dialog), as a background job.
+    void importPath(const QString& path);
+    // Exports the current document's visible parts to `path` (File > Export
+    // without the dialog), as a background job.
+    void exportTo(const QString& path, const ExportOptions& options);
     void saveHistoryAsRecipe();
     bool closeDocument(int index);
     void activateSelectTool();
@@ -85,11 +101,14 @@ class MainWindow : public QMainWindow {
   private:
     void createActions();
     void createDocks();
+    void finishImport(model::Document& document, const QString& file,
+                      std::unique_ptr<model::ImportPartsCommand> command);
     // Tools > Weights: the clean-ups, Smooth All and Check Rig (MainWindowWeights.cpp).
     void createWeightMenu(QMenu* tools);
     // The View > Weights choice and the Weight View toolbar follow the
     // current document's viewport (each document keeps its own view).
     void showWeightView(WeightView view);
+    void createTimelineActions();
     void currentTabChanged(int index);
     class ViewportTool* activeTool() const;
     void activateTool(QAction* action, class ViewportTool* tool);
@@ -108,6 +127,7 @@ class MainWindow : public QMainWindow {
     PropertiesPanel* properties_;
     WeightsPanel* weights_;
     QUndoView* history_;
+    TimelineDock* timeline_;
     QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QActionGroup* toolGroup_ = nullptr;
@@ -133,6 +153,8 @@ class MainWindow : public QMainWindow {
     std::map<DocumentView*, model::Autosave*> autosaves_;
     MouseHint* mouseHint_ = nullptr;
     QStackedWidget* toolOptions_ = nullptr;
+    JobRunner* jobs_ = nullptr;
+    JobStatus* jobStatus_ = nullptr;
 };
 
 }  // namespace rigmesh::widgets

@@ -4,11 +4,14 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPointer>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -16,13 +19,18 @@
 #include <QTabWidget>
 #include <QToolBar>
 #include <QUndoView>
+#include <filesystem>
+#include <system_error>
+
 #include "DocumentView.h"
 #include "MainWindow.h"
 #include "base/Error.h"
 #include "dialogs/ExportDialog.h"
+#include "jobs/JobRunner.h"
 #include "model/Autosave.h"
 #include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
+#include "model/ImportReader.h"
 #include "model/commands/DeletePartCommand.h"
 #include "model/commands/ImportPartsCommand.h"
 #include "model/commands/ResetPoseCommand.h"
@@ -47,37 +55,55 @@ void MainWindow::importFile() {
         tr("3D scenes (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;All files (*)"));
     if (path.isEmpty())
         return;
-    try {
-        // The file is read by a child process; the studio waits for it.
-        QApplication::setOverrideCursor(Qt::WaitCursor);
-        std::unique_ptr<model::ImportPartsCommand> command;
-        try {
-            command = model::ImportPartsCommand::create(*document, path);
-        } catch (...) {
-            QApplication::restoreOverrideCursor();
-            throw;
-        }
-        QApplication::restoreOverrideCursor();
-        const auto ids = command->partIds();
-        const int unrigged = command->unrigged();
-        document->undoStack()->push(command.release());
-        if (!ids.empty())
-            document->setSelection({ids.front(), kNoJoint});
+    importPath(path);
+}
+
+void MainWindow::importPath(const QString& path) {
+    model::Document* current = currentDocument();
+    if (!current)
+        return;
+    // Read by a child process (model/ImportReader), waited for off the GUI
+    // thread; the parts arrive as one command when it is done.
+    QPointer<model::Document> document(current);
+    const QString file = QFileInfo(path).fileName();
+    jobs_->run(
+        tr("Importing %1").arg(file),
+        [=, this]() -> JobRunner::Apply {
+            std::vector<model::PartNode> nodes = model::readImportedParts(path);
+            return [=, this]() mutable {
+                if (!document)
+                    return;
+                try {
+                    auto command = model::ImportPartsCommand::fromRead(*document, path, nodes);
+                    finishImport(*document, file, std::move(command));
+                } catch (const rigmesh::Error& error) {
+                    QMessageBox::warning(this, tr("Cannot import"),
+                                         QString::fromStdString(error.what()));
+                }
+            };
+        },
+        [this](const QString& reason) { QMessageBox::warning(this, tr("Cannot import"), reason); },
+        [this, file] { showStatus(tr("Import of %1 cancelled").arg(file), 6000); });
+}
+
+void MainWindow::finishImport(model::Document& document, const QString& file,
+                              std::unique_ptr<model::ImportPartsCommand> command) {
+    const auto ids = command->partIds();
+    const int unrigged = command->unrigged();
+    document.undoStack()->push(command.release());
+    if (!ids.empty())
+        document.setSelection({ids.front(), kNoJoint});
+    if (currentView() && currentView()->document() == &document)
         currentView()->viewport()->frameAll();
-        QString message =
-            tr("Imported %1 part(s) from %2").arg(ids.size()).arg(QFileInfo(path).fileName());
-        if (unrigged > 0) {
-            // Say so rather than fail silently: the mesh is here, its rig is not.
-            message +=
-                tr(": %1 of them without a skeleton. Rigging imported meshes is not available "
-                   "yet, so they cannot be posed; you can move, save and export them as OBJ.")
-                    .arg(unrigged);
-            QMessageBox::information(this, tr("Imported without a rig"), message);
-        }
-        showStatus(message, 8000);
-    } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(this, tr("Cannot import"), QString::fromStdString(error.what()));
+    QString message = tr("Imported %1 part(s) from %2").arg(ids.size()).arg(file);
+    if (unrigged > 0) {
+        // Say so rather than fail silently: the mesh is here, its rig is not.
+        message += tr(": %1 of them without a skeleton. Rigging imported meshes is not available "
+                      "yet, so they cannot be posed; you can move, save and export them as OBJ.")
+                       .arg(unrigged);
+        QMessageBox::information(this, tr("Imported without a rig"), message);
     }
+    showStatus(message, 8000);
 }
 
 void MainWindow::saveHistoryAsRecipe() {
@@ -114,31 +140,80 @@ void MainWindow::exportDocument() {
     ExportDialog dialog(suggested, this);
     if (dialog.exec() != QDialog::Accepted)
         return;
-    try {
-        // The file's baked pose is the shape the view shows (View > Dual
-        // Quaternion Skinning).
-        ExportOptions options = dialog.options();
-        options.skinning =
-            dqsAction_->isChecked() ? SkinningMethod::DualQuaternion : SkinningMethod::LinearBlend;
-        auto result = model::exportDocument(*document, dialog.path().toStdString(), options, true);
-        // Animation ticked but nothing keyed: say why the file has no animation.
-        const bool rigged = QFileInfo(dialog.path()).suffix().toLower() != QLatin1String("obj");
-        bool keyed = false;
-        for (const model::PartNode& node : document->parts())
-            keyed = keyed || (node.visible && node.clip.keyCount() > 0);
-        if (rigged && dialog.options().animation && !keyed)
-            result.warnings << tr("no animation: no visible part has keys");
-        showStatus(
-            tr("Exported %1%2")
-                .arg(QFileInfo(dialog.path()).fileName(),
-                     result.warnings.isEmpty()
-                         ? QString()
-                         : QStringLiteral(" (") + result.warnings.join(QStringLiteral("; ")) +
-                               QLatin1Char(')')),
-            8000);
-    } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(error.what()));
+    // The file's baked pose is the shape the view shows (View > Dual
+    // Quaternion Skinning).
+    ExportOptions options = dialog.options();
+    options.skinning =
+        dqsAction_->isChecked() ? SkinningMethod::DualQuaternion : SkinningMethod::LinearBlend;
+    exportTo(dialog.path(), options);
+}
+
+void MainWindow::exportTo(const QString& path, const ExportOptions& options) {
+    model::Document* document = currentDocument();
+    if (!document || document->partCount() == 0)
+        return;
+    const bool animation = options.animation;
+    // Written off the GUI thread from a copy of the parts (their engine
+    // values are shared, never copied): the document is not touched.
+    const std::vector<model::PartNode> parts = document->parts();
+    const QString file = QFileInfo(path).fileName();
+    // Written into a hidden folder beside the target (with its companion
+    // .bin or .mtl, which keep their relative names) and moved over it when
+    // done, so a cancelled export leaves the old file, or none, behind.
+    const QFileInfo target(path);
+    const QString staging = target.dir().filePath(QStringLiteral(".") + target.fileName() +
+                                                  QStringLiteral(".exporting"));
+    QDir(staging).removeRecursively();
+    if (!QDir().mkpath(staging)) {
+        QMessageBox::warning(this, tr("Cannot export"),
+                             tr("Cannot write into %1").arg(target.dir().path()));
+        return;
     }
+    auto discard = [staging] { QDir(staging).removeRecursively(); };
+    jobs_->run(
+        tr("Exporting %1").arg(file),
+        [=, this]() -> JobRunner::Apply {
+            model::DocumentExportResult result = model::exportParts(
+                parts, QDir(staging).filePath(target.fileName()).toStdString(), options, true);
+            return [=, this]() mutable {
+                QString failure;
+                for (const QFileInfo& written : QDir(staging).entryInfoList(QDir::Files)) {
+                    std::error_code error;
+                    std::filesystem::rename(written.filePath().toStdString(),
+                                            target.dir().filePath(written.fileName()).toStdString(),
+                                            error);
+                    if (error)
+                        failure = QString::fromStdString(error.message());
+                }
+                discard();
+                if (!failure.isEmpty()) {
+                    QMessageBox::warning(this, tr("Cannot export"),
+                                         tr("%1 could not be replaced: %2").arg(file, failure));
+                    return;
+                }
+                // Animation ticked but nothing keyed: say why the file has
+                // no animation.
+                const bool rigged = target.suffix().toLower() != QLatin1String("obj");
+                bool keyed = false;
+                for (const model::PartNode& node : parts)
+                    keyed = keyed || (node.visible && node.clip.keyCount() > 0);
+                if (rigged && animation && !keyed)
+                    result.warnings << tr("no animation: no visible part has keys");
+                showStatus(tr("Exported %1%2")
+                               .arg(file, result.warnings.isEmpty()
+                                              ? QString()
+                                              : QStringLiteral(" (") +
+                                                    result.warnings.join(QStringLiteral("; ")) +
+                                                    QLatin1Char(')')),
+                           8000);
+            };
+        },
+        [this, discard](const QString& reason) {
+            discard();
+            QMessageBox::warning(this, tr("Cannot export"), reason);
+        },
+        [this, file] { showStatus(tr("Export of %1 cancelled: nothing written").arg(file), 6000); },
+        discard);
 }
 
 }  // namespace rigmesh::widgets

@@ -71,7 +71,7 @@ commands:
   example
       Builds the embedded example sketch into a rigged part and prints its figures.
   version
-      Prints the version.
+      Prints the version (so does rigmesh --version).
 )";
 
 // The usage of one command: its block of kUsage (from its line "  NAME ..."
@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
             return rigmesh::cli::runExport(arguments);
         if (command == "example")
             return rigmesh::cli::runBuild({"example"});
-        if (command == "version") {
+        if (command == "version" || command == "--version") {
             std::printf("%s\n", rigmesh::model::buildInfo().toStdString().c_str());
             return 0;
         }

@@ -22,6 +22,9 @@ int main(int argc, char** argv) {
     QApplication::setApplicationName(QStringLiteral("RigMesh Studio"));
     QApplication::setOrganizationName(QStringLiteral("RigMesh"));
     QApplication::setApplicationVersion(QStringLiteral(RIGMESH_VERSION));
+    // The desktop entry (packaging/rigmesh-studio.desktop) names the window's
+    // icon and groups its windows.
+    QGuiApplication::setDesktopFileName(QStringLiteral("rigmesh-studio"));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Sketch a silhouette, get a rigged part."));

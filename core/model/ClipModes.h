@@ -1,5 +1,6 @@
 // The names of a clip's interpolation and playback modes in files and
-// recipes: "linear" / "smooth" and "hold" / "loop".
+// recipes: "constant" / "linear" / "smooth" and "hold" / "loop" / "ping_pong"
+// (the last of each since document format version 2).
 #pragma once
 
 #include <optional>

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "base/Error.h"
+#include "model/PartClips.h"
 
 namespace rigmesh::model {
 
@@ -31,6 +32,10 @@ void checkPose(const PartNode& node, const rigmesh::Pose& pose) {
 void checkPins(const PartNode& node, const std::set<JointId>& pinned) {
     for (const JointId joint : pinned)
         checkJoint(node, joint);
+}
+
+bool identicalClipLists(const std::vector<rigmesh::Clip>& a, const std::vector<rigmesh::Clip>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), &identicalClips);
 }
 
 void checkClip(const PartNode& node, const rigmesh::Clip& clip) {
@@ -178,6 +183,13 @@ void Document::setVisible(PartId id, bool visible) {
 void Document::replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options,
                            const rigmesh::Pose& pose, std::set<JointId> pinned,
                            const rigmesh::Clip& clip) {
+    replacePart(id, std::move(part), options, pose, std::move(pinned), clip,
+                this->part(id).otherClips);
+}
+
+void Document::replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options,
+                           const rigmesh::Pose& pose, std::set<JointId> pinned,
+                           const rigmesh::Clip& clip, std::vector<rigmesh::Clip> otherClips) {
     PartNode& node = mutablePart(id);
     PartNode probe;
     probe.id = id;
@@ -185,6 +197,10 @@ void Document::replacePart(PartId id, std::shared_ptr<const Part> part, const Bu
     checkPose(probe, pose);
     checkPins(probe, pinned);
     checkClip(probe, clip);
+    for (const rigmesh::Clip& other : otherClips)
+        checkClip(probe, other);
+    checkClipNamesUnique(clip, otherClips);
+    otherClips = sortedByName(std::move(otherClips));
     Changes what;
     if (node.part != part)
         what |= Change::Geometry;
@@ -194,7 +210,7 @@ void Document::replacePart(PartId id, std::shared_ptr<const Part> part, const Bu
         what |= Change::Pose;
     if (node.pinnedJoints != pinned)
         what |= Change::Pins;
-    if (!identicalClips(node.clip, clip))
+    if (!identicalClips(node.clip, clip) || !identicalClipLists(node.otherClips, otherClips))
         what |= Change::Clip;
     if (!what)
         return;
@@ -204,6 +220,7 @@ void Document::replacePart(PartId id, std::shared_ptr<const Part> part, const Bu
     node.pose = pose;
     node.pinnedJoints = std::move(pinned);
     node.clip = clip;
+    node.otherClips = std::move(otherClips);
     if (selection_.part == id && (!node.part || !node.part->skeleton.hasJoint(selection_.joint)))
         setSelection({id, kNoJoint});
     emit partChanged(id, what);
@@ -219,7 +236,10 @@ void Document::replacePart(PartId id, std::shared_ptr<const Part> part,
     PartNode probe;
     probe.part = part;
     const rigmesh::Pose rest = restPoseOf(probe);
-    replacePart(id, std::move(part), options, rest, {}, emptiedClip(node.clip));
+    std::vector<rigmesh::Clip> others;
+    for (const rigmesh::Clip& other : node.otherClips)
+        others.push_back(emptiedClip(other));
+    replacePart(id, std::move(part), options, rest, {}, emptiedClip(node.clip), std::move(others));
 }
 
 void Document::replaceSkinning(PartId id, std::shared_ptr<const Part> part) {
@@ -261,9 +281,24 @@ void Document::setPinnedJoints(PartId id, std::set<JointId> pinned) {
 void Document::setClip(PartId id, const rigmesh::Clip& clip) {
     PartNode& node = mutablePart(id);
     checkClip(node, clip);
+    checkClipNamesUnique(clip, node.otherClips);
     if (identicalClips(node.clip, clip))
         return;
     node.clip = clip;
+    emit partChanged(id, Change::Clip);
+}
+
+void Document::setClips(PartId id, const rigmesh::Clip& active, std::vector<rigmesh::Clip> others) {
+    PartNode& node = mutablePart(id);
+    checkClip(node, active);
+    for (const rigmesh::Clip& other : others)
+        checkClip(node, other);
+    checkClipNamesUnique(active, others);
+    others = sortedByName(std::move(others));
+    if (identicalClips(node.clip, active) && identicalClipLists(node.otherClips, others))
+        return;
+    node.clip = active;
+    node.otherClips = std::move(others);
     emit partChanged(id, Change::Clip);
 }
 

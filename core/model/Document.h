@@ -18,6 +18,7 @@
 
 #include "model/ClipEdit.h"
 #include "model/PartNode.h"
+#include "model/Timeline.h"
 #include "rig/Skeleton.h"
 
 namespace rigmesh::model {
@@ -33,6 +34,9 @@ struct Selection {
 struct DocumentContents {
     std::vector<PartNode> parts;
     PartId nextPartId = 1;  // greater than every id in use
+    TimelineSettings timeline;
+    // Saved with the document, but not content an undo step changes.
+    int currentFrame = 0;
 };
 
 class Document : public QObject {
@@ -46,7 +50,7 @@ class Document : public QObject {
         Options = 1u << 4,   // the build options
         Pose = 1u << 5,      // the current pose (PartNode::pose)
         Pins = 1u << 6,      // the pinned joints (PartNode::pinnedJoints)
-        Clip = 1u << 7,      // the animation clip (PartNode::clip)
+        Clip = 1u << 7,      // the animation clips (PartNode::clip, otherClips)
     };
     Q_DECLARE_FLAGS(Changes, Change)
     Q_FLAG(Changes)
@@ -80,6 +84,25 @@ class Document : public QObject {
     bool isModified() const { return !undoStack_.isClean(); }
     // After a successful save: sets the path and marks the undo stack clean.
     void markSaved(const QString& path);
+
+    // ---- Timeline (issue 15; DocumentTimeline.cpp) ----
+    const TimelineSettings& timeline() const { return contents_.timeline; }
+    int currentFrame() const { return contents_.currentFrame; }
+    // The current frame in seconds, at the timeline's rate.
+    double currentTime() const { return contents_.timeline.timeOfFrame(contents_.currentFrame); }
+    // Not an undo step and not a modification (it is saved with the next
+    // save): moves to `frame` and shows there the pose of every part whose
+    // active clip has keys, ending their pose previews. Another pose a part
+    // was given at the old frame is gone, as in Blender. Throws
+    // rigmesh::Error on a frame outside [0, kMaxFrame].
+    void setCurrentFrame(int frame);
+    // The pose the part's active clip gives at the current frame, or its
+    // current pose when the clip has no keys.
+    rigmesh::Pose poseAtCurrentFrame(PartId id) const;
+    // Auto-key (not saved, not undoable): pose changes made through
+    // pushPoseChange (PoseChange.h) also key the pose at the current frame.
+    bool autoKey() const { return autoKey_; }
+    void setAutoKey(bool on);
 
     // ---- Selection (not undoable) ----
     Selection selection() const { return selection_; }
@@ -123,9 +146,19 @@ class Document : public QObject {
     void setPose(PartId id, const rigmesh::Pose& pose);
     // Throws rigmesh::Error on a joint the part's skeleton does not have.
     void setPinnedJoints(PartId id, std::set<JointId> pinned);
+    // As above, also setting the part's other clips (sorted by name here):
+    // for edits that change the skeleton and every clip with it (rebuild).
+    void replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options,
+                     const rigmesh::Pose& pose, std::set<JointId> pinned, const rigmesh::Clip& clip,
+                     std::vector<rigmesh::Clip> otherClips);
     // Throws rigmesh::Error when a key names a joint the part's skeleton does
     // not have or holds a pose that is not finite.
     void setClip(PartId id, const rigmesh::Clip& clip);
+    // Sets the active clip and the others at once (sorted by name here).
+    // Throws rigmesh::Error as setClip does, or when two clips share a name.
+    void setClips(PartId id, const rigmesh::Clip& active, std::vector<rigmesh::Clip> others);
+    // Throws rigmesh::Error on settings checkTimelineSettings refuses.
+    void setTimeline(const TimelineSettings& settings);
     // Applies `edit` to the part's clip in place, in O(log n) per key it
     // changes. Throws rigmesh::Error (nothing changed) when an added key names
     // a joint the skeleton does not have or the edit does not fit the clip
@@ -151,6 +184,9 @@ class Document : public QObject {
     void selectionChanged(const rigmesh::model::Selection& selection);
     void modifiedChanged(bool modified);
     void filePathChanged(const QString& path);
+    void currentFrameChanged(int frame);
+    void timelineChanged(const rigmesh::model::TimelineSettings& settings);
+    void autoKeyChanged(bool on);
 
   private:
     PartNode& mutablePart(PartId id);
@@ -162,6 +198,7 @@ class Document : public QObject {
     QString filePath_;
     QString untitledName_;
     std::map<PartId, rigmesh::Pose> posePreviewOrigins_;
+    bool autoKey_ = false;
 };
 
 }  // namespace rigmesh::model

@@ -2,8 +2,11 @@
 
 #include <Eigen/Geometry>
 
+#include <deque>
+
 #include "base/Error.h"
 #include "io/ExportFormat.h"
+#include "model/PartClips.h"
 #include "pose/ForwardKinematics.h"
 #include "pose/Skinning.h"
 
@@ -37,9 +40,15 @@ Part poseAsRest(const PartNode& node, SkinningMethod method) {
 
 DocumentExportResult exportDocument(const Document& document, const std::string& path,
                                     const ExportOptions& options, bool visibleOnly) {
+    return exportParts(document.parts(), path, options, visibleOnly);
+}
+
+DocumentExportResult exportParts(const std::vector<PartNode>& documentParts,
+                                 const std::string& path, const ExportOptions& options,
+                                 bool visibleOnly) {
     DocumentExportResult result;
     std::vector<const PartNode*> nodes;
-    for (const PartNode& node : document.parts())
+    for (const PartNode& node : documentParts)
         if (node.part && (node.visible || !visibleOnly))
             nodes.push_back(&node);
     if (nodes.empty())
@@ -59,9 +68,15 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
     const bool rigged = isRiggedFormat(exportFormatFromPath(path));
     const bool poseKey = !options.restPose && options.poseAsKey && rigged;
     const bool bakePose = !options.restPose && !poseKey && rigged;
+    auto hasKeys = [](const PartNode& node) {
+        for (const rigmesh::Clip* clip : clipsOf(node))
+            if (clip->keyCount() > 0)
+                return true;
+        return false;
+    };
     if ((bakePose || poseKey) && options.animation)
         for (const PartNode* node : nodes)
-            if (node->clip.keyCount() > 0)
+            if (hasKeys(*node))
                 result.warnings << (bakePose
                                         ? QObject::tr("the clip of \"%1\" is not exported: "
                                                       "the current pose is the file's rest "
@@ -82,7 +97,10 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
         }
         return part;
     };
-    // Every part with its own clip (issue 18 item 3), in document order.
+    // Every part with its own clips (issue 18 item 3), in document order;
+    // each clip by its name (an unnamed one is "Action"), so that the clips
+    // of several parts with one name are one animation (issue 15).
+    std::deque<rigmesh::Clip> named;
     std::vector<ExportPart> parts;
     for (const PartNode* node : nodes) {
         parts.push_back(exportPart(*node));
@@ -91,8 +109,19 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
             poseClips.back().name = node->name.toStdString() + "_pose";
             poseClips.back().setKey(0.0, node->pose);
             parts.back().clip = &poseClips.back();
-        } else if (!bakePose && node->clip.keyCount() > 0) {
-            parts.back().clip = &node->clip;
+            continue;
+        }
+        if (bakePose)
+            continue;
+        for (const rigmesh::Clip* clip : clipsOf(*node)) {
+            if (clip->keyCount() == 0)
+                continue;
+            named.push_back(*clip);
+            named.back().name = clipName(*clip);
+            if (clip == &node->clip)
+                parts.back().clip = &named.back();
+            else
+                parts.back().otherClips.push_back(&named.back());
         }
     }
     ExportOptions written = options;

@@ -1,7 +1,9 @@
 // Exports a document's parts through the engine's exporter (io/SceneExport):
 // every part at its placement and current pose, each its own skinned mesh
-// animated by its own clip (issue 18 item 3; its bones share one armature
-// node, SceneExport.h).
+// animated by its own clips (issue 18 item 3; its bones share one armature
+// node, SceneExport.h). Every clip with keys is written; the clips of all
+// parts with one name (clipName: "Action" when unnamed) are one animation
+// (issue 15).
 #pragma once
 
 #include <QStringList>
@@ -19,5 +21,8 @@ struct DocumentExportResult {
 // Throws rigmesh::Error (no parts, unknown format, write failure).
 DocumentExportResult exportDocument(const Document& document, const std::string& path,
                                     const ExportOptions& options = {}, bool visibleOnly = false);
+// The same from a copy of the parts (a background job's snapshot).
+DocumentExportResult exportParts(const std::vector<PartNode>& parts, const std::string& path,
+                                 const ExportOptions& options = {}, bool visibleOnly = false);
 
 }  // namespace rigmesh::model

@@ -14,9 +14,12 @@
 #include "base/JsonRead.h"
 #include "model/BoundedCbor.h"
 #include "model/ClipModes.h"
+#include "model/DocumentMigration.h"
 #include "model/DocumentNodeJson.h"
 #include "model/PartBuilder.h"
+#include "model/PartClips.h"
 #include "part/PartJson.h"
+#include "pose/LegacyPose.h"
 
 namespace rigmesh::model {
 
@@ -99,11 +102,7 @@ Enum readMode(const json& value, const char* what,
     corrupt(std::string("unknown ") + what + " \"" + name + "\"");
 }
 
-// Absent (files written before clips were stored): no keys at 24 fps.
-rigmesh::Clip readClip(const PartNode& node, const json& object) {
-    if (!object.contains("clip"))
-        return rigmesh::Clip();
-    const json& clip = field(object, "clip");
+rigmesh::Clip readClipValue(const PartNode& node, const json& clip) {
     const double fps = rawNumber(field(clip, "framesPerSecond"), "clip frame rate");
     if (!std::isfinite(fps) || !(fps > 0))
         corrupt("the clip frame rate of " + partLabel(node) + " is not positive");
@@ -126,6 +125,42 @@ rigmesh::Clip readClip(const PartNode& node, const json& object) {
     out.mode = readMode(field(clip, "playback"), "clip playback", &playbackFromName);
     if (clip.contains("name"))  // since issue 18
         out.name = text(field(clip, "name"), "clip name");
+    return out;
+}
+
+// Absent (files written before clips were stored): no keys at 24 fps.
+rigmesh::Clip readClip(const PartNode& node, const json& object) {
+    if (!object.contains("clip"))
+        return rigmesh::Clip();
+    return readClipValue(node, field(object, "clip"));
+}
+
+// The part's other named clips (format version 2), unique by name.
+std::vector<rigmesh::Clip> readOtherClips(const PartNode& node, const json& object) {
+    std::vector<rigmesh::Clip> out;
+    for (const json& clip : array(object, "otherClips"))
+        out.push_back(readClipValue(node, clip));
+    try {
+        checkClipNamesUnique(node.clip, out);
+    } catch (const Error& e) {
+        corrupt(partLabel(node) + ": " + e.what());
+    }
+    return sortedByName(std::move(out));
+}
+
+TimelineSettings readTimeline(const json& root, int& currentFrame) {
+    const json& timeline = field(root, "timeline");
+    TimelineSettings out;
+    out.startFrame = integer<int>(field(timeline, "startFrame"), "timeline start frame");
+    out.endFrame = integer<int>(field(timeline, "endFrame"), "timeline end frame");
+    out.framesPerSecond = number(field(timeline, "framesPerSecond"), "timeline frame rate");
+    currentFrame = integer<int>(field(timeline, "currentFrame"), "current frame");
+    try {
+        checkTimelineSettings(out);
+        checkFrame(currentFrame);
+    } catch (const Error& e) {
+        corrupt(std::string("the timeline: ") + e.what());
+    }
     return out;
 }
 
@@ -173,10 +208,22 @@ PartNode readNode(const json& object) {
     node.pose = readPose(node, object);
     node.pinnedJoints = readPinned(node, object);
     node.clip = readClip(node, object);
+    node.otherClips = readOtherClips(node, object);
     return node;
 }
 
-DocumentContents readContents(const json& root) {
+// Version 1 stored one rotation per joint, turning every bone leaving it:
+// the same bone transforms as per-bone rotations (pose/LegacyPose.h). A
+// version 1 part has one clip (the migration gives it no other).
+void convertJointRotations(PartNode& node) {
+    if (!node.part || !node.part->skeleton.hasJoint(node.part->skeleton.root()))
+        return;
+    const PoseHierarchy hierarchy(node.part->skeleton);
+    node.pose = poseFromJointRotations(hierarchy, node.pose);
+    node.clip = clipFromJointRotations(hierarchy, node.clip);
+}
+
+DocumentContents readContents(json root) {
     if (!root.is_object() || !root.contains("format") || !root["format"].is_string() ||
         root["format"].get<std::string>() != DocumentFile::kFormatName)
         fail(tr("This is not a RigMesh Studio document."));
@@ -190,12 +237,17 @@ DocumentContents readContents(const json& root) {
                  .arg(version)
                  .arg(DocumentFile::kFormatVersion));
 
+    migrateDocument(root, version);
+
     DocumentContents contents;
+    contents.timeline = readTimeline(root, contents.currentFrame);
     std::set<PartId> ids;
     for (const json& node : array(root, "parts")) {
         contents.parts.push_back(readNode(node));
         if (!ids.insert(contents.parts.back().id).second)
             corrupt("two parts have the same id");
+        if (version < 2)
+            convertJointRotations(contents.parts.back());
     }
     contents.nextPartId = integer<PartId>(field(root, "nextPartId"), "next part id");
     if (contents.nextPartId == kNoPart || (!ids.empty() && contents.nextPartId <= *ids.rbegin()))
@@ -211,6 +263,11 @@ QByteArray toBytes(const DocumentContents& contents) {
     json root = {{"format", kFormatName},
                  {"version", kFormatVersion},
                  {"nextPartId", contents.nextPartId},
+                 {"timeline",
+                  {{"startFrame", contents.timeline.startFrame},
+                   {"endFrame", contents.timeline.endFrame},
+                   {"framesPerSecond", contents.timeline.framesPerSecond},
+                   {"currentFrame", contents.currentFrame}}},
                  {"parts", json::array()}};
     for (const PartNode& node : contents.parts)
         root["parts"].push_back(documentNodeJson(node));
@@ -236,7 +293,7 @@ DocumentContents fromBytes(const QByteArray& bytes) {
         corrupt(e.what());
     }
     try {
-        return readContents(root);
+        return readContents(std::move(root));
     } catch (const json::exception& e) {
         corrupt(e.what());
     } catch (const DocumentFileError&) {

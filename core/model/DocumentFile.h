@@ -1,18 +1,28 @@
 // The native document file (.rigmesh): CBOR (RFC 8949) of one map
-//   {"format": "rigmesh-studio-document", "version": 1, "nextPartId": n,
+//   {"format": "rigmesh-studio-document", "version": 3, "nextPartId": n,
+//    "timeline": {startFrame, endFrame, framesPerSecond, currentFrame},
 //    "parts": [ {id, name, visible, placement, stroke, options, part: {...},
 //                pose: {rotations: [[joint, w, x, y, z], ...], rootTranslation},
 //                pinned: [joint, ...],
-//                clip: {framesPerSecond, interpolation: "linear" | "smooth",
-//                       playback: "hold" | "loop",
-//                       keys: [{time, pose: {rotations, rootTranslation}}, ...]}} ]}
+//                clip: {name, framesPerSecond,
+//                       interpolation: "constant" | "linear" | "smooth",
+//                       playback: "hold" | "loop" | "ping_pong",
+//                       keys: [{time, pose: {rotations, rootTranslation}}, ...]},
+//                otherClips: [clip, ...]} ]}
 // where part holds everything of the engine Part: name, outline, mesh
 // (vertices, faces), origins, mirror, skeleton (joints with ids, bones with
 // ids, root), skin weights and the known closest bones. pose and pinned are
 // optional when reading (a part without them loads in its rest pose, unpinned);
 // their joint ids must be joints of the part's skeleton and the quaternions
-// finite and non-zero. clip is optional too (absent: no keys at 24 frames per
+// finite and non-zero. Pose rotations are per bone, keyed by the joint each
+// bone ends at (the root: the whole skeleton), since version 2; version 1
+// files stored one rotation per joint turning every bone leaving it, and
+// load converted exactly (pose/LegacyPose.h): same bone transforms, same
+// deformed surface. clip is optional too (absent: no keys at 24 frames per
 // second); its keys are in time order, their poses checked like the pose.
+// clip is the active clip, otherClips the part's other named clips; names
+// are unique within a part. Files before version 3 (no timeline, no
+// otherClips) are migrated on reading (DocumentMigration.h).
 //
 // Why CBOR: doubles are stored as IEEE binary64 (or binary32 when that is
 // exact), so they round-trip bit for bit without decimal printing; meshes are
@@ -48,7 +58,10 @@ class DocumentFileError : public rigmesh::Error {
 namespace DocumentFile {
 
 inline constexpr const char* kFormatName = "rigmesh-studio-document";
-inline constexpr int kFormatVersion = 1;
+// 2: per-bone pose rotations (version 1 files are converted on loading);
+// 3: the timeline and named clips (issue 15; DocumentMigration.h adds them
+// to older files).
+inline constexpr int kFormatVersion = 3;
 inline constexpr const char* kSuffix = "rigmesh";
 
 QByteArray toBytes(const DocumentContents& contents);

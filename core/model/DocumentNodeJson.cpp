@@ -54,6 +54,9 @@ json documentNodeJson(const PartNode& node) {
     for (const JointId joint : node.pinnedJoints)
         out["pinned"].push_back(joint);
     out["clip"] = clipJson(node.clip);
+    out["otherClips"] = json::array();
+    for (const rigmesh::Clip& clip : node.otherClips)
+        out["otherClips"].push_back(clipJson(clip));
     return out;
 }
 

@@ -32,10 +32,15 @@ std::shared_ptr<const Part> buildPart(const std::vector<Vec2>& stroke, const QSt
 
 BuiltPart buildPartForDocument(const Document& document, const std::vector<Vec2>& stroke,
                                const QString& name, const BuildOptions& options) {
+    return buildPartAtDocumentLength(documentEdgeLength(document), stroke, name, options);
+}
+
+BuiltPart buildPartAtDocumentLength(double documentLength, const std::vector<Vec2>& stroke,
+                                    const QString& name, const BuildOptions& options) {
     checkBuildOptions(stroke, options);
     BuildOptions used = options;
     if (used.targetEdgeLength == 0.0)
-        used.targetEdgeLength = documentEdgeLength(document);
+        used.targetEdgeLength = documentLength;
     auto build = [&](const BuildOptions& o) {
         SketchToPartResult result = sketchToPart(stroke, name.toStdString(), engineOptions(o));
         used.targetEdgeLength = result.surface.targetEdgeLength;

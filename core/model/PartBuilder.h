@@ -38,6 +38,10 @@ struct BuiltPart {
 // the length used. Throws as buildPart does.
 BuiltPart buildPartForDocument(const Document& document, const std::vector<Vec2>& stroke,
                                const QString& name, const BuildOptions& options);
+// The same given the document's edge length: touches no document, so a
+// background job can run it (widgets/jobs).
+BuiltPart buildPartAtDocumentLength(double documentLength, const std::vector<Vec2>& stroke,
+                                    const QString& name, const BuildOptions& options);
 
 // The edge length the document's sketched parts share: the first sketched
 // part's; 0 if there is none or it was built with the automatic length by an

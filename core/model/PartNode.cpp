@@ -20,8 +20,8 @@ bool identicalPoses(const rigmesh::Pose& a, const rigmesh::Pose& b) {
 }
 
 bool identicalClips(const rigmesh::Clip& a, const rigmesh::Clip& b) {
-    if (a.framesPerSecond() != b.framesPerSecond() || a.interpolation != b.interpolation ||
-        a.mode != b.mode || a.keyCount() != b.keyCount())
+    if (a.name != b.name || a.framesPerSecond() != b.framesPerSecond() ||
+        a.interpolation != b.interpolation || a.mode != b.mode || a.keyCount() != b.keyCount())
         return false;
     auto j = b.keys().begin();
     for (auto i = a.keys().begin(); i != a.keys().end(); ++i, ++j) {
@@ -35,6 +35,7 @@ rigmesh::Clip emptiedClip(const rigmesh::Clip& clip) {
     rigmesh::Clip out(clip.framesPerSecond());
     out.interpolation = clip.interpolation;
     out.mode = clip.mode;
+    out.name = clip.name;
     return out;
 }
 

@@ -57,7 +57,11 @@ struct PartNode {
     std::set<rigmesh::JointId> pinnedJoints;
     // Keyframed poses of this part (every joint id in every key is a joint of
     // part->skeleton). A new part has no keys at 24 frames per second.
+    // This is the part's active clip: the one keyed, played and posed from.
     rigmesh::Clip clip = rigmesh::Clip();  // (Clip's default constructor is explicit)
+    // The part's other named clips ("idle", "walk"; issue 15), sorted by name;
+    // every clip name of the part (clipName) is unique (PartClips.h).
+    std::vector<rigmesh::Clip> otherClips;
 };
 
 // The rest pose of a node: restPose(skeleton), or an empty Pose without a part.
@@ -65,10 +69,10 @@ rigmesh::Pose restPoseOf(const PartNode& node);
 // Exact (bitwise value) equality: same joints, same quaternion coefficients,
 // same root translation.
 bool identicalPoses(const rigmesh::Pose& a, const rigmesh::Pose& b);
-// Exact equality of clips: frame rate, interpolation, playback mode and
+// Exact equality of clips: name, frame rate, interpolation, playback mode and
 // every key (bitwise time, identicalPoses).
 bool identicalClips(const rigmesh::Clip& a, const rigmesh::Clip& b);
-// The clip without its keys: the same frame rate and modes.
+// The clip without its keys: the same name, frame rate and modes.
 rigmesh::Clip emptiedClip(const rigmesh::Clip& clip);
 // The user-facing name of a joint ("Joint 3").
 QString jointDisplayName(rigmesh::JointId joint);

@@ -29,10 +29,27 @@ rigmesh::Pose filtered(const rigmesh::Pose& pose, const std::set<JointId>& kept,
     return out;
 }
 
+std::vector<const rigmesh::Clip*> clipPointers(const rigmesh::Clip& clip,
+                                               const std::vector<rigmesh::Clip>& others) {
+    std::vector<const rigmesh::Clip*> out{&clip};
+    for (const rigmesh::Clip& other : others)
+        out.push_back(&other);
+    return out;
+}
+
+rigmesh::Clip filteredClip(const rigmesh::Clip& clip, const std::set<JointId>& kept,
+                           bool rootKept) {
+    rigmesh::Clip out = emptiedClip(clip);
+    for (const auto& [time, key] : clip.keys())
+        out.insertExactKey(time, filtered(key, kept, rootKept));
+    return out;
+}
+
 }  // namespace
 
 CarriedRig carryRigOver(const Skeleton& from, const Skeleton& to, const rigmesh::Pose& pose,
-                        const std::set<JointId>& pinned, const rigmesh::Clip& clip) {
+                        const std::set<JointId>& pinned, const rigmesh::Clip& clip,
+                        const std::vector<rigmesh::Clip>& otherClips) {
     const std::set<JointId> kept = survivingJoints(from, to);
     const bool rootKept = from.root() == to.root() && kept.contains(from.root());
 
@@ -40,21 +57,19 @@ CarriedRig carryRigOver(const Skeleton& from, const Skeleton& to, const rigmesh:
     std::set<JointId> touched(pinned.begin(), pinned.end());
     for (const auto& [joint, rotation] : pose.rotations)
         touched.insert(joint);
-    for (const auto& [time, key] : clip.keys())
-        for (const auto& [joint, rotation] : key.rotations)
-            touched.insert(joint);
+    for (const rigmesh::Clip* keyed : clipPointers(clip, otherClips))
+        for (const auto& [time, key] : keyed->keys())
+            for (const auto& [joint, rotation] : key.rotations)
+                touched.insert(joint);
 
     CarriedRig out;
     out.pose = filtered(pose, kept, rootKept);
     for (JointId joint : pinned)
         if (kept.contains(joint))
             out.pinned.insert(joint);
-    out.clip = rigmesh::Clip(clip.framesPerSecond());
-    out.clip.interpolation = clip.interpolation;
-    out.clip.mode = clip.mode;
-    out.clip.name = clip.name;
-    for (const auto& [time, key] : clip.keys())
-        out.clip.insertExactKey(time, filtered(key, kept, rootKept));
+    out.clip = filteredClip(clip, kept, rootKept);
+    for (const rigmesh::Clip& other : otherClips)
+        out.otherClips.push_back(filteredClip(other, kept, rootKept));
     for (JointId joint : touched)
         (kept.contains(joint) ? out.keptJoints : out.droppedJoints) += 1;
     return out;
@@ -65,10 +80,11 @@ PartNode editedNode(const PartNode& from, std::shared_ptr<const Part> part, int*
     node.stroke.clear();
     node.part = std::move(part);
     const CarriedRig carried = carryRigOver(from.part->skeleton, node.part->skeleton, from.pose,
-                                            from.pinnedJoints, from.clip);
+                                            from.pinnedJoints, from.clip, from.otherClips);
     node.pose = carried.pose;
     node.pinnedJoints = carried.pinned;
     node.clip = carried.clip;
+    node.otherClips = carried.otherClips;
     if (droppedJoints)
         *droppedJoints = carried.droppedJoints;
     return node;

@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <set>
+#include <vector>
 
 #include "part/Part.h"
 #include "pose/Clip.h"
@@ -19,13 +20,15 @@ struct CarriedRig {
     rigmesh::Pose pose;
     std::set<rigmesh::JointId> pinned;
     rigmesh::Clip clip = rigmesh::Clip();
-    int keptJoints = 0;     // posed, pinned or keyed joints kept
-    int droppedJoints = 0;  // posed, pinned or keyed joints the new skeleton lacks
+    std::vector<rigmesh::Clip> otherClips;  // the part's other named clips, filtered alike
+    int keptJoints = 0;                     // posed, pinned or keyed joints kept
+    int droppedJoints = 0;                  // posed, pinned or keyed joints the new skeleton lacks
 };
 
 CarriedRig carryRigOver(const rigmesh::Skeleton& from, const rigmesh::Skeleton& to,
                         const rigmesh::Pose& pose, const std::set<rigmesh::JointId>& pinned,
-                        const rigmesh::Clip& clip);
+                        const rigmesh::Clip& clip,
+                        const std::vector<rigmesh::Clip>& otherClips = {});
 
 struct PartNode;
 

@@ -8,6 +8,7 @@ uniform vec3 baseColour;
 uniform float highlight;  // 0 = normal, 1 = selected
 uniform int flatColour;   // 1: baseColour as is (the selection outline)
 uniform int weightView;   // > 0: the vertex's weight colour replaces baseColour
+uniform float opacity;    // below 1: a translucent onion-skin ghost
 
 out vec4 fragColour;
 
@@ -26,5 +27,5 @@ void main() {
     float light = weightView > 0 ? 0.45 + 0.55 * diffuse : 0.25 + 0.75 * diffuse;
     vec3 colour = base * light + vec3(0.12) * specular;
     if (weightView == 0) colour = mix(colour, vec3(1.0, 0.62, 0.2), 0.25 * highlight);
-    fragColour = vec4(colour, 1.0);
+    fragColour = vec4(colour, opacity);
 }

@@ -299,7 +299,8 @@ TEST(DocumentFile, NewerVersionIsRejectedWithAClearMessage) {
     json::to_cbor(root, out);
     expectRejected(
         QByteArray(reinterpret_cast<const char*>(out.data()), static_cast<qsizetype>(out.size())),
-        "newer RigMesh Studio (format version 2)");
+        "newer RigMesh Studio (format version " + std::to_string(DocumentFile::kFormatVersion + 1) +
+            ")");
 }
 
 TEST(DocumentFile, LoadFailureOpensNothingAndNamesTheFile) {

@@ -127,9 +127,9 @@ namespace {
 // gives the part back byte for byte; the history replays exactly.
 TEST(CutPartCommand, IsOneUndoStepAndUndoRestoresThePartExactly) {
     Document document;
-    runSteps(document, {{{"command", "sketch"},
-                         {"points", pointsOf(sharedStroke("tube"))},
-                         {"name", "tube"}}});
+    runSteps(
+        document,
+        {{{"command", "sketch"}, {"points", pointsOf(sharedStroke("tube"))}, {"name", "tube"}}});
     const QByteArray before = bytesOf(document);
     const int count = document.undoStack()->count();
     const PartId next = document.nextPartId();
@@ -160,9 +160,9 @@ TEST(CutPartCommand, IsOneUndoStepAndUndoRestoresThePartExactly) {
 
 TEST(CutPartCommand, AStrokeInAViewCutsAndABadCutChangesNothing) {
     Document document;
-    runSteps(document, {{{"command", "sketch"},
-                         {"points", pointsOf(sharedStroke("tube"))},
-                         {"name", "tube"}}});
+    runSteps(
+        document,
+        {{{"command", "sketch"}, {"points", pointsOf(sharedStroke("tube"))}, {"name", "tube"}}});
     const QByteArray before = bytesOf(document);
     // A stroke beside the part: refused, nothing changes.
     EXPECT_NE(stepError(document, {{{"command", "cut"},

@@ -174,7 +174,7 @@ TEST_P(RecipeHistory, RandomHistoryReplaysToTheSameBytes) {
     ASSERT_GT(document.partCount(), 0);
     const json recipe = recipeFromHistory(document);
     EXPECT_EQ(recipe["format"], "rigmesh-recipe");
-    EXPECT_EQ(recipe["version"], 1);
+    EXPECT_EQ(recipe["version"], RecipeFile::kFormatVersion);
     EXPECT_GE(recipe["steps"].size(), static_cast<std::size_t>(document.undoStack()->index()));
     std::map<std::string, int> kinds;
     for (const json& step : recipe["steps"])

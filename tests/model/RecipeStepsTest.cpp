@@ -279,7 +279,8 @@ TEST(RecipeSteps, ErrorsNameTheStepItsCommandAndTheReason) {
         {{{"command", "clip_settings"}, {"part", 1}, {"frameRate", 0}},
          "step 1 (clip_settings): A clip's frame rate must be a positive number"},
         {{{"command", "clip_settings"}, {"part", 1}, {"interpolation", "cubic"}},
-         "step 1 (clip_settings): \"interpolation\" must be \"linear\" or \"smooth\""},
+         "step 1 (clip_settings): \"interpolation\" must be \"constant\", \"linear\" or "
+         "\"smooth\""},
     };
     const QByteArray before = bytesOf(s.document);
     for (const Case& c : cases) {
@@ -338,8 +339,9 @@ TEST(RecipeSteps, BadRecipesAreRejectedBeforeAnyStep) {
         return std::string();
     };
     EXPECT_EQ(message(json::array()).rfind("this is not a RigMesh recipe", 0), 0u);
-    EXPECT_EQ(message({{"format", "rigmesh-recipe"}, {"version", 2}, {"steps", json::array()}})
-                  .rfind("the recipe is of version 2", 0),
+    const int newer = RecipeFile::kFormatVersion + 1;
+    EXPECT_EQ(message({{"format", "rigmesh-recipe"}, {"version", newer}, {"steps", json::array()}})
+                  .rfind("the recipe is of version " + std::to_string(newer), 0),
               0u);
     EXPECT_EQ(message({{"format", "rigmesh-recipe"}, {"version", 1}}),
               "the recipe has no list of \"steps\"");

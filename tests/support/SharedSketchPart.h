@@ -1,5 +1,6 @@
 // The rigged part of a shared sketch (sketchToPart with default options),
-// built once per test binary.
+// built once per test binary. Sketches kept with the tests
+// (tests/data/sketches: "quadruped") are found too.
 #pragma once
 
 #include <map>
@@ -10,11 +11,19 @@
 
 namespace rigmesh::testsupport {
 
+inline std::string testDataSketchPath(const std::string& name) {
+    return std::string(RIGMESH_TEST_DATA) + "/sketches/" + name + ".json";
+}
+
 inline const Part& sharedSketchPart(const std::string& sketch) {
     static std::map<std::string, Part> cache;
     auto found = cache.find(sketch);
-    if (found == cache.end())
-        found = cache.emplace(sketch, sketchToPart(sharedSketchPoints(sketch), sketch).part).first;
+    if (found == cache.end()) {
+        const std::string path = std::filesystem::exists(sharedSketchPath(sketch))
+                                     ? sharedSketchPath(sketch)
+                                     : testDataSketchPath(sketch);
+        found = cache.emplace(sketch, sketchToPart(readSketchFile(path).points, sketch).part).first;
+    }
     return found->second;
 }
 

@@ -27,8 +27,10 @@
 #include "model/commands/CreatePartCommand.h"
 #include "model/commands/ImportPartsCommand.h"
 #include "panels/OutlinerPanel.h"
+#include "pose/PoseHierarchy.h"
 #include "pose/Skinning.h"
 #include "sketch/Sketch.h"
+#include "viewport/ViewMath.h"
 
 namespace rigmesh {
 namespace {
@@ -65,6 +67,66 @@ class Studio : public testing::Test {
                 hand = joint.id;
             }
         return hand;
+    }
+    // The quadruped kept with the tests (tests/data/sketches) as a part,
+    // framed: its id.
+    model::PartId addQuadruped() {
+        const Sketch sketch =
+            readSketchFile(std::string(RIGMESH_TEST_DATA) + "/sketches/quadruped.json");
+        document()->undoStack()->push(
+            model::CreatePartCommand::create(*document(), sketch.points, "quadruped").release());
+        viewport()->frameAll();
+        return document()->parts().front().id;
+    }
+    // The joint below the nearest junction (or the root) on the way up from
+    // `joint`: the first joint a limb drag of `joint` moves.
+    static JointId limbTop(const Skeleton& skeleton, JointId joint) {
+        const PoseHierarchy h(skeleton);
+        int top = h.indexOf(joint);
+        while (h.parent(h.parent(top)) >= 0 && h.children(h.parent(top)).size() == 1)
+            top = h.parent(top);
+        return h.jointId(top);
+    }
+    // Bone indices of the subtree below `joint`, the bone ending at it
+    // included: every bone a turn of that bone moves.
+    static std::set<int> bonesFrom(const Skeleton& skeleton, JointId joint) {
+        const PoseHierarchy h(skeleton);
+        std::vector<bool> below(h.jointCount(), false);
+        for (int j : h.parentFirstOrder())
+            below[j] = h.jointId(j) == joint || (h.parent(j) >= 0 && below[h.parent(j)]);
+        std::set<int> bones;
+        for (int b = 0; b < h.boneCount(); ++b)
+            if (below[h.boneTailJoint(b)])
+                bones.insert(b);
+        return bones;
+    }
+    // How many of the vertices weighted only by bones outside `moving` moved
+    // from the rest shape in the part's current pose; `checked` counts them.
+    int movedOutside(model::PartId id, const std::set<int>& moving, int& checked) const {
+        const model::PartNode& node = document()->part(id);
+        const std::vector<Vec3> posed = posePart(*node.part, node.pose).mesh.vertices;
+        int moved = 0;
+        checked = 0;
+        for (std::size_t v = 0; v < posed.size(); ++v) {
+            bool outside = true;
+            for (const auto& [bone, w] : node.part->weights.perVertex[v])
+                outside = outside && !moving.contains(bone);
+            if (!outside)
+                continue;
+            ++checked;
+            moved += (posed[v] - node.part->mesh.vertices[v]).norm() > 1e-9 ? 1 : 0;
+        }
+        return moved;
+    }
+    // A screen drag of `joint` by (dx, dy) pixels in ten steps.
+    void dragJointBy(model::PartId id, JointId joint, double dx, double dy,
+                     Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+        const QVector3D at = viewport()->camera().project(viewport()->jointWorldPosition(id, joint),
+                                                          QSizeF(viewport()->size()));
+        std::vector<QPointF> path;
+        for (int i = 0; i <= 10; ++i)
+            path.emplace_back(at.x() + dx * i / 10, at.y() + dy * i / 10);
+        drag(viewport(), path, modifiers);
     }
     // Sketches a long ellipse across the viewport: the new part's id.
     model::PartId sketchEllipse() {
@@ -156,6 +218,7 @@ TEST_F(Studio, MouseStrokeInTheViewportCreatesARiggedPart) {
         test::sendMouse(viewport(), QEvent::MouseMove, stroke[i], Qt::NoButton, Qt::LeftButton);
     test::sendMouse(viewport(), QEvent::MouseButtonRelease, stroke.back(), Qt::LeftButton,
                     Qt::NoButton);
+    test::waitForJobs();  // the part is built in the background
     ASSERT_EQ(document()->partCount(), 1);
     const model::PartNode& node = document()->parts().front();
     EXPECT_GT(node.part->mesh.vertexCount(), 100);
@@ -282,11 +345,24 @@ TEST_F(Studio, TypedJointRotationPosesTheJointOneUndoStepPerValue) {
     EXPECT_FALSE(x->isVisibleTo(window.get()));
 }
 
+// Sweeps the cursor `degrees` around `pivot` from `from` (pixels).
+std::vector<QPointF> sweep(const QPointF& pivot, const QPointF& from, double degrees) {
+    std::vector<QPointF> arc;
+    const QPointF arm = from - pivot;
+    for (int i = 0; i <= 10; ++i) {
+        const double a = qDegreesToRadians(degrees * i / 10);
+        arc.emplace_back(pivot.x() + arm.x() * std::cos(a) - arm.y() * std::sin(a),
+                         pivot.y() + arm.x() * std::sin(a) + arm.y() * std::cos(a));
+    }
+    return arc;
+}
+
 TEST_F(Studio, DraggingABoneAnywhereTurnsItAboutItsHead) {
     const model::PartId id = sketchEllipse();
     ASSERT_NE(id, model::kNoPart);
     const Skeleton& skeleton = document()->part(id).part->skeleton;
-    // A bone whose head is not the root: FK turns its head joint only.
+    // A bone whose head is not the root: FK turns that bone only, by the
+    // rotation of the joint it ends at.
     const Bone* grabbed = nullptr;
     for (const Bone& bone : skeleton.bones())
         if (bone.head != skeleton.root())
@@ -303,26 +379,52 @@ TEST_F(Studio, DraggingABoneAnywhereTurnsItAboutItsHead) {
     const QPointF pivot(head.x(), head.y());
     ASSERT_FALSE(viewport()->jointAt(middle).has_value()) << "the bone's middle is no joint";
     const int stepsBefore = document()->undoStack()->count();
-    // Sweep 30 degrees around the head on screen.
-    std::vector<QPointF> arc;
-    const QPointF arm = middle - pivot;
-    for (int i = 0; i <= 10; ++i) {
-        const double a = qDegreesToRadians(3.0 * i);
-        arc.emplace_back(pivot.x() + arm.x() * std::cos(a) - arm.y() * std::sin(a),
-                         pivot.y() + arm.x() * std::sin(a) + arm.y() * std::cos(a));
-    }
-    drag(viewport(), arc);
+    drag(viewport(), sweep(pivot, middle, 30.0));
     EXPECT_EQ(document()->undoStack()->count(), stepsBefore + 1) << "one drag, one undo step";
     const rigmesh::Pose& pose = document()->part(id).pose;
-    EXPECT_NEAR(pose.rotation(grabbed->head).angularDistance(Eigen::Quaterniond::Identity()),
+    EXPECT_NEAR(pose.rotation(grabbed->tail).angularDistance(Eigen::Quaterniond::Identity()),
                 qDegreesToRadians(30.0), qDegreesToRadians(3.0));  // perspective
     for (const auto& [joint, q] : pose.rotations) {
-        if (joint != grabbed->head) {
+        if (joint != grabbed->tail) {
             EXPECT_NEAR(q.angularDistance(Eigen::Quaterniond::Identity()), 0.0, 1e-12)
                 << "joint " << joint << " turned";
         }
     }
-    EXPECT_EQ(document()->selection().joint, grabbed->head) << "the turned joint is selected";
+    EXPECT_EQ(document()->selection().joint, grabbed->tail)
+        << "the joint standing for the turned bone is selected";
+}
+
+// Issue 11 item 5, FK by bone at a junction: turning the biped's upper arm
+// (the bone leaving the chest) moves its arm only, never the head, the
+// other arm or the body.
+TEST_F(Studio, TurningABoneLeavingAJunctionMovesNoSibling) {
+    const model::PartId id = addExampleBiped();
+    const Skeleton& skeleton = document()->part(id).part->skeleton;
+    const JointId shoulder = limbTop(skeleton, sidewaysHand(skeleton));
+    const JointId chest = widgets::poseParent(skeleton, shoulder);
+    ASSERT_GE(skeleton.degree(chest), 3) << "the upper arm leaves a junction";
+    window->activatePoseTool();
+    QTest::qWait(50);
+    const QSizeF size(viewport()->size());
+    const QVector3D head =
+        viewport()->camera().project(viewport()->jointWorldPosition(id, chest), size);
+    const QVector3D tail =
+        viewport()->camera().project(viewport()->jointWorldPosition(id, shoulder), size);
+    const QPointF middle((head.x() + tail.x()) / 2, (head.y() + tail.y()) / 2);
+    ASSERT_FALSE(viewport()->jointAt(middle).has_value());
+    drag(viewport(), sweep(QPointF(head.x(), head.y()), middle, -35.0));
+    const rigmesh::Pose& pose = document()->part(id).pose;
+    EXPECT_GT(pose.rotation(shoulder).angularDistance(Eigen::Quaterniond::Identity()),
+              qDegreesToRadians(25.0));
+    for (const auto& [joint, q] : pose.rotations)
+        if (joint != shoulder) {
+            EXPECT_EQ(q.coeffs(), Eigen::Quaterniond::Identity().coeffs()) << "joint " << joint;
+        }
+    int checked = 0;
+    EXPECT_EQ(movedOutside(id, bonesFrom(skeleton, shoulder), checked), 0);
+    EXPECT_GT(checked, static_cast<int>(document()->part(id).part->mesh.vertexCount()) / 2);
+    EXPECT_EQ(document()->selection().joint, shoulder);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_pose_fk_junction.png"));
 }
 
 TEST_F(Studio, PoseToolOptionReachesThroughTheWholeBody) {
@@ -335,7 +437,8 @@ TEST_F(Studio, PoseToolOptionReachesThroughTheWholeBody) {
     EXPECT_TRUE(wholeBody->isVisibleTo(window.get())) << "the Tool Options dock shows it";
     wholeBody->setChecked(true);
     // A hand (the leaf farthest sideways), dragged: with the option on, the
-    // chain passes its junction, so a joint of degree 3 or more turns.
+    // chain passes its junction, so the bone ending at a joint of degree 3
+    // or more (the spine, into the chest) turns.
     const JointId hand = sidewaysHand(skeleton);
     const QVector3D at = viewport()->camera().project(viewport()->jointWorldPosition(id, hand),
                                                       QSizeF(viewport()->size()));
@@ -381,70 +484,77 @@ TEST_F(Studio, DraggingTheRingOfTheSelectedJointTurnsIt) {
     EXPECT_NEAR(turned, qDegreesToRadians(40.0), qDegreesToRadians(4.0));
 }
 
-TEST_F(Studio, DraggingAHandMovesNoVertexOfTheOtherLimbs) {
+// Issue 11 items 2 and 5: a plain drag of a hand turns its arm's bones up to
+// and including the one leaving the chest, and no vertex weighted only by
+// other bones (the other arm, the head, the body, the legs) moves; with Alt
+// the chain reaches the root, so the chest turns and the other arm and the
+// head move with it.
+TEST_F(Studio, DraggingAHandMovesNoVertexOutsideItsArmUnlessAltIsHeld) {
     const model::PartId id = addExampleBiped();
-    const Part& part = *document()->part(id).part;
-    const Skeleton& skeleton = part.skeleton;
-    // Each leaf's limb: the bones from it up to the first junction.
-    auto limbOf = [&](JointId leaf) {
-        std::set<int> bones;
-        for (JointId j = leaf; j != skeleton.root() && (j == leaf || skeleton.degree(j) == 2);) {
-            const Bone* up = nullptr;
-            for (const Bone& bone : skeleton.bones())
-                if (bone.tail == j)
-                    up = &bone;
-            if (!up)
-                break;
-            bones.insert(skeleton.indexOfBone(up->id));
-            j = up->head;
-        }
-        return bones;
-    };
+    const Skeleton& skeleton = document()->part(id).part->skeleton;
     const JointId hand = sidewaysHand(skeleton);
-    std::set<int> otherLimbs;
-    for (const Joint& joint : skeleton.joints())
-        if (skeleton.degree(joint.id) == 1 && joint.id != hand)
-            for (int bone : limbOf(joint.id))
-                otherLimbs.insert(bone);
-    ASSERT_FALSE(limbOf(hand).empty());
-    ASSERT_FALSE(otherLimbs.empty());
+    const JointId shoulder = limbTop(skeleton, hand);
+    ASSERT_NE(shoulder, hand) << "the arm has two bones";
+    const std::set<int> arm = bonesFrom(skeleton, shoulder);
     window->activatePoseTool();
     QTest::qWait(50);
-    const QVector3D at = viewport()->camera().project(viewport()->jointWorldPosition(id, hand),
-                                                      QSizeF(viewport()->size()));
-    std::vector<QPointF> path;
-    for (int i = 0; i <= 10; ++i)
-        path.emplace_back(at.x() - 3.0 * i, at.y() - 6.0 * i);
-    drag(viewport(), path);
+    const QVector3D shoulderBefore = viewport()->jointWorldPosition(id, shoulder);
+    dragJointBy(id, hand, -30.0, -60.0);
     ASSERT_FALSE(document()->part(id).pose.rotations.empty());
-    const std::vector<Vec3> posed = posePart(part, document()->part(id).pose).mesh.vertices;
-    // Every vertex of another limb (its largest weight on one of that limb's
-    // bones) that the dragged limb's bones do not weight stays exactly where
-    // it was: the drag turned nothing else. (Vertices blended with the
-    // dragged limb at its junction move with it, as they should.)
-    const std::set<int> dragged = limbOf(hand);
-    int checked = 0, blended = 0, moved = 0;
-    for (std::size_t v = 0; v < posed.size(); ++v) {
-        const auto& list = part.weights.perVertex[v];
-        const auto dominant =
-            std::max_element(list.begin(), list.end(),
-                             [](const auto& a, const auto& b) { return a.second < b.second; });
-        if (dominant == list.end() || !otherLimbs.contains(dominant->first))
-            continue;
-        bool weightedByDragged = false;
-        for (const auto& [bone, w] : list)
-            weightedByDragged = weightedByDragged || dragged.contains(bone);
-        if (weightedByDragged) {
-            ++blended;
-            continue;
+    int checked = 0;
+    const int moved = movedOutside(id, arm, checked);
+    std::fprintf(stderr, "vertices weighted only outside the dragged arm: %d, moved %d\n", checked,
+                 moved);
+    EXPECT_EQ(moved, 0) << "vertices outside the arm moved (of " << checked << ")";
+    EXPECT_GT(checked, static_cast<int>(document()->part(id).part->mesh.vertexCount()) / 2);
+    EXPECT_GT((viewport()->jointWorldPosition(id, shoulder) - shoulderBefore).length(), 1e-4f)
+        << "the arm's first bone, leaving the chest, turned too";
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_pose_limb.png"));
+
+    // Alt: whole-body reach, the other arm and the head come along.
+    document()->undoStack()->undo();
+    dragJointBy(id, hand, -30.0, -60.0, Qt::AltModifier);
+    EXPECT_GT(movedOutside(id, arm, checked), 0) << "Alt + drag moved nothing outside the arm";
+    for (const Joint& joint : skeleton.joints())
+        if (skeleton.degree(joint.id) == 1 && joint.id != hand && joint.position.y() > 0) {
+            const QVector3D rest = QVector3D(joint.position.x(), joint.position.y(), 0);
+            EXPECT_GT((viewport()->jointWorldPosition(id, joint.id) - rest).length(), 1e-4f)
+                << "joint " << joint.id << " (the other hand or the head) stayed with Alt";
         }
-        ++checked;
-        moved += (posed[v] - part.mesh.vertices[v]).norm() > 1e-9 ? 1 : 0;
-    }
-    std::fprintf(stderr, "other-limb vertices: %d untouched by the dragged limb, %d blended\n",
-                 checked, blended);
-    EXPECT_GT(checked, static_cast<int>(posed.size()) / 5);
-    EXPECT_EQ(moved, 0) << "vertices of the other limbs moved (of " << checked << ")";
+}
+
+// Issue 11 "Done when": the quadruped's head pulled with the pose tool moves
+// the neck and head only, never a leg.
+TEST_F(Studio, DraggingTheQuadrupedsHeadMovesNoLeg) {
+    const model::PartId id = addQuadruped();
+    const Skeleton& skeleton = document()->part(id).part->skeleton;
+    JointId head = kNoJoint;  // the highest leaf
+    for (const Joint& joint : skeleton.joints())
+        if (skeleton.degree(joint.id) == 1 &&
+            (head == kNoJoint || joint.position.y() > skeleton.joint(head).position.y()))
+            head = joint.id;
+    const JointId neck = limbTop(skeleton, head);
+    window->activatePoseTool();
+    QTest::qWait(50);
+    dragJointBy(id, head, 40.0, -50.0);
+    ASSERT_FALSE(document()->part(id).pose.rotations.empty());
+    int checked = 0;
+    EXPECT_EQ(movedOutside(id, bonesFrom(skeleton, neck), checked), 0);
+    EXPECT_GT(checked, static_cast<int>(document()->part(id).part->mesh.vertexCount()) / 2);
+    int feet = 0;
+    for (const Joint& joint : skeleton.joints())
+        if (skeleton.degree(joint.id) == 1 && joint.id != head) {
+            ++feet;
+            const QVector3D rest = QVector3D(joint.position.x(), joint.position.y(), 0);
+            EXPECT_LT((viewport()->jointWorldPosition(id, joint.id) - rest).length(), 1e-6f)
+                << "foot " << joint.id;
+        }
+    EXPECT_EQ(feet, 4);
+    EXPECT_GT((viewport()->jointWorldPosition(id, head) -
+               QVector3D(skeleton.joint(head).position.x(), skeleton.joint(head).position.y(), 0))
+                  .length(),
+              0.05f);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_pose_quadruped.png"));
 }
 
 // Issue 14 item 1: the weight views colour the surface on the GPU. The

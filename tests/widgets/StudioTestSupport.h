@@ -2,11 +2,13 @@
 #pragma once
 
 #include <QApplication>
+#include <QElapsedTimer>
 #include <QMouseEvent>
 #include <QTest>
 #include <cmath>
 #include <vector>
 
+#include "jobs/JobRunner.h"
 #include "viewport/Viewport.h"
 
 namespace rigmesh::test {
@@ -15,6 +17,16 @@ inline void sendMouse(QWidget* widget, QEvent::Type type, const QPointF& at, Qt:
                       Qt::MouseButtons buttons, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
     QMouseEvent event(type, at, widget->mapToGlobal(at), button, buttons, modifiers);
     QApplication::sendEvent(widget, &event);
+}
+
+// Lets background jobs (a sketch's build, a rebuild, an import; widgets/
+// jobs) finish and apply, as a person waits for the progress bar to go.
+inline void waitForJobs(int timeoutMs = 120000) {
+    QElapsedTimer clock;
+    clock.start();
+    while (widgets::JobRunner::anyBusy() && clock.elapsed() < timeoutMs)
+        QTest::qWait(5);
+    QApplication::processEvents();
 }
 
 // A left-button drag through `points` (pixels in the widget).
@@ -27,6 +39,7 @@ inline void drag(QWidget* widget, const std::vector<QPointF>& points,
         sendMouse(widget, QEvent::MouseMove, points[i], Qt::NoButton, Qt::LeftButton, modifiers);
     sendMouse(widget, QEvent::MouseButtonRelease, points.back(), Qt::LeftButton, Qt::NoButton,
               modifiers);
+    waitForJobs();
 }
 
 // A closed ellipse-like outline around `centre`, as a mouse would draw it.

@@ -165,7 +165,12 @@ TEST_F(WeightsStudio, ClickingAVertexWithAWeightViewOnPinsItsWeightsInThePanel) 
     window->activateSelectTool();
     viewport()->setWeightView(widgets::WeightView::DominantBone);
     QTest::qWait(20);
-    const QPointF at = armStroke()[6];
+    // The middle of the forearm, in front: far from any joint marker.
+    const Skeleton& skeleton = part().skeleton;
+    const Vec3 forearm =
+        0.5 * (skeleton.joint(hand()).position + skeleton.joint(shoulder()).position);
+    const QPointF at = onScreen(Vec3(forearm.x(), forearm.y(), 0.2));
+    ASSERT_FALSE(viewport()->jointAt(at).has_value());
     const auto hit = viewport()->surfaceAt(at);
     ASSERT_TRUE(hit.has_value());
     drag(viewport(), {at});
@@ -267,11 +272,13 @@ TEST_F(WeightsStudio, RebuildAsksBeforeDiscardingPaintedWeights) {
             rebuild = button;
     ASSERT_NE(rebuild, nullptr);
     rebuild->click();
+    test::waitForJobs();
     EXPECT_TRUE(asked.contains(QStringLiteral("painted"))) << asked.toStdString();
     EXPECT_EQ(document()->undoStack()->count(), steps) << "cancelled: nothing happens";
     EXPECT_TRUE(part().weightsPainted);
     properties->confirmDiscard = [](const QString&) { return true; };
     rebuild->click();
+    test::waitForJobs();
     EXPECT_EQ(document()->undoStack()->count(), steps + 1);
     EXPECT_FALSE(part().weightsPainted) << "fresh weights from the sketch";
     document()->undoStack()->undo();

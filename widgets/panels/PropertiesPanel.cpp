@@ -6,6 +6,7 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QMessageBox>
+#include <QPointer>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
@@ -14,7 +15,10 @@
 #include <memory>
 
 #include "base/Error.h"
+#include "jobs/JobRunner.h"
 #include "model/Document.h"
+#include "model/PartBuilder.h"
+#include "model/PoseChange.h"
 #include "model/commands/RebuildPartCommand.h"
 #include "model/commands/SetPoseCommand.h"
 
@@ -66,7 +70,7 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(figures_);
     layout->addLayout(form);
     layout->addWidget(rebuildButton_);
-    poseBox_ = new QGroupBox(tr("Joint rotation (XYZ Euler)"), this);
+    poseBox_ = new QGroupBox(tr("Bone rotation (XYZ Euler)"), this);
     auto* poseForm = new QFormLayout(poseBox_);
     const char* axes[] = {QT_TR_NOOP("X"), QT_TR_NOOP("Y"), QT_TR_NOOP("Z")};
     for (int k = 0; k < 3; ++k) {
@@ -77,7 +81,10 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
         euler_[k]->setWrapping(true);
         euler_[k]->setSuffix(QStringLiteral("\u00b0"));
         euler_[k]->setKeyboardTracking(false);  // one command per typed value
-        euler_[k]->setToolTip(tr("The selected joint's rotation from rest, in degrees"));
+        euler_[k]->setToolTip(
+            tr("The rotation from rest, in degrees, of the bone ending at the selected joint "
+               "about its head, relative to its parent bone; at the root, of the whole part "
+               "about the root"));
         poseForm->addRow(tr(axes[k]), euler_[k]);
         connect(euler_[k], &QDoubleSpinBox::valueChanged, this, &PropertiesPanel::setJointRotation);
     }
@@ -140,7 +147,11 @@ void PropertiesPanel::refreshPose() {
     poseBox_->setVisible(shown);
     if (!shown)
         return;
-    poseBox_->setTitle(tr("Joint %1 rotation (XYZ Euler)").arg(joint));
+    // A joint stands for the bone ending at it, whose rotation it keys
+    // (pose/Pose.h); the root's rotation turns the whole part.
+    const bool root = joint == node->part->skeleton.root();
+    poseBox_->setTitle(root ? tr("Root joint %1: whole part (XYZ Euler)").arg(joint)
+                            : tr("Bone to joint %1 (XYZ Euler)").arg(joint));
     const Vec3 xyz = xyzEulerDegrees(node->pose.rotation(joint));
     for (int k = 0; k < 3; ++k) {
         const QSignalBlocker blocker(euler_[k]);
@@ -168,7 +179,7 @@ void PropertiesPanel::setJointRotation() {
         auto command = std::make_unique<model::SetPoseCommand>(*document_, selection.part, from,
                                                                pose, selection.joint, true);
         document_->setPose(selection.part, pose);
-        document_->undoStack()->push(command.release());
+        model::pushPoseChange(*document_, selection.part, command.release());
     } catch (const rigmesh::Error& error) {
         emit statusMessage(tr("Not posed: %1").arg(QString::fromStdString(error.what())), 8000);
         refreshPose();
@@ -193,17 +204,34 @@ void PropertiesPanel::rebuild() {
         emit statusMessage(tr("Not rebuilt: the painted weights are kept"), 6000);
         return;
     }
-    try {
-        auto command = model::RebuildPartCommand::create(*document_, id, options);
-        const QString dropped = command->droppedMessage();
-        document_->undoStack()->push(command.release());
-        emit statusMessage(dropped.isEmpty()
-                               ? tr("Rebuilt %1").arg(document_->part(id).name)
-                               : tr("Rebuilt %1; %2").arg(document_->part(id).name, dropped),
-                           8000);
-    } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not rebuilt: %1").arg(QString::fromStdString(error.what())), 8000);
+    if (!node || !node->part) {
+        emit statusMessage(tr("Select a part to rebuild"), 4000);
+        return;
     }
+    // Built off the GUI thread from copies of the stroke (a fine edge length
+    // can take seconds); the command is made and pushed here when done.
+    const std::vector<Vec2> stroke = node->stroke;
+    const QString name = node->name;
+    QPointer<model::Document> document(document_);
+    JobRunner::runOn(
+        jobs_, tr("Rebuilding %1").arg(name),
+        [=, this]() -> JobRunner::Apply {
+            std::shared_ptr<const Part> part = model::buildPart(stroke, name, options);
+            return [=, this]() {
+                if (!document || !document->contains(id))
+                    return;
+                auto command = model::RebuildPartCommand::fromBuilt(*document, id, part, options);
+                const QString dropped = command->droppedMessage();
+                document->undoStack()->push(command.release());
+                emit statusMessage(dropped.isEmpty() ? tr("Rebuilt %1").arg(name)
+                                                     : tr("Rebuilt %1; %2").arg(name, dropped),
+                                   8000);
+            };
+        },
+        [this](const QString& reason) {
+            emit statusMessage(tr("Not rebuilt: %1").arg(reason), 8000);
+        },
+        [this, name] { emit statusMessage(tr("Rebuild of %1 cancelled").arg(name), 6000); });
 }
 
 }  // namespace rigmesh::widgets

@@ -22,11 +22,15 @@ class Document;
 
 namespace rigmesh::widgets {
 
+class JobRunner;
+
 class PropertiesPanel : public QWidget {
     Q_OBJECT
   public:
     explicit PropertiesPanel(QWidget* parent = nullptr);
     void setDocument(model::Document* document);
+    // Where rebuilds run (widgets/jobs; the window's); null: on this thread.
+    void setJobRunner(JobRunner* runner) { jobs_ = runner; }
     // Asks whether to go on with a rebuild that discards painted weights (a
     // Yes/Cancel message box; tests answer it themselves).
     std::function<bool(const QString& question)> confirmDiscard;
@@ -41,6 +45,7 @@ class PropertiesPanel : public QWidget {
     void setJointRotation();
 
     model::Document* document_ = nullptr;
+    JobRunner* jobs_ = nullptr;
     QLabel* title_;
     QLabel* figures_;
     QDoubleSpinBox* edgeLength_;

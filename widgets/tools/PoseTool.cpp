@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "base/Error.h"
+#include "model/PoseChange.h"
 #include "model/PoseDrag.h"
 #include "model/commands/SetJointPinnedCommand.h"
 #include "model/commands/SetPoseCommand.h"
@@ -22,13 +23,20 @@ namespace {
 constexpr double kRingRadiusPixels = 44.0;
 constexpr double kRingBandPixels = 6.0;
 
+// The joint a bone ending at `joint` turns about: its parent, or the root
+// itself (whose rotation turns the whole part).
+JointId turnPivot(const Skeleton& skeleton, JointId joint) {
+    const JointId parent = poseParent(skeleton, joint);
+    return parent == kNoJoint ? joint : parent;
+}
+
 }  // namespace
 
 QString PoseTool::hint() const {
     return tr(
         "Pose: drag a joint (IK, this limb only); Alt + drag reaches through the whole "
-        "body; drag a bone, Ctrl + drag a joint or drag the selected joint's ring to turn "
-        "it (FK); Shift + click pins or unpins a joint");
+        "body; drag a bone, Ctrl + drag the joint it ends at or drag the selected bone's ring "
+        "to turn it (FK); Shift + click pins or unpins a joint");
 }
 
 void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
@@ -62,11 +70,13 @@ void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
     // Alt flips the tool option for this drag.
     drag.wholeBody = wholeBodyByDefault_ != ((event->modifiers() & Qt::AltModifier) != 0);
     if (event->modifiers() & Qt::ControlModifier) {
+        // FK: the bone ending at the joint turns about its head.
         drag.forward = true;
         drag.pivot = poseParent(node.part->skeleton, hit->joint);
         if (drag.pivot == kNoJoint) {
             emit hintMessage(
-                tr("The root joint has no bone to turn: drag it without Ctrl to move the chain"));
+                tr("The root joint ends no bone: drag its ring to turn the whole part, or drag "
+                   "it without Ctrl to move the part"));
             return;
         }
     }
@@ -79,8 +89,9 @@ std::optional<QPointF> PoseTool::ringCentre(const Viewport& viewport) const {
     const model::PartNode* node = document.findPart(selection.part);
     if (!node || !node->visible || !node->part || !node->part->skeleton.hasJoint(selection.joint))
         return std::nullopt;
+    const JointId pivot = turnPivot(node->part->skeleton, selection.joint);
     const QVector3D at = viewport.camera().project(
-        viewport.jointWorldPosition(selection.part, selection.joint), QSizeF(viewport.size()));
+        viewport.jointWorldPosition(selection.part, pivot), QSizeF(viewport.size()));
     return QPointF(at.x(), at.y());
 }
 
@@ -93,18 +104,21 @@ bool PoseTool::onRing(const Viewport& viewport, const QPointF& pixel) const {
 }
 
 void PoseTool::grabRing(Viewport& viewport, const QPointF& pixel) {
-    // The ring turns the selected joint itself about the view axis: its
-    // rotation, which carries its child bones (Blender's R on a pose bone).
+    // The ring turns the selected joint's bone (the one ending at it) about
+    // its head and the view axis, carrying its descendants only (Blender's R
+    // on a pose bone); on the root it turns the whole part.
     const model::Document& document = *viewport.document();
     const model::Selection selection = document.selection();
+    const model::PartNode& node = document.part(selection.part);
     Drag drag;
     drag.part = selection.part;
     drag.joint = selection.joint;
-    drag.pivot = selection.joint;
+    drag.pivot = turnPivot(node.part->skeleton, selection.joint);
     drag.grabPoint = viewport.jointWorldPosition(selection.part, selection.joint);
     drag.startPixel = pixel;
-    drag.startPose = document.part(selection.part).pose;
+    drag.startPose = node.pose;
     drag.forward = true;
+    drag.ring = true;
     drag_ = drag;
 }
 
@@ -137,8 +151,10 @@ void PoseTool::addOverlay(const Viewport& viewport, ColouredVertices& lines) con
     if (!centre)
         return;
     const model::Selection selection = viewport.document()->selection();
-    const QVector3D through = viewport.jointWorldPosition(selection.part, selection.joint);
-    const bool active = ringHovered_ || (drag_ && drag_->forward && drag_->pivot == drag_->joint);
+    const QVector3D through = viewport.jointWorldPosition(
+        selection.part,
+        turnPivot(viewport.document()->part(selection.part).part->skeleton, selection.joint));
+    const bool active = ringHovered_ || (drag_ && drag_->ring);
     const QVector3D colour = active ? QVector3D(1.0f, 0.8f, 0.4f) : QVector3D(1.0f, 0.55f, 0.1f);
     // The ring on the view plane through the joint, as segments; two small
     // arrowheads on it say "turn".
@@ -163,7 +179,8 @@ void PoseTool::addOverlay(const Viewport& viewport, ColouredVertices& lines) con
 
 void PoseTool::grabBone(Viewport& viewport, const BoneHit& bone, const QPointF& pixel) {
     // FK by the bone (issue 11 item 2): it turns about its end nearer the
-    // root, whose rotation it is (the pose rotates a joint's child bones).
+    // root by its own rotation, keyed by its other end (pose/Pose.h), which
+    // becomes the selection (the joint standing for the bone).
     model::Document& document = *viewport.document();
     const model::PartNode& node = document.part(bone.part);
     const Skeleton& skeleton = node.part->skeleton;
@@ -176,7 +193,7 @@ void PoseTool::grabBone(Viewport& viewport, const BoneHit& bone, const QPointF& 
     drag.startPixel = pixel;
     drag.startPose = node.pose;
     drag.forward = true;
-    document.setSelection({bone.part, drag.pivot});
+    document.setSelection({bone.part, drag.joint});
     drag_ = drag;
 }
 
@@ -220,17 +237,19 @@ void PoseTool::rotateWithFk(Viewport& viewport, const QPointF& pixel) {
     const Eigen::Quaterniond worldTurn(Eigen::AngleAxisd(sweep, viewAxis));
     const Eigen::Quaterniond partTurn =
         node.placement.rotation.conjugate() * worldTurn * node.placement.rotation;
-    // Local rotations compose in the parent's frame: L' = W_parent^-1 R W_parent L.
+    // A bone's rotation composes in its parent bone's frame:
+    // r' = W_parent^-1 R W_parent r (the root's in the part's frame).
     const PosedSkeleton& posed = viewport.posedSkeleton(node);
     Pose pose = drag_->startPose;
     const Skeleton& skeleton = node.part->skeleton;
-    const JointId grand = poseParent(skeleton, drag_->pivot);
+    // The parent bone's world rotation: the transform of the bone ending at
+    // the pivot, unchanged by the turn (it moves only the bone's subtree).
     const Eigen::Quaterniond parentWorld =
-        grand == kNoJoint ? Eigen::Quaterniond::Identity()
-                          : posed.jointTransforms[skeleton.indexOfJoint(grand)].rotation;
-    // Use the pose at the press: the parent does not move during the turn.
-    pose.setRotation(drag_->pivot, (parentWorld.conjugate() * partTurn * parentWorld *
-                                    drag_->startPose.rotation(drag_->pivot))
+        drag_->pivot == drag_->joint
+            ? Eigen::Quaterniond::Identity()
+            : posed.jointTransforms[skeleton.indexOfJoint(drag_->pivot)].rotation;
+    pose.setRotation(drag_->joint, (parentWorld.conjugate() * partTurn * parentWorld *
+                                    drag_->startPose.rotation(drag_->joint))
                                        .normalized());
     // A live preview; the drag becomes one command on release.
     document.previewPose(drag_->part, pose);
@@ -242,8 +261,10 @@ void PoseTool::release(Viewport& viewport, QMouseEvent*) {
     // One undo step per drag, already applied by the preview.
     model::Document& document = *viewport.document();
     if (document.contains(drag_->part) && document.posePreviewOrigin(drag_->part))
-        document.undoStack()->push(new model::SetPoseCommand(
-            document, drag_->part, document.part(drag_->part).pose, drag_->joint, true));
+        model::pushPoseChange(
+            document, drag_->part,
+            new model::SetPoseCommand(document, drag_->part, document.part(drag_->part).pose,
+                                      drag_->joint, true));
     drag_.reset();
 }
 

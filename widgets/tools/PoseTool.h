@@ -1,11 +1,15 @@
 // Pose tool (paper section 3: the rig is there to be used while modelling).
-// Drag a joint: inverse kinematics moves the chain from it up to the root or
-// the nearest junction or pinned joint (Alt: the root), bone lengths kept.
-// Drag a bone anywhere along it, or Ctrl + drag a joint: forward kinematics,
-// the bone turns about its head in the view plane. The selected joint wears a
-// rotation ring: drag it to turn the joint about the view axis (Blender's R).
-// Shift + click a joint: pin or unpin it. Every drag is previewed live and
-// pushed as one undo step on release.
+// Every bone has its own rotation about its head (pose/Pose.h), so a drag
+// moves only what hangs below what it turns. Drag a joint: inverse
+// kinematics turns the bones from it up to the nearest junction, pinned
+// joint or root (Alt: the root), bone lengths kept; the junction's other
+// branches stay. Drag a bone anywhere along it, or Ctrl + drag the joint it
+// ends at: forward kinematics, the bone turns about its head in the view
+// plane, carrying only its descendants. A selected joint stands for the
+// bone ending at it (as in the weight views; the root for the whole part):
+// its rotation ring sits on that bone's head; drag it to turn the bone about
+// the view axis (Blender's R). Shift + click a joint: pin or unpin it. Every
+// drag is previewed live and pushed as one undo step on release.
 #pragma once
 
 #include <QObject>
@@ -37,7 +41,8 @@ class PoseTool : public QObject, public ViewportTool {
     void hintMessage(const QString& message);
 
   private:
-    // The selected joint's place on screen, when the ring is shown.
+    // The head of the selected joint's bone (the root itself for the root),
+    // about which the ring turns: its place on screen, when shown.
     std::optional<QPointF> ringCentre(const Viewport& viewport) const;
     bool onRing(const Viewport& viewport, const QPointF& pixel) const;
     void grabRing(Viewport& viewport, const QPointF& pixel);
@@ -47,11 +52,14 @@ class PoseTool : public QObject, public ViewportTool {
 
     struct Drag {
         model::PartId part = model::kNoPart;
+        // IK: the dragged joint. FK: the joint the turned bone ends at,
+        // whose rotation it is (the root: the whole part).
         JointId joint = kNoJoint;
         QVector3D grabPoint;       // the joint's world position at the press
         bool forward = false;      // FK rotation rather than IK
+        bool ring = false;         // FK by the selected joint's ring
         bool wholeBody = false;    // IK up to the root (Alt), not just this limb
-        JointId pivot = kNoJoint;  // FK: the head of the rotated bone
+        JointId pivot = kNoJoint;  // FK: the head of the turned bone (the root for the root)
         QPointF startPixel;
         Pose startPose;
     };

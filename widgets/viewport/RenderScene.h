@@ -35,6 +35,8 @@ struct RenderPart {
     // Skinning per bone (order of part->skeleton.bones()): unit dual
     // quaternions (x, y, z, w) and 3x4 matrix rows; empty = the rest pose.
     std::vector<QVector4D> boneReal, boneDual, boneRows;
+    // Below 1: drawn translucent, after the opaque parts (onion-skin ghosts).
+    float opacity = 1.0f;
 };
 
 // Coloured vertices: pairs for GL_LINES, or single points.
@@ -49,6 +51,9 @@ struct ColouredVertices {
 
 struct RenderScene {
     std::vector<RenderPart> parts;
+    // Onion skin (issue 15): parts in their previous and next keyed poses,
+    // translucent, not selectable.
+    std::vector<RenderPart> ghosts;
     ColouredVertices lines;   // skeleton bones and other overlays, in pairs
     ColouredVertices points;  // joints
     ColouredVertices stroke;  // the stroke being drawn, as a strip

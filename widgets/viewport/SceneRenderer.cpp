@@ -191,7 +191,20 @@ void SceneRenderer::render(const RenderScene& scene, const OrbitCamera& camera,
 
     if (scene.showGrid)
         drawGrid(scene, viewProjection);
-    drawParts(scene, view, projection, QVector2D(pixels.width(), pixels.height()));
+    drawParts(scene.parts, scene, view, projection, QVector2D(pixels.width(), pixels.height()));
+    if (!scene.ghosts.empty()) {
+        // Ghosts blend over what is drawn, hiding nothing behind them. They
+        // are pushed back in depth, so where a ghost lies on the part itself
+        // (what did not move) the part wins instead of flickering with it.
+        // The framebuffer's alpha stays 1: the widget is composited with it.
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        glDepthMask(GL_FALSE);
+        drawParts(scene.ghosts, scene, view, projection,
+                  QVector2D(pixels.width(), pixels.height()));
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
     // Overlays stay visible through the surface, like Blender's bone overlay.
     glDisable(GL_DEPTH_TEST);
     drawColoured(scene.lines, GL_LINES, viewProjection, 1.0f);
@@ -208,8 +221,9 @@ void SceneRenderer::render(const RenderScene& scene, const OrbitCamera& camera,
     }
 }
 
-void SceneRenderer::drawParts(const RenderScene& scene, const QMatrix4x4& view,
-                              const QMatrix4x4& projection, const QVector2D& pixels) {
+void SceneRenderer::drawParts(const std::vector<RenderPart>& parts, const RenderScene& scene,
+                              const QMatrix4x4& view, const QMatrix4x4& projection,
+                              const QVector2D& pixels) {
     meshProgram_.bind();
     meshProgram_.setUniformValue("view", view);
     meshProgram_.setUniformValue("projection", projection);
@@ -218,8 +232,9 @@ void SceneRenderer::drawParts(const RenderScene& scene, const QMatrix4x4& view,
     meshProgram_.setUniformValue("flatColour", 0);
     meshProgram_.setUniformValue("dualQuaternionSkinning", scene.dualQuaternionSkinning ? 1 : 0);
     meshProgram_.setUniformValue("weightView", static_cast<int>(scene.weightView));
-    for (const RenderPart& item : scene.parts) {
+    for (const RenderPart& item : parts) {
         GpuMesh& gpu = meshFor(item.part);
+        meshProgram_.setUniformValue("opacity", item.opacity);
         gpu.usedThisFrame = true;
         if (scene.weightView == WeightView::GlobalDifference && !gpu.difference.isCreated()) {
             const std::vector<float> difference = differenceFromGlobal(*item.part);
@@ -258,7 +273,8 @@ void SceneRenderer::drawParts(const RenderScene& scene, const QMatrix4x4& view,
         meshProgram_.setUniformValue("baseColour", item.colour);
         meshProgram_.setUniformValue("highlight", item.selected ? 1.0f : 0.0f);
         glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(1.0f, 1.0f);
+        const float offset = item.opacity < 1.0f ? 8.0f : 1.0f;  // ghosts further back
+        glPolygonOffset(offset, offset);
         glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
         glDisable(GL_POLYGON_OFFSET_FILL);
         if (scene.wireframe) {

@@ -30,8 +30,8 @@ class SceneRenderer : protected QOpenGLFunctions_3_3_Core {
   private:
     struct GpuMesh;
     GpuMesh& meshFor(const std::shared_ptr<const Part>& part);
-    void drawParts(const RenderScene& scene, const QMatrix4x4& view, const QMatrix4x4& projection,
-                   const QVector2D& pixels);
+    void drawParts(const std::vector<RenderPart>& parts, const RenderScene& scene,
+                   const QMatrix4x4& view, const QMatrix4x4& projection, const QVector2D& pixels);
     void drawColoured(const ColouredVertices& vertices, GLenum mode,
                       const QMatrix4x4& viewProjection, float pointSize);
     void drawGrid(const RenderScene& scene, const QMatrix4x4& viewProjection);

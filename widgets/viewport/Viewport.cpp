@@ -16,6 +16,7 @@
 #include <QWheelEvent>
 #include <limits>
 
+#include "model/OnionSkin.h"
 #include "pose/ForwardKinematics.h"
 #include "viewport/SceneRenderer.h"
 #include "viewport/ViewMath.h"
@@ -113,6 +114,7 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     connect(document_, &model::Document::partRemoved, this, refresh);
     connect(document_, &model::Document::partChanged, this, refresh);
     connect(document_, &model::Document::selectionChanged, this, refresh);
+    connect(document_, &model::Document::currentFrameChanged, this, refresh);
     camera_.setView(0, 0);
 }
 
@@ -169,6 +171,11 @@ void Viewport::setWireframe(bool on) {
 
 void Viewport::setDualQuaternionSkinning(bool on) {
     dualQuaternion_ = on;
+    update();
+}
+
+void Viewport::setOnionSkin(bool on) {
+    onionSkin_ = on;
     update();
 }
 
@@ -279,6 +286,23 @@ RenderScene Viewport::gatherScene() const {
                 item.weightBone = node.part->skeleton.indexOfBone(*bone);
         const PosedSkeleton& posed = posedSkeleton(node);
         setSkinning(item, posed);
+        if (onionSkin_ && node.part->skeleton.jointCount() > 0) {
+            // Previous key reddish, next key greenish, as onion skins tint them.
+            const model::OnionPoses onion = model::onionPoses(*document_, node.id);
+            for (const auto& [pose, colour] :
+                 {std::pair{onion.previous, QVector3D(1.0f, 0.45f, 0.35f)},
+                  std::pair{onion.next, QVector3D(0.4f, 0.85f, 0.45f)}}) {
+                if (!pose)
+                    continue;
+                RenderPart ghost;
+                ghost.part = node.part;
+                ghost.model = item.model;
+                ghost.colour = colour;
+                ghost.opacity = 0.3f;
+                setSkinning(ghost, forwardKinematics(node.part->skeleton, *pose));
+                scene.ghosts.push_back(std::move(ghost));
+            }
+        }
         scene.parts.push_back(std::move(item));
 
         const Skeleton& skeleton = node.part->skeleton;
@@ -287,9 +311,17 @@ RenderScene Viewport::gatherScene() const {
         };
         const QVector3D boneColour = node.id == selection.part ? QVector3D(0.95f, 0.85f, 0.45f)
                                                                : QVector3D(0.75f, 0.72f, 0.55f);
+        // The selected joint stands for the bone ending at it (what its
+        // rotation turns, pose/Pose.h): drawn in the selection's orange.
+        const std::optional<BoneId> selectedBone =
+            node.id == selection.part && selection.joint != skeleton.root()
+                ? boneForJoint(skeleton, selection.joint)
+                : std::nullopt;
         for (const Bone& bone : skeleton.bones()) {
-            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.head))), boneColour);
-            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.tail))), boneColour);
+            const QVector3D colour =
+                selectedBone == bone.id ? QVector3D(1.0f, 0.55f, 0.1f) : boneColour;
+            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.head))), colour);
+            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.tail))), colour);
         }
         for (const Joint& joint : skeleton.joints()) {
             const bool selected = node.id == selection.part && joint.id == selection.joint;

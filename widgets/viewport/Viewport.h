@@ -25,6 +25,7 @@ struct BoneHit {
 };
 
 class ViewportTool;
+class JobRunner;
 
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
@@ -43,12 +44,19 @@ class Viewport : public QOpenGLWidget {
     OrbitCamera& camera() { return camera_; }
     const OrbitCamera& camera() const { return camera_; }
     void setTool(ViewportTool* tool);  // not owned; nullptr = navigation only
+    // Where long work goes (widgets/jobs; not owned; the window's): tools
+    // and the sketch hand it their engine calls. Null: run them here.
+    void setJobRunner(JobRunner* runner) { jobs_ = runner; }
+    JobRunner* jobRunner() const { return jobs_; }
     ViewportTool* tool() const { return tool_; }
 
     void setWireframe(bool on);
     void setDualQuaternionSkinning(bool on);
     void setGridVisible(bool on);
     void setWeightView(WeightView view);
+    // Ghosts of each part's previous and next keyed poses (issue 15).
+    void setOnionSkin(bool on);
+    bool onionSkin() const { return onionSkin_; }
     WeightView weightView() const { return weightView_; }
     bool wireframe() const { return wireframe_; }
     bool dualQuaternionSkinning() const { return dualQuaternion_; }
@@ -131,10 +139,12 @@ class Viewport : public QOpenGLWidget {
     std::unique_ptr<SceneRenderer> renderer_;
     OrbitCamera camera_;
     ViewportTool* tool_ = nullptr;
+    JobRunner* jobs_ = nullptr;
     std::vector<QVector3D> strokeOverlay_;
     bool wireframe_ = false;
     bool dualQuaternion_ = true;
     bool gridVisible_ = true;
+    bool onionSkin_ = false;
     WeightView weightView_ = WeightView::Off;
     bool framedOnce_ = false;
     struct PosedCacheEntry {

@@ -48,39 +48,23 @@ void checkDistinctAsFloats(const std::vector<double>& times) {
 
 }  // namespace
 
-std::vector<double> exportedKeyTimes(const Clip& clip) {
-    const std::vector<double> keys = clip.keyTimes();
-    if (clip.interpolation != Interpolation::Smooth || keys.size() < 2)
-        return keys;
-    const double step = 1.0 / clip.framesPerSecond();
-    std::vector<double> times;
-    for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
-        times.push_back(keys[k]);
-        appendSegmentFrames(times, keys.front(), step, keys[k], keys[k + 1]);
-    }
-    times.push_back(keys.back());
-    return times;
-}
+namespace {
 
-aiAnimation* makeAnimation(const Clip& clip, const ExportRig& rig, const std::string& name) {
-    if (clip.keyCount() == 0)
-        throw Error("cannot export an animation without keys");
+// The rig's channels, from mChannels[next] on; the animation's duration grows
+// to the clip's last written time.
+void appendChannels(const Clip& clip, const ExportRig& rig, aiAnimation& animation,
+                    std::size_t& next) {
     const std::vector<double> times = exportedKeyTimes(clip);
     checkDistinctAsFloats(times);
     std::vector<Pose> poses;
     for (double t : times)
         poses.push_back(clip.evaluate(t));
-
-    auto* animation = new aiAnimation;
-    animation->mName = aiString(name);
-    animation->mTicksPerSecond = 1.0;  // notes item 4: times in seconds
-    animation->mDuration = times.back();
-    animation->mNumChannels = static_cast<unsigned>(rig.nodes.size());
-    animation->mChannels = new aiNodeAnim*[rig.nodes.size()];
+    animation.mDuration = std::max(animation.mDuration, times.back());
     const unsigned count = static_cast<unsigned>(times.size());
     for (std::size_t n = 0; n < rig.nodes.size(); ++n) {
         // Notes item 5: position, rotation and scaling keys, same count and times.
         auto* channel = new aiNodeAnim;
+        animation.mChannels[next++] = channel;
         channel->mNodeName = aiString(rig.nodes[n].name);
         channel->mNumPositionKeys = channel->mNumRotationKeys = channel->mNumScalingKeys = count;
         channel->mPositionKeys = new aiVectorKey[count];
@@ -98,7 +82,47 @@ aiAnimation* makeAnimation(const Clip& clip, const ExportRig& rig, const std::st
             channel->mRotationKeys[k] = aiQuatKey(times[k], toAi(q));
             channel->mScalingKeys[k] = aiVectorKey(times[k], aiVector3D(1, 1, 1));
         }
-        animation->mChannels[n] = channel;
+    }
+}
+
+}  // namespace
+
+std::vector<double> exportedKeyTimes(const Clip& clip) {
+    const std::vector<double> keys = clip.keyTimes();
+    if (clip.interpolation == Interpolation::Linear || keys.size() < 2)
+        return keys;
+    const double step = 1.0 / clip.framesPerSecond();
+    std::vector<double> times;
+    for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
+        times.push_back(keys[k]);
+        appendSegmentFrames(times, keys.front(), step, keys[k], keys[k + 1]);
+    }
+    times.push_back(keys.back());
+    return times;
+}
+
+aiAnimation* makeAnimation(const std::vector<AnimatedRig>& rigs, const std::string& name) {
+    if (rigs.empty())
+        throw Error("cannot export an animation of nothing");
+    std::size_t channelCount = 0;
+    for (const AnimatedRig& animated : rigs) {
+        if (animated.clip->keyCount() == 0)
+            throw Error("cannot export an animation without keys");
+        channelCount += animated.rig->nodes.size();
+    }
+    auto* animation = new aiAnimation;
+    animation->mName = aiString(name);
+    animation->mTicksPerSecond = 1.0;  // notes item 4: times in seconds
+    animation->mDuration = 0.0;
+    animation->mNumChannels = static_cast<unsigned>(channelCount);
+    animation->mChannels = new aiNodeAnim*[channelCount]();
+    std::size_t next = 0;
+    try {
+        for (const AnimatedRig& animated : rigs)
+            appendChannels(*animated.clip, *animated.rig, *animation, next);
+    } catch (...) {
+        delete animation;  // deletes the channels made so far (the rest are null)
+        throw;
     }
     return animation;
 }

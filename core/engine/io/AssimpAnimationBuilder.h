@@ -1,6 +1,8 @@
-// The clip as an aiAnimation (issue 6 item 1) following the notes' items 4
+// Clips as an aiAnimation (issue 6 item 1) following the notes' items 4
 // and 5: mTicksPerSecond = 1 with key times in seconds, and every bone node a
-// channel with position, rotation and scaling keys at the same times.
+// channel with position, rotation and scaling keys at the same times. One
+// animation may animate several rigs, each by its own clip (the clips of
+// several parts sharing a name, issue 15).
 // Internal to io/: the header only forward-declares Assimp.
 #pragma once
 
@@ -18,13 +20,20 @@ namespace rigmesh {
 constexpr int kMaxFramesPerSegment = 64;
 
 // The times written, ascending: the key times for a Linear clip (viewers
-// interpolate linearly between them too); for a Smooth clip also every frame
-// between two keys (at most kMaxFramesPerSegment evenly spaced samples in a
-// longer segment), so that the curve between keys survives. At most
-// (kMaxFramesPerSegment + 1) times per key, whatever the clip's length.
+// interpolate linearly between them too); for a Smooth or Constant clip also
+// every frame between two keys (at most kMaxFramesPerSegment evenly spaced
+// samples in a longer segment), so that the curve between keys survives (a
+// Constant clip's step then happens within the frame before the next key).
+// At most (kMaxFramesPerSegment + 1) times per key, whatever the clip's length.
 std::vector<double> exportedKeyTimes(const Clip& clip);
 
-// Throws Error on a clip without keys.
-aiAnimation* makeAnimation(const Clip& clip, const ExportRig& rig, const std::string& name);
+// One rig animated by one clip.
+struct AnimatedRig {
+    const Clip* clip = nullptr;
+    const ExportRig* rig = nullptr;
+};
+
+// Throws Error on no rigs or a clip without keys.
+aiAnimation* makeAnimation(const std::vector<AnimatedRig>& rigs, const std::string& name);
 
 }  // namespace rigmesh

@@ -324,29 +324,33 @@ std::optional<Clip> importClip(const aiAnimation& animation, const aiMesh& mesh,
     const std::vector<BoneId> hierarchy = skeleton.bonesInHierarchyOrder();
     for (double t : ticks) {
         const std::vector<Eigen::Affine3d> globals = tree.animatedGlobals(animation, t);
-        // Per joint: world rotation (rest -> posed); the root's transform.
+        // Per bone (Pose.h: keyed by its tail joint), its world rotation
+        // (rest -> posed) relative to its parent bone's; root bones turn
+        // about the root, which the first of them places.
         std::map<JointId, Eigen::Quaterniond> world;
         Pose pose;
+        bool rootPlaced = false;
         for (BoneId id : hierarchy) {
             const Bone& bone = skeleton.bone(id);
-            if (world.contains(bone.head))
-                continue;  // bones sharing a head joint: the first one speaks
             const int index = skeleton.indexOfBone(id);
             const unsigned b = aiBoneByName[imported.boneNames[static_cast<std::size_t>(index)]];
             const int node = tree.find(imported.boneNames[static_cast<std::size_t>(index)]);
             const Eigen::Affine3d skin = globals[static_cast<std::size_t>(node)] *
                                          fromAi(mesh.mBones[b]->mOffsetMatrix) *
                                          meshGlobal.inverse();
-            const Eigen::Quaterniond rotation(skin.rotation());
-            world[bone.head] = rotation.normalized();
+            const Eigen::Quaterniond rotation = Eigen::Quaterniond(skin.rotation()).normalized();
+            world[bone.tail] = rotation;
             const std::optional<BoneId> parent = skeleton.parentBone(id);
             if (!parent) {
-                const Vec3 h = skeleton.joint(bone.head).position;
-                pose.setRotation(bone.head, rotation.normalized());
-                pose.rootTranslation = skin.translation() - h + rotation.normalized() * h;
+                pose.setRotation(bone.tail, rotation);
+                if (!rootPlaced) {
+                    const Vec3 h = skeleton.joint(bone.head).position;
+                    pose.rootTranslation = skin.translation() - h + rotation * h;
+                    rootPlaced = true;
+                }
             } else {
-                const Eigen::Quaterniond up = world[skeleton.bone(*parent).head];
-                pose.setRotation(bone.head, (up.conjugate() * rotation).normalized());
+                const Eigen::Quaterniond up = world[skeleton.bone(*parent).tail];
+                pose.setRotation(bone.tail, (up.conjugate() * rotation).normalized());
             }
         }
         clip.setKey(t / perSecond, pose);

@@ -4,6 +4,7 @@
 #include <assimp/metadata.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <set>
 
 #include "base/Error.h"
@@ -42,6 +43,35 @@ std::string uniqueName(const std::string& wanted, std::set<std::string>& used) {
     used.insert(name);
     return name;
 }
+
+// The clips of every part by animation name, in order of first appearance:
+// clips of several parts with one name are one animation (issue 15). A part
+// with two clips of one name (not made by the studio) gets "<name>_2" for
+// the second.
+struct AnimationGroups {
+    struct Member {
+        const Clip* clip;
+        std::size_t rig;
+    };
+    std::vector<std::pair<std::string, std::vector<Member>>> groups;
+
+    void add(const std::string& name, Member member) {
+        for (int n = 1;; ++n) {
+            const std::string candidate = n == 1 ? name : name + "_" + std::to_string(n);
+            auto group = std::find_if(groups.begin(), groups.end(),
+                                      [&](const auto& g) { return g.first == candidate; });
+            if (group == groups.end()) {
+                groups.push_back({candidate, {member}});
+                return;
+            }
+            if (std::none_of(group->second.begin(), group->second.end(),
+                             [&](const Member& m) { return m.rig == member.rig; })) {
+                group->second.push_back(member);
+                return;
+            }
+        }
+    }
+};
 
 // Notes item 2: every node name unique. Kept bone names (an import's) may
 // meet a part's or another part's bone's: `_2`, `_3`, ... appended; an end
@@ -241,7 +271,7 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
     scene.mNumMeshes = static_cast<unsigned>(parts.size());
     scene.mMeshes = new aiMesh*[parts.size()];
     std::vector<ExportRig> rigs;
-    std::set<std::string> usedAnimationNames;
+    AnimationGroups animationGroups;
     for (std::size_t i = 0; i < parts.size(); ++i) {
         aiMesh* mesh = makeMesh(parts[i], names[i], format, options);
         scene.mMeshes[i] = mesh;
@@ -269,12 +299,22 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
         } else {
             armatureChildren.insert(armatureChildren.end(), bones.begin(), bones.end());
         }
-        const Clip* partClip = parts[i].clip != nullptr ? parts[i].clip : (i == 0 ? clip : nullptr);
-        if (partClip != nullptr && options.animation && partClip->keyCount() > 0)
-            animations.push_back(makeAnimation(
-                *partClip, rigs.back(),
-                uniqueName(partClip->name.empty() ? names[i] + "_clip" : partClip->name,
-                           usedAnimationNames)));
+        if (!options.animation)
+            continue;
+        std::vector<const Clip*> clips = parts[i].otherClips;
+        clips.insert(clips.begin(),
+                     parts[i].clip != nullptr ? parts[i].clip : (i == 0 ? clip : nullptr));
+        for (const Clip* partClip : clips)
+            if (partClip != nullptr && partClip->keyCount() > 0)
+                animationGroups.add(partClip->name.empty() ? names[i] + "_clip" : partClip->name,
+                                    {partClip, rigs.size() - 1});
+    }
+    // Made once every rig is in place (`rigs` no longer moves).
+    for (const auto& [name, members] : animationGroups.groups) {
+        std::vector<AnimatedRig> animated;
+        for (const auto& [partClip, rig] : members)
+            animated.push_back({partClip, &rigs[rig]});
+        animations.push_back(makeAnimation(animated, name));
     }
     if (!armatureChildren.empty()) {
         aiNode* armature = new aiNode("Armature");

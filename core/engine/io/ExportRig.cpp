@@ -48,16 +48,16 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
     // The bones whose frame joint is each joint, then breadth first from the root.
     std::vector<std::vector<int>> bonesFrom(hierarchy.jointCount());
     for (int b = 0; b < hierarchy.boneCount(); ++b)
-        if (hierarchy.reachable(hierarchy.boneFrameJoint(b)) &&
-            hierarchy.parent(hierarchy.boneEndJoint(b)) == hierarchy.boneFrameJoint(b))
-            bonesFrom[hierarchy.boneFrameJoint(b)].push_back(b);
+        if (hierarchy.reachable(hierarchy.boneHeadJoint(b)) &&
+            hierarchy.boneRotationJoint(b) == hierarchy.boneTailJoint(b))
+            bonesFrom[hierarchy.boneHeadJoint(b)].push_back(b);
     std::deque<std::pair<int, int>> queue;  // (bone, parent node)
     for (int b : bonesFrom[hierarchy.root()])
         queue.emplace_back(b, -1);
     while (!queue.empty()) {
         const auto [b, parent] = queue.front();
         queue.pop_front();
-        const int frame = hierarchy.boneFrameJoint(b), end = hierarchy.boneEndJoint(b);
+        const int frame = hierarchy.boneHeadJoint(b), end = hierarchy.boneTailJoint(b);
         ExportBoneNode node;
         node.bone = b;
         node.parent = parent;
@@ -106,7 +106,10 @@ Vec3 ExportRig::localTranslation(int node, const Pose& pose) const {
 
 Eigen::Quaterniond ExportRig::localRotation(int node, const Pose& pose) const {
     const ExportBoneNode& n = nodes[static_cast<std::size_t>(node)];
-    const Eigen::Quaterniond q = pose.rotation(n.headJoint).normalized();
+    // The bone's own rotation; a root bone's follows the whole skeleton's.
+    const Eigen::Quaterniond own = pose.rotation(n.tailJoint).normalized();
+    const Eigen::Quaterniond q =
+        n.parent < 0 ? (pose.rotation(n.headJoint).normalized() * own).normalized() : own;
     const Eigen::Quaterniond axisAligned = placementRotation * q * placementRotation.conjugate();
     const Eigen::Quaterniond parentFrame =
         n.parent < 0 ? Eigen::Quaterniond::Identity()

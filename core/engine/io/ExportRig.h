@@ -13,11 +13,13 @@
 // know the leaf's length too.
 //
 // Positions are baked: a point x of the part becomes unitScale * placement(x).
-// Our joint frames (Pose.h) are the world axes at rest, so a bone node's
-// posed global transform is its old axis-aligned one times its rest frame R:
-// its local rotation is R_parent^-1 * q * R, where q is the pose's rotation
-// of its head joint (conjugated by the placement's rotation); root bones add
-// the pose's root translation.
+// Our bone frames (Pose.h) are the world axes at rest and every bone turns
+// about its head by its own rotation, exactly as a node here does, so a bone
+// node's posed global transform is its old axis-aligned one times its rest
+// frame R: its local rotation is R_parent^-1 * q * R, where q is the pose's
+// rotation of the bone (keyed by its tail joint; conjugated by the
+// placement's rotation). Root bones take the root's rotation (the whole
+// skeleton's) before their own and add the pose's root translation.
 #pragma once
 
 #include <string>
@@ -34,9 +36,9 @@ struct ExportBoneNode {
     std::string name;
     int bone = -1;      // index in skeleton.bones()
     int parent = -1;    // index in ExportRig::nodes, -1 = the Armature node
-    JointId headJoint;  // the joint nearer the root: its rotation turns the node
-    JointId tailJoint;
-    Vec3 head;  // placed and scaled
+    JointId headJoint;  // the joint nearer the root, about which the node turns
+    JointId tailJoint;  // its pose rotation is the node's (Pose.h)
+    Vec3 head;          // placed and scaled
     Vec3 tail;
     // Global rest orientation (placed): +Y (or -Z, BoneAxes) along head -> tail.
     Eigen::Quaterniond restFrame = Eigen::Quaterniond::Identity();

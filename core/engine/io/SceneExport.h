@@ -14,8 +14,9 @@
 // meshes on that one hierarchy, each bound to its own bones (Assimp 5.2.5's glTF exporter writes a
 // single skin listing every bone; each mesh's weights use only its own part's bones, and
 // importScene sorts them out again). Nodes are in the bind pose; each part's `pose` is used only by
-// OBJ (restPose = false). Each part's clip with keys is one animation of its bones (named after
-// the clip, else `<part>_clip`; one channel per bone node, keys in seconds). Coordinates: our parts
+// OBJ (restPose = false). Each clip with keys is an animation of its part's bones (named after
+// the clip, else `<part>_clip`; one channel per bone node, keys in seconds); the clips of all
+// parts with one name are one animation. Coordinates: our parts
 // are y up; glTF is y up, metres, as are our FBX (UnitScaleFactor 100 = metres) and COLLADA files.
 #pragma once
 
@@ -40,6 +41,9 @@ struct ExportPart {
     // Its animation (written when it has keys and ExportOptions::animation);
     // may be null.
     const Clip* clip = nullptr;
+    // Its further clips (issue 15), each written as an animation too. Clips of
+    // several parts with one name make one animation animating all of them.
+    std::vector<const Clip*> otherClips;
 };
 
 struct ExportOptions {

@@ -151,9 +151,12 @@ double Clip::wrap(double time) const {
     if (mode == PlaybackMode::Hold || last == first)
         return std::clamp(time, first, last);
     const double span = last - first;
-    double offset = std::fmod(time - first, span);
+    const double period = mode == PlaybackMode::PingPong ? 2 * span : span;
+    double offset = std::fmod(time - first, period);
     if (offset < 0)
-        offset += span;
+        offset += period;
+    if (offset > span)  // ping-pong on its way back
+        offset = period - offset;
     return first + offset;
 }
 
@@ -169,6 +172,8 @@ Pose Clip::evaluate(double time) const {
     // The keys around t: k1 <= t < k2, with neighbours k0 and k3 (clamped).
     const auto k2 = keys_.upper_bound(t);
     const auto k1 = std::prev(k2);
+    if (interpolation == Interpolation::Constant)
+        return k1->second;
     const auto k0 = k1 == keys_.begin() ? k1 : std::prev(k1);
     const auto k3 = std::next(k2) == keys_.end() ? k2 : std::next(k2);
     const double u = (t - k1->first) / (k2->first - k1->first);

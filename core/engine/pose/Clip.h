@@ -4,8 +4,9 @@
 // clip's frame rate, so a key set "at frame 12" is found again from any time
 // that rounds to frame 12.
 //
-// Evaluation interpolates every joint's local rotation and the root
+// Evaluation interpolates every bone's rotation (Pose.h) and the root
 // translation between the two keys around the time:
+//   - Constant: the earlier key's pose until the next key (a stepped clip);
 //   - Linear: slerp of rotations (shorter arc), lerp of the translation;
 //   - Smooth: squad (Shoemake 1987) through the key rotations after aligning
 //     each joint's keys into one hemisphere (so no segment takes the long way
@@ -15,7 +16,9 @@
 // A joint missing from a key counts as its identity rotation there.
 // Outside [first key, last key]: Hold clamps to the end keys, Loop repeats
 // the span from the first to the last key (the last key's instant shows the
-// first key).
+// first key), PingPong plays the span forwards then backwards (Blender's
+// "Ping Pong": the last key's instant shows the last key, twice the span
+// later the first key again).
 #pragma once
 
 #include <map>
@@ -26,8 +29,8 @@
 
 namespace rigmesh {
 
-enum class Interpolation { Linear, Smooth };
-enum class PlaybackMode { Hold, Loop };
+enum class Interpolation { Linear, Smooth, Constant };
+enum class PlaybackMode { Hold, Loop, PingPong };
 
 class Clip {
   public:

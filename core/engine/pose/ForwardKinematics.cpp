@@ -30,14 +30,17 @@ PosedSkeleton forwardKinematics(const PoseHierarchy& h, const Pose& pose) {
         posed.jointPositions[j] = h.restPosition(j);
 
     for (int j : h.parentFirstOrder()) {
-        const RigidTransform local =
-            RigidTransform::rotationAbout(checkedRotation(pose, h.jointId(j)), h.restPosition(j));
         RigidTransform world;
         if (j == h.root()) {
-            world = local;
+            world = RigidTransform::rotationAbout(checkedRotation(pose, h.jointId(j)),
+                                                  h.restPosition(j));
             world.translation += pose.rootTranslation;
         } else {
-            world = posed.jointTransforms[h.parent(j)] * local;
+            // The bone from the parent to j turns about its head, the parent.
+            const int parent = h.parent(j);
+            world = posed.jointTransforms[parent] *
+                    RigidTransform::rotationAbout(checkedRotation(pose, h.jointId(j)),
+                                                  h.restPosition(parent));
         }
         posed.jointTransforms[j] = world;
         posed.jointPositions[j] = world.apply(h.restPosition(j));
@@ -45,7 +48,7 @@ PosedSkeleton forwardKinematics(const PoseHierarchy& h, const Pose& pose) {
 
     posed.boneTransforms.reserve(h.boneCount());
     for (int b = 0; b < h.boneCount(); ++b)
-        posed.boneTransforms.push_back(posed.jointTransforms[h.boneFrameJoint(b)]);
+        posed.boneTransforms.push_back(posed.jointTransforms[h.boneRotationJoint(b)]);
     return posed;
 }
 

@@ -1,15 +1,17 @@
 // Forward kinematics (paper section 3: parts are posed by FK/IK on their
-// skeleton). Each joint's local rotation turns its subtree about the joint,
-// composed parent first:
-//     T_root  = translate(rootTranslation) * rotate(q_root about rest_root)
-//     T_child = T_parent * rotate(q_child about rest_child)
-// T_j maps rest space to posed space for everything rigidly attached to joint
-// j's frame: it is the joint's world frame times the inverse of its rest frame
-// (rest frames are translations to the rest positions, world axes), i.e.
-// exactly the per-bone skinning transform. Bone lengths are preserved by
-// construction (rigid transforms only); the rest pose gives identity
-// transforms exactly, since a rotation about a point by the identity
-// quaternion has a zero translation with no rounding.
+// skeleton). Every bone turns about its head (the joint nearer the root) by
+// its own rotation (Pose.h), composed parent bone first. Per joint j, F_j is
+// the transform of the bone ending at j (for the root: of the whole
+// skeleton):
+//     F_root = translate(rootTranslation) * rotate(r_root about rest_root)
+//     F_j    = F_parent(j) * rotate(r_j about rest_parent(j))
+// F_j maps rest space to posed space for everything rigidly attached to the
+// bone ending at j: it is the bone's world frame times the inverse of its
+// rest frame (rest frames are translations to the rest positions, world
+// axes), i.e. exactly the bone's skinning transform. Bone lengths are
+// preserved by construction (rigid transforms only); the rest pose gives
+// identity transforms exactly, since a rotation about a point by the
+// identity quaternion has a zero translation with no rounding.
 #pragma once
 
 #include <vector>
@@ -21,14 +23,15 @@
 namespace rigmesh {
 
 struct PosedSkeleton {
-    // Per joint index (skeleton.joints() order): rest space -> posed space.
-    // Its rotation is the joint's world rotation. Joints the root cannot
-    // reach keep the identity.
+    // Per joint index (skeleton.joints() order): F_j above, rest space ->
+    // posed space for the bone ending at the joint (the root: the whole
+    // skeleton's transform). Its rotation is that bone's world rotation.
+    // Joints the root cannot reach keep the identity.
     std::vector<RigidTransform> jointTransforms;
     // Per joint index: posed world position.
     std::vector<Vec3> jointPositions;
-    // Per bone index (skeleton.bones() order): the transform of the bone's
-    // joint nearer the root, i.e. world * inverse rest of the bone.
+    // Per bone index (skeleton.bones() order): the bone's transform, i.e.
+    // jointTransforms of its tail (the joint farther from the root).
     std::vector<RigidTransform> boneTransforms;
 };
 

@@ -42,24 +42,25 @@ Vec3 clampToCone(const Vec3& ref, const Vec3& desired, const Vec3& current, doub
     return Eigen::AngleAxisd(limit, axis.normalized()) * ref;
 }
 
-// The chain being solved: joints c_0 (base) .. c_n (dragged), positions and
-// the local rotations of c_0 .. c_{n-1}.
+// The chain being solved: joints c_0 (base, fixed) .. c_n (dragged),
+// positions, and the rotations of its bones c_i -> c_{i+1} (Pose.h: keyed
+// by c_{i+1}).
 struct Chain {
     std::vector<int> joints;
     std::vector<double> lengths;  // per bone c_i -> c_{i+1}
     std::vector<Vec3> restDirs;   // unit, per bone
-    std::vector<double> limits;   // per bone: the cone limit of c_i (or > pi)
+    std::vector<double> limits;   // per bone: its cone limit (or > pi)
     std::vector<Eigen::Quaterniond> local;
     std::vector<Vec3> positions;
-    Eigen::Quaterniond baseParentWorld;  // world rotation of c_0's parent frame
+    Eigen::Quaterniond baseParentWorld;  // world rotation of the bone ending at c_0
     double totalLength = 0;
 
     int bones() const { return static_cast<int>(lengths.size()); }
 
     // FABRIK forward pass from the fixed base, turning every bone toward the
     // next backward-pass position (or `fixedDir`) by its minimal rotation, so
-    // positions and local rotations stay consistent (Aristidou & Lasenby
-    // 2011, with the per-joint frames giving the rotations).
+    // positions and bone rotations stay consistent (Aristidou & Lasenby
+    // 2011, with the per-bone frames giving the rotations).
     void forward(const Vec3* fixedDir) {
         Eigen::Quaterniond parentWorld = baseParentWorld;
         for (int i = 0; i < bones(); ++i) {
@@ -196,36 +197,18 @@ IkResult dragJoint(const PoseHierarchy& h, const Pose& pose, JointId joint, cons
         return result;
     }
 
-    // Walk up to the base: the root, a pinned joint, or the last joint whose
-    // parent must stay still because another of its subtrees holds a pin (or,
-    // with limb reach, is a junction).
-    auto walkUp = [&](bool stopAtJunctions) {
-        std::vector<int> walked{dragged};
-        for (int current = dragged;;) {
-            const int parent = h.parent(current);
-            if (parent < 0)
-                break;
-            // Pins in the parent's other subtrees: turning it would move them.
-            if (pinsBelow[parent] - pinsBelow[current] - (isPinned[parent] ? 1 : 0) > 0)
-                break;
-            // Limb reach: a junction's turn would swing its other branches.
-            if (stopAtJunctions && h.children(parent).size() > 1)
-                break;
-            walked.push_back(parent);
-            if (isPinned[parent])
-                break;
-            current = parent;
-        }
-        return walked;
-    };
-    std::vector<int> joints = walkUp(options.stopAtJunctions);
-    // A joint hanging right below a junction has no bone of its own to turn
-    // (a joint's rotation carries every bone leaving it): reach on up.
-    if (joints.size() < 2 && options.stopAtJunctions)
-        joints = walkUp(false);
+    // Walk up to the base: the root, the nearest pinned joint or, with limb
+    // reach, the nearest junction. The base stays in place; the bones below
+    // it turn, each about its head, and carry only their own subtrees, so
+    // the base's other branches never move.
+    std::vector<int> joints{dragged};
+    for (int current = dragged; h.parent(current) >= 0;) {
+        current = h.parent(current);
+        joints.push_back(current);
+        if (isPinned[current] || (options.stopAtJunctions && h.children(current).size() > 1))
+            break;
+    }
     std::reverse(joints.begin(), joints.end());
-    if (joints.size() < 2)
-        return result;
 
     Chain chain;
     chain.joints = joints;
@@ -235,14 +218,13 @@ IkResult dragJoint(const PoseHierarchy& h, const Pose& pose, JointId joint, cons
         chain.lengths.push_back(rest.norm());
         chain.restDirs.push_back(rest.normalized());
         chain.totalLength += chain.lengths.back();
-        const auto limit = options.coneLimits.find(h.jointId(joints[i]));
+        const JointId key = h.jointId(joints[i + 1]);
+        const auto limit = options.coneLimits.find(key);
         chain.limits.push_back(limit == options.coneLimits.end() ? 2 * M_PI : limit->second);
         // The rotation FK used (normalised; FK rejected zero and non-finite).
-        chain.local.push_back(pose.rotation(h.jointId(joints[i])).normalized());
+        chain.local.push_back(pose.rotation(key).normalized());
     }
-    const int baseParent = h.parent(joints[0]);
-    chain.baseParentWorld = baseParent >= 0 ? posed.jointTransforms[baseParent].rotation
-                                            : Eigen::Quaterniond::Identity();
+    chain.baseParentWorld = posed.jointTransforms[joints[0]].rotation;
     for (int j : joints)
         chain.positions.push_back(posed.jointPositions[j]);
 
@@ -286,7 +268,7 @@ IkResult dragJoint(const PoseHierarchy& h, const Pose& pose, JointId joint, cons
             }
         }
         for (int i = 0; i < bones; ++i)
-            result.pose.setRotation(h.jointId(joints[i]), chain.local[i]);
+            result.pose.setRotation(h.jointId(joints[i + 1]), chain.local[i]);
     }
 
     result.iterations = iterations;

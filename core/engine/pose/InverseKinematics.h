@@ -1,8 +1,10 @@
 // Inverse kinematics for dragging a joint (paper section 3: parts are posed
-// with FK/IK). The dragged joint moves toward the target by changing the
-// local rotations of the chain of joints above it, from the chain's base (the
-// root, or the nearest pinned joint) down to the dragged joint's parent; the
-// rest of every subtree follows rigidly.
+// with FK/IK). The dragged joint moves toward the target by turning the
+// bones of the chain above it (Pose.h: each bone its own rotation about its
+// head), from the chain's base (the root, the nearest pinned joint, or with
+// limb reach the nearest junction) down to the dragged joint; the base stays
+// in place and each chain bone carries only its own subtree, so the base's
+// other branches never move.
 //
 // Solver: FABRIK (Aristidou & Lasenby 2011), not damped least squares. For
 // continuous dragging FABRIK is the stabler choice: every sweep places joints
@@ -20,20 +22,23 @@
 // converges quadratically exactly where FABRIK is slow, and cannot make the
 // result worse.
 //
-// Positions are turned back into local rotations during the forward sweep:
-// each joint gets the minimal rotation taking its current bone direction to
-// the new one, which keeps twist continuous from one drag step to the next.
+// Positions are turned back into bone rotations during the forward sweep:
+// each bone gets the minimal rotation taking its current direction to the
+// new one, which keeps twist continuous from one drag step to the next.
 // Optional cone limits clamp the angle between a bone and where it would
-// point at its rest local rotation.
+// point at its rest rotation.
 //
-// With IkOptions::stopAtJunctions the chain also stops below the nearest
-// junction, so sibling limbs never move.
+// With IkOptions::stopAtJunctions the chain stops at the nearest junction:
+// the bone leaving it toward the dragged joint turns, its sibling limbs do
+// not move. Without it (whole-body reach) the chain runs up to the root;
+// siblings move only where the chain passes through their parent, and the
+// root's own rotation and translation stay.
 //
-// Pinned joints keep their positions: the chain stops at a pinned ancestor,
-// and also below any chain joint whose other subtrees hold a pinned joint
-// (turning it would move them). A pinned dragged joint, or one with a pinned
-// joint below it, does not move. Dragging the root with nothing pinned moves
-// the whole skeleton (root translation).
+// Pinned joints keep their positions: the chain stops at a pinned ancestor
+// (a pin elsewhere never blocks, since only the chain's subtree moves). A
+// pinned dragged joint, or one with a pinned joint below it, does not move.
+// Dragging the root with nothing pinned moves the whole skeleton (root
+// translation).
 #pragma once
 
 #include <unordered_map>
@@ -61,23 +66,21 @@ struct IkOptions {
     // price of missing targets inside the band by up to ~0.37 of its width.
     double softReach = 0.0;
     // Optional cone limits: joint -> largest angle (radians, in [0, pi])
-    // between the bone(s) it carries and their direction at its rest local
-    // rotation. Joints not listed are free.
+    // between the bone ending at the joint and its direction at its rest
+    // rotation (relative to its parent bone). Joints not listed are free.
     std::unordered_map<JointId, double> coneLimits;
-    // Limb reach: the chain also stops below the nearest junction (a joint
-    // with two or more children), whose turn would swing its other branches:
-    // dragging a hand moves the arm, never the body or the other arm. Off
-    // (whole-body reach): up to the root or a pinned joint. A joint hanging
-    // directly from a junction has no bone of its own to turn (a joint's
-    // rotation carries every bone leaving it), so its drag reaches on up as
-    // with whole-body reach.
+    // Limb reach: the chain also stops at the nearest junction (a joint with
+    // two or more children): dragging a hand turns the arm's bones up to and
+    // including the one leaving the chest, never the body, the head or the
+    // other arm. Off (whole-body reach): up to the root or a pinned joint.
     bool stopAtJunctions = false;
 };
 
 struct IkResult {
     Pose pose;
-    // The joints that moved or turned, base first, dragged joint last; empty
-    // when nothing could move.
+    // The chain's joints, base first (it stays; the bones between
+    // consecutive joints turned), dragged joint last; the root alone when
+    // the root was dragged; empty when nothing could move.
     std::vector<JointId> chain;
     // Distance from the dragged joint's new position to the target.
     double distanceToTarget = 0;

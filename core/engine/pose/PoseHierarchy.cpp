@@ -52,22 +52,22 @@ PoseHierarchy::PoseHierarchy(const Skeleton& skeleton) {
         }
     }
 
-    // A bone hangs from whichever end the search reached first; bones the
-    // root cannot reach keep their head as frame.
-    boneFrameJoint_.assign(b, -1);
-    boneEndJoint_.assign(b, -1);
+    // A bone's head is whichever end the search reached first; a bone with
+    // an unknown joint has its known one (or the root) as both ends.
+    boneHead_.assign(b, -1);
+    boneTail_.assign(b, -1);
+    boneRotation_.assign(b, -1);
     for (int i = 0; i < b; ++i) {
         if (head[i] < 0) {
             const Bone& bone = skeleton.bones()[i];
             const int h = skeleton.hasJoint(bone.head) ? skeleton.indexOfJoint(bone.head) : root_;
-            boneFrameJoint_[i] = boneEndJoint_[i] = h;
-        } else if (parent_[head[i]] == tail[i]) {
-            boneFrameJoint_[i] = tail[i];
-            boneEndJoint_[i] = head[i];
-        } else {
-            boneFrameJoint_[i] = head[i];
-            boneEndJoint_[i] = tail[i];
+            boneHead_[i] = boneTail_[i] = boneRotation_[i] = h;
+            continue;
         }
+        const bool reversed = parent_[head[i]] == tail[i];
+        boneHead_[i] = reversed ? tail[i] : head[i];
+        boneTail_[i] = reversed ? head[i] : tail[i];
+        boneRotation_[i] = parent_[boneTail_[i]] == boneHead_[i] ? boneTail_[i] : boneHead_[i];
     }
 }
 

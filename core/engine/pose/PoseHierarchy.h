@@ -1,9 +1,10 @@
 // The tree structure posing needs, computed once from a skeleton: every
 // joint's parent by breadth-first search from the root over the bones in
 // either direction (so a skeleton not yet reoriented still poses correctly),
-// a parent-first joint order, and for every bone the joint nearer the root
-// (whose rotation carries the bone) and the farther one. Dense indices follow
-// skeleton.joints() and skeleton.bones().
+// a parent-first joint order, and for every bone its head (the joint nearer
+// the root, about which it turns), its tail, and the joint whose rotation
+// carries it (Pose.h: the tail). Dense indices follow skeleton.joints() and
+// skeleton.bones().
 #pragma once
 
 #include <unordered_map>
@@ -19,7 +20,7 @@ class PoseHierarchy {
     explicit PoseHierarchy(const Skeleton& skeleton);
 
     int jointCount() const { return static_cast<int>(jointIds_.size()); }
-    int boneCount() const { return static_cast<int>(boneFrameJoint_.size()); }
+    int boneCount() const { return static_cast<int>(boneHead_.size()); }
     int root() const { return root_; }
     JointId jointId(int joint) const { return jointIds_[joint]; }
     const Vec3& restPosition(int joint) const { return restPositions_[joint]; }
@@ -29,9 +30,15 @@ class PoseHierarchy {
     // Joints reachable from the root, each after its parent.
     const std::vector<int>& parentFirstOrder() const { return order_; }
     bool reachable(int joint) const { return joint == root_ || parent_[joint] >= 0; }
-    // The bone's joint nearer the root (its frame) and the other one.
-    int boneFrameJoint(int bone) const { return boneFrameJoint_[bone]; }
-    int boneEndJoint(int bone) const { return boneEndJoint_[bone]; }
+    // The bone's joint nearer the root (the pivot it turns about) and the
+    // other one.
+    int boneHeadJoint(int bone) const { return boneHead_[bone]; }
+    int boneTailJoint(int bone) const { return boneTail_[bone]; }
+    // The joint whose pose rotation (and FK transform) the bone has: its
+    // tail, whose only incoming bone it is. A bone the breadth-first tree
+    // left out (one closing a cycle) moves rigidly with the bone ending at
+    // its head; one the root cannot reach keeps its head (identity).
+    int boneRotationJoint(int bone) const { return boneRotation_[bone]; }
     // Throws Error on an unknown id.
     int indexOf(JointId id) const;
 
@@ -41,7 +48,7 @@ class PoseHierarchy {
     std::vector<int> parent_;
     std::vector<std::vector<int>> children_;
     std::vector<int> order_;
-    std::vector<int> boneFrameJoint_, boneEndJoint_;
+    std::vector<int> boneHead_, boneTail_, boneRotation_;
     std::unordered_map<JointId, int> index_;
     int root_ = -1;
 };

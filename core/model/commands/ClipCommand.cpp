@@ -12,6 +12,10 @@ ClipCommand::ClipCommand(Document& document, PartId id, ClipEdit edit, QUndoComm
 }
 
 void ClipCommand::redo() {
+    if (skipRedo_) {
+        skipRedo_ = false;
+        return;
+    }
     document_.editClip(id_, edit_);
 }
 

@@ -14,10 +14,18 @@ std::unique_ptr<CreatePartCommand> CreatePartCommand::create(Document& document,
                                                              const BuildOptions& options,
                                                              const Placement& placement) {
     // Build first: a bad stroke throws here, before an id is taken.
-    const PartId id = document.nextPartId();
+    const QString named = name.isEmpty() ? tr("Part %1").arg(document.nextPartId()) : name;
+    BuiltPart built = buildPartForDocument(document, stroke, named, options);
+    return fromBuilt(document, std::move(stroke), named, std::move(built), placement);
+}
+
+std::unique_ptr<CreatePartCommand> CreatePartCommand::fromBuilt(Document& document,
+                                                                std::vector<Vec2> stroke,
+                                                                const QString& name,
+                                                                BuiltPart built,
+                                                                const Placement& placement) {
     PartNode node;
-    node.name = name.isEmpty() ? tr("Part %1").arg(id) : name;
-    BuiltPart built = buildPartForDocument(document, stroke, node.name, options);
+    node.name = name.isEmpty() ? tr("Part %1").arg(document.nextPartId()) : name;
     node.part = std::move(built.part);
     node.stroke = std::move(stroke);
     node.options = built.options;

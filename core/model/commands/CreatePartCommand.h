@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/Document.h"
+#include "model/PartBuilder.h"
 #include "model/recipe/RecipeStepSource.h"
 
 namespace rigmesh::model {
@@ -23,6 +24,13 @@ class CreatePartCommand : public QUndoCommand, public RecipeStepSource {
                                                      const QString& name = {},
                                                      const BuildOptions& options = {},
                                                      const Placement& placement = {});
+
+    // The command for a part already built (buildPartAtDocumentLength, e.g.
+    // by a background job); `built.options` are recorded.
+    static std::unique_ptr<CreatePartCommand> fromBuilt(Document& document,
+                                                        std::vector<Vec2> stroke,
+                                                        const QString& name, BuiltPart built,
+                                                        const Placement& placement = {});
 
     void redo() override;
     void undo() override;

@@ -12,7 +12,12 @@ namespace rigmesh::model {
 std::unique_ptr<ImportPartsCommand> ImportPartsCommand::create(Document& document,
                                                                const QString& path) {
     // Read in a child process (Assimp may crash or loop on a broken file).
-    std::vector<PartNode> nodes = readImportedParts(path);
+    return fromRead(document, path, readImportedParts(path));
+}
+
+std::unique_ptr<ImportPartsCommand> ImportPartsCommand::fromRead(Document& document,
+                                                                 const QString& path,
+                                                                 std::vector<PartNode> nodes) {
     if (nodes.empty())
         throw Error(QFileInfo(path).fileName().toStdString() + " holds no mesh to import");
     // Ids are taken last, once nothing can fail any more.

@@ -21,6 +21,10 @@ class ImportPartsCommand : public QUndoCommand, public RecipeStepSource {
   public:
     // Throws rigmesh::Error (unreadable, unsupported, or not rigged).
     static std::unique_ptr<ImportPartsCommand> create(Document& document, const QString& path);
+    // The command for parts already read (readImportedParts, e.g. by a
+    // background job). Throws rigmesh::Error when there are none.
+    static std::unique_ptr<ImportPartsCommand> fromRead(Document& document, const QString& path,
+                                                        std::vector<PartNode> nodes);
     void redo() override;
     void undo() override;
     nlohmann::json recipeStep() const override;

@@ -1,5 +1,7 @@
 #include "model/commands/MergePartsCommand.h"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "base/Error.h"
@@ -120,7 +122,10 @@ MergePartsCommand::MergePartsCommand(Document& document, PartId dragged, PartId 
     mergedNode_ = editedNode(targetNode_, std::make_shared<const Part>(std::move(result.part)),
                              &droppedJoints_);
     const PartNode& d = draggedNode_;
-    if (!identicalPoses(d.pose, restPoseOf(d)) || !d.pinnedJoints.empty() || !d.clip.keys().empty())
+    const bool otherKeys = std::any_of(d.otherClips.begin(), d.otherClips.end(),
+                                       [](const rigmesh::Clip& c) { return c.keyCount() > 0; });
+    if (!identicalPoses(d.pose, restPoseOf(d)) || !d.pinnedJoints.empty() ||
+        !d.clip.keys().empty() || otherKeys)
         droppedDragged_ = true;
     setText(tr("Merge %1 into %2").arg(d.name, targetNode_.name));
 }

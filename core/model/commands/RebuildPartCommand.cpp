@@ -12,7 +12,13 @@ namespace rigmesh::model {
 std::unique_ptr<RebuildPartCommand> RebuildPartCommand::create(Document& document, PartId id,
                                                                const BuildOptions& options) {
     const PartNode& node = document.part(id);
-    std::shared_ptr<const Part> part = buildPart(node.stroke, node.name, options);
+    return fromBuilt(document, id, buildPart(node.stroke, node.name, options), options);
+}
+
+std::unique_ptr<RebuildPartCommand> RebuildPartCommand::fromBuilt(Document& document, PartId id,
+                                                                  std::shared_ptr<const Part> part,
+                                                                  const BuildOptions& options) {
+    document.part(id);  // throws on an unknown id
     return std::unique_ptr<RebuildPartCommand>(
         new RebuildPartCommand(document, id, std::move(part), options));
 }
@@ -29,13 +35,15 @@ RebuildPartCommand::RebuildPartCommand(Document& document, PartId id,
       newOptions_(options),
       oldPose_(document.part(id).pose),
       oldPinned_(document.part(id).pinnedJoints),
-      oldClip_(document.part(id).clip) {
+      oldClip_(document.part(id).clip),
+      oldOtherClips_(document.part(id).otherClips) {
     // Pose, pins and keys carry over where the new skeleton keeps the joints.
-    const CarriedRig carried =
-        carryRigOver(oldPart_->skeleton, newPart_->skeleton, oldPose_, oldPinned_, oldClip_);
+    const CarriedRig carried = carryRigOver(oldPart_->skeleton, newPart_->skeleton, oldPose_,
+                                            oldPinned_, oldClip_, oldOtherClips_);
     newPose_ = carried.pose;
     newPinned_ = carried.pinned;
     newClip_ = carried.clip;
+    newOtherClips_ = carried.otherClips;
     droppedJoints_ = carried.droppedJoints;
     setText(tr("Rebuild %1").arg(document.part(id).name));
 }
@@ -50,7 +58,8 @@ QString RebuildPartCommand::droppedMessage() const {
 }
 
 void RebuildPartCommand::redo() {
-    document_.replacePart(id_, newPart_, newOptions_, newPose_, newPinned_, newClip_);
+    document_.replacePart(id_, newPart_, newOptions_, newPose_, newPinned_, newClip_,
+                          newOtherClips_);
 }
 
 nlohmann::json RebuildPartCommand::recipeStep() const {
@@ -59,7 +68,8 @@ nlohmann::json RebuildPartCommand::recipeStep() const {
 }
 
 void RebuildPartCommand::undo() {
-    document_.replacePart(id_, oldPart_, oldOptions_, oldPose_, oldPinned_, oldClip_);
+    document_.replacePart(id_, oldPart_, oldOptions_, oldPose_, oldPinned_, oldClip_,
+                          oldOtherClips_);
 }
 
 }  // namespace rigmesh::model

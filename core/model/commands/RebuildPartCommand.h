@@ -23,6 +23,12 @@ class RebuildPartCommand : public QUndoCommand, public RecipeStepSource {
     static std::unique_ptr<RebuildPartCommand> create(Document& document, PartId id,
                                                       const BuildOptions& options);
 
+    // The command for a part already built from the node's stroke with
+    // `options` (buildPart, e.g. by a background job).
+    static std::unique_ptr<RebuildPartCommand> fromBuilt(Document& document, PartId id,
+                                                         std::shared_ptr<const Part> part,
+                                                         const BuildOptions& options);
+
     void redo() override;
     void undo() override;
     nlohmann::json recipeStep() const override;
@@ -42,6 +48,7 @@ class RebuildPartCommand : public QUndoCommand, public RecipeStepSource {
     rigmesh::Pose oldPose_, newPose_;
     std::set<rigmesh::JointId> oldPinned_, newPinned_;
     rigmesh::Clip oldClip_, newClip_ = rigmesh::Clip();
+    std::vector<rigmesh::Clip> oldOtherClips_, newOtherClips_;
     int droppedJoints_ = 0;
 };
 

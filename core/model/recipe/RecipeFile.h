@@ -1,5 +1,6 @@
-// Recipe files: JSON text, {"format": "rigmesh-recipe", "version": 1,
-// "steps": [...]} (see RecipeRunner.h for the steps).
+// Recipe files: JSON text, {"format": "rigmesh-recipe", "version": 2,
+// "steps": [...]} (see RecipeRunner.h for the steps). Version 2 (per-bone
+// pose rotations) reads version 1 recipes too.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -13,7 +14,9 @@ namespace rigmesh::model {
 
 namespace RecipeFile {
 inline constexpr const char* kFormatName = "rigmesh-recipe";
-inline constexpr int kFormatVersion = 1;
+inline constexpr int kFormatVersion = 2;
+static_assert(recipe::StepOptions{}.formatVersion == kFormatVersion,
+              "steps run as the current version by default");
 }  // namespace RecipeFile
 
 // An empty recipe: the header and no steps.

@@ -43,21 +43,29 @@ RecipeRunner::RecipeRunner(Document& document, std::filesystem::path baseDirecto
 
 void RecipeRunner::run(const nlohmann::json& recipe, const StepCallback& onStep) {
     const nlohmann::json& steps = recipeSteps(recipe);
+    // Steps of older versions keep their meaning (RecipeStepCommands.h).
+    recipe::StepOptions options = options_;
+    options.formatVersion = recipe["version"].get<int>();
     int number = 0;
     for (const nlohmann::json& step : steps) {
-        const RecipeStepReport report = apply(step, ++number);
+        const RecipeStepReport report = apply(step, ++number, options);
         if (onStep)
             onStep(report);
     }
 }
 
 RecipeStepReport RecipeRunner::apply(const nlohmann::json& step, int number) {
+    return apply(step, number, options_);
+}
+
+RecipeStepReport RecipeRunner::apply(const nlohmann::json& step, int number,
+                                     const recipe::StepOptions& options) {
     const std::string command = stepCommandName(step, number);
     recipe::StepCommand made;
     QString text;
     const auto start = std::chrono::steady_clock::now();
     try {
-        made = recipe::commandForStep(document_, command, step, baseDirectory_, options_);
+        made = recipe::commandForStep(document_, command, step, baseDirectory_, options);
         text = made.command->text();
         // The stack takes the command only once its redo() has run; until
         // then (a redo that throws) the unique_ptr still owns it.

@@ -1,7 +1,7 @@
 // Recipes: a document's making as a list of steps, replayed headless with the
 // very command classes of the studio's undo stack.
 //
-//   {"format": "rigmesh-recipe", "version": 1,
+//   {"format": "rigmesh-recipe", "version": 2,
 //    "steps": [ {"command": "...", ...}, ... ]}
 //
 // Steps ("part" is a part's name, which must be unique, or its index from 0;
@@ -23,7 +23,12 @@
 //                   kept), optional "reach": "limb" (default: the chain stops
 //                   below the nearest junction, as a plain drag) or "body" (up
 //                   to the root, as Alt + drag), or
-//                   "rotations": {"<joint>": [w, x, y, z], ...}, optional
+//                   "rotations": {"<joint>": [w, x, y, z], ...} (per bone:
+//                   the rotation of the bone ending at the joint about its
+//                   head, relative to its parent bone; the root's turns the
+//                   whole part about the root; version 1 recipes meant one
+//                   rotation per joint turning every bone leaving it and are
+//                   converted exactly, pose/LegacyPose.h), optional
 //                   "rootTranslation": [x, y, z], optional "complete": true (the
 //                   joints not listed go to rest, the translation to 0; without
 //                   it they keep their current values), optional "joint" (the
@@ -73,8 +78,21 @@
 //                 locked bones
 //   lock_bone, unlock_bone "part", "bone": painting and the clean-ups keep
 //                 a locked bone's weights
-//   clip_settings "part", optional "frameRate", "interpolation" ("linear" |
-//                 "smooth"), "playback" ("hold" | "loop")
+//   clip_settings "part", optional "frameRate", "interpolation" ("constant" |
+//                 "linear" | "smooth"), "playback" ("hold" | "loop" |
+//                 "ping_pong"): of the part's active clip
+//   move_keys     "part", "times": [seconds, ...], "by" (seconds): the keys
+//                 move together (a timeline drag)
+//   paste_keys    "part", "keys": [{"time", "rotations": {"<joint>": [w, x,
+//                 y, z], ...}, optional "rootTranslation"}, ...]: whole poses
+//                 keyed at their times (a timeline paste)
+//   timeline      optional "start", "end" (whole frames), "frameRate": a new
+//                 rate keeps every key on its frame (issue 15)
+//   new_clip      "part", "name": a new empty clip, made active
+//   duplicate_clip "part", "clip", "name": a copy of "clip", made active
+//   rename_clip   "part", "clip", "name"
+//   delete_clip   "part", "clip" (not the part's only clip)
+//   active_clip   "part", "clip": key, play and pose from this clip
 //
 // Each step constructs one command and pushes it on the document's undo
 // stack. A step that cannot be applied throws RecipeError ("step 3 (pose):
@@ -114,10 +132,14 @@ class RecipeRunner {
     // the steps in order, calling `onStep` after each. Throws RecipeError on
     // the first bad step.
     void run(const nlohmann::json& recipe, const StepCallback& onStep = {});
-    // Applies one step; `number` names it in messages. Throws RecipeError.
+    // Applies one step of a recipe of the current version; `number` names
+    // it in messages. Throws RecipeError.
     RecipeStepReport apply(const nlohmann::json& step, int number);
 
   private:
+    RecipeStepReport apply(const nlohmann::json& step, int number,
+                           const recipe::StepOptions& options);
+
     Document& document_;
     std::filesystem::path baseDirectory_;
     recipe::StepOptions options_;

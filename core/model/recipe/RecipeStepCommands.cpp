@@ -1,5 +1,6 @@
 #include "model/recipe/RecipeStepCommands.h"
 
+#include <cmath>
 #include <functional>
 #include <map>
 #include <set>
@@ -9,6 +10,7 @@
 #include "model/ClipModes.h"
 #include "model/PoseDrag.h"
 #include "model/commands/BoneEditCommand.h"
+#include "model/commands/ClipListCommand.h"
 #include "model/commands/CreatePartCommand.h"
 #include "model/commands/CutPartCommand.h"
 #include "model/commands/DeleteKeyCommand.h"
@@ -17,7 +19,9 @@
 #include "model/commands/KeyPoseCommand.h"
 #include "model/commands/MergePartsCommand.h"
 #include "model/commands/MoveKeyCommand.h"
+#include "model/commands/MoveKeysCommand.h"
 #include "model/commands/MovePartCommand.h"
+#include "model/commands/PasteKeysCommand.h"
 #include "model/commands/RebuildPartCommand.h"
 #include "model/commands/RenamePartCommand.h"
 #include "model/commands/ResetPoseCommand.h"
@@ -25,10 +29,12 @@
 #include "model/commands/SetJointPinnedCommand.h"
 #include "model/commands/SetPartVisibleCommand.h"
 #include "model/commands/SetPoseCommand.h"
+#include "model/commands/SetTimelineCommand.h"
 #include "model/recipe/RecipeJson.h"
 #include "model/recipe/RecipePartRef.h"
 #include "model/recipe/RecipeStepKind.h"
 #include "model/recipe/RecipeWeightSteps.h"
+#include "pose/LegacyPose.h"
 #include "sketch/Sketch.h"
 
 namespace rigmesh::model::recipe {
@@ -96,9 +102,15 @@ StepCommand pose(const Context& c) {
         throw Error("\"reach\" goes with \"target\" (an IK drag), not \"rotations\"");
     const bool complete = c.has("complete") && readBool(c.step["complete"], "\"complete\"");
     rigmesh::Pose pose = complete ? rigmesh::Pose{} : node.pose;
-    for (const auto& [joint, rotation] : readRotations(c.step["rotations"])) {
+    const std::map<JointId, Eigen::Quaterniond> rotations = readRotations(c.step["rotations"]);
+    for (const auto& [joint, rotation] : rotations)
         Context::checkJoint(node, joint);
-        pose.rotations[joint] = rotation;
+    if (c.options.formatVersion >= 2) {
+        for (const auto& [joint, rotation] : rotations)
+            pose.rotations[joint] = rotation;
+    } else if (!rotations.empty()) {
+        // Version 1: a joint's rotation turned every bone leaving it.
+        setJointRotations(PoseHierarchy(node.part->skeleton), rotations, pose);
     }
     if (c.has("rootTranslation"))
         pose.rootTranslation = readVec3(c.step["rootTranslation"], "\"rootTranslation\"");
@@ -115,17 +127,80 @@ StepCommand clipSettings(const Context& c) {
         const auto named =
             interpolationFromName(readText(c.step["interpolation"], "\"interpolation\""));
         if (!named)
-            throw Error("\"interpolation\" must be \"linear\" or \"smooth\"");
+            throw Error("\"interpolation\" must be \"constant\", \"linear\" or \"smooth\"");
         interpolation = *named;
     }
     auto playback = clip.mode;
     if (c.has("playback")) {
         const auto named = playbackFromName(readText(c.step["playback"], "\"playback\""));
         if (!named)
-            throw Error("\"playback\" must be \"hold\" or \"loop\"");
+            throw Error("\"playback\" must be \"hold\", \"loop\" or \"ping_pong\"");
         playback = *named;
     }
     return make<SetClipSettingsCommand>(id, c.document, id, fps, interpolation, playback);
+}
+
+// "times": [seconds, ...] of keys to move, "by": the offset in seconds.
+StepCommand moveKeys(const Context& c) {
+    const PartId id = c.part();
+    const json& list = c.required("times");
+    if (!list.is_array())
+        throw Error("\"times\" must be a list of seconds");
+    std::vector<double> times;
+    for (const json& time : list)
+        times.push_back(readNumber(time, "\"times\""));
+    return make<MoveKeysCommand>(id, c.document, id, std::move(times), c.number("by"));
+}
+
+// "keys": [{"time", "rotations", optional "rootTranslation"}, ...]: whole poses.
+StepCommand pasteKeys(const Context& c) {
+    const PartId id = c.part();
+    const json& list = c.required("keys");
+    if (!list.is_array())
+        throw Error("\"keys\" must be a list of keys");
+    std::map<double, rigmesh::Pose> keys;
+    for (const json& key : list) {
+        if (!key.is_object() || !key.contains("time") || !key.contains("rotations"))
+            throw Error("each key needs \"time\" and \"rotations\"");
+        rigmesh::Pose pose;
+        for (const auto& [joint, rotation] : readRotations(key["rotations"])) {
+            Context::checkJoint(c.node(id), joint);
+            pose.rotations[joint] = rotation;
+        }
+        if (key.contains("rootTranslation"))
+            pose.rootTranslation = readVec3(key["rootTranslation"], "\"rootTranslation\"");
+        keys[readNumber(key["time"], "\"time\"")] = pose;
+    }
+    return make<PasteKeysCommand>(id, c.document, id, std::move(keys));
+}
+
+StepCommand timeline(const Context& c) {
+    TimelineSettings settings = c.document.timeline();
+    auto frame = [&](const char* key) {
+        const double value = c.number(key);
+        if (value != std::floor(value) || std::abs(value) > kMaxFrame)
+            throw Error(std::string("\"") + key + "\" must be a whole frame");
+        return static_cast<int>(value);
+    };
+    if (c.has("start"))
+        settings.startFrame = frame("start");
+    if (c.has("end"))
+        settings.endFrame = frame("end");
+    if (c.has("frameRate"))
+        settings.framesPerSecond = c.number("frameRate");
+    return {std::make_unique<SetTimelineCommand>(c.document, settings), kNoPart, {}};
+}
+
+// The clip-list steps: "clip" names an existing clip, "name" a new name.
+template <typename Make>
+Builder clipListStep(Make make) {
+    return [make](const Context& c) {
+        const PartId id = c.part();
+        auto text = [&](const char* key) {
+            return readText(c.required(key), std::string("\"") + key + "\"");
+        };
+        return StepCommand{make(c.document, id, text), id, {}};
+    };
 }
 
 // "import": the rigged parts of a file (relative to the recipe).
@@ -363,6 +438,26 @@ const std::map<std::string, StepKind>& stepKinds() {
               return make<MoveKeyCommand>(id, c.document, id, c.number("from"), c.number("to"));
           }}},
         {"clip_settings", {{"part", "frameRate", "interpolation", "playback"}, clipSettings}},
+        {"move_keys", {{"part", "times", "by"}, moveKeys}},
+        {"paste_keys", {{"part", "keys"}, pasteKeys}},
+        {"timeline", {{"start", "end", "frameRate"}, timeline}},
+        {"new_clip", {{"part", "name"}, clipListStep([](Document& d, PartId id, auto text) {
+                          return ClipListCommand::create(d, id, text("name"));
+                      })}},
+        {"duplicate_clip",
+         {{"part", "clip", "name"}, clipListStep([](Document& d, PartId id, auto text) {
+              return ClipListCommand::duplicate(d, id, text("clip"), text("name"));
+          })}},
+        {"rename_clip",
+         {{"part", "clip", "name"}, clipListStep([](Document& d, PartId id, auto text) {
+              return ClipListCommand::rename(d, id, text("clip"), text("name"));
+          })}},
+        {"delete_clip", {{"part", "clip"}, clipListStep([](Document& d, PartId id, auto text) {
+                             return ClipListCommand::remove(d, id, text("clip"));
+                         })}},
+        {"active_clip", {{"part", "clip"}, clipListStep([](Document& d, PartId id, auto text) {
+                             return ClipListCommand::activate(d, id, text("clip"));
+                         })}},
     });
     return kinds;
 }

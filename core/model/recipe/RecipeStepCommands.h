@@ -16,14 +16,17 @@ namespace rigmesh::model::recipe {
 
 struct StepCommand {
     std::unique_ptr<QUndoCommand> command;
-    PartId part = kNoPart;  // the part the step works on (a new part's id for "sketch")
-    std::string detail;     // what the step found out, for its summary ("" if nothing)
+    PartId part = kNoPart;           // the part the step works on (a new part's id for "sketch")
+    std::string detail;              // what the step found out, for its summary ("" if nothing)
     nlohmann::json stats = nullptr;  // figures for `rigmesh run --stats` (null if none)
 };
 
 // How steps run beyond what the recipe says (command-line switches).
 struct StepOptions {
     bool compareGlobalReskin = false;  // merges also time the global re-skin
+    // The recipe's format version (RecipeFile::kFormatVersion by default): "pose" rotations of
+    // version 1 turn every bone leaving their joint and are converted.
+    int formatVersion = 2;
 };
 
 // The command for `step` (an object whose "command" is `name`) on the

@@ -49,16 +49,17 @@ void expectCapsuleRig(const ImportedScene& scene, const std::string& what) {
 
     ASSERT_TRUE(scene.parts[0].clip.has_value()) << what;
     EXPECT_NEAR(scene.parts[0].clip->duration(), 23.0 / 24.0, 1e-3) << what;
-    // Middle bends 40 degrees half way (frame 12 of 1..24).
-    JointId middleHead = kNoJoint;
+    // Middle bends 40 degrees half way (frame 12 of 1..24): its rotation is
+    // keyed by the joint it ends at (pose/Pose.h).
+    JointId middleTail = kNoJoint;
     for (const Bone& bone : part.skeleton.bones())
         if (part.boneNames.at(bone.id) == "Middle")
-            middleHead = bone.head;
+            middleTail = bone.tail;
     // Blender's glTF and COLLADA exporters put frame 1 at 1/24 s, its FBX
     // exporter at 0 s: the file's times are kept.
     const Pose bent =
         scene.parts[0].clip->evaluate(scene.parts[0].clip->keyTimes().front() + 11.0 / 24.0);
-    const double angle = 2 * std::acos(std::min(1.0, std::abs(bent.rotation(middleHead).w())));
+    const double angle = 2 * std::acos(std::min(1.0, std::abs(bent.rotation(middleTail).w())));
     EXPECT_NEAR(angle * 180 / M_PI, 40.0, 0.5) << what;
 }
 

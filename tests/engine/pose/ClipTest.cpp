@@ -43,7 +43,15 @@ double poseDistance(const Pose& a, const Pose& b) {
 }
 
 std::string interpolationName(const ::testing::TestParamInfo<Interpolation>& param) {
-    return param.param == Interpolation::Linear ? "Linear" : "Smooth";
+    switch (param.param) {
+        case Interpolation::Constant:
+            return "Constant";
+        case Interpolation::Linear:
+            return "Linear";
+        case Interpolation::Smooth:
+            return "Smooth";
+    }
+    return "Unknown";
 }
 
 class ClipInterpolation : public ::testing::TestWithParam<Interpolation> {};
@@ -124,6 +132,35 @@ TEST(Clip, LoopRepeatsTheSpanOfTheKeys) {
             EXPECT_LT(poseDistance(clip.evaluate(t - 3 * span), clip.evaluate(t)), 1e-9);
         }
         EXPECT_EQ(poseDistance(clip.evaluate(2.5), clip.keys().begin()->second), 0);
+    }
+}
+
+TEST(Clip, PingPongPlaysTheSpanForwardsThenBackwards) {
+    for (Interpolation interpolation :
+         {Interpolation::Constant, Interpolation::Linear, Interpolation::Smooth}) {
+        const Clip clip = randomClip(interpolation, PlaybackMode::PingPong);
+        const double first = clip.keys().begin()->first, span = clip.duration();
+        for (double u : {0.1, 0.7, 1.3, 2.2}) {
+            const Pose forwards = clip.evaluate(first + u);
+            // Mirrored about the last key, and periodic over twice the span.
+            EXPECT_LT(poseDistance(clip.evaluate(first + 2 * span - u), forwards), 1e-9);
+            EXPECT_LT(poseDistance(clip.evaluate(first + u + 2 * span), forwards), 1e-9);
+            EXPECT_LT(poseDistance(clip.evaluate(first + u - 4 * span), forwards), 1e-9);
+        }
+        EXPECT_EQ(poseDistance(clip.evaluate(first + span), clip.keys().rbegin()->second), 0);
+        EXPECT_EQ(poseDistance(clip.evaluate(first + 2 * span), clip.keys().begin()->second), 0);
+    }
+}
+
+TEST(Clip, ConstantHoldsEachKeyUntilTheNext) {
+    const Clip clip = randomClip(Interpolation::Constant, PlaybackMode::Hold);
+    const std::vector<double> times = clip.keyTimes();
+    for (std::size_t k = 0; k + 1 < times.size(); ++k) {
+        const Pose& key = clip.keys().at(times[k]);
+        EXPECT_EQ(poseDistance(clip.evaluate(times[k]), key), 0);
+        EXPECT_EQ(poseDistance(clip.evaluate(0.5 * (times[k] + times[k + 1])), key), 0);
+        EXPECT_EQ(poseDistance(clip.evaluate(times[k + 1] - 1e-9), key), 0);
+        EXPECT_EQ(poseDistance(clip.evaluate(times[k + 1]), clip.keys().at(times[k + 1])), 0);
     }
 }
 

@@ -47,32 +47,71 @@ INSTANTIATE_TEST_SUITE_P(SharedSketches, ForwardKinematicsOnParts,
                          ::testing::Values("tube", "y_branch", "biped"),
                          testsupport::sketchTestName);
 
-TEST(ForwardKinematics, RotatingAJointTurnsItsSubtreeAboutTheJoint) {
+TEST(ForwardKinematics, RotatingABoneTurnsItAndItsDescendantsAboutItsHead) {
     const Skeleton chain = straightChain(3, 1.0);  // joints at x = 0, 1, 2, 3
     Pose pose;
-    pose.setRotation(1, Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ())));
+    // The bone ending at joint 2 (from joint 1) turns about joint 1.
+    pose.setRotation(2, Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ())));
     const PosedSkeleton posed = forwardKinematics(chain, pose);
     EXPECT_TRUE(posed.jointPositions[0].isApprox(Vec3(0, 0, 0)));
     EXPECT_NEAR((posed.jointPositions[1] - Vec3(1, 0, 0)).norm(), 0, kPositionTolerance);
     EXPECT_NEAR((posed.jointPositions[2] - Vec3(1, 1, 0)).norm(), 0, kPositionTolerance);
     EXPECT_NEAR((posed.jointPositions[3] - Vec3(1, 2, 0)).norm(), 0, kPositionTolerance);
-    // The first bone hangs from the unrotated root; the others turned.
+    // The first bone stays; the turned bone and the one below it turned.
     EXPECT_TRUE(posed.boneTransforms[0].isIdentity());
-    EXPECT_NEAR(posed.boneTransforms[2].rotation.angularDistance(pose.rotation(1)), 0,
+    EXPECT_NEAR(posed.boneTransforms[1].rotation.angularDistance(pose.rotation(2)), 0,
+                kPositionTolerance);
+    EXPECT_NEAR(posed.boneTransforms[2].rotation.angularDistance(pose.rotation(2)), 0,
                 kPositionTolerance);
 }
 
-TEST(ForwardKinematics, LocalRotationsComposeDownTheChain) {
+TEST(ForwardKinematics, BoneRotationsComposeDownTheChain) {
     const Skeleton chain = straightChain(2, 1.0);
     Pose pose;
     const Eigen::Quaterniond quarter(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ()));
-    pose.setRotation(0, quarter);
     pose.setRotation(1, quarter);
+    pose.setRotation(2, quarter);
     pose.rootTranslation = Vec3(0, 0, 5);
     const PosedSkeleton posed = forwardKinematics(chain, pose);
-    // Root turned to +y, then the next bone a further quarter turn to -x.
+    // The first bone turned to +y, then the next a further quarter turn to -x.
     EXPECT_NEAR((posed.jointPositions[1] - Vec3(0, 1, 5)).norm(), 0, kPositionTolerance);
     EXPECT_NEAR((posed.jointPositions[2] - Vec3(-1, 1, 5)).norm(), 0, kPositionTolerance);
+}
+
+TEST(ForwardKinematics, TheRootsRotationTurnsTheWholeSkeletonAboutTheRoot) {
+    const Skeleton chain = straightChain(2, 1.0);
+    Pose pose;
+    pose.setRotation(0, Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ())));
+    pose.setRotation(2, Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ())));
+    const PosedSkeleton posed = forwardKinematics(chain, pose);
+    EXPECT_EQ(posed.jointPositions[0], Vec3::Zero());
+    EXPECT_NEAR((posed.jointPositions[1] - Vec3(0, 1, 0)).norm(), 0, kPositionTolerance);
+    EXPECT_NEAR((posed.jointPositions[2] - Vec3(-1, 1, 0)).norm(), 0, kPositionTolerance);
+}
+
+// A Y: root 0 at the origin, junction 1 at (1, 0, 0), branches to 2 and 3.
+Skeleton ySkeleton() {
+    Skeleton y;
+    for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 1, 0), Vec3(2, -1, 0)})
+        y.addJoint(p);
+    y.addBone(0, 1);
+    y.addBone(1, 2);
+    y.addBone(1, 3);
+    return y;
+}
+
+TEST(ForwardKinematics, BonesLeavingAJunctionTurnIndependently) {
+    const Skeleton y = ySkeleton();
+    Pose pose;
+    pose.setRotation(2, Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ())));
+    const PosedSkeleton posed = forwardKinematics(y, pose);
+    // Bone 1 -> 2 turned a quarter about the junction: (1, 1) -> (-1, 1).
+    EXPECT_NEAR((posed.jointPositions[2] - Vec3(0, 1, 0)).norm(), 0, kPositionTolerance);
+    // Its sibling and the trunk did not move at all.
+    EXPECT_EQ(posed.jointPositions[3], Vec3(2, -1, 0));
+    EXPECT_EQ(posed.jointPositions[1], Vec3(1, 0, 0));
+    EXPECT_TRUE(posed.boneTransforms[0].isIdentity());
+    EXPECT_TRUE(posed.boneTransforms[2].isIdentity());
 }
 
 TEST(ForwardKinematics, BoneDirectionInTheSkeletonDoesNotMatter) {
@@ -94,7 +133,7 @@ TEST(ForwardKinematics, BoneDirectionInTheSkeletonDoesNotMatter) {
 TEST(ForwardKinematics, UnnormalisedRotationsAreNormalised) {
     const Skeleton chain = straightChain(2, 1.0);
     Pose pose;
-    pose.setRotation(0, Eigen::Quaterniond(2, 0, 0, 2));  // 90 degrees about z, scaled
+    pose.setRotation(1, Eigen::Quaterniond(2, 0, 0, 2));  // 90 degrees about z, scaled
     EXPECT_NEAR(posedBoneLengths(chain, pose)[0], 1.0, kLengthRelative);
 }
 

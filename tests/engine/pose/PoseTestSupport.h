@@ -88,7 +88,7 @@ inline std::vector<double> posedBoneLengths(const Skeleton& skeleton, const Pose
     std::vector<double> lengths;
     for (int b = 0; b < h.boneCount(); ++b)
         lengths.push_back(
-            (posed.jointPositions[h.boneEndJoint(b)] - posed.jointPositions[h.boneFrameJoint(b)])
+            (posed.jointPositions[h.boneTailJoint(b)] - posed.jointPositions[h.boneHeadJoint(b)])
                 .norm());
     return lengths;
 }

@@ -100,13 +100,14 @@ struct TwistRig {
     std::string source;
 };
 
-// The twist of `tip`'s parent joint about the bone from it to `tip`.
+// The twist of the bone ending at `tip` about its own axis.
 Pose twistAbove(const Skeleton& skeleton, JointId tip) {
     const PoseHierarchy h(skeleton);
     const int middle = h.parent(h.indexOf(tip));
     const Vec3 axis = (h.restPosition(h.indexOf(tip)) - h.restPosition(middle)).normalized();
     Pose pose;
-    pose.setRotation(h.jointId(middle), Eigen::Quaterniond(Eigen::AngleAxisd(kTwistAngle, axis)));
+    // The end bone's rotation, keyed by the joint it ends at (Pose.h).
+    pose.setRotation(tip, Eigen::Quaterniond(Eigen::AngleAxisd(kTwistAngle, axis)));
     return pose;
 }
 

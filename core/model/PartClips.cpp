@@ -1,0 +1,56 @@
+#include "model/PartClips.h"
+
+#include <algorithm>
+#include <set>
+
+#include "base/Error.h"
+
+namespace rigmesh::model {
+
+std::string clipName(const rigmesh::Clip& clip) {
+    return clip.name.empty() ? std::string(kDefaultClipName) : clip.name;
+}
+
+std::vector<const rigmesh::Clip*> clipsOf(const PartNode& node) {
+    std::vector<const rigmesh::Clip*> out{&node.clip};
+    for (const rigmesh::Clip& clip : node.otherClips)
+        out.push_back(&clip);
+    std::stable_sort(out.begin(), out.end(), [](const rigmesh::Clip* a, const rigmesh::Clip* b) {
+        return clipName(*a) < clipName(*b);
+    });
+    return out;
+}
+
+const rigmesh::Clip* findClip(const PartNode& node, const std::string& name) {
+    for (const rigmesh::Clip* clip : clipsOf(node))
+        if (clipName(*clip) == name)
+            return clip;
+    return nullptr;
+}
+
+void checkClipName(const std::string& name) {
+    if (name.empty() || name.size() > kMaxClipNameLength)
+        throw Error("A clip name must have 1 to " + std::to_string(kMaxClipNameLength) +
+                    " characters.");
+    if (name.front() == ' ' || name.back() == ' ')
+        throw Error("A clip name must not start or end with a space.");
+    if (std::any_of(name.begin(), name.end(),
+                    [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
+        throw Error("A clip name must not hold control characters.");
+}
+
+void checkClipNamesUnique(const rigmesh::Clip& active, const std::vector<rigmesh::Clip>& others) {
+    std::set<std::string> names{clipName(active)};
+    for (const rigmesh::Clip& clip : others)
+        if (!names.insert(clipName(clip)).second)
+            throw Error("The part has two clips named \"" + clipName(clip) + "\".");
+}
+
+std::vector<rigmesh::Clip> sortedByName(std::vector<rigmesh::Clip> others) {
+    std::stable_sort(
+        others.begin(), others.end(),
+        [](const rigmesh::Clip& a, const rigmesh::Clip& b) { return clipName(a) < clipName(b); });
+    return others;
+}
+
+}  // namespace rigmesh::model

@@ -1,0 +1,46 @@
+// Set the timeline's frame range and rate (issue 15). A new rate keeps every
+// key of every clip on its frame, as Blender does (the key times in seconds
+// scale by old rate / new rate), and becomes every clip's frame rate (its
+// half-frame tolerance and the frames an export samples).
+#pragma once
+
+#include <QCoreApplication>
+#include <QUndoCommand>
+#include <map>
+#include <vector>
+
+#include "model/Document.h"
+#include "model/recipe/RecipeStepSource.h"
+
+namespace rigmesh::model {
+
+class SetTimelineCommand : public QUndoCommand, public RecipeStepSource {
+    Q_DECLARE_TR_FUNCTIONS(SetTimelineCommand)
+  public:
+    // Throws rigmesh::Error on settings checkTimelineSettings refuses, or a
+    // rate that would move a key beyond a clip's longest key time.
+    SetTimelineCommand(Document& document, const TimelineSettings& settings,
+                       QUndoCommand* parent = nullptr);
+
+    void redo() override;
+    void undo() override;
+    nlohmann::json recipeStep() const override;
+
+  private:
+    struct Clips {
+        rigmesh::Clip active = rigmesh::Clip();
+        std::vector<rigmesh::Clip> others;
+    };
+    void apply(const TimelineSettings& settings, const std::map<PartId, Clips>& clips);
+
+    Document& document_;
+    TimelineSettings before_, after_;
+    // Only when the rate changes: every part's clips before and after.
+    std::map<PartId, Clips> clipsBefore_, clipsAfter_;
+};
+
+// `clip` with every key moved from frame f at `fromRate` to f at `toRate`,
+// and `toRate` as its frame rate. Throws rigmesh::Error on a key out of range.
+rigmesh::Clip retimedClip(const rigmesh::Clip& clip, double fromRate, double toRate);
+
+}  // namespace rigmesh::model

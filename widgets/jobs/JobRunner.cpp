@@ -1,0 +1,142 @@
+#include "jobs/JobRunner.h"
+
+#include <QCoreApplication>
+#include <QPointer>
+#include <atomic>
+#include <exception>
+#include <new>
+#include <thread>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "base/Error.h"
+
+namespace rigmesh::widgets {
+
+namespace {
+
+std::atomic<int> busyRunners{0};
+
+}  // namespace
+
+// What the worker and the GUI thread share: the work's outcome, written by
+// the worker before it posts the job back, read on the GUI thread after.
+struct JobRunner::Job {
+    Work work;
+    Failed failed;
+    Cancelled cancelled;
+    Discard discard;
+    Apply apply;
+    QString error;
+    bool cancelledByUser = false;
+};
+
+JobRunner::JobRunner(QObject* parent) : QObject(parent) {}
+
+JobRunner::~JobRunner() {
+    if (running_)
+        --busyRunners;
+}
+
+bool JobRunner::anyBusy() {
+    return busyRunners.load() > 0;
+}
+
+bool JobRunner::runOn(JobRunner* runner, const QString& title, Work work, Failed failed,
+                      Cancelled cancelled) {
+    if (runner)
+        return runner->run(title, std::move(work), std::move(failed), std::move(cancelled));
+    Apply apply;
+    try {
+        apply = work();
+    } catch (const Error& error) {
+        if (failed)
+            failed(QString::fromStdString(error.what()));
+        return true;
+    }
+    if (apply)
+        apply();
+    return true;
+}
+
+bool JobRunner::run(const QString& title, Work work, Failed failed, Cancelled cancelled,
+                    Discard discard) {
+    if (running_)
+        return false;
+    auto job = std::make_shared<Job>();
+    job->work = std::move(work);
+    job->failed = std::move(failed);
+    job->cancelled = std::move(cancelled);
+    job->discard = std::move(discard);
+    running_ = job;
+    title_ = title;
+    clock_.start();
+    ++busyRunners;
+    emit busyChanged(true);
+    QPointer<JobRunner> self(this);
+    // Detached: if the window goes first, the worker still finishes and its
+    // result is dropped (the QPointer is null by then).
+    std::thread([job, self] {
+        // Below the GUI thread's priority (Linux nice is per thread, and the
+        // engine's own threads inherit it): the window keeps its time slices
+        // on a busy machine.
+        setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 5);
+        try {
+            job->apply = job->work();
+        } catch (const Error& error) {
+            job->error = QString::fromStdString(error.what());
+        } catch (const std::bad_alloc&) {
+            job->error = QObject::tr("Out of memory.");
+        } catch (const std::exception& error) {
+            job->error = QObject::tr("Internal error: %1").arg(QString::fromUtf8(error.what()));
+        }
+        // Back on the GUI thread (qApp outlives every window).
+        QMetaObject::invokeMethod(
+            qApp,
+            [job, self] {
+                if (self)
+                    self->finish(job);
+                else if (job->discard)
+                    job->discard();
+            },
+            Qt::QueuedConnection);
+    }).detach();
+    return true;
+}
+
+void JobRunner::finish(const std::shared_ptr<Job>& job) {
+    if (job != running_) {
+        // Cancelled: the result is dropped, and what the work left outside
+        // the document goes.
+        if (job->discard)
+            job->discard();
+        return;
+    }
+    end();
+    if (!job->error.isEmpty()) {
+        if (job->failed)
+            job->failed(job->error);
+        return;
+    }
+    if (job->apply)
+        job->apply();
+}
+
+void JobRunner::cancel() {
+    if (!running_)
+        return;
+    const std::shared_ptr<Job> job = running_;
+    end();
+    if (job->cancelled)
+        job->cancelled();
+}
+
+void JobRunner::end() {
+    running_.reset();
+    title_.clear();
+    --busyRunners;
+    emit busyChanged(false);
+}
+
+}  // namespace rigmesh::widgets

@@ -1,0 +1,86 @@
+#include "timeline/KeyDrag.h"
+
+#include <QCoreApplication>
+#include <memory>
+
+#include "base/Error.h"
+#include "model/commands/MoveKeysCommand.h"
+
+namespace rigmesh::widgets {
+
+KeyDrag::KeyDrag(model::Document& document, std::map<model::PartId, std::vector<double>> keys)
+    : document_(document), keys_(std::move(keys)) {}
+
+KeyDrag::~KeyDrag() {
+    if (!done_)
+        cancel();
+}
+
+double KeyDrag::seconds(int frames) const {
+    return frames / document_.timeline().framesPerSecond;
+}
+
+void KeyDrag::revert() {
+    for (const auto& [part, edit] : applied_)
+        if (document_.contains(part))
+            document_.editClip(part, edit.inverse());
+    applied_.clear();
+}
+
+void KeyDrag::moveTo(int frames) {
+    if (frames == offset_ || done_)
+        return;
+    revert();
+    std::map<model::PartId, model::ClipEdit> edits;
+    try {
+        for (const auto& [part, times] : keys_)
+            if (document_.contains(part))
+                edits[part] =
+                    model::movedKeysEdit(document_.part(part).clip, times, seconds(frames));
+    } catch (const Error&) {
+        frames = offset_;  // out of range: keep the last good offset
+        edits.clear();
+        for (const auto& [part, times] : keys_)
+            if (document_.contains(part) && frames != 0)
+                edits[part] =
+                    model::movedKeysEdit(document_.part(part).clip, times, seconds(frames));
+    }
+    for (const auto& [part, edit] : edits) {
+        document_.editClip(part, edit);
+        applied_[part] = edit;
+    }
+    offset_ = frames;
+}
+
+std::map<model::PartId, std::vector<double>> KeyDrag::finish() {
+    done_ = true;
+    std::map<model::PartId, std::vector<double>> moved;
+    const double by = seconds(offset_);
+    for (const auto& [part, times] : keys_)
+        for (const double time : times)
+            moved[part].push_back(offset_ == 0 ? time : time + by);
+    if (offset_ == 0 || applied_.empty())
+        return moved;
+    std::unique_ptr<QUndoCommand> parent;
+    if (applied_.size() > 1)
+        parent = std::make_unique<QUndoCommand>(QCoreApplication::translate(
+            "rigmesh::widgets::KeyDrag", "Move keys by %n frame(s)", nullptr, offset_));
+    std::unique_ptr<QUndoCommand> single;
+    for (auto& [part, edit] : applied_) {
+        auto* command = new model::MoveKeysCommand(document_, part, keys_.at(part), by,
+                                                   std::move(edit), parent.get());
+        if (!parent)
+            single.reset(command);
+    }
+    applied_.clear();
+    document_.undoStack()->push(parent ? parent.release() : single.release());
+    return moved;
+}
+
+void KeyDrag::cancel() {
+    done_ = true;
+    revert();
+    offset_ = 0;
+}
+
+}  // namespace rigmesh::widgets
