@@ -58,10 +58,11 @@ struct CrossSectionOptions {
     double smoothingStep = 0.5;       // lambda of each step
     // Resolution follows thickness (issue 10): the local edge length is at
     // most this fraction of the local radius, so a semicircle has at least
-    // pi / radiusFraction segments (9 at 0.35: 18 vertices around a thin
-    // part, neighbouring faces about 20 degrees apart) while parts wider
-    // than targetEdgeLength / radiusFraction keep the target edge length.
-    double radiusFraction = 0.35;
+    // pi / radiusFraction segments (13 at 0.25: 26 vertices around a thin
+    // part, neighbouring faces about 14 degrees apart; at 0.35 they were 20
+    // degrees apart, issue 10's limit) while parts wider than
+    // targetEdgeLength / radiusFraction keep the target edge length.
+    double radiusFraction = 0.25;
     // Floor of the local edge length, as a fraction of the target one, so a
     // hair-thin neck cannot ask for an unbounded number of vertices.
     double minimumSpacingFraction = 1.0 / 16.0;

@@ -193,7 +193,7 @@ class HalfSurfaceBuilder {
                                    : options_.targetEdgeLength;
         // Cap slices shrink towards the tip; below six segments the last
         // rings make a pyramid of the tip (a crease of 45 degrees or more).
-        constexpr int kMinimumCapSegments = 6;
+        constexpr int kMinimumCapSegments = 10;
         const int minimum = section.inCap ? kMinimumCapSegments : 2;
         const int segments =
             std::max(minimum, static_cast<int>(std::lround(std::numbers::pi * radius / spacing)));
@@ -275,6 +275,11 @@ std::vector<double> anchorWeights(const SketchSurface& surface, const Decomposit
         diameter /= static_cast<double>(sections.sections.size());
         double falloff = std::max(options.anchorFalloff * diameter, 1e-12);
         weights[v] = options.maxAnchorWeight * std::clamp(distance / falloff, 0.0, 1.0);
+        // A cap's slices twist and crowd near its tip (they join the k-th
+        // points of its two sides): held softly, LSM rounds the tip.
+        const bool inCap = origin.section < 0 || sections.sections[origin.section].inCap;
+        if (inCap && !origin.onOutline)
+            weights[v] = std::min(weights[v], options.capAnchorWeight);
     }
     return weights;
 }
