@@ -4,7 +4,7 @@
 // number of edges to list per sketch); RIGMESH_CREASE_PLY=DIR also writes
 // DIR/SKETCH.ply with every face coloured by its largest neighbour angle
 // (white 0, red at 35 degrees or more). A tool for the surface work, not a
-// guard: the figures are guarded in test_part's SharedSketchSurface.
+// guard: the figures are guarded in SurfaceFigures (SurfaceFiguresTest).
 #include <gtest/gtest.h>
 
 #include <algorithm>
