@@ -4,7 +4,8 @@
 # runs what it installed from there: `rigmesh --version`, a `rigmesh build`,
 # and `rigmesh-studio --screenshot` under Xvfb; checks the desktop entry,
 # the MIME type, the icons, the AppStream metainfo (appstreamcli validate)
-# and the manual pages; and runs lintian, which must report no error.
+# the manual pages and the translations (--help in German and Spanish); and
+# runs lintian, which must report no error.
 # usage: test-package.sh BUILD_DIR SKETCH.json
 set -euo pipefail
 build="$1"
@@ -32,7 +33,9 @@ for path in usr/bin/rigmesh usr/bin/rigmesh-studio \
             usr/share/icons/hicolor/48x48/apps/rigmesh-studio.png \
             usr/share/icons/hicolor/256x256/apps/rigmesh-studio.png \
             usr/share/man/man1/rigmesh.1.gz usr/share/man/man1/rigmesh-studio.1.gz \
-            usr/share/doc/rigmesh-studio/copyright usr/share/doc/rigmesh-studio/changelog.gz; do
+            usr/share/doc/rigmesh-studio/copyright usr/share/doc/rigmesh-studio/changelog.gz \
+            usr/share/rigmesh-studio/translations/rigmesh_de.qm \
+            usr/share/rigmesh-studio/translations/rigmesh_es.qm; do
     [ -e "$root/$path" ] || fail "the package has no /$path"
 done
 if dpkg -c "$deb" | grep -E 'test_|bench_|render-icon|include/' ; then
@@ -49,6 +52,15 @@ xvfb-run -a -s "-screen 0 1400x900x24" env QT_QPA_PLATFORM=xcb LIBGL_ALWAYS_SOFT
     HOME="$scratch/home" "$root/usr/bin/rigmesh-studio" --screenshot "$scratch/studio.png" ||
     fail "rigmesh-studio --screenshot"
 [ -s "$scratch/studio.png" ] || fail "no screenshot"
+# The installed studio finds its installed translations and follows the
+# system's language (no preference saved in this scratch home).
+for spoken in de_DE:Silhouette es_ES:silueta; do
+    locale="${spoken%%:*}"
+    help="$(env QT_QPA_PLATFORM=offscreen HOME="$scratch/home" LANGUAGE="${locale%%_*}" \
+        LC_ALL="$locale.UTF-8" "$root/usr/bin/rigmesh-studio" --help 2>&1)" || true
+    echo "$help" | sed -n 2p
+    echo "$help" | grep -q "${spoken#*:}" || fail "rigmesh-studio --help does not speak $locale"
+done
 
 echo "== desktop integration"
 desktop="$root/usr/share/applications/rigmesh-studio.desktop"

@@ -13,6 +13,7 @@ packages=(
     libeigen3-dev libsuitesparse-dev
     nlohmann-json3-dev libtinyxml2-dev libassimp-dev
     qt6-base-dev libqt6opengl6-dev libgl-dev libgl1-mesa-dri libqt6svg6
+    qt6-tools-dev qt6-l10n-tools qt6-translations-l10n
     xvfb xauth
     libgtest-dev libgmock-dev libbenchmark-dev
     blender python3-numpy

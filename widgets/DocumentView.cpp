@@ -5,6 +5,7 @@
 
 #include "base/Error.h"
 #include "jobs/JobRunner.h"
+#include "model/ErrorText.h"
 #include "model/PartBuilder.h"
 #include "model/commands/CreatePartCommand.h"
 #include "viewport/Viewport.h"
@@ -33,12 +34,15 @@ void DocumentView::createPartFromStroke(const std::vector<Vec2>& stroke,
     // can take seconds); the command is made and pushed here when done.
     const double documentLength = model::documentEdgeLength(*document_);
     const QString name = tr("Part %1").arg(document_->nextPartId());
+    // The preferred edge length (Preferences; 0 = the document's).
+    model::BuildOptions options;
+    options.targetEdgeLength = defaultEdgeLength_;
     QPointer<model::Document> document(document_.get());
     JobRunner::runOn(
         viewport_->jobRunner(), tr("Building %1").arg(name),
         [=, this]() -> JobRunner::Apply {
             model::BuiltPart built =
-                model::buildPartAtDocumentLength(documentLength, stroke, name, {});
+                model::buildPartAtDocumentLength(documentLength, stroke, name, options);
             return [=, this]() mutable {
                 if (!document)
                     return;

@@ -21,6 +21,9 @@ class DocumentView : public QWidget {
 
     model::Document* document() const { return document_.get(); }
     Viewport* viewport() const { return viewport_; }
+    // The edge length new sketches ask for (Preferences; 0 = automatic).
+    void setDefaultEdgeLength(double length) { defaultEdgeLength_ = length; }
+    double defaultEdgeLength() const { return defaultEdgeLength_; }
 
   public slots:
     void createPartFromStroke(const std::vector<rigmesh::Vec2>& stroke,
@@ -32,6 +35,7 @@ class DocumentView : public QWidget {
   private:
     std::unique_ptr<model::Document> document_;
     Viewport* viewport_;
+    double defaultEdgeLength_ = 0.0;
 };
 
 }  // namespace rigmesh::widgets

@@ -29,6 +29,7 @@
 #include "model/Autosave.h"
 #include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
+#include "model/ErrorText.h"
 #include "model/PoseChange.h"
 #include "model/commands/DeletePartCommand.h"
 #include "model/commands/ImportPartsCommand.h"
@@ -86,6 +87,11 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
     registerIconResources();
     setObjectName(QStringLiteral("RigMeshStudioMainWindow"));
     setWindowIcon(QIcon(QStringLiteral(":/icons/rigmesh-studio.svg")));
+    confirmDiscardWeights = [this](const QString& question) {
+        return QMessageBox::question(this, tr("Recompute Weights"), question,
+                                     QMessageBox::Yes | QMessageBox::Cancel,
+                                     QMessageBox::Cancel) == QMessageBox::Yes;
+    };
     tabs_->setTabsClosable(true);
     tabs_->setDocumentMode(true);
     setCentralWidget(tabs_);
@@ -108,6 +114,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
     createActions();
     createDocks();
     createTimelineActions();
+    applyPreferences(StudioPreferences::load());
 
     QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
@@ -117,7 +124,8 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
     rebuildRecentMenu();
     updateTitle();
     mouseHint_->showOnFirstRun();
-    showStatus(tr("Ready: S sketches a part, Q selects, P poses; middle drag orbits, wheel zooms"));
+    showStatus(tr("Ready: S sketches a part, Q selects, P poses; %1")
+                   .arg(navigationHint(preferences_.mouseBindings)));
 }
 
 MainWindow::~MainWindow() {
@@ -189,6 +197,9 @@ void MainWindow::createActions() {
     edit->addSeparator();
     add(edit, tr("&Delete Part"), QKeySequence::Delete, &MainWindow::deleteSelection,
         QStyle::SP_TrashIcon);
+    edit->addSeparator();
+    add(edit, tr("&Preferences..."), QKeySequence::Preferences, &MainWindow::openPreferences)
+        ->setMenuRole(QAction::PreferencesRole);
 
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     add(viewMenu_, tr("Frame &All"), QKeySequence(Qt::Key_Home), [this] {
@@ -390,6 +401,7 @@ DocumentView* MainWindow::addDocument(std::unique_ptr<model::Document> document)
     connect(doc, &model::Document::modifiedChanged, this, refreshTab);
     connect(doc, &model::Document::filePathChanged, this, refreshTab);
     autosaves_[view] = new model::Autosave(doc, recoveryDirectory_, view);
+    autosaves_[view]->setDelay(preferences_.autosaveSeconds * 1000);
     const int index = tabs_->addTab(view, doc->displayName());
     tabs_->setCurrentIndex(index);
     refreshTab();
@@ -419,6 +431,8 @@ void MainWindow::currentTabChanged(int) {
         view->viewport()->setDualQuaternionSkinning(dqsAction_->isChecked());
         view->viewport()->setGridVisible(gridAction_->isChecked());
         view->viewport()->setOnionSkin(timeline_->onionSkin());
+        view->viewport()->setMouseBindings(preferences_.mouseBindings);
+        view->setDefaultEdgeLength(preferences_.defaultEdgeLength);
         showWeightView(view->viewport()->weightView());  // each document keeps its own
     }
     updateTitle();
@@ -462,8 +476,7 @@ bool MainWindow::openFile(const QString& path) {
         showStatus(tr("Opened %1").arg(QFileInfo(path).fileName()), 4000);
         return true;
     } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(this, tr("Cannot open document"),
-                             QString::fromStdString(error.what()));
+        QMessageBox::warning(this, tr("Cannot open document"), model::errorText(error));
         return false;
     }
 }
@@ -476,8 +489,7 @@ bool MainWindow::saveDocument(DocumentView* view, const QString& path) {
         showStatus(tr("Saved %1").arg(QFileInfo(path).fileName()), 4000);
         return true;
     } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(this, tr("Cannot save document"),
-                             QString::fromStdString(error.what()));
+        QMessageBox::warning(this, tr("Cannot save document"), model::errorText(error));
         return false;
     }
 }
@@ -655,8 +667,7 @@ void MainWindow::offerRecovery() {
                 document->undoStack()->resetClean();
                 addDocument(std::move(document));
             } catch (const rigmesh::Error& error) {
-                showStatus(tr("Could not recover: %1").arg(QString::fromStdString(error.what())),
-                           8000);
+                showStatus(tr("Could not recover: %1").arg(model::errorText(error)), 8000);
                 continue;
             }
         }

@@ -6,6 +6,8 @@
 // wiring; the window only routes the active document to them.
 #pragma once
 
+#include <functional>
+
 #include <QMainWindow>
 #include <QUndoGroup>
 #include <map>
@@ -13,6 +15,8 @@
 #include <utility>
 #include <vector>
 #include "io/SceneExport.h"
+
+#include "preferences/StudioPreferences.h"
 
 class QStackedWidget;
 class QTabWidget;
@@ -63,11 +67,19 @@ class MainWindow : public QMainWindow {
     // Long work off the GUI thread (widgets/jobs) and what the window shows
     // of it.
     JobRunner* jobs() const { return jobs_; }
+    // Asked before Recompute Weights replaces hand-painted weights (the
+    // question in its argument); true goes on. A message box by default;
+    // tests answer it.
+    std::function<bool(const QString&)> confirmDiscardWeights;
     JobStatus* jobStatus() const { return jobStatus_; }
     PropertiesPanel* propertiesPanel() const { return properties_; }
     TimelineDock* timeline() const { return timeline_; }
 
     bool openFile(const QString& path);
+    // Puts every preference into effect at once (the language at the next
+    // start) and keeps them in QSettings (MainWindowPreferences.cpp).
+    void applyPreferences(const StudioPreferences& preferences);
+    const StudioPreferences& preferences() const { return preferences_; }
     // Offers to restore documents left in the recovery folder by a crash.
     void offerRecovery();
 
@@ -94,6 +106,8 @@ class MainWindow : public QMainWindow {
     void activatePaintTool();
     void resetPose();
     void deleteSelection();
+    // Edit > Preferences.
+    void openPreferences();
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -103,8 +117,12 @@ class MainWindow : public QMainWindow {
     void createDocks();
     void finishImport(model::Document& document, const QString& file,
                       std::unique_ptr<model::ImportPartsCommand> command);
-    // Tools > Weights: the clean-ups, Smooth All and Check Rig (MainWindowWeights.cpp).
+    // Tools > Weights: the clean-ups, Smooth All, Recompute Weights and Check
+    // Rig (MainWindowWeights.cpp).
     void createWeightMenu(QMenu* tools);
+    // Bone heat over the selected part again, as a background job; asks
+    // first if its weights were painted.
+    void recomputeWeights();
     // The View > Weights choice and the Weight View toolbar follow the
     // current document's viewport (each document keeps its own view).
     void showWeightView(WeightView view);
@@ -153,6 +171,7 @@ class MainWindow : public QMainWindow {
     std::map<DocumentView*, model::Autosave*> autosaves_;
     MouseHint* mouseHint_ = nullptr;
     QStackedWidget* toolOptions_ = nullptr;
+    StudioPreferences preferences_;
     JobRunner* jobs_ = nullptr;
     JobStatus* jobStatus_ = nullptr;
 };

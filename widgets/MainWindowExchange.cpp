@@ -30,6 +30,7 @@
 #include "model/Autosave.h"
 #include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
+#include "model/ErrorText.h"
 #include "model/ImportReader.h"
 #include "model/commands/DeletePartCommand.h"
 #include "model/commands/ImportPartsCommand.h"
@@ -77,8 +78,7 @@ void MainWindow::importPath(const QString& path) {
                     auto command = model::ImportPartsCommand::fromRead(*document, path, nodes);
                     finishImport(*document, file, std::move(command));
                 } catch (const rigmesh::Error& error) {
-                    QMessageBox::warning(this, tr("Cannot import"),
-                                         QString::fromStdString(error.what()));
+                    QMessageBox::warning(this, tr("Cannot import"), model::errorText(error));
                 }
             };
         },
@@ -95,7 +95,8 @@ void MainWindow::finishImport(model::Document& document, const QString& file,
         document.setSelection({ids.front(), kNoJoint});
     if (currentView() && currentView()->document() == &document)
         currentView()->viewport()->frameAll();
-    QString message = tr("Imported %1 part(s) from %2").arg(ids.size()).arg(file);
+    QString message =
+        tr("Imported %n part(s) from %1", nullptr, static_cast<int>(ids.size())).arg(file);
     if (unrigged > 0) {
         // Say so rather than fail silently: the mesh is here, its rig is not.
         message += tr(": %1 of them without a skeleton. Rigging imported meshes is not available "
@@ -121,8 +122,7 @@ void MainWindow::saveHistoryAsRecipe() {
                        .arg(QFileInfo(path).fileName()),
                    6000);
     } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(this, tr("Cannot save the recipe"),
-                             QString::fromStdString(error.what()));
+        QMessageBox::warning(this, tr("Cannot save the recipe"), model::errorText(error));
     }
 }
 

@@ -1,19 +1,23 @@
 // MainWindow: Tools > Weights (issue 14 item 3), Blender's Weights menu on
 // the selected part: Normalize All, Clean, Limit Total and Smooth All, each
-// one undoable command that keeps locked bones, and Check Rig (the Weights
-// panel lists what it finds).
+// one undoable command that keeps locked bones, Recompute Weights (bone heat
+// again, as a background job), and Check Rig (the Weights panel lists what
+// it finds).
 #include <QAction>
 #include <QActionGroup>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
 #include <QMenu>
+#include <QPointer>
 #include <QSignalBlocker>
 #include <QToolBar>
 
 #include "MainWindow.h"
 #include "base/Error.h"
+#include "jobs/JobRunner.h"
 #include "model/Document.h"
+#include "model/ErrorText.h"
 #include "model/commands/WeightCleanupCommand.h"
 #include "panels/WeightsPanel.h"
 #include "viewport/RenderScene.h"
@@ -63,7 +67,7 @@ void MainWindow::createWeightMenu(QMenu* tools) {
             document->undoStack()->push(command.release());
             showStatus(text, 6000);
         } catch (const Error& error) {
-            showStatus(QString::fromStdString(error.what()), 6000);
+            showStatus(model::errorText(error), 6000);
         }
     };
     auto add = [&](const QString& text, auto make) {
@@ -84,6 +88,13 @@ void MainWindow::createWeightMenu(QMenu* tools) {
         return model::WeightCleanupCommand::smoothAll(d, id, SmoothAllOptions{});
     })->setToolTip(tr("Every unlocked bone's weight halfway towards its neighbours' mean"));
     menu->addSeparator();
+    QAction* recompute = menu->addAction(tr("&Recompute Weights (Bone Heat)"));
+    recompute->setObjectName(QStringLiteral("recomputeWeights"));
+    recompute->setToolTip(
+        tr("Bone heat over the whole part again, as a new sketch gets it; locked bones keep "
+           "their weights"));
+    connect(recompute, &QAction::triggered, this, &MainWindow::recomputeWeights);
+    menu->addSeparator();
     QAction* check = menu->addAction(tr("Check &Rig"));
     connect(check, &QAction::triggered, this, [this] {
         for (auto* dock : findChildren<QDockWidget*>())
@@ -93,6 +104,59 @@ void MainWindow::createWeightMenu(QMenu* tools) {
             }
         weights_->checkRig();
     });
+}
+
+void MainWindow::recomputeWeights() {
+    model::Document* document = currentDocument();
+    if (!document || !document->contains(document->selection().part)) {
+        showStatus(tr("Select a part first"), 4000);
+        return;
+    }
+    const model::PartId id = document->selection().part;
+    const model::PartNode& node = document->part(id);
+    if (!node.part || node.part->skeleton.boneCount() == 0) {
+        showStatus(tr("%1 has no skeleton, so it has no weights to recompute").arg(node.name),
+                   6000);
+        return;
+    }
+    // A whole-part solve takes seconds on a large part: a background job
+    // (issue 16 item 3) on the part as it is; the command is made and
+    // pushed when it is done.
+    if (node.part->weightsPainted &&
+        !confirmDiscardWeights(
+            tr("The weights of %1 were painted or cleaned up by hand. Recomputing them by bone "
+               "heat replaces that work (locked bones keep theirs; Undo brings it back). "
+               "Recompute anyway?")
+                .arg(node.name))) {
+        showStatus(tr("Weights not recomputed: the painted weights are kept"), 6000);
+        return;
+    }
+    QPointer<model::Document> guarded(document);
+    const std::shared_ptr<const Part> part = node.part;
+    jobs_->run(
+        tr("Recomputing the weights of %1").arg(node.name),
+        [=, this]() -> JobRunner::Apply {
+            auto result = std::make_shared<model::WeightCleanupCommand::Recomputed>(
+                model::WeightCleanupCommand::recomputed(part));
+            return [=, this] {
+                if (!guarded)
+                    return;
+                try {
+                    auto command =
+                        model::WeightCleanupCommand::fromRecomputed(*guarded, id, *result);
+                    const QString text =
+                        tr("%1: %n vertices changed", nullptr, command->changedVertices())
+                            .arg(command->text());
+                    guarded->undoStack()->push(command.release());
+                    showStatus(text, 6000);
+                } catch (const Error& error) {
+                    showStatus(model::errorText(error), 6000);
+                }
+            };
+        },
+        [this](const QString& reason) {
+            showStatus(tr("Weights not recomputed: %1").arg(reason), 8000);
+        });
 }
 
 }  // namespace rigmesh::widgets

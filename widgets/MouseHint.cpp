@@ -21,18 +21,29 @@ MouseHint::MouseHint(QWidget* area) : QFrame(area), area_(area) {
                        "QLabel { color: #f0f0f0; }"));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(16, 10, 16, 10);
-    auto* text = new QLabel(
-        tr("<b>Left-drag</b> draws a part with the Sketch tool (S), moves it with Select (Q), "
-           "bends a joint or bone with Pose (P)<br>"
-           "<b>Middle-drag</b> orbits the view, <b>Shift + middle-drag</b> pans<br>"
-           "<b>Wheel</b> zooms, <b>Home</b> frames everything"
-           "<br><small>Click to close; Help &gt; Mouse Gestures shows this again</small>"),
-        this);
-    text->setTextFormat(Qt::RichText);
-    text->setWordWrap(true);
-    layout->addWidget(text);
+    text_ = new QLabel(this);
+    text_->setTextFormat(Qt::RichText);
+    text_->setWordWrap(true);
+    layout->addWidget(text_);
+    setMouseBindings(MouseBindings::Blender);
     area_->installEventFilter(this);
     hide();
+}
+
+void MouseHint::setMouseBindings(MouseBindings bindings) {
+    const QString view =
+        bindings == MouseBindings::Maya
+            ? tr("<b>Alt + left-drag</b> orbits the view, <b>Alt + middle-drag</b> pans, "
+                 "<b>Alt + right-drag</b> zooms<br>")
+            : tr("<b>Middle-drag</b> orbits the view, <b>Shift + middle-drag</b> pans<br>");
+    text_->setText(
+        tr("<b>Left-drag</b> draws a part with the Sketch tool (S), moves it with Select (Q), "
+           "bends a joint or bone with Pose (P)<br>") +
+        view +
+        tr("<b>Wheel</b> zooms, <b>Home</b> frames everything"
+           "<br><small>Click to close; Help &gt; Mouse Gestures shows this again</small>"));
+    if (isVisible())
+        place();
 }
 
 void MouseHint::showOnFirstRun() {

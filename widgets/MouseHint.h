@@ -7,6 +7,8 @@
 
 #include <QFrame>
 
+#include "viewport/MouseBindings.h"
+
 class QLabel;
 
 namespace rigmesh::widgets {
@@ -20,6 +22,8 @@ class MouseHint : public QFrame {
     void showOnFirstRun();
     // Hides it and remembers that the user has seen it.
     void dismiss();
+    // The view gestures the card names follow the bindings.
+    void setMouseBindings(MouseBindings bindings);
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -28,6 +32,7 @@ class MouseHint : public QFrame {
   private:
     void place();
     QWidget* area_;
+    QLabel* text_;
 };
 
 }  // namespace rigmesh::widgets

@@ -1,5 +1,7 @@
 #include "ExampleDocument.h"
 
+#include <QCoreApplication>
+
 #include "EmbeddedExamples.h"
 #include "model/commands/CreatePartCommand.h"
 #include "sketch/Sketch.h"
@@ -21,8 +23,8 @@ std::unique_ptr<model::Document> makeExampleDocument() {
     // An example is a starting point, not an edit: no history, not modified.
     document->undoStack()->clear();
     document->undoStack()->setClean();
-    document->setUntitledName(
-        QStringLiteral("Example: %1").arg(QString::fromStdString(sketch.name)));
+    document->setUntitledName(QCoreApplication::translate("rigmesh::studio", "Example: %1")
+                                  .arg(QString::fromStdString(sketch.name)));
     return document;
 }
 

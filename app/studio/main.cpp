@@ -8,11 +8,14 @@
 
 #include <QTimer>
 #include <cstdio>
-#include "viewport/Viewport.h"
 
 #include "ExampleDocument.h"
 #include "MainWindow.h"
 #include "base/Error.h"
+#include "model/ErrorText.h"
+#include "preferences/StudioPreferences.h"
+#include "preferences/Translations.h"
+#include "viewport/Viewport.h"
 
 int main(int argc, char** argv) {
     // Every GL widget gets a 3.3 core context (Mesa llvmpipe provides 4.5).
@@ -25,17 +28,24 @@ int main(int argc, char** argv) {
     // The desktop entry (packaging/rigmesh-studio.desktop) names the window's
     // icon and groups its windows.
     QGuiApplication::setDesktopFileName(QStringLiteral("rigmesh-studio"));
+    // The language of Preferences (the system's by default), from the start
+    // on, so that even --help speaks it.
+    using namespace rigmesh::widgets;
+    installTranslations(resolvedLanguage(StudioPreferences::load().language));
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Sketch a silhouette, get a rigged part."));
+    parser.setApplicationDescription(
+        QCoreApplication::translate("rigmesh::studio", "Sketch a silhouette, get a rigged part."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("documents"),
-                                 QStringLiteral("RigMesh documents to open"));
+    parser.addPositionalArgument(
+        QCoreApplication::translate("rigmesh::studio", "documents"),
+        QCoreApplication::translate("rigmesh::studio", "RigMesh documents to open"));
     QCommandLineOption screenshot(
         QStringLiteral("screenshot"),
-        QStringLiteral("Save a picture of the window to FILE after start-up and quit."),
-        QStringLiteral("FILE"));
+        QCoreApplication::translate(
+            "rigmesh::studio", "Save a picture of the window to FILE after start-up and quit."),
+        QCoreApplication::translate("rigmesh::studio", "FILE"));
     parser.addOption(screenshot);
     parser.process(app);
 
@@ -54,8 +64,9 @@ int main(int argc, char** argv) {
         try {
             window.addDocument(rigmesh::studio::makeExampleDocument());
         } catch (const rigmesh::Error& error) {
-            QMessageBox::warning(&window, QStringLiteral("RigMesh Studio"),
-                                 QString::fromStdString(error.what()));
+            QMessageBox::warning(&window,
+                                 QCoreApplication::translate("rigmesh::studio", "RigMesh Studio"),
+                                 rigmesh::model::errorText(error));
             window.newDocument();
         }
     }

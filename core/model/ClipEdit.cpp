@@ -46,12 +46,12 @@ void ClipEdit::applyTo(rigmesh::Clip& clip) const {
     // without copying it.
     for (const auto& [time, pose] : removed)
         if (!clip.keys().contains(time))
-            throw Error("There is no key at exactly " + std::to_string(time) + " s.");
+            throw Error(MessageId::NoKeyExactlyAt, std::to_string(time));
     rigmesh::Clip probe(after.framesPerSecond);  // validates the frame rate
     for (const auto& [time, pose] : added) {
         probe.insertExactKey(time, pose);  // validates the time and the pose
         if (clip.keys().contains(time) && !removed.contains(time))
-            throw Error("There is already a key at exactly " + std::to_string(time) + " s.");
+            throw Error(MessageId::KeyAlreadyAt, std::to_string(time));
     }
     for (const auto& [time, pose] : removed)
         clip.eraseExactKey(time);

@@ -1,5 +1,7 @@
 #include "model/DocumentExport.h"
 
+#include <QCoreApplication>
+
 #include <Eigen/Geometry>
 
 #include <deque>
@@ -52,13 +54,18 @@ DocumentExportResult exportParts(const std::vector<PartNode>& documentParts,
         if (node.part && (node.visible || !visibleOnly))
             nodes.push_back(&node);
     if (nodes.empty())
-        throw Error("there are no parts to export");
+        throw Error(QCoreApplication::translate("rigmesh::model::DocumentExport",
+                                                "there are no parts to export")
+                        .toStdString());
     if (isRiggedFormat(exportFormatFromPath(path)))
         for (const PartNode* node : nodes)
             if (node->part->skeleton.jointCount() == 0)
-                throw Error("\"" + node->name.toStdString() +
-                            "\" is not rigged yet: export it as OBJ, or hide it and export the "
-                            "visible parts");
+                throw Error(QCoreApplication::translate(
+                                "rigmesh::model::DocumentExport",
+                                "\"%1\" is not rigged yet: export it as OBJ, or hide it and "
+                                "export the visible parts")
+                                .arg(node->name)
+                                .toStdString());
 
     // The current pose as the rest shape: OBJ poses its mesh itself; the
     // rigged formats get parts whose rest is that pose (their clips would be

@@ -36,16 +36,13 @@ constexpr double kUnitTolerance = 1e-6;
 // CBOR's "self-described CBOR" tag (RFC 8949, 3.4.6): the file's magic.
 constexpr unsigned char kMagic[] = {0xD9, 0xD9, 0xF7};
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("DocumentFile", text);
-}
-
 [[noreturn]] void fail(const QString& message) {
     throw DocumentFileError(message.toStdString());
 }
 
 [[noreturn]] void corrupt(const std::string& detail) {
-    fail(tr("The document is corrupt: %1.").arg(QString::fromStdString(detail)));
+    fail(QCoreApplication::translate("rigmesh::model::DocumentFile", "The document is corrupt: %1.")
+             .arg(QString::fromStdString(detail)));
 }
 
 std::string partLabel(const PartNode& node) {
@@ -226,14 +223,17 @@ void convertJointRotations(PartNode& node) {
 DocumentContents readContents(json root) {
     if (!root.is_object() || !root.contains("format") || !root["format"].is_string() ||
         root["format"].get<std::string>() != DocumentFile::kFormatName)
-        fail(tr("This is not a RigMesh Studio document."));
+        fail(QCoreApplication::translate("rigmesh::model::DocumentFile",
+                                         "This is not a RigMesh Studio document."));
     const json& versionField = field(root, "version");
     if (!versionField.is_number_integer() || versionField.get<std::int64_t>() < 1)
         corrupt("invalid format version");
     const std::int64_t version = versionField.get<std::int64_t>();
     if (version > DocumentFile::kFormatVersion)
-        fail(tr("This document was saved by a newer RigMesh Studio (format version %1); this "
-                "version reads format version %2 and older. Please update RigMesh Studio.")
+        fail(QCoreApplication::translate(
+                 "rigmesh::model::DocumentFile",
+                 "This document was saved by a newer RigMesh Studio (format version %1); this "
+                 "version reads format version %2 and older. Please update RigMesh Studio.")
                  .arg(version)
                  .arg(DocumentFile::kFormatVersion));
 
@@ -279,16 +279,19 @@ QByteArray toBytes(const DocumentContents& contents) {
 
 DocumentContents fromBytes(const QByteArray& bytes) {
     if (bytes.isEmpty())
-        fail(tr("The file is empty."));
+        fail(QCoreApplication::translate("rigmesh::model::DocumentFile", "The file is empty."));
     const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.constData());
     const auto size = static_cast<std::size_t>(bytes.size());
     if (size < sizeof kMagic || !std::equal(std::begin(kMagic), std::end(kMagic), data))
-        fail(tr("This is not a RigMesh Studio document."));
+        fail(QCoreApplication::translate("rigmesh::model::DocumentFile",
+                                         "This is not a RigMesh Studio document."));
     json root;
     try {
         root = parseBoundedCbor(data + sizeof kMagic, data + size, kMaxNesting);
     } catch (const json::exception& e) {
-        fail(tr("The document is corrupt or truncated (%1).").arg(QString::fromUtf8(e.what())));
+        fail(QCoreApplication::translate("rigmesh::model::DocumentFile",
+                                         "The document is corrupt or truncated (%1).")
+                 .arg(QString::fromUtf8(e.what())));
     } catch (const Error& e) {
         corrupt(e.what());
     }
@@ -307,7 +310,8 @@ void write(const Document& document, const QString& path) {
     const QByteArray bytes = toBytes(document);
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
-        fail(tr("Cannot save \"%1\": %2").arg(path, file.errorString()));
+        fail(QCoreApplication::translate("rigmesh::model::DocumentFile", "Cannot save \"%1\": %2")
+                 .arg(path, file.errorString()));
 }
 
 void save(Document& document, const QString& path) {
@@ -318,12 +322,14 @@ void save(Document& document, const QString& path) {
 DocumentContents read(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        fail(tr("Cannot open \"%1\": %2").arg(path, file.errorString()));
+        fail(QCoreApplication::translate("rigmesh::model::DocumentFile", "Cannot open \"%1\": %2")
+                 .arg(path, file.errorString()));
     const QByteArray bytes = file.readAll();
     try {
         return fromBytes(bytes);
     } catch (const DocumentFileError& e) {
-        fail(tr("Cannot open \"%1\": %2").arg(path, QString::fromStdString(e.what())));
+        fail(QCoreApplication::translate("rigmesh::model::DocumentFile", "Cannot open \"%1\": %2")
+                 .arg(path, QString::fromStdString(e.what())));
     }
 }
 

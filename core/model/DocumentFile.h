@@ -1,5 +1,5 @@
 // The native document file (.rigmesh): CBOR (RFC 8949) of one map
-//   {"format": "rigmesh-studio-document", "version": 3, "nextPartId": n,
+//   {"format": "rigmesh-studio-document", "version": 4, "nextPartId": n,
 //    "timeline": {startFrame, endFrame, framesPerSecond, currentFrame},
 //    "parts": [ {id, name, visible, placement, stroke, options, part: {...},
 //                pose: {rotations: [[joint, w, x, y, z], ...], rootTranslation},
@@ -11,7 +11,9 @@
 //                otherClips: [clip, ...]} ]}
 // where part holds everything of the engine Part: name, outline, mesh
 // (vertices, faces), origins, mirror, skeleton (joints with ids, bones with
-// ids, root), skin weights and the known closest bones. pose and pinned are
+// ids, root), skin weights and the known closest bones (bones by id since
+// version 2; version 1 named them by position in the bone list, and reading
+// converts them: part/PartJson.h). pose and pinned are
 // optional when reading (a part without them loads in its rest pose, unpinned);
 // their joint ids must be joints of the part's skeleton and the quaternions
 // finite and non-zero. Pose rotations are per bone, keyed by the joint each
@@ -60,8 +62,11 @@ namespace DocumentFile {
 inline constexpr const char* kFormatName = "rigmesh-studio-document";
 // 2: per-bone pose rotations (version 1 files are converted on loading);
 // 3: the timeline and named clips (issue 15; DocumentMigration.h adds them
-// to older files).
-inline constexpr int kFormatVersion = 3;
+// to older files);
+// 4: skin weights, failed bones and known closest bones keyed by bone id
+// (older files name them by position in the bone list; part/PartJson.h
+// converts them on reading).
+inline constexpr int kFormatVersion = 4;
 inline constexpr const char* kSuffix = "rigmesh";
 
 QByteArray toBytes(const DocumentContents& contents);

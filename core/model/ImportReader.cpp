@@ -1,5 +1,7 @@
 #include "model/ImportReader.h"
 
+#include <QCoreApplication>
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -111,17 +113,27 @@ void setImportWorkerProgram(const QString& program) {
 std::vector<PartNode> readImportedParts(const QString& path) {
     const QFileInfo info(path);
     if (!info.exists())
-        throw Error("cannot import " + path.toStdString() + ": no such file");
+        throw Error(QCoreApplication::translate("rigmesh::model::ImportReader",
+                                                "cannot import %1: no such file")
+                        .arg(path)
+                        .toStdString());
     if (!info.isFile())
-        throw Error("cannot import " + path.toStdString() + ": not a file");
+        throw Error(QCoreApplication::translate("rigmesh::model::ImportReader",
+                                                "cannot import %1: not a file")
+                        .arg(path)
+                        .toStdString());
     return readImportedParts(path, importLimitsFor(static_cast<std::uint64_t>(info.size())));
 }
 
 std::vector<PartNode> readImportedParts(const QString& path, const ImportLimits& limits) {
     const QString program = importWorkerProgram();
     if (program.isEmpty())
-        throw Error("cannot import " + fileLabel(path) +
-                    ": the program that reads imports (rigmesh) is not installed");
+        throw Error(QCoreApplication::translate(
+                        "rigmesh::model::ImportReader",
+                        "cannot import %1: the program that reads imports (rigmesh) is not "
+                        "installed")
+                        .arg(QString::fromStdString(fileLabel(path)))
+                        .toStdString());
     QTemporaryDir folder;  // removed with everything in it on every path out
     if (!folder.isValid())
         throw Error("cannot import " + fileLabel(path) + ": no temporary folder (" +

@@ -1,5 +1,7 @@
 #include "model/PartBuilder.h"
 
+#include <QCoreApplication>
+
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
@@ -20,7 +22,10 @@ SketchToPartOptions engineOptions(const BuildOptions& options) {
 void checkBuildOptions(const std::vector<Vec2>&, const BuildOptions& options) {
     const double length = options.targetEdgeLength;
     if (!std::isfinite(length) || length < 0)
-        throw Error("The target edge length must be 0 (automatic) or a positive length.");
+        throw Error(QCoreApplication::translate(
+                        "rigmesh::model::PartBuilder",
+                        "The target edge length must be 0 (automatic) or a positive length.")
+                        .toStdString());
 }
 
 std::shared_ptr<const Part> buildPart(const std::vector<Vec2>& stroke, const QString& name,

@@ -1,5 +1,7 @@
 #include "model/PartClips.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <set>
 
@@ -30,13 +32,19 @@ const rigmesh::Clip* findClip(const PartNode& node, const std::string& name) {
 
 void checkClipName(const std::string& name) {
     if (name.empty() || name.size() > kMaxClipNameLength)
-        throw Error("A clip name must have 1 to " + std::to_string(kMaxClipNameLength) +
-                    " characters.");
+        throw Error(QCoreApplication::translate("rigmesh::model::PartClips",
+                                                "A clip name must have 1 to %1 characters.")
+                        .arg(kMaxClipNameLength)
+                        .toStdString());
     if (name.front() == ' ' || name.back() == ' ')
-        throw Error("A clip name must not start or end with a space.");
+        throw Error(QCoreApplication::translate("rigmesh::model::PartClips",
+                                                "A clip name must not start or end with a space.")
+                        .toStdString());
     if (std::any_of(name.begin(), name.end(),
                     [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
-        throw Error("A clip name must not hold control characters.");
+        throw Error(QCoreApplication::translate("rigmesh::model::PartClips",
+                                                "A clip name must not hold control characters.")
+                        .toStdString());
 }
 
 void checkClipNamesUnique(const rigmesh::Clip& active, const std::vector<rigmesh::Clip>& others) {

@@ -1,5 +1,7 @@
 #include "model/PoseDrag.h"
 
+#include <QCoreApplication>
+
 #include <vector>
 
 #include "base/Error.h"
@@ -15,7 +17,9 @@ IkOptions poseToolIkOptions(IkReach reach) {
 
 IkResult dragPartJoint(const PartNode& node, JointId joint, const Vec3& target, IkReach reach) {
     if (!node.part)
-        throw Error("The part has no skeleton to pose.");
+        throw Error(QCoreApplication::translate("rigmesh::model::PoseDrag",
+                                                "The part has no skeleton to pose.")
+                        .toStdString());
     const std::vector<JointId> pinned(node.pinnedJoints.begin(), node.pinnedJoints.end());
     return dragJoint(node.part->skeleton, node.pose, joint, target, pinned,
                      poseToolIkOptions(reach));

@@ -110,12 +110,14 @@ QVariant SceneItemModel::displayData(const SceneNode& node, int column) const {
             QString text = position;
             // The bone ending at the joint and how many vertices it leads
             // (issue 14 item 2).
-            for (int b = 0; b < skeleton->boneCount(); ++b)
-                if (skeleton->bones()[b].tail == node.jointId()) {
-                    const std::vector<int> leads =
-                        leadingVertexCounts(part->part->weights, skeleton->boneCount());
-                    text += tr(", bone %1: %n vertices", nullptr, leads[b])
-                                .arg(skeleton->bones()[b].id);
+            for (const Bone& bone : skeleton->bones())
+                if (bone.tail == node.jointId()) {
+                    const std::map<BoneId, int> leads =
+                        leadingVertexCounts(part->part->weights.perVertex);
+                    const auto count = leads.find(bone.id);
+                    text += tr(", bone %1: %n vertices", nullptr,
+                               count == leads.end() ? 0 : count->second)
+                                .arg(bone.id);
                 }
             return part->pinnedJoints.contains(node.jointId()) ? tr("%1 (pinned)").arg(text) : text;
         }

@@ -1,5 +1,7 @@
 #include "model/Timeline.h"
 
+#include <QCoreApplication>
+
 #include <string>
 
 #include "base/Error.h"
@@ -10,21 +12,34 @@ namespace rigmesh::model {
 void checkTimelineSettings(const TimelineSettings& settings) {
     const double fps = settings.framesPerSecond;
     if (!std::isfinite(fps) || fps < kMinFrameRate || fps > kMaxFrameRate)
-        throw Error("The frame rate must be between " + std::to_string(int(kMinFrameRate)) +
-                    " and " + std::to_string(int(kMaxFrameRate)) + " frames per second.");
+        throw Error(QCoreApplication::translate(
+                        "rigmesh::model::Timeline",
+                        "The frame rate must be between %1 and %2 frames per second.")
+                        .arg(int(kMinFrameRate))
+                        .arg(int(kMaxFrameRate))
+                        .toStdString());
     if (settings.startFrame < 0 || settings.endFrame > kMaxFrame)
-        throw Error("The frame range must lie within frames 0 to " + std::to_string(kMaxFrame) +
-                    ".");
+        throw Error(QCoreApplication::translate("rigmesh::model::Timeline",
+                                                "The frame range must lie within frames 0 to %1.")
+                        .arg(kMaxFrame)
+                        .toStdString());
     if (settings.startFrame >= settings.endFrame)
-        throw Error("The frame range must end after it starts.");
+        throw Error(QCoreApplication::translate("rigmesh::model::Timeline",
+                                                "The frame range must end after it starts.")
+                        .toStdString());
     if (settings.timeOfFrame(settings.endFrame) > rigmesh::Clip::kLongestKeyTime)
-        throw Error("The frame range is longer than a clip can be.");
+        throw Error(QCoreApplication::translate("rigmesh::model::Timeline",
+                                                "The frame range is longer than a clip can be.")
+                        .toStdString());
 }
 
 void checkFrame(int frame) {
     if (frame < 0 || frame > kMaxFrame)
-        throw Error("Frame " + std::to_string(frame) + " is outside frames 0 to " +
-                    std::to_string(kMaxFrame) + ".");
+        throw Error(QCoreApplication::translate("rigmesh::model::Timeline",
+                                                "Frame %1 is outside frames 0 to %2.")
+                        .arg(frame)
+                        .arg(kMaxFrame)
+                        .toStdString());
 }
 
 }  // namespace rigmesh::model

@@ -14,10 +14,6 @@ namespace rigmesh::model {
 
 namespace {
 
-QString tr(const char* text, int n) {
-    return QCoreApplication::translate("rigmesh::model::TimelineEdits", text, nullptr, n);
-}
-
 // Pushes the commands made by `make` as one undo step: a macro `text` when
 // there are several, the command itself when there is one.
 template <typename Make>
@@ -44,7 +40,9 @@ int insertKeys(Document& document, PartId part) {
             parts.push_back(node.id);
     const double time = document.currentTime();
     int next = 0;
-    pushAsOneStep(document, tr("Key %n part(s)", static_cast<int>(parts.size())),
+    pushAsOneStep(document,
+                  QCoreApplication::translate("rigmesh::model::TimelineEdits", "Key %n part(s)",
+                                              nullptr, static_cast<int>(parts.size())),
                   static_cast<int>(parts.size()), [&](QUndoCommand* parent) {
                       return new KeyPoseCommand(document, parts[next++], time, parent);
                   });
@@ -59,7 +57,9 @@ int deleteKeys(Document& document, const KeySelection& keys) {
                 if (node->clip.keys().contains(time))
                     doomed.emplace_back(part, time);
     std::size_t next = 0;
-    pushAsOneStep(document, tr("Delete %n key(s)", static_cast<int>(doomed.size())),
+    pushAsOneStep(document,
+                  QCoreApplication::translate("rigmesh::model::TimelineEdits", "Delete %n key(s)",
+                                              nullptr, static_cast<int>(doomed.size())),
                   static_cast<int>(doomed.size()), [&](QUndoCommand* parent) {
                       const auto [part, time] = doomed[next++];
                       return new DeleteKeyCommand(document, part, time, parent);
@@ -104,8 +104,10 @@ KeySelection pasteKeys(Document& document, const KeyClipboard& clipboard, PartId
     int keyCount = 0;
     for (const auto& entry : placed)
         keyCount += static_cast<int>(entry.second.size());
-    pushAsOneStep(document, tr("Paste %n key(s)", keyCount), static_cast<int>(placed.size()),
-                  [&](QUndoCommand* parent) {
+    pushAsOneStep(document,
+                  QCoreApplication::translate("rigmesh::model::TimelineEdits", "Paste %n key(s)",
+                                              nullptr, keyCount),
+                  static_cast<int>(placed.size()), [&](QUndoCommand* parent) {
                       const auto& [part, keys] = *next++;
                       return new PasteKeysCommand(document, part, keys, parent);
                   });

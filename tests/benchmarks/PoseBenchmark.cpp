@@ -34,25 +34,26 @@ Skeleton chainSkeleton() {
 }
 
 // Smooth weights: a hat function of the distance along the axis from each
-// bone's centre (width 1.5 bones), so each vertex has 2-3 bones.
-SkinWeights chainWeights(const TriMesh& mesh) {
-    SkinWeights weights;
+// bone's centre (width 1.5 bones), so each vertex has 2-3 bones; keyed by
+// bone id, as a part stores them.
+WeightsById chainWeights(const TriMesh& mesh, const Skeleton& skeleton) {
+    WeightsById weights;
     const double boneLength = kLength / kBones;
     for (const Vec3& v : mesh.vertices) {
         const double s = (v.z() + kLength / 2) / boneLength - 0.5;  // in bone units
-        std::vector<std::pair<int, double>> list;
+        std::vector<std::pair<BoneId, double>> list;
         double sum = 0;
         for (int b = std::max(0, static_cast<int>(std::floor(s)) - 1);
              b <= std::min(kBones - 1, static_cast<int>(std::ceil(s)) + 1); ++b) {
             const double w = std::max(0.0, 1.0 - std::abs(s - b) / 1.5);
             if (w > 0) {
-                list.push_back({b, w});
+                list.push_back({skeleton.bones()[b].id, w});
                 sum += w;
             }
         }
         for (auto& [bone, w] : list)
             w /= sum;
-        weights.perVertex.push_back(std::move(list));
+        weights.push_back(std::move(list));
     }
     return weights;
 }
@@ -61,7 +62,7 @@ struct Rig {
     TriMesh mesh;
     std::vector<Vec3> normals;
     Skeleton skeleton;
-    SkinWeights weights;
+    WeightsById weights;
     Pose pose;  // every joint bent and twisted a little
 };
 
@@ -73,7 +74,7 @@ const Rig& rig(int rings) {
         r.mesh = makeCylinderTube(rings, kSegments, kRadius, kLength);
         r.normals = vertexNormals(r.mesh);
         r.skeleton = chainSkeleton();
-        r.weights = chainWeights(r.mesh);
+        r.weights = chainWeights(r.mesh, r.skeleton);
         for (const Joint& joint : r.skeleton.joints())
             r.pose.setRotation(joint.id, Eigen::Quaterniond(Eigen::AngleAxisd(
                                              0.05, Vec3(1, 0.3, 0.5).normalized())));
@@ -92,8 +93,9 @@ void skin(benchmark::State& state, SkinningMethod method) {
     for (auto _ : state) {
         // Per frame: FK, per-bone transforms, then the vertices.
         const PosedSkeleton posed = forwardKinematics(r.skeleton, r.pose);
-        SkinnedVertices out = skinVertices(r.mesh.vertices, r.normals, r.weights,
-                                           SkinningTransforms(posed.boneTransforms), options);
+        SkinnedVertices out =
+            skinVertices(r.mesh.vertices, r.normals, r.weights,
+                         SkinningTransforms(r.skeleton, posed.boneTransforms), options);
         benchmark::DoNotOptimize(out.positions.data());
     }
     state.counters["vertices"] = r.mesh.vertexCount();

@@ -70,10 +70,9 @@ BoneId paintedBone(const Part& part, const Brush& brush) {
             (part.mesh.vertices[nearest] - middle).squaredNorm())
             nearest = v;
     const auto& list = part.weights.perVertex[nearest];
-    const auto largest = std::max_element(list.begin(), list.end(), [](auto& a, auto& b) {
-        return a.second < b.second;
-    });
-    return part.skeleton.bones()[largest->first].id;
+    const auto largest = std::max_element(list.begin(), list.end(),
+                                          [](auto& a, auto& b) { return a.second < b.second; });
+    return largest->first;
 }
 
 WeightDab dabAt(const Part& part, const Brush& brush, int i, BrushMode mode) {

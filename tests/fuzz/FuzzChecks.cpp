@@ -37,7 +37,7 @@ std::string partProblem(const Part& part, Topology topology) {
     for (const auto& list : part.weights.perVertex) {
         double sum = 0;
         for (const auto& [bone, weight] : list) {
-            if (bone < 0 || bone >= part.skeleton.boneCount())
+            if (!part.skeleton.hasBone(bone))
                 return "a weight refers to a missing bone";
             if (!std::isfinite(weight) || weight < 0)
                 return "a weight is negative or not finite";

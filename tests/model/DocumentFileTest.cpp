@@ -166,8 +166,8 @@ TEST(DocumentFile, CorruptFilesAreRejected) {
     bad["parts"][0]["name"] = 12;
     expectRejected(encode(bad), "part name is not text");
     bad = good;
-    bad["parts"][0]["part"]["weights"]["perVertex"][0] = json::array({99, 1.0});
-    expectRejected(encode(bad), "missing bone");
+    bad["parts"][0]["part"]["weights"]["byBoneId"][0] = json::array({99, 1.0});
+    expectRejected(encode(bad), "bone 99, which the skeleton does not have");
     bad = good;
     bad["parts"][0]["part"]["skeleton"]["root"] = 424242;
     expectRejected(encode(bad), "root");
@@ -222,15 +222,14 @@ TEST(DocumentFile, NonFiniteStrokeAndOutlineAreRejected) {
 TEST(DocumentFile, BadSkinWeightsAreRejected) {
     // Vertex 0's first weight: NaN, negative, or breaking the sum of 1.
     const auto firstWeight = [](double value) {
-        return editedSample([value](auto& root) {
-            root["parts"][1]["part"]["weights"]["perVertex"][0][1] = value;
-        });
+        return editedSample(
+            [value](auto& root) { root["parts"][1]["part"]["weights"]["byBoneId"][0][1] = value; });
     };
     expectRejected(firstWeight(kNaN), "skin weights holds a value that is not finite");
     expectRejected(firstWeight(-0.5), "skin weights holds a negative value");
     expectRejected(firstWeight(7.0), "skin weights of vertex 0 sum to");
     expectRejected(editedSample([](auto& root) {
-                       root["parts"][1]["part"]["weights"]["perVertex"] = nlohmann::json::array();
+                       root["parts"][1]["part"]["weights"]["byBoneId"] = nlohmann::json::array();
                    }),
                    "needs skin weights for every vertex");
 }

@@ -3,10 +3,11 @@
 // bone through painting and Smooth All, and hand-painted weights are marked
 // so a rebuild can ask before discarding them; each replays headless.
 #include "ModelTestSupport.h"
-#include "RecipeTestSupport.h"
 #include "PartWeightOf.h"
+#include "RecipeTestSupport.h"
 #include "base/Error.h"
 #include "model/commands/PaintWeightsCommand.h"
+#include "model/commands/WeightCleanupCommand.h"
 #include "model/recipe/RecipeFromHistory.h"
 #include "part/PartJson.h"
 
@@ -128,6 +129,39 @@ TEST(SkinningEdits, APartNobodyPaintedSavesNoLockOrPaintFields) {
     nlohmann::json broken = partToJson(part);
     broken["lockedBones"] = {12345};
     EXPECT_THROW(partFromJson(broken), Error);
+}
+
+// Recompute Weights after a stroke: one undo step, the weights no longer
+// marked painted, undo gives the stroke back exactly, and the history
+// replays headless to the same bytes.
+TEST(RecomputeWeightsCommand, BoneHeatReplacesAStrokeAsOneUndoStepAndReplays) {
+    Document document;
+    bipedDocument(document);
+    const BoneId bone = document.parts()[0].part->skeleton.bones().front().id;
+    runSteps(document, {strokeStep(bone)});
+    const QByteArray painted = bytesOf(document);
+    const int count = document.undoStack()->count();
+    runSteps(document, {{{"command", "recompute_weights"}, {"part", "biped"}}});
+    EXPECT_EQ(document.undoStack()->count(), count + 1);
+    const Part& part = *document.parts()[0].part;
+    EXPECT_FALSE(part.weightsPainted);
+    EXPECT_TRUE(part.validate().empty());
+    const QByteArray after = bytesOf(document);
+    EXPECT_NE(after, painted);
+    document.undoStack()->undo();
+    EXPECT_EQ(bytesOf(document), painted);
+    document.undoStack()->redo();
+    EXPECT_EQ(bytesOf(document), after);
+    Document replay;
+    RecipeRunner(replay).run(parseRecipe(recipeFromHistory(document).dump(), "history"));
+    EXPECT_EQ(bytesOf(replay), after);
+    // Computed against one part, applied to another: refused, nothing changes.
+    const auto stale = WeightCleanupCommand::recomputed(document.parts()[0].part);
+    runSteps(document, {strokeStep(bone)});
+    const QByteArray now = bytesOf(document);
+    EXPECT_THROW(WeightCleanupCommand::fromRecomputed(document, document.parts()[0].id, stale),
+                 Error);
+    EXPECT_EQ(bytesOf(document), now);
 }
 
 }  // namespace

@@ -7,9 +7,8 @@
 namespace rigmesh::testsupport {
 
 inline double weightOf(const Part& part, int vertex, BoneId bone) {
-    const int index = part.skeleton.indexOfBone(bone);
     for (const auto& [b, w] : part.weights.perVertex[vertex])
-        if (b == index)
+        if (b == bone)
             return w;
     return 0.0;
 }

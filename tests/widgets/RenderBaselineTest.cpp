@@ -168,6 +168,7 @@ TEST_P(WeightViewBaseline, FrameMatchesTheBaseline) {
                                                 1);
             viewport.setWeightView(view);
             QTest::qWait(20);
+            test::waitForGlobalDifferences(&viewport);
         }),
         QStringLiteral("weights_") + QString::fromLatin1(name));
 }

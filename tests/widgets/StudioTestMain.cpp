@@ -7,6 +7,7 @@
 #include <QSurfaceFormat>
 
 #include "model/ImportReader.h"
+#include "preferences/Translations.h"
 #include "viewport/Viewport.h"
 
 int main(int argc, char** argv) {
@@ -17,6 +18,8 @@ int main(int argc, char** argv) {
     QApplication::setApplicationName(QStringLiteral("RigMesh Studio Tests"));
     // Imports are read by the built rigmesh in a child process.
     rigmesh::model::setImportWorkerProgram(QStringLiteral(RIGMESH_CLI));
+    // The compiled translations of the build tree.
+    rigmesh::widgets::setTranslationsDirectory(QStringLiteral(RIGMESH_QM_DIR));
     testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }

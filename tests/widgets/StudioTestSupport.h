@@ -19,14 +19,38 @@ inline void sendMouse(QWidget* widget, QEvent::Type type, const QPointF& at, Qt:
     QApplication::sendEvent(widget, &event);
 }
 
+// Runs the event loop while `busy` says so (at most `timeoutMs`).
+template <typename Busy>
+void waitWhile(Busy&& busy, int timeoutMs) {
+    QElapsedTimer clock;
+    clock.start();
+    while (busy() && clock.elapsed() < timeoutMs)
+        QTest::qWait(5);
+    QApplication::processEvents();
+}
+
 // Lets background jobs (a sketch's build, a rebuild, an import; widgets/
 // jobs) finish and apply, as a person waits for the progress bar to go.
 inline void waitForJobs(int timeoutMs = 120000) {
-    QElapsedTimer clock;
-    clock.start();
-    while (widgets::JobRunner::anyBusy() && clock.elapsed() < timeoutMs)
-        QTest::qWait(5);
-    QApplication::processEvents();
+    waitWhile([] { return widgets::JobRunner::anyBusy(); }, timeoutMs);
+}
+
+// Lets the Difference from Global Weights view's solve finish and show.
+inline void waitForGlobalDifferences(widgets::Viewport* viewport, int timeoutMs = 120000) {
+    viewport->update();
+    QTest::qWait(20);  // a paint asks for the differences
+    waitWhile([viewport] { return viewport->globalDifferencePending(); }, timeoutMs);
+    viewport->update();
+    QTest::qWait(20);
+}
+
+// A straight drag with `button` from `from` to `to`, in one move, without
+// waiting for background jobs (view navigation: orbit, pan, zoom).
+inline void buttonDrag(QWidget* widget, Qt::MouseButton button, const QPointF& from,
+                       const QPointF& to, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    sendMouse(widget, QEvent::MouseButtonPress, from, button, button, modifiers);
+    sendMouse(widget, QEvent::MouseMove, to, Qt::NoButton, button, modifiers);
+    sendMouse(widget, QEvent::MouseButtonRelease, to, button, Qt::NoButton, modifiers);
 }
 
 // A left-button drag through `points` (pixels in the widget).

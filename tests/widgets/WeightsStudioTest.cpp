@@ -14,7 +14,8 @@
 #include <QTreeWidget>
 
 #include "PartWeightOf.h"
-#include "StudioFixture.h"
+#include "StudioPoseFixture.h"
+#include "jobs/JobRunner.h"
 #include "model/DocumentFile.h"
 #include "model/recipe/RecipeRunner.h"
 #include "panels/PropertiesPanel.h"
@@ -25,20 +26,18 @@ namespace {
 
 using test::drag;
 
-class WeightsStudio : public test::StudioFixture {
+class WeightsStudio : public test::StudioPose {
   protected:
-    // The leaf joint farthest sideways (a hand) and the bone ending there.
-    JointId hand() const {
-        const Skeleton& skeleton = part().skeleton;
-        JointId best = kNoJoint;
-        double side = -1;
-        for (const Joint& joint : skeleton.joints())
-            if (skeleton.degree(joint.id) == 1 && std::abs(joint.position.x()) > side) {
-                side = std::abs(joint.position.x());
-                best = joint.id;
-            }
-        return best;
+    // The example biped with one paint stroke along its arm.
+    void paintTheArmOfTheExample() {
+        const model::PartId biped = addExampleBiped();
+        document()->setSelection({biped, shoulder()});
+        window->activatePaintTool();
+        QTest::qWait(20);
+        drag(viewport(), armStroke());
     }
+    // The leaf joint farthest sideways (a hand) and the bone ending there.
+    JointId hand() const { return sidewaysHand(part().skeleton); }
     // The joint the hand's bone starts at: the bone ending there (the upper
     // arm) is painted onto the forearm, where it has room to grow.
     JointId shoulder() const {
@@ -253,11 +252,7 @@ TEST_F(WeightsStudio, CheckRigListsABoneLeadingNoVertexAndSelectsIt) {
 }
 
 TEST_F(WeightsStudio, RebuildAsksBeforeDiscardingPaintedWeights) {
-    const model::PartId biped = addExampleBiped();
-    document()->setSelection({biped, shoulder()});
-    window->activatePaintTool();
-    QTest::qWait(20);
-    drag(viewport(), armStroke());
+    paintTheArmOfTheExample();
     ASSERT_TRUE(part().weightsPainted) << status().toStdString();
     const int steps = document()->undoStack()->count();
     widgets::PropertiesPanel* properties = window->propertiesPanel();
@@ -281,6 +276,38 @@ TEST_F(WeightsStudio, RebuildAsksBeforeDiscardingPaintedWeights) {
     test::waitForJobs();
     EXPECT_EQ(document()->undoStack()->count(), steps + 1);
     EXPECT_FALSE(part().weightsPainted) << "fresh weights from the sketch";
+    document()->undoStack()->undo();
+    EXPECT_TRUE(part().weightsPainted) << "undo brings the painting back";
+}
+
+// Tools > Weights > Recompute Weights: asks before replacing painted
+// weights (no: nothing happens), then runs bone heat over the whole part as
+// a background job, one undo step; undo brings the painting back.
+TEST_F(WeightsStudio, RecomputeWeightsAsksThenRunsInTheBackgroundAsOneStep) {
+    paintTheArmOfTheExample();
+    ASSERT_TRUE(part().weightsPainted) << status().toStdString();
+    const int steps = document()->undoStack()->count();
+    auto* recompute = window->findChild<QAction*>(QStringLiteral("recomputeWeights"));
+    ASSERT_NE(recompute, nullptr);
+    QString asked;
+    window->confirmDiscardWeights = [&](const QString& question) {
+        asked = question;
+        return false;
+    };
+    recompute->trigger();
+    EXPECT_TRUE(asked.contains(QStringLiteral("painted"))) << asked.toStdString();
+    EXPECT_FALSE(window->jobs()->busy());
+    EXPECT_EQ(document()->undoStack()->count(), steps) << "declined: nothing happens";
+    window->confirmDiscardWeights = [](const QString&) { return true; };
+    recompute->trigger();
+    EXPECT_TRUE(window->jobs()->busy()) << "bone heat runs in the background";
+    EXPECT_EQ(document()->undoStack()->count(), steps) << "nothing changes before it is done";
+    test::waitForJobs();
+    EXPECT_EQ(document()->undoStack()->count(), steps + 1) << status().toStdString();
+    EXPECT_FALSE(part().weightsPainted) << "automatic weights again";
+    EXPECT_TRUE(part().validate().empty());
+    EXPECT_TRUE(status().contains(QStringLiteral("Recompute Weights of")))
+        << status().toStdString();
     document()->undoStack()->undo();
     EXPECT_TRUE(part().weightsPainted) << "undo brings the painting back";
 }

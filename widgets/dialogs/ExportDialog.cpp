@@ -19,11 +19,14 @@ struct Format {
     const char* suffix;
     const char* label;
 };
-constexpr Format kFormats[] = {{"glb", "glTF 2.0 binary (.glb)"},
-                               {"gltf", "glTF 2.0 (.gltf + .bin)"},
-                               {"fbx", "FBX binary (.fbx)"},
-                               {"dae", "COLLADA (.dae)"},
-                               {"obj", "Wavefront OBJ, static mesh (.obj)"}};
+// Labels translated in ExportDialog's context.
+constexpr Format kFormats[] = {
+    {"glb", QT_TRANSLATE_NOOP("rigmesh::widgets::ExportDialog", "glTF 2.0 binary (.glb)")},
+    {"gltf", QT_TRANSLATE_NOOP("rigmesh::widgets::ExportDialog", "glTF 2.0 (.gltf + .bin)")},
+    {"fbx", QT_TRANSLATE_NOOP("rigmesh::widgets::ExportDialog", "FBX binary (.fbx)")},
+    {"dae", QT_TRANSLATE_NOOP("rigmesh::widgets::ExportDialog", "COLLADA (.dae)")},
+    {"obj",
+     QT_TRANSLATE_NOOP("rigmesh::widgets::ExportDialog", "Wavefront OBJ, static mesh (.obj)")}};
 
 }  // namespace
 

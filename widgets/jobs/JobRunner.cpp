@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "base/Error.h"
+#include "model/ErrorText.h"
 
 namespace rigmesh::widgets {
 
@@ -52,7 +53,7 @@ bool JobRunner::runOn(JobRunner* runner, const QString& title, Work work, Failed
         apply = work();
     } catch (const Error& error) {
         if (failed)
-            failed(QString::fromStdString(error.what()));
+            failed(model::errorText(error));
         return true;
     }
     if (apply)
@@ -85,11 +86,14 @@ bool JobRunner::run(const QString& title, Work work, Failed failed, Cancelled ca
         try {
             job->apply = job->work();
         } catch (const Error& error) {
-            job->error = QString::fromStdString(error.what());
+            job->error = model::errorText(error);
         } catch (const std::bad_alloc&) {
-            job->error = QObject::tr("Out of memory.");
+            job->error =
+                QCoreApplication::translate("rigmesh::widgets::JobRunner", "Out of memory.");
         } catch (const std::exception& error) {
-            job->error = QObject::tr("Internal error: %1").arg(QString::fromUtf8(error.what()));
+            job->error =
+                QCoreApplication::translate("rigmesh::widgets::JobRunner", "Internal error: %1")
+                    .arg(QString::fromUtf8(error.what()));
         }
         // Back on the GUI thread (qApp outlives every window).
         QMetaObject::invokeMethod(

@@ -92,14 +92,20 @@ bool JobStatus::allowed(QObject* watched, QEvent* event) const {
     auto* widget = qobject_cast<QWidget*>(watched);
     if (widget && (widget == cancel_ || cancel_->isAncestorOf(widget)))
         return true;
-    // The 3D view navigates: the middle button (orbit, pan), the wheel, and
-    // moves without the left button.
-    if (qobject_cast<Viewport*>(watched)) {
+    // The 3D view navigates with the chosen mouse bindings (Blender's
+    // middle button, Maya's Alt + any button) and the wheel; moves without
+    // the left button and every move of a navigating drag go through.
+    if (auto* viewport = qobject_cast<Viewport*>(watched)) {
         if (event->type() == QEvent::Wheel)
             return true;
-        if (auto* mouse = dynamic_cast<QMouseEvent*>(event))
-            return mouse->button() == Qt::MiddleButton ||
+        if (auto* mouse = dynamic_cast<QMouseEvent*>(event)) {
+            if (event->type() == QEvent::MouseButtonPress ||
+                event->type() == QEvent::MouseButtonDblClick)
+                return navigationFor(viewport->mouseBindings(), mouse->button(),
+                                     mouse->modifiers()) != Navigation::None;
+            return viewport->navigating() ||
                    (event->type() == QEvent::MouseMove && !(mouse->buttons() & Qt::LeftButton));
+        }
     }
     return false;
 }

@@ -17,6 +17,7 @@
 #include "base/Error.h"
 #include "jobs/JobRunner.h"
 #include "model/Document.h"
+#include "model/ErrorText.h"
 #include "model/PartBuilder.h"
 #include "model/PoseChange.h"
 #include "model/commands/RebuildPartCommand.h"
@@ -181,7 +182,7 @@ void PropertiesPanel::setJointRotation() {
         document_->setPose(selection.part, pose);
         model::pushPoseChange(*document_, selection.part, command.release());
     } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not posed: %1").arg(QString::fromStdString(error.what())), 8000);
+        emit statusMessage(tr("Not posed: %1").arg(model::errorText(error)), 8000);
         refreshPose();
     }
 }

@@ -15,6 +15,7 @@
 
 #include "base/Error.h"
 #include "model/BoneDisplayName.h"
+#include "model/ErrorText.h"
 #include "model/commands/SetBoneLockCommand.h"
 #include "part/BoneWeights.h"
 #include "viewport/Viewport.h"
@@ -156,7 +157,7 @@ void WeightsPanel::refreshBones() {
         return;
     }
     const Part& part = *node->part;
-    const std::vector<int> leading = leadingVertexCounts(part.weights, part.skeleton.boneCount());
+    const std::map<BoneId, int> leading = leadingVertexCounts(part.weights.perVertex);
     const std::optional<BoneId> selectedBone =
         boneForJoint(part.skeleton, document_->selection().joint);
     title_->setText(tr("%1: %n bone(s), %2 locked", nullptr, part.skeleton.boneCount())
@@ -168,7 +169,8 @@ void WeightsPanel::refreshBones() {
         auto* name = readOnly(model::boneDisplayName(part, id));
         name->setData(kBoneIdRole, id);
         bones_->setItem(b, 0, name);
-        auto* count = readOnly(QString::number(leading[b]));
+        const auto leads = leading.find(id);
+        auto* count = readOnly(QString::number(leads == leading.end() ? 0 : leads->second));
         count->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         bones_->setItem(b, 1, count);
         auto* lock = new QTableWidgetItem;
@@ -197,7 +199,7 @@ void WeightsPanel::refreshVertex() {
     const int v = inspected->vertex;
     auto weights = v < static_cast<int>(part.weights.perVertex.size())
                        ? part.weights.perVertex[v]
-                       : std::vector<std::pair<int, double>>{};
+                       : std::vector<std::pair<BoneId, double>>{};
     std::sort(weights.begin(), weights.end(),
               [](const auto& a, const auto& b) { return a.second > b.second; });
     double sum = 0.0;
@@ -210,7 +212,7 @@ void WeightsPanel::refreshVertex() {
             .arg(sum, 0, 'f', 6));
     vertex_->setRowCount(static_cast<int>(weights.size()));
     for (int r = 0; r < static_cast<int>(weights.size()); ++r) {
-        const BoneId id = part.skeleton.bones()[weights[r].first].id;
+        const BoneId id = weights[r].first;
         vertex_->setItem(r, 0, readOnly(model::boneDisplayName(part, id)));
         auto* weight = readOnly(QString::number(weights[r].second, 'f', 4));
         weight->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -243,7 +245,7 @@ void WeightsPanel::boneLockToggled(int row) {
         document_->undoStack()->push(command.release());
         emit statusMessage(text, 4000);
     } catch (const Error& error) {
-        emit statusMessage(QString::fromStdString(error.what()), 6000);
+        emit statusMessage(model::errorText(error), 6000);
         refreshBones();
     }
 }

@@ -13,11 +13,13 @@
 
 #include "base/Error.h"
 #include "model/ClipModes.h"
+#include "model/ErrorText.h"
 #include "model/PartClips.h"
 #include "model/TimelineItemModel.h"
 #include "model/commands/ClipListCommand.h"
 #include "model/commands/SetClipSettingsCommand.h"
 #include "model/commands/SetTimelineCommand.h"
+#include "preferences/Theme.h"
 #include "timeline/Playback.h"
 #include "timeline/TimelineView.h"
 
@@ -25,9 +27,13 @@ namespace rigmesh::widgets {
 
 namespace {
 
-QToolButton* toolButton(QWidget* parent, const QIcon& icon, const QString& tip) {
+const char* const kTransportIcon = "transportIcon";
+
+// A transport button; its icon is the style's `icon`, tinted
+// (refreshTransportIcons).
+QToolButton* toolButton(QWidget* parent, QStyle::StandardPixmap icon, const QString& tip) {
     auto* button = new QToolButton(parent);
-    button->setIcon(icon);
+    button->setProperty(kTransportIcon, static_cast<int>(icon));
     button->setToolTip(tip);
     button->setAutoRaise(true);
     return button;
@@ -39,12 +45,14 @@ TimelineDock::TimelineDock(QWidget* parent)
     : QWidget(parent), view_(new TimelineView(this)), playback_(new Playback(this)) {
     setObjectName(QStringLiteral("timelineDock"));
     buildControls();
+    refreshTransportIcons();
     connect(view_, &TimelineView::deleteRequested, this, &TimelineDock::deleteSelectedKeys);
     connect(view_, &TimelineView::copyRequested, this, &TimelineDock::copySelectedKeys);
     connect(view_, &TimelineView::pasteRequested, this, &TimelineDock::pasteKeys);
     connect(playback_, &Playback::playingChanged, this, [this](bool playing) {
-        playButton_->setIcon(
-            style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+        playButton_->setProperty(kTransportIcon, static_cast<int>(playing ? QStyle::SP_MediaPause
+                                                                          : QStyle::SP_MediaPlay));
+        refreshTransportIcons();
     });
     setDocument(nullptr);
 }
@@ -53,22 +61,33 @@ TimelineDock::~TimelineDock() {
     view_->setModel(nullptr);
 }
 
+void TimelineDock::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange || event->type() == QEvent::StyleChange)
+        refreshTransportIcons();
+}
+
+void TimelineDock::refreshTransportIcons() {
+    const QColor colour = palette().color(QPalette::ButtonText);
+    for (QToolButton* button : findChildren<QToolButton*>()) {
+        const QVariant icon = button->property(kTransportIcon);
+        if (icon.isValid())
+            button->setIcon(tintedIcon(
+                style()->standardIcon(static_cast<QStyle::StandardPixmap>(icon.toInt())), colour));
+    }
+}
+
 void TimelineDock::buildControls() {
-    QStyle* s = style();
     auto* bar = new QHBoxLayout;
     bar->setContentsMargins(4, 2, 4, 2);
     bar->setSpacing(4);
-    auto* toStart = toolButton(this, s->standardIcon(QStyle::SP_MediaSkipBackward),
-                               tr("Jump to start (Shift+Left)"));
-    auto* back = toolButton(this, s->standardIcon(QStyle::SP_MediaSeekBackward),
-                            tr("Previous frame (Left)"));
-    playButton_ =
-        toolButton(this, s->standardIcon(QStyle::SP_MediaPlay), tr("Play / pause (Space)"));
+    auto* toStart =
+        toolButton(this, QStyle::SP_MediaSkipBackward, tr("Jump to start (Shift+Left)"));
+    auto* back = toolButton(this, QStyle::SP_MediaSeekBackward, tr("Previous frame (Left)"));
+    playButton_ = toolButton(this, QStyle::SP_MediaPlay, tr("Play / pause (Space)"));
     playButton_->setObjectName(QStringLiteral("timelinePlay"));
-    auto* forward =
-        toolButton(this, s->standardIcon(QStyle::SP_MediaSeekForward), tr("Next frame (Right)"));
-    auto* toEnd = toolButton(this, s->standardIcon(QStyle::SP_MediaSkipForward),
-                             tr("Jump to end (Shift+Right)"));
+    auto* forward = toolButton(this, QStyle::SP_MediaSeekForward, tr("Next frame (Right)"));
+    auto* toEnd = toolButton(this, QStyle::SP_MediaSkipForward, tr("Jump to end (Shift+Right)"));
     connect(toStart, &QToolButton::clicked, this, &TimelineDock::jumpToStart);
     connect(back, &QToolButton::clicked, this, [this] { stepFrames(-1); });
     connect(playButton_, &QToolButton::clicked, this, &TimelineDock::togglePlayback);
@@ -273,7 +292,7 @@ void TimelineDock::run(const QString& failure, Make make) {
         document_->undoStack()->push(command.release());
         emit statusMessage(text, 4000);
     } catch (const rigmesh::Error& error) {
-        emit statusMessage(failure.arg(QString::fromStdString(error.what())), 8000);
+        emit statusMessage(failure.arg(model::errorText(error)), 8000);
         refresh();
     }
 }
@@ -383,7 +402,7 @@ void TimelineDock::insertKey() {
                 : tr("Keyed %n part(s) at frame %1", nullptr, keyed).arg(document_->currentFrame()),
             4000);
     } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not keyed: %1").arg(QString::fromStdString(error.what())), 8000);
+        emit statusMessage(tr("Not keyed: %1").arg(model::errorText(error)), 8000);
     }
 }
 
@@ -431,7 +450,7 @@ void TimelineDock::pasteKeys() {
         document_->setCurrentFrame(document_->currentFrame());
         emit statusMessage(tr("Pasted at frame %1").arg(document_->currentFrame()), 4000);
     } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not pasted: %1").arg(QString::fromStdString(error.what())), 8000);
+        emit statusMessage(tr("Not pasted: %1").arg(model::errorText(error)), 8000);
     }
 }
 

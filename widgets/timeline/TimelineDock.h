@@ -66,8 +66,15 @@ class TimelineDock : public QWidget {
     void statusMessage(const QString& message, int timeoutMs = 0);
     void onionSkinToggled(bool on);
 
+  protected:
+    // A new palette (Preferences > Theme) redraws the transport icons.
+    void changeEvent(QEvent* event) override;
+
   private:
     void buildControls();
+    // The style's media icons in the palette's button text colour: Qt's
+    // own are dark grey, lost on the dark theme's buttons.
+    void refreshTransportIcons();
     void refresh();
     void refreshClipControls();
     void applyTimeline();

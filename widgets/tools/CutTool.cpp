@@ -4,6 +4,7 @@
 #include <map>
 
 #include "base/Error.h"
+#include "model/ErrorText.h"
 #include "model/commands/CutPartCommand.h"
 #include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
@@ -109,8 +110,7 @@ void CutTool::release(Viewport& viewport, QMouseEvent* event) {
         document.undoStack()->push(command.release());
         emit viewport.statusMessage(text);
     } catch (const Error& error) {
-        emit viewport.statusMessage(
-            tr("Nothing cut: %1").arg(QString::fromStdString(error.what())));
+        emit viewport.statusMessage(tr("Nothing cut: %1").arg(model::errorText(error)));
     }
     viewport.update();
 }

@@ -2,8 +2,12 @@
 
 #include <Eigen/Geometry>
 #include <QElapsedTimer>
+#include <QMenu>
+#include <QPointer>
 
 #include "base/Error.h"
+#include "jobs/JobRunner.h"
+#include "model/ErrorText.h"
 #include "model/commands/MergePartsCommand.h"
 #include "model/commands/MovePartCommand.h"
 #include "rig/BoneSegment.h"
@@ -42,12 +46,13 @@ void addCross(ColouredVertices& lines, const Vec3& at, double size, const QVecto
 
 QString MergeTool::hint() const {
     return tr(
-        "Merge: drag a part into another; release snaps the lit joints together, Shift + "
-        "release splits the other part's bone there, Ctrl + release connects them by a new "
-        "bone; Esc cancels");
+        "Merge: drag a part into another; release over the lit joints to snap, split or "
+        "connect them (Shift + release splits, Ctrl + release connects at once); Esc cancels");
 }
 
 void MergeTool::press(Viewport& viewport, QMouseEvent* event) {
+    if (pending_)
+        choose(viewport, std::nullopt);  // a click beside the open menu
     model::Document& document = *viewport.document();
     auto part = viewport.partAt(event->position());
     if (!part) {
@@ -61,6 +66,19 @@ void MergeTool::press(Viewport& viewport, QMouseEvent* event) {
     candidate_.reset();
 }
 
+namespace {
+
+// Shift: split, Ctrl: connect; none: ask.
+std::optional<MergeMode> modeOf(Qt::KeyboardModifiers modifiers) {
+    if (modifiers & Qt::ControlModifier)
+        return MergeMode::Connect;
+    if (modifiers & Qt::ShiftModifier)
+        return MergeMode::Split;
+    return std::nullopt;
+}
+
+}  // namespace
+
 void MergeTool::move(Viewport& viewport, QMouseEvent* event) {
     if (!dragged_ || !(event->buttons() & Qt::LeftButton))
         return;
@@ -73,13 +91,23 @@ void MergeTool::move(Viewport& viewport, QMouseEvent* event) {
     target.translation +=
         toEigen(viewport.viewPlanePoint(event->position(), grabPoint_) - grabPoint_);
     document.setPlacement(*dragged_, target);  // a live preview
-    candidate_ = findCandidate(viewport, event->modifiers());
-    emit viewport.statusMessage(candidate_ ? describe(document, *candidate_)
-                                           : tr("Drag the part into another to merge them"));
+    candidate_ = findCandidate(viewport);
+    if (candidate_)
+        candidate_ =
+            withMode(document, *candidate_, modeOf(event->modifiers()).value_or(MergeMode::Snap));
+    const QString what = !candidate_ ? tr("Drag the part into another to merge them")
+                         : modeOf(event->modifiers())
+                             ? describe(document, *dragged_, *candidate_)
+                             : tr("Release to choose: snap, split or connect %1 of %2 and %3 "
+                                  "of %4 (Shift: split, Ctrl: connect, Esc: cancel)")
+                                   .arg(model::jointDisplayName(candidate_->draggedJoint),
+                                        document.part(*dragged_).name,
+                                        model::jointDisplayName(candidate_->targetJoint),
+                                        document.part(candidate_->target).name);
+    emit viewport.statusMessage(what);
 }
 
-std::optional<MergeTool::Candidate> MergeTool::findCandidate(
-    const Viewport& viewport, Qt::KeyboardModifiers modifiers) const {
+std::optional<MergeTool::Candidate> MergeTool::findCandidate(const Viewport& viewport) const {
     const model::Document& document = *viewport.document();
     const model::PartNode& dragged = document.part(*dragged_);
     if (!rigged(dragged))
@@ -103,43 +131,46 @@ std::optional<MergeTool::Candidate> MergeTool::findCandidate(
                 }
             }
     }
-    if (!best)
-        return best;
-    if (modifiers & Qt::ControlModifier) {
-        best->mode = MergeMode::Connect;
-    } else if (modifiers & Qt::ShiftModifier) {
-        // The dragged joint projected on the other part's nearest bone.
-        best->mode = MergeMode::Split;
-        const model::PartNode& target = document.part(best->target);
-        double nearest = -1.0;
-        for (const BoneSegment& bone : target.part->boneSegments()) {
-            const BoneSegment world{toWorld(target.placement, bone.head),
-                                    toWorld(target.placement, bone.tail)};
-            const Vec3 p = closestPointOnSegment(best->draggedPoint, world);
-            const double d = (p - best->draggedPoint).norm();
-            if (nearest < 0.0 || d < nearest) {
-                nearest = d;
-                best->targetPoint = p;
-            }
-        }
-    }
     return best;
 }
 
-QString MergeTool::describe(const model::Document& document, const Candidate& c) const {
-    const QString from = document.part(*dragged_).name;
+MergeTool::Candidate MergeTool::withMode(const model::Document& document, Candidate candidate,
+                                         MergeMode mode) const {
+    candidate.mode = mode;
+    const model::PartNode& target = document.part(candidate.target);
+    candidate.targetPoint =
+        toWorld(target.placement, target.part->skeleton.joint(candidate.targetJoint).position);
+    if (mode != MergeMode::Split)
+        return candidate;
+    // The dragged joint projected on the other part's nearest bone.
+    double nearest = -1.0;
+    for (const BoneSegment& bone : target.part->boneSegments()) {
+        const BoneSegment world{toWorld(target.placement, bone.head),
+                                toWorld(target.placement, bone.tail)};
+        const Vec3 p = closestPointOnSegment(candidate.draggedPoint, world);
+        const double d = (p - candidate.draggedPoint).norm();
+        if (nearest < 0.0 || d < nearest) {
+            nearest = d;
+            candidate.targetPoint = p;
+        }
+    }
+    return candidate;
+}
+
+QString MergeTool::describe(const model::Document& document, model::PartId dragged,
+                            const Candidate& c) const {
+    const QString from = document.part(dragged).name;
     const QString into = document.part(c.target).name;
     switch (c.mode) {
         case MergeMode::Snap:
-            return tr("Release to snap %1 of %2 onto %3 of %4 (Shift: split, Ctrl: connect, Esc: "
-                      "cancel)")
+            return tr("Snap %1 of %2 onto %3 of %4 (Esc: cancel)")
                 .arg(model::jointDisplayName(c.draggedJoint), from,
                      model::jointDisplayName(c.targetJoint), into);
         case MergeMode::Split:
-            return tr("Release to split a bone of %1 and snap %2 of %3 there (Esc: cancel)")
+            return tr("Split a bone of %1 and snap %2 of %3 there (Esc: cancel)")
                 .arg(into, model::jointDisplayName(c.draggedJoint), from);
         case MergeMode::Connect:
-            return tr("Release to connect %1 of %2 to %3 of %4 by a new bone (Esc: cancel)")
+            return tr("Connect %1 of %2 to %3 of %4 by a new bone (Esc: cancel)")
                 .arg(model::jointDisplayName(c.draggedJoint), from,
                      model::jointDisplayName(c.targetJoint), into);
     }
@@ -153,57 +184,190 @@ void MergeTool::release(Viewport& viewport, QMouseEvent* event) {
         return;
     }
     const model::PartId dragged = *dragged_;
-    dragged_.reset();
-    const std::optional<Candidate> candidate = findCandidate(viewport, event->modifiers());
-    candidate_.reset();
-    const model::Placement dropped = document.part(dragged).placement;
+    std::optional<Candidate> candidate = findCandidate(viewport);
     if (!candidate) {
         // Not near another part: an ordinary move, one undo step.
-        document.undoStack()->push(
-            new model::MovePartCommand(document, dragged, startPlacement_, dropped, true));
+        dragged_.reset();
+        candidate_.reset();
+        document.undoStack()->push(new model::MovePartCommand(
+            document, dragged, startPlacement_, document.part(dragged).placement, true));
         viewport.update();
         return;
     }
-    model::MergeSpec spec;
-    spec.mode = candidate->mode;
-    spec.draggedJoint = candidate->draggedJoint;
-    spec.target = candidate->mode == MergeMode::Split ? model::JointChoice(candidate->targetPoint)
-                                                      : model::JointChoice(candidate->targetJoint);
-    QElapsedTimer timer;
-    timer.start();
-    try {
-        auto merge = model::MergePartsCommand::create(document, dragged, candidate->target, spec);
-        const QString summary = merge->summary();
-        // The drop and the merge are one step: undo puts both parts back
-        // where they were before the drag.
-        document.undoStack()->beginMacro(merge->text());
-        document.undoStack()->push(
-            new model::MovePartCommand(document, dragged, startPlacement_, dropped, true));
-        document.undoStack()->push(merge.release());
-        document.undoStack()->endMacro();
-        document.setSelection({candidate->target, kNoJoint});
-        emit viewport.statusMessage(tr("%1 (%2 ms in all)").arg(summary).arg(timer.elapsed()));
-    } catch (const Error& error) {
-        document.setPlacement(dragged, startPlacement_);
-        emit viewport.statusMessage(tr("Not merged: %1").arg(QString::fromStdString(error.what())));
+    if (const std::optional<MergeMode> mode = modeOf(event->modifiers())) {
+        dragged_.reset();
+        candidate_.reset();
+        merge(viewport, dragged, withMode(document, *candidate, *mode));
+        return;
     }
+    candidate_ = candidate;
+    offerChoices(viewport, event->position());
+}
+
+QMenu* MergeTool::choices() const {
+    return choices_;
+}
+
+void MergeTool::offerChoices(Viewport& viewport, const QPointF& pixel) {
+    pending_ = *dragged_;
+    dragged_.reset();  // no more drag; the overlay stays on the candidate
+    auto* menu = new QMenu(&viewport);
+    menu->setAttribute(Qt::WA_DeleteOnClose);
+    const QPointer<Viewport> view(&viewport);
+    const std::pair<MergeMode, QString> items[] = {
+        {MergeMode::Snap, tr("&Snap the joints together")},
+        {MergeMode::Split, tr("S&plit the bone here")},
+        {MergeMode::Connect, tr("&Connect by a new bone")}};
+    QAction* first = nullptr;
+    for (const auto& [mode, text] : items) {
+        QAction* action = menu->addAction(text);
+        action->setData(static_cast<int>(mode));
+        first = first ? first : action;
+        // Hovering an item previews it: the lit joints or point and the status.
+        connect(action, &QAction::hovered, this, [this, view, mode = mode] {
+            if (!view || !pending_ || !candidate_ || !view->document()->contains(*pending_))
+                return;
+            candidate_ = withMode(*view->document(), *candidate_, mode);
+            emit view->statusMessage(describe(*view->document(), *pending_, *candidate_));
+            view->update();
+        });
+        connect(action, &QAction::triggered, this, [this, view, mode = mode] {
+            if (view)
+                choose(*view, mode);
+        });
+    }
+    menu->addSeparator();
+    connect(menu->addAction(tr("Cancel (Esc)")), &QAction::triggered, this, [this, view] {
+        if (view)
+            choose(*view, std::nullopt);
+    });
+    // Esc or a click elsewhere closes the menu without a choice; a choice
+    // hides it first and is made before this queued check runs.
+    connect(menu, &QMenu::aboutToHide, this, [this, view] {
+        QMetaObject::invokeMethod(
+            this,
+            [this, view] {
+                if (view && pending_)
+                    choose(*view, std::nullopt);
+            },
+            Qt::QueuedConnection);
+    });
+    choices_ = menu;
+    menu->setActiveAction(first);
+    menu->popup(viewport.mapToGlobal(pixel.toPoint()));
+    viewport.update();
+}
+
+void MergeTool::choose(Viewport& viewport, std::optional<MergeMode> mode) {
+    if (!pending_)
+        return;
+    const model::PartId dragged = *pending_;
+    pending_.reset();
+    const std::optional<Candidate> candidate = candidate_;
+    candidate_.reset();
+    if (choices_)
+        choices_->close();
+    if (!viewport.document()->contains(dragged))
+        return;
+    if (!mode || !candidate) {
+        putBack(viewport, dragged);
+        return;
+    }
+    merge(viewport, dragged, withMode(*viewport.document(), *candidate, *mode));
+}
+
+void MergeTool::merge(Viewport& viewport, model::PartId dragged, const Candidate& candidate) {
+    model::Document& document = *viewport.document();
+    const model::Placement dropped = document.part(dragged).placement;
+    const model::Placement start = startPlacement_;
+    model::MergeSpec spec;
+    spec.mode = candidate.mode;
+    spec.draggedJoint = candidate.draggedJoint;
+    spec.target = candidate.mode == MergeMode::Split ? model::JointChoice(candidate.targetPoint)
+                                                     : model::JointChoice(candidate.targetJoint);
+    const model::PartId target = candidate.target;
+    auto timer = std::make_shared<QElapsedTimer>();
+    timer->start();
+    QPointer<Viewport> view(&viewport);
+    QPointer<model::Document> guarded(&document);
+    // Puts the dragged part back where the drag started (a refused or
+    // cancelled merge leaves the document as it was).
+    auto putBackTo = [view, guarded, dragged, start](const QString& message) {
+        if (!guarded || !guarded->contains(dragged))
+            return;
+        guarded->setPlacement(dragged, start);
+        if (view) {
+            emit view->statusMessage(message);
+            view->update();
+        }
+    };
+    // A merge of large parts takes long (the union, the local re-skin): it
+    // runs as a background job (issue 16 item 3) on copies of the two nodes,
+    // and the command is made and pushed when it is done.
+    const model::PartNode draggedNode = document.part(dragged);
+    const model::PartNode targetNode = document.part(target);
+    JobRunner::runOn(
+        viewport.jobRunner(),
+        tr("Merging %1 into %2").arg(document.part(dragged).name, document.part(target).name),
+        [draggedNode, targetNode, dragged, target, spec, guarded, view, start, dropped,
+         timer]() -> JobRunner::Apply {
+            auto computed = std::make_shared<model::ComputedMerge>(
+                model::MergePartsCommand::compute(draggedNode, targetNode, spec));
+            return [=]() {
+                if (!guarded)
+                    return;
+                std::unique_ptr<model::MergePartsCommand> merge;
+                try {
+                    merge = model::MergePartsCommand::fromComputed(*guarded, dragged, target,
+                                                                   std::move(*computed));
+                } catch (const Error& error) {
+                    if (view)
+                        emit view->statusMessage(tr("Not merged: %1").arg(model::errorText(error)));
+                    return;
+                }
+                const QString summary = merge->summary();
+                // The drop and the merge are one step: undo puts both parts
+                // back where they were before the drag.
+                guarded->undoStack()->beginMacro(merge->text());
+                guarded->undoStack()->push(
+                    new model::MovePartCommand(*guarded, dragged, start, dropped, true));
+                guarded->undoStack()->push(merge.release());
+                guarded->undoStack()->endMacro();
+                guarded->setSelection({target, kNoJoint});
+                if (view) {
+                    emit view->statusMessage(
+                        tr("%1 (%2 ms in all)").arg(summary).arg(timer->elapsed()));
+                    view->update();
+                }
+            };
+        },
+        [putBackTo](const QString& reason) { putBackTo(tr("Not merged: %1").arg(reason)); },
+        [putBackTo]() { putBackTo(tr("Merge cancelled")); });
+    viewport.update();
+}
+
+void MergeTool::putBack(Viewport& viewport, model::PartId dragged) {
+    viewport.document()->setPlacement(dragged, startPlacement_);
+    emit viewport.statusMessage(tr("Merge cancelled"));
     viewport.update();
 }
 
 void MergeTool::cancel(Viewport& viewport) {
-    if (dragged_ && viewport.document()->contains(*dragged_)) {
-        viewport.document()->setPlacement(*dragged_, startPlacement_);
-        emit viewport.statusMessage(tr("Merge cancelled"));
+    if (pending_) {
+        choose(viewport, std::nullopt);
+    } else if (dragged_ && viewport.document()->contains(*dragged_)) {
+        putBack(viewport, *dragged_);
     }
     dragged_.reset();
     candidate_.reset();
 }
 
 void MergeTool::addOverlay(const Viewport& viewport, ColouredVertices& lines) const {
-    if (!candidate_ || !dragged_)
+    const std::optional<model::PartId> part = dragged_ ? dragged_ : pending_;
+    if (!candidate_ || !part || !viewport.document()->contains(*part))
         return;
     const QVector3D lit(0.2f, 0.75f, 1.0f);
-    const double size = 0.03 * worldBox(viewport.document()->part(*dragged_)).diagonal().norm();
+    const double size = 0.03 * worldBox(viewport.document()->part(*part)).diagonal().norm();
     lines.add(toQt(candidate_->draggedPoint), lit);
     lines.add(toQt(candidate_->targetPoint), lit);
     addCross(lines, candidate_->draggedPoint, size, lit);

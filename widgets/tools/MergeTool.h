@@ -1,19 +1,24 @@
 // Merge tool (M), paper 3.2: drag a part near another; the nearest pair of
 // joints lights up (a line between them, crosses on both) and the status bar
-// says what a release will do. Release merges: snap by default, Shift +
-// release splits the other part's bone under the dragged joint, Ctrl +
-// release connects the two joints by a new bone. Esc (or a tool switch)
-// puts the part back. The move and the merge are one undo step; a refused
-// merge puts the part back and says why.
+// says what a release will do. Release over a candidate opens a small menu:
+// Snap (the default item), Split (the other part's bone under the dragged
+// joint) or Connect (a new bone between the two joints); hovering an item
+// previews it, Esc or a click elsewhere puts the part back. Shift + release
+// splits and Ctrl + release connects at once, without the menu. Esc during
+// the drag (or a tool switch) puts the part back too. The move and the
+// merge are one undo step; a refused merge puts the part back and says why.
 #pragma once
 
 #include <QObject>
+#include <QPointer>
 #include <optional>
 
 #include "merge/SkeletonJoin.h"
 #include "model/Document.h"
 #include "model/PartNode.h"
 #include "viewport/ViewportTool.h"
+
+class QMenu;
 
 namespace rigmesh::widgets {
 
@@ -29,6 +34,9 @@ class MergeTool : public QObject, public ViewportTool {
     void cancel(Viewport& viewport) override;
     void addOverlay(const Viewport& viewport, ColouredVertices& lines) const override;
 
+    // The Snap / Split / Connect menu while it waits for a choice, else null.
+    QMenu* choices() const;
+
   private:
     // The merge a release would make, in document coordinates.
     struct Candidate {
@@ -38,14 +46,26 @@ class MergeTool : public QObject, public ViewportTool {
         Vec3 draggedPoint, targetPoint;  // the joints (split: the point on the bone)
         MergeMode mode = MergeMode::Snap;
     };
-    std::optional<Candidate> findCandidate(const Viewport& viewport,
-                                           Qt::KeyboardModifiers modifiers) const;
-    QString describe(const model::Document& document, const Candidate& candidate) const;
+    // The nearest pair of joints, as a snap.
+    std::optional<Candidate> findCandidate(const Viewport& viewport) const;
+    // The candidate in `mode` (a split targets the point on the other part's
+    // nearest bone).
+    Candidate withMode(const model::Document& document, Candidate candidate, MergeMode mode) const;
+    QString describe(const model::Document& document, model::PartId dragged,
+                     const Candidate& candidate) const;
+    // Opens the menu at `pixel`; the part stays where it was dropped.
+    void offerChoices(Viewport& viewport, const QPointF& pixel);
+    void choose(Viewport& viewport, std::optional<MergeMode> mode);
+    void merge(Viewport& viewport, model::PartId dragged, const Candidate& candidate);
+    void putBack(Viewport& viewport, model::PartId dragged);
 
     std::optional<model::PartId> dragged_;
     QVector3D grabPoint_;
     model::Placement startPlacement_;
     std::optional<Candidate> candidate_;
+    // A release waiting for the menu's choice: the dropped part and its candidate.
+    std::optional<model::PartId> pending_;
+    QPointer<QMenu> choices_;
 };
 
 }  // namespace rigmesh::widgets

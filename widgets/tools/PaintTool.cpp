@@ -8,6 +8,7 @@
 
 #include "base/Error.h"
 #include "model/BoneDisplayName.h"
+#include "model/ErrorText.h"
 #include "model/commands/PaintWeightsCommand.h"
 #include "part/WeightLists.h"
 #include "viewport/RenderScene.h"
@@ -117,7 +118,7 @@ void PaintTool::dab(Viewport& viewport, const QPointF& pixel) {
     try {
         skipped_ += painter_->paint(*working_, partDab).skippedLocked;
     } catch (const Error& error) {
-        emit viewport.statusMessage(QString::fromStdString(error.what()));
+        emit viewport.statusMessage(model::errorText(error));
         return;
     }
     dabs_.push_back(dab);
@@ -138,7 +139,7 @@ void PaintTool::sample(Viewport& viewport, const QPointF& pixel) {
         emit viewport.statusMessage(viewport.weightsAt(pixel));
         return;
     }
-    value = weightOfIndex(part.weights.perVertex[hit->vertex], part.skeleton.indexOfBone(*bone));
+    value = weightOfBone(part.weights.perVertex[hit->vertex], *bone);
     if (valueBox_)
         valueBox_->setValue(value);
     emit viewport.statusMessage(tr("Sampled %1 = %2 at vertex %3: the Replace brush paints it")
@@ -175,7 +176,7 @@ void PaintTool::release(Viewport& viewport, QMouseEvent*) {
             document.undoStack()->push(command.release());
             emit viewport.statusMessage(message);
         } catch (const Error& error) {
-            emit viewport.statusMessage(QString::fromStdString(error.what()));
+            emit viewport.statusMessage(model::errorText(error));
         }
     }
     endStroke();

@@ -13,8 +13,7 @@ namespace rigmesh::widgets {
 QString SelectTool::hint() const {
     return tr(
         "Select: click a part or a joint (with a weight view on, the click pins the vertex's "
-        "weights in the Skin Weights panel); drag a part to move it, Ctrl + drag to turn it; "
-        "middle drag orbits, Shift + middle drag pans, wheel zooms");
+        "weights in the Skin Weights panel); drag a part to move it, Ctrl + drag to turn it");
 }
 
 void SelectTool::press(Viewport& viewport, QMouseEvent* event) {

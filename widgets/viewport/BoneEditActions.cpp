@@ -3,6 +3,7 @@
 #include <QMenu>
 
 #include "base/Error.h"
+#include "model/ErrorText.h"
 #include "model/commands/BoneEditCommand.h"
 #include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
@@ -56,7 +57,7 @@ bool pushEdit(Viewport& viewport, Make&& make) {
         emit viewport.statusMessage(summary);
     } catch (const Error& error) {
         emit viewport.statusMessage(
-            Viewport::tr("Bone not changed: %1").arg(QString::fromStdString(error.what())));
+            Viewport::tr("Bone not changed: %1").arg(model::errorText(error)));
     }
     viewport.update();
     return true;

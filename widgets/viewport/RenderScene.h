@@ -37,6 +37,9 @@ struct RenderPart {
     std::vector<QVector4D> boneReal, boneDual, boneRows;
     // Below 1: drawn translucent, after the opaque parts (onion-skin ghosts).
     float opacity = 1.0f;
+    // The GlobalDifference view's per-vertex values (GlobalDifferences);
+    // null while they are computed: no difference is shown.
+    std::shared_ptr<const std::vector<float>> globalDifference;
 };
 
 // Coloured vertices: pairs for GL_LINES, or single points.

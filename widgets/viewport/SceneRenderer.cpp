@@ -5,10 +5,8 @@
 #include <algorithm>
 #include <array>
 
-#include "base/Error.h"
 #include "merge/MergeParts.h"
 #include "part/BoneWeights.h"
-#include "rig/LocalBoneHeat.h"
 
 // The shaders are compiled into this static library: register them
 // explicitly (Q_INIT_RESOURCE must be called outside any namespace).
@@ -50,33 +48,12 @@ struct SceneRenderer::GpuMesh {
     QOpenGLBuffer vertices{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer indices{QOpenGLBuffer::IndexBuffer};
     // Per vertex: the L1 distance between its weights and a fresh global
-    // computation (the GlobalDifference view), made the first time it is shown.
+    // computation (the GlobalDifference view), uploaded once it is ready.
     QOpenGLBuffer difference{QOpenGLBuffer::VertexBuffer};
+    std::shared_ptr<const std::vector<float>> differenceUploaded;
     int indexCount = 0;
     bool usedThisFrame = false;
 };
-
-namespace {
-
-// The paper's Fig. 9a / 15 view: how far each vertex's weights are from
-// what section 2.4 would give on the whole part now.
-std::vector<float> differenceFromGlobal(const Part& part) {
-    std::vector<float> out(part.mesh.vertices.size(), 0.0f);
-    if (part.skeleton.boneCount() == 0)
-        return out;
-    try {
-        const WeightsById global = recomputeWeightsGlobally(part.mesh, part.skeleton);
-        const std::vector<double> d =
-            weightDifferences(weightsById(part.skeleton, part.weights), global);
-        for (std::size_t v = 0; v < d.size() && v < out.size(); ++v)
-            out[v] = static_cast<float>(d[v]);
-    } catch (const Error&) {
-        // No global solution to compare with: the view shows no difference.
-    }
-    return out;
-}
-
-}  // namespace
 
 SceneRenderer::SceneRenderer() = default;
 SceneRenderer::~SceneRenderer() = default;
@@ -119,6 +96,9 @@ SceneRenderer::GpuMesh& SceneRenderer::meshFor(const std::shared_ptr<const Part>
     // number of influences. The four largest influences are kept (largest
     // first) and renormalised for the GPU; the count is of all of them, so
     // the Influences view can flag vertices over four.
+    // The shader's bone matrices are by position in skeleton.bones(); the
+    // part's weights name bones by id.
+    const BoneIndexTable positionOf(part->skeleton);
     std::vector<float> data;
     data.reserve(mesh.vertices.size() * 15);
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
@@ -130,7 +110,7 @@ SceneRenderer::GpuMesh& SceneRenderer::meshFor(const std::shared_ptr<const Part>
             std::sort(influences.begin(), influences.end(),
                       [](const auto& a, const auto& b) { return a.second > b.second; });
             for (std::size_t k = 0; k < 4 && k < influences.size(); ++k)
-                top[k] = influences[k];
+                top[k] = {std::max(positionOf[influences[k].first], 0), influences[k].second};
         }
         double sum = top[0].second + top[1].second + top[2].second + top[3].second;
         if (sum <= 0)
@@ -236,10 +216,13 @@ void SceneRenderer::drawParts(const std::vector<RenderPart>& parts, const Render
         GpuMesh& gpu = meshFor(item.part);
         meshProgram_.setUniformValue("opacity", item.opacity);
         gpu.usedThisFrame = true;
-        if (scene.weightView == WeightView::GlobalDifference && !gpu.difference.isCreated()) {
-            const std::vector<float> difference = differenceFromGlobal(*item.part);
+        if (scene.weightView == WeightView::GlobalDifference && item.globalDifference &&
+            gpu.differenceUploaded != item.globalDifference) {
+            const std::vector<float>& difference = *item.globalDifference;
+            gpu.differenceUploaded = item.globalDifference;
             gpu.vao.bind();
-            gpu.difference.create();
+            if (!gpu.difference.isCreated())
+                gpu.difference.create();
             gpu.difference.bind();
             gpu.difference.allocate(difference.data(),
                                     static_cast<int>(difference.size() * sizeof(float)));

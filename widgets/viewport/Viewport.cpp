@@ -18,6 +18,7 @@
 
 #include "model/OnionSkin.h"
 #include "pose/ForwardKinematics.h"
+#include "viewport/GlobalDifferences.h"
 #include "viewport/SceneRenderer.h"
 #include "viewport/ViewMath.h"
 #include "viewport/ViewportTool.h"
@@ -101,6 +102,10 @@ const PosedSkeleton& Viewport::posedSkeleton(const model::PartNode& node) const 
     return cached.posed;
 }
 
+bool Viewport::globalDifferencePending() const {
+    return globalDifferences_->pending();
+}
+
 Viewport::Viewport(model::Document* document, QWidget* parent)
     : QOpenGLWidget(parent), document_(document), renderer_(std::make_unique<SceneRenderer>()) {
     QSurfaceFormat format = requiredFormat();
@@ -108,6 +113,8 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     setFormat(format);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
+    globalDifferences_ = new GlobalDifferences(this);
+    connect(globalDifferences_, &GlobalDifferences::ready, this, [this] { update(); });
     setMinimumSize(320, 240);
     auto refresh = [this] { update(); };
     connect(document_, &model::Document::partInserted, this, refresh);
@@ -284,6 +291,8 @@ RenderScene Viewport::gatherScene() const {
         if (item.selected && selection.joint != kNoJoint)
             if (const auto bone = boneForJoint(node.part->skeleton, selection.joint))
                 item.weightBone = node.part->skeleton.indexOfBone(*bone);
+        if (weightView_ == WeightView::GlobalDifference)
+            item.globalDifference = globalDifferences_->of(node.part);
         const PosedSkeleton& posed = posedSkeleton(node);
         setSkinning(item, posed);
         if (onionSkin_ && node.part->skeleton.jointCount() > 0) {
@@ -468,15 +477,13 @@ QString Viewport::weightsAt(const QPointF& pixel) const {
     std::sort(weights.begin(), weights.end(),
               [](const auto& a, const auto& b) { return a.second > b.second; });
     QStringList listed;
-    for (const auto& [bone, w] : weights) {
-        const BoneId id = part.skeleton.bones()[bone].id;
+    for (const auto& [id, w] : weights) {
         auto name = part.boneNames.find(id);
-        const QString label =
-            name != part.boneNames.end()
-                ? QString::fromStdString(name->second)
-                : tr("bone %1 (to %2)")
-                      .arg(id)
-                      .arg(model::jointDisplayName(part.skeleton.bones()[bone].tail));
+        const QString label = name != part.boneNames.end()
+                                  ? QString::fromStdString(name->second)
+                                  : tr("bone %1 (to %2)")
+                                        .arg(id)
+                                        .arg(model::jointDisplayName(part.skeleton.bone(id).tail));
         listed << QStringLiteral("%1 %2").arg(label).arg(w, 0, 'f', 3);
     }
     return tr("Vertex %1 of %2: %3")
@@ -486,8 +493,9 @@ QString Viewport::weightsAt(const QPointF& pixel) const {
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
     lastMouse_ = event->position();
-    if (event->button() == Qt::MiddleButton) {
-        navigating_ = true;
+    navigation_ = navigationFor(mouseBindings_, event->button(), event->modifiers());
+    if (navigation_ != Navigation::None) {
+        navigationButton_ = event->button();
         return;
     }
     if (event->button() == Qt::LeftButton && tool_)
@@ -497,11 +505,18 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
     const QPointF delta = event->position() - lastMouse_;
     lastMouse_ = event->position();
-    if (navigating_) {
-        if (event->modifiers() & Qt::ShiftModifier)
-            camera_.pan(delta, QSizeF(size()));
-        else
-            camera_.orbit(delta);
+    if (navigation_ != Navigation::None) {
+        switch (navigationDuring(mouseBindings_, navigation_, event->modifiers())) {
+            case Navigation::Pan:
+                camera_.pan(delta, QSizeF(size()));
+                break;
+            case Navigation::Zoom:
+                // Right or up zooms in; 60 pixels of drag are one wheel step.
+                camera_.dolly((delta.x() - delta.y()) / 60.0);
+                break;
+            default:
+                camera_.orbit(delta);
+        }
         update();
         return;
     }
@@ -519,8 +534,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
-    if (event->button() == Qt::MiddleButton) {
-        navigating_ = false;
+    if (navigation_ != Navigation::None && event->button() == navigationButton_) {
+        navigation_ = Navigation::None;
         return;
     }
     if (event->button() == Qt::LeftButton && tool_)
@@ -543,6 +558,9 @@ void Viewport::setWeightView(WeightView view) {
 }
 
 void Viewport::contextMenuEvent(QContextMenuEvent* event) {
+    // Alt + right drag zooms with Maya's bindings: no menu then.
+    if (mouseBindings_ == MouseBindings::Maya && (event->modifiers() & Qt::AltModifier))
+        return;
     if (!showBoneMenu(*this, event->pos(), event->globalPos()))
         QOpenGLWidget::contextMenuEvent(event);
 }

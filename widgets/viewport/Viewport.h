@@ -1,8 +1,9 @@
 // The 3D view of a document: a QOpenGLWidget (GL 3.3 core) that draws the
 // document's parts with GPU skinning, the ground grid and the skeleton
 // overlay, navigates like Blender (middle drag orbits, Shift + middle drag
-// pans, wheel zooms, Home frames all, numpad period frames the selection) and
-// hands left-button input to the active tool.
+// pans, wheel zooms, Home frames all, numpad period frames the selection) or,
+// by preference, like Maya (Alt + left / middle / right drag, MouseBindings.h)
+// and hands left-button input to the active tool.
 #pragma once
 
 #include <QOpenGLWidget>
@@ -12,6 +13,7 @@
 
 #include "model/Document.h"
 #include "pose/ForwardKinematics.h"
+#include "viewport/MouseBindings.h"
 #include "viewport/OrbitCamera.h"
 #include "viewport/RenderScene.h"
 
@@ -26,6 +28,7 @@ struct BoneHit {
 
 class ViewportTool;
 class JobRunner;
+class GlobalDifferences;
 
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
@@ -58,8 +61,15 @@ class Viewport : public QOpenGLWidget {
     void setOnionSkin(bool on);
     bool onionSkin() const { return onionSkin_; }
     WeightView weightView() const { return weightView_; }
+    // True while the Difference from Global Weights view waits for a part's
+    // global solve (GlobalDifferences; tests wait on it).
+    bool globalDifferencePending() const;
     bool wireframe() const { return wireframe_; }
     bool dualQuaternionSkinning() const { return dualQuaternion_; }
+    void setMouseBindings(MouseBindings bindings) { mouseBindings_ = bindings; }
+    MouseBindings mouseBindings() const { return mouseBindings_; }
+    // A drag that orbits, pans or zooms the view is under way.
+    bool navigating() const { return navigation_ != Navigation::None; }
 
     // The stroke being sketched, in world space (drawn as an overlay).
     void setStrokeOverlay(std::vector<QVector3D> points);
@@ -146,6 +156,7 @@ class Viewport : public QOpenGLWidget {
     bool gridVisible_ = true;
     bool onionSkin_ = false;
     WeightView weightView_ = WeightView::Off;
+    GlobalDifferences* globalDifferences_ = nullptr;
     bool framedOnce_ = false;
     struct PosedCacheEntry {
         const Part* part = nullptr;
@@ -157,7 +168,9 @@ class Viewport : public QOpenGLWidget {
     model::PartId markedPart_ = model::kNoPart;
     std::vector<int> marked_;
     QPointF lastMouse_;
-    bool navigating_ = false;
+    MouseBindings mouseBindings_ = MouseBindings::Blender;
+    Navigation navigation_ = Navigation::None;  // of the drag under way
+    Qt::MouseButton navigationButton_ = Qt::NoButton;
 };
 
 }  // namespace rigmesh::widgets

@@ -15,10 +15,12 @@ Vec3 posedVertex(const Part& part, const PosedSkeleton& posed, int v) {
         return rest;
     Vec3 sum = Vec3::Zero();
     double total = 0.0;
+    // Weights name bones by id; the transforms are by position.
     for (const auto& [bone, w] : part.weights.perVertex[v]) {
-        if (bone < 0 || bone >= static_cast<int>(posed.boneTransforms.size()))
+        const int index = part.skeleton.hasBone(bone) ? part.skeleton.indexOfBone(bone) : -1;
+        if (index < 0 || index >= static_cast<int>(posed.boneTransforms.size()))
             continue;
-        sum += w * posed.boneTransforms[bone].apply(rest);
+        sum += w * posed.boneTransforms[index].apply(rest);
         total += w;
     }
     return total > 0.0 ? Vec3(sum / total) : rest;

@@ -186,7 +186,8 @@ ChordalAxis computeChordalAxis(PolygonTriangulation cdt, const ChordalAxisOption
         axis.kind[t] = kindFromDegree(builder.liveDegree(t));
     builder.collectBranches();
     if (axis.branches.empty())
-        throw Error("the outline is too simple to have an axis: draw a larger, rounder shape");
+        throw Error(MessageId::OutlineTooSimple);
+
     return axis;
 }
 

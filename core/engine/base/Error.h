@@ -1,16 +1,36 @@
 // The one exception type the engine throws at its boundary. Its message is
 // written for the user: it says what is wrong with their input and, where it
-// helps, what to do instead.
+// helps, what to do instead. An Error made from a MessageId also carries the
+// id and its arguments, so the studio can show it translated; what() is
+// always the English text (the CLI prints it).
 #pragma once
 
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "base/Message.h"
 
 namespace rigmesh {
 
 class Error : public std::runtime_error {
-public:
-    explicit Error(const std::string& message) : std::runtime_error(message) {}
+  public:
+    // A message without an id: shown as it is, in English.
+    explicit Error(const std::string& text) : std::runtime_error(text) {}
+
+    explicit Error(Message message)
+        : std::runtime_error(englishText(message)), message_(std::move(message)) {}
+
+    // E.g. Error(MessageId::PartHasNoBone, bone).
+    template <class... Args>
+    explicit Error(MessageId id, const Args&... args)
+        : Error(Message{id, {messageArgument(args)...}}) {}
+
+    // The id (None for a message without one) and the arguments.
+    const Message& message() const { return message_; }
+
+  private:
+    Message message_;
 };
 
 }  // namespace rigmesh

@@ -17,7 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 [[noreturn]] void fail(const fs::path& target, const std::string& why) {
-    throw Error("cannot write " + target.string() + ": " + why);
+    throw Error(MessageId::CannotWriteFile, target.string(), why);
 }
 
 std::string systemError(int error) {
@@ -57,17 +57,17 @@ void checkReplaceable(const fs::path& target) {
     std::error_code error;
     const fs::path folder = folderOf(target);
     if (!fs::is_directory(folder, error))
-        fail(target, "the folder " + folder.string() + " does not exist");
+        throw Error(MessageId::WriteFolderMissing, target.string(), folder.string());
     const fs::file_status status = fs::status(target, error);
     if (fs::is_directory(status))
-        fail(target, "it is a folder");
+        throw Error(MessageId::WriteTargetIsFolder, target.string());
     if (!fs::exists(status))
         return;
     // No write bit at all is read-only even for root, who passes access().
     const fs::perms writable =
         fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
     if ((status.permissions() & writable) == fs::perms::none || ::access(target.c_str(), W_OK) != 0)
-        fail(target, "the file is read-only");
+        throw Error(MessageId::WriteReadOnly, target.string());
 }
 
 StagedFile::StagedFile(const fs::path& target, std::string_view bytes)
@@ -77,14 +77,14 @@ StagedFile::StagedFile(const fs::path& target, std::string_view bytes)
         ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (descriptor < 0) {
         const int error = errno;
-        fail(target_,
-             "cannot create a file in " + folderOf(target_).string() + ": " + systemError(error));
+        throw Error(MessageId::WriteCannotCreate, target_.string(), folderOf(target_).string(),
+                    systemError(error));
     }
     // A constructor that throws runs no destructor: remove the file here.
-    const auto failAndRemove = [&](const std::string& why) {
+    const auto failAndRemove = [&](const Error& error) {
         std::error_code ignored;
         fs::remove(temporary_, ignored);
-        fail(target_, why);
+        throw error;
     };
     bool ok = writeAll(descriptor, bytes) && ::fsync(descriptor) == 0;
     int error = ok ? 0 : errno;
@@ -93,14 +93,15 @@ StagedFile::StagedFile(const fs::path& target, std::string_view bytes)
         error = errno;
     }
     if (!ok)
-        failAndRemove(systemError(error) + " (is the disk full?)");
+        failAndRemove(Error(MessageId::WriteDiskFull, target_.string(), systemError(error)));
     std::error_code ignored;
     const fs::file_status existing = fs::status(target_, ignored);
     if (fs::exists(existing)) {
         std::error_code permissionError;
         fs::permissions(temporary_, existing.permissions(), permissionError);
         if (permissionError)
-            failAndRemove("cannot keep its permissions: " + permissionError.message());
+            failAndRemove(Error(MessageId::WritePermissionsLost, target_.string(),
+                                permissionError.message()));
     }
 }
 

@@ -18,12 +18,6 @@ using Clock = std::chrono::steady_clock;
 // The closest split that still leaves both halves a bone of some length.
 constexpr double kEndFraction = 0.05;
 
-BoneId leadingBone(const std::vector<std::pair<BoneId, double>>& weights) {
-    return std::max_element(weights.begin(), weights.end(),
-                            [](const auto& a, const auto& b) { return a.second < b.second; })
-        ->first;
-}
-
 BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& weights,
                       const std::vector<int>& seeds, const std::vector<int>& unknown,
                       const std::vector<BoneId>& bones, Clock::time_point start) {
@@ -33,7 +27,8 @@ BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& we
     BoneEditResult result;
     result.part = part;
     result.part.skeleton = std::move(skeleton);
-    result.part.weights = weightsByIndex(result.part.skeleton, local.weights);
+    // A fresh value: failed bones and the warning were the old solve's.
+    result.part.weights = SkinWeightsById{local.weights, {}, {}};
     // Closest bones known from the sketch no longer hold where bones changed.
     result.part.knownClosestBones.clear();
     std::erase_if(result.part.boneNames,
@@ -47,17 +42,16 @@ BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& we
     result.bonesInvolved = static_cast<int>(local.bones.size());
     const std::vector<std::string> problems = result.part.validateSolid();
     if (!problems.empty())
-        throw Error("The bone edit gave an invalid part (" + problems.front() +
-                    "); nothing was changed.");
+        throw Error(MessageId::BoneEditInvalidResult, problems.front());
     result.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     return result;
 }
 
 void requireRigged(const Part& part, BoneId bone) {
     if (part.skeleton.boneCount() == 0)
-        throw Error("The part has no skeleton.");
+        throw Error(MessageId::PartHasNoSkeleton);
     if (!part.skeleton.hasBone(bone))
-        throw Error("The part has no bone " + std::to_string(bone) + ".");
+        throw Error(MessageId::PartHasNoBone, bone);
 }
 
 }  // namespace
@@ -65,7 +59,7 @@ void requireRigged(const Part& part, BoneId bone) {
 BoneId nearestBone(const Part& part, const Vec3& point) {
     const std::vector<BoneSegment> segments = part.boneSegments();
     if (segments.empty())
-        throw Error("The part has no skeleton.");
+        throw Error(MessageId::PartHasNoSkeleton);
     int best = 0;
     for (int b = 1; b < static_cast<int>(segments.size()); ++b)
         if (pointSegmentDistance(point, segments[b]) < pointSegmentDistance(point, segments[best]))
@@ -81,9 +75,7 @@ BoneEditResult splitBoneAt(const Part& part, BoneId bone, const Vec3& at) {
                               part.skeleton.joint(b.tail).position};
     const double t = closestSegmentParameter(at, segment);
     if (t < kEndFraction || t > 1.0 - kEndFraction)
-        throw Error(
-            "That is too close to a joint to split the bone; pick a point nearer its "
-            "middle.");
+        throw Error(MessageId::SplitTooCloseToJoint);
     const Vec3 point = segment.head + t * (segment.tail - segment.head);
     Skeleton skeleton = part.skeleton;
     const JointId middle = skeleton.splitBone(bone, point);
@@ -97,13 +89,13 @@ BoneEditResult splitBoneAt(const Part& part, BoneId bone, const Vec3& at) {
     // There both halves are equally close, so every vertex passes; the test
     // starts instead from every vertex the bone leads, and those beyond the
     // new joint (now closest to the far half, which has no weight) fail it.
-    const WeightsById weights = weightsById(part.skeleton, part.weights);
+    const WeightsById& weights = part.weights.perVertex;
     std::vector<int> seeds;
     for (int v = 0; v < part.mesh.vertexCount(); ++v)
         if (!weights[v].empty() && leadingBone(weights[v]) == bone)
             seeds.push_back(v);
     if (seeds.empty())
-        throw Error("No part of the surface is led by that bone where it would be split.");
+        throw Error(MessageId::SplitBoneLeadsNothing);
     BoneEditResult result =
         finish(part, std::move(skeleton), weights, seeds, {}, {bone, tailHalf}, start);
     result.newJoint = middle;
@@ -114,7 +106,8 @@ BoneEditResult deleteBone(const Part& part, BoneId bone) {
     const auto start = Clock::now();
     requireRigged(part, bone);
     if (part.skeleton.boneCount() < 2)
-        throw Error("A part keeps at least one bone; this is its only one.");
+        throw Error(MessageId::DeleteOnlyBone);
+
     const Bone b = part.skeleton.bone(bone);
     std::set<BoneId> neighbours;
     for (JointId end : {b.head, b.tail})
@@ -128,7 +121,7 @@ BoneEditResult deleteBone(const Part& part, BoneId bone) {
     // The collapsed piece (paper 3.3: between the cuts through the far joints
     // of the neighbouring bones): every vertex led by the bone or a
     // neighbour, all of them solved again.
-    WeightsById weights = weightsById(part.skeleton, part.weights);
+    WeightsById weights = part.weights.perVertex;
     std::vector<int> piece;
     for (int v = 0; v < part.mesh.vertexCount(); ++v) {
         if (weights[v].empty())

@@ -145,34 +145,30 @@ void joinComponents(Skeleton& skeleton) {
 CutResult cutPart(const Part& part, const CutRequest& request) {
     const auto start = std::chrono::steady_clock::now();
     if (part.skeleton.boneCount() == 0)
-        throw Error("Only rigged parts can be cut; rig the imported mesh first.");
+        throw Error(MessageId::CutNeedsRiggedPart);
     if (request.stroke.empty() && (!(request.normal.norm() > 0.0) || !request.normal.allFinite() ||
                                    !request.point.allFinite()))
-        throw Error("The cut needs a plane: a finite point and a non-zero normal.");
+        throw Error(MessageId::CutNeedsPlane);
     for (const Vec3& p : request.stroke)
         if (!p.allFinite())
-            throw Error("The cut's stroke has a point that is not a finite number.");
+            throw Error(MessageId::CutStrokeNotFinite);
     const CutSurface surface = request.stroke.empty()
                                    ? CutSurface::plane(request.point, request.normal)
                                    : CutSurface::swept(request.stroke, request.sweep);
     std::vector<MeshPiece> pieces = splitBySurface(part.mesh, surface);
     if (pieces.size() < 2)
-        throw Error(
-            "The cut does not cross the part. Draw it across the part, from one side "
-            "of its outline to the other.");
+        throw Error(MessageId::CutMissesPart);
     if (pieces.size() > 2)
-        throw Error("The cut crosses the part more than once (it would make " +
-                    std::to_string(pieces.size()) +
-                    " pieces). Cut where it crosses only once, or cut again.");
+        throw Error(MessageId::CutCrossesTwice, pieces.size());
     std::sort(pieces.begin(), pieces.end(),
               [](const MeshPiece& a, const MeshPiece& b) { return a.side < b.side; });
     if (pieces[0].side == pieces[1].side)
-        throw Error("The cut leaves two pieces on the same side of its plane; cut elsewhere.");
+        throw Error(MessageId::CutPiecesOnOneSide);
 
     const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(part.mesh);
     std::map<BoneId, BoneId> tailHalf;
     const Skeleton split = splitCrossingBones(part.skeleton, surface, tailHalf);
-    const WeightsById weights = weightsById(part.skeleton, part.weights);
+    const WeightsById& weights = part.weights.perVertex;
 
     CutResult result;
     // The two pieces are independent: one thread each (the first error is
@@ -184,13 +180,10 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
             out.name = part.name;
             out.skeleton = skeletonOnSide(split, surface, piece.side, 1e-9 * edge);
             if (out.skeleton.boneCount() == 0)
-                throw Error(
-                    "The cut leaves a piece without a bone. Cut across a bone, nearer the "
-                    "middle of the part.");
+                throw Error(MessageId::CutPieceWithoutBone);
             joinComponents(out.skeleton);
             if (!out.skeleton.validate().empty())
-                throw Error(
-                    "The cut leaves a piece whose skeleton is not one tree; cut elsewhere.");
+                throw Error(MessageId::CutPieceNotOneTree);
             out.skeleton.setRoot(chooseCentralRoot(out.skeleton));
             out.skeleton.reorient();
 
@@ -245,7 +238,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
                     values(v, std::lower_bound(bones.begin(), bones.end(), bone) - bones.begin()) =
                         w;
             if (!fairValues(out.mesh, unknown, values))
-                throw Error("The patch's skin weights could not be solved; cut elsewhere.");
+                throw Error(MessageId::CutPatchWeightsUnsolved);
             for (int v : unknown) {
                 pieceWeights[v].clear();
                 for (std::size_t b = 0; b < bones.size(); ++b)
@@ -255,7 +248,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
                 if (pieceWeights[v].empty())
                     pieceWeights[v].emplace_back(bones.front(), 1.0);
             }
-            out.weights = weightsByIndex(out.skeleton, pieceWeights);
+            out.weights.perVertex = std::move(pieceWeights);
             for (const auto& [id, name] : part.boneNames)
                 if (out.skeleton.hasBone(id))
                     out.boneNames[id] = name;
@@ -267,8 +260,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
             result.sources[k].resize(out.mesh.vertexCount());  // patch vertices: New
             const std::vector<std::string> problems = out.validateSolid();
             if (!problems.empty())
-                throw Error("The cut gave an invalid piece (" + problems.front() +
-                            "); nothing was changed.");
+                throw Error(MessageId::CutInvalidPiece, problems.front());
         }
     });
     result.milliseconds =

@@ -18,7 +18,7 @@ CutSurface CutSurface::plane(const Vec3& point, const Vec3& normal) {
 
 CutSurface CutSurface::swept(std::vector<Vec3> stroke, const Vec3& direction) {
     if (stroke.size() < 2 || !(direction.norm() > 0.0))
-        throw Error("A cut needs a stroke of two points or more and a view direction.");
+        throw Error(MessageId::CutStrokeTooShort);
     const Vec3 d = direction.normalized();
     // Onto the plane through the first point normal to the sweep.
     for (Vec3& p : stroke)
@@ -26,7 +26,8 @@ CutSurface CutSurface::swept(std::vector<Vec3> stroke, const Vec3& direction) {
     stroke.erase(std::unique(stroke.begin(), stroke.end()), stroke.end());
     const Vec3 chord = stroke.back() - stroke.front();
     if (stroke.size() < 2 || !(chord.norm() > 0.0))
-        throw Error("The cut's stroke must not start and end at the same point.");
+        throw Error(MessageId::CutStrokeClosed);
+
     double deviation = 0.0;
     const Vec3 along = chord.normalized();
     for (const Vec3& p : stroke) {

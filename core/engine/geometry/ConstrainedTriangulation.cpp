@@ -66,8 +66,7 @@ void markDomains(Cdt& cdt) {
 Cdt::Vertex_handle insertIndexed(Cdt& cdt, const Vec2& p, int index) {
     auto vertex = cdt.insert(Point(p.x(), p.y()));
     if (vertex->info().value != kNoIndex && vertex->info().value != index)
-        throw Error("the outline touches itself at (" + std::to_string(p.x()) + ", " +
-                    std::to_string(p.y()) + ")");
+        throw Error(MessageId::OutlineTouchesItself, std::to_string(p.x()), std::to_string(p.y()));
     vertex->info().value = index;
     return vertex;
 }
@@ -82,7 +81,7 @@ std::vector<Cdt::Vertex_handle> insertLoop(Cdt& cdt, const std::vector<Vec2>& lo
         for (std::size_t i = 0; i < handles.size(); ++i)
             cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
     } catch (const Cdt::Intersection_of_constraints_exception&) {
-        throw Error("the outline crosses itself: draw a silhouette that does not cross itself");
+        throw Error(MessageId::OutlineCrossesItself);
     }
     return handles;
 }
@@ -91,11 +90,11 @@ std::vector<Cdt::Vertex_handle> insertLoop(Cdt& cdt, const std::vector<Vec2>& lo
 
 PolygonTriangulation triangulatePolygon(const std::vector<Vec2>& polygon) {
     if (polygon.size() < 3)
-        throw Error("an outline needs at least three points");
+        throw Error(MessageId::OutlineTooFewPoints);
     Cdt cdt;
     insertLoop(cdt, polygon);
     if (cdt.number_of_vertices() != polygon.size())
-        throw Error("the outline has repeated points");
+        throw Error(MessageId::OutlineRepeatedPoints);
     markDomains(cdt);
 
     PolygonTriangulation result;
@@ -121,7 +120,8 @@ PolygonTriangulation triangulatePolygon(const std::vector<Vec2>& polygon) {
         result.neighbors.push_back(across);
     }
     if (result.triangles.empty())
-        throw Error("the outline encloses no area");
+        throw Error(MessageId::OutlineNoArea);
+
     return result;
 }
 

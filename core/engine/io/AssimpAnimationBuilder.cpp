@@ -40,10 +40,8 @@ void appendSegmentFrames(std::vector<double>& times, double first, double step, 
 void checkDistinctAsFloats(const std::vector<double>& times) {
     for (std::size_t k = 1; k < times.size(); ++k)
         if (!(static_cast<float>(times[k - 1]) < static_cast<float>(times[k])))
-            throw Error("cannot export the clip: the times " + std::to_string(times[k - 1]) +
-                        " s and " + std::to_string(times[k]) +
-                        " s are too close for 32-bit precision this far from 0 s; move the keys "
-                        "nearer to 0 s or further apart");
+            throw Error(MessageId::ExportKeysTooClose, std::to_string(times[k - 1]),
+                        std::to_string(times[k]));
 }
 
 }  // namespace

@@ -244,14 +244,13 @@ std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
         joints.emplace_back(p, id);
         return id;
     };
-    std::map<unsigned, int> boneIndex;
+    std::map<unsigned, BoneId> boneOfAiBone;
     for (const auto& [node, b] : order) {
         const JointId h = jointAt(head(b));
         const JointId t = jointAt(tail(b));
         if (h == t)
             return std::string("bone '") + mesh.mBones[b]->mName.C_Str() + "' has no length";
-        part.skeleton.addBone(h, t);
-        boneIndex[b] = static_cast<int>(imported.boneNames.size());
+        boneOfAiBone[b] = part.skeleton.addBone(h, t);
         imported.boneNames.push_back(mesh.mBones[b]->mName.C_Str());
     }
     if (!order.empty())
@@ -262,13 +261,14 @@ std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
         for (unsigned w = 0; w < mesh.mBones[b]->mNumWeights; ++w) {
             const aiVertexWeight& weight = mesh.mBones[b]->mWeights[w];
             if (weight.mVertexId < mesh.mNumVertices && weight.mWeight > 0)
-                part.weights.perVertex[weight.mVertexId].emplace_back(boneIndex[b], weight.mWeight);
+                part.weights.perVertex[weight.mVertexId].emplace_back(boneOfAiBone[b],
+                                                                      weight.mWeight);
         }
     bool unweighted = false;
     for (auto& list : part.weights.perVertex) {
         std::sort(list.begin(), list.end());
         // A file may weight one vertex twice by the same bone: one entry each.
-        std::vector<std::pair<int, double>> merged;
+        std::vector<std::pair<BoneId, double>> merged;
         for (const auto& entry : list)
             if (!merged.empty() && merged.back().first == entry.first)
                 merged.back().second += entry.second;

@@ -139,13 +139,17 @@ std::vector<aiNode*> boneNodes(const ExportRig& rig, bool leafBones) {
 // of them.
 void addBones(aiMesh* mesh, const Part& part, const ExportRig& rig, int maxInfluences,
               bool leafBones) {
+    // Bone id -> position in skeleton.bones() -> the bone's node.
+    const BoneIndexTable positionOf(part.skeleton);
     SkinWeights remapped;
     remapped.perVertex.resize(part.mesh.vertices.size());
     for (std::size_t v = 0; v < part.weights.perVertex.size(); ++v)
-        for (const auto& [bone, w] : part.weights.perVertex[v])
-            if (bone >= 0 && bone < static_cast<int>(rig.nodeOfBone.size()) &&
-                rig.nodeOfBone[bone] >= 0)
-                remapped.perVertex[v].emplace_back(rig.nodeOfBone[bone], w);
+        for (const auto& [bone, w] : part.weights.perVertex[v]) {
+            const int position = positionOf[bone];
+            if (position >= 0 && position < static_cast<int>(rig.nodeOfBone.size()) &&
+                rig.nodeOfBone[position] >= 0)
+                remapped.perVertex[v].emplace_back(rig.nodeOfBone[position], w);
+        }
     const SkinWeights limited = limitInfluences(remapped, maxInfluences);
 
     std::vector<std::vector<aiVertexWeight>> perNode(rig.nodes.size());
@@ -232,10 +236,9 @@ void checkPart(const ExportPart& item, bool rigged) {
         throw Error("cannot export: a part is missing");
     const Part& part = *item.part;
     if (part.mesh.vertices.empty() || part.mesh.faces.empty())
-        throw Error("cannot export part '" + part.name + "': it has no surface");
+        throw Error(MessageId::ExportPartWithoutSurface, part.name);
     if (rigged && part.weights.perVertex.size() != part.mesh.vertices.size())
-        throw Error("cannot export part '" + part.name +
-                    "': its skin weights do not match its surface");
+        throw Error(MessageId::ExportWeightsMismatch, part.name);
 }
 
 }  // namespace
@@ -244,7 +247,7 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
                                         const Clip* clip, ExportFormat format,
                                         const ExportOptions& options) {
     if (parts.empty())
-        throw Error("cannot export: there is no part");
+        throw Error(MessageId::ExportNoPart);
     const bool rigged = isRiggedFormat(format);
     for (const ExportPart& item : parts)
         checkPart(item, rigged);

@@ -6,13 +6,16 @@
 namespace rigmesh {
 namespace {
 
-using Influences = std::vector<std::pair<int, double>>;
+// The limit works alike on bone positions (exports) and bone ids (parts).
+template <typename Bone>
+using Influences = std::vector<std::pair<Bone, double>>;
 
-Influences normalised(Influences list) {
+template <typename Bone>
+Influences<Bone> normalised(Influences<Bone> list) {
     double sum = 0;
     for (const auto& [bone, w] : list)
         sum += w;
-    Influences out;
+    Influences<Bone> out;
     if (!(sum > 0))
         return out;
     for (const auto& [bone, w] : list)
@@ -22,7 +25,8 @@ Influences normalised(Influences list) {
     return out;
 }
 
-Influences limitVertex(Influences list, int maxInfluences) {
+template <typename Bone>
+Influences<Bone> limitVertex(Influences<Bone> list, int maxInfluences) {
     std::erase_if(list, [](const auto& entry) { return !(entry.second > 0); });
     if (maxInfluences <= 0 || static_cast<int>(list.size()) <= maxInfluences)
         return normalised(std::move(list));
@@ -32,23 +36,32 @@ Influences limitVertex(Influences list, int maxInfluences) {
     });
     const double threshold = list[static_cast<std::size_t>(maxInfluences)].second;
     list.resize(static_cast<std::size_t>(maxInfluences));
-    Influences shifted;
+    Influences<Bone> shifted;
     for (const auto& [bone, w] : list)
         if (w - threshold > 0)
             shifted.emplace_back(bone, w - threshold);
     return shifted.empty() ? normalised(std::move(list)) : normalised(std::move(shifted));
 }
 
-}  // namespace
-
-SkinWeights limitInfluences(const SkinWeights& weights, int maxInfluences) {
-    SkinWeights out;
+template <typename Weights>
+Weights limited(const Weights& weights, int maxInfluences) {
+    Weights out;
     out.failedBones = weights.failedBones;
     out.warning = weights.warning;
     out.perVertex.reserve(weights.perVertex.size());
     for (const auto& list : weights.perVertex)
         out.perVertex.push_back(limitVertex(list, maxInfluences));
     return out;
+}
+
+}  // namespace
+
+SkinWeights limitInfluences(const SkinWeights& weights, int maxInfluences) {
+    return limited(weights, maxInfluences);
+}
+
+SkinWeightsById limitInfluences(const SkinWeightsById& weights, int maxInfluences) {
+    return limited(weights, maxInfluences);
 }
 
 }  // namespace rigmesh

@@ -12,6 +12,7 @@
 // across the cut) the plain renormalisation of the N largest is used.
 #pragma once
 
+#include "part/BoneWeights.h"
 #include "rig/BoneHeatSolver.h"
 
 namespace rigmesh {
@@ -20,5 +21,7 @@ namespace rigmesh {
 // Output lists are sorted by bone, weights > 0 summing to 1. A vertex with no
 // influence (or all zero) stays empty.
 SkinWeights limitInfluences(const SkinWeights& weights, int maxInfluences);
+// The same on a part's weights (bones by id).
+SkinWeightsById limitInfluences(const SkinWeightsById& weights, int maxInfluences);
 
 }  // namespace rigmesh

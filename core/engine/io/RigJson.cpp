@@ -53,15 +53,17 @@ std::string rigToJson(const Part& part, const std::string& meshFile) {
     rig["vertices"] = nlohmann::json::array();
     for (const Vec3& p : part.mesh.vertices)
         rig["vertices"].push_back({p.x(), p.y(), p.z()});
+    // The file names bones by their place in "bones", as glTF's skins do.
+    const SkinWeights byIndex = weightsByIndex(skeleton, part.weights);
     rig["weights"] = nlohmann::json::array();
-    for (const auto& vertex : part.weights.perVertex) {
+    for (const auto& vertex : byIndex.perVertex) {
         nlohmann::json influences = nlohmann::json::array();
         for (const auto& [bone, weight] : vertex)
             influences.push_back({bone, weight});
         rig["weights"].push_back(std::move(influences));
     }
-    rig["failed_bones"] = part.weights.failedBones;
-    rig["warning"] = part.weights.warning;
+    rig["failed_bones"] = byIndex.failedBones;
+    rig["warning"] = byIndex.warning;
     return rig.dump(1) + "\n";
 }
 
@@ -97,14 +99,9 @@ std::vector<std::array<std::uint8_t, 3>> dominantBoneColours(const Part& part) {
     };
     std::vector<std::array<std::uint8_t, 3>> colours;
     colours.reserve(part.weights.perVertex.size());
-    for (const auto& vertex : part.weights.perVertex) {
-        int dominant = 0;
-        double best = -1.0;
-        for (const auto& [bone, weight] : vertex)
-            if (weight > best)
-                best = weight, dominant = bone;
-        colours.push_back(colourOf(dominant));
-    }
+    const BoneIndexTable index(part.skeleton);
+    for (const auto& vertex : part.weights.perVertex)
+        colours.push_back(colourOf(vertex.empty() ? 0 : std::max(index[leadingBone(vertex)], 0)));
     return colours;
 }
 

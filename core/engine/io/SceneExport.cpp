@@ -73,10 +73,10 @@ ExportedFiles exportToMemory(aiScene& scene, ExportFormat format, const std::str
     try {
         blob = exporter.ExportToBlob(&scene, assimpFormatId(format), preprocessing(format));
     } catch (const std::exception& exception) {
-        throw Error("cannot write " + path + ": " + exception.what());
+        throw Error(MessageId::CannotWriteFile, path, exception.what());
     }
     if (blob == nullptr)
-        throw Error("cannot write " + path + ": " + exporter.GetErrorString());
+        throw Error(MessageId::CannotWriteFile, path, exporter.GetErrorString());
     ExportedFiles files;
     files.main.assign(static_cast<const char*>(blob->data), blob->size);
     for (const aiExportDataBlob* next = blob->next; next != nullptr; next = next->next)
@@ -108,7 +108,7 @@ std::string readWholeFile(const fs::path& path) {
 void writeGltf(const ExportedFiles& files, const fs::path& target) {
     const auto bin = files.companions.find("bin");
     if (bin == files.companions.end())
-        throw Error("cannot write " + target.string() + ": the glTF exporter wrote no .bin");
+        throw Error(MessageId::CannotWriteFile, target.string(), "the glTF exporter wrote no .bin");
     const std::string binBytes = zeroUnreferencedBinBytes(files.main, bin->second);
     const std::string binName = target.stem().string() + "." + fnv1aHex(binBytes) + ".bin";
     const std::string gltfText = withBufferUri(files.main, binName);

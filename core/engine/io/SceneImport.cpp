@@ -200,7 +200,7 @@ ImportedScene importScene(const std::string& path) {
         } else {
             imported.needsRig = true;
             imported.part.skeleton = Skeleton();
-            imported.part.weights = SkinWeights();
+            imported.part.weights = SkinWeightsById();
             imported.boneNames.clear();
             result.needsRig = true;
             result.message += (result.message.empty() ? "" : "; ") + std::string("part '") +

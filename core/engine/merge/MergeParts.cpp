@@ -31,7 +31,7 @@ BoneSegment segmentOf(const Skeleton& skeleton, BoneId id) {
 // test: those nearer the new tail half fail it and are solved again (3.2.2).
 WeightsById targetWeights(const Part& target, const SkeletonJoin& join, BoneId splitBone,
                           std::vector<int>& seeds) {
-    WeightsById weights = weightsById(target.skeleton, target.weights);
+    WeightsById weights = target.weights.perVertex;
     if (!join.splitTail)
         return weights;
     for (std::size_t v = 0; v < weights.size(); ++v)
@@ -42,7 +42,7 @@ WeightsById targetWeights(const Part& target, const SkeletonJoin& join, BoneId s
 }
 
 WeightsById draggedWeights(const Part& dragged, const SkeletonJoin& join) {
-    WeightsById weights = weightsById(dragged.skeleton, dragged.weights);
+    WeightsById weights = dragged.weights.perVertex;
     for (auto& list : weights) {
         for (auto& entry : list)
             entry.first = join.draggedBones.at(entry.first);
@@ -66,10 +66,7 @@ void addVerticesNearerToNewBones(const TriMesh& mesh, const Skeleton& skeleton,
     for (int v = 0; v < mesh.vertexCount(); ++v) {
         if (weights[v].empty())
             continue;
-        const BoneId leading =
-            std::max_element(weights[v].begin(), weights[v].end(), [](auto& a, auto& b) {
-                return a.second < b.second;
-            })->first;
+        const BoneId leading = leadingBone(weights[v]);
         if (!skeleton.hasBone(leading))
             continue;
         const double own = pointSegmentDistance(mesh.vertices[v], segmentOf(skeleton, leading));
@@ -86,9 +83,7 @@ std::set<BoneId> leadingBones(const WeightsById& weights) {
     std::set<BoneId> leading;
     for (const auto& list : weights)
         if (!list.empty())
-            leading.insert(std::max_element(list.begin(), list.end(), [](auto& a, auto& b) {
-                               return a.second < b.second;
-                           })->first);
+            leading.insert(leadingBone(list));
     return leading;
 }
 
@@ -172,7 +167,7 @@ double percentile(std::vector<double> values, double fraction) {
 MergeResult mergeParts(const Part& target, const Part& dragged, const MergeRequest& request) {
     const auto start = Clock::now();
     if (target.skeleton.boneCount() == 0 || dragged.skeleton.boneCount() == 0)
-        throw Error("Only rigged parts can be merged; rig the imported mesh first.");
+        throw Error(MessageId::MergeNeedsRiggedParts);
     MergeResult result;
     SkeletonJoin join = joinSkeletons(target.skeleton, dragged.skeleton, request.join);
     result.draggedTranslation = join.draggedTranslation;
@@ -274,7 +269,7 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
     part.mesh = std::move(merged.mesh);
     part.mirror = std::move(carried.mirror);
     part.skeleton = std::move(join.skeleton);
-    part.weights = weightsByIndex(part.skeleton, weights);
+    part.weights.perVertex = std::move(weights);
     for (const auto& [id, name] : target.boneNames)
         if (part.skeleton.hasBone(id))
             part.boneNames[id] = name;
@@ -298,8 +293,8 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
 
     const std::vector<std::string> problems = part.validateSolid();
     if (!problems.empty())
-        throw Error("The merge gave an invalid part (" + problems.front() +
-                    "); nothing was changed.");
+        throw Error(MessageId::MergeInvalidResult, problems.front());
+
     result.stats.totalMs = millisecondsSince(start);
     return result;
 }

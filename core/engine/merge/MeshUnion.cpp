@@ -125,15 +125,10 @@ MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double 
                                              params::throw_on_self_intersection(true),
                                              params::edge_is_constrained_map(loopEdges));
     } catch (const PMP::Corefinement::Self_intersection_exception&) {
-        throw Error(
-            "One of the surfaces intersects itself, so the parts cannot be merged. "
-            "Rebuild it with a larger edge length or smoothing, then merge again.");
+        throw Error(MessageId::MergeSelfIntersecting);
     }
     if (!ok)
-        throw Error(
-            "The merged surface would not be a manifold (the parts touch at a point or "
-            "along a line). Move the dragged part so that it overlaps the other one, "
-            "then merge again.");
+        throw Error(MessageId::MergeNotManifold);
 
     // Where every vertex came from: an unchanged input vertex (bitwise), or
     // a new point on the loop (a point on either input surface).
@@ -154,12 +149,8 @@ MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double 
             ++keptFrom[source.mesh];
     if (result.loop.empty()) {
         if (keptFrom[0] > 0 && keptFrom[1] > 0)
-            throw Error(
-                "The parts do not touch. Drag one part so that it overlaps the other, "
-                "then merge.");
-        throw Error(
-            "One part lies entirely inside the other, so merging would only delete it. "
-            "Drag it so that it sticks out of the other part, then merge.");
+            throw Error(MessageId::MergePartsApart);
+        throw Error(MessageId::MergePartInside);
     }
     if (!(seamEdgeLength > 0.0))
         return result;

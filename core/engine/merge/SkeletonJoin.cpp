@@ -16,7 +16,7 @@ constexpr double kSplitEndFraction = 0.05;
 SkeletonJoin joinSkeletons(const Skeleton& target, const Skeleton& dragged,
                            const SkeletonJoinRequest& request) {
     if (!dragged.hasJoint(request.draggedJoint))
-        throw Error("The dragged part has no joint " + std::to_string(request.draggedJoint) + ".");
+        throw Error(MessageId::MergeNoDraggedJoint, request.draggedJoint);
     SkeletonJoin join;
     join.skeleton = target;
     Skeleton& merged = join.skeleton;
@@ -25,14 +25,12 @@ SkeletonJoin joinSkeletons(const Skeleton& target, const Skeleton& dragged,
         case MergeMode::Snap:
         case MergeMode::Connect:
             if (!target.hasJoint(request.targetJoint))
-                throw Error("The target part has no joint " + std::to_string(request.targetJoint) +
-                            ".");
+                throw Error(MessageId::MergeNoTargetJoint, request.targetJoint);
             join.meetingJoint = request.targetJoint;
             break;
         case MergeMode::Split: {
             if (!target.hasBone(request.targetBone))
-                throw Error("The target part has no bone " + std::to_string(request.targetBone) +
-                            ".");
+                throw Error(MessageId::MergeNoTargetBone, request.targetBone);
             const Bone& bone = target.bone(request.targetBone);
             const BoneSegment segment{target.joint(bone.head).position,
                                       target.joint(bone.tail).position};
@@ -68,7 +66,8 @@ SkeletonJoin joinSkeletons(const Skeleton& target, const Skeleton& dragged,
     if (request.mode == MergeMode::Connect) {
         const JointId from = join.draggedJoints.at(request.draggedJoint);
         if ((merged.joint(from).position - meetingPoint).norm() == 0.0)
-            throw Error("The two joints to connect are at the same place; snap them instead.");
+            throw Error(MessageId::MergeJointsCoincide);
+
         join.connectingBone = merged.addBone(join.meetingJoint, from);
     }
     return join;

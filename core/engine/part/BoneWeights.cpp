@@ -1,43 +1,66 @@
 #include "part/BoneWeights.h"
 
 #include <algorithm>
-#include <map>
 
 #include "base/Error.h"
 
 namespace rigmesh {
 
-WeightsById weightsById(const Skeleton& skeleton, const SkinWeights& weights) {
-    WeightsById result(weights.perVertex.size());
-    for (std::size_t v = 0; v < weights.perVertex.size(); ++v) {
-        for (const auto& [bone, w] : weights.perVertex[v])
-            result[v].emplace_back(skeleton.bones()[bone].id, w);
+namespace {
+
+template <typename Id>
+std::vector<std::vector<std::pair<BoneId, double>>> listsById(
+    const Skeleton& skeleton, const std::vector<std::vector<std::pair<Id, double>>>& lists) {
+    std::vector<std::vector<std::pair<BoneId, double>>> result(lists.size());
+    for (std::size_t v = 0; v < lists.size(); ++v) {
+        for (const auto& [bone, value] : lists[v])
+            result[v].emplace_back(skeleton.bones()[bone].id, value);
         std::sort(result[v].begin(), result[v].end());
     }
     return result;
 }
 
-SkinWeights weightsByIndex(const Skeleton& skeleton, const WeightsById& weights) {
+// Ids below this many per bone (plus a margin) go in the plain array.
+constexpr BoneId kDenseIdsPerBone = 4;
+constexpr BoneId kDenseIdMargin = 64;
+
+}  // namespace
+
+SkinWeightsById weightsById(const Skeleton& skeleton, const SkinWeights& weights) {
+    SkinWeightsById result;
+    result.perVertex = listsById(skeleton, weights.perVertex);
+    for (int bone : weights.failedBones)
+        result.failedBones.push_back(skeleton.bones()[bone].id);
+    result.warning = weights.warning;
+    return result;
+}
+
+SkinWeights weightsByIndex(const Skeleton& skeleton, const SkinWeightsById& weights) {
+    const BoneIndexTable index(skeleton);
+    auto indexOf = [&](BoneId bone) {
+        const int at = index[bone];
+        if (at < 0)
+            throw Error("A skin weight refers to bone " + std::to_string(bone) +
+                        ", which the skeleton does not have.");
+        return at;
+    };
     SkinWeights result;
-    result.perVertex.resize(weights.size());
-    for (std::size_t v = 0; v < weights.size(); ++v) {
-        for (const auto& [bone, w] : weights[v]) {
-            if (!skeleton.hasBone(bone))
-                throw Error("A skin weight refers to bone " + std::to_string(bone) +
-                            ", which the skeleton does not have.");
-            result.perVertex[v].emplace_back(skeleton.indexOfBone(bone), w);
-        }
-        std::sort(result.perVertex[v].begin(), result.perVertex[v].end());
+    result.perVertex.resize(weights.perVertex.size());
+    for (std::size_t v = 0; v < weights.perVertex.size(); ++v) {
+        auto& list = result.perVertex[v];
+        list.reserve(weights.perVertex[v].size());
+        for (const auto& [bone, w] : weights.perVertex[v])
+            list.emplace_back(indexOf(bone), w);
+        std::sort(list.begin(), list.end());
     }
+    for (BoneId bone : weights.failedBones)
+        result.failedBones.push_back(indexOf(bone));
+    result.warning = weights.warning;
     return result;
 }
 
 ClosestBonesById closestById(const Skeleton& skeleton, const ClosestBones& closest) {
-    ClosestBonesById result(closest.size());
-    for (std::size_t v = 0; v < closest.size(); ++v)
-        for (const auto& [bone, d] : closest[v])
-            result[v].emplace_back(skeleton.bones()[bone].id, d);
-    return result;
+    return listsById(skeleton, closest);
 }
 
 ClosestBones closestByIndex(const Skeleton& skeleton, const ClosestBonesById& closest) {
@@ -49,17 +72,33 @@ ClosestBones closestByIndex(const Skeleton& skeleton, const ClosestBonesById& cl
     return result;
 }
 
-std::vector<int> leadingVertexCounts(const SkinWeights& weights, int boneCount) {
-    std::vector<int> counts(std::max(boneCount, 0), 0);
-    for (const auto& list : weights.perVertex) {
-        if (list.empty())
-            continue;
-        const int bone = std::max_element(list.begin(), list.end(), [](auto& a, auto& b) {
-                             return a.second < b.second;
-                         })->first;
-        if (bone >= 0 && bone < boneCount)
-            ++counts[bone];
+BoneIndexTable::BoneIndexTable(const Skeleton& skeleton) {
+    const auto bones = static_cast<BoneId>(skeleton.boneCount());
+    const BoneId denseLimit = kDenseIdsPerBone * bones + kDenseIdMargin;
+    BoneId largest = 0;
+    for (const Bone& bone : skeleton.bones())
+        largest = std::max(largest, bone.id);
+    dense_.assign(bones > 0 ? std::min(largest, denseLimit - 1) + 1 : 0, -1);
+    for (int b = 0; b < skeleton.boneCount(); ++b) {
+        const BoneId id = skeleton.bones()[b].id;
+        if (id < dense_.size())
+            dense_[id] = b;
+        else
+            sparse_[id] = b;
     }
+}
+
+BoneId leadingBone(const std::vector<std::pair<BoneId, double>>& weights) {
+    return std::max_element(weights.begin(), weights.end(),
+                            [](const auto& a, const auto& b) { return a.second < b.second; })
+        ->first;
+}
+
+std::map<BoneId, int> leadingVertexCounts(const WeightsById& weights) {
+    std::map<BoneId, int> counts;
+    for (const auto& list : weights)
+        if (!list.empty())
+            ++counts[leadingBone(list)];
     return counts;
 }
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "mesh/TriMesh.h"
-#include "rig/BoneHeatSolver.h"
+#include "part/BoneWeights.h"
 #include "rig/Skeleton.h"
 #include "surface/SketchSurface.h"
 
@@ -29,13 +29,15 @@ struct Part {
     // part is not mirror symmetric any more.
     std::vector<int> mirror;
     Skeleton skeleton;
-    // Per vertex (bone index = position in skeleton.bones()), non-negative,
-    // summing to 1. Edits that add or remove bones work on ids
-    // (part/BoneWeights.h) and convert back.
-    SkinWeights weights;
-    // Per vertex: the closest bone(s) known at creation (paper 2.4's shortcut
-    // for cylindrical vertices); empty where visibility had to be tested.
-    ClosestBones knownClosestBones;
+    // Per vertex, keyed by stable bone id (never by position in
+    // skeleton.bones(), which shifts when a bone goes), positive, summing to
+    // 1. Solvers, skinning and exports convert at their boundary
+    // (part/BoneWeights.h).
+    SkinWeightsById weights;
+    // Per vertex: the closest bone(s) by id known at creation (paper 2.4's
+    // shortcut for cylindrical vertices); empty where visibility had to be
+    // tested.
+    ClosestBonesById knownClosestBones;
     // Bone names kept from an imported file (issue 18 item 2): exported as
     // they are (made unique); a bone without one is `<part>_bone<id>`.
     std::map<BoneId, std::string> boneNames;
@@ -55,9 +57,11 @@ struct Part {
     // dozen); empty means valid: finite vertices, faces of three distinct
     // vertices in range, per-vertex tables of the right length with indices
     // in range, a skeleton that is a tree (or no skeleton at all, for an
-    // unrigged import), and weights that are finite, positive, sorted by
-    // bone and sum to 1 for every vertex, bone names for existing bones,
-    // non-empty and distinct, locked bones that exist. Every operation that changes a
+    // unrigged import), and weights that name bones the skeleton has, are
+    // finite, positive, sorted by bone id and sum to 1 for every vertex,
+    // known closest bones and failed bones the skeleton has, bone names for
+    // existing bones, non-empty and distinct, locked bones that exist. Every
+    // operation that changes a
     // part checks its result with it; so does every reader of untrusted data.
     std::vector<std::string> validate() const;
     // validate() plus what every modelling operation (merge, cut, bone edits)

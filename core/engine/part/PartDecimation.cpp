@@ -45,7 +45,7 @@ Mesh toCgal(const TriMesh& mesh) {
         if (out.add_face(vertices[static_cast<std::size_t>(f[0])],
                          vertices[static_cast<std::size_t>(f[1])],
                          vertices[static_cast<std::size_t>(f[2])]) == Mesh::null_face())
-            throw Error("the surface is not manifold, so it cannot be decimated");
+            throw Error(MessageId::DecimationNotManifold);
     return out;
 }
 
@@ -53,7 +53,7 @@ Mesh toCgal(const TriMesh& mesh) {
 
 Part decimatedPart(const Part& part, int faces) {
     if (faces < 4)
-        throw Error("decimating needs a target of at least 4 faces, not " + std::to_string(faces));
+        throw Error(MessageId::DecimationTooFewFaces, faces);
     if (part.mesh.faceCount() <= faces)
         return part;
     Mesh mesh = toCgal(part.mesh);

@@ -1,5 +1,6 @@
 #include "part/PartJson.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
@@ -17,7 +18,7 @@ namespace {
 // Skin weights of a vertex sum to 1 up to rounding (and float imports).
 constexpr double kWeightSumTolerance = 1e-6;
 
-json pairs(const std::vector<std::vector<std::pair<int, double>>>& lists) {
+json pairs(const std::vector<std::vector<std::pair<BoneId, double>>>& lists) {
     json out = json::array();
     for (const auto& list : lists) {
         json flat = json::array();
@@ -88,10 +89,10 @@ json partToJson(const Part& part) {
           {"bones", std::move(bones)},
           {"root", part.skeleton.root()}}},
         {"weights",
-         {{"perVertex", pairs(part.weights.perVertex)},
-          {"failedBones", part.weights.failedBones},
+         {{"byBoneId", pairs(part.weights.perVertex)},
+          {"failedBoneIds", part.weights.failedBones},
           {"warning", part.weights.warning}}},
-        {"knownClosestBones", pairs(part.knownClosestBones)},
+        {"knownClosestByBoneId", pairs(part.knownClosestBones)},
         {"boneNames", boneNamesJson(part.boneNames)},
     };
     // Written only when set, so parts nobody painted keep their bytes.
@@ -106,26 +107,44 @@ namespace {
 
 enum class PairValues { Weights, Distances };
 
-std::vector<std::vector<std::pair<int, double>>> readPairs(const json& list, std::size_t count,
-                                                           int indexLimit, PairValues values,
-                                                           const char* what) {
+// A bone by id, or (documents before bone ids, `byIndex`) by its position in
+// the skeleton's bone list, converted to its id here.
+BoneId readBone(const json& value, const Skeleton& skeleton, bool byIndex, const char* what) {
+    if (byIndex) {
+        const int index = integer<int>(value, what);
+        if (index < 0 || index >= skeleton.boneCount())
+            fail(std::string(what) + " refers to a missing bone");
+        return skeleton.bones()[index].id;
+    }
+    const auto bone = integer<BoneId>(value, what);
+    if (!skeleton.hasBone(bone))
+        fail(std::string(what) + " refers to bone " + std::to_string(bone) +
+             ", which the skeleton does not have");
+    return bone;
+}
+
+// Per vertex: [bone, value, bone, value, ...] (bones as readBone reads them).
+std::vector<std::vector<std::pair<BoneId, double>>> readPairs(const json& list, std::size_t count,
+                                                              const Skeleton& skeleton,
+                                                              bool byIndex, PairValues values,
+                                                              const char* what) {
     if (!list.is_array() || (list.size() != count && !list.empty()))
         fail(std::string(what) + " does not have one entry per vertex");
-    std::vector<std::vector<std::pair<int, double>>> out;
+    std::vector<std::vector<std::pair<BoneId, double>>> out;
     out.reserve(list.size());
     for (const json& flat : list) {
         if (!flat.is_array() || flat.size() % 2 != 0)
             fail(std::string(what) + " has a malformed entry");
         auto& entry = out.emplace_back();
         for (std::size_t i = 0; i < flat.size(); i += 2) {
-            const int index = integer<int>(flat[i], what);
-            if (index < 0 || index >= indexLimit)
-                fail(std::string(what) + " refers to a missing bone");
+            const BoneId bone = readBone(flat[i], skeleton, byIndex, what);
             const double value = number(flat[i + 1], what);
             if (value < 0)
                 fail(std::string(what) + " holds a negative value");
-            entry.emplace_back(index, value);
+            entry.emplace_back(bone, value);
         }
+        // Bone order is id order (positions and ids may differ in order).
+        std::sort(entry.begin(), entry.end());
         if (values == PairValues::Weights && !entry.empty()) {
             double sum = 0;
             for (const auto& pair : entry)
@@ -241,20 +260,21 @@ Part partFromJson(const json& object) {
 
     part->skeleton = readSkeleton(field(object, "skeleton"));
     const int boneCount = part->skeleton.boneCount();
+    // Documents written before skin weights were keyed by bone id (format
+    // version 1) name bones by their position in the bone list.
     const json& weights = field(object, "weights");
-    if (boneCount > 0 && static_cast<int>(array(weights, "perVertex").size()) != vertexCount)
+    const bool byIndex = !weights.contains("byBoneId");
+    const json& perVertex = array(weights, byIndex ? "perVertex" : "byBoneId");
+    if (boneCount > 0 && static_cast<int>(perVertex.size()) != vertexCount)
         fail("a rigged part needs skin weights for every vertex");
-    part->weights.perVertex = readPairs(array(weights, "perVertex"), vertexCount, boneCount,
+    part->weights.perVertex = readPairs(perVertex, vertexCount, part->skeleton, byIndex,
                                         PairValues::Weights, "skin weights");
-    for (const json& b : array(weights, "failedBones")) {
-        const int bone = integer<int>(b, "failed bone");
-        if (bone < 0 || bone >= boneCount)
-            fail("failed bones refer to a missing bone");
-        part->weights.failedBones.push_back(bone);
-    }
+    for (const json& b : array(weights, byIndex ? "failedBones" : "failedBoneIds"))
+        part->weights.failedBones.push_back(readBone(b, part->skeleton, byIndex, "failed bone"));
     part->weights.warning = text(field(weights, "warning"), "weights warning");
-    part->knownClosestBones = readPairs(array(object, "knownClosestBones"), vertexCount, boneCount,
-                                        PairValues::Distances, "known closest bones");
+    part->knownClosestBones = readPairs(
+        array(object, byIndex ? "knownClosestBones" : "knownClosestByBoneId"), vertexCount,
+        part->skeleton, byIndex, PairValues::Distances, "known closest bones");
     if (object.contains("boneNames"))  // since issue 18
         for (const json& entry : array(object, "boneNames")) {
             if (!entry.is_array() || entry.size() != 2)

@@ -9,7 +9,8 @@
 namespace rigmesh {
 namespace {
 
-using SparseWeights = std::map<int, double>;
+// One vertex's weights by bone id while they are summed.
+using SparseWeights = std::map<BoneId, double>;
 
 // One vertex of the next level: a weighted sum of this level's vertices.
 using Stencil = std::vector<std::pair<int, double>>;
@@ -100,8 +101,9 @@ Level loopRound(const TriMesh& mesh) {
 
 // Weights through the stencils: summed, tiny ones (below 1e-6) dropped, the
 // rest renormalised to 1.
-SkinWeights carriedWeights(const SkinWeights& weights, const std::vector<Stencil>& stencils) {
-    SkinWeights out;
+SkinWeightsById carriedWeights(const SkinWeightsById& weights,
+                               const std::vector<Stencil>& stencils) {
+    SkinWeightsById out;
     out.perVertex.reserve(stencils.size());
     for (const Stencil& stencil : stencils) {
         SparseWeights sum;
@@ -116,7 +118,7 @@ SkinWeights carriedWeights(const SkinWeights& weights, const std::vector<Stencil
                 total += it->second;
                 ++it;
             }
-        std::vector<std::pair<int, double>> list;
+        std::vector<std::pair<BoneId, double>> list;
         for (const auto& [bone, value] : sum)
             list.emplace_back(bone, value / total);
         out.perVertex.push_back(std::move(list));
@@ -130,15 +132,14 @@ SkinWeights carriedWeights(const SkinWeights& weights, const std::vector<Stencil
 
 Part subdividedPart(const Part& part, int levels) {
     if (levels < 0 || levels > 4)
-        throw Error("subdivision levels must be from 0 to 4, not " + std::to_string(levels));
+        throw Error(MessageId::SubdivisionLevelsOutOfRange, levels);
     Part out = part;
     const bool rigged = out.skeleton.boneCount() > 0;
     for (int level = 0; level < levels; ++level) {
         const std::size_t edges = 3 * out.mesh.faces.size() / 2;
         if (out.mesh.vertices.size() + edges > static_cast<std::size_t>(kMaxDetailVertices))
-            throw Error("subdividing '" + part.name + "' " + std::to_string(levels) +
-                        " times would give over " + std::to_string(kMaxDetailVertices) +
-                        " vertices; use fewer levels");
+            throw Error(MessageId::SubdivisionTooManyVertices, part.name, levels,
+                        kMaxDetailVertices);
         const Level next = loopRound(out.mesh);
         if (rigged)
             out.weights = carriedWeights(out.weights, next.stencils);

@@ -41,10 +41,11 @@ void checkMesh(const TriMesh& mesh, Problems& problems) {
     }
 }
 
-// A per-vertex list of (bone index, value) pairs: bones in range and
-// increasing, values finite and positive.
-void checkBoneLists(const std::vector<std::vector<std::pair<int, double>>>& lists, int vertexCount,
-                    int boneCount, const std::string& what, bool sumsToOne, Problems& problems) {
+// A per-vertex list of (bone id, value) pairs: bones the skeleton has, in
+// increasing id order, values finite and positive.
+void checkBoneLists(const std::vector<std::vector<std::pair<BoneId, double>>>& lists,
+                    int vertexCount, const Skeleton& skeleton, const std::string& what,
+                    bool sumsToOne, Problems& problems) {
     if (lists.empty())
         return;
     if (static_cast<int>(lists.size()) != vertexCount) {
@@ -55,13 +56,15 @@ void checkBoneLists(const std::vector<std::vector<std::pair<int, double>>>& list
     for (int v = 0; v < vertexCount && !problems.full(); ++v) {
         const std::string where = "The " + what + " of vertex " + std::to_string(v);
         double sum = 0.0;
-        int previous = -1;
+        bool first = true;
+        BoneId previous = 0;
         bool ok = true;
         for (const auto& [bone, value] : lists[v]) {
-            if (bone < 0 || bone >= boneCount) {
-                problems.add(where + " name bone " + std::to_string(bone) + ", which is missing.");
+            if (!skeleton.hasBone(bone)) {
+                problems.add(where + " name bone " + std::to_string(bone) +
+                             ", which the skeleton does not have.");
                 ok = false;
-            } else if (bone <= previous) {
+            } else if (!first && bone <= previous) {
                 problems.add(where + " are not in bone order.");
                 ok = false;
             } else if (!std::isfinite(value) || value < 0.0 || (sumsToOne && value == 0.0)) {
@@ -70,6 +73,7 @@ void checkBoneLists(const std::vector<std::vector<std::pair<int, double>>>& list
             }
             if (!ok)
                 break;
+            first = false;
             previous = bone;
             sum += value;
         }
@@ -106,7 +110,7 @@ std::vector<std::string> Part::validate() const {
         if (bones > 0 && static_cast<int>(weights.perVertex.size()) != n)
             problems.add("The skin weights do not have one entry per vertex.");
         else
-            checkBoneLists(weights.perVertex, n, bones, "skin weights", true, problems);
+            checkBoneLists(weights.perVertex, n, skeleton, "skin weights", true, problems);
     } else {
         // An unrigged part (a static import): no bones, no weights.
         if (bones > 0)
@@ -117,12 +121,12 @@ std::vector<std::string> Part::validate() const {
                 break;
             }
     }
-    for (int bone : weights.failedBones)
-        if (bone < 0 || bone >= bones) {
+    for (BoneId bone : weights.failedBones)
+        if (!skeleton.hasBone(bone)) {
             problems.add("The failed bones name a missing bone.");
             break;
         }
-    checkBoneLists(knownClosestBones, n, bones, "known closest bones", false, problems);
+    checkBoneLists(knownClosestBones, n, skeleton, "known closest bones", false, problems);
     std::set<std::string> names;
     for (const auto& [bone, name] : boneNames)
         if (!skeleton.hasBone(bone) || name.empty() || !names.insert(name).second) {

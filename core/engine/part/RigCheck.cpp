@@ -26,10 +26,10 @@ RigCheckReport checkRig(const Part& part, const RigCheckOptions& options) {
         if (!(std::abs(sum - 1.0) <= options.sumTolerance))
             report.verticesWithSumsOff.push_back(v);
     }
-    const std::vector<int> leading = leadingVertexCounts(part.weights, part.skeleton.boneCount());
-    for (int b = 0; b < part.skeleton.boneCount(); ++b)
-        if (leading[b] == 0)
-            report.bonesLeadingNoVertex.push_back(part.skeleton.bones()[b].id);
+    const std::map<BoneId, int> leading = leadingVertexCounts(part.weights.perVertex);
+    for (const Bone& bone : part.skeleton.bones())
+        if (!leading.contains(bone.id))
+            report.bonesLeadingNoVertex.push_back(bone.id);
     return report;
 }
 

@@ -7,6 +7,7 @@
 #include "base/Error.h"
 #include "mesh/MeshAdjacency.h"
 #include "part/WeightLists.h"
+#include "rig/LocalBoneHeat.h"
 
 namespace rigmesh {
 
@@ -17,14 +18,14 @@ namespace {
 // first), renormalised through the unlocked ones.
 template <typename Keep>
 int filterWeights(Part& part, const std::set<BoneId>& locked, Keep&& keep) {
-    const std::vector<char> lockedIndex = lockedBoneIndices(part.skeleton, locked);
+    const LockedBones lockedBones(part.skeleton, locked);
     int changed = 0;
     for (auto& list : part.weights.perVertex) {
         if (list.empty())
             continue;
         WeightList kept, unlocked;
         for (const auto& entry : list)
-            (lockedIndex[entry.first] ? kept : unlocked).push_back(entry);
+            (lockedBones.contains(entry.first) ? kept : unlocked).push_back(entry);
         std::stable_sort(unlocked.begin(), unlocked.end(),
                          [](const auto& a, const auto& b) { return a.second > b.second; });
         for (std::size_t i = 0; i < unlocked.size(); ++i)
@@ -36,7 +37,7 @@ int filterWeights(Part& part, const std::set<BoneId>& locked, Keep&& keep) {
             sum += entry.second;
         if (kept.size() == list.size() && std::abs(sum - 1.0) <= 1e-12)
             continue;  // already as asked: left bit for bit
-        if (!normaliseKeepingLocks(kept, lockedIndex))
+        if (!normaliseKeepingLocks(kept, lockedBones))
             continue;
         if (kept != list) {
             list = std::move(kept);
@@ -54,14 +55,14 @@ int normalizeAllWeights(Part& part, const std::set<BoneId>& locked) {
 
 int cleanWeights(Part& part, double threshold, const std::set<BoneId>& locked) {
     if (!(threshold >= 0.0) || !(threshold < 1.0))
-        throw Error("The clean threshold must be at least 0 and below 1.");
+        throw Error(MessageId::CleanThresholdOutOfRange);
     return filterWeights(part, locked,
                          [&](const auto& entry, std::size_t) { return entry.second >= threshold; });
 }
 
 int limitWeightInfluences(Part& part, int influences, const std::set<BoneId>& locked) {
     if (influences < 1)
-        throw Error("A vertex needs at least one influence.");
+        throw Error(MessageId::LimitNeedsOneInfluence);
     return filterWeights(part, locked, [&](const auto&, std::size_t keptSoFar) {
         return static_cast<int>(keptSoFar) < influences;
     });
@@ -70,8 +71,8 @@ int limitWeightInfluences(Part& part, int influences, const std::set<BoneId>& lo
 int smoothAllWeights(Part& part, const SmoothAllOptions& options, const std::set<BoneId>& locked) {
     if (!(options.factor >= 0.0) || !(options.factor <= 1.0) || options.iterations < 1 ||
         options.iterations > 100)
-        throw Error("Smooth All needs a factor from 0 to 1 and 1 to 100 passes.");
-    const std::vector<char> lockedIndex = lockedBoneIndices(part.skeleton, locked);
+        throw Error(MessageId::SmoothAllOutOfRange);
+    const LockedBones lockedBones(part.skeleton, locked);
     const std::vector<std::vector<int>> neighbours = vertexNeighbours(part.mesh);
     auto& weights = part.weights.perVertex;
     const std::vector<WeightList> original = weights;
@@ -81,11 +82,11 @@ int smoothAllWeights(Part& part, const SmoothAllOptions& options, const std::set
             const WeightList& own = previous[v];
             // Nothing to smooth where every bone is locked.
             if (std::all_of(own.begin(), own.end(),
-                            [&](const auto& entry) { return lockedIndex[entry.first]; }))
+                            [&](const auto& entry) { return lockedBones.contains(entry.first); }))
                 continue;
-            std::map<int, double> mixed;
+            std::map<BoneId, double> mixed;
             for (const auto& [b, w] : own)
-                mixed[b] = lockedIndex[b] ? w : (1.0 - options.factor) * w;
+                mixed[b] = lockedBones.contains(b) ? w : (1.0 - options.factor) * w;
             const double share =
                 neighbours[v].empty() ? 0.0 : options.factor / double(neighbours[v].size());
             if (neighbours[v].empty())
@@ -93,16 +94,40 @@ int smoothAllWeights(Part& part, const SmoothAllOptions& options, const std::set
                     mixed[b] = w;
             for (int n : neighbours[v])
                 for (const auto& [b, w] : previous[n])
-                    if (!lockedIndex[b])
+                    if (!lockedBones.contains(b))
                         mixed[b] += share * w;
             WeightList smoothed(mixed.begin(), mixed.end());
-            if (normaliseKeepingLocks(smoothed, lockedIndex))
+            if (normaliseKeepingLocks(smoothed, lockedBones))
                 weights[v] = std::move(smoothed);
         }
     }
     int changed = 0;
     for (std::size_t v = 0; v < weights.size(); ++v)
         changed += weights[v] != original[v];
+    return changed;
+}
+
+int recomputeWeights(Part& part, const std::set<BoneId>& locked) {
+    if (part.skeleton.boneCount() == 0)
+        throw Error("Only a part with a skeleton has weights to recompute.");
+    const LockedBones lockedBones(part.skeleton, locked);
+    const WeightsById fresh = recomputeWeightsGlobally(part.mesh, part.skeleton);
+    auto& weights = part.weights.perVertex;
+    int changed = 0;
+    for (std::size_t v = 0; v < weights.size() && v < fresh.size(); ++v) {
+        WeightList list;
+        for (const auto& entry : weights[v])
+            if (lockedBones.contains(entry.first))
+                list.push_back(entry);
+        for (const auto& entry : fresh[v])
+            if (!lockedBones.contains(entry.first))
+                list.push_back(entry);
+        std::sort(list.begin(), list.end());
+        if (!normaliseKeepingLocks(list, lockedBones) || list == weights[v])
+            continue;
+        weights[v] = std::move(list);
+        ++changed;
+    }
     return changed;
 }
 

@@ -33,4 +33,12 @@ struct SmoothAllOptions {
 int smoothAllWeights(Part& part, const SmoothAllOptions& options,
                      const std::set<BoneId>& locked = {});
 
+// Bone heat over the whole part again (paper 2.4, every vertex tested for
+// visibility; Blender's "Assign Automatic from Bones"), keeping locked
+// bones: each vertex takes the new weights of its unlocked bones, scaled
+// into what its locked ones leave; a vertex whose new weights fall on locked
+// bones only keeps its list. Returns how many vertices changed. Throws Error for a part without a
+// skeleton.
+int recomputeWeights(Part& part, const std::set<BoneId>& locked);
+
 }  // namespace rigmesh

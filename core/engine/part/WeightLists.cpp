@@ -4,32 +4,31 @@
 
 namespace rigmesh {
 
-double weightOfIndex(const WeightList& list, int bone) {
+double weightOfBone(const WeightList& list, BoneId bone) {
     for (const auto& [b, w] : list)
         if (b == bone)
             return w;
     return 0.0;
 }
 
-std::vector<char> lockedBoneIndices(const Skeleton& skeleton, const std::set<BoneId>& locked) {
-    std::vector<char> index(skeleton.boneCount(), 0);
+LockedBones::LockedBones(const Skeleton& skeleton, const std::set<BoneId>& locked)
+    : index_(skeleton), locked_(skeleton.boneCount(), 0) {
     for (BoneId id : locked)
         if (skeleton.hasBone(id))
-            index[skeleton.indexOfBone(id)] = 1;
-    return index;
+            locked_[skeleton.indexOfBone(id)] = 1;
 }
 
-bool setWeightKeepingLocks(WeightList& list, int bone, double target,
-                           const std::vector<char>& lockedIndex) {
+bool setWeightKeepingLocks(WeightList& list, BoneId bone, double target,
+                           const LockedBones& locked) {
     double lockedSum = 0.0, freeSum = 0.0;
     for (const auto& [b, w] : list) {
         if (b == bone)
             continue;
-        (lockedIndex[b] ? lockedSum : freeSum) += w;
+        (locked.contains(b) ? lockedSum : freeSum) += w;
     }
     target = std::clamp(target, 0.0, std::max(0.0, 1.0 - lockedSum));
     const double freeTarget = 1.0 - lockedSum - target;
-    if (freeSum <= 0.0 && (freeTarget > kDroppedWeight || target == weightOfIndex(list, bone)))
+    if (freeSum <= 0.0 && (freeTarget > kDroppedWeight || target == weightOfBone(list, bone)))
         return false;  // nothing unlocked to hand the rest to, or to take it from
     // The list stays sorted by bone: scale in place, then put `bone` where
     // it belongs (no allocation unless the bone is new to the vertex).
@@ -38,7 +37,7 @@ bool setWeightKeepingLocks(WeightList& list, int bone, double target,
         if (b == bone) {
             w = target;
             placed = true;
-        } else if (!lockedIndex[b]) {
+        } else if (!locked.contains(b)) {
             w = freeSum > 0.0 ? w * freeTarget / freeSum : 0.0;
         }
     }
@@ -47,23 +46,24 @@ bool setWeightKeepingLocks(WeightList& list, int bone, double target,
                     {bone, target});
     // By construction the weights sum to 1 up to rounding; locked ones stay.
     std::erase_if(list, [&](const auto& entry) {
-        return !(entry.second > kDroppedWeight || (lockedIndex[entry.first] && entry.second > 0.0));
+        return !(entry.second > kDroppedWeight ||
+                 (locked.contains(entry.first) && entry.second > 0.0));
     });
     return true;
 }
 
-bool normaliseKeepingLocks(WeightList& list, const std::vector<char>& lockedIndex) {
+bool normaliseKeepingLocks(WeightList& list, const LockedBones& locked) {
     double lockedSum = 0.0, freeSum = 0.0;
     for (const auto& [b, w] : list)
-        (lockedIndex[b] ? lockedSum : freeSum) += w;
+        (locked.contains(b) ? lockedSum : freeSum) += w;
     const double room = std::max(0.0, 1.0 - lockedSum);
     if (freeSum <= 0.0)
         return room <= kDroppedWeight;  // only locked weights: nothing to rescale
     WeightList out;
     out.reserve(list.size());
     for (const auto& [b, w] : list) {
-        const double scaled = lockedIndex[b] ? w : w * room / freeSum;
-        if (scaled > kDroppedWeight || (lockedIndex[b] && scaled > 0.0))
+        const double scaled = locked.contains(b) ? w : w * room / freeSum;
+        if (scaled > kDroppedWeight || (locked.contains(b) && scaled > 0.0))
             out.emplace_back(b, scaled);
     }
     if (out.empty())

@@ -44,21 +44,17 @@ namespace {
 
 void checkDab(const Part& part, const WeightDab& dab) {
     if (!part.skeleton.hasBone(dab.bone))
-        throw Error("The part has no bone " + std::to_string(dab.bone) + " to paint.");
+        throw Error(MessageId::PaintNoSuchBone, dab.bone);
     if (dab.locked.contains(dab.bone))
-        throw Error("Bone " + std::to_string(dab.bone) + " is locked; unlock it to paint it.");
+        throw Error(MessageId::PaintBoneLocked, dab.bone);
     if (!(dab.radius > 0.0) || !std::isfinite(dab.radius) || !(dab.strength >= 0.0) ||
         !(dab.strength <= 1.0) || !(dab.value >= 0.0) || !(dab.value <= 1.0) ||
         !dab.centre.allFinite())
-        throw Error(
-            "A brush needs a finite centre, a positive radius, and a strength and value "
-            "between 0 and 1.");
+        throw Error(MessageId::PaintBrushInvalid);
     if (dab.towardsViewer && (!dab.towardsViewer->allFinite() || dab.towardsViewer->norm() == 0.0))
-        throw Error("Front faces only needs a finite, non-zero view direction.");
+        throw Error(MessageId::PaintViewDirectionInvalid);
     if (dab.mirror && part.mirror.size() != part.mesh.vertices.size())
-        throw Error(
-            "This part is not mirror symmetric any more (merged or cut), so X-mirror "
-            "cannot paint it.");
+        throw Error(MessageId::PaintMirrorAsymmetric);
 }
 
 }  // namespace
@@ -68,8 +64,8 @@ DabResult WeightPainter::paint(Part& part, const WeightDab& dab) {
         throw Error("The weight painter was made for another mesh.");
     checkDab(part, dab);
     const Skeleton& skeleton = part.skeleton;
-    const int bone = skeleton.indexOfBone(dab.bone);
-    const std::vector<char> lockedIndex = lockedBoneIndices(skeleton, dab.locked);
+    const BoneId bone = dab.bone;
+    const LockedBones locked(skeleton, dab.locked);
 
     // The vertices under the brush (and under its reflection through the
     // sketch plane z = 0) with their strength.
@@ -103,7 +99,7 @@ DabResult WeightPainter::paint(Part& part, const WeightDab& dab) {
     std::vector<std::pair<int, double>> targets;
     targets.reserve(influence.size());
     for (const auto& [v, f] : influence) {
-        const double w = weightOfIndex(weights[v], bone);
+        const double w = weightOfBone(weights[v], bone);
         double target = w;
         switch (dab.mode) {
             case BrushMode::Add:
@@ -119,7 +115,7 @@ DabResult WeightPainter::paint(Part& part, const WeightDab& dab) {
                 const std::vector<int>& around = neighbours()[v];
                 double mean = 0.0;
                 for (int n : around)
-                    mean += weightOfIndex(weights[n], bone);
+                    mean += weightOfBone(weights[n], bone);
                 mean /= static_cast<double>(std::max<std::size_t>(around.size(), 1));
                 target = w + f * (mean - w);
                 break;
@@ -132,8 +128,8 @@ DabResult WeightPainter::paint(Part& part, const WeightDab& dab) {
 
     DabResult result;
     for (const auto& [v, target] : targets) {
-        std::vector<std::pair<int, double>> updated = weights[v];
-        if (!setWeightKeepingLocks(updated, bone, target, lockedIndex)) {
+        WeightList updated = weights[v];
+        if (!setWeightKeepingLocks(updated, bone, target, locked)) {
             ++result.skippedLocked;
             continue;
         }

@@ -141,10 +141,12 @@ SketchToPartResult sketchToPart(const std::vector<Vec2>& stroke, const std::stri
     part.skeleton = result.skeleton.skeleton;
 
     start = std::chrono::steady_clock::now();
-    part.knownClosestBones = closestBonesFromConstruction(
+    // The solver works by bone position; the part keeps bone ids.
+    const ClosestBones closest = closestBonesFromConstruction(
         result.surface.surface, result.surface.cylinders, result.skeleton);
-    part.weights = computeBoneHeatWeights(part.mesh, part.boneSegments(), part.knownClosestBones,
-                                          options.weights);
+    part.weights = weightsById(part.skeleton, computeBoneHeatWeights(part.mesh, part.boneSegments(),
+                                                                     closest, options.weights));
+    part.knownClosestBones = closestById(part.skeleton, closest);
     result.weightsMilliseconds = millisecondsSince(start);
     result.totalMilliseconds = result.surface.milliseconds.total + result.skeletonMilliseconds +
                                result.weightsMilliseconds;

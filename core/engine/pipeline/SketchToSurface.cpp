@@ -40,7 +40,8 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     result.polygon = cleanStroke(toLocal(frame, stroke), cleanOptions);
     SurfaceOptions surfaceOptions = options.surface;
     if (!(std::isfinite(surfaceOptions.targetEdgeLength) && surfaceOptions.targetEdgeLength >= 0))
-        throw Error("the target edge length must be 0 (automatic) or a positive length");
+        throw Error(MessageId::EdgeLengthNotPositive);
+
     surfaceOptions.targetEdgeLength = surfaceOptions.targetEdgeLength > 0
                                           ? surfaceOptions.targetEdgeLength / frame.scale
                                           : result.polygon.spacing;

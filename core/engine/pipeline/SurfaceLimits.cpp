@@ -72,21 +72,17 @@ void checkOutlineScale(const LocalFrame& frame, const CleanPolygon& localOutline
     const Eigen::AlignedBox2d box = boxOf(localOutline.points);
     const double size = box.diagonal().norm() * frame.scale;
     if (!(size >= kMinOutlineSize && size <= kMaxOutlineSize))
-        throw Error("the sketch is " + shortNumber(size) + " across; sizes from " +
-                    shortNumber(kMinOutlineSize) + " to " + shortNumber(kMaxOutlineSize) +
-                    " are supported");
+        throw Error(MessageId::SketchSizeOutOfRange, shortNumber(size),
+                    shortNumber(kMinOutlineSize), shortNumber(kMaxOutlineSize));
     const double farthest = std::max({std::abs(frame.centre.x()), std::abs(frame.centre.y())}) +
                             box.sizes().maxCoeff() * frame.scale;
     const double rounding = farthest * std::numeric_limits<double>::epsilon();
     const double finestEdge = spacing * frame.scale;
     if (!(farthest <= kMaxOutlineSize) || rounding > kCoordinateResolution * finestEdge)
-        throw Error("the sketch lies too far from the origin for its size: near " +
-                    shortNumber(farthest) + " doubles are " + shortNumber(rounding) +
-                    " apart, more than a millionth of its edges (" + shortNumber(finestEdge) +
-                    "); move it within " +
+        throw Error(MessageId::SketchTooFarFromOrigin, shortNumber(farthest), shortNumber(rounding),
+                    shortNumber(finestEdge),
                     shortNumber(kCoordinateResolution * finestEdge /
-                                std::numeric_limits<double>::epsilon()) +
-                    " of the origin");
+                                std::numeric_limits<double>::epsilon()));
 }
 
 void checkEdgeLengthBudget(const LocalFrame& frame, const CleanPolygon& localOutline,
@@ -96,11 +92,9 @@ void checkEdgeLengthBudget(const LocalFrame& frame, const CleanPolygon& localOut
     const double vertices = estimatedVertices(area, outlineLength, edgeLength);
     if (vertices <= kMaxSurfaceVertices)
         return;
-    throw Error("the edge length " + shortNumber(edgeLength * frame.scale) +
-                " is too small for this sketch: it would give about " + shortNumber(vertices) +
-                " vertices, more than the " + shortNumber(kMaxSurfaceVertices) +
-                " allowed; use 0 (automatic: " + shortNumber(localOutline.spacing * frame.scale) +
-                ") or an edge length of at least " +
+    throw Error(MessageId::EdgeLengthTooSmall, shortNumber(edgeLength * frame.scale),
+                shortNumber(vertices), shortNumber(kMaxSurfaceVertices),
+                shortNumber(localOutline.spacing * frame.scale),
                 shortNumber(kEdgeLengthMargin *
                             edgeLengthFor(kMaxSurfaceVertices, area, outlineLength) * frame.scale));
 }
@@ -108,14 +102,10 @@ void checkEdgeLengthBudget(const LocalFrame& frame, const CleanPolygon& localOut
 void checkBuiltMesh(const TriMesh& mesh) {
     for (const Vec3& v : mesh.vertices)
         if (!v.allFinite())
-            throw Error(
-                "the surface has a vertex with a non-finite coordinate; the sketch's "
-                "numbers are beyond what double precision can build");
+            throw Error(MessageId::SurfaceNotFinite);
     const int degenerate = countDegenerateFaces(mesh);
     if (degenerate > 0)
-        throw Error("the surface has " + std::to_string(degenerate) +
-                    " degenerate faces; double precision cannot build this sketch at its "
-                    "position and size");
+        throw Error(MessageId::SurfaceDegenerateFaces, degenerate);
 }
 
 }  // namespace rigmesh

@@ -76,7 +76,7 @@ std::map<double, Pose>::const_iterator Clip::find(double time) const {
 void Clip::setKey(double time, const Pose& pose) {
     checkKeyTime(time, "key");
     if (!pose.isFinite())
-        throw Error("A key's pose must have finite, non-zero rotations and a finite translation.");
+        throw Error(MessageId::KeyPoseInvalid);
     const auto existing = find(time);
     if (existing != keys_.end())
         keys_.erase(existing);
@@ -86,14 +86,14 @@ void Clip::setKey(double time, const Pose& pose) {
 void Clip::insertExactKey(double time, const Pose& pose) {
     checkKeyTime(time, "key");
     if (!pose.isFinite())
-        throw Error("A key's pose must have finite, non-zero rotations and a finite translation.");
+        throw Error(MessageId::KeyPoseInvalid);
     if (!keys_.emplace(time, pose).second)
-        throw Error("There is already a key at exactly " + std::to_string(time) + " s.");
+        throw Error(MessageId::KeyAlreadyAt, std::to_string(time));
 }
 
 void Clip::eraseExactKey(double time) {
     if (keys_.erase(time) == 0)
-        throw Error("There is no key at exactly " + std::to_string(time) + " s.");
+        throw Error(MessageId::NoKeyExactlyAt, std::to_string(time));
 }
 
 void Clip::moveKey(double from, double to) {
@@ -101,7 +101,7 @@ void Clip::moveKey(double from, double to) {
     checkKeyTime(to, "target");
     const auto it = find(from);
     if (it == keys_.end())
-        throw Error("There is no key at " + std::to_string(from) + " s to move.");
+        throw Error(MessageId::NoKeyToMove, std::to_string(from));
     const Pose pose = it->second;
     keys_.erase(it);
     setKey(to, pose);
@@ -111,7 +111,7 @@ void Clip::removeKey(double time) {
     checkTime(time, "key");
     const auto it = find(time);
     if (it == keys_.end())
-        throw Error("There is no key at " + std::to_string(time) + " s to delete.");
+        throw Error(MessageId::NoKeyToDelete, std::to_string(time));
     keys_.erase(it);
 }
 
@@ -127,7 +127,7 @@ double Clip::keyTime(double time) const {
     checkTime(time, "key");
     const auto it = find(time);
     if (it == keys_.end())
-        throw Error("There is no key at " + std::to_string(time) + " s.");
+        throw Error(MessageId::NoKeyAt, std::to_string(time));
     return it->first;
 }
 
@@ -141,7 +141,7 @@ std::vector<double> Clip::keyTimes() const {
 
 double Clip::duration() const {
     if (keys_.empty())
-        throw Error("The clip has no keys.");
+        throw Error(MessageId::ClipHasNoKeys);
     return keys_.rbegin()->first - keys_.begin()->first;
 }
 
@@ -162,7 +162,8 @@ double Clip::wrap(double time) const {
 
 Pose Clip::evaluate(double time) const {
     if (keys_.empty())
-        throw Error("Cannot play a clip without keys.");
+        throw Error(MessageId::ClipPlayedWithoutKeys);
+
     checkTime(time, "playback");
     const double t = wrap(time);
     const auto exact = keys_.find(t);

@@ -12,8 +12,7 @@ Eigen::Quaterniond checkedRotation(const Pose& pose, JointId joint) {
     const Eigen::Quaterniond q = pose.rotation(joint);
     const double norm2 = q.coeffs().squaredNorm();
     if (!q.coeffs().allFinite() || norm2 == 0.0)
-        throw Error("The pose gives joint " + std::to_string(joint) +
-                    " a rotation that is not a finite, non-zero quaternion.");
+        throw Error(MessageId::PoseRotationInvalid, joint);
     // Already-unit quaternions (the identity in particular) stay untouched.
     return norm2 == 1.0 ? q : q.normalized();
 }
@@ -22,7 +21,8 @@ Eigen::Quaterniond checkedRotation(const Pose& pose, JointId joint) {
 
 PosedSkeleton forwardKinematics(const PoseHierarchy& h, const Pose& pose) {
     if (!pose.rootTranslation.allFinite())
-        throw Error("The pose's root translation is not finite.");
+        throw Error(MessageId::PoseTranslationNotFinite);
+
     PosedSkeleton posed;
     posed.jointTransforms.assign(h.jointCount(), RigidTransform::identity());
     posed.jointPositions.resize(h.jointCount());

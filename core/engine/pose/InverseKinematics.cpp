@@ -161,7 +161,8 @@ Vec3 softenedTarget(const Vec3& base, const Vec3& target, double length, double 
 IkResult dragJoint(const PoseHierarchy& h, const Pose& pose, JointId joint, const Vec3& target,
                    const std::vector<JointId>& pinned, const IkOptions& options) {
     if (!target.allFinite())
-        throw Error("The IK target is not a finite point.");
+        throw Error(MessageId::IkTargetNotFinite);
+
     if (options.maxIterations < 0 || !(options.tolerance >= 0) ||
         !(options.softReach >= 0 && options.softReach < 1))
         throw Error(

@@ -9,9 +9,9 @@ namespace rigmesh {
 PoseHierarchy::PoseHierarchy(const Skeleton& skeleton) {
     const int n = skeleton.jointCount();
     if (n == 0)
-        throw Error("Cannot pose a skeleton without joints.");
+        throw Error(MessageId::PoseNeedsJoints);
     if (!skeleton.hasJoint(skeleton.root()))
-        throw Error("Cannot pose a skeleton without a valid root joint.");
+        throw Error(MessageId::PoseNeedsRoot);
     jointIds_.reserve(n);
     restPositions_.reserve(n);
     for (int j = 0; j < n; ++j) {
@@ -74,7 +74,8 @@ PoseHierarchy::PoseHierarchy(const Skeleton& skeleton) {
 int PoseHierarchy::indexOf(JointId id) const {
     const auto it = index_.find(id);
     if (it == index_.end())
-        throw Error("The skeleton has no joint " + std::to_string(id) + ".");
+        throw Error(MessageId::SkeletonHasNoJoint, id);
+
     return it->second;
 }
 

@@ -12,7 +12,9 @@ namespace rigmesh {
 
 namespace {
 
-using Influences = std::vector<std::pair<int, double>>;
+// A vertex's weights by slot of the transforms (the bone ids themselves,
+// but for ids far beyond the bone count).
+using Influences = std::vector<std::pair<BoneId, double>>;
 
 bool allIdentity(const Influences& influences, const SkinningTransforms& t) {
     for (const auto& [bone, weight] : influences) {
@@ -78,48 +80,63 @@ void dualQuaternionBlend(const Influences& influences, const SkinningTransforms&
 
 }  // namespace
 
-SkinningTransforms::SkinningTransforms(const std::vector<RigidTransform>& boneTransforms) {
-    const std::size_t b = boneTransforms.size();
-    matrices_.reserve(b);
-    translations_.reserve(b);
-    real_.reserve(b);
-    dual_.reserve(b);
-    identity_.reserve(b);
-    for (const RigidTransform& transform : boneTransforms) {
+SkinningTransforms::SkinningTransforms(const Skeleton& skeleton,
+                                       const std::vector<RigidTransform>& boneTransforms)
+    : positions_(skeleton), slotsAreIds_(positions_.coversAllInArray()) {
+    if (static_cast<int>(boneTransforms.size()) != skeleton.boneCount())
+        throw Error(
+            "Skinning needs one transform per bone: " + std::to_string(boneTransforms.size()) +
+            " for " + std::to_string(skeleton.boneCount()) + " bones.");
+    const std::size_t slots = slotsAreIds_ ? positions_.arraySize() : boneTransforms.size();
+    matrices_.assign(slots, Eigen::Matrix3d::Identity());
+    translations_.assign(slots, Vec3::Zero());
+    real_.assign(slots, Eigen::Vector4d(0, 0, 0, 1));
+    dual_.assign(slots, Eigen::Vector4d::Zero());
+    identity_.assign(slots, 1);  // slots of ids the skeleton lacks: never read
+    for (int b = 0; b < skeleton.boneCount(); ++b) {
+        const std::size_t slot = slotOf(skeleton.bones()[b].id);
+        const RigidTransform& transform = boneTransforms[b];
         const Eigen::Quaterniond q = transform.rotation.normalized();
         const Vec3& tr = transform.translation;
-        matrices_.push_back(q.toRotationMatrix());
-        translations_.push_back(tr);
-        real_.push_back(q.coeffs());
+        matrices_[slot] = q.toRotationMatrix();
+        translations_[slot] = tr;
+        real_[slot] = q.coeffs();
         // Dual part 0.5 * (0, t) * q (Kavan et al. 2008, section 2).
         const Vec3 dv = 0.5 * (q.w() * tr + tr.cross(q.vec()));
         const double dw = -0.5 * tr.dot(q.vec());
-        dual_.push_back(Eigen::Vector4d(dv.x(), dv.y(), dv.z(), dw));
-        identity_.push_back(transform.isIdentity() ? 1 : 0);
+        dual_[slot] = Eigen::Vector4d(dv.x(), dv.y(), dv.z(), dw);
+        identity_[slot] = transform.isIdentity() ? 1 : 0;
     }
 }
 
 SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
-                             const std::vector<Vec3>& restNormals, const SkinWeights& weights,
+                             const std::vector<Vec3>& restNormals, const WeightsById& weights,
                              const SkinningTransforms& transforms, const SkinningOptions& options) {
     const int count = static_cast<int>(restPositions.size());
-    if (static_cast<int>(weights.perVertex.size()) != count)
-        throw Error("Skinning needs one weight list per vertex: " +
-                    std::to_string(weights.perVertex.size()) + " lists for " +
-                    std::to_string(count) + " vertices.");
+    if (static_cast<int>(weights.size()) != count)
+        throw Error("Skinning needs one weight list per vertex: " + std::to_string(weights.size()) +
+                    " lists for " + std::to_string(count) + " vertices.");
     const bool withNormals = !restNormals.empty();
     if (withNormals && static_cast<int>(restNormals.size()) != count)
         throw Error("Skinning needs one rest normal per vertex or none.");
     if (options.threads < 1)
         throw Error("Skinning needs at least one thread.");
-    for (const Influences& influences : weights.perVertex) {
+    for (const auto& influences : weights) {
         for (const auto& [bone, weight] : influences) {
-            if (bone < 0 || bone >= transforms.boneCount())
-                throw Error("A skin weight refers to bone index " + std::to_string(bone) +
-                            " but the pose has " + std::to_string(transforms.boneCount()) +
-                            " bones.");
+            if (!transforms.hasBone(bone))
+                throw Error("A skin weight refers to bone " + std::to_string(bone) +
+                            ", which the posed skeleton does not have.");
         }
     }
+    // Ids far beyond the bone count: weights moved onto the slots once.
+    WeightsById bySlot;
+    if (!transforms.slotsAreIds()) {
+        bySlot = weights;
+        for (auto& influences : bySlot)
+            for (auto& [bone, weight] : influences)
+                bone = static_cast<BoneId>(transforms.slotOf(bone));
+    }
+    const WeightsById& slotted = transforms.slotsAreIds() ? weights : bySlot;
 
     SkinnedVertices out;
     out.positions.resize(count);
@@ -129,7 +146,7 @@ SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
 
     const auto run = [&](int begin, int end) {
         for (int v = begin; v < end; ++v) {
-            const Influences& influences = weights.perVertex[v];
+            const Influences& influences = slotted[v];
             const Vec3* n = withNormals ? &restNormals[v] : nullptr;
             Vec3* nOut = withNormals ? &out.normals[v] : nullptr;
             if (influences.empty() || allIdentity(influences, transforms)) {
@@ -154,8 +171,8 @@ SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
 PosedMesh posePart(const Part& part, const Pose& pose, const SkinningOptions& options) {
     const PosedSkeleton posed = forwardKinematics(part.skeleton, pose);
     SkinnedVertices skinned =
-        skinVertices(part.mesh.vertices, vertexNormals(part.mesh), part.weights,
-                     SkinningTransforms(posed.boneTransforms), options);
+        skinVertices(part.mesh.vertices, vertexNormals(part.mesh), part.weights.perVertex,
+                     SkinningTransforms(part.skeleton, posed.boneTransforms), options);
     PosedMesh result;
     result.mesh.faces = part.mesh.faces;
     result.mesh.vertices = std::move(skinned.positions);

@@ -1,7 +1,7 @@
 // Skinning a part's surface to a pose (paper section 3: posed parts deform
 // with dual-quaternion skinning [Kavan et al. 2008]). Both methods read the
-// same sparse weights (SkinWeights::perVertex, bone index = position in
-// skeleton.bones()):
+// part's sparse weights keyed by bone id (Part::weights.perVertex); the
+// per-bone data is found through a dense id -> position table:
 //   - linear blend skinning (LBS): x' = sum_b w_b (R_b x + t_b), normals by
 //     the blended matrix sum_b w_b R_b, renormalised;
 //   - dual quaternion skinning (DQS, Kavan et al. 2008): the unit dual
@@ -37,20 +37,33 @@ struct SkinningOptions {
     int threads = 2;                                         // >= 1; capped by the vertex count
 };
 
-// Per-bone data derived once per pose from the bone transforms.
+// Per-bone data derived once per pose from the bone transforms, stored in
+// slots: at the bone's id (so skinning reads weights keyed by id with no
+// lookup), or, for ids far beyond the bone count (a hand-edited file), at its
+// position in skeleton.bones().
 class SkinningTransforms {
   public:
-    explicit SkinningTransforms(const std::vector<RigidTransform>& boneTransforms);
+    // `boneTransforms` in skeleton.bones() order (FK's PosedSkeleton). Throws
+    // Error if their number differs from the skeleton's bones.
+    SkinningTransforms(const Skeleton& skeleton, const std::vector<RigidTransform>& boneTransforms);
 
-    int boneCount() const { return static_cast<int>(identity_.size()); }
-    const Eigen::Matrix3d& rotationMatrix(int bone) const { return matrices_[bone]; }
-    const Vec3& translation(int bone) const { return translations_[bone]; }
+    bool hasBone(BoneId id) const { return positions_[id] >= 0; }
+    // Whether slots are bone ids; else slotOf() maps them.
+    bool slotsAreIds() const { return slotsAreIds_; }
+    // The slot of a bone the skeleton has.
+    std::size_t slotOf(BoneId id) const {
+        return slotsAreIds_ ? id : static_cast<std::size_t>(positions_[id]);
+    }
+    const Eigen::Matrix3d& rotationMatrix(std::size_t slot) const { return matrices_[slot]; }
+    const Vec3& translation(std::size_t slot) const { return translations_[slot]; }
     // The unit dual quaternion (real, dual) as (x, y, z, w) coefficients.
-    const Eigen::Vector4d& dualQuaternionReal(int bone) const { return real_[bone]; }
-    const Eigen::Vector4d& dualQuaternionDual(int bone) const { return dual_[bone]; }
-    bool isIdentity(int bone) const { return identity_[bone] != 0; }
+    const Eigen::Vector4d& dualQuaternionReal(std::size_t slot) const { return real_[slot]; }
+    const Eigen::Vector4d& dualQuaternionDual(std::size_t slot) const { return dual_[slot]; }
+    bool isIdentity(std::size_t slot) const { return identity_[slot] != 0; }
 
   private:
+    BoneIndexTable positions_;
+    bool slotsAreIds_ = true;
     std::vector<Eigen::Matrix3d> matrices_;
     std::vector<Vec3> translations_;
     std::vector<Eigen::Vector4d> real_, dual_;
@@ -62,11 +75,12 @@ struct SkinnedVertices {
     std::vector<Vec3> normals;  // empty when no rest normals were given
 };
 
-// Throws Error if the weights do not have one list per rest position, refer
-// to a bone the transforms do not have, or `restNormals` is neither empty
-// nor one per position, or options.threads < 1.
+// `weights`: per rest position, (bone id, weight). Throws Error if the
+// weights do not have one list per rest position, refer to a bone the
+// transforms' skeleton does not have, or `restNormals` is neither empty nor
+// one per position, or options.threads < 1.
 SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
-                             const std::vector<Vec3>& restNormals, const SkinWeights& weights,
+                             const std::vector<Vec3>& restNormals, const WeightsById& weights,
                              const SkinningTransforms& transforms,
                              const SkinningOptions& options = {});
 

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Geometry>  // cross(): declared in Core, defined here
+
 #include "base/Types.h"
 #include "rig/BoneHeatSolver.h"
 

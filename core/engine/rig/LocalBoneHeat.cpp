@@ -233,7 +233,7 @@ LocalBoneHeatResult recomputeWeightsLocally(const TriMesh& mesh, const Skeleton&
     matrix.setFromTriplets(system.unknownPart.begin(), system.unknownPart.end());
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(matrix);
     if (solver.info() != Eigen::Success)
-        throw Error("The local skin weights could not be solved; use the global re-computation.");
+        throw Error(MessageId::LocalWeightsUnsolved);
 
     const int boneTotal = static_cast<int>(result.bones.size());
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, boneTotal);
@@ -250,7 +250,7 @@ LocalBoneHeatResult recomputeWeightsLocally(const TriMesh& mesh, const Skeleton&
     }
     const Eigen::MatrixXd solution = solver.solve(rhs);
     if (solver.info() != Eigen::Success || !solution.allFinite())
-        throw Error("The local skin weights could not be solved; use the global re-computation.");
+        throw Error(MessageId::LocalWeightsUnsolved);
 
     for (int u = 0; u < m; ++u) {
         const int v = unknowns[u];
@@ -280,7 +280,7 @@ WeightsById recomputeWeightsGlobally(const TriMesh& mesh, const Skeleton& skelet
     for (const Bone& bone : skeleton.bones())
         segments.push_back(
             {skeleton.joint(bone.head).position, skeleton.joint(bone.tail).position});
-    return weightsById(skeleton, computeBoneHeatWeights(mesh, segments, {}, options));
+    return weightsById(skeleton, computeBoneHeatWeights(mesh, segments, {}, options)).perVertex;
 }
 
 }  // namespace rigmesh

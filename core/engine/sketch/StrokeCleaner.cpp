@@ -63,10 +63,7 @@ Normalization normalizationOf(const std::vector<Vec2>& raw) {
 void checkFinite(const std::vector<Vec2>& raw) {
     for (std::size_t i = 0; i < raw.size(); ++i) {
         if (!raw[i].allFinite()) {
-            throw Error("Point " + std::to_string(i) + " of the stroke (counting from 0) is " +
-                        formatPoint(raw[i]) +
-                        ", which is not a finite number: the sketch data is corrupt. Redraw the "
-                        "stroke.");
+            throw Error(MessageId::StrokeNotFinite, i, formatPoint(raw[i]));
         }
     }
 }
@@ -88,18 +85,13 @@ Polyline2 withoutRepeats(const Polyline2& points, double tolerance) {
 
 void checkEnoughPoints(std::size_t rawCount, std::size_t distinct) {
     if (distinct < 3) {
-        throw Error("The stroke has only " + std::to_string(distinct) + " distinct point" +
-                    (distinct == 1 ? "" : "s") +
-                    "; a silhouette needs at least 3 points that enclose an area. Draw a closed "
-                    "outline.");
+        if (distinct == 1)
+            throw Error(MessageId::StrokeOneDistinctPoint);
+        throw Error(MessageId::StrokeTooFewDistinctPoints, distinct);
     }
     const std::size_t repeated = rawCount - distinct;
     if (distinct <= kFewDistinctPoints && repeated >= distinct) {
-        throw Error("The stroke has " + std::to_string(rawCount) + " points but only " +
-                    std::to_string(distinct) + " distinct positions; the other " +
-                    std::to_string(repeated) +
-                    " repeat the same positions, which is too little to describe a silhouette. "
-                    "Draw the outline as one continuous stroke.");
+        throw Error(MessageId::StrokeRepeatsPositions, rawCount, distinct, repeated);
     }
 }
 
@@ -207,11 +199,7 @@ double unitSpacing(const StrokeCleanOptions& options, const Normalization& unit,
 std::size_t sampleCount(double length, double spacing) {
     const double count = std::round(length / spacing);
     if (!(count <= static_cast<double>(kMaxSamples))) {
-        throw Error(
-            "The stroke is too long for its size: at the requested spacing its outline "
-            "would need more than " +
-            std::to_string(kMaxSamples) +
-            " points. Draw a simpler outline or use a larger spacing.");
+        throw Error(MessageId::StrokeTooLong, kMaxSamples);
     }
     return std::max(kMinSamples, static_cast<std::size_t>(count));
 }
@@ -239,9 +227,7 @@ CleanPolygon cleanStroke(const std::vector<Vec2>& raw, const StrokeCleanOptions&
     stroke = withoutRepeats(stroke, kDuplicateTolerance * diagonal);
     checkEnoughPoints(raw.size(), stroke.size());
     if (convexHullArea(stroke) < kMinRelativeArea * diagonal * diagonal) {
-        throw Error(
-            "All points of the stroke lie on (nearly) one straight line, so it encloses "
-            "no area. Draw a closed silhouette.");
+        throw Error(MessageId::StrokeOnALine);
     }
 
     // Bound the work before anything costlier than linear time.
@@ -274,15 +260,12 @@ CleanPolygon cleanStroke(const std::vector<Vec2>& raw, const StrokeCleanOptions&
         sampling = sampleOutline(stroke, sampleCount(length, finer), options);
     }
     if (sampling.crossing) {
-        throw Error("The stroke crosses itself near " +
-                    formatPoint(unit.fromUnit(*sampling.crossing), 1e-9 * unit.scale) +
-                    ": draw a silhouette that does not cross itself.");
+        throw Error(MessageId::StrokeCrossesItselfNear,
+                    formatPoint(unit.fromUnit(*sampling.crossing), 1e-9 * unit.scale));
     }
     const Polyline2& polygon = sampling.polygon;
     if (std::abs(signedArea(polygon)) < kMinRelativeArea * closedDiagonal * closedDiagonal) {
-        throw Error(
-            "The stroke encloses almost no area (it runs back along itself). Draw a "
-            "silhouette with some width.");
+        throw Error(MessageId::StrokeNoWidth);
     }
 
     CleanPolygon result;
@@ -290,9 +273,7 @@ CleanPolygon cleanStroke(const std::vector<Vec2>& raw, const StrokeCleanOptions&
     for (const Vec2& p : polygon) {
         result.points.push_back(unit.fromUnit(p));
         if (!result.points.back().allFinite()) {
-            throw Error(
-                "The stroke's coordinates are too large to process; scale the sketch "
-                "down.");
+            throw Error(MessageId::StrokeTooLarge);
         }
     }
     result.spacing =

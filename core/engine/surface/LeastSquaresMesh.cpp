@@ -84,10 +84,10 @@ std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double
     solver.cholmod().method[0].ordering = CHOLMOD_AMD;
     solver.compute(system);
     if (solver.info() != Eigen::Success)
-        throw Error("least-squares smoothing failed: the surface system could not be factored");
+        throw Error(MessageId::SurfaceSmoothingNotFactored);
     Eigen::MatrixX3d solution = solver.solve(rhs);
     if (solver.info() != Eigen::Success || !solution.allFinite())
-        throw Error("least-squares smoothing failed: the surface system has no finite solution");
+        throw Error(MessageId::SurfaceSmoothingNoSolution);
 
     for (int i = 0; i < n; ++i)
         if (unknown[i] >= 0)

@@ -1,5 +1,7 @@
 #include "model/commands/BoneEditCommand.h"
 
+#include <QCoreApplication>
+
 #include <nlohmann/json.hpp>
 
 #include "base/Error.h"
@@ -12,7 +14,9 @@ namespace {
 const Part& riggedPart(const Document& document, PartId id) {
     const PartNode& node = document.part(id);
     if (!node.part || node.part->skeleton.boneCount() == 0)
-        throw Error("The part has no skeleton to edit.");
+        throw Error(QCoreApplication::translate("rigmesh::model::BoneEditCommand",
+                                                "The part has no skeleton to edit.")
+                        .toStdString());
     return *node.part;
 }
 

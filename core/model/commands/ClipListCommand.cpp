@@ -1,5 +1,7 @@
 #include "model/commands/ClipListCommand.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 
 #include "base/Error.h"
@@ -12,7 +14,10 @@ namespace {
 void checkNewName(const PartNode& node, const std::string& name) {
     checkClipName(name);
     if (findClip(node, name))
-        throw Error(node.name.toStdString() + " already has a clip named \"" + name + "\".");
+        throw Error(QCoreApplication::translate("rigmesh::model::ClipListCommand",
+                                                "%1 already has a clip named \"%2\".")
+                        .arg(node.name, QString::fromStdString(name))
+                        .toStdString());
 }
 
 nlohmann::json step(const char* command, const Document& document, PartId id) {
@@ -36,7 +41,10 @@ rigmesh::Clip& ClipListCommand::clipNamed(Clips& clips, const PartNode& node,
     for (rigmesh::Clip& clip : clips.others)
         if (clipName(clip) == name)
             return clip;
-    throw Error(node.name.toStdString() + " has no clip named \"" + name + "\".");
+    throw Error(QCoreApplication::translate("rigmesh::model::ClipListCommand",
+                                            "%1 has no clip named \"%2\".")
+                    .arg(node.name, QString::fromStdString(name))
+                    .toStdString());
 }
 
 std::unique_ptr<ClipListCommand> ClipListCommand::make(Document& document, PartId id, Clips after,
@@ -98,8 +106,11 @@ std::unique_ptr<ClipListCommand> ClipListCommand::remove(Document& document, Par
     Clips after = clipsOf(node);
     clipNamed(after, node, name);  // it exists
     if (after.others.empty())
-        throw Error(node.name.toStdString() +
-                    " has only this clip: a part keeps one clip (delete its keys instead).");
+        throw Error(QCoreApplication::translate(
+                        "rigmesh::model::ClipListCommand",
+                        "%1 has only this clip: a part keeps one clip (delete its keys instead).")
+                        .arg(node.name)
+                        .toStdString());
     if (clipName(after.active) == name) {
         after.active = std::move(after.others.front());  // others are sorted by name
         after.others.erase(after.others.begin());

@@ -1,5 +1,7 @@
 #include "model/commands/CutPartCommand.h"
 
+#include <QCoreApplication>
+
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
@@ -20,7 +22,9 @@ CutPartCommand::CutPartCommand(Document& document, PartId part, const CutSpec& s
       spec_(spec),
       original_(document.part(part)) {
     if (!original_.part)
-        throw Error("The part has no surface to cut.");
+        throw Error(QCoreApplication::translate("rigmesh::model::CutPartCommand",
+                                                "The part has no surface to cut.")
+                        .toStdString());
     // The plane or the swept stroke in the part's own frame.
     CutRequest request;
     const Placement& placement = original_.placement;

@@ -1,10 +1,13 @@
 #include "model/commands/MergePartsCommand.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 
 #include <nlohmann/json.hpp>
 
 #include "base/Error.h"
+#include "model/MergeRigCarry.h"
 #include "model/RigCarryOver.h"
 #include "model/recipe/RecipeJson.h"
 
@@ -70,12 +73,18 @@ JointId resolveJoint(const JointChoice& choice, const Part& part, const Placemen
 std::unique_ptr<MergePartsCommand> MergePartsCommand::create(Document& document, PartId dragged,
                                                              PartId target, const MergeSpec& spec) {
     if (dragged == target)
-        throw Error("A part cannot be merged into itself.");
-    const PartNode& from = document.part(dragged);
-    const PartNode& into = document.part(target);
+        throw Error(QCoreApplication::translate("rigmesh::model::MergePartsCommand",
+                                                "A part cannot be merged into itself.")
+                        .toStdString());
+    return fromComputed(document, dragged, target,
+                        compute(document.part(dragged), document.part(target), spec));
+}
+
+ComputedMerge MergePartsCommand::compute(const PartNode& from, const PartNode& into,
+                                         const MergeSpec& spec) {
     if (!from.part || !into.part || from.part->skeleton.boneCount() == 0 ||
         into.part->skeleton.boneCount() == 0)
-        throw Error("Only rigged parts can be merged; rig the imported mesh first.");
+        throw Error(MessageId::MergeNeedsRiggedParts);
 
     const Part draggedPart = inFrameOf(*from.part, from.placement, into.placement);
     MergeSpec resolved = spec;
@@ -103,9 +112,16 @@ std::unique_ptr<MergePartsCommand> MergePartsCommand::create(Document& document,
     request.reskin = spec.reskin;
     request.compareGlobal = spec.compareGlobal;
     request.edgeLength = into.options.targetEdgeLength;
-    MergeResult result = mergeParts(*into.part, draggedPart, request);
-    return std::unique_ptr<MergePartsCommand>(
-        new MergePartsCommand(document, dragged, target, resolved, std::move(result)));
+    return {resolved, mergeParts(*into.part, draggedPart, request)};
+}
+
+std::unique_ptr<MergePartsCommand> MergePartsCommand::fromComputed(Document& document,
+                                                                   PartId dragged, PartId target,
+                                                                   ComputedMerge computed) {
+    if (dragged == target || !document.contains(dragged) || !document.contains(target))
+        throw Error("The parts to merge are no longer in the document.");
+    return std::unique_ptr<MergePartsCommand>(new MergePartsCommand(
+        document, dragged, target, computed.resolved, std::move(computed.result)));
 }
 
 MergePartsCommand::MergePartsCommand(Document& document, PartId dragged, PartId target,
@@ -121,13 +137,16 @@ MergePartsCommand::MergePartsCommand(Document& document, PartId dragged, PartId 
       stats_(result.stats) {
     mergedNode_ = editedNode(targetNode_, std::make_shared<const Part>(std::move(result.part)),
                              &droppedJoints_);
-    const PartNode& d = draggedNode_;
-    const bool otherKeys = std::any_of(d.otherClips.begin(), d.otherClips.end(),
-                                       [](const rigmesh::Clip& c) { return c.keyCount() > 0; });
-    if (!identicalPoses(d.pose, restPoseOf(d)) || !d.pinnedJoints.empty() ||
-        !d.clip.keys().empty() || otherKeys)
-        droppedDragged_ = true;
-    setText(tr("Merge %1 into %2").arg(d.name, targetNode_.name));
+    // The dragged part's pose, pins and keys on their merged joint ids.
+    const DraggedRigCarry carried = carryDraggedRig(
+        mergedNode_, draggedNode_, result.draggedJoints,
+        targetNode_.placement.rotation.conjugate() * draggedNode_.placement.rotation);
+    mergedNode_.pose = carried.pose;
+    mergedNode_.pinnedJoints = carried.pinned;
+    mergedNode_.clip = carried.clip;
+    mergedNode_.otherClips = carried.otherClips;
+    draggedCarry_ = carried.describe(draggedNode_.name);
+    setText(tr("Merge %1 into %2").arg(draggedNode_.name, targetNode_.name));
 }
 
 QString MergePartsCommand::summary() const {
@@ -141,9 +160,10 @@ QString MergePartsCommand::summary() const {
         text += tr("; %n bone(s) pruned", nullptr, stats_.prunedBones);
     if (droppedJoints_ > 0)
         text +=
-            tr("; the pose, pins and keys of %n joint(s) were dropped", nullptr, droppedJoints_);
-    if (droppedDragged_)
-        text += tr("; %1's pose, pins and keys were dropped").arg(draggedNode_.name);
+            tr("; %1 lost the pose, pins and keys of %n pruned joint(s)", nullptr, droppedJoints_)
+                .arg(targetNode_.name);
+    if (!draggedCarry_.isEmpty())
+        text += QStringLiteral("; ") + draggedCarry_;
     return text;
 }
 

@@ -3,8 +3,9 @@
 // a refused merge throws rigmesh::Error and changes nothing. Redo replaces
 // the target by the merged part (same id, name and placement) and removes the
 // dragged part; undo restores both exactly. The target's pose, pins and keys
-// carry over for the joints the merged skeleton keeps (RigCarryOver); the
-// dragged part's are dropped, and droppedMessage() says so.
+// carry over for the joints the merged skeleton keeps (RigCarryOver), the
+// dragged part's onto their new joint ids where they still turn the same
+// bones (MergeRigCarry); summary() says what of either was dropped.
 #pragma once
 
 #include <QCoreApplication>
@@ -30,6 +31,13 @@ struct MergeSpec {
     bool compareGlobal = false;  // also time the global re-skin (stats)
 };
 
+// A merge computed but not yet a command: the spec with its joints resolved
+// and the engine's result.
+struct ComputedMerge {
+    MergeSpec resolved;
+    MergeResult result;
+};
+
 class MergePartsCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(MergePartsCommand)
   public:
@@ -37,6 +45,13 @@ class MergePartsCommand : public QUndoCommand, public RecipeStepSource {
     // itself, or a merge the engine refuses (with its reason).
     static std::unique_ptr<MergePartsCommand> create(Document& document, PartId dragged,
                                                      PartId target, const MergeSpec& spec);
+    // create() in two halves, for a background job (widgets/jobs): the
+    // engine merge of copies of the two nodes (touches no document; throws
+    // as create() does), then the command on the GUI thread.
+    static ComputedMerge compute(const PartNode& dragged, const PartNode& target,
+                                 const MergeSpec& spec);
+    static std::unique_ptr<MergePartsCommand> fromComputed(Document& document, PartId dragged,
+                                                           PartId target, ComputedMerge computed);
 
     void redo() override;
     void undo() override;
@@ -58,8 +73,8 @@ class MergePartsCommand : public QUndoCommand, public RecipeStepSource {
     MergeSpec spec_;  // with joints resolved to ids (split target: the point)
     PartNode draggedNode_, targetNode_, mergedNode_;
     MergeStats stats_;
-    int droppedJoints_ = 0;        // of the target
-    bool droppedDragged_ = false;  // the dragged part was posed, pinned or keyed
+    int droppedJoints_ = 0;  // of the target
+    QString draggedCarry_;   // what of the dragged part's rig was kept and dropped
 };
 
 }  // namespace rigmesh::model

@@ -1,5 +1,7 @@
 #include "model/commands/MoveKeysCommand.h"
 
+#include <QCoreApplication>
+
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -9,7 +11,9 @@ namespace rigmesh::model {
 
 ClipEdit movedKeysEdit(const rigmesh::Clip& clip, const std::vector<double>& times, double offset) {
     if (times.empty())
-        throw Error("There are no keys to move.");
+        throw Error(QCoreApplication::translate("rigmesh::model::MoveKeysCommand",
+                                                "There are no keys to move.")
+                        .toStdString());
     if (!std::isfinite(offset))
         throw Error("The keys' offset is not a finite number of seconds.");
     std::vector<double> around = times;

@@ -1,5 +1,7 @@
 #include "model/commands/PasteKeysCommand.h"
 
+#include <QCoreApplication>
+
 #include <nlohmann/json.hpp>
 
 #include "base/Error.h"
@@ -11,7 +13,9 @@ namespace {
 
 ClipEdit pasted(const PartNode& node, const std::map<double, rigmesh::Pose>& keys) {
     if (keys.empty())
-        throw Error("There are no keys to paste.");
+        throw Error(QCoreApplication::translate("rigmesh::model::PasteKeysCommand",
+                                                "There are no keys to paste.")
+                        .toStdString());
     std::vector<double> times;
     for (const auto& [time, pose] : keys)
         times.push_back(time);

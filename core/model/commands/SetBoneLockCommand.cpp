@@ -1,5 +1,7 @@
 #include "model/commands/SetBoneLockCommand.h"
 
+#include <QCoreApplication>
+
 #include <nlohmann/json.hpp>
 
 #include "base/Error.h"
@@ -11,7 +13,10 @@ std::unique_ptr<SetBoneLockCommand> SetBoneLockCommand::create(Document& documen
                                                                BoneId bone, bool locked) {
     std::unique_ptr<SetBoneLockCommand> command(new SetBoneLockCommand(document, part));
     if (!command->before().skeleton.hasBone(bone))
-        throw Error("The part has no bone " + std::to_string(bone) + " to lock.");
+        throw Error(QCoreApplication::translate("rigmesh::model::SetBoneLockCommand",
+                                                "The part has no bone %1 to lock.")
+                        .arg(bone)
+                        .toStdString());
     auto after = command->editableCopy();
     if (locked)
         after->lockedBones.insert(bone);

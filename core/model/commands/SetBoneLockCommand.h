@@ -20,7 +20,10 @@ class SetBoneLockCommand : public SkinningEditCommand {
 
   private:
     SetBoneLockCommand(Document& document, PartId part)
-        : SkinningEditCommand(document, part, "lock") {}
+        : SkinningEditCommand(
+              document, part,
+              QT_TRANSLATE_NOOP("rigmesh::model::SkinningEditCommand",
+                                "The part has no skeleton, so it has no weights to lock.")) {}
 };
 
 }  // namespace rigmesh::model

@@ -25,8 +25,9 @@ class SkinningEditCommand : public QUndoCommand, public RecipeStepSource {
 
   protected:
     // Throws rigmesh::Error for an unknown part or one without a skeleton
-    // (`what` names the edit: "paint", "clean up", ...).
-    SkinningEditCommand(Document& document, PartId part, const char* what);
+    // (`noSkeleton`: the message for a part without a skeleton, a
+    // QT_TRANSLATE_NOOP in the context rigmesh::model::SkinningEditCommand).
+    SkinningEditCommand(Document& document, PartId part, const char* noSkeleton);
     // A copy of the part as the command found it, to edit.
     std::shared_ptr<Part> editableCopy() const { return std::make_shared<Part>(*before_); }
     // The edited part, the step that replays it and the changed vertex count.

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/Error.h"
+
 namespace rigmesh::model {
 
 template <typename Edit>
@@ -54,6 +56,40 @@ std::unique_ptr<WeightCleanupCommand> WeightCleanupCommand::smoothAll(
                     {"iterations", options.iterations}},
                    tr("Smooth All Weights of %1"));
     return command;
+}
+
+WeightCleanupCommand::Recomputed WeightCleanupCommand::recomputed(
+    std::shared_ptr<const Part> part) {
+    if (!part)
+        throw Error("There is no part to recompute the weights of.");
+    auto after = std::make_shared<Part>(*part);
+    Recomputed result;
+    result.changed = recomputeWeights(*after, after->lockedBones);
+    after->weightsPainted = false;
+    result.from = std::move(part);
+    result.to = std::move(after);
+    return result;
+}
+
+std::unique_ptr<WeightCleanupCommand> WeightCleanupCommand::fromRecomputed(
+    Document& document, PartId part, const Recomputed& result) {
+    if (!document.contains(part))
+        throw Error("The part is no longer in the document.");
+    std::unique_ptr<WeightCleanupCommand> command(new WeightCleanupCommand(document, part));
+    if (&command->before() != result.from.get())
+        throw Error("The part changed while its weights were recomputed; nothing was changed.");
+    command->setResult(result.to,
+                       {{"command", "recompute_weights"}, {"part", command->partIndex()}},
+                       result.changed);
+    command->setText(tr("Recompute Weights of %1").arg(command->partName()));
+    return command;
+}
+
+std::unique_ptr<WeightCleanupCommand> WeightCleanupCommand::recompute(Document& document,
+                                                                      PartId part) {
+    if (!document.contains(part))
+        throw Error("There is no such part.");
+    return fromRecomputed(document, part, recomputed(document.part(part).part));
 }
 
 }  // namespace rigmesh::model

@@ -1,7 +1,8 @@
 // A whole-part weight clean-up (Normalize All, Clean, Limit Total, Smooth
-// All; issue 14 item 3) as one undoable step, keeping the part's locked
-// bones; the recipe steps normalize_weights, clean_weights, limit_weights
-// and smooth_weights. A clean-up that changes weights marks them painted
+// All; issue 14 item 3) or a recomputation of the weights by bone heat, as
+// one undoable step, keeping the part's locked bones; the recipe steps
+// normalize_weights, clean_weights, limit_weights, smooth_weights and
+// recompute_weights. A clean-up that changes weights marks them painted
 // (Part::weightsPainted), so a rebuild asks before discarding them.
 #pragma once
 
@@ -23,10 +24,27 @@ class WeightCleanupCommand : public SkinningEditCommand {
                                                             int influences);
     static std::unique_ptr<WeightCleanupCommand> smoothAll(Document& document, PartId part,
                                                            const SmoothAllOptions& options);
+    // Bone heat over the whole part again, keeping locked bones (recipe step
+    // recompute_weights). The weights are automatic again: not painted.
+    static std::unique_ptr<WeightCleanupCommand> recompute(Document& document, PartId part);
+    // The same in two halves, for a background job (widgets/jobs): the
+    // solve on the part as it is (touches no document), then the command on
+    // the GUI thread. Throws Error if the part changed in between.
+    struct Recomputed {
+        std::shared_ptr<const Part> from;
+        std::shared_ptr<const Part> to;
+        int changed = 0;
+    };
+    static Recomputed recomputed(std::shared_ptr<const Part> part);
+    static std::unique_ptr<WeightCleanupCommand> fromRecomputed(Document& document, PartId part,
+                                                                const Recomputed& result);
 
   private:
     WeightCleanupCommand(Document& document, PartId part)
-        : SkinningEditCommand(document, part, "clean up") {}
+        : SkinningEditCommand(
+              document, part,
+              QT_TRANSLATE_NOOP("rigmesh::model::SkinningEditCommand",
+                                "The part has no skeleton, so it has no weights to clean up.")) {}
     // Runs `edit` on a copy and records the result with its recipe step.
     template <typename Edit>
     void apply(Edit&& edit, nlohmann::json step, const QString& text);

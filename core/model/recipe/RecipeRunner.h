@@ -75,7 +75,8 @@
 //                 (default 4); smooth_weights "part", optional "factor" (0..1,
 //                 default 0.5), "iterations" (1..100, default 1): Blender's
 //                 Normalize All, Clean, Limit Total and Smooth, keeping
-//                 locked bones
+//                 locked bones; recompute_weights "part": bone heat over the
+//                 whole part again (paper 2.4), keeping locked bones
 //   lock_bone, unlock_bone "part", "bone": painting and the clean-ups keep
 //                 a locked bone's weights
 //   clip_settings "part", optional "frameRate", "interpolation" ("constant" |

@@ -130,6 +130,12 @@ StepKinds withWeightSteps(StepKinds kinds) {
                   options.iterations = wholeNumber(c, "iterations", 1, 100);
               return cleanup(WeightCleanupCommand::smoothAll(c.document, id, options), id);
           }}},
+        {"recompute_weights",
+         {{"part"},
+          [](const Context& c) {
+              const PartId id = c.part();
+              return cleanup(WeightCleanupCommand::recompute(c.document, id), id);
+          }}},
         {"lock_bone",
          {{"part", "bone"},
           [](const Context& c) {

@@ -1,5 +1,6 @@
 // Recipe steps that edit skin weights (issue 14): paint_weights,
 // normalize_weights, clean_weights, limit_weights, smooth_weights,
+// recompute_weights,
 // lock_bone and unlock_bone (formats in RecipeRunner.h).
 #pragma once
 

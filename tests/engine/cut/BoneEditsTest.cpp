@@ -34,8 +34,8 @@ void expectLocal(const Part& before, const BoneEditResult& after) {
     EXPECT_TRUE(after.part.validateSolid().empty());
     EXPECT_EQ(after.part.mesh.vertices, before.mesh.vertices);
     EXPECT_EQ(after.part.mesh.faces, before.mesh.faces);
-    const WeightsById old = weightsById(before.skeleton, before.weights);
-    const WeightsById now = weightsById(after.part.skeleton, after.part.weights);
+    const WeightsById& old = before.weights.perVertex;
+    const WeightsById& now = after.part.weights.perVertex;
     std::vector<char> reskinned(before.mesh.vertexCount(), 0);
     for (int v : after.reskinned)
         reskinned[v] = 1;
@@ -63,15 +63,11 @@ TEST_P(BoneEdits, SplittingTheLongestBoneAddsOneJointAndReskinsLocally) {
     expectLocal(part, result);
     // The far half took over the vertices beyond the new joint.
     EXPECT_FALSE(result.reskinned.empty());
-    std::vector<int> leads(result.part.skeleton.boneCount(), 0);
-    for (const auto& list : result.part.weights.perVertex)
-        ++leads[std::max_element(list.begin(), list.end(), [](auto& x, auto& y) {
-                    return x.second < y.second;
-                })->first];
+    std::map<BoneId, int> leads = leadingVertexCounts(result.part.weights.perVertex);
     const Bone& half = result.part.skeleton.bone(bone);
     for (BoneId id : result.part.skeleton.bonesAt(result.newJoint))
-        EXPECT_GT(leads[result.part.skeleton.indexOfBone(id)], 0)
-            << "bone " << id << " (split from " << bone << ", head " << half.head << ")";
+        EXPECT_GT(leads[id], 0) << "bone " << id << " (split from " << bone << ", head "
+                                << half.head << ")";
 }
 
 TEST_P(BoneEdits, DeletingTheShortestBoneRemovesOneJointOrIsRefusedForTheOnlyBone) {

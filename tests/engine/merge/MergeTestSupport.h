@@ -73,16 +73,10 @@ inline void expectValidMergedPart(const Part& part, const std::vector<BoneId>& r
     EXPECT_EQ(report.inconsistentlyOrientedEdges, 0);
     const auto problems = part.validateSolid();
     EXPECT_TRUE(problems.empty()) << (problems.empty() ? "" : problems.front());
-    std::vector<int> leads(part.skeleton.boneCount(), 0);
-    for (const auto& list : part.weights.perVertex)
-        if (!list.empty())
-            ++leads[std::max_element(list.begin(), list.end(), [](auto& a, auto& b) {
-                        return a.second < b.second;
-                    })->first];
-    for (int b = 0; b < part.skeleton.boneCount(); ++b)
-        if (std::find(requested.begin(), requested.end(), part.skeleton.bones()[b].id) ==
-            requested.end()) {
-            EXPECT_GT(leads[b], 0) << "bone " << part.skeleton.bones()[b].id << " leads no vertex";
+    std::map<BoneId, int> leads = leadingVertexCounts(part.weights.perVertex);
+    for (const Bone& bone : part.skeleton.bones())
+        if (std::find(requested.begin(), requested.end(), bone.id) == requested.end()) {
+            EXPECT_GT(leads[bone.id], 0) << "bone " << bone.id << " leads no vertex";
         }
 }
 

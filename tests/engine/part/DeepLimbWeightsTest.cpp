@@ -29,6 +29,7 @@ class DeepLimbWeights : public ::testing::TestWithParam<std::string> {};
 TEST_P(DeepLimbWeights, MiddleOfALimbBoneBelongsToThatBone) {
     const Part& part = parttest::sharedPart(GetParam()).part;
     const std::vector<BoneSegment> segments = part.boneSegments();
+    const SkinWeights weights = parttest::weightsByPosition(part);
     int considered = 0;
     int owned = 0;
     for (std::size_t v = 0; v < part.mesh.vertices.size(); ++v) {
@@ -49,7 +50,7 @@ TEST_P(DeepLimbWeights, MiddleOfALimbBoneBelongsToThatBone) {
             continue;
         ++considered;
         const std::vector<double> dense =
-            parttest::denseWeights(part.weights.perVertex[v], part.skeleton.boneCount());
+            parttest::denseWeights(weights.perVertex[v], part.skeleton.boneCount());
         if (dense[closest] >= kOwnWeight)
             ++owned;
     }

@@ -60,7 +60,7 @@ class LimbLeak : public ::testing::TestWithParam<std::string> {
 };
 
 TEST_P(LimbLeak, TurningALimbMovesFewerVerticesOfOtherLimbsThanBefore) {
-    const int leak = parttest::limbLeak(part(), part().weights, closest());
+    const int leak = parttest::limbLeak(part(), parttest::weightsByPosition(part()), closest());
     std::cout << "[ measured ] " << GetParam() << " limbs "
               << parttest::limbsOf(part().skeleton).size() << " leak " << leak << " (before "
               << before(GetParam()).leak << ")\n";
@@ -72,7 +72,7 @@ TEST_P(LimbLeak, TurningALimbMovesFewerVerticesOfOtherLimbsThanBefore) {
 }
 
 TEST_P(LimbLeak, WeightsAreAsSmoothAsBefore) {
-    const double smooth = parttest::largestBoneJumpP99(part(), part().weights);
+    const double smooth = parttest::largestBoneJumpP99(part(), parttest::weightsByPosition(part()));
     std::cout << "[ measured ] " << GetParam() << " largest per-bone jump p99 " << smooth
               << " (before " << before(GetParam()).smoothnessP99 << ")\n";
     RecordProperty("smoothnessP99", std::to_string(smooth));
@@ -84,7 +84,8 @@ TEST_P(LimbLeak, WeightsAreAsSmoothAsBefore) {
 }
 
 TEST_P(LimbLeak, DominantBoneIsTheClosestVisibleBoneAsOftenAsBefore) {
-    const double dominance = parttest::dominantIsClosestVisibleRate(part().weights, closest());
+    const double dominance =
+        parttest::dominantIsClosestVisibleRate(parttest::weightsByPosition(part()), closest());
     std::cout << "[ measured ] " << GetParam() << " dominant bone closest visible " << dominance
               << " (before " << before(GetParam()).dominanceRate << ")\n";
     RecordProperty("dominance", std::to_string(dominance));
@@ -100,7 +101,7 @@ TEST(LimbLeakOverAllSketches, WorstAndMeanSmoothnessAreNoWorseThanBefore) {
     double worst = 0.0, worstBefore = 0.0, sum = 0.0, sumBefore = 0.0;
     for (const std::string& sketch : parttest::goodSketches()) {
         const Part& part = parttest::sharedPart(sketch).part;
-        const double smooth = parttest::largestBoneJumpP99(part, part.weights);
+        const double smooth = parttest::largestBoneJumpP99(part, parttest::weightsByPosition(part));
         worst = std::max(worst, smooth);
         sum += smooth;
         worstBefore = std::max(worstBefore, before(sketch).smoothnessP99);

@@ -86,6 +86,7 @@ inline int limbLeak(const Part& part, const SkinWeights& weights, const ClosestB
 
     SkinningOptions lbs;
     lbs.method = SkinningMethod::LinearBlend;
+    const WeightsById byId = weightsById(skeleton, weights).perVertex;  // as skinning reads them
     int moved = 0;
     for (std::size_t l = 0; l < limbs.size(); ++l) {
         const Limb& limb = limbs[l];
@@ -102,8 +103,8 @@ inline int limbLeak(const Part& part, const SkinWeights& weights, const ClosestB
             std::vector<RigidTransform> transforms(skeleton.boneCount());
             for (int bone : limb.bones)
                 transforms[bone] = {turn, base - (turn * base)};
-            const SkinnedVertices posed =
-                skinVertices(part.mesh.vertices, {}, weights, SkinningTransforms(transforms), lbs);
+            const SkinnedVertices posed = skinVertices(
+                part.mesh.vertices, {}, byId, SkinningTransforms(skeleton, transforms), lbs);
             for (std::size_t v = 0; v < posed.positions.size(); ++v) {
                 if (limbOfVertex[v] < 0 || limbOfVertex[v] == static_cast<int>(l))
                     continue;

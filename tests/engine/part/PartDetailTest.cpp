@@ -37,10 +37,10 @@ TEST_P(PartDetail, SubdividingMakesFourFacesOfEachAndCarriesTheWeights) {
     ASSERT_EQ(finer.weights.perVertex.size(), finer.mesh.vertices.size());
     // A vertex's dominant bone was dominant at one of the vertices it came
     // from: weights are carried, not invented.
-    std::map<int, int> dominantCounts;
+    std::map<BoneId, int> dominantCounts;
     for (const auto& list : finer.weights.perVertex) {
         ASSERT_FALSE(list.empty());
-        int best = list.front().first;
+        BoneId best = list.front().first;
         double most = 0;
         for (const auto& [bone, w] : list)
             if (w > most) {

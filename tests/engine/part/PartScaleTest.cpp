@@ -66,9 +66,11 @@ TEST_P(PartScale, ScaledStrokeGivesTheSameWeights) {
     ASSERT_EQ(scaled.skeleton.boneCount(), reference.skeleton.boneCount());
     const int boneCount = reference.skeleton.boneCount();
     double worst = 0.0;
+    const SkinWeights referenceWeights = parttest::weightsByPosition(reference);
+    const SkinWeights scaledWeights = parttest::weightsByPosition(scaled);
     for (int v = 0; v < reference.mesh.vertexCount(); ++v) {
-        const auto a = parttest::denseWeights(reference.weights.perVertex[v], boneCount);
-        const auto b = parttest::denseWeights(scaled.weights.perVertex[v], boneCount);
+        const auto a = parttest::denseWeights(referenceWeights.perVertex[v], boneCount);
+        const auto b = parttest::denseWeights(scaledWeights.perVertex[v], boneCount);
         for (int i = 0; i < boneCount; ++i)
             worst = std::max(worst, std::abs(a[i] - b[i]));
     }

@@ -82,6 +82,12 @@ inline double boundingBoxDiagonal(const TriMesh& mesh) {
 }
 
 // A vertex's weights as a dense vector over `boneCount` bones.
+// A part's weights by bone position (skeleton.bones() order), as the solver
+// gives them and as the index-based figures below read them.
+inline SkinWeights weightsByPosition(const Part& part) {
+    return weightsByIndex(part.skeleton, part.weights);
+}
+
 inline std::vector<double> denseWeights(const std::vector<std::pair<int, double>>& sparse,
                                         int boneCount) {
     std::vector<double> dense(boneCount, 0.0);

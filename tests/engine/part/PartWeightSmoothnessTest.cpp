@@ -63,9 +63,10 @@ EdgeChanges edgeChanges(const Part& part) {
     for (std::size_t v = 0; v < distance.size(); ++v)
         distance[v] = parttest::distanceToNearestBone(part.mesh.vertices[v], bones);
     EdgeChanges changes;
+    const SkinWeights weights = parttest::weightsByPosition(part);
     for (const auto& [a, b] : parttest::meshEdges(part.mesh)) {
-        const double change = parttest::weightDifferenceL1(part.weights.perVertex[a],
-                                                           part.weights.perVertex[b], boneCount);
+        const double change =
+            parttest::weightDifferenceL1(weights.perVertex[a], weights.perVertex[b], boneCount);
         const double length = (part.mesh.vertices[a] - part.mesh.vertices[b]).norm();
         changes.raw.push_back(change);
         changes.relative.push_back(change * 0.5 * (distance[a] + distance[b]) / length);

@@ -37,8 +37,7 @@ TEST_P(PartWeights, EveryVertexHasNonNegativeWeightsSummingToOne) {
         }
         double sum = 0.0;
         for (const auto& [bone, weight] : weights) {
-            EXPECT_GE(bone, 0);
-            EXPECT_LT(bone, p.skeleton.boneCount());
+            EXPECT_TRUE(p.skeleton.hasBone(bone)) << bone;
             EXPECT_GE(weight, 0.0);
             sum += weight;
         }
@@ -58,10 +57,11 @@ TEST_P(PartWeights, DominantBoneIsAClosestVisibleBone) {
     const ClosestBones& closest = parttest::sharedClosestVisibleBones(GetParam());
     ASSERT_EQ(closest.size(), p.mesh.vertices.size());
 
+    const SkinWeights weights = parttest::weightsByPosition(p);
     int inList = 0;
     int withinSlack = 0;
     for (std::size_t v = 0; v < closest.size(); ++v) {
-        const int dominant = parttest::dominantBone(p.weights.perVertex[v]);
+        const int dominant = parttest::dominantBone(weights.perVertex[v]);
         double nearest = std::numeric_limits<double>::infinity();
         bool listed = false;
         for (const auto& [bone, distance] : closest[v]) {

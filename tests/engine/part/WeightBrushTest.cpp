@@ -1,17 +1,18 @@
 // The brush's falloff and "front faces only", the locks every clean-up
-// keeps, Smooth All and Check Rig (issue 14 items 2-3).
+// keeps, Smooth All, Recompute Weights and Check Rig (issue 14 items 2-3).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "SharedSketchPart.h"
 #include "PartWeightOf.h"
+#include "SharedSketchPart.h"
 #include "base/Error.h"
 #include "mesh/MeshAdjacency.h"
 #include "part/RigCheck.h"
 #include "part/WeightCleanup.h"
 #include "part/WeightPaint.h"
 #include "pose/VertexNormals.h"
+#include "rig/LocalBoneHeat.h"
 
 namespace rigmesh {
 namespace {
@@ -34,6 +35,20 @@ int frontmostVertex(const Part& part) {
     return at;
 }
 
+// A Replace dab of constant falloff on the first bone, at full strength,
+// centred on the biped's frontmost vertex.
+WeightDab constantReplaceInFront(const Part& part, double value, double radius) {
+    WeightDab dab;
+    dab.bone = part.skeleton.bones().front().id;
+    dab.mode = BrushMode::Replace;
+    dab.falloff = BrushFalloff::Constant;
+    dab.value = value;
+    dab.strength = 1.0;
+    dab.centre = part.mesh.vertices[frontmostVertex(part)];
+    dab.radius = radius;
+    return dab;
+}
+
 TEST(BrushFalloff, ProfilesStartAtOneAndEndAtZeroExceptConstant) {
     for (BrushFalloff f : {BrushFalloff::Smooth, BrushFalloff::Linear, BrushFalloff::Sharp}) {
         EXPECT_DOUBLE_EQ(brushFalloff(f, 0.0), 1.0);
@@ -47,14 +62,7 @@ TEST(BrushFalloff, ProfilesStartAtOneAndEndAtZeroExceptConstant) {
 
 TEST(WeightPaint, ConstantFalloffReplacesEveryVertexInsideTheRadiusFully) {
     Part part = testsupport::sharedSketchPart("biped");
-    WeightDab dab;
-    dab.bone = part.skeleton.bones().front().id;
-    dab.mode = BrushMode::Replace;
-    dab.falloff = BrushFalloff::Constant;
-    dab.value = 0.25;
-    dab.strength = 1.0;
-    dab.centre = part.mesh.vertices[frontmostVertex(part)];
-    dab.radius = 0.3;
+    const WeightDab dab = constantReplaceInFront(part, 0.25, 0.3);
     paintWeights(part, dab);
     EXPECT_TRUE(part.validate().empty());
     int inside = 0;
@@ -126,10 +134,9 @@ TEST(WeightCleanup, LockedBonesKeepTheirWeightsThroughEveryCleanup) {
     EXPECT_GT(limitWeightInfluences(cleaned[1], 1, locked), 0);
     EXPECT_GT(smoothAllWeights(cleaned[2], {0.8, 3}, locked), 0);
     // Normalize: first put the sums off by scaling the unlocked weights.
-    const int lockedIndex = before.skeleton.indexOfBone(lockedBone);
     for (auto& list : cleaned[3].weights.perVertex)
         for (auto& [b, w] : list)
-            if (b != lockedIndex)
+            if (b != lockedBone)
                 w *= 0.5;
     EXPECT_GT(normalizeAllWeights(cleaned[3], locked), 0);
     for (const Part& part : cleaned) {
@@ -164,15 +171,7 @@ double roughness(const Part& part) {
 TEST(WeightCleanup, SmoothAllMakesWeightsSmootherAndKeepsSums) {
     // Rough weights first: a constant-falloff Replace leaves a step.
     Part part = testsupport::sharedSketchPart("biped");
-    WeightDab dab;
-    dab.bone = part.skeleton.bones().front().id;
-    dab.mode = BrushMode::Replace;
-    dab.falloff = BrushFalloff::Constant;
-    dab.value = 1.0;
-    dab.strength = 1.0;
-    dab.centre = part.mesh.vertices[frontmostVertex(part)];
-    dab.radius = 0.4;
-    paintWeights(part, dab);
+    paintWeights(part, constantReplaceInFront(part, 1.0, 0.4));
     // Each pass makes the weights smoother; many passes much smoother.
     double previous = roughness(part);
     const double start = previous;
@@ -196,11 +195,11 @@ TEST(RigCheck, AFreshPartIsCleanAndEachProblemIsFound) {
     EXPECT_TRUE(checkRig(part, options).clean());
     // Paint one bone out of every vertex it leads: it leads none.
     const BoneId gone = part.skeleton.bones().back().id;
-    const int goneIndex = part.skeleton.indexOfBone(gone);
+    const BoneId other = part.skeleton.bones().front().id;
     for (auto& list : part.weights.perVertex) {
-        std::erase_if(list, [&](const auto& e) { return e.first == goneIndex; });
+        std::erase_if(list, [&](const auto& e) { return e.first == gone; });
         if (list.empty())
-            list.emplace_back(goneIndex == 0 ? 1 : 0, 1.0);
+            list.emplace_back(other, 1.0);
         double sum = 0.0;
         for (const auto& e : list)
             sum += e.second;
@@ -220,6 +219,48 @@ TEST(RigCheck, AFreshPartIsCleanAndEachProblemIsFound) {
     EXPECT_FALSE(tight.verticesOverInfluences.empty());
     options.maxInfluences = 0;
     EXPECT_THROW(checkRig(part, options), Error);
+}
+
+// Recompute Weights: painted weights go back to the whole-part bone heat
+// (paper 2.4); a locked bone keeps its weights bit for bit and every vertex
+// still sums to 1.
+TEST(RecomputeWeights, PaintedWeightsGoBackToBoneHeatAndLockedBonesKeepTheirs) {
+    const Part& fresh = testsupport::sharedSketchPart("y_branch");
+    const WeightsById heat = recomputeWeightsGlobally(fresh.mesh, fresh.skeleton);
+    Part painted = fresh;
+    WeightDab dab;
+    const Bone& bone = painted.skeleton.bones().front();
+    dab.bone = bone.id;
+    dab.mode = BrushMode::Replace;
+    dab.value = 0.5;
+    dab.centre = 0.5 * (painted.skeleton.joint(bone.head).position +
+                        painted.skeleton.joint(bone.tail).position);
+    dab.radius =
+        (painted.skeleton.joint(bone.head).position - painted.skeleton.joint(bone.tail).position)
+            .norm();
+    dab.strength = 1.0;
+    ASSERT_GT(paintWeights(painted, dab).changed.size(), 10u);
+
+    Part unlocked = painted;
+    EXPECT_GT(recomputeWeights(unlocked, {}), 10);
+    ASSERT_TRUE(unlocked.validate().empty()) << unlocked.validate().front();
+    for (int v = 0; v < unlocked.mesh.vertexCount(); ++v) {
+        ASSERT_EQ(unlocked.weights.perVertex[v].size(), heat[v].size()) << v;
+        for (std::size_t k = 0; k < heat[v].size(); ++k) {
+            EXPECT_EQ(unlocked.weights.perVertex[v][k].first, heat[v][k].first);
+            EXPECT_NEAR(unlocked.weights.perVertex[v][k].second, heat[v][k].second, 1e-12);
+        }
+    }
+
+    Part locked = painted;
+    const std::set<BoneId> lock{dab.bone};
+    recomputeWeights(locked, lock);
+    ASSERT_TRUE(locked.validate().empty()) << locked.validate().front();
+    for (int v = 0; v < locked.mesh.vertexCount(); ++v) {
+        ASSERT_EQ(weightOf(locked, v, dab.bone), weightOf(painted, v, dab.bone)) << v;
+        ASSERT_NEAR(sumOf(locked, v), 1.0, 1e-9);
+    }
+    EXPECT_THROW(recomputeWeights(locked = Part(), {}), Error) << "no skeleton";
 }
 
 }  // namespace

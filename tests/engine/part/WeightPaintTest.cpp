@@ -3,8 +3,8 @@
 // it cannot change, and with X-mirror keeps the part mirror symmetric.
 #include <gtest/gtest.h>
 
-#include "SharedSketchPart.h"
 #include "PartWeightOf.h"
+#include "SharedSketchPart.h"
 #include "base/Error.h"
 #include "part/WeightCleanup.h"
 #include "part/WeightPaint.h"

@@ -19,8 +19,8 @@ const SkinningMethod kMethods[] = {SkinningMethod::LinearBlend, SkinningMethod::
 SkinnedVertices skinPart(const Part& part, const Pose& pose, SkinningMethod method,
                          int threads = 2) {
     const PosedSkeleton posed = forwardKinematics(part.skeleton, pose);
-    return skinVertices(part.mesh.vertices, vertexNormals(part.mesh), part.weights,
-                        SkinningTransforms(posed.boneTransforms), {method, threads});
+    return skinVertices(part.mesh.vertices, vertexNormals(part.mesh), part.weights.perVertex,
+                        SkinningTransforms(part.skeleton, posed.boneTransforms), {method, threads});
 }
 
 class SkinningOnParts : public ::testing::TestWithParam<std::string> {};
@@ -185,37 +185,114 @@ TEST(Skinning, DualQuaternionsKeepVolumeBetterThanLinearBlendUnderTwist) {
 TEST(Skinning, DualQuaternionBlendingIgnoresTheSignOfEachBonesQuaternion) {
     // q and -q are the same rotation; the antipodal fix makes DQS agree.
     const TriMesh tube = makeCylinderTube(8, 12, 0.3, 2.0);
-    SkinWeights weights;
+    Skeleton chain;
+    const JointId root = chain.addJoint(Vec3(0, 0, -1));
+    const JointId middle = chain.addJoint(Vec3(0, 0, 0));
+    const BoneId first = chain.addBone(root, middle);
+    const BoneId second = chain.addBone(middle, chain.addJoint(Vec3(0, 0, 1)));
+    WeightsById weights;
     for (const Vec3& v : tube.vertices) {
         const double w = std::clamp(v.z() / 2.0 + 0.5, 0.0, 1.0);
-        weights.perVertex.push_back({{0, 1 - w}, {1, w}});
+        weights.push_back({{first, 1 - w}, {second, w}});
     }
     RigidTransform a{Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Vec3::UnitX())), Vec3(0, 0, 0.1)};
     RigidTransform b{Eigen::Quaterniond(Eigen::AngleAxisd(2.5, Vec3::UnitZ())), Vec3(0.2, 0, 0)};
     RigidTransform flipped = b;
     flipped.rotation.coeffs() = -flipped.rotation.coeffs();
     const SkinnedVertices plain =
-        skinVertices(tube.vertices, {}, weights, SkinningTransforms({a, b}));
+        skinVertices(tube.vertices, {}, weights, SkinningTransforms(chain, {a, b}));
     const SkinnedVertices negated =
-        skinVertices(tube.vertices, {}, weights, SkinningTransforms({a, flipped}));
+        skinVertices(tube.vertices, {}, weights, SkinningTransforms(chain, {a, flipped}));
     for (int v = 0; v < tube.vertexCount(); ++v)
         EXPECT_LT((plain.positions[v] - negated.positions[v]).norm(), 1e-12);
 }
 
 TEST(Skinning, MismatchedInputIsAnError) {
     const Part& part = sharedPart("tube");
-    const SkinningTransforms transforms(forwardKinematics(part.skeleton, Pose{}).boneTransforms);
-    SkinWeights tooFew = part.weights;
-    tooFew.perVertex.pop_back();
+    const std::vector<RigidTransform> rest =
+        forwardKinematics(part.skeleton, Pose{}).boneTransforms;
+    const SkinningTransforms transforms(part.skeleton, rest);
+    WeightsById tooFew = part.weights.perVertex;
+    tooFew.pop_back();
     EXPECT_THROW(skinVertices(part.mesh.vertices, {}, tooFew, transforms), Error);
-    SkinWeights badBone = part.weights;
-    badBone.perVertex[0] = {{99, 1.0}};
+    WeightsById badBone = part.weights.perVertex;
+    badBone[0] = {{99, 1.0}};
     EXPECT_THROW(skinVertices(part.mesh.vertices, {}, badBone, transforms), Error);
-    EXPECT_THROW(skinVertices(part.mesh.vertices, {Vec3::UnitX()}, part.weights, transforms),
-                 Error);
-    EXPECT_THROW(skinVertices(part.mesh.vertices, {}, part.weights, transforms,
+    EXPECT_THROW(
+        skinVertices(part.mesh.vertices, {Vec3::UnitX()}, part.weights.perVertex, transforms),
+        Error);
+    EXPECT_THROW(skinVertices(part.mesh.vertices, {}, part.weights.perVertex, transforms,
                               {SkinningMethod::LinearBlend, 0}),
                  Error);
+    std::vector<RigidTransform> oneShort = rest;
+    oneShort.pop_back();
+    EXPECT_THROW(SkinningTransforms(part.skeleton, oneShort), Error);
+}
+
+// Weights name bones by id: after a bone goes, the bones after it move up in
+// the bone list but skin exactly as before.
+TEST(Skinning, WeightsFollowBoneIdsWhenAnEarlierBoneIsGone) {
+    const Part contiguous = syntheticTwoBoneTube();
+    Part gapped = contiguous;
+    // The same chain, built after a bone that was then removed: ids 1 and 2
+    // at positions 0 and 1.
+    Skeleton skeleton;
+    const JointId spare = skeleton.addJoint(Vec3(5, 0, 0));
+    const JointId a = skeleton.addJoint(Vec3(0, 0, -2));
+    const JointId b = skeleton.addJoint(Vec3(0, 0, 0));
+    const JointId c = skeleton.addJoint(Vec3(0, 0, 2));
+    skeleton.removeBone(skeleton.addBone(spare, a));
+    skeleton.removeJoint(spare);
+    const BoneId lower = skeleton.addBone(a, b);
+    const BoneId upper = skeleton.addBone(b, c);
+    ASSERT_EQ(skeleton.indexOfBone(lower), 0);
+    ASSERT_NE(lower, 0u);
+    gapped.skeleton = skeleton;
+    for (auto& list : gapped.weights.perVertex)
+        for (auto& [bone, w] : list)
+            bone = bone == 0 ? lower : upper;
+    ASSERT_TRUE(gapped.validate().empty()) << gapped.validate().front();
+    Pose bent, bentGapped;
+    bent.setRotation(contiguous.skeleton.bone(1).head,
+                     Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3::UnitX())));
+    bentGapped.setRotation(b, Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3::UnitX())));
+    for (SkinningMethod method : kMethods) {
+        const SkinnedVertices expected = skinPart(contiguous, bent, method);
+        const SkinnedVertices got = skinPart(gapped, bentGapped, method);
+        ASSERT_EQ(got.positions.size(), expected.positions.size());
+        double moved = 0.0;
+        for (std::size_t v = 0; v < got.positions.size(); ++v) {
+            EXPECT_LT((got.positions[v] - expected.positions[v]).norm(), 1e-12) << v;
+            moved = std::max(moved, (got.positions[v] - gapped.mesh.vertices[v]).norm());
+        }
+        EXPECT_GT(moved, 0.5) << "the bend moves the upper half";
+    }
+}
+
+// Ids far beyond the bone count (a hand-edited file) take the other path
+// (per-bone data by position): the same skinning.
+TEST(Skinning, BoneIdsFarBeyondTheBoneCountSkinTheSame) {
+    const Part contiguous = syntheticTwoBoneTube();
+    Part far = contiguous;
+    std::vector<Bone> bones = contiguous.skeleton.bones();
+    const BoneId ids[] = {7, 1000000};
+    for (std::size_t b = 0; b < bones.size(); ++b)
+        bones[b].id = ids[b];
+    far.skeleton =
+        Skeleton::restore(contiguous.skeleton.joints(), bones, contiguous.skeleton.root());
+    for (auto& list : far.weights.perVertex)
+        for (auto& [bone, w] : list)
+            bone = ids[bone];
+    ASSERT_TRUE(far.validate().empty()) << far.validate().front();
+    Pose bent;
+    bent.setRotation(contiguous.skeleton.bones()[1].head,
+                     Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3::UnitY())));
+    for (SkinningMethod method : kMethods) {
+        const SkinnedVertices expected = skinPart(contiguous, bent, method);
+        const SkinnedVertices got = skinPart(far, bent, method);
+        for (std::size_t v = 0; v < got.positions.size(); ++v)
+            ASSERT_LT((got.positions[v] - expected.positions[v]).norm(), 1e-12) << v;
+    }
 }
 
 TEST(Skinning, PosePartKeepsFacesAndSkinsPositions) {

@@ -1,0 +1,2563 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="es_ES">
+<context>
+    <name>BoneEditCommand</name>
+    <message>
+        <source>Split Bone %1 of %2</source>
+        <translation>Dividir hueso %1 de %2</translation>
+    </message>
+    <message>
+        <source>Delete Bone %1 of %2</source>
+        <translation>Eliminar hueso %1 de %2</translation>
+    </message>
+    <message>
+        <source>%1 in %2 ms: %3 vertices and %4 bones re-skinned</source>
+        <translation>%1 en %2 ms: %3 vértices y %4 huesos con pesos recalculados</translation>
+    </message>
+</context>
+<context>
+    <name>ClipListCommand</name>
+    <message>
+        <source>New clip %1 of %2</source>
+        <translation>Nuevo clip %1 de %2</translation>
+    </message>
+    <message>
+        <source>Duplicate clip %1 of %2 as %3</source>
+        <translation>Duplicar clip %1 de %2 como %3</translation>
+    </message>
+    <message>
+        <source>Rename clip %1 of %2 to %3</source>
+        <translation>Renombrar clip %1 de %2 a %3</translation>
+    </message>
+    <message>
+        <source>Delete clip %1 of %2</source>
+        <translation>Eliminar clip %1 de %2</translation>
+    </message>
+    <message>
+        <source>Play clip %1 on %2</source>
+        <translation>Reproducir clip %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>CreatePartCommand</name>
+    <message>
+        <source>Part %1</source>
+        <translation>Pieza %1</translation>
+    </message>
+    <message>
+        <source>Create %1</source>
+        <translation>Crear %1</translation>
+    </message>
+</context>
+<context>
+    <name>CutPartCommand</name>
+    <message>
+        <source>%1 2</source>
+        <translation>%1 2</translation>
+    </message>
+    <message>
+        <source>Cut %1</source>
+        <translation>Cortar %1</translation>
+    </message>
+</context>
+<context>
+    <name>DeleteKeyCommand</name>
+    <message>
+        <source>Delete key of %1 at %2 s</source>
+        <translation>Eliminar clave de %1 en %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>DeletePartCommand</name>
+    <message>
+        <source>Delete %1</source>
+        <translation>Eliminar %1</translation>
+    </message>
+</context>
+<context>
+    <name>DraggedRigCarry</name>
+    <message numerus="yes">
+        <source>the rotations of %n joint(s)</source>
+        <translation>
+            <numerusform>la rotación de %n articulación</numerusform>
+            <numerusform>las rotaciones de %n articulaciones</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n pin(s)</source>
+        <translation>
+            <numerusform>%n fijación</numerusform>
+            <numerusform>%n fijaciones</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n key(s)</source>
+        <translation>
+            <numerusform>%n clave</numerusform>
+            <numerusform>%n claves</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the rotations of joint(s) %1 (in the merged skeleton they would turn other bones)</source>
+        <translation>las rotaciones de las articulaciones %1 (en el esqueleto fusionado girarían otros huesos)</translation>
+    </message>
+    <message>
+        <source>the pin(s) of joint(s) %1 (pruned)</source>
+        <translation>las fijaciones de las articulaciones %1 (eliminadas)</translation>
+    </message>
+    <message>
+        <source>its root offset</source>
+        <translation>su desplazamiento de raíz</translation>
+    </message>
+    <message>
+        <source>from %1: </source>
+        <translation>de %1: </translation>
+    </message>
+    <message>
+        <source>kept %1</source>
+        <translation>se conserva %1</translation>
+    </message>
+    <message>
+        <source>dropped %1</source>
+        <translation>se descarta %1</translation>
+    </message>
+    <message>
+        <source>; its keys now play at the target&apos;s frame rate and interpolation</source>
+        <translation>; sus claves se reproducen ahora con la velocidad de fotogramas y la interpolación del destino</translation>
+    </message>
+</context>
+<context>
+    <name>EngineMessage</name>
+    <message>
+        <source>Point %1 of the stroke (counting from 0) is %2, which is not a finite number: the sketch data is corrupt. Redraw the stroke.</source>
+        <translation>El punto %1 del trazo (contando desde 0) es %2, que no es un número finito: los datos del boceto están dañados. Vuelva a dibujar el trazo.</translation>
+    </message>
+    <message>
+        <source>The stroke has only 1 distinct point; a silhouette needs at least 3 points that enclose an area. Draw a closed outline.</source>
+        <translation>El trazo tiene un solo punto distinto; una silueta necesita al menos 3 puntos que encierren un área. Dibuje un contorno cerrado.</translation>
+    </message>
+    <message>
+        <source>The stroke has only %1 distinct points; a silhouette needs at least 3 points that enclose an area. Draw a closed outline.</source>
+        <translation>El trazo tiene solo %1 puntos distintos; una silueta necesita al menos 3 puntos que encierren un área. Dibuje un contorno cerrado.</translation>
+    </message>
+    <message>
+        <source>The stroke has %1 points but only %2 distinct positions; the other %3 repeat the same positions, which is too little to describe a silhouette. Draw the outline as one continuous stroke.</source>
+        <translation>El trazo tiene %1 puntos pero solo %2 posiciones distintas; los otros %3 repiten las mismas posiciones, demasiado poco para describir una silueta. Dibuje el contorno en un solo trazo continuo.</translation>
+    </message>
+    <message>
+        <source>The stroke is too long for its size: at the requested spacing its outline would need more than %1 points. Draw a simpler outline or use a larger spacing.</source>
+        <translation>El trazo es demasiado largo para su tamaño: con la separación pedida su contorno necesitaría más de %1 puntos. Dibuje un contorno más sencillo o use una separación mayor.</translation>
+    </message>
+    <message>
+        <source>All points of the stroke lie on (nearly) one straight line, so it encloses no area. Draw a closed silhouette.</source>
+        <translation>Todos los puntos del trazo están (casi) en una línea recta, así que no encierra ningún área. Dibuje una silueta cerrada.</translation>
+    </message>
+    <message>
+        <source>The stroke crosses itself near %1: draw a silhouette that does not cross itself.</source>
+        <translation>El trazo se cruza a sí mismo cerca de %1: dibuje una silueta que no se cruce.</translation>
+    </message>
+    <message>
+        <source>The stroke encloses almost no area (it runs back along itself). Draw a silhouette with some width.</source>
+        <translation>El trazo casi no encierra área (vuelve sobre sí mismo). Dibuje una silueta con algo de anchura.</translation>
+    </message>
+    <message>
+        <source>The stroke&apos;s coordinates are too large to process; scale the sketch down.</source>
+        <translation>Las coordenadas del trazo son demasiado grandes para procesarlas; reduzca la escala del boceto.</translation>
+    </message>
+    <message>
+        <source>the outline touches itself at (%1, %2)</source>
+        <translation>el contorno se toca a sí mismo en (%1, %2)</translation>
+    </message>
+    <message>
+        <source>the outline crosses itself: draw a silhouette that does not cross itself</source>
+        <translation>el contorno se cruza a sí mismo: dibuje una silueta que no se cruce</translation>
+    </message>
+    <message>
+        <source>an outline needs at least three points</source>
+        <translation>un contorno necesita al menos tres puntos</translation>
+    </message>
+    <message>
+        <source>the outline has repeated points</source>
+        <translation>el contorno tiene puntos repetidos</translation>
+    </message>
+    <message>
+        <source>the outline encloses no area</source>
+        <translation>el contorno no encierra ningún área</translation>
+    </message>
+    <message>
+        <source>the outline is too simple to have an axis: draw a larger, rounder shape</source>
+        <translation>el contorno es demasiado simple para tener un eje: dibuje una forma más grande y redondeada</translation>
+    </message>
+    <message>
+        <source>the sketch is %1 across; sizes from %2 to %3 are supported</source>
+        <translation>el boceto mide %1 de ancho; se admiten tamaños de %2 a %3</translation>
+    </message>
+    <message>
+        <source>the sketch lies too far from the origin for its size: near %1 doubles are %2 apart, more than a millionth of its edges (%3); move it within %4 of the origin</source>
+        <translation>el boceto está demasiado lejos del origen para su tamaño: cerca de %1 los números de coma flotante distan %2, más de una millonésima de sus aristas (%3); acérquelo a menos de %4 del origen</translation>
+    </message>
+    <message>
+        <source>the edge length %1 is too small for this sketch: it would give about %2 vertices, more than the %3 allowed; use 0 (automatic: %4) or an edge length of at least %5</source>
+        <translation>la longitud de arista %1 es demasiado pequeña para este boceto: daría unos %2 vértices, más de los %3 permitidos; use 0 (automática: %4) o una longitud de arista de al menos %5</translation>
+    </message>
+    <message>
+        <source>the surface has a vertex with a non-finite coordinate; the sketch&apos;s numbers are beyond what double precision can build</source>
+        <translation>la superficie tiene un vértice con una coordenada no finita; los números del boceto superan lo que la doble precisión puede construir</translation>
+    </message>
+    <message>
+        <source>the surface has %1 degenerate faces; double precision cannot build this sketch at its position and size</source>
+        <translation>la superficie tiene %1 caras degeneradas; la doble precisión no puede construir este boceto en su posición y tamaño</translation>
+    </message>
+    <message>
+        <source>the target edge length must be 0 (automatic) or a positive length</source>
+        <translation>la longitud de arista objetivo debe ser 0 (automática) o una longitud positiva</translation>
+    </message>
+    <message>
+        <source>least-squares smoothing failed: the surface system could not be factored</source>
+        <translation>falló el suavizado por mínimos cuadrados: no se pudo factorizar el sistema de la superficie</translation>
+    </message>
+    <message>
+        <source>least-squares smoothing failed: the surface system has no finite solution</source>
+        <translation>falló el suavizado por mínimos cuadrados: el sistema de la superficie no tiene solución finita</translation>
+    </message>
+    <message>
+        <source>Only rigged parts can be merged; rig the imported mesh first.</source>
+        <translation>Solo se pueden fusionar piezas con rig; ponga primero un rig a la malla importada.</translation>
+    </message>
+    <message>
+        <source>The merge gave an invalid part (%1); nothing was changed.</source>
+        <translation>La fusión dio una pieza no válida (%1); no se ha cambiado nada.</translation>
+    </message>
+    <message>
+        <source>The dragged part has no joint %1.</source>
+        <translation>La pieza arrastrada no tiene la articulación %1.</translation>
+    </message>
+    <message>
+        <source>The target part has no joint %1.</source>
+        <translation>La pieza de destino no tiene la articulación %1.</translation>
+    </message>
+    <message>
+        <source>The target part has no bone %1.</source>
+        <translation>La pieza de destino no tiene el hueso %1.</translation>
+    </message>
+    <message>
+        <source>The two joints to connect are at the same place; snap them instead.</source>
+        <translation>Las dos articulaciones que se van a conectar están en el mismo sitio; únalas en su lugar.</translation>
+    </message>
+    <message>
+        <source>One of the surfaces intersects itself, so the parts cannot be merged. Rebuild it with a larger edge length or smoothing, then merge again.</source>
+        <translation>Una de las superficies se interseca a sí misma, así que las piezas no se pueden fusionar. Reconstrúyala con una longitud de arista mayor o con suavizado y vuelva a fusionar.</translation>
+    </message>
+    <message>
+        <source>The merged surface would not be a manifold (the parts touch at a point or along a line). Move the dragged part so that it overlaps the other one, then merge again.</source>
+        <translation>La superficie fusionada no sería una variedad (las piezas se tocan en un punto o a lo largo de una línea). Mueva la pieza arrastrada para que se solape con la otra y vuelva a fusionar.</translation>
+    </message>
+    <message>
+        <source>The parts do not touch. Drag one part so that it overlaps the other, then merge.</source>
+        <translation>Las piezas no se tocan. Arrastre una pieza para que se solape con la otra y luego fusione.</translation>
+    </message>
+    <message>
+        <source>One part lies entirely inside the other, so merging would only delete it. Drag it so that it sticks out of the other part, then merge.</source>
+        <translation>Una pieza está totalmente dentro de la otra, así que fusionarlas solo la borraría. Arrástrela para que sobresalga de la otra pieza y luego fusione.</translation>
+    </message>
+    <message>
+        <source>The local skin weights could not be solved; use the global re-computation.</source>
+        <translation>No se pudieron resolver los pesos de piel locales; use el recálculo global.</translation>
+    </message>
+    <message>
+        <source>Only rigged parts can be cut; rig the imported mesh first.</source>
+        <translation>Solo se pueden cortar piezas con rig; ponga primero un rig a la malla importada.</translation>
+    </message>
+    <message>
+        <source>The cut needs a plane: a finite point and a non-zero normal.</source>
+        <translation>El corte necesita un plano: un punto finito y una normal no nula.</translation>
+    </message>
+    <message>
+        <source>The cut&apos;s stroke has a point that is not a finite number.</source>
+        <translation>El trazo del corte tiene un punto que no es un número finito.</translation>
+    </message>
+    <message>
+        <source>The cut does not cross the part. Draw it across the part, from one side of its outline to the other.</source>
+        <translation>El corte no atraviesa la pieza. Trácelo a través de la pieza, de un lado de su contorno al otro.</translation>
+    </message>
+    <message>
+        <source>The cut crosses the part more than once (it would make %1 pieces). Cut where it crosses only once, or cut again.</source>
+        <translation>El corte atraviesa la pieza más de una vez (saldrían %1 trozos). Corte donde la atraviese una sola vez, o vuelva a cortar.</translation>
+    </message>
+    <message>
+        <source>The cut leaves two pieces on the same side of its plane; cut elsewhere.</source>
+        <translation>El corte deja dos trozos al mismo lado de su plano; corte en otro sitio.</translation>
+    </message>
+    <message>
+        <source>The cut leaves a piece without a bone. Cut across a bone, nearer the middle of the part.</source>
+        <translation>El corte deja un trozo sin hueso. Corte a través de un hueso, más cerca del centro de la pieza.</translation>
+    </message>
+    <message>
+        <source>The cut leaves a piece whose skeleton is not one tree; cut elsewhere.</source>
+        <translation>El corte deja un trozo cuyo esqueleto no es un solo árbol; corte en otro sitio.</translation>
+    </message>
+    <message>
+        <source>The patch&apos;s skin weights could not be solved; cut elsewhere.</source>
+        <translation>No se pudieron resolver los pesos de piel del parche; corte en otro sitio.</translation>
+    </message>
+    <message>
+        <source>The cut gave an invalid piece (%1); nothing was changed.</source>
+        <translation>El corte dio un trozo no válido (%1); no se ha cambiado nada.</translation>
+    </message>
+    <message>
+        <source>A cut needs a stroke of two points or more and a view direction.</source>
+        <translation>Un corte necesita un trazo de dos o más puntos y una dirección de vista.</translation>
+    </message>
+    <message>
+        <source>The cut&apos;s stroke must not start and end at the same point.</source>
+        <translation>El trazo del corte no debe empezar y terminar en el mismo punto.</translation>
+    </message>
+    <message>
+        <source>The bone edit gave an invalid part (%1); nothing was changed.</source>
+        <translation>La edición del hueso dio una pieza no válida (%1); no se ha cambiado nada.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton.</source>
+        <translation>La pieza no tiene esqueleto.</translation>
+    </message>
+    <message>
+        <source>The part has no bone %1.</source>
+        <translation>La pieza no tiene el hueso %1.</translation>
+    </message>
+    <message>
+        <source>That is too close to a joint to split the bone; pick a point nearer its middle.</source>
+        <translation>Eso está demasiado cerca de una articulación para dividir el hueso; elija un punto más cerca de su centro.</translation>
+    </message>
+    <message>
+        <source>No part of the surface is led by that bone where it would be split.</source>
+        <translation>Ninguna zona de la superficie depende de ese hueso donde se dividiría.</translation>
+    </message>
+    <message>
+        <source>A part keeps at least one bone; this is its only one.</source>
+        <translation>Una pieza conserva al menos un hueso; este es el único que tiene.</translation>
+    </message>
+    <message>
+        <source>The IK target is not a finite point.</source>
+        <translation>El objetivo de IK no es un punto finito.</translation>
+    </message>
+    <message>
+        <source>Cannot pose a skeleton without joints.</source>
+        <translation>No se puede posar un esqueleto sin articulaciones.</translation>
+    </message>
+    <message>
+        <source>Cannot pose a skeleton without a valid root joint.</source>
+        <translation>No se puede posar un esqueleto sin una articulación raíz válida.</translation>
+    </message>
+    <message>
+        <source>The skeleton has no joint %1.</source>
+        <translation>El esqueleto no tiene la articulación %1.</translation>
+    </message>
+    <message>
+        <source>The pose gives joint %1 a rotation that is not a finite, non-zero quaternion.</source>
+        <translation>La pose da a la articulación %1 una rotación que no es un cuaternión finito y no nulo.</translation>
+    </message>
+    <message>
+        <source>The pose&apos;s root translation is not finite.</source>
+        <translation>La traslación de la raíz de la pose no es finita.</translation>
+    </message>
+    <message>
+        <source>There is already a key at exactly %1 s.</source>
+        <translation>Ya hay una clave exactamente en %1 s.</translation>
+    </message>
+    <message>
+        <source>There is no key at exactly %1 s.</source>
+        <translation>No hay ninguna clave exactamente en %1 s.</translation>
+    </message>
+    <message>
+        <source>There is no key at %1 s.</source>
+        <translation>No hay ninguna clave en %1 s.</translation>
+    </message>
+    <message>
+        <source>There is no key at %1 s to move.</source>
+        <translation>No hay ninguna clave en %1 s que mover.</translation>
+    </message>
+    <message>
+        <source>There is no key at %1 s to delete.</source>
+        <translation>No hay ninguna clave en %1 s que eliminar.</translation>
+    </message>
+    <message>
+        <source>The clip has no keys.</source>
+        <translation>El clip no tiene claves.</translation>
+    </message>
+    <message>
+        <source>Cannot play a clip without keys.</source>
+        <translation>No se puede reproducir un clip sin claves.</translation>
+    </message>
+    <message>
+        <source>A key&apos;s pose must have finite, non-zero rotations and a finite translation.</source>
+        <translation>La pose de una clave debe tener rotaciones finitas no nulas y una traslación finita.</translation>
+    </message>
+    <message>
+        <source>The part has no bone %1 to paint.</source>
+        <translation>La pieza no tiene el hueso %1 para pintar.</translation>
+    </message>
+    <message>
+        <source>Bone %1 is locked; unlock it to paint it.</source>
+        <translation>El hueso %1 está bloqueado; desbloquéelo para pintarlo.</translation>
+    </message>
+    <message>
+        <source>A brush needs a finite centre, a positive radius, and a strength and value between 0 and 1.</source>
+        <translation>Un pincel necesita un centro finito, un radio positivo y una fuerza y un valor entre 0 y 1.</translation>
+    </message>
+    <message>
+        <source>Front faces only needs a finite, non-zero view direction.</source>
+        <translation>«Solo caras frontales» necesita una dirección de vista finita y no nula.</translation>
+    </message>
+    <message>
+        <source>This part is not mirror symmetric any more (merged or cut), so X-mirror cannot paint it.</source>
+        <translation>Esta pieza ya no es simétrica (se fusionó o se cortó), así que el espejo en X no puede pintarla.</translation>
+    </message>
+    <message>
+        <source>The clean threshold must be at least 0 and below 1.</source>
+        <translation>El umbral de limpieza debe ser al menos 0 y menor que 1.</translation>
+    </message>
+    <message>
+        <source>A vertex needs at least one influence.</source>
+        <translation>Un vértice necesita al menos una influencia.</translation>
+    </message>
+    <message>
+        <source>Smooth All needs a factor from 0 to 1 and 1 to 100 passes.</source>
+        <translation>«Suavizar todo» necesita un factor de 0 a 1 y de 1 a 100 pasadas.</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>no se puede escribir %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: the folder %2 does not exist</source>
+        <translation>no se puede escribir %1: la carpeta %2 no existe</translation>
+    </message>
+    <message>
+        <source>cannot write %1: it is a folder</source>
+        <translation>no se puede escribir %1: es una carpeta</translation>
+    </message>
+    <message>
+        <source>cannot write %1: the file is read-only</source>
+        <translation>no se puede escribir %1: el archivo es de solo lectura</translation>
+    </message>
+    <message>
+        <source>cannot write %1: cannot create a file in %2: %3</source>
+        <translation>no se puede escribir %1: no se puede crear un archivo en %2: %3</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2 (is the disk full?)</source>
+        <translation>no se puede escribir %1: %2 (¿está lleno el disco?)</translation>
+    </message>
+    <message>
+        <source>cannot write %1: cannot keep its permissions: %2</source>
+        <translation>no se puede escribir %1: no se pueden conservar sus permisos: %2</translation>
+    </message>
+    <message>
+        <source>cannot export: there is no part</source>
+        <translation>no se puede exportar: no hay ninguna pieza</translation>
+    </message>
+    <message>
+        <source>cannot export part &apos;%1&apos;: it has no surface</source>
+        <translation>no se puede exportar la pieza «%1»: no tiene superficie</translation>
+    </message>
+    <message>
+        <source>cannot export part &apos;%1&apos;: its skin weights do not match its surface</source>
+        <translation>no se puede exportar la pieza «%1»: sus pesos de piel no corresponden a su superficie</translation>
+    </message>
+    <message>
+        <source>cannot export the clip: the times %1 s and %2 s are too close for 32-bit precision this far from 0 s; move the keys nearer to 0 s or further apart</source>
+        <translation>no se puede exportar el clip: los tiempos %1 s y %2 s están demasiado juntos para la precisión de 32 bits tan lejos de 0 s; acerque las claves a 0 s o sepárelas más</translation>
+    </message>
+    <message>
+        <source>subdivision levels must be from 0 to 4, not %1</source>
+        <translation>los niveles de subdivisión deben ir de 0 a 4, no %1</translation>
+    </message>
+    <message>
+        <source>subdividing &apos;%1&apos; %2 times would give over %3 vertices; use fewer levels</source>
+        <translation>subdividir «%1» %2 veces daría más de %3 vértices; use menos niveles</translation>
+    </message>
+    <message>
+        <source>decimating needs a target of at least 4 faces, not %1</source>
+        <translation>diezmar necesita un objetivo de al menos 4 caras, no %1</translation>
+    </message>
+    <message>
+        <source>the surface is not manifold, so it cannot be decimated</source>
+        <translation>la superficie no es una variedad, así que no se puede diezmar</translation>
+    </message>
+</context>
+<context>
+    <name>ImportPartsCommand</name>
+    <message>
+        <source>Import %1</source>
+        <translation>Importar %1</translation>
+    </message>
+</context>
+<context>
+    <name>KeyPoseCommand</name>
+    <message>
+        <source>Key %1 at %2 s</source>
+        <translation>Clave de %1 en %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>MergePartsCommand</name>
+    <message>
+        <source>Merge %1 into %2</source>
+        <translation>Fusionar %1 en %2</translation>
+    </message>
+    <message>
+        <source>merged in %1 ms: %2 vertices, %3 bones; %4 vertices and %5 bones re-skinned</source>
+        <translation>fusionado en %1 ms: %2 vértices, %3 huesos; %4 vértices y %5 huesos con pesos recalculados</translation>
+    </message>
+    <message numerus="yes">
+        <source>; %n bone(s) pruned</source>
+        <translation>
+            <numerusform>; %n hueso eliminado</numerusform>
+            <numerusform>; %n huesos eliminados</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>; %1 lost the pose, pins and keys of %n pruned joint(s)</source>
+        <translation>
+            <numerusform>; %1 perdió la pose, las fijaciones y las claves de %n articulación eliminada</numerusform>
+            <numerusform>; %1 perdió la pose, las fijaciones y las claves de %n articulaciones eliminadas</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>MoveKeyCommand</name>
+    <message>
+        <source>Move key of %1 from %2 s to %3 s</source>
+        <translation>Mover clave de %1 de %2 s a %3 s</translation>
+    </message>
+</context>
+<context>
+    <name>MoveKeysCommand</name>
+    <message numerus="yes">
+        <source>Move %n key(s) of %1 by %2 s</source>
+        <translation>
+            <numerusform>Mover %n clave de %1 en %2 s</numerusform>
+            <numerusform>Mover %n claves de %1 en %2 s</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>MovePartCommand</name>
+    <message>
+        <source>Move %1</source>
+        <translation>Mover %1</translation>
+    </message>
+    <message>
+        <source>Rotate %1</source>
+        <translation>Rotar %1</translation>
+    </message>
+</context>
+<context>
+    <name>PaintWeightsCommand</name>
+    <message>
+        <source>Paint Weights of %1</source>
+        <translation>Pintar pesos de %1</translation>
+    </message>
+</context>
+<context>
+    <name>PasteKeysCommand</name>
+    <message numerus="yes">
+        <source>Paste %n key(s) into %1</source>
+        <translation>
+            <numerusform>Pegar %n clave en %1</numerusform>
+            <numerusform>Pegar %n claves en %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>the clip of &quot;%1&quot; is not exported: the current pose is the file&apos;s rest shape</source>
+        <translation>el clip de «%1» no se exporta: la pose actual es la forma de reposo del archivo</translation>
+    </message>
+    <message>
+        <source>the clip of &quot;%1&quot; is not exported: its current pose is the file&apos;s one key</source>
+        <translation>el clip de «%1» no se exporta: su pose actual es la única clave del archivo</translation>
+    </message>
+    <message>
+        <source>RigMesh documents (*.%1)</source>
+        <translation>Documentos de RigMesh (*.%1)</translation>
+    </message>
+</context>
+<context>
+    <name>RebuildPartCommand</name>
+    <message>
+        <source>Rebuild %1</source>
+        <translation>Reconstruir %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>the pose, pins and keys of %n joint(s) were dropped: the new skeleton has no joint there</source>
+        <translation>
+            <numerusform>se descartaron la pose, las fijaciones y las claves de %n articulación: el nuevo esqueleto no tiene ninguna allí</numerusform>
+            <numerusform>se descartaron la pose, las fijaciones y las claves de %n articulaciones: el nuevo esqueleto no tiene ninguna allí</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>RenamePartCommand</name>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>Renombrar %1 a %2</translation>
+    </message>
+</context>
+<context>
+    <name>ResetPoseCommand</name>
+    <message>
+        <source>Reset pose of %1</source>
+        <translation>Restablecer pose de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetBoneLockCommand</name>
+    <message>
+        <source>Lock Weights of %1 in %2</source>
+        <translation>Bloquear pesos de %1 en %2</translation>
+    </message>
+    <message>
+        <source>Unlock Weights of %1 in %2</source>
+        <translation>Desbloquear pesos de %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetClipSettingsCommand</name>
+    <message>
+        <source>Set clip of %1</source>
+        <translation>Ajustar clip de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetJointPinnedCommand</name>
+    <message>
+        <source>Pin %1</source>
+        <translation>Fijar %1</translation>
+    </message>
+    <message>
+        <source>Unpin %1</source>
+        <translation>Soltar %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPartVisibleCommand</name>
+    <message>
+        <source>Show %1</source>
+        <translation>Mostrar %1</translation>
+    </message>
+    <message>
+        <source>Hide %1</source>
+        <translation>Ocultar %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPoseCommand</name>
+    <message>
+        <source>Pose %1</source>
+        <translation>Posar %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetTimelineCommand</name>
+    <message>
+        <source>Set the frame range to %1-%2 at %3 fps</source>
+        <translation>Ajustar el rango de fotogramas a %1-%2 a %3 fps</translation>
+    </message>
+</context>
+<context>
+    <name>WeightCleanupCommand</name>
+    <message>
+        <source>Normalize All Weights of %1</source>
+        <translation>Normalizar todos los pesos de %1</translation>
+    </message>
+    <message>
+        <source>Clean Weights of %1</source>
+        <translation>Limpiar pesos de %1</translation>
+    </message>
+    <message>
+        <source>Limit Total Weights of %1</source>
+        <translation>Limitar el total de pesos de %1</translation>
+    </message>
+    <message>
+        <source>Smooth All Weights of %1</source>
+        <translation>Suavizar todos los pesos de %1</translation>
+    </message>
+    <message>
+        <source>Recompute Weights of %1</source>
+        <translation>Recalcular los pesos de %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::Autosave</name>
+    <message>
+        <source>Cannot create the recovery folder &quot;%1&quot;.</source>
+        <translation>No se puede crear la carpeta de recuperación «%1».</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::BoneEditCommand</name>
+    <message>
+        <source>The part has no skeleton to edit.</source>
+        <translation>La pieza no tiene esqueleto que editar.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::ClipListCommand</name>
+    <message>
+        <source>%1 already has a clip named &quot;%2&quot;.</source>
+        <translation>%1 ya tiene un clip llamado «%2».</translation>
+    </message>
+    <message>
+        <source>%1 has no clip named &quot;%2&quot;.</source>
+        <translation>%1 no tiene ningún clip llamado «%2».</translation>
+    </message>
+    <message>
+        <source>%1 has only this clip: a part keeps one clip (delete its keys instead).</source>
+        <translation>%1 solo tiene este clip: una pieza conserva un clip (elimine sus claves en su lugar).</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::CutPartCommand</name>
+    <message>
+        <source>The part has no surface to cut.</source>
+        <translation>La pieza no tiene superficie que cortar.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::Document</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Sin título</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::DocumentExport</name>
+    <message>
+        <source>there are no parts to export</source>
+        <translation>no hay piezas que exportar</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not rigged yet: export it as OBJ, or hide it and export the visible parts</source>
+        <translation>«%1» todavía no tiene rig: expórtela como OBJ, u ocúltela y exporte las piezas visibles</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::DocumentFile</name>
+    <message>
+        <source>The document is corrupt: %1.</source>
+        <translation>El documento está dañado: %1.</translation>
+    </message>
+    <message>
+        <source>This is not a RigMesh Studio document.</source>
+        <translation>Esto no es un documento de RigMesh Studio.</translation>
+    </message>
+    <message>
+        <source>This document was saved by a newer RigMesh Studio (format version %1); this version reads format version %2 and older. Please update RigMesh Studio.</source>
+        <translation>Este documento se guardó con un RigMesh Studio más reciente (versión de formato %1); esta versión lee la versión de formato %2 y anteriores. Actualice RigMesh Studio.</translation>
+    </message>
+    <message>
+        <source>The file is empty.</source>
+        <translation>El archivo está vacío.</translation>
+    </message>
+    <message>
+        <source>The document is corrupt or truncated (%1).</source>
+        <translation>El documento está dañado o truncado (%1).</translation>
+    </message>
+    <message>
+        <source>Cannot save &quot;%1&quot;: %2</source>
+        <translation>No se puede guardar «%1»: %2</translation>
+    </message>
+    <message>
+        <source>Cannot open &quot;%1&quot;: %2</source>
+        <translation>No se puede abrir «%1»: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::ImportReader</name>
+    <message>
+        <source>cannot import %1: no such file</source>
+        <translation>no se puede importar %1: el archivo no existe</translation>
+    </message>
+    <message>
+        <source>cannot import %1: not a file</source>
+        <translation>no se puede importar %1: no es un archivo</translation>
+    </message>
+    <message>
+        <source>cannot import %1: the program that reads imports (rigmesh) is not installed</source>
+        <translation>no se puede importar %1: el programa que lee las importaciones (rigmesh) no está instalado</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::MergePartsCommand</name>
+    <message>
+        <source>A part cannot be merged into itself.</source>
+        <translation>Una pieza no se puede fusionar consigo misma.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::MoveKeysCommand</name>
+    <message>
+        <source>There are no keys to move.</source>
+        <translation>No hay claves que mover.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::PartBuilder</name>
+    <message>
+        <source>The target edge length must be 0 (automatic) or a positive length.</source>
+        <translation>La longitud de arista objetivo debe ser 0 (automática) o una longitud positiva.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::PartClips</name>
+    <message>
+        <source>A clip name must have 1 to %1 characters.</source>
+        <translation>Un nombre de clip debe tener de 1 a %1 caracteres.</translation>
+    </message>
+    <message>
+        <source>A clip name must not start or end with a space.</source>
+        <translation>Un nombre de clip no debe empezar ni terminar con un espacio.</translation>
+    </message>
+    <message>
+        <source>A clip name must not hold control characters.</source>
+        <translation>Un nombre de clip no debe contener caracteres de control.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::PartNode</name>
+    <message>
+        <source>Joint %1</source>
+        <translation>Articulación %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::PasteKeysCommand</name>
+    <message>
+        <source>There are no keys to paste.</source>
+        <translation>No hay claves que pegar.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::PoseChange</name>
+    <message>
+        <source>%1 and key</source>
+        <translation>%1 e insertar clave</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::PoseDrag</name>
+    <message>
+        <source>The part has no skeleton to pose.</source>
+        <translation>La pieza no tiene esqueleto que posar.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::SceneItemModel</name>
+    <message>
+        <source>%1 vertices, %2 faces</source>
+        <translation>%1 vértices, %2 caras</translation>
+    </message>
+    <message>
+        <source>Skeleton</source>
+        <translation>Esqueleto</translation>
+    </message>
+    <message>
+        <source>%1 joints, %2 bones</source>
+        <translation>%1 articulaciones, %2 huesos</translation>
+    </message>
+    <message>
+        <source>Joint %1 (root)</source>
+        <translation>Articulación %1 (raíz)</translation>
+    </message>
+    <message>
+        <source>Joint %1</source>
+        <translation>Articulación %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>, bone %1: %n vertices</source>
+        <translation>
+            <numerusform>, hueso %1: %n vértice</numerusform>
+            <numerusform>, hueso %1: %n vértices</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 (pinned)</source>
+        <translation>%1 (fijada)</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Info</source>
+        <translation>Información</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::SetBoneLockCommand</name>
+    <message>
+        <source>The part has no bone %1 to lock.</source>
+        <translation>La pieza no tiene el hueso %1 para bloquear.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::SkinningEditCommand</name>
+    <message>
+        <source>The part has no skeleton, so it has no weights to paint.</source>
+        <translation>La pieza no tiene esqueleto, así que no tiene pesos que pintar.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton, so it has no weights to lock.</source>
+        <translation>La pieza no tiene esqueleto, así que no tiene pesos que bloquear.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton, so it has no weights to clean up.</source>
+        <translation>La pieza no tiene esqueleto, así que no tiene pesos que limpiar.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::Timeline</name>
+    <message>
+        <source>The frame rate must be between %1 and %2 frames per second.</source>
+        <translation>La velocidad de fotogramas debe estar entre %1 y %2 fotogramas por segundo.</translation>
+    </message>
+    <message>
+        <source>The frame range must lie within frames 0 to %1.</source>
+        <translation>El rango de fotogramas debe estar entre los fotogramas 0 y %1.</translation>
+    </message>
+    <message>
+        <source>The frame range must end after it starts.</source>
+        <translation>El rango de fotogramas debe terminar después de empezar.</translation>
+    </message>
+    <message>
+        <source>The frame range is longer than a clip can be.</source>
+        <translation>El rango de fotogramas es más largo de lo que puede ser un clip.</translation>
+    </message>
+    <message>
+        <source>Frame %1 is outside frames 0 to %2.</source>
+        <translation>El fotograma %1 está fuera de los fotogramas 0 a %2.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::TimelineEdits</name>
+    <message numerus="yes">
+        <source>Paste %n key(s)</source>
+        <translation>
+            <numerusform>Pegar %n clave</numerusform>
+            <numerusform>Pegar %n claves</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::model::TimelineItemModel</name>
+    <message>
+        <source>%1: key at frame %2 (%3 s)</source>
+        <translation>%1: clave en el fotograma %2 (%3 s)</translation>
+    </message>
+    <message>
+        <source>Frame %1: %2 s</source>
+        <translation>Fotograma %1: %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::studio</name>
+    <message>
+        <source>Example: %1</source>
+        <translation>Ejemplo: %1</translation>
+    </message>
+    <message>
+        <source>Sketch a silhouette, get a rigged part.</source>
+        <translation>Dibuje una silueta y obtenga una pieza con rig.</translation>
+    </message>
+    <message>
+        <source>RigMesh documents to open</source>
+        <translation>Documentos de RigMesh que abrir</translation>
+    </message>
+    <message>
+        <source>Save a picture of the window to FILE after start-up and quit.</source>
+        <translation>Guardar una imagen de la ventana en ARCHIVO tras el arranque y salir.</translation>
+    </message>
+    <message>
+        <source>FILE</source>
+        <translation>ARCHIVO</translation>
+    </message>
+    <message>
+        <source>RigMesh Studio</source>
+        <translation>RigMesh Studio</translation>
+    </message>
+    <message>
+        <source>documents</source>
+        <translation>documentos</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::BusyBar</name>
+    <message>
+        <source>Working</source>
+        <translation>Trabajando</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::CutTool</name>
+    <message>
+        <source>Cut: drag a line across a part, from outside it to outside it; release cuts it in two with a smooth face, Shift + release with a flat one; Esc cancels</source>
+        <translation>Cortar: trace una línea a través de una pieza, de fuera a fuera; al soltar se corta en dos con una cara suave, Mayús + soltar con una plana; Esc cancela</translation>
+    </message>
+    <message>
+        <source>Nothing cut: the line does not cross a part</source>
+        <translation>No se ha cortado nada: la línea no atraviesa ninguna pieza</translation>
+    </message>
+    <message>
+        <source>Nothing cut: draw the line across the whole part, from outside it to outside it</source>
+        <translation>No se ha cortado nada: trace la línea a través de toda la pieza, de fuera a fuera</translation>
+    </message>
+    <message>
+        <source>%1 in %2 ms (%3)</source>
+        <translation>%1 en %2 ms (%3)</translation>
+    </message>
+    <message>
+        <source>smooth face</source>
+        <translation>cara suave</translation>
+    </message>
+    <message>
+        <source>flat face</source>
+        <translation>cara plana</translation>
+    </message>
+    <message>
+        <source>Nothing cut: %1</source>
+        <translation>No se ha cortado nada: %1</translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <translation>Cortar</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::DocumentView</name>
+    <message>
+        <source>Created %1</source>
+        <translation>Se ha creado %1</translation>
+    </message>
+    <message>
+        <source>Nothing created: %1</source>
+        <translation>No se ha creado nada: %1</translation>
+    </message>
+    <message>
+        <source>Part %1</source>
+        <translation>Pieza %1</translation>
+    </message>
+    <message>
+        <source>Building %1</source>
+        <translation>Construyendo %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::ExportDialog</name>
+    <message>
+        <source>glTF 2.0 binary (.glb)</source>
+        <translation>glTF 2.0 binario (.glb)</translation>
+    </message>
+    <message>
+        <source>glTF 2.0 (.gltf + .bin)</source>
+        <translation>glTF 2.0 (.gltf + .bin)</translation>
+    </message>
+    <message>
+        <source>FBX binary (.fbx)</source>
+        <translation>FBX binario (.fbx)</translation>
+    </message>
+    <message>
+        <source>COLLADA (.dae)</source>
+        <translation>COLLADA (.dae)</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ, static mesh (.obj)</source>
+        <translation>Wavefront OBJ, malla estática (.obj)</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportar</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Examinar...</translation>
+    </message>
+    <message>
+        <source>all the format allows</source>
+        <translation>todas las que permita el formato</translation>
+    </message>
+    <message>
+        <source>Bones per vertex; extra influences are cut and the rest renormalised</source>
+        <translation>Huesos por vértice; las influencias de más se eliminan y el resto se renormaliza</translation>
+    </message>
+    <message>
+        <source>Rest pose</source>
+        <translation>Posición de reposo</translation>
+    </message>
+    <message>
+        <source>Current pose as the rest shape</source>
+        <translation>Pose actual como forma de reposo</translation>
+    </message>
+    <message>
+        <source>Current pose as one key</source>
+        <translation>Pose actual como una clave</translation>
+    </message>
+    <message>
+        <source>As one key, the file keeps the rest shape and the skeleton opens in the current pose (an animation of a single key at 0 s)</source>
+        <translation>Como una clave, el archivo conserva la forma de reposo y el esqueleto se abre en la pose actual (una animación de una sola clave en 0 s)</translation>
+    </message>
+    <message>
+        <source>Animation (each part&apos;s keyed clip)</source>
+        <translation>Animación (el clip con claves de cada pieza)</translation>
+    </message>
+    <message>
+        <source>Add leaf bones (an end bone at each leaf&apos;s tail)</source>
+        <translation>Añadir huesos finales (un hueso final en la cola de cada hoja)</translation>
+    </message>
+    <message>
+        <source>Like Blender&apos;s FBX option: importers then also know how long each leaf bone is</source>
+        <translation>Como la opción FBX de Blender: así los importadores también saben cuánto mide cada hueso hoja</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <source>Rounds of Loop subdivision: each makes four triangles of one; skin weights are carried</source>
+        <translation>Pasadas de subdivisión Loop: cada una convierte un triángulo en cuatro; los pesos de piel se conservan</translation>
+    </message>
+    <message>
+        <source>keep all</source>
+        <translation>conservar todas</translation>
+    </message>
+    <message>
+        <source> faces</source>
+        <translation> caras</translation>
+    </message>
+    <message>
+        <source>At most this many triangles per part (quadric error); every kept vertex keeps its weights</source>
+        <translation>Como mucho esta cantidad de triángulos por pieza (error cuadrático); cada vértice conservado mantiene sus pesos</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Archivo</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Formato</translation>
+    </message>
+    <message>
+        <source>Influences</source>
+        <translation>Influencias</translation>
+    </message>
+    <message>
+        <source>Subdivide</source>
+        <translation>Subdividir</translation>
+    </message>
+    <message>
+        <source>Decimate to</source>
+        <translation>Diezmar a</translation>
+    </message>
+    <message>
+        <source>Pose</source>
+        <translation>Pose</translation>
+    </message>
+    <message>
+        <source>Export to</source>
+        <translation>Exportar a</translation>
+    </message>
+    <message>
+        <source>%1 (*.%2)</source>
+        <translation>%1 (*.%2)</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::JobRunner</name>
+    <message>
+        <source>Out of memory.</source>
+        <translation>Memoria insuficiente.</translation>
+    </message>
+    <message>
+        <source>Internal error: %1</source>
+        <translation>Error interno: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::JobStatus</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Stop waiting: the document stays as it was (Esc)</source>
+        <translation>Dejar de esperar: el documento queda como estaba (Esc)</translation>
+    </message>
+    <message>
+        <source>%1… %2 s</source>
+        <translation>%1… %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::KeyDrag</name>
+    <message numerus="yes">
+        <source>Move keys by %n frame(s)</source>
+        <translation>
+            <numerusform>Mover claves %n fotograma</numerusform>
+            <numerusform>Mover claves %n fotogramas</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::MainWindow</name>
+    <message>
+        <source>Ready: S sketches a part, Q selects, P poses; %1</source>
+        <translation>Listo: S dibuja una pieza, Q selecciona, P posa; %1</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Principal</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nuevo</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>&amp;Abrir...</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Abrir &amp;reciente</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Guardar</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Guardar &amp;como...</translation>
+    </message>
+    <message>
+        <source>&amp;Import...</source>
+        <translation>&amp;Importar...</translation>
+    </message>
+    <message>
+        <source>&amp;Export...</source>
+        <translation>&amp;Exportar...</translation>
+    </message>
+    <message>
+        <source>Save History as &amp;Recipe...</source>
+        <translation>Guardar historial como &amp;receta...</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Cerrar</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Salir</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Editar</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Deshacer</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rehacer</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Part</source>
+        <translation>&amp;Eliminar pieza</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences...</source>
+        <translation>&amp;Preferencias...</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Vista</translation>
+    </message>
+    <message>
+        <source>Frame &amp;All</source>
+        <translation>Encuadrar &amp;todo</translation>
+    </message>
+    <message>
+        <source>Frame &amp;Selected</source>
+        <translation>Encuadrar &amp;selección</translation>
+    </message>
+    <message>
+        <source>&amp;Wireframe</source>
+        <translation>Estructura de &amp;alambre</translation>
+    </message>
+    <message>
+        <source>&amp;Dual Quaternion Skinning</source>
+        <translation>Skinning con &amp;cuaterniones duales</translation>
+    </message>
+    <message>
+        <source>Off: linear blend skinning</source>
+        <translation>Desactivado: skinning por mezcla lineal</translation>
+    </message>
+    <message>
+        <source>&amp;Weights</source>
+        <translation>&amp;Pesos</translation>
+    </message>
+    <message>
+        <source>&amp;Off</source>
+        <translation>&amp;Desactivado</translation>
+    </message>
+    <message>
+        <source>&amp;Selected Bone (select its joint)</source>
+        <translation>Hueso &amp;seleccionado (seleccione su articulación)</translation>
+    </message>
+    <message>
+        <source>&amp;Dominant Bone</source>
+        <translation>Hueso &amp;dominante</translation>
+    </message>
+    <message>
+        <source>&amp;Influence Count</source>
+        <translation>Número de &amp;influencias</translation>
+    </message>
+    <message>
+        <source>Difference from &amp;Global Weights</source>
+        <translation>Diferencia con los pesos &amp;globales</translation>
+    </message>
+    <message>
+        <source>Weights of the selected joint&apos;s bone: blue 0, green 0.5, red 1, dark blue none</source>
+        <translation>Pesos del hueso de la articulación seleccionada: azul 0, verde 0,5, rojo 1, azul oscuro ninguno</translation>
+    </message>
+    <message>
+        <source>&amp;Grid</source>
+        <translation>&amp;Cuadrícula</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Herramientas</translation>
+    </message>
+    <message>
+        <source>&amp;Select / Move</source>
+        <translation>&amp;Seleccionar / Mover</translation>
+    </message>
+    <message>
+        <source>S&amp;ketch Part</source>
+        <translation>&amp;Dibujar pieza</translation>
+    </message>
+    <message>
+        <source>&amp;Pose</source>
+        <translation>&amp;Posar</translation>
+    </message>
+    <message>
+        <source>&amp;Merge Parts</source>
+        <translation>&amp;Fusionar piezas</translation>
+    </message>
+    <message>
+        <source>&amp;Cut Part</source>
+        <translation>&amp;Cortar pieza</translation>
+    </message>
+    <message>
+        <source>Paint &amp;Weights</source>
+        <translation>Pintar &amp;pesos</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Pose</source>
+        <translation>&amp;Restablecer pose</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;yuda</translation>
+    </message>
+    <message>
+        <source>&amp;Mouse Gestures</source>
+        <translation>&amp;Gestos del ratón</translation>
+    </message>
+    <message>
+        <source>&amp;About RigMesh Studio</source>
+        <translation>&amp;Acerca de RigMesh Studio</translation>
+    </message>
+    <message>
+        <source>About RigMesh Studio</source>
+        <translation>Acerca de RigMesh Studio</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;RigMesh Studio&lt;/b&gt;&lt;p&gt;Sketch a silhouette, get a rigged part: surface, skeleton and skin weights, after Borosán et al., &lt;i&gt;RigMesh&lt;/i&gt;, SIGGRAPH Asia 2012.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;RigMesh Studio&lt;/b&gt;&lt;p&gt;Dibuje una silueta y obtenga una pieza con rig: superficie, esqueleto y pesos de piel, según Borosán et al., &lt;i&gt;RigMesh&lt;/i&gt;, SIGGRAPH Asia 2012.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Outliner</source>
+        <translation>Listado</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Propiedades</translation>
+    </message>
+    <message>
+        <source>Skin Weights</source>
+        <translation>Pesos de piel</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Historial</translation>
+    </message>
+    <message>
+        <source>&lt;original&gt;</source>
+        <translation>&lt;original&gt;</translation>
+    </message>
+    <message>
+        <source>This tool has no options.</source>
+        <translation>Esta herramienta no tiene opciones.</translation>
+    </message>
+    <message>
+        <source>Tool Options</source>
+        <translation>Opciones de herramienta</translation>
+    </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Línea de tiempo</translation>
+    </message>
+    <message>
+        <source>&amp;Animation</source>
+        <translation>A&amp;nimación</translation>
+    </message>
+    <message>
+        <source>&amp;Play / Pause</source>
+        <translation>&amp;Reproducir / Pausa</translation>
+    </message>
+    <message>
+        <source>Pre&amp;vious Frame</source>
+        <translation>Fotograma a&amp;nterior</translation>
+    </message>
+    <message>
+        <source>&amp;Next Frame</source>
+        <translation>Fotograma &amp;siguiente</translation>
+    </message>
+    <message>
+        <source>Jump to &amp;Start</source>
+        <translation>Ir al &amp;inicio</translation>
+    </message>
+    <message>
+        <source>Jump to &amp;End</source>
+        <translation>Ir al &amp;final</translation>
+    </message>
+    <message>
+        <source>&amp;Insert Key</source>
+        <translation>Insertar &amp;clave</translation>
+    </message>
+    <message>
+        <source>%1[*] - RigMesh Studio</source>
+        <translation>%1[*] - RigMesh Studio</translation>
+    </message>
+    <message>
+        <source>RigMesh Studio</source>
+        <translation>RigMesh Studio</translation>
+    </message>
+    <message>
+        <source>Untitled %1</source>
+        <translation>Sin título %1</translation>
+    </message>
+    <message>
+        <source>Open Document</source>
+        <translation>Abrir documento</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Se ha abierto %1</translation>
+    </message>
+    <message>
+        <source>Cannot open document</source>
+        <translation>No se puede abrir el documento</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Se ha guardado %1</translation>
+    </message>
+    <message>
+        <source>Cannot save document</source>
+        <translation>No se puede guardar el documento</translation>
+    </message>
+    <message>
+        <source>Save Document</source>
+        <translation>Guardar documento</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Cambios sin guardar</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 tiene cambios sin guardar. ¿Guardarlos?</translation>
+    </message>
+    <message>
+        <source>Select a part to reset its pose</source>
+        <translation>Seleccione una pieza para restablecer su pose</translation>
+    </message>
+    <message>
+        <source>Select a part to delete</source>
+        <translation>Seleccione la pieza que eliminar</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work?</source>
+        <translation>¿Recuperar el trabajo sin guardar?</translation>
+    </message>
+    <message>
+        <source>RigMesh Studio did not close properly. Restore the document autosaved at %1?</source>
+        <translation>RigMesh Studio no se cerró correctamente. ¿Restaurar el documento guardado automáticamente el %1?</translation>
+    </message>
+    <message>
+        <source>Could not recover: %1</source>
+        <translation>No se pudo recuperar: %1</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importar</translation>
+    </message>
+    <message>
+        <source>3D scenes (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;All files (*)</source>
+        <translation>Escenas 3D (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>: %1 of them without a skeleton. Rigging imported meshes is not available yet, so they cannot be posed; you can move, save and export them as OBJ.</source>
+        <translation>: %1 de ellas sin esqueleto. Todavía no se pueden poner rigs a mallas importadas, así que no se pueden posar; puede moverlas, guardarlas y exportarlas como OBJ.</translation>
+    </message>
+    <message>
+        <source>Imported without a rig</source>
+        <translation>Importado sin rig</translation>
+    </message>
+    <message>
+        <source>Cannot import</source>
+        <translation>No se puede importar</translation>
+    </message>
+    <message>
+        <source>Save History as Recipe</source>
+        <translation>Guardar historial como receta</translation>
+    </message>
+    <message>
+        <source>RigMesh recipes (*.json)</source>
+        <translation>Recetas de RigMesh (*.json)</translation>
+    </message>
+    <message>
+        <source>Saved the history as %1: replay it with rigmesh run</source>
+        <translation>Se ha guardado el historial como %1: reprodúzcalo con rigmesh run</translation>
+    </message>
+    <message>
+        <source>Cannot save the recipe</source>
+        <translation>No se puede guardar la receta</translation>
+    </message>
+    <message>
+        <source>Nothing to export: sketch a part first</source>
+        <translation>No hay nada que exportar: dibuje primero una pieza</translation>
+    </message>
+    <message>
+        <source>no animation: no visible part has keys</source>
+        <translation>sin animación: ninguna pieza visible tiene claves</translation>
+    </message>
+    <message>
+        <source>Exported %1%2</source>
+        <translation>Se ha exportado %1%2</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>No se puede exportar</translation>
+    </message>
+    <message>
+        <source>The new language applies when RigMesh Studio starts again.</source>
+        <translation>El nuevo idioma se aplicará cuando RigMesh Studio se vuelva a iniciar.</translation>
+    </message>
+    <message>
+        <source>Weight View</source>
+        <translation>Vista de pesos</translation>
+    </message>
+    <message>
+        <source> Weights: </source>
+        <translation> Pesos: </translation>
+    </message>
+    <message>
+        <source>Colour the surface by its skin weights (View &gt; Weights)</source>
+        <translation>Colorear la superficie según sus pesos de piel (Vista &gt; Pesos)</translation>
+    </message>
+    <message>
+        <source>Weigh&amp;ts</source>
+        <translation>Pe&amp;sos</translation>
+    </message>
+    <message>
+        <source>Select a part first</source>
+        <translation>Seleccione primero una pieza</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n vertices changed</source>
+        <translation>
+            <numerusform>%1: %n vértice cambiado</numerusform>
+            <numerusform>%1: %n vértices cambiados</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Normalize All</source>
+        <translation>&amp;Normalizar todo</translation>
+    </message>
+    <message>
+        <source>&amp;Clean (below 0.01)</source>
+        <translation>&amp;Limpiar (por debajo de 0,01)</translation>
+    </message>
+    <message>
+        <source>&amp;Limit Total (4 bones)</source>
+        <translation>Limitar &amp;total (4 huesos)</translation>
+    </message>
+    <message>
+        <source>&amp;Smooth All</source>
+        <translation>&amp;Suavizar todo</translation>
+    </message>
+    <message>
+        <source>Every unlocked bone&apos;s weight halfway towards its neighbours&apos; mean</source>
+        <translation>El peso de cada hueso no bloqueado, a medio camino hacia la media de sus vecinos</translation>
+    </message>
+    <message>
+        <source>Check &amp;Rig</source>
+        <translation>&amp;Comprobar rig</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n part(s) from %1</source>
+        <translation>
+            <numerusform>Se ha importado %n pieza de %1</numerusform>
+            <numerusform>Se han importado %n piezas de %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>Importando %1</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled</source>
+        <translation>Importación de %1 cancelada</translation>
+    </message>
+    <message>
+        <source>Cannot write into %1</source>
+        <translation>No se puede escribir en %1</translation>
+    </message>
+    <message>
+        <source>Exporting %1</source>
+        <translation>Exportando %1</translation>
+    </message>
+    <message>
+        <source>%1 could not be replaced: %2</source>
+        <translation>No se ha podido reemplazar %1: %2</translation>
+    </message>
+    <message>
+        <source>Export of %1 cancelled: nothing written</source>
+        <translation>Exportación de %1 cancelada: no se ha escrito nada</translation>
+    </message>
+    <message>
+        <source>Recompute Weights</source>
+        <translation>Recalcular pesos</translation>
+    </message>
+    <message>
+        <source>&amp;Recompute Weights (Bone Heat)</source>
+        <translation>&amp;Recalcular pesos (calor de huesos)</translation>
+    </message>
+    <message>
+        <source>Bone heat over the whole part again, as a new sketch gets it; locked bones keep their weights</source>
+        <translation>Calor de huesos de nuevo sobre toda la pieza, como lo recibe un boceto nuevo; los huesos bloqueados conservan sus pesos</translation>
+    </message>
+    <message>
+        <source>%1 has no skeleton, so it has no weights to recompute</source>
+        <translation>%1 no tiene esqueleto, así que no tiene pesos que recalcular</translation>
+    </message>
+    <message>
+        <source>The weights of %1 were painted or cleaned up by hand. Recomputing them by bone heat replaces that work (locked bones keep theirs; Undo brings it back). Recompute anyway?</source>
+        <translation>Los pesos de %1 se pintaron o limpiaron a mano. Recalcularlos con calor de huesos sustituye ese trabajo (los huesos bloqueados conservan los suyos; Deshacer lo recupera). ¿Recalcular de todos modos?</translation>
+    </message>
+    <message>
+        <source>Weights not recomputed: the painted weights are kept</source>
+        <translation>No se han recalculado los pesos: se conservan los pesos pintados</translation>
+    </message>
+    <message>
+        <source>Recomputing the weights of %1</source>
+        <translation>Recalculando los pesos de %1</translation>
+    </message>
+    <message>
+        <source>Weights not recomputed: %1</source>
+        <translation>No se han recalculado los pesos: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::MergeTool</name>
+    <message>
+        <source>Drag the part into another to merge them</source>
+        <translation>Arrastre la pieza dentro de otra para fusionarlas</translation>
+    </message>
+    <message>
+        <source>%1 (%2 ms in all)</source>
+        <translation>%1 (%2 ms en total)</translation>
+    </message>
+    <message>
+        <source>Not merged: %1</source>
+        <translation>No se ha fusionado: %1</translation>
+    </message>
+    <message>
+        <source>Merge cancelled</source>
+        <translation>Fusión cancelada</translation>
+    </message>
+    <message>
+        <source>Merge</source>
+        <translation>Fusionar</translation>
+    </message>
+    <message>
+        <source>Merge: drag a part into another; release over the lit joints to snap, split or connect them (Shift + release splits, Ctrl + release connects at once); Esc cancels</source>
+        <translation>Fusionar: arrastre una pieza dentro de otra; suelte sobre las articulaciones resaltadas para ajustarlas, dividir o conectarlas (Mayús + soltar divide, Ctrl + soltar conecta directamente); Esc cancela</translation>
+    </message>
+    <message>
+        <source>Release to choose: snap, split or connect %1 of %2 and %3 of %4 (Shift: split, Ctrl: connect, Esc: cancel)</source>
+        <translation>Suelte para elegir: ajustar, dividir o conectar %1 de %2 y %3 de %4 (Mayús: dividir, Ctrl: conectar, Esc: cancelar)</translation>
+    </message>
+    <message>
+        <source>Snap %1 of %2 onto %3 of %4 (Esc: cancel)</source>
+        <translation>Ajustar %1 de %2 sobre %3 de %4 (Esc: cancelar)</translation>
+    </message>
+    <message>
+        <source>Split a bone of %1 and snap %2 of %3 there (Esc: cancel)</source>
+        <translation>Dividir un hueso de %1 y ajustar allí %2 de %3 (Esc: cancelar)</translation>
+    </message>
+    <message>
+        <source>Connect %1 of %2 to %3 of %4 by a new bone (Esc: cancel)</source>
+        <translation>Conectar %1 de %2 con %3 de %4 mediante un hueso nuevo (Esc: cancelar)</translation>
+    </message>
+    <message>
+        <source>&amp;Snap the joints together</source>
+        <translation>&amp;Ajustar las articulaciones</translation>
+    </message>
+    <message>
+        <source>S&amp;plit the bone here</source>
+        <translation>&amp;Dividir el hueso aquí</translation>
+    </message>
+    <message>
+        <source>&amp;Connect by a new bone</source>
+        <translation>&amp;Conectar con un hueso nuevo</translation>
+    </message>
+    <message>
+        <source>Cancel (Esc)</source>
+        <translation>Cancelar (Esc)</translation>
+    </message>
+    <message>
+        <source>Merging %1 into %2</source>
+        <translation>Fusionando %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::MouseBindings</name>
+    <message>
+        <source>Alt + left drag orbits, Alt + middle drag pans, Alt + right drag or the wheel zooms</source>
+        <translation>Alt + arrastre izquierdo orbita, Alt + arrastre central desplaza, Alt + arrastre derecho o la rueda hace zoom</translation>
+    </message>
+    <message>
+        <source>middle drag orbits, Shift + middle drag pans, Ctrl + middle drag or the wheel zooms</source>
+        <translation>arrastre central orbita, Mayús + arrastre central desplaza, Ctrl + arrastre central o la rueda hace zoom</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::MouseHint</name>
+    <message>
+        <source>&lt;b&gt;Alt + left-drag&lt;/b&gt; orbits the view, &lt;b&gt;Alt + middle-drag&lt;/b&gt; pans, &lt;b&gt;Alt + right-drag&lt;/b&gt; zooms&lt;br&gt;</source>
+        <translation>&lt;b&gt;Alt + arrastre izquierdo&lt;/b&gt; orbita la vista, &lt;b&gt;Alt + arrastre central&lt;/b&gt; la desplaza, &lt;b&gt;Alt + arrastre derecho&lt;/b&gt; hace zoom&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Middle-drag&lt;/b&gt; orbits the view, &lt;b&gt;Shift + middle-drag&lt;/b&gt; pans&lt;br&gt;</source>
+        <translation>&lt;b&gt;Arrastre central&lt;/b&gt; orbita la vista, &lt;b&gt;Mayús + arrastre central&lt;/b&gt; la desplaza&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Left-drag&lt;/b&gt; draws a part with the Sketch tool (S), moves it with Select (Q), bends a joint or bone with Pose (P)&lt;br&gt;</source>
+        <translation>&lt;b&gt;Arrastre izquierdo&lt;/b&gt; dibuja una pieza con la herramienta Boceto (S), la mueve con Seleccionar (Q) y dobla una articulación o un hueso con Posar (P)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Wheel&lt;/b&gt; zooms, &lt;b&gt;Home&lt;/b&gt; frames everything&lt;br&gt;&lt;small&gt;Click to close; Help &amp;gt; Mouse Gestures shows this again&lt;/small&gt;</source>
+        <translation>&lt;b&gt;Rueda&lt;/b&gt; hace zoom, &lt;b&gt;Inicio&lt;/b&gt; encuadra todo&lt;br&gt;&lt;small&gt;Haga clic para cerrar; Ayuda &amp;gt; Gestos del ratón lo vuelve a mostrar&lt;/small&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::PaintTool</name>
+    <message>
+        <source>Paint Weights: select a joint (its bone is painted, shown red to blue), then drag over the part; Ctrl + click samples a vertex; Tool Options set the brush; Esc puts the stroke back</source>
+        <translation>Pintar pesos: seleccione una articulación (se pinta su hueso, mostrado de rojo a azul) y arrastre sobre la pieza; Ctrl + clic toma una muestra de un vértice; las opciones de herramienta ajustan el pincel; Esc deshace el trazo</translation>
+    </message>
+    <message>
+        <source>Select a joint of the part first (its bone is the one painted), then paint on that part</source>
+        <translation>Seleccione primero una articulación de la pieza (se pinta su hueso) y luego pinte sobre esa pieza</translation>
+    </message>
+    <message>
+        <source>%1 is locked: unlock it in the Skin Weights panel to paint it</source>
+        <translation>%1 está bloqueado: desbloquéelo en el panel Pesos de piel para pintarlo</translation>
+    </message>
+    <message>
+        <source>Sampled %1 = %2 at vertex %3: the Replace brush paints it</source>
+        <translation>Muestra %1 = %2 en el vértice %3: el pincel Reemplazar pinta ese valor</translation>
+    </message>
+    <message>
+        <source>The stroke changed no weights: every other bone there is locked</source>
+        <translation>El trazo no cambió ningún peso: todos los demás huesos allí están bloqueados</translation>
+    </message>
+    <message>
+        <source>The stroke changed no weights: they are already as it paints</source>
+        <translation>El trazo no cambió ningún peso: ya son como los pinta</translation>
+    </message>
+    <message numerus="yes">
+        <source>Painted %n dab(s), %1 vertices changed</source>
+        <translation>
+            <numerusform>%n toque pintado, %1 vértices cambiados</numerusform>
+            <numerusform>%n toques pintados, %1 vértices cambiados</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>; %n vertex visit(s) skipped: every other bone there is locked</source>
+        <translation>
+            <numerusform>; se omitió %n visita a vértices: todos los demás huesos allí están bloqueados</numerusform>
+            <numerusform>; se omitieron %n visitas a vértices: todos los demás huesos allí están bloqueados</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stroke put back</source>
+        <translation>Trazo deshecho</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Añadir</translation>
+    </message>
+    <message>
+        <source>Subtract</source>
+        <translation>Restar</translation>
+    </message>
+    <message>
+        <source>Replace</source>
+        <translation>Reemplazar</translation>
+    </message>
+    <message>
+        <source>Smooth</source>
+        <translation>Suavizar</translation>
+    </message>
+    <message>
+        <source>Brush</source>
+        <translation>Pincel</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Lineal</translation>
+    </message>
+    <message>
+        <source>Sharp</source>
+        <translation>Aguda</translation>
+    </message>
+    <message>
+        <source>Constant</source>
+        <translation>Constante</translation>
+    </message>
+    <message>
+        <source>How the brush&apos;s strength falls off from its centre to its rim</source>
+        <translation>Cómo disminuye la fuerza del pincel desde el centro hasta el borde</translation>
+    </message>
+    <message>
+        <source>Falloff</source>
+        <translation>Caída</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Radio</translation>
+    </message>
+    <message>
+        <source>Strength</source>
+        <translation>Fuerza</translation>
+    </message>
+    <message>
+        <source>The weight the Replace brush paints towards (Ctrl + click samples)</source>
+        <translation>El peso hacia el que pinta el pincel Reemplazar (Ctrl + clic toma una muestra)</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Peso</translation>
+    </message>
+    <message>
+        <source>Front faces only</source>
+        <translation>Solo caras frontales</translation>
+    </message>
+    <message>
+        <source>Off: the brush also paints the far side of the part, through it</source>
+        <translation>Desactivado: el pincel también pinta el lado opuesto de la pieza, a través de ella</translation>
+    </message>
+    <message>
+        <source>X-mirror (through the sketch plane)</source>
+        <translation>Espejo en X (por el plano del boceto)</translation>
+    </message>
+    <message>
+        <source>Paint Weights</source>
+        <translation>Pintar pesos</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::PoseTool</name>
+    <message>
+        <source>Pose: drag a joint (IK, this limb only); Alt + drag reaches through the whole body; drag a bone, Ctrl + drag the joint it ends at or drag the selected bone&apos;s ring to turn it (FK); Shift + click pins or unpins a joint</source>
+        <translation>Posar: arrastre una articulación (IK, solo esta extremidad); Alt + arrastrar llega a todo el cuerpo; arrastre un hueso, con Ctrl la articulación en que termina o el anillo del hueso seleccionado para girarlo (FK); Mayús + clic fija o suelta una articulación</translation>
+    </message>
+    <message>
+        <source>Click on a joint or a bone to pose the part</source>
+        <translation>Haga clic en una articulación o un hueso para posar la pieza</translation>
+    </message>
+    <message>
+        <source>The root joint ends no bone: drag its ring to turn the whole part, or drag it without Ctrl to move the part</source>
+        <translation>En la articulación raíz no termina ningún hueso: arrastre su anillo para girar toda la pieza, o arrástrela sin Ctrl para mover la pieza</translation>
+    </message>
+    <message>
+        <source>IK reaches through the whole body</source>
+        <translation>La IK llega a todo el cuerpo</translation>
+    </message>
+    <message>
+        <source>Off: a drag moves the limb up to the nearest junction or pinned joint. Alt + drag does the other for one drag.</source>
+        <translation>Desactivado: arrastrar mueve la extremidad hasta la unión o articulación fijada más cercana. Alt + arrastrar hace lo contrario durante un arrastre.</translation>
+    </message>
+    <message>
+        <source>Pose</source>
+        <translation>Posar</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Preferencias</translation>
+    </message>
+    <message>
+        <source>System default (%1)</source>
+        <translation>Predeterminado del sistema (%1)</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automática</translation>
+    </message>
+    <message>
+        <source>The target edge length of each new sketch; Automatic takes the document&apos;s (its first sketched part&apos;s), or for the first part one from the sketch&apos;s size</source>
+        <translation>La longitud de arista objetivo de cada boceto nuevo; Automática toma la del documento (la de su primera pieza dibujada) o, para la primera pieza, una según el tamaño del boceto</translation>
+    </message>
+    <message>
+        <source>Dual quaternion</source>
+        <translation>Cuaterniones duales</translation>
+    </message>
+    <message>
+        <source>Linear blend</source>
+        <translation>Mezcla lineal</translation>
+    </message>
+    <message>
+        <source>How the view deforms posed parts (View &gt; Dual Quaternion Skinning)</source>
+        <translation>Cómo deforma la vista las piezas posadas (Vista &gt; Skinning con cuaterniones duales)</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Seconds from the last change until unsaved work is written to the recovery file</source>
+        <translation>Segundos desde el último cambio hasta que el trabajo sin guardar se escribe en el archivo de recuperación</translation>
+    </message>
+    <message>
+        <source>Blender</source>
+        <translation>Blender</translation>
+    </message>
+    <message>
+        <source>Maya</source>
+        <translation>Maya</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Claro</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Oscuro</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Idioma:</translation>
+    </message>
+    <message>
+        <source>Default &amp;edge length:</source>
+        <translation>Longitud de &amp;arista predeterminada:</translation>
+    </message>
+    <message>
+        <source>&amp;Skinning:</source>
+        <translation>&amp;Skinning:</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave after:</source>
+        <translation>&amp;Autoguardado tras:</translation>
+    </message>
+    <message>
+        <source>&amp;Mouse bindings:</source>
+        <translation>Asignación del &amp;ratón:</translation>
+    </message>
+    <message>
+        <source>&amp;Theme:</source>
+        <translation>&amp;Tema:</translation>
+    </message>
+    <message>
+        <source>A new language applies when RigMesh Studio starts again.</source>
+        <translation>Un idioma nuevo se aplica cuando RigMesh Studio se vuelve a iniciar.</translation>
+    </message>
+    <message>
+        <source>Alt + drag is the view&apos;s, so the Pose tool reaches through the whole body with its Tool Options box</source>
+        <translation>Alt + arrastrar es de la vista, así que la herramienta Posar llega a todo el cuerpo con la casilla de sus opciones de herramienta</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::PropertiesPanel</name>
+    <message>
+        <source>Rebuild</source>
+        <translation>Reconstruir</translation>
+    </message>
+    <message>
+        <source>automatic</source>
+        <translation>automática</translation>
+    </message>
+    <message>
+        <source>Target edge length of the surface; automatic = 1/60 of the sketch&apos;s size</source>
+        <translation>Longitud de arista objetivo de la superficie; automática = 1/60 del tamaño del boceto</translation>
+    </message>
+    <message>
+        <source>Least-squares smoothing</source>
+        <translation>Suavizado por mínimos cuadrados</translation>
+    </message>
+    <message>
+        <source>Edge length</source>
+        <translation>Longitud de arista</translation>
+    </message>
+    <message>
+        <source>Bone rotation (XYZ Euler)</source>
+        <translation>Rotación del hueso (Euler XYZ)</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>The rotation from rest, in degrees, of the bone ending at the selected joint about its head, relative to its parent bone; at the root, of the whole part about the root</source>
+        <translation>La rotación desde el reposo, en grados, del hueso que termina en la articulación seleccionada alrededor de su cabeza, relativa a su hueso padre; en la raíz, la de toda la pieza alrededor de la raíz</translation>
+    </message>
+    <message>
+        <source>No part selected</source>
+        <translation>Ninguna pieza seleccionada</translation>
+    </message>
+    <message>
+        <source>Select a part in the viewport or the outliner.</source>
+        <translation>Seleccione una pieza en la vista 3D o en el listado.</translation>
+    </message>
+    <message>
+        <source>%1 vertices, %2 faces
+%3 joints, %4 bones
+</source>
+        <translation>%1 vértices, %2 caras
+%3 articulaciones, %4 huesos
+</translation>
+    </message>
+    <message>
+        <source>stroke of %1 points</source>
+        <translation>trazo de %1 puntos</translation>
+    </message>
+    <message>
+        <source>made by merging or importing: no stroke to rebuild from</source>
+        <translation>creada por fusión o importación: no hay trazo desde el que reconstruir</translation>
+    </message>
+    <message>
+        <source>
+Not rigged: imported as a static mesh. Rigging imported meshes is not available yet.</source>
+        <translation>
+Sin rig: importada como malla estática. Todavía no se pueden poner rigs a mallas importadas.</translation>
+    </message>
+    <message>
+        <source>Root joint %1: whole part (XYZ Euler)</source>
+        <translation>Articulación raíz %1: toda la pieza (Euler XYZ)</translation>
+    </message>
+    <message>
+        <source>Bone to joint %1 (XYZ Euler)</source>
+        <translation>Hueso hasta la articulación %1 (Euler XYZ)</translation>
+    </message>
+    <message>
+        <source>Not posed: %1</source>
+        <translation>No se ha posado: %1</translation>
+    </message>
+    <message>
+        <source>%1 has hand-painted skin weights. Rebuilding recomputes them from the sketch and the painting is lost (Undo brings it back). Rebuild anyway?</source>
+        <translation>%1 tiene pesos de piel pintados a mano. Reconstruir los recalcula desde el boceto y se pierde lo pintado (Deshacer lo recupera). ¿Reconstruir de todos modos?</translation>
+    </message>
+    <message>
+        <source>Not rebuilt: the painted weights are kept</source>
+        <translation>No se ha reconstruido: se conservan los pesos pintados</translation>
+    </message>
+    <message>
+        <source>Rebuilt %1</source>
+        <translation>Se ha reconstruido %1</translation>
+    </message>
+    <message>
+        <source>Rebuilt %1; %2</source>
+        <translation>Se ha reconstruido %1; %2</translation>
+    </message>
+    <message>
+        <source>Not rebuilt: %1</source>
+        <translation>No se ha reconstruido: %1</translation>
+    </message>
+    <message>
+        <source>Select a part to rebuild</source>
+        <translation>Seleccione una pieza para reconstruirla</translation>
+    </message>
+    <message>
+        <source>Rebuilding %1</source>
+        <translation>Reconstruyendo %1</translation>
+    </message>
+    <message>
+        <source>Rebuild of %1 cancelled</source>
+        <translation>Reconstrucción de %1 cancelada</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::SelectTool</name>
+    <message>
+        <source>Select: click a part or a joint (with a weight view on, the click pins the vertex&apos;s weights in the Skin Weights panel); drag a part to move it, Ctrl + drag to turn it</source>
+        <translation>Seleccionar: haga clic en una pieza o una articulación (con una vista de pesos activa, el clic fija los pesos del vértice en el panel Pesos de piel); arrastre una pieza para moverla, Ctrl + arrastrar la gira</translation>
+    </message>
+    <message>
+        <source>Select</source>
+        <translation>Seleccionar</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::SketchTool</name>
+    <message>
+        <source>Sketch: drag with the left button to draw a closed silhouette; release to inflate it into a rigged part</source>
+        <translation>Boceto: arrastre con el botón izquierdo para dibujar una silueta cerrada; al soltar se infla hasta ser una pieza con rig</translation>
+    </message>
+    <message>
+        <source>That stroke is too short: drag to draw a closed outline</source>
+        <translation>Ese trazo es demasiado corto: arrastre para dibujar un contorno cerrado</translation>
+    </message>
+    <message>
+        <source>Sketch</source>
+        <translation>Boceto</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::TimelineDock</name>
+    <message>
+        <source>Jump to start (Shift+Left)</source>
+        <translation>Ir al inicio (Mayús+Izquierda)</translation>
+    </message>
+    <message>
+        <source>Previous frame (Left)</source>
+        <translation>Fotograma anterior (Izquierda)</translation>
+    </message>
+    <message>
+        <source>Play / pause (Space)</source>
+        <translation>Reproducir / pausa (Espacio)</translation>
+    </message>
+    <message>
+        <source>Next frame (Right)</source>
+        <translation>Fotograma siguiente (Derecha)</translation>
+    </message>
+    <message>
+        <source>Jump to end (Shift+Right)</source>
+        <translation>Ir al final (Mayús+Derecha)</translation>
+    </message>
+    <message>
+        <source>Current frame</source>
+        <translation>Fotograma actual</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Inicio</translation>
+    </message>
+    <message>
+        <source>First frame of the range</source>
+        <translation>Primer fotograma del rango</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Fin</translation>
+    </message>
+    <message>
+        <source>Last frame of the range</source>
+        <translation>Último fotograma del rango</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <source>Frame rate: keys stay on their frames when it changes</source>
+        <translation>Velocidad de fotogramas: las claves se quedan en sus fotogramas cuando cambia</translation>
+    </message>
+    <message>
+        <source>Clip</source>
+        <translation>Clip</translation>
+    </message>
+    <message>
+        <source>The clip the part keys and plays</source>
+        <translation>El clip en el que la pieza inserta claves y que reproduce</translation>
+    </message>
+    <message>
+        <source>New, duplicate, rename or delete clips</source>
+        <translation>Crear, duplicar, renombrar o eliminar clips</translation>
+    </message>
+    <message>
+        <source>Clip name:</source>
+        <translation>Nombre del clip:</translation>
+    </message>
+    <message>
+        <source>&amp;New Clip...</source>
+        <translation>&amp;Nuevo clip...</translation>
+    </message>
+    <message>
+        <source>New Clip</source>
+        <translation>Nuevo clip</translation>
+    </message>
+    <message>
+        <source>walk</source>
+        <translation>caminar</translation>
+    </message>
+    <message>
+        <source>&amp;Duplicate Clip...</source>
+        <translation>&amp;Duplicar clip...</translation>
+    </message>
+    <message>
+        <source>Duplicate Clip</source>
+        <translation>Duplicar clip</translation>
+    </message>
+    <message>
+        <source>&amp;Rename Clip...</source>
+        <translation>&amp;Renombrar clip...</translation>
+    </message>
+    <message>
+        <source>Rename Clip</source>
+        <translation>Renombrar clip</translation>
+    </message>
+    <message>
+        <source>D&amp;elete Clip</source>
+        <translation>&amp;Eliminar clip</translation>
+    </message>
+    <message>
+        <source>Interpolation between keys</source>
+        <translation>Interpolación entre claves</translation>
+    </message>
+    <message>
+        <source>Constant</source>
+        <translation>Constante</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Lineal</translation>
+    </message>
+    <message>
+        <source>Smooth</source>
+        <translation>Suave</translation>
+    </message>
+    <message>
+        <source>Before the first and after the last key</source>
+        <translation>Antes de la primera y después de la última clave</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Mantener</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Bucle</translation>
+    </message>
+    <message>
+        <source>Ping-Pong</source>
+        <translation>Ping-pong</translation>
+    </message>
+    <message>
+        <source>● Auto Key</source>
+        <translation>● Clave automática</translation>
+    </message>
+    <message>
+        <source>Key every pose change at the current frame</source>
+        <translation>Insertar una clave en el fotograma actual con cada cambio de pose</translation>
+    </message>
+    <message>
+        <source>Onion Skin</source>
+        <translation>Papel cebolla</translation>
+    </message>
+    <message>
+        <source>Show the previous and next keyed poses as ghosts</source>
+        <translation>Mostrar como fantasmas las poses con clave anterior y siguiente</translation>
+    </message>
+    <message>
+        <source>Clip of %1</source>
+        <translation>Clip de %1</translation>
+    </message>
+    <message>
+        <source>Frame range not set: %1</source>
+        <translation>No se ha ajustado el rango de fotogramas: %1</translation>
+    </message>
+    <message>
+        <source>Clip not changed: %1</source>
+        <translation>No se ha cambiado el clip: %1</translation>
+    </message>
+    <message>
+        <source>No new clip: %1</source>
+        <translation>No hay clip nuevo: %1</translation>
+    </message>
+    <message>
+        <source>Not duplicated: %1</source>
+        <translation>No se ha duplicado: %1</translation>
+    </message>
+    <message>
+        <source>Not renamed: %1</source>
+        <translation>No se ha renombrado: %1</translation>
+    </message>
+    <message>
+        <source>Not deleted: %1</source>
+        <translation>No se ha eliminado: %1</translation>
+    </message>
+    <message>
+        <source>Clip not chosen: %1</source>
+        <translation>No se ha elegido el clip: %1</translation>
+    </message>
+    <message>
+        <source>Nothing to key: no part has a skeleton</source>
+        <translation>Nada para la clave: ninguna pieza tiene esqueleto</translation>
+    </message>
+    <message numerus="yes">
+        <source>Keyed %n part(s) at frame %1</source>
+        <translation>
+            <numerusform>Se ha insertado clave en %n pieza en el fotograma %1</numerusform>
+            <numerusform>Se ha insertado clave en %n piezas en el fotograma %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not keyed: %1</source>
+        <translation>No se ha insertado clave: %1</translation>
+    </message>
+    <message>
+        <source>Select keys to delete</source>
+        <translation>Seleccione las claves que eliminar</translation>
+    </message>
+    <message numerus="yes">
+        <source>Deleted %n key(s)</source>
+        <translation>
+            <numerusform>Se ha eliminado %n clave</numerusform>
+            <numerusform>Se han eliminado %n claves</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Select keys to copy</source>
+        <translation>Seleccione las claves que copiar</translation>
+    </message>
+    <message numerus="yes">
+        <source>Copied %n key(s)</source>
+        <translation>
+            <numerusform>Se ha copiado %n clave</numerusform>
+            <numerusform>Se han copiado %n claves</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Copy keys first (Ctrl+C in the timeline)</source>
+        <translation>Copie primero claves (Ctrl+C en la línea de tiempo)</translation>
+    </message>
+    <message>
+        <source>Nothing pasted: the copied parts are gone</source>
+        <translation>No se ha pegado nada: las piezas copiadas ya no existen</translation>
+    </message>
+    <message>
+        <source>Pasted at frame %1</source>
+        <translation>Pegado en el fotograma %1</translation>
+    </message>
+    <message>
+        <source>Not pasted: %1</source>
+        <translation>No se ha pegado: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::TimelineView</name>
+    <message>
+        <source>Frames</source>
+        <translation>Fotogramas</translation>
+    </message>
+    <message>
+        <source>Frame %1 = %2 s</source>
+        <translation>Fotograma %1 = %2 s</translation>
+    </message>
+    <message>
+        <source>Key at frame %1 (%2 s)</source>
+        <translation>Clave en el fotograma %1 (%2 s)</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::Viewport</name>
+    <message>
+        <source>Bone not changed: %1</source>
+        <translation>No se ha cambiado el hueso: %1</translation>
+    </message>
+    <message>
+        <source>Split Bone Here</source>
+        <translation>Dividir hueso aquí</translation>
+    </message>
+    <message>
+        <source>Delete Bone</source>
+        <translation>Eliminar hueso</translation>
+    </message>
+    <message>
+        <source>The 3D view needs OpenGL %1.%2 (core profile), which the &quot;%3&quot; display platform does not provide. Run RigMesh Studio on a desktop (X11 or Wayland) or under xvfb-run.</source>
+        <translation>La vista 3D necesita OpenGL %1.%2 (perfil core), que la plataforma de pantalla «%3» no ofrece. Ejecute RigMesh Studio en un escritorio (X11 o Wayland) o con xvfb-run.</translation>
+    </message>
+    <message>
+        <source>The 3D view needs OpenGL %1.%2, but the &quot;%3&quot; platform gives OpenGL %4.%5.</source>
+        <translation>La vista 3D necesita OpenGL %1.%2, pero la plataforma «%3» ofrece OpenGL %4.%5.</translation>
+    </message>
+    <message>
+        <source>OpenGL 3.3 shaders failed: %1</source>
+        <translation>Fallaron los shaders de OpenGL 3.3: %1</translation>
+    </message>
+    <message>
+        <source>Vertex %1 of %2: no weights</source>
+        <translation>Vértice %1 de %2: sin pesos</translation>
+    </message>
+    <message>
+        <source>bone %1 (to %2)</source>
+        <translation>hueso %1 (hasta %2)</translation>
+    </message>
+    <message>
+        <source>Vertex %1 of %2: %3</source>
+        <translation>Vértice %1 de %2: %3</translation>
+    </message>
+    <message>
+        <source>Point at a bone: K splits it there, Shift+K deletes it</source>
+        <translation>Apunte a un hueso: K lo divide ahí, Mayús+K lo elimina</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::WeightsPanel</name>
+    <message>
+        <source>Bone</source>
+        <translation>Hueso</translation>
+    </message>
+    <message>
+        <source>Leads</source>
+        <translation>Domina</translation>
+    </message>
+    <message>
+        <source>Lock</source>
+        <translation>Bloqueo</translation>
+    </message>
+    <message>
+        <source>Leads: the vertices whose largest weight is the bone&apos;s. Lock: painting and the clean-ups keep the bone&apos;s weights. Click a bone to paint or view it.</source>
+        <translation>Domina: los vértices cuyo mayor peso es el del hueso. Bloqueo: pintar y las limpiezas conservan los pesos del hueso. Haga clic en un hueso para pintarlo o verlo.</translation>
+    </message>
+    <message>
+        <source>Vertex</source>
+        <translation>Vértice</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Peso</translation>
+    </message>
+    <message>
+        <source>Locked</source>
+        <translation>Bloqueado</translation>
+    </message>
+    <message>
+        <source>Check Rig</source>
+        <translation>Comprobar rig</translation>
+    </message>
+    <message>
+        <source>at most </source>
+        <translation>como máximo </translation>
+    </message>
+    <message>
+        <source> bones</source>
+        <translation> huesos</translation>
+    </message>
+    <message>
+        <source>Vertices weighted by more bones are listed (glTF takes 4)</source>
+        <translation>Se listan los vértices con pesos de más huesos (glTF admite 4)</translation>
+    </message>
+    <message>
+        <source>%1 has no skeleton</source>
+        <translation>%1 no tiene esqueleto</translation>
+    </message>
+    <message>
+        <source>Select a part to see its bones&apos; weights</source>
+        <translation>Seleccione una pieza para ver los pesos de sus huesos</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n bone(s), %2 locked</source>
+        <translation>
+            <numerusform>%1: %n hueso, %2 bloqueados</numerusform>
+            <numerusform>%1: %n huesos, %2 bloqueados</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Click a vertex with a weight view on (or Ctrl + click while painting) to pin its weights here.</source>
+        <translation>Haga clic en un vértice con una vista de pesos activa (o Ctrl + clic al pintar) para fijar aquí sus pesos.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Vertex %1 of %2: %n bone(s), sum %3</source>
+        <translation>
+            <numerusform>Vértice %1 de %2: %n hueso, suma %3</numerusform>
+            <numerusform>Vértice %1 de %2: %n huesos, suma %3</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>locked</source>
+        <translation>bloqueado</translation>
+    </message>
+    <message>
+        <source>Select a part to check its rig</source>
+        <translation>Seleccione una pieza para comprobar su rig</translation>
+    </message>
+    <message>
+        <source>Vertex %1</source>
+        <translation>Vértice %1</translation>
+    </message>
+    <message>
+        <source>... and %1 more (all marked when the group is clicked)</source>
+        <translation>... y %1 más (todos marcados al hacer clic en el grupo)</translation>
+    </message>
+    <message>
+        <source>Unweighted vertices: %1</source>
+        <translation>Vértices sin peso: %1</translation>
+    </message>
+    <message>
+        <source>Bones leading no vertex: %1</source>
+        <translation>Huesos que no dominan ningún vértice: %1</translation>
+    </message>
+    <message>
+        <source>Vertices over %1 influences: %2</source>
+        <translation>Vértices con más de %1 influencias: %2</translation>
+    </message>
+    <message>
+        <source>Vertices whose weights do not sum to 1: %1</source>
+        <translation>Vértices cuyos pesos no suman 1: %1</translation>
+    </message>
+    <message>
+        <source>Check Rig: %1 is clean</source>
+        <translation>Comprobar rig: %1 está bien</translation>
+    </message>
+    <message>
+        <source>Check Rig found problems in %1: click a line to select them</source>
+        <translation>Comprobar rig encontró problemas en %1: haga clic en una línea para seleccionarlos</translation>
+    </message>
+</context>
+</TS>

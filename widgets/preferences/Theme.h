@@ -1,0 +1,21 @@
+// Light or dark: Qt's Fusion style with its own light palette or a dark one
+// close to Blender's greys, applied to the whole application at once.
+#pragma once
+
+#include <QIcon>
+#include <QPalette>
+
+#include "preferences/StudioPreferences.h"
+
+namespace rigmesh::widgets {
+
+QPalette themePalette(Theme theme);
+// Sets the palette on the whole application, the open windows included, and
+// polishes widgets with their own style sheet again so that they take it.
+void applyTheme(Theme theme);
+
+// `icon` in one colour (its shape, by alpha): style icons drawn for a light
+// palette made readable on the dark one.
+QIcon tintedIcon(const QIcon& icon, const QColor& colour);
+
+}  // namespace rigmesh::widgets
