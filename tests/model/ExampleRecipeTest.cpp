@@ -24,9 +24,11 @@ TEST(ExampleRecipe, CamelIsMergedIntoOneRiggedPartAndItsHistoryReplaysExactly) {
     // Body 3 joints, four legs 2 each, neck 2 more (one snapped), head 1 more.
     EXPECT_EQ(camel.part->skeleton.jointCount(), 14);
     EXPECT_TRUE(camel.part->skeleton.validate().empty());
-    // One resolution for the document: about the paper's 6,582 vertices.
+    // One resolution for the document: the paper has 6,582 vertices; ours
+    // has more because the thin legs and neck are meshed at a quarter of
+    // their radius (issue 10: at least 24 vertices around).
     EXPECT_GT(camel.part->mesh.vertexCount(), 5000);
-    EXPECT_LT(camel.part->mesh.vertexCount(), 8000);
+    EXPECT_LT(camel.part->mesh.vertexCount(), 12000);
     ASSERT_EQ(camel.clip.keyCount(), 3);
     EXPECT_EQ(camel.clip.keyTimes(), (std::vector<double>{0.0, 0.5, 1.0}));
     EXPECT_FALSE(identicalPoses(camel.clip.key(0.0), camel.clip.key(0.5)));

@@ -76,6 +76,12 @@ TEST(LegacyDocument, VersionOneDocumentOpensWithIdenticalDeformedVertices) {
     EXPECT_LT(largest, 1e-6);
 }
 
+// The recipe replayed today converts its poses as the document's were
+// converted: the same joints and bit for bit the same per-bone rotations at
+// every key. The surface itself is today's (issue 10 made thin parts finer
+// and caps rounder; an end joint sits in the middle of its cap, so it moves
+// by up to 0.031 on this 5.4-high biped), so the deformed vertices are
+// compared through the document's own mesh above, not here.
 TEST(LegacyDocument, VersionOneRecipeReplaysToTheVersionOneDocument) {
     Document replayed;
     runRecipeFile(replayed, kLegacy + "posed_biped_v1.recipe.json");
@@ -84,11 +90,16 @@ TEST(LegacyDocument, VersionOneRecipeReplaysToTheVersionOneDocument) {
     ASSERT_EQ(replayed.partCount(), 1);
     const PartNode& a = replayed.parts().front();
     const PartNode& b = loaded->parts().front();
+    ASSERT_EQ(a.part->skeleton.jointCount(), b.part->skeleton.jointCount());
+    for (int j = 0; j < a.part->skeleton.jointCount(); ++j)
+        EXPECT_LT(
+            (a.part->skeleton.joints()[j].position - b.part->skeleton.joints()[j].position).norm(),
+            0.04)
+            << "joint " << j;
     EXPECT_TRUE(identicalPoses(a.pose, b.pose));
-    EXPECT_EQ(deformed(a, a.pose), deformed(b, b.pose));
     ASSERT_EQ(a.clip.keyTimes(), b.clip.keyTimes());
     for (double t : {0.0, 0.3, 0.5, 1.0})
-        EXPECT_EQ(deformed(a, a.clip.evaluate(t)), deformed(b, b.clip.evaluate(t))) << t << " s";
+        EXPECT_TRUE(identicalPoses(a.clip.evaluate(t), b.clip.evaluate(t))) << t << " s";
     // Saved again, the document is of the current version.
     EXPECT_TRUE(identicalPoses(
         DocumentFile::fromBytes(DocumentFile::toBytes(*loaded)).parts[0].pose, b.pose));

@@ -8,6 +8,10 @@
 #include <QOpenGLWidget>
 #include <QTemporaryDir>
 
+#include <cmath>
+#include <string>
+#include <vector>
+
 #include "DocumentView.h"
 #include "EmbeddedExamples.h"
 #include "MainWindow.h"
@@ -81,6 +85,52 @@ QImage exampleFrame(Prepare&& prepare) {
     EXPECT_EQ(frame.size(), QSize(480, 480) * viewport->devicePixelRatioF());
     return frame;
 }
+
+// A part built from `points` alone in a 480 x 480 view, framed: the surface
+// as an artist first sees it (issue 10: no crease, dimple or faceted limb).
+QImage sketchFrame(const std::vector<Vec2>& points, const std::string& name) {
+    QTemporaryDir recovery;
+    widgets::MainWindow window(recovery.path());
+    auto document = std::make_unique<model::Document>();
+    document->undoStack()->push(
+        model::CreatePartCommand::create(*document, points, QString::fromStdString(name))
+            .release());
+    window.addDocument(std::move(document));
+    widgets::Viewport* viewport = window.currentView()->viewport();
+    viewport->setFixedSize(480, 480);
+    test::settle(&window);
+    viewport->frameAll();
+    QTest::qWait(20);
+    return viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+}
+
+// An ellipse with a round bump on its top: it once came out with a dimple and
+// a pointed tip on the side opposite the bump.
+std::vector<Vec2> blobWithBump() {
+    std::vector<Vec2> points;
+    constexpr int kCount = 240;
+    for (int i = 0; i < kCount; ++i) {
+        const double t = 2 * M_PI * i / kCount;
+        const double bump = 0.45 * std::exp(-std::pow((t - M_PI / 2) / 0.3, 2));
+        points.emplace_back((1.6 + bump) * std::cos(t), (1.0 + bump) * std::sin(t));
+    }
+    return points;
+}
+
+class SurfaceBaseline : public testing::TestWithParam<std::string> {};
+
+TEST_P(SurfaceBaseline, FrameMatchesTheBaseline) {
+    const std::string name = GetParam();
+    const std::vector<Vec2> points =
+        name == "blob_bump"
+            ? blobWithBump()
+            : readSketchFile(std::string(RIGMESH_SHARED_SKETCHES) + "/" + name + ".json").points;
+    expectMatchesBaseline(sketchFrame(points, name),
+                          QStringLiteral("surface_") + QString::fromStdString(name));
+}
+
+INSTANTIATE_TEST_SUITE_P(Sketches, SurfaceBaseline, testing::Values("biped", "star", "blob_bump"),
+                         [](const auto& param) { return param.param; });
 
 TEST(RenderBaseline, ExampleDocumentFrameMatchesTheBaseline) {
     expectMatchesBaseline(exampleFrame([](model::Document&, widgets::Viewport&) {}),

@@ -86,6 +86,15 @@ int fanLength(const std::vector<PolygonEdge>& chords, int limit) {
     return absorbed;
 }
 
+// A sleeve triangle with a pruned neighbour: a junction whose third branch
+// was only a bump of the outline (2.1's pruning).
+bool carriesPrunedBump(const ChordalAxis& axis, int sleeve) {
+    for (int n : axis.cdt.neighbors[sleeve])
+        if (n >= 0 && axis.pruned[n])
+            return true;
+    return false;
+}
+
 // Grows the cap at a terminal end: returns how many chords it swallows, at
 // most `limit`; `sleeves` and `chords` run from the tip inward. The cap takes
 // what Teddy's circle test allows (the region so far lies within the circle
@@ -110,7 +119,15 @@ int capLength(const ChordalAxis& axis, int terminal, const std::vector<int>& sle
         for (int i = 0; i < fan; ++i)
             region.push_back(sleeves[swallowed + i]);
         swallowed += fan;
-        fanned = fan > 0;  // after a fan the circle test may pass again
+        // A pruned bump hanging off the next sleeve (a former junction next
+        // to the tip, as where a bridged gap leaves a corner beside a round
+        // end) belongs to the cap: past it, its outline would be in no region
+        // and the surface would miss it.
+        int bumps = 0;
+        while (swallowed + bumps < limit && carriesPrunedBump(axis, sleeves[swallowed + bumps]))
+            region.push_back(sleeves[swallowed + bumps++]);
+        swallowed += bumps;
+        fanned = fan > 0 || bumps > 0;  // after a fan the circle test may pass again
     }
     return swallowed;
 }

@@ -44,6 +44,11 @@ void mapToWorld(const LocalFrame& frame, SketchToSurfaceResult& result) {
         for (CrossSection& section : cylinder.sections) {
             move(section.left);
             move(section.right);
+            section.spacing *= frame.scale;
+        }
+        for (CrossSection& chord : cylinder.axisChords) {
+            move(chord.left);
+            move(chord.right);
         }
         if (cylinder.startTip)
             move(*cylinder.startTip);

@@ -1,5 +1,6 @@
 #include "rig/SkeletonFromRegions.h"
 
+#include <cmath>
 #include <map>
 
 #include "base/Error.h"
@@ -12,15 +13,16 @@ Vec3 onSketchPlane(const Vec2& p) {
     return Vec3(p.x(), p.y(), 0.0);
 }
 
+// The mean radius of the body's smoothed chords: like everything CDP looks
+// at, independent of how finely the sections are sampled.
 double meanRadius(const CylinderSections& cylinder) {
     double sum = 0.0;
-    for (const auto& s : cylinder.sections)
-        sum += s.radius();
-    return sum / static_cast<double>(cylinder.sections.size());
+    for (const auto& chord : cylinder.axisChords)
+        sum += chord.radius();
+    return sum / static_cast<double>(cylinder.axisChords.size());
 }
 
-// The sections CDP looks at: the body's only. A cap's shrinking width would
-// look like a change of thickness and give a short bone at every tip.
+// The body sections (not cap slices) in order.
 std::vector<int> bodySections(const CylinderSections& cylinder) {
     std::vector<int> body;
     for (int s = 0; s < static_cast<int>(cylinder.sections.size()); ++s)
@@ -43,33 +45,62 @@ void extendIntoCaps(const CylinderSections& cylinder, std::vector<int>& kept) {
         kept.back() = (kept.back() + last + 1) / 2;
 }
 
-// Step 1: joints along a cylinder's axis from (C)DP, as section indices.
-std::vector<int> simplifyAxis(const CylinderSections& cylinder, const SkeletonOptions& options) {
-    const std::vector<int> sections = bodySections(cylinder);
-    if (sections.size() < 2) {
+// A cylinder's joints along its axis.
+struct AxisJoints {
+    std::vector<int> sections;  // the section each joint stands at (owns the weights)
+    std::vector<Vec2> positions;
+};
+
+AxisJoints atSectionCentres(const CylinderSections& cylinder, const std::vector<int>& sections) {
+    AxisJoints joints{sections, {}};
+    for (int s : sections)
+        joints.positions.push_back(cylinder.sections[s].centre());
+    return joints;
+}
+
+// The body section taken nearest to smoothed chord `chord`.
+int sectionNearestChord(const CylinderSections& cylinder, const std::vector<int>& body, int chord) {
+    int best = body.front();
+    for (int s : body)
+        if (std::abs(cylinder.sections[s].chordParameter - chord) <
+            std::abs(cylinder.sections[best].chordParameter - chord))
+            best = s;
+    return best;
+}
+
+// Step 1: joints along a cylinder's axis from (C)DP, as section indices. CDP
+// runs on the smoothed chords of the chordal axis (the paper's v_1 .. v_n),
+// not on the resampled sections: the sections follow the edge length and the
+// local thickness, and a denser sampling of the same shape would find more
+// samples over the threshold (a 0.33-long bone at a biped's shoulder once
+// thin parts got finer). The body's chords only: a cap's shrinking width
+// would look like a change of thickness and give a short bone at every tip.
+AxisJoints simplifyAxis(const CylinderSections& cylinder, const SkeletonOptions& options) {
+    const std::vector<int> body = bodySections(cylinder);
+    const auto& chords = cylinder.axisChords;
+    if (chords.size() < 2 || body.size() < 2) {
         // A body of one section: one bone from cap to cap, if there are caps.
-        std::vector<int> ends{sections.front(), sections.front()};
+        std::vector<int> ends{body.front(), body.front()};
         extendIntoCaps(cylinder, ends);
         if (ends.front() == ends.back())
-            return {ends.front()};
-        return ends;
+            ends.pop_back();
+        return atSectionCentres(cylinder, ends);
     }
     std::vector<AxisSample> samples;
-    for (int index : sections) {
-        const CrossSection& s = cylinder.sections[index];
-        samples.push_back({s.centre(), s.left, s.right});
-    }
+    for (const CrossSection& chord : chords)
+        samples.push_back({chord.centre(), chord.left, chord.right});
     const double threshold = options.relativeThreshold * meanRadius(cylinder);
-    std::vector<int> kept = options.cylindrical ? cylindricalDouglasPeucker(samples, threshold)
-                                                : douglasPeucker(samples, threshold);
-    for (int& k : kept)
-        k = sections[k];
+    const std::vector<int> kept = options.cylindrical
+                                      ? cylindricalDouglasPeucker(samples, threshold)
+                                      : douglasPeucker(samples, threshold);
     // An abrupt change of thickness splits on both sides of the step: merge
-    // interior joints closer than the minimum bone length into one.
+    // interior joints closer (along the chords' centres) than the minimum
+    // bone length into one.
+    std::vector<double> position(chords.size(), 0.0);
+    for (std::size_t i = 1; i < chords.size(); ++i)
+        position[i] = position[i - 1] + (chords[i].centre() - chords[i - 1].centre()).norm();
     const double minimumBone = options.relativeMinimumBone * meanRadius(cylinder);
-    auto axisGap = [&](int a, int b) {
-        return cylinder.axisPosition[b] - cylinder.axisPosition[a];
-    };
+    auto axisGap = [&](int a, int b) { return position[b] - position[a]; };
     std::vector<int> merged{kept.front()};
     for (std::size_t i = 1; i + 1 < kept.size(); ++i) {
         if (axisGap(merged.back(), kept[i]) >= minimumBone) {
@@ -83,8 +114,23 @@ std::vector<int> simplifyAxis(const CylinderSections& cylinder, const SkeletonOp
             merged.pop_back();
         merged.push_back(kept.back());
     }
-    extendIntoCaps(cylinder, merged);
-    return merged;
+    // Each joint stands at its chord's centre and owns the section nearest
+    // it (the weights follow the sections); two joints never share a
+    // section. End joints in a cap move to its middle section.
+    std::vector<int> joints;
+    std::vector<int> jointChords;
+    for (int chord : merged) {
+        const int section = sectionNearestChord(cylinder, body, chord);
+        if (joints.empty() || section > joints.back()) {
+            joints.push_back(section);
+            jointChords.push_back(chord);
+        }
+    }
+    extendIntoCaps(cylinder, joints);
+    AxisJoints result = atSectionCentres(cylinder, joints);
+    for (std::size_t j = 1; j + 1 < joints.size(); ++j)
+        result.positions[j] = cylinder.axisChords[jointChords[j]].centre();
+    return result;
 }
 
 struct ConnectingBone {
@@ -103,16 +149,16 @@ PartSkeleton buildSkeleton(const Decomposition& decomposition,
     std::vector<JointId> firstJoint(cylinders.size()), lastJoint(cylinders.size());
 
     for (std::size_t c = 0; c < cylinders.size(); ++c) {
-        std::vector<int> kept = simplifyAxis(cylinders[c], options);
+        AxisJoints axisJoints = simplifyAxis(cylinders[c], options);
         std::vector<JointId> joints;
-        for (int s : kept)
-            joints.push_back(skeleton.addJoint(onSketchPlane(cylinders[c].sections[s].centre())));
+        for (const Vec2& p : axisJoints.positions)
+            joints.push_back(skeleton.addJoint(onSketchPlane(p)));
         std::vector<BoneId> bones;
         for (std::size_t m = 1; m < joints.size(); ++m)
             bones.push_back(skeleton.addBone(joints[m - 1], joints[m]));
         firstJoint[c] = joints.front();
         lastJoint[c] = joints.back();
-        result.jointSections.push_back(std::move(kept));
+        result.jointSections.push_back(std::move(axisJoints.sections));
         result.cylinderBones.push_back(std::move(bones));
     }
 

@@ -1,9 +1,10 @@
 // The skeleton of a sketched part (paper 2.3, Fig. 6).
 //
-// 1. Cylindrical regions: the smooth chordal axis (the centres of the cross
-//    sections) is down-sampled with the Cylindrical Douglas-Peucker algorithm
-//    (or plain DP, for comparison): each kept sample is a joint, each range a
-//    bone.
+// 1. Cylindrical regions: the smooth chordal axis (the smoothed chords,
+//    CylinderSections::axisChords, which do not depend on the edge length) is
+//    down-sampled with the Cylindrical Douglas-Peucker algorithm (or plain DP,
+//    for comparison): each kept chord is a joint, placed at the body section
+//    nearest it, and each range a bone.
 // 2. Connecting regions: a joint at the centre of each junction triangle; a
 //    bone from it to the end joint of each cylinder that leaves it, and to the
 //    junctions it was merged with.

@@ -55,24 +55,37 @@ CrossSection sectionOf(const ChordFrame& frame) {
     return section;
 }
 
-// Resamples the smoothed body so that adjacent sections are about
-// `spacing` apart on their widest side (paper 2.2), dropping any section
-// that would cross its predecessor.
-std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames,
-                                       const CrossSection& first, const CrossSection& last,
-                                       double spacing) {
+// The local edge length at a chord of this radius (issue 10: resolution
+// follows thickness).
+double localSpacing(double radius, double spacing, const CrossSectionOptions& options) {
+    return std::clamp(options.radiusFraction * radius, options.minimumSpacingFraction * spacing,
+                      spacing);
+}
+
+// Resamples the smoothed body so that adjacent sections are about one local
+// edge length apart on their widest side (paper 2.2), dropping any section
+// that would cross its predecessor. The parameter counts local edge lengths, so sections crowd
+// where the body is thin and keep the target spacing where it is wide.
+std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames, CrossSection first,
+                                       CrossSection last, double spacing,
+                                       const CrossSectionOptions& options) {
     const int count = static_cast<int>(frames.size());
+    auto local = [&](double radius) { return localSpacing(radius, spacing, options); };
+    first.spacing = local(first.radius());
+    last.spacing = local(last.radius());
+    first.chordParameter = 0.0;
+    last.chordParameter = count - 1;
     std::vector<double> parameter(count, 0.0);
     for (int i = 1; i < count; ++i) {
         CrossSection a = sectionOf(frames[i - 1]), b = sectionOf(frames[i]);
         double step = std::max({(a.left - b.left).norm(), (a.right - b.right).norm(),
                                 (frames[i - 1].centre - frames[i].centre).norm()});
-        parameter[i] = parameter[i - 1] + step;
+        parameter[i] =
+            parameter[i - 1] + step / local(0.5 * (frames[i - 1].radius + frames[i].radius));
     }
     std::vector<CrossSection> candidates{first};
     if (count > 1) {
-        const int intervals =
-            std::max(1, static_cast<int>(std::lround(parameter.back() / spacing)));
+        const int intervals = std::max(1, static_cast<int>(std::lround(parameter.back())));
         int segment = 0;
         for (int k = 1; k < intervals; ++k) {
             double target = parameter.back() * k / intervals;
@@ -86,6 +99,8 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames,
                                ((1 - f) * a.direction + f * b.direction).normalized(),
                                (1 - f) * a.radius + f * b.radius};
             candidates.push_back(sectionOf(blended));
+            candidates.back().spacing = local(blended.radius);
+            candidates.back().chordParameter = segment + f;
         }
         candidates.push_back(last);
     }
@@ -96,8 +111,9 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames,
     // are dropped too, or the strip between them would be made of slivers.
     constexpr double kMinimumSideStep = 0.3;  // of the spacing
     auto crowds = [&](const CrossSection& a, const CrossSection& b) {
-        return (a.left - b.left).norm() < kMinimumSideStep * spacing ||
-               (a.right - b.right).norm() < kMinimumSideStep * spacing;
+        const double step = std::min(a.spacing, b.spacing);
+        return (a.left - b.left).norm() < kMinimumSideStep * step ||
+               (a.right - b.right).norm() < kMinimumSideStep * step;
     };
     std::vector<CrossSection> kept{candidates.front()};
     for (std::size_t i = 1; i + 1 < candidates.size(); ++i) {
@@ -165,6 +181,7 @@ CapSlices sliceCap(const CrossSection& base, const std::vector<Vec2>& path,
         slice.left = pointAtArcLength(leftSide, leftLength * k / intervals);
         slice.right = pointAtArcLength(rightSide, rightLength * k / intervals);
         slice.inCap = true;
+        slice.spacing = spacing;
         const CrossSection& previous = cap.slices.empty() ? base : cap.slices.back();
         if (segmentsIntersect(slice.left, slice.right, previous.left, previous.right))
             continue;
@@ -211,10 +228,16 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
         s.rightPolygonIndex = chord[1];
         return s;
     };
-    std::vector<CrossSection> body = resampleBody(frames, polygonSection(cylinder.chords.front()),
-                                                  polygonSection(cylinder.chords.back()), spacing);
+    std::vector<CrossSection> body =
+        resampleBody(frames, polygonSection(cylinder.chords.front()),
+                     polygonSection(cylinder.chords.back()), spacing, options);
 
     CylinderSections result;
+    for (const ChordFrame& frame : frames)
+        result.axisChords.push_back(sectionOf(frame));
+    // The end chords are the outline's own (smoothing keeps them in place).
+    result.axisChords.front() = body.front();
+    result.axisChords.back() = body.back();
     auto pathPoints = [&](const std::vector<int>& indices) {
         std::vector<Vec2> path;
         for (int i : indices)
@@ -224,7 +247,7 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
     if (!cylinder.startCap.empty()) {
         // Seen from the start tip the cylinder runs backwards: flip, slice, flip back.
         CapSlices cap = sliceCap(flipped(body.front()), pathPoints(cylinder.startCap),
-                                 cylinder.startCap, spacing);
+                                 cylinder.startCap, body.front().spacing);
         for (auto it = cap.slices.rbegin(); it != cap.slices.rend(); ++it)
             result.sections.push_back(flipped(*it));
         result.startTip = cap.tip;
@@ -232,8 +255,8 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
     }
     result.sections.insert(result.sections.end(), body.begin(), body.end());
     if (!cylinder.endCap.empty()) {
-        CapSlices cap =
-            sliceCap(body.back(), pathPoints(cylinder.endCap), cylinder.endCap, spacing);
+        CapSlices cap = sliceCap(body.back(), pathPoints(cylinder.endCap), cylinder.endCap,
+                                 body.back().spacing);
         result.sections.insert(result.sections.end(), cap.slices.begin(), cap.slices.end());
         result.endTip = cap.tip;
         result.endTipPolygonIndex = cap.tipIndex;

@@ -46,10 +46,16 @@ class HalfSurfaceBuilder {
         const CylinderRegion& region = decomposition_.cylinders[index];
         int first = cylinder.startTip ? 1 : 0;
         int last = static_cast<int>(rings.size()) - (cylinder.endTip ? 2 : 1);
-        if (region.startConnecting >= 0)
+        if (region.startConnecting >= 0) {
             portRings_[chordKey(cylinder.sections.front())] = rings[first];
-        if (region.endConnecting >= 0)
+            portSpacing_[region.startConnecting] =
+                std::min(portSpacing(region.startConnecting), cylinder.sections.front().spacing);
+        }
+        if (region.endConnecting >= 0) {
             portRings_[chordKey(cylinder.sections.back())] = rings[last];
+            portSpacing_[region.endConnecting] =
+                std::min(portSpacing(region.endConnecting), cylinder.sections.back().spacing);
+        }
     }
 
     void addConnectingRegion(int index) {
@@ -71,6 +77,10 @@ class HalfSurfaceBuilder {
             throw Error("internal error: a connecting region without boundary");
 
         const VertexOrigin origin{RegionKind::Connecting, index, -1, 0.0, false};
+        // The patch is as fine as the finest cylinder meeting it (resolution
+        // follows thickness): a coarse patch against a fine port ring would
+        // crease along the seam.
+        const double spacing = portSpacing(index);
         std::vector<int> loop;
         std::vector<Vec2> loop2d;
         std::vector<bool> rim;
@@ -80,7 +90,15 @@ class HalfSurfaceBuilder {
             int b = next.at(a);
             loop.push_back(outlineVertex(a, cdt.points[a], origin));
             rim.push_back(true);
-            if (b != (a + 1) % pointCount) {
+            if (b == (a + 1) % pointCount) {
+                // An outline edge of this region only: split to the patch's spacing.
+                const Vec2 &p = cdt.points[a], &q = cdt.points[b];
+                const int pieces = static_cast<int>(std::ceil((q - p).norm() / spacing - 0.25));
+                for (int k = 1; k < pieces; ++k) {
+                    loop.push_back(outlineVertex(-1, p + (q - p) * (double(k) / pieces), origin));
+                    rim.push_back(true);
+                }
+            } else {
                 // A port chord: walk the adjacent cylinder's end semicircle.
                 const std::vector<int>& ring = portRings_.at(std::minmax(a, b));
                 bool forward = ring.front() == polygonVertex_[a];
@@ -96,14 +114,13 @@ class HalfSurfaceBuilder {
         for (int v : loop)
             loop2d.push_back(positions_[v].head<2>());
 
-        PatchTriangulation patch =
-            triangulatePatch(loop2d, latticeInside(loop2d, options_.targetEdgeLength), rim);
+        PatchTriangulation patch = triangulatePatch(loop2d, latticeInside(loop2d, spacing), rim);
         std::vector<int> vertexOf(patch.points.size());
         for (std::size_t i = 0; i < patch.points.size(); ++i)
-            vertexOf[i] = i < loop.size() ? loop[i]
-                                          : addVertex(Vec3(patch.points[i].x(), patch.points[i].y(),
-                                                           options_.targetEdgeLength),
-                                                      origin);
+            vertexOf[i] =
+                i < loop.size()
+                    ? loop[i]
+                    : addVertex(Vec3(patch.points[i].x(), patch.points[i].y(), spacing), origin);
         for (const auto& t : patch.triangles)
             faces_.push_back({vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]});
     }
@@ -137,6 +154,15 @@ class HalfSurfaceBuilder {
     }
 
   private:
+    // The finest local edge length of the cylinders meeting a connecting
+    // region, at most the target one.
+    double portSpacing(int region) const {
+        auto found = portSpacing_.find(region);
+        return found == portSpacing_.end() || !(found->second > 0)
+                   ? options_.targetEdgeLength
+                   : std::min(found->second, options_.targetEdgeLength);
+    }
+
     static std::pair<int, int> chordKey(const CrossSection& section) {
         return std::minmax(section.leftPolygonIndex, section.rightPolygonIndex);
     }
@@ -162,8 +188,15 @@ class HalfSurfaceBuilder {
     // 2.2): theta = 0 at the left end point, pi at the right one.
     std::vector<int> addRing(const CrossSection& section, const VertexOrigin& origin) {
         const double radius = section.radius();
-        const int segments = std::max(2, static_cast<int>(std::lround(std::numbers::pi * radius /
-                                                                      options_.targetEdgeLength)));
+        const double spacing = section.spacing > 0
+                                   ? std::min(section.spacing, options_.targetEdgeLength)
+                                   : options_.targetEdgeLength;
+        // Cap slices shrink towards the tip; below six segments the last
+        // rings make a pyramid of the tip (a crease of 45 degrees or more).
+        constexpr int kMinimumCapSegments = 10;
+        const int minimum = section.inCap ? kMinimumCapSegments : 2;
+        const int segments =
+            std::max(minimum, static_cast<int>(std::lround(std::numbers::pi * radius / spacing)));
         const Vec2 centre = section.centre();
         const Vec2 direction =
             radius > 0 ? Vec2((section.right - section.left) / (2 * radius)) : Vec2(1, 0);
@@ -210,19 +243,25 @@ class HalfSurfaceBuilder {
     std::vector<VertexOrigin> origins_;
     std::vector<std::array<int, 3>> faces_;
     std::map<std::pair<int, int>, std::vector<int>> portRings_;
+    std::map<int, double> portSpacing_;
 };
 
-// Anchor weights for Least-Squares Meshes (paper 2.2): zero in connecting
-// regions, growing with the distance along the axis from the nearest
-// connecting region in cylindrical ones.
+// Anchor weights for Least-Squares Meshes (paper 2.2): zero inside
+// connecting regions (their outline vertices are held), growing with the distance along the axis
+// from the nearest connecting region in cylindrical ones.
 std::vector<double> anchorWeights(const SketchSurface& surface, const Decomposition& decomposition,
                                   const std::vector<CylinderSections>& cylinders,
                                   const SurfaceOptions& options) {
     std::vector<double> weights(surface.mesh.vertices.size(), 0.0);
     for (std::size_t v = 0; v < weights.size(); ++v) {
         const VertexOrigin& origin = surface.origins[v];
-        if (origin.kind != RegionKind::Cylindrical)
+        if (origin.kind != RegionKind::Cylindrical) {
+            // The outline of a connecting region is the sketch itself: held,
+            // so the silhouette does not shrink at junctions (issue 10).
+            if (origin.onOutline)
+                weights[v] = options.maxAnchorWeight;
             continue;
+        }
         const CylinderRegion& region = decomposition.cylinders[origin.region];
         const CylinderSections& sections = cylinders[origin.region];
         double distance = std::numeric_limits<double>::infinity();
@@ -236,6 +275,11 @@ std::vector<double> anchorWeights(const SketchSurface& surface, const Decomposit
         diameter /= static_cast<double>(sections.sections.size());
         double falloff = std::max(options.anchorFalloff * diameter, 1e-12);
         weights[v] = options.maxAnchorWeight * std::clamp(distance / falloff, 0.0, 1.0);
+        // A cap's slices twist and crowd near its tip (they join the k-th
+        // points of its two sides): held softly, LSM rounds the tip.
+        const bool inCap = origin.section < 0 || sections.sections[origin.section].inCap;
+        if (inCap && !origin.onOutline)
+            weights[v] = std::min(weights[v], options.capAnchorWeight);
     }
     return weights;
 }

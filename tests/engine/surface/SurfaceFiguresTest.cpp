@@ -1,0 +1,242 @@
+// Issue 10's figures as guards, on every shared sketch (and the quadruped of
+// tests/data/sketches) at the default edge length and on random outlines
+// with many branches and thin parts: neighbouring face normals at most 20
+// degrees apart at the 99th percentile and 35 on every edge, a front view
+// whose silhouette covers the cleaned outline (IoU >= 0.95), at least 12
+// vertices around every body cross section, and a vertex count that follows
+// the area over the local edge length squared.
+//
+// Two sketches do not meet every target yet; they are listed in
+// kOpenShortfalls with the figure measured when this test was written, which
+// they must not exceed (the issue stays open for them; see the crease report
+// in SurfaceCreaseReportTest for where the angles sit).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "SurfaceTestSupport.h"
+#include "mesh/SurfaceQuality.h"
+
+namespace rigmesh {
+namespace {
+
+constexpr double kP99Limit = 20.0;
+constexpr double kMaxLimit = 35.0;
+constexpr double kIoULimit = 0.95;
+constexpr int kRingLimit = 12;
+
+// Measured 2026-11-25 (radius fraction 0.25, cap slices of 10 segments, caps
+// held softly in LSM). biped and quadruped: a 78-degree fold at the crotch;
+// on the biped the legs' port chords end on neighbouring outline vertices
+// 0.1 apart, the outline turns by about 97 degrees at the apex, and the hip
+// patch's vertex above it folds between the two rings rising vertically
+// there. (open_gap, 42 degrees and IoU 0.917 then, meets every target since
+// its cap takes in the pruned bump beside the bridged gap: 25.0 degrees,
+// IoU 0.993.)
+struct Shortfall {
+    double max = kMaxLimit;
+    double iou = kIoULimit;
+};
+const std::map<std::string, Shortfall> kOpenShortfalls{
+    {"biped", {78.5, kIoULimit}},
+    {"quadruped", {79.0, kIoULimit}},
+};
+
+std::vector<std::string> sketchNames() {
+    std::vector<std::string> names = testsupport::sharedSketchNames(false);
+    names.push_back("quadruped");
+    return names;
+}
+
+std::vector<Vec2> sketchPoints(const std::string& name) {
+    if (name == "quadruped")
+        return readSketchFile(std::string(RIGMESH_TEST_DATA) + "/sketches/quadruped.json").points;
+    return testsupport::sharedSketchPoints(name);
+}
+
+// Vertices around each body cross section (the mirrored ring), smallest.
+int smallestRing(const SketchToSurfaceResult& result) {
+    int smallest = std::numeric_limits<int>::max();
+    for (std::size_t c = 0; c < result.cylinders.size(); ++c) {
+        const auto& sections = result.cylinders[c].sections;
+        std::vector<int> count(sections.size(), 0);
+        for (const VertexOrigin& o : result.surface.origins)
+            if (o.kind == RegionKind::Cylindrical && o.region == static_cast<int>(c) &&
+                o.section >= 0)
+                ++count[static_cast<std::size_t>(o.section)];
+        for (std::size_t s = 0; s < sections.size(); ++s)
+            if (!sections[s].inCap)
+                smallest = std::min(smallest, count[s]);
+    }
+    return smallest;
+}
+
+double surfaceArea(const TriMesh& mesh) {
+    double area = 0;
+    for (const auto& f : mesh.faces)
+        area += 0.5 * (mesh.vertices[f[1]] - mesh.vertices[f[0]])
+                          .cross(mesh.vertices[f[2]] - mesh.vertices[f[0]])
+                          .norm();
+    return area;
+}
+
+// The surface area each cross section's strip stands for, over its local
+// edge length squared, summed: the vertex count the local edge lengths ask
+// for, up to the constant of a regular triangulation (area / (sqrt(3)/2 h^2)
+// vertices for an equilateral one).
+double expectedVertices(const SketchToSurfaceResult& result) {
+    const TriMesh& mesh = result.surface.mesh;
+    double sum = 0;
+    for (const auto& f : mesh.faces) {
+        double spacing = result.targetEdgeLength;
+        for (int v : f) {
+            const VertexOrigin& o = result.surface.origins[v];
+            if (o.kind == RegionKind::Cylindrical && o.section >= 0) {
+                const double s = result.cylinders[o.region].sections[o.section].spacing;
+                if (s > 0)
+                    spacing = std::min(spacing, s);
+            }
+        }
+        const double area = 0.5 * (mesh.vertices[f[1]] - mesh.vertices[f[0]])
+                                      .cross(mesh.vertices[f[2]] - mesh.vertices[f[0]])
+                                      .norm();
+        sum += area / (std::sqrt(3.0) / 2.0 * spacing * spacing);
+    }
+    return sum;
+}
+
+struct Figures {
+    NormalAngles angles;
+    double iou = 0;
+    int ring = 0;
+    int vertices = 0;
+    double density = 0;       // vertices / (area / target edge length^2)
+    double localDensity = 0;  // vertices / expectedVertices
+};
+
+Figures measure(const SketchToSurfaceResult& result) {
+    Figures f;
+    f.angles = normalAngles(result.surface.mesh);
+    f.iou = silhouetteIoU(result.surface.mesh, result.polygon.points);
+    f.ring = smallestRing(result);
+    f.vertices = result.surface.mesh.vertexCount();
+    const double h = result.targetEdgeLength;
+    f.density = f.vertices / (surfaceArea(result.surface.mesh) / (h * h));
+    f.localDensity = f.vertices / expectedVertices(result);
+    return f;
+}
+
+class SurfaceFigures : public testing::TestWithParam<std::string> {};
+
+TEST_P(SurfaceFigures, SmoothRoundAndTrueToTheOutline) {
+    const SketchToSurfaceResult result = sketchToSurface(sketchPoints(GetParam()));
+    const Figures f = measure(result);
+    std::printf(
+        "%-11s p99 %5.1f max %5.1f IoU %.4f ring %2d vertices %5d "
+        "(x h^2/area %.2f, / local %.2f)\n",
+        GetParam().c_str(), f.angles.p99, f.angles.max, f.iou, f.ring, f.vertices, f.density,
+        f.localDensity);
+    const auto open = kOpenShortfalls.find(GetParam());
+    const Shortfall limits = open == kOpenShortfalls.end() ? Shortfall{} : open->second;
+    EXPECT_LE(f.angles.p99, kP99Limit);
+    EXPECT_LE(f.angles.max, limits.max);
+    EXPECT_GE(f.iou, limits.iou);
+    if (!result.cylinders.empty()) {
+        EXPECT_GE(f.ring, kRingLimit);
+    }
+    // A regular triangulation at the local edge lengths has one vertex per
+    // sqrt(3)/2 h^2 of area; strips and patches are close to it.
+    EXPECT_GT(f.localDensity, 0.6);
+    EXPECT_LT(f.localDensity, 1.6);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sketches, SurfaceFigures, testing::ValuesIn(sketchNames()),
+                         testsupport::sketchTestName);
+
+// Halving the edge length of a part wide everywhere (no thin part takes the
+// radius rule) gives four times the vertices: the count follows area / h^2.
+TEST(SurfaceFiguresScaling, AWideBlobHasFourTimesTheVerticesAtHalfTheEdgeLength) {
+    std::vector<Vec2> blob;
+    for (int i = 0; i < 256; ++i) {
+        const double t = 2 * std::numbers::pi * i / 256;
+        blob.emplace_back(2.0 * std::cos(t), 1.4 * std::sin(t));
+    }
+    SketchToSurfaceOptions coarse, fine;
+    coarse.surface.targetEdgeLength = 0.2;
+    fine.surface.targetEdgeLength = 0.1;
+    const int a = sketchToSurface(blob, coarse).surface.mesh.vertexCount();
+    const int b = sketchToSurface(blob, fine).surface.mesh.vertexCount();
+    EXPECT_NEAR(double(b) / a, 4.0, 0.6) << a << " -> " << b;
+}
+
+// A blob with several arms of random length, width and direction, some thin
+// (half-widths down to a third of the default edge length), as a CCW outline.
+std::vector<Vec2> branchyOutline(std::mt19937& random) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const int arms = 3 + static_cast<int>(5 * unit(random));
+    struct Arm {
+        double angle, length, width;
+    };
+    std::vector<Arm> list;
+    for (int k = 0; k < arms; ++k)
+        list.push_back({2 * std::numbers::pi * (k + 0.3 * unit(random)) / arms,
+                        0.8 + 1.5 * unit(random), 0.04 + 0.12 * unit(random)});
+    std::vector<Vec2> points;
+    constexpr int kCount = 720;
+    for (int i = 0; i < kCount; ++i) {
+        const double t = 2 * std::numbers::pi * i / kCount;
+        double r = 0.8;
+        for (const Arm& arm : list) {
+            // Angular distance to the arm's direction; the arm is a ridge of
+            // about constant width `width` (its angular half-width shrinks
+            // with the radius reached).
+            const double d = std::remainder(t - arm.angle, 2 * std::numbers::pi);
+            const double reach = 0.8 + arm.length;
+            const double halfAngle = arm.width / reach;
+            const double x = d / halfAngle;
+            if (std::abs(x) < 3.0)
+                r = std::max(r, 0.8 + arm.length * std::exp(-std::pow(x, 4) / 4.0));
+        }
+        points.push_back(r * Vec2(std::cos(t), std::sin(t)));
+    }
+    return points;
+}
+
+// On these outlines the p99 and ring targets hold, the max and IoU ones do
+// not: the central blob's arcs between arms are swept by the arms' cross
+// sections instead of joining the junction patch, so the blob comes out as
+// a creased polygon (IoU down to 0.73, folds up to 77 degrees where the
+// sections cross the blob). Guarded at the measured worst, as open items of
+// issue 10.
+constexpr double kRandomMaxMeasured = 77.0;
+constexpr double kRandomIoUMeasured = 0.73;
+
+TEST(SurfaceFiguresRandom, BranchyOutlinesKeepP99AndRingsAndNoWorseMaxOrIoU) {
+    std::mt19937 random(1012);
+    constexpr int kCases = 10;
+    for (int c = 0; c < kCases; ++c) {
+        SCOPED_TRACE("random outline " + std::to_string(c));
+        const std::vector<Vec2> outline = branchyOutline(random);
+        const SketchToSurfaceResult result = sketchToSurface(outline);
+        const Figures f = measure(result);
+        std::printf(
+            "random %2d: %zu cylinders, p99 %5.1f max %5.1f IoU %.4f ring %2d "
+            "vertices %5d (/ local %.2f)\n",
+            c, result.cylinders.size(), f.angles.p99, f.angles.max, f.iou, f.ring, f.vertices,
+            f.localDensity);
+        EXPECT_LE(f.angles.p99, kP99Limit);
+        EXPECT_LE(f.angles.max, kRandomMaxMeasured);
+        EXPECT_GE(f.iou, kRandomIoUMeasured);
+        EXPECT_GE(f.ring, kRingLimit);
+    }
+}
+
+}  // namespace
+}  // namespace rigmesh
