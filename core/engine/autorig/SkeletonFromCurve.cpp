@@ -332,7 +332,7 @@ std::vector<TubeSample> branchJoints(const Graph& graph, const std::vector<int>&
         radiusSum += sample.radius;
     const double meanRadius = radiusSum / static_cast<double>(tube.size());
     const std::vector<int> kept =
-        cylindricalDouglasPeucker(tube, options.relativeThreshold * meanRadius);
+        cylindricalDouglasPeuckerInSpace(tube, options.relativeThreshold * meanRadius);
     std::vector<double> along(tube.size(), 0.0);
     for (std::size_t i = 1; i < tube.size(); ++i)
         along[i] = along[i - 1] + (tube[i].point - tube[i - 1].point).norm();

@@ -115,7 +115,8 @@ std::vector<int> cylindricalDouglasPeucker(const std::vector<AxisSample>& axis, 
     });
 }
 
-std::vector<int> cylindricalDouglasPeucker(const std::vector<TubeSample>& tube, double threshold) {
+std::vector<int> cylindricalDouglasPeuckerInSpace(const std::vector<TubeSample>& tube,
+                                                  double threshold) {
     checkThreshold(threshold);
     return simplify(static_cast<int>(tube.size()), threshold * threshold, [&](int i, int j, int k) {
         const Vec3 ab = tube[j].point - tube[i].point;

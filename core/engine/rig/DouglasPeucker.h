@@ -75,6 +75,7 @@ struct TubeSample {
 // projection, e_CDP = 2 (d^2 + dr^2): what the planar e_CDP gives for an
 // axis moved by d or a width changed by dr on both sides. Splits while max
 // e_CDP > threshold^2, so the same threshold means the same bones.
-std::vector<int> cylindricalDouglasPeucker(const std::vector<TubeSample>& tube, double threshold);
+std::vector<int> cylindricalDouglasPeuckerInSpace(const std::vector<TubeSample>& tube,
+                                                  double threshold);
 
 }  // namespace rigmesh
