@@ -1,10 +1,12 @@
-// Bending one limb leaves the other limbs where they were (issue 19), while
-// the weights stay as smooth as before and the dominant bone stays the
-// closest visible bone at least as often. The figures are defined in
-// LimbWeightMetrics.h; the baselines are those of the bone heat before issue
-// 19 (commit 6df566f: weights below 1e-4 cut, a construction shortcut that
-// let a bone reach past its joint and dropped ties), measured with the same
-// code.
+// Bending one limb leaves the other limbs where they were as well as
+// Blender's bone heat does (issue 19), while the weights stay smoother than
+// Blender's and the dominant bone stays the closest visible bone at least as
+// often as before issue 19. The figures are defined in LimbWeightMetrics.h.
+// Blender's figures are Blender 3.4.1's automatic weights on the same meshes
+// and exactly the same bone segments, measured with the same figures by
+// tests/external/heat_vs_blender (run.sh; the CTest external_heat_vs_blender
+// measures them again on every run): when the surfaces change, measure again
+// and update kBlender.
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -16,36 +18,39 @@
 namespace rigmesh {
 namespace {
 
-struct Baseline {
+struct Blender {
     int leak;              // vertices of other limbs moved > 1% of the limb's length
     double smoothnessP99;  // largest per-bone weight jump over an edge, 99th percentile
-    double dominanceRate;  // dominant bone among the closest visible bones
 };
 
-// Measured at 6df566f (printed to six digits, hence the 1e-6 below).
-const std::map<std::string, Baseline> kBefore = {
-    {"banana", {1173, 0.227107, 0.989011}}, {"biped", {779, 0.272514, 0.973085}},
-    {"camel_body", {4150, 0.100471, 1.0}},  {"camel_head", {0, 0.0, 1.0}},
-    {"camel_leg", {0, 0.0, 1.0}},           {"camel_neck", {1268, 0.167794, 1.0}},
-    {"kinked", {2844, 0.158401, 1.0}},      {"open_gap", {2280, 0.146559, 0.991344}},
-    {"star", {1621, 0.180569, 0.960386}},   {"tube", {0, 0.0, 1.0}},
-    {"y_branch", {991, 0.15058, 1.0}},
+// Measured on the surfaces of issue 10 (wip-surface2 merged, 11c32f9).
+const std::map<std::string, Blender> kBlender = {
+    {"banana", {905, 0.21963}},  {"biped", {582, 0.16739}},    {"camel_body", {2938, 0.12751}},
+    {"camel_head", {0, 0.0}},    {"camel_leg", {0, 0.0}},      {"camel_neck", {944, 0.18435}},
+    {"kinked", {1978, 0.14078}}, {"open_gap", {0, 0.0}},       {"star", {939, 0.22447}},
+    {"tube", {0, 0.0}},          {"y_branch", {762, 0.15848}},
 };
-constexpr double kPrinted = 1e-6;
+constexpr double kPrinted = 1e-5;  // Blender's figures are printed to five digits
 
-// Sketches whose smoothness figure got worse, and why.
-const std::vector<parttest::KnownDefect> kLessSmooth = {
-    {"camel_body",
-     "0.1005 -> 0.1087: the cap at the tail end now takes in the pruned bump at its lower "
-     "corner (issue 10: that outline was in no region, the surface missed it), so the end "
-     "joint moves to the larger cap's middle (2.558, 0.043 -> 2.494, 0.114) and the weights "
-     "change over a shorter tail bone"},
+// The dominant-bone rate before issue 19 (commit 6df566f), which must hold.
+const std::map<std::string, double> kDominanceBefore = {
+    {"banana", 0.989011}, {"biped", 0.973085}, {"camel_body", 1.0}, {"camel_head", 1.0},
+    {"camel_leg", 1.0},   {"camel_neck", 1.0}, {"kinked", 1.0},     {"open_gap", 0.991344},
+    {"star", 0.960386},   {"tube", 1.0},       {"y_branch", 1.0},
 };
 
-const Baseline& before(const std::string& sketch) {
-    const auto found = kBefore.find(sketch);
-    if (found == kBefore.end())
-        throw std::runtime_error("no baseline for " + sketch);
+// Sketches whose weights are rougher than Blender's, and why.
+const std::vector<parttest::KnownDefect> kRougherThanBlender = {
+    {"kinked",
+     "0.1473 against Blender's 0.1408: the roughest edges are cylinder vertices around the "
+     "kink joint, all jumping on the first bone; visibility on every vertex gives the same "
+     "weights, so it lies in the solve itself, not in the closest bones (issue 19)"},
+};
+
+const Blender& blender(const std::string& sketch) {
+    const auto found = kBlender.find(sketch);
+    if (found == kBlender.end())
+        throw std::runtime_error("no Blender figures for " + sketch);
     return found->second;
 }
 
@@ -55,58 +60,58 @@ class LimbLeak : public ::testing::TestWithParam<std::string> {
     const ClosestBones& closest() const { return parttest::sharedClosestVisibleBones(GetParam()); }
 };
 
-TEST_P(LimbLeak, TurningALimbMovesFewerVerticesOfOtherLimbsThanBefore) {
+TEST_P(LimbLeak, TurningALimbMovesNoMoreVerticesOfOtherLimbsThanBlendersWeights) {
     const int leak = parttest::limbLeak(part(), parttest::weightsByPosition(part()), closest());
     std::cout << "[ measured ] " << GetParam() << " limbs "
-              << parttest::limbsOf(part().skeleton).size() << " leak " << leak << " (before "
-              << before(GetParam()).leak << ")\n";
+              << parttest::limbsOf(part().skeleton).size() << " leak " << leak << " (Blender "
+              << blender(GetParam()).leak << ")\n";
     RecordProperty("leak", leak);
-    if (before(GetParam()).leak > 0)
-        EXPECT_LT(leak, before(GetParam()).leak);
-    else
-        EXPECT_EQ(leak, 0);
+    EXPECT_LE(leak, blender(GetParam()).leak);
 }
 
-TEST_P(LimbLeak, WeightsAreAsSmoothAsBefore) {
+TEST_P(LimbLeak, WeightsAreAtLeastAsSmoothAsBlenders) {
     const double smooth = parttest::largestBoneJumpP99(part(), parttest::weightsByPosition(part()));
     std::cout << "[ measured ] " << GetParam() << " largest per-bone jump p99 " << smooth
-              << " (before " << before(GetParam()).smoothnessP99 << ")\n";
+              << " (Blender " << blender(GetParam()).smoothnessP99 << ")\n";
     RecordProperty("smoothnessP99", std::to_string(smooth));
-    const bool holds = smooth <= before(GetParam()).smoothnessP99 + kPrinted;
-    const std::string known = parttest::knownDefect(kLessSmooth, GetParam());
+    const bool holds = smooth <= blender(GetParam()).smoothnessP99 + kPrinted;
+    const std::string known = parttest::knownDefect(kRougherThanBlender, GetParam());
     if (!holds && !known.empty())
         GTEST_SKIP() << "known: " << known << " (measured " << smooth << ")";
-    EXPECT_TRUE(holds) << smooth << " > " << before(GetParam()).smoothnessP99;
+    EXPECT_TRUE(holds) << smooth << " > " << blender(GetParam()).smoothnessP99;
+    if (holds && !known.empty())
+        std::cout << "[ note ] known defect no longer reproduces on " << GetParam() << "\n";
 }
 
 TEST_P(LimbLeak, DominantBoneIsTheClosestVisibleBoneAsOftenAsBefore) {
     const double dominance =
         parttest::dominantIsClosestVisibleRate(parttest::weightsByPosition(part()), closest());
+    const double before = kDominanceBefore.at(GetParam());
     std::cout << "[ measured ] " << GetParam() << " dominant bone closest visible " << dominance
-              << " (before " << before(GetParam()).dominanceRate << ")\n";
+              << " (before " << before << ")\n";
     RecordProperty("dominance", std::to_string(dominance));
-    EXPECT_GE(dominance, before(GetParam()).dominanceRate - kPrinted);
+    EXPECT_GE(dominance, before - 1e-6);
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedSketches, LimbLeak, ::testing::ValuesIn(parttest::goodSketches()),
                          testsupport::sketchTestName);
 
-// Over all shared sketches together, the weights are as smooth as before:
-// neither the roughest sketch nor the mean got worse.
-TEST(LimbLeakOverAllSketches, WorstAndMeanSmoothnessAreNoWorseThanBefore) {
-    double worst = 0.0, worstBefore = 0.0, sum = 0.0, sumBefore = 0.0;
+// Over all shared sketches together, the weights are smoother than
+// Blender's: neither the roughest sketch nor the mean is worse.
+TEST(LimbLeakOverAllSketches, WorstAndMeanSmoothnessAreNoWorseThanBlenders) {
+    double worst = 0.0, sum = 0.0, worstBlender = 0.0, sumBlender = 0.0;
     for (const std::string& sketch : parttest::goodSketches()) {
         const Part& part = parttest::sharedPart(sketch).part;
         const double smooth = parttest::largestBoneJumpP99(part, parttest::weightsByPosition(part));
         worst = std::max(worst, smooth);
         sum += smooth;
-        worstBefore = std::max(worstBefore, before(sketch).smoothnessP99);
-        sumBefore += before(sketch).smoothnessP99;
+        worstBlender = std::max(worstBlender, blender(sketch).smoothnessP99);
+        sumBlender += blender(sketch).smoothnessP99;
     }
-    std::cout << "[ measured ] smoothness p99 worst " << worst << " (before " << worstBefore
-              << "), sum " << sum << " (before " << sumBefore << ")\n";
-    EXPECT_LE(worst, worstBefore + kPrinted);
-    EXPECT_LE(sum, sumBefore);
+    std::cout << "[ measured ] smoothness p99 worst " << worst << " (Blender " << worstBlender
+              << "), sum " << sum << " (Blender " << sumBlender << ")\n";
+    EXPECT_LE(worst, worstBlender + kPrinted);
+    EXPECT_LE(sum, sumBlender);
 }
 
 }  // namespace
