@@ -9,7 +9,8 @@
 namespace rigmesh {
 namespace {
 
-constexpr double kTieTolerance = 1e-2;  // relative, as in the bone heat solver
+// Relative, as in the bone heat solver.
+const double kTieTolerance = BoneHeatOptions{}.tieTolerance;
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)

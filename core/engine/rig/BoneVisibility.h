@@ -51,7 +51,7 @@ class BoneVisibility {
 // Bones with non-finite endpoints are never chosen.
 std::vector<std::vector<std::pair<int, double>>> closestVisibleBones(
     const TriMesh& mesh, const std::vector<BoneSegment>& bones, const BoneVisibility& visibility,
-    const std::vector<int>& verticesToTest, double tieTolerance = 1e-2,
+    const std::vector<int>& verticesToTest, double tieTolerance = 3e-3,
     int* verticesWithoutVisibleBone = nullptr);
 
 }  // namespace rigmesh

@@ -39,14 +39,6 @@ const std::map<std::string, double> kDominanceBefore = {
     {"star", 0.960386},   {"tube", 1.0},       {"y_branch", 1.0},
 };
 
-// Sketches whose weights are rougher than Blender's, and why.
-const std::vector<parttest::KnownDefect> kRougherThanBlender = {
-    {"kinked",
-     "0.1473 against Blender's 0.1408: the roughest edges are cylinder vertices around the "
-     "kink joint, all jumping on the first bone; visibility on every vertex gives the same "
-     "weights, so it lies in the solve itself, not in the closest bones (issue 19)"},
-};
-
 const Blender& blender(const std::string& sketch) {
     const auto found = kBlender.find(sketch);
     if (found == kBlender.end())
@@ -74,13 +66,7 @@ TEST_P(LimbLeak, WeightsAreAtLeastAsSmoothAsBlenders) {
     std::cout << "[ measured ] " << GetParam() << " largest per-bone jump p99 " << smooth
               << " (Blender " << blender(GetParam()).smoothnessP99 << ")\n";
     RecordProperty("smoothnessP99", std::to_string(smooth));
-    const bool holds = smooth <= blender(GetParam()).smoothnessP99 + kPrinted;
-    const std::string known = parttest::knownDefect(kRougherThanBlender, GetParam());
-    if (!holds && !known.empty())
-        GTEST_SKIP() << "known: " << known << " (measured " << smooth << ")";
-    EXPECT_TRUE(holds) << smooth << " > " << blender(GetParam()).smoothnessP99;
-    if (holds && !known.empty())
-        std::cout << "[ note ] known defect no longer reproduces on " << GetParam() << "\n";
+    EXPECT_LE(smooth, blender(GetParam()).smoothnessP99 + kPrinted);
 }
 
 TEST_P(LimbLeak, DominantBoneIsTheClosestVisibleBoneAsOftenAsBefore) {

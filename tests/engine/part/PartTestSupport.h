@@ -44,14 +44,19 @@ inline const SketchToPartResult& sharedPart(const std::string& sketch, double sc
     return found->second;
 }
 
-// Relative tolerance under which equally close visible bones tie, as in the solver.
+// Relative tolerance under which equally close visible bones tie in the
+// figures (1%); the solver's own is 3e-3 (BoneHeatOptions::tieTolerance),
+// so a figure's "closest visible" also accepts a bone within 1%.
 inline constexpr double kTieTolerance = 1e-2;
 
 // The closest visible bones of every vertex of a shared sketch's part,
-// tested with BoneVisibility on all vertices (no construction shortcut); cached.
-inline const ClosestBones& sharedClosestVisibleBones(const std::string& sketch) {
-    static std::map<std::string, ClosestBones> cache;
-    auto found = cache.find(sketch);
+// tested with BoneVisibility on all vertices (no construction shortcut),
+// ties within `tieTolerance` (the figures' 1% unless told); cached.
+inline const ClosestBones& sharedClosestVisibleBones(const std::string& sketch,
+                                                     double tieTolerance = kTieTolerance) {
+    static std::map<std::pair<std::string, double>, ClosestBones> cache;
+    const std::pair<std::string, double> key{sketch, tieTolerance};
+    auto found = cache.find(key);
     if (found == cache.end()) {
         const Part& part = sharedPart(sketch).part;
         std::vector<int> all(part.mesh.vertices.size());
@@ -59,8 +64,8 @@ inline const ClosestBones& sharedClosestVisibleBones(const std::string& sketch) 
             all[v] = static_cast<int>(v);
         const BoneVisibility visibility(part.mesh);
         found = cache
-                    .emplace(sketch, closestVisibleBones(part.mesh, part.boneSegments(), visibility,
-                                                         all, kTieTolerance))
+                    .emplace(key, closestVisibleBones(part.mesh, part.boneSegments(), visibility,
+                                                      all, tieTolerance))
                     .first;
     }
     return found->second;

@@ -31,8 +31,10 @@ constexpr double kPercentileEdgeDifference = 0.5;
 constexpr double kPercentile = 0.99;
 // L1 change per unit of e / d (d: mean distance of the edge's two vertices
 // to their nearest bone). Measured: at most 2.03 (star), 99th percentile at
-// most 1.68 (star), 1.5 to 2.0 on every sketch.
-constexpr double kMaximumRelativeChange = 2.5;
+// most 1.68 (star), 1.5 to 2.0 on every sketch; since ties share a vertex
+// only within 0.3% (issue 19: every shared sketch smoother than Blender's by
+// the largest per-bone jump), one edge of the star reaches 2.503, p99 1.95.
+constexpr double kMaximumRelativeChange = 2.6;
 constexpr double kPercentileRelativeChange = 2.0;
 
 const std::vector<parttest::KnownDefect> kKnownDefects = {

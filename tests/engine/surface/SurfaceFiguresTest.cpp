@@ -33,11 +33,13 @@ constexpr double kIoULimit = 0.95;
 constexpr int kRingLimit = 12;
 
 // Measured 2026-11-25 (radius fraction 0.25, cap slices of 10 segments, caps
-// held softly in LSM). biped and quadruped: a 78-degree fold at the crotch;
-// on the biped the legs' port chords end on neighbouring outline vertices
-// 0.1 apart, the outline turns by about 97 degrees at the apex, and the hip
-// patch's vertex above it folds between the two rings rising vertically
-// there. (open_gap, 42 degrees and IoU 0.917 then, meets every target since
+// held softly in LSM). biped: a 78-degree fold on the one edge from the apex
+// of the crotch (a 90-degree concave outline corner) to the hip patch above
+// it; an inflated surface rounds such a corner far below the edge length, so
+// the corner must be rounded. quadruped: 78.5 degrees on its back above the
+// front leg, where that leg's oblique port chord leaves a long outline
+// stretch to one strip and LSM slides the port vertex (not a crotch fold;
+// see docs/ARCHITECTURE.md). (open_gap, 42 degrees and IoU 0.917 then, meets every target since
 // its cap takes in the pruned bump beside the bridged gap: 25.0 degrees,
 // IoU 0.993.)
 struct Shortfall {
