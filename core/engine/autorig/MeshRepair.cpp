@@ -13,7 +13,6 @@
 #include <array>
 #include <cmath>
 #include <iterator>
-#include <map>
 #include <set>
 #include <unordered_map>
 
@@ -189,11 +188,10 @@ void fillSmallHoles(SurfaceMesh& mesh, const MeshRepairOptions& options,
          {messageArgument(static_cast<int>(borders.size())), messageArgument(newVertices)}});
 }
 
+// `mesh` without garbage: its vertex indices run 0 .. n-1.
 RepairedMesh toRepaired(const SurfaceMesh& mesh, SourceMap sources) {
     RepairedMesh result;
-    std::map<VertexIndex, int> index;
     for (VertexIndex v : mesh.vertices()) {
-        index[v] = result.mesh.vertexCount();
         result.mesh.vertices.push_back(cgal::toVec(mesh.point(v)));
         result.sourceVertex.push_back(sources[v]);
     }
@@ -201,7 +199,7 @@ RepairedMesh toRepaired(const SurfaceMesh& mesh, SourceMap sources) {
         std::array<int, 3> face{};
         int corner = 0;
         for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-            face[corner++] = index.at(v);
+            face[corner++] = static_cast<int>(v.idx());
         result.mesh.faces.push_back(face);
     }
     return result;

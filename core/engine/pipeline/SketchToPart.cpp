@@ -9,9 +9,6 @@
 namespace rigmesh {
 namespace {
 
-// Relative, as in the bone heat solver.
-const double kTieTolerance = BoneHeatOptions{}.tieTolerance;
-
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
@@ -60,7 +57,7 @@ std::optional<std::vector<BoneId>> ownersWithinJointPlanes(const Skeleton& skele
 // the vertex is left to the visibility test (empty list).
 std::vector<std::pair<int, double>> closestAmongNeighbours(const Skeleton& skeleton,
                                                            const std::vector<BoneId>& owners,
-                                                           const Vec3& p) {
+                                                           const Vec3& p, double tieTolerance) {
     auto distanceTo = [&](BoneId id) { return pointSegmentDistance(p, segmentOf(skeleton, id)); };
     std::vector<std::pair<BoneId, double>> candidates;
     double best = std::numeric_limits<double>::infinity();
@@ -79,9 +76,9 @@ std::vector<std::pair<int, double>> closestAmongNeighbours(const Skeleton& skele
                                         [&](const auto& c) { return c.first == other; }))
                             continue;
                         const double d = distanceTo(other);
-                        if (d < best * (1 - kTieTolerance))
+                        if (d < best * (1 - tieTolerance))
                             return {};
-                        if (d <= best * (1 + kTieTolerance)) {
+                        if (d <= best * (1 + tieTolerance)) {
                             // A tie the visibility test would list too.
                             candidates.emplace_back(other, d);
                             nearest = std::min(nearest, d);
@@ -89,7 +86,7 @@ std::vector<std::pair<int, double>> closestAmongNeighbours(const Skeleton& skele
                     }
     std::vector<std::pair<int, double>> closest;
     for (const auto& [id, d] : candidates)
-        if (d <= nearest * (1 + kTieTolerance))
+        if (d <= nearest * (1 + tieTolerance))
             closest.emplace_back(skeleton.indexOfBone(id), d);
     return closest;
 }
@@ -98,7 +95,7 @@ std::vector<std::pair<int, double>> closestAmongNeighbours(const Skeleton& skele
 
 ClosestBones closestBonesFromConstruction(const SketchSurface& surface,
                                           const std::vector<CylinderSections>& cylinders,
-                                          const PartSkeleton& rig) {
+                                          const PartSkeleton& rig, double tieTolerance) {
     const Skeleton& skeleton = rig.skeleton;
     ClosestBones closest(surface.mesh.vertices.size());
     for (std::size_t v = 0; v < closest.size(); ++v) {
@@ -118,7 +115,7 @@ ClosestBones closestBonesFromConstruction(const SketchSurface& surface,
         const auto owners = ownersWithinJointPlanes(skeleton, sectionBones, p);
         if (!owners || owners->empty())
             continue;
-        closest[v] = closestAmongNeighbours(skeleton, *owners, p);
+        closest[v] = closestAmongNeighbours(skeleton, *owners, p, tieTolerance);
     }
     return closest;
 }
@@ -143,8 +140,9 @@ SketchToPartResult sketchToPart(const std::vector<Vec2>& stroke, const std::stri
 
     start = std::chrono::steady_clock::now();
     // The solver works by bone position; the part keeps bone ids.
-    const ClosestBones closest = closestBonesFromConstruction(
-        result.surface.surface, result.surface.cylinders, result.skeleton);
+    const ClosestBones closest =
+        closestBonesFromConstruction(result.surface.surface, result.surface.cylinders,
+                                     result.skeleton, options.weights.tieTolerance);
     part.weights = weightsById(part.skeleton, computeBoneHeatWeights(part.mesh, part.boneSegments(),
                                                                      closest, options.weights));
     part.knownClosestBones = closestById(part.skeleton, closest);

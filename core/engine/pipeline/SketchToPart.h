@@ -30,9 +30,11 @@ SketchToPartResult sketchToPart(const std::vector<Vec2>& stroke, const std::stri
                                 const SketchToPartOptions& options = {});
 
 // The closest bones of cylindrical vertices, known from where each vertex was
-// created (paper 2.4); other vertices get an empty list.
+// created (paper 2.4), with ties within `tieTolerance` as the solver's
+// visibility test lists them; other vertices get an empty list.
 ClosestBones closestBonesFromConstruction(const SketchSurface& surface,
                                           const std::vector<CylinderSections>& cylinders,
-                                          const PartSkeleton& skeleton);
+                                          const PartSkeleton& skeleton,
+                                          double tieTolerance = BoneHeatOptions{}.tieTolerance);
 
 }  // namespace rigmesh

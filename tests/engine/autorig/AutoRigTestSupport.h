@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../part/LimbWeightMetrics.h"
 #include "MeshInside.h"
 #include "SharedSketchPart.h"
 #include "autorig/AutoRig.h"
@@ -62,31 +63,16 @@ inline const ImportedSketch& importedSketch(const std::string& name) {
 }
 
 // The share of vertices whose largest weight is one of their closest
-// visible bones (paper 2.4's p_j), tested with BoneVisibility.
+// visible bones (paper 2.4's p_j), tested with BoneVisibility on every vertex.
 inline double dominantIsClosestVisibleShare(const Part& part) {
     std::vector<int> all(part.mesh.vertices.size());
     for (std::size_t v = 0; v < all.size(); ++v)
         all[v] = static_cast<int>(v);
     const BoneVisibility visibility(part.mesh);
-    const ClosestBones closest =
-        closestVisibleBones(part.mesh, part.boneSegments(), visibility, all, 1e-2);
-    const SkinWeights weights = weightsByIndex(part.skeleton, part.weights);
-    int agree = 0;
-    for (std::size_t v = 0; v < all.size(); ++v) {
-        int leading = -1;
-        double best = -1.0;
-        for (const auto& [bone, w] : weights.perVertex[v])
-            if (w > best) {
-                best = w;
-                leading = bone;
-            }
-        for (const auto& [bone, distance] : closest[v])
-            if (bone == leading) {
-                ++agree;
-                break;
-            }
-    }
-    return all.empty() ? 0.0 : static_cast<double>(agree) / static_cast<double>(all.size());
+    return parttest::dominantIsClosestVisibleRate(
+        weightsByIndex(part.skeleton, part.weights),
+        closestVisibleBones(part.mesh, part.boneSegments(), visibility, all,
+                            parttest::kTieTolerance));
 }
 
 // Points along every bone (joints included, 9 per bone) outside the surface.

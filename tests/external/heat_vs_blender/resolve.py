@@ -2,7 +2,9 @@
 numpy (dense), to measure what one change of its terms does to the figures.
 First checks that the default options reproduce the weights rigmesh wrote.
   blender -b --factory-startup --python resolve.py -- OUTDIR SKETCH [SKETCH ...]
-Variants: heat constant c (1 = ours, 4/3 = Blender's area factor), taper.
+Variants: heat constant c (1 = ours, 4/3 = Blender's area factor), taper, the
+tie tolerance (ours 3e-3: the closest-bone lists, made at 1e-2 for the
+figures, are cut down to it).
 """
 import json
 import os
@@ -18,7 +20,7 @@ K_MIN_SINE = 1e-8
 K_MIN_D2_PER_AREA = 1e-12
 
 
-def solve_weights(V, F, closest, nb, c=1.0, taper_end=0.025, taper_start=0.05):
+def solve_weights(V, F, closest, nb, c=1.0, taper_end=0.05, taper_start=0.1, tie=3e-3):
     n = len(V)
     A = np.zeros((n, n))
     area = np.zeros(n)
@@ -38,6 +40,8 @@ def solve_weights(V, F, closest, nb, c=1.0, taper_end=0.025, taper_start=0.05):
             A[l, j] -= hc
             A[j, j] += hc
             A[l, l] += hc
+    closest = [[(b, dd) for b, dd in cl if dd <= min(x for _, x in cl) * (1 + tie)]
+               for cl in closest]
     heat = np.zeros(n)
     for v in range(n):
         d = min(dd for _, dd in closest[v])
@@ -102,22 +106,17 @@ def run(outdir, sketch, variants):
 
 
 VARIANTS = [
-    ("ours c=1", {}),
+    ("ours", {}),
     ("c=4/3 (Blender area)", {"c": 4.0 / 3.0}),
-    ("c=1.5", {"c": 1.5}),
-    ("c=1.75", {"c": 1.75}),
-    ("c=2", {"c": 2.0}),
-    ("taper 0.05-0.1", {"taper_end": 0.05, "taper_start": 0.1}),
-    ("c=4/3 taper .035-.07", {"c": 4.0 / 3.0, "taper_end": 0.035, "taper_start": 0.07}),
+    ("taper .025-.05 (Blender)", {"taper_end": 0.025, "taper_start": 0.05}),
+    ("tie 1e-4 (Blender)", {"tie": 1e-4}),
     # Visibility tested on every vertex instead of the construction shortcut.
     ("all visible", {"all_visible": True}),
-    ("no taper", {"taper_end": 0.0, "taper_start": 0.0}),
-    ("taper 0.075-0.15", {"taper_end": 0.075, "taper_start": 0.15}),
 ]
 
 if __name__ == "__main__":
     argv = sys.argv[sys.argv.index("--") + 1:]
-    only = os.environ.get("VARIANTS")  # e.g. VARIANTS="ours c=1,no taper"
+    only = os.environ.get("VARIANTS")  # e.g. VARIANTS="ours,tie 1e-4 (Blender)"
     chosen = [v for v in VARIANTS if not only or v[0] in only.split(",")]
     for s in argv[1:]:
         run(argv[0], s, chosen)
