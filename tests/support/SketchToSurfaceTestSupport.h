@@ -78,6 +78,20 @@ std::vector<Vec2> polarOutline(int count, Radius radius, const Vec2& centre = Ve
     return points;
 }
 
+// An ellipse with a round bump on its top (issue 10): the bump is pruned as
+// an insignificant branch off the middle of the body, so it once came out
+// missing, with a dimple and a pointed tip on the side opposite.
+inline std::vector<Vec2> blobWithBump() {
+    std::vector<Vec2> points;
+    constexpr int kCount = 240;
+    for (int i = 0; i < kCount; ++i) {
+        const double t = 2 * std::numbers::pi * i / kCount;
+        const double bump = 0.45 * std::exp(-std::pow((t - std::numbers::pi / 2) / 0.3, 2));
+        points.emplace_back((1.6 + bump) * std::cos(t), (1.0 + bump) * std::sin(t));
+    }
+    return points;
+}
+
 // A star with `arms` rounded arms of length about `armLength` around a body
 // of radius `body`; the higher `sharpness`, the thinner the arms.
 inline std::vector<Vec2> armedStar(int arms, double body, double armLength, int sharpness = 6,

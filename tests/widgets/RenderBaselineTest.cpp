@@ -15,6 +15,7 @@
 #include "DocumentView.h"
 #include "EmbeddedExamples.h"
 #include "MainWindow.h"
+#include "SketchToSurfaceTestSupport.h"
 #include "StudioTestSupport.h"
 #include "model/commands/CreatePartCommand.h"
 #include "model/recipe/RecipeRunner.h"
@@ -104,26 +105,13 @@ QImage sketchFrame(const std::vector<Vec2>& points, const std::string& name) {
     return viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
 }
 
-// An ellipse with a round bump on its top: it once came out with a dimple and
-// a pointed tip on the side opposite the bump.
-std::vector<Vec2> blobWithBump() {
-    std::vector<Vec2> points;
-    constexpr int kCount = 240;
-    for (int i = 0; i < kCount; ++i) {
-        const double t = 2 * M_PI * i / kCount;
-        const double bump = 0.45 * std::exp(-std::pow((t - M_PI / 2) / 0.3, 2));
-        points.emplace_back((1.6 + bump) * std::cos(t), (1.0 + bump) * std::sin(t));
-    }
-    return points;
-}
-
 class SurfaceBaseline : public testing::TestWithParam<std::string> {};
 
 TEST_P(SurfaceBaseline, FrameMatchesTheBaseline) {
     const std::string name = GetParam();
     const std::vector<Vec2> points =
         name == "blob_bump"
-            ? blobWithBump()
+            ? testsupport::blobWithBump()
             : readSketchFile(std::string(RIGMESH_SHARED_SKETCHES) + "/" + name + ".json").points;
     expectMatchesBaseline(sketchFrame(points, name),
                           QStringLiteral("surface_") + QString::fromStdString(name));

@@ -1,8 +1,10 @@
 #include "axis/Decomposition.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 
+#include "axis/BodyBumps.h"
 #include "base/Error.h"
 
 namespace rigmesh {
@@ -162,6 +164,70 @@ void absorbJunctionFans(AxisBranch& branch, std::vector<int>& regionOfTriangle,
     }
 }
 
+// The chords a branch's ends give away: to a cap at a terminal (as step 5
+// grows it) or to a junction's fans (as step 3 absorbs them). What is left
+// is the branch's body, sleeves [first, second).
+std::array<int, 2> bodySleeves(const ChordalAxis& axis, const AxisBranch& branch,
+                               const std::vector<bool>& node, const DecompositionOptions& options) {
+    const int chordCount = static_cast<int>(branch.chords.size());
+    const bool startIsCap = !node[branch.startNode];
+    const bool endIsCap = !node[branch.endNode];
+    int fromStart = 0, fromEnd = 0;
+    if (startIsCap) {
+        const int limit = endIsCap ? (chordCount - 1) / 2 : chordCount - 1;
+        fromStart = capLength(axis, branch.startNode, branch.sleeves, branch.chords, limit,
+                              options.capCircleFactor);
+    } else {
+        fromStart = fanLength(branch.chords, chordCount / 4);
+    }
+    std::vector<int> sleeves(branch.sleeves.rbegin(), branch.sleeves.rend());
+    std::vector<PolygonEdge> reversed(branch.chords.rbegin(), branch.chords.rend());
+    if (endIsCap)
+        fromEnd = capLength(axis, branch.endNode, sleeves, reversed, chordCount - 1 - fromStart,
+                            options.capCircleFactor);
+    else
+        fromEnd = fanLength(reversed, chordCount / 4);
+    return {fromStart, static_cast<int>(branch.sleeves.size()) - fromEnd};
+}
+
+// Splits branches where a body sleeve carries a pruned bump high enough to
+// see (BodyBumps.h): the sleeve becomes a node, so it and its bump form a
+// connecting region. Runs of such sleeves are `forcedMerge` pieces, as are
+// pieces of fewer than three chords between two nodes (no room for a body).
+std::vector<AxisBranch> splitAtBodyBumps(const ChordalAxis& axis, std::vector<bool>& node,
+                                         std::vector<bool>& forcedMerge,
+                                         const DecompositionOptions& options) {
+    const int pointCount = static_cast<int>(axis.cdt.points.size());
+    double perimeter = 0.0;
+    for (int i = 0; i < pointCount; ++i)
+        perimeter += (axis.cdt.points[(i + 1) % pointCount] - axis.cdt.points[i]).norm();
+    const double minimumHeight = options.bumpHeightFactor * perimeter / pointCount;
+
+    std::vector<AxisBranch> branches;
+    for (const AxisBranch& branch : axis.branches) {
+        const auto [first, end] = bodySleeves(axis, branch, node, options);
+        std::vector<int> bumps;
+        for (int s = first; s < end; ++s)
+            if (prunedBumpHeight(axis, branch.sleeves[s]) >= minimumHeight)
+                bumps.push_back(s);
+        if (bumps.empty()) {
+            branches.push_back(branch);
+            forcedMerge.push_back(false);
+            continue;
+        }
+        for (int s : bumps)
+            node[branch.sleeves[s]] = true;
+        BranchPieces split = splitAtSleeves(branch, bumps);
+        for (std::size_t p = 0; p < split.pieces.size(); ++p) {
+            const AxisBranch& piece = split.pieces[p];
+            forcedMerge.push_back(split.isRun[p] || (node[piece.startNode] && node[piece.endNode] &&
+                                                     piece.chords.size() < 3));
+            branches.push_back(piece);
+        }
+    }
+    return branches;
+}
+
 }  // namespace
 
 Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
@@ -169,15 +235,22 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
     const int triangleCount = static_cast<int>(axis.cdt.triangles.size());
     const int pointCount = static_cast<int>(axis.cdt.points.size());
 
+    // 0. Nodes of the decomposition: junctions, and sleeves carrying a bump.
+    std::vector<bool> node(triangleCount, false);
+    for (int t = 0; t < triangleCount; ++t)
+        node[t] = !axis.pruned[t] && isJunction(axis, t);
+    std::vector<bool> forcedMerge;
+    axis.branches = splitAtBodyBumps(axis, node, forcedMerge, options);
+
     // 1. Merge short-yet-wide branches between junctions (Fig. 2 c -> d).
     UnionFind groups(triangleCount);
     std::vector<bool> merged(axis.branches.size(), false);
     for (std::size_t b = 0; b < axis.branches.size(); ++b) {
         const AxisBranch& branch = axis.branches[b];
-        if (!isJunction(axis, branch.startNode) || !isJunction(axis, branch.endNode))
+        if (!node[branch.startNode] || !node[branch.endNode])
             continue;
-        if (branchAxisLength(axis, branch) <
-            options.mergeLengthFactor * meanChordLength(axis, branch)) {
+        if (forcedMerge[b] || branchAxisLength(axis, branch) <
+                                  options.mergeLengthFactor * meanChordLength(axis, branch)) {
             merged[b] = true;
             groups.unite(branch.startNode, branch.endNode);
         }
@@ -186,7 +259,7 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
     // 2. One connecting region per group of junctions.
     std::vector<int> regionOfTriangle(triangleCount, -1);
     for (int t = 0; t < triangleCount; ++t) {
-        if (axis.pruned[t] || !isJunction(axis, t))
+        if (!node[t])
             continue;
         int root = groups.find(t);
         if (regionOfTriangle[root] < 0) {
@@ -214,8 +287,8 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
         if (merged[b])
             continue;
         AxisBranch branch = axis.branches[b];
-        absorbJunctionFans(branch, regionOfTriangle, result.connecting,
-                           isJunction(axis, branch.startNode), isJunction(axis, branch.endNode));
+        absorbJunctionFans(branch, regionOfTriangle, result.connecting, node[branch.startNode],
+                           node[branch.endNode]);
         cylinderBranches.push_back(std::move(branch));
     }
     // 4. Pruned bumps hanging off a connecting region belong to it: its patch
@@ -241,8 +314,8 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
         CylinderRegion cylinder;
         std::vector<PolygonEdge> chords = branch.chords;
         const int chordCount = static_cast<int>(chords.size());
-        const bool startIsCap = !isJunction(axis, branch.startNode);
-        const bool endIsCap = !isJunction(axis, branch.endNode);
+        const bool startIsCap = !node[branch.startNode];
+        const bool endIsCap = !node[branch.endNode];
 
         int fromStart = 0;
         if (startIsCap) {

@@ -46,6 +46,10 @@ struct DecompositionOptions {
     double mergeLengthFactor = 1.0;
     // Circle factor of the cap growth test (1 = Teddy's circle).
     double capCircleFactor = 1.0;
+    // A pruned bump off a body sleeve whose outline reaches this factor times
+    // the mean outline edge from its chord becomes a connecting region
+    // (axis/BodyBumps.h); lower ones are left to the body's cross sections.
+    double bumpHeightFactor = 1.5;
 };
 
 struct Decomposition {

@@ -2,11 +2,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "base/Error.h"
 #include "geometry/ConstrainedTriangulation.h"
 #include "pipeline/LocalFrame.h"
+#include "pipeline/RigRegionOrigins.h"
 #include "pipeline/SurfaceLimits.h"
+#include "sketch/ThinPartRefinement.h"
 
 namespace rigmesh {
 namespace {
@@ -38,6 +41,7 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     StrokeCleanOptions cleanOptions = options.stroke;
     cleanOptions.spacing /= frame.scale;
     result.polygon = cleanStroke(toLocal(frame, stroke), cleanOptions);
+    result.polygon.points = refineThinParts(result.polygon.points, result.polygon.spacing);
     SurfaceOptions surfaceOptions = options.surface;
     if (!(std::isfinite(surfaceOptions.targetEdgeLength) && surfaceOptions.targetEdgeLength >= 0))
         throw Error(MessageId::EdgeLengthNotPositive);
@@ -55,19 +59,38 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     ms.triangulate = clock.lap();
     ChordalAxis axis = computeChordalAxis(std::move(cdt), options.decomposition.axis);
     ms.chordalAxis = clock.lap();
-    result.decomposition = decompose(std::move(axis), options.decomposition);
+    // The rig's regions leave pruned bumps out (2.1); the surface's take in
+    // those off bodies (RigRegionOrigins.h).
+    DecompositionOptions rigOptions = options.decomposition;
+    rigOptions.bumpHeightFactor = std::numeric_limits<double>::infinity();
+    result.decomposition = decompose(axis, rigOptions);
+    Decomposition surfaceRegions = decompose(std::move(axis), options.decomposition);
+    const bool split = !sameRegions(surfaceRegions, result.decomposition);
     ms.decompose = clock.lap();
-    for (std::size_t c = 0; c < result.decomposition.cylinders.size(); ++c)
-        result.cylinders.push_back(buildCrossSections(result.decomposition, static_cast<int>(c),
-                                                      surfaceOptions.targetEdgeLength,
-                                                      options.sections));
+    auto sectionsOf = [&](const Decomposition& decomposition) {
+        std::vector<CylinderSections> cylinders;
+        for (std::size_t c = 0; c < decomposition.cylinders.size(); ++c)
+            cylinders.push_back(buildCrossSections(decomposition, static_cast<int>(c),
+                                                   surfaceOptions.targetEdgeLength,
+                                                   options.sections));
+        return cylinders;
+    };
+    result.cylinders = sectionsOf(result.decomposition);
+    const std::vector<CylinderSections> surfaceCylinders =
+        split ? sectionsOf(surfaceRegions) : std::vector<CylinderSections>{};
+    const Decomposition& builtRegions = split ? surfaceRegions : result.decomposition;
+    const std::vector<CylinderSections>& builtCylinders =
+        split ? surfaceCylinders : result.cylinders;
     ms.crossSections = clock.lap();
     SurfaceOptions unsmoothed = surfaceOptions;
     unsmoothed.smooth = false;
-    result.surface = buildSurface(result.decomposition, result.cylinders, unsmoothed);
+    result.surface = buildSurface(builtRegions, builtCylinders, unsmoothed);
     ms.surface = clock.lap();
     if (surfaceOptions.smooth)
-        smoothSurface(result.surface, result.decomposition, result.cylinders, surfaceOptions);
+        smoothSurface(result.surface, builtRegions, builtCylinders, surfaceOptions);
+    if (split)
+        mapOriginsToRigRegions(result.surface, surfaceRegions, surfaceCylinders,
+                               result.decomposition, result.cylinders);
     ms.smoothing = clock.lap();
 
     mapToWorld(frame, result);

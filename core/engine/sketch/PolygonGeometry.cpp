@@ -124,4 +124,23 @@ Polyline2 taubinSmoothClosed(Polyline2 polygon, int iterations) {
     return polygon;
 }
 
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+    const Vec2 ab = b - a;
+    const double length2 = ab.squaredNorm();
+    const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return (a + t * ab - p).norm();
+}
+
+bool insidePolygon(const Polyline2& polygon, const Vec2& p) {
+    bool inside = false;
+    for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+        const Vec2& a = polygon[i];
+        const Vec2& b = polygon[j];
+        if ((a.y() > p.y()) != (b.y() > p.y()) &&
+            p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+            inside = !inside;
+    }
+    return inside;
+}
+
 }  // namespace rigmesh

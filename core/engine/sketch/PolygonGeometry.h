@@ -24,6 +24,12 @@ double polylineLength(const Polyline2& points, bool closed);
 // at its first vertex.
 Polyline2 resampleClosed(const Polyline2& polygon, std::size_t count);
 
+// Distance from p to the segment ab.
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
+
+// Even-odd test: is p inside the closed polygon?
+bool insidePolygon(const Polyline2& polygon, const Vec2& p);
+
 // Taubin lambda/mu smoothing of a closed polygon: `iterations` pairs of a
 // shrinking and an inflating Laplacian step, which damp jitter without
 // shrinking the shape.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/CatmullRom.h"
+
 namespace rigmesh {
 namespace {
 
@@ -149,6 +151,45 @@ double polylineLength(const std::vector<Vec2>& polyline) {
     return length;
 }
 
+// The outline around a tip as a smooth curve: a centripetal Catmull-Rom
+// spline through the path's polygon points (the polygon's neighbours beyond
+// either end give the end tangents), sampled at a quarter of `spacing`. At
+// a thin part the polygon is coarse against the local edge length (a foot
+// 0.25 wide ends in three outline points 0.1 apart), and slicing the polygon
+// itself gave a faceted tip with creases at its corners (issue 10). The
+// curve passes through every polygon point; `indices` keeps their polygon
+// indices (-1 between them).
+struct CapPath {
+    std::vector<Vec2> points;
+    std::vector<int> indices;
+};
+
+CapPath smoothCapPath(const std::vector<Vec2>& polygon, const std::vector<int>& path,
+                      double spacing) {
+    const int size = static_cast<int>(polygon.size());
+    std::vector<Vec2> control;
+    control.push_back(polygon[(path.front() - 1 + size) % size]);
+    for (int i : path)
+        control.push_back(polygon[i]);
+    control.push_back(polygon[(path.back() + 1) % size]);
+    CapPath result;
+    for (std::size_t k = 1; k + 2 < control.size(); ++k) {
+        const Vec2 &p0 = control[k - 1], &p1 = control[k], &p2 = control[k + 1],
+                   &p3 = control[k + 2];
+        result.points.push_back(p1);
+        result.indices.push_back(path[k - 1]);
+        const int pieces =
+            std::max(1, static_cast<int>(std::ceil((p2 - p1).norm() / (0.25 * spacing))));
+        for (int j = 1; j < pieces; ++j) {
+            result.points.push_back(centripetalCatmullRom(p0, p1, p2, p3, double(j) / pieces));
+            result.indices.push_back(-1);
+        }
+    }
+    result.points.push_back(polygon[path.back()]);
+    result.indices.push_back(path.back());
+    return result;
+}
+
 struct CapSlices {
     std::vector<CrossSection> slices;  // outward from the base
     Vec2 tip;
@@ -161,16 +202,33 @@ struct CapSlices {
 // circles of a dome, so blunt and pointed ends both get rings about one edge
 // length apart. `path` runs counter-clockwise from the base chord's right end
 // point around the tip to its left end point.
-CapSlices sliceCap(const CrossSection& base, const std::vector<Vec2>& path,
+CapSlices sliceCap(const CrossSection& base, const std::vector<Vec2>& polygon,
                    const std::vector<int>& pathIndices, double spacing) {
+    const CapPath smooth = smoothCapPath(polygon, pathIndices, spacing);
+    const std::vector<Vec2>& path = smooth.points;
     std::vector<double> arc(path.size(), 0.0);
     for (std::size_t i = 1; i < path.size(); ++i)
         arc[i] = arc[i - 1] + (path[i] - path[i - 1]).norm();
+    // The tip is where the cap reaches farthest from its base chord (within
+    // 2% of the cap's height), and there nearest the arc-length middle:
+    // the middle of a round or flat end, the apex of a pointed or oblique one
+    // (at the middle, an oblique thin tip folded where its apex became a
+    // point on one side, issue 10).
+    const Vec2 baseDirection = (base.right - base.left).normalized();
+    auto height = [&](const Vec2& p) { return std::abs(cross2(baseDirection, p - base.left)); };
+    double highest = 0.0;
+    for (const Vec2& p : path)
+        highest = std::max(highest, height(p));
     std::size_t tip = 0;
-    for (std::size_t i = 1; i < path.size(); ++i)
-        if (std::abs(arc[i] - 0.5 * arc.back()) < std::abs(arc[tip] - 0.5 * arc.back()))
+    bool found = false;
+    for (std::size_t i = 1; i + 1 < path.size(); ++i) {
+        if (height(path[i]) < 0.98 * highest)
+            continue;
+        if (!found || std::abs(arc[i] - 0.5 * arc.back()) < std::abs(arc[tip] - 0.5 * arc.back()))
             tip = i;
-    CapSlices cap{{}, path[tip], pathIndices[tip]};
+        found = true;
+    }
+    CapSlices cap{{}, path[tip], smooth.indices[tip]};
     std::vector<Vec2> rightSide(path.begin(), path.begin() + static_cast<long>(tip) + 1);
     std::vector<Vec2> leftSide(path.rbegin(), path.rend() - static_cast<long>(tip));
     const double rightLength = polylineLength(rightSide), leftLength = polylineLength(leftSide);
@@ -238,16 +296,10 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
     // The end chords are the outline's own (smoothing keeps them in place).
     result.axisChords.front() = body.front();
     result.axisChords.back() = body.back();
-    auto pathPoints = [&](const std::vector<int>& indices) {
-        std::vector<Vec2> path;
-        for (int i : indices)
-            path.push_back(points[i]);
-        return path;
-    };
     if (!cylinder.startCap.empty()) {
         // Seen from the start tip the cylinder runs backwards: flip, slice, flip back.
-        CapSlices cap = sliceCap(flipped(body.front()), pathPoints(cylinder.startCap),
-                                 cylinder.startCap, body.front().spacing);
+        CapSlices cap =
+            sliceCap(flipped(body.front()), points, cylinder.startCap, body.front().spacing);
         for (auto it = cap.slices.rbegin(); it != cap.slices.rend(); ++it)
             result.sections.push_back(flipped(*it));
         result.startTip = cap.tip;
@@ -255,8 +307,7 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
     }
     result.sections.insert(result.sections.end(), body.begin(), body.end());
     if (!cylinder.endCap.empty()) {
-        CapSlices cap = sliceCap(body.back(), pathPoints(cylinder.endCap), cylinder.endCap,
-                                 body.back().spacing);
+        CapSlices cap = sliceCap(body.back(), points, cylinder.endCap, body.back().spacing);
         result.sections.insert(result.sections.end(), cap.slices.begin(), cap.slices.end());
         result.endTip = cap.tip;
         result.endTipPolygonIndex = cap.tipIndex;

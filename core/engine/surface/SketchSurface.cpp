@@ -14,6 +14,7 @@
 #include "geometry/ConstrainedTriangulation.h"
 #include "surface/LeastSquaresMesh.h"
 #include "surface/PatchLattice.h"
+#include "surface/PatchRims.h"
 
 namespace rigmesh {
 namespace {
@@ -194,7 +195,11 @@ class HalfSurfaceBuilder {
         // Cap slices shrink towards the tip; below six segments the last
         // rings make a pyramid of the tip (a crease of 45 degrees or more).
         constexpr int kMinimumCapSegments = 10;
-        const int minimum = section.inCap ? kMinimumCapSegments : 2;
+        // A body section is a ring of at least 12 (issue 10), even where a
+        // hair-thin limb's radius falls below the floor of the local edge
+        // length (1/16 of the target), as just before a thin tip.
+        constexpr int kMinimumBodySegments = 6;
+        const int minimum = section.inCap ? kMinimumCapSegments : kMinimumBodySegments;
         const int segments =
             std::max(minimum, static_cast<int>(std::lround(std::numbers::pi * radius / spacing)));
         const Vec2 centre = section.centre();
@@ -319,9 +324,12 @@ SketchSurface buildSurface(const Decomposition& decomposition,
 
 void smoothSurface(SketchSurface& surface, const Decomposition& decomposition,
                    const std::vector<CylinderSections>& cylinders, const SurfaceOptions& options) {
-    surface.mesh.vertices =
-        leastSquaresMesh(surface.mesh, anchorWeights(surface, decomposition, cylinders, options),
-                         options.maxAnchorWeight);
+    std::vector<double> weights = anchorWeights(surface, decomposition, cylinders, options);
+    const std::vector<double> rims =
+        inflatePatchRims(surface, decomposition, cylinders, options.capAnchorWeight);
+    for (std::size_t v = 0; v < weights.size(); ++v)
+        weights[v] = std::max(weights[v], rims[v]);
+    surface.mesh.vertices = leastSquaresMesh(surface.mesh, weights, options.maxAnchorWeight);
     symmetrize(surface);
 }
 

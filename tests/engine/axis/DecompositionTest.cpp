@@ -52,6 +52,39 @@ TEST(Decomposition, BipedHasLimbCylindersAroundConnectingRegions) {
     EXPECT_EQ(countCapped(d), 5);
 }
 
+// A pruned bump off the middle of a body (issue 10) is a connecting region
+// between the body's two halves, holding the bump's outline, so the surface
+// follows it; the skeleton stays one chain (two caps, no other leaf).
+TEST(Decomposition, APrunedBumpOffTheBodyBecomesAConnectingRegionWithItsOutline) {
+    const Decomposition d = decompose(axistest::axisOfStroke(testsupport::blobWithBump()));
+    ASSERT_EQ(d.connecting.size(), 1u);
+    EXPECT_EQ(d.connecting.front().ports.size(), 2u);
+    EXPECT_EQ(d.cylinders.size(), 2u);
+    EXPECT_EQ(countCapped(d), 2);
+    // Every outline vertex on the bump (above the ellipse's top, y = 1) is a
+    // corner of one of the region's triangles.
+    std::vector<bool> inRegion(d.axis.cdt.points.size(), false);
+    for (int t : d.connecting.front().triangles)
+        for (int v : d.axis.cdt.triangles[t])
+            inRegion[v] = true;
+    int bumpVertices = 0;
+    for (std::size_t v = 0; v < d.axis.cdt.points.size(); ++v)
+        if (d.axis.cdt.points[v].y() > 1.1) {
+            ++bumpVertices;
+            EXPECT_TRUE(inRegion[v]) << "bump outline vertex " << v << " is in no region";
+        }
+    EXPECT_GT(bumpVertices, 5);
+}
+
+// Pruned ears along a body lower than the outline's own spacing are no bumps:
+// the shared tubes stay one cylinder (SingleTube), and so does a plain ellipse.
+TEST(Decomposition, AnEllipseWithoutBumpIsOneCylinder) {
+    const Decomposition d = decompose(axistest::axisOfStroke(testsupport::polarOutline(
+        240, [](double t) { return 1.0 / std::hypot(std::cos(t) / 1.6, std::sin(t)); })));
+    EXPECT_EQ(d.cylinders.size(), 1u);
+    EXPECT_TRUE(d.connecting.empty());
+}
+
 class SingleTube : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SingleTube, IsOneCylinderWithTwoCaps) {

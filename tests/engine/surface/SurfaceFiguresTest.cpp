@@ -1,5 +1,5 @@
 // Issue 10's figures as guards, on every shared sketch (and the quadruped of
-// tests/data/sketches) at the default edge length and on random outlines
+// tests/data/sketches and the blob with a bump) at the default edge length and on random outlines
 // with many branches and thin parts: neighbouring face normals at most 20
 // degrees apart at the 99th percentile and 35 on every edge, a front view
 // whose silhouette covers the cleaned outline (IoU >= 0.95), at least 12
@@ -32,52 +32,44 @@ constexpr double kMaxLimit = 35.0;
 constexpr double kIoULimit = 0.95;
 constexpr int kRingLimit = 12;
 
-// Measured 2026-11-25 (radius fraction 0.25, cap slices of 10 segments, caps
-// held softly in LSM). biped: a 78-degree fold on the one edge from the apex
-// of the crotch (a 90-degree concave outline corner) to the hip patch above
-// it; an inflated surface rounds such a corner far below the edge length, so
-// the corner must be rounded. quadruped: 78.5 degrees on its back above the
-// front leg, where that leg's oblique port chord leaves a long outline
-// stretch to one strip and LSM slides the port vertex (not a crotch fold;
-// see docs/ARCHITECTURE.md). (open_gap, 42 degrees and IoU 0.917 then, meets every target since
-// its cap takes in the pruned bump beside the bridged gap: 25.0 degrees,
-// IoU 0.993.)
+// Measured 2026-11-25. biped: a 78-degree fold on the one edge from the
+// apex of the crotch (a 90-degree concave outline corner) to the hip patch
+// above it; an inflated surface rounds such a corner far below the edge
+// length, so the corner must be rounded. quadruped: 57.6 degrees at the
+// crotch between the front legs, and its thin foot tips (resolved by a few
+// outline points) hold most of its edges above 20 degrees (p99 20.1). Its
+// rump, a pruned bump off the hind leg's sleeves, is a connecting region
+// since pruned bumps off bodies are (IoU 0.964 -> 0.989), with a round rim
+// (axis/BodyBumps.h, surface/PatchRims.h).
 struct Shortfall {
     double max = kMaxLimit;
-    double iou = kIoULimit;
+    double p99 = kP99Limit;
 };
 const std::map<std::string, Shortfall> kOpenShortfalls{
-    {"biped", {78.5, kIoULimit}},
-    {"quadruped", {79.0, kIoULimit}},
+    {"biped", {78.5, kP99Limit}},
+    {"quadruped", {58.0, 20.2}},
 };
 
 std::vector<std::string> sketchNames() {
     std::vector<std::string> names = testsupport::sharedSketchNames(false);
     names.push_back("quadruped");
+    names.push_back("blob_bump");
     return names;
 }
 
 std::vector<Vec2> sketchPoints(const std::string& name) {
+    if (name == "blob_bump")
+        return testsupport::blobWithBump();
     if (name == "quadruped")
         return readSketchFile(std::string(RIGMESH_TEST_DATA) + "/sketches/quadruped.json").points;
     return testsupport::sharedSketchPoints(name);
 }
 
-// Vertices around each body cross section (the mirrored ring), smallest.
+// Vertices around each body cross section, smallest (surfacetest::ringSizes).
 int smallestRing(const SketchToSurfaceResult& result) {
-    int smallest = std::numeric_limits<int>::max();
-    for (std::size_t c = 0; c < result.cylinders.size(); ++c) {
-        const auto& sections = result.cylinders[c].sections;
-        std::vector<int> count(sections.size(), 0);
-        for (const VertexOrigin& o : result.surface.origins)
-            if (o.kind == RegionKind::Cylindrical && o.region == static_cast<int>(c) &&
-                o.section >= 0)
-                ++count[static_cast<std::size_t>(o.section)];
-        for (std::size_t s = 0; s < sections.size(); ++s)
-            if (!sections[s].inCap)
-                smallest = std::min(smallest, count[s]);
-    }
-    return smallest;
+    const std::vector<int> sizes = surfacetest::ringSizes(result);
+    return sizes.empty() ? std::numeric_limits<int>::max()
+                         : *std::min_element(sizes.begin(), sizes.end());
 }
 
 double surfaceArea(const TriMesh& mesh) {
@@ -147,9 +139,9 @@ TEST_P(SurfaceFigures, SmoothRoundAndTrueToTheOutline) {
         f.localDensity);
     const auto open = kOpenShortfalls.find(GetParam());
     const Shortfall limits = open == kOpenShortfalls.end() ? Shortfall{} : open->second;
-    EXPECT_LE(f.angles.p99, kP99Limit);
+    EXPECT_LE(f.angles.p99, limits.p99);
     EXPECT_LE(f.angles.max, limits.max);
-    EXPECT_GE(f.iou, limits.iou);
+    EXPECT_GE(f.iou, kIoULimit);
     if (!result.cylinders.empty()) {
         EXPECT_GE(f.ring, kRingLimit);
     }
@@ -211,14 +203,13 @@ std::vector<Vec2> branchyOutline(std::mt19937& random) {
     return points;
 }
 
-// On these outlines the p99 and ring targets hold, the max and IoU ones do
-// not: the central blob's arcs between arms are swept by the arms' cross
-// sections instead of joining the junction patch, so the blob comes out as
-// a creased polygon (IoU down to 0.73, folds up to 77 degrees where the
-// sections cross the blob). Guarded at the measured worst, as open items of
-// issue 10.
-constexpr double kRandomMaxMeasured = 77.0;
-constexpr double kRandomIoUMeasured = 0.73;
+// On these outlines the p99, ring and IoU targets hold (the central blob's
+// arcs between arms, pruned bumps off the sleeves crossing it, are
+// connecting regions: IoU 0.73 -> 0.95; thin arms get outline points at a
+// third of their width: 0.97 and up), the max one not yet (43.5 degrees at
+// worst, 77 before the thin-part refinement). Guarded at the measured worst,
+// as an open item of issue 10.
+constexpr double kRandomMaxMeasured = 44.0;
 
 TEST(SurfaceFiguresRandom, BranchyOutlinesKeepP99AndRingsAndNoWorseMaxOrIoU) {
     std::mt19937 random(1012);
@@ -235,7 +226,7 @@ TEST(SurfaceFiguresRandom, BranchyOutlinesKeepP99AndRingsAndNoWorseMaxOrIoU) {
             f.localDensity);
         EXPECT_LE(f.angles.p99, kP99Limit);
         EXPECT_LE(f.angles.max, kRandomMaxMeasured);
-        EXPECT_GE(f.iou, kRandomIoUMeasured);
+        EXPECT_GE(f.iou, kIoULimit);
         EXPECT_GE(f.ring, kRingLimit);
     }
 }

@@ -27,6 +27,26 @@ inline const SketchToSurfaceResult& sharedResult(const std::string& sketch) {
 }
 
 // The full mesh report (self-intersections included) of a shared sketch, cached.
+// Vertices around each body cross section (the whole mirrored ring). A
+// body cut by a pruned bump is built in pieces and its rings are told by the
+// rig cylinder's nearest section (pipeline/RigRegionOrigins.h): a section
+// there may own two rings or none; those owning none are left out.
+inline std::vector<int> ringSizes(const SketchToSurfaceResult& result) {
+    std::vector<int> sizes;
+    for (std::size_t c = 0; c < result.cylinders.size(); ++c) {
+        const auto& sections = result.cylinders[c].sections;
+        std::vector<int> count(sections.size(), 0);
+        for (const VertexOrigin& o : result.surface.origins)
+            if (o.kind == RegionKind::Cylindrical && o.region == static_cast<int>(c) &&
+                o.section >= 0)
+                ++count[static_cast<std::size_t>(o.section)];
+        for (std::size_t s = 0; s < sections.size(); ++s)
+            if (!sections[s].inCap && count[s] > 0)
+                sizes.push_back(count[s]);
+    }
+    return sizes;
+}
+
 inline const MeshReport& sharedReport(const std::string& sketch) {
     static std::map<std::string, MeshReport> cache;
     auto found = cache.find(sketch);

@@ -35,30 +35,13 @@ std::vector<Vec2> rod(double length, double radius, double step = 0.05) {
     return points;
 }
 
-// Vertices per body cross section, around the whole (mirrored) ring.
-std::vector<int> ringSizes(const SketchToSurfaceResult& result) {
-    std::vector<int> sizes;
-    for (std::size_t c = 0; c < result.cylinders.size(); ++c) {
-        const auto& sections = result.cylinders[c].sections;
-        std::vector<int> count(sections.size(), 0);
-        for (const VertexOrigin& o : result.surface.origins)
-            if (o.kind == RegionKind::Cylindrical && o.region == static_cast<int>(c) &&
-                o.section >= 0)
-                ++count[static_cast<std::size_t>(o.section)];
-        for (std::size_t s = 0; s < sections.size(); ++s)
-            if (!sections[s].inCap)
-                sizes.push_back(count[s]);
-    }
-    return sizes;
-}
-
 TEST(ThicknessResolution, ALongThinRodIsRoundNotADiamond) {
     // 10 long, 0.25 thick, at an edge length of four times its radius: one
     // edge across each half ring (a diamond) if the edge length ruled alone.
     SketchToSurfaceOptions options;
     options.surface.targetEdgeLength = 1.0;
     const SketchToSurfaceResult result = sketchToSurface(rod(10.0, 0.25), options);
-    const std::vector<int> sizes = ringSizes(result);
+    const std::vector<int> sizes = surfacetest::ringSizes(result);
     ASSERT_FALSE(sizes.empty());
     EXPECT_GE(*std::min_element(sizes.begin(), sizes.end()), 12);
     const MeshReport report = analyseMesh(result.surface.mesh, false);
@@ -68,7 +51,7 @@ TEST(ThicknessResolution, ALongThinRodIsRoundNotADiamond) {
 
 TEST(ThicknessResolution, EveryBodySectionOfTheSharedSketchesHasTwelveVerticesAround) {
     for (const std::string& name : testsupport::sharedSketchNames(false)) {
-        const std::vector<int> sizes = ringSizes(surfacetest::sharedResult(name));
+        const std::vector<int> sizes = surfacetest::ringSizes(surfacetest::sharedResult(name));
         if (!sizes.empty()) {
             EXPECT_GE(*std::min_element(sizes.begin(), sizes.end()), 12) << name;
         }

@@ -1,0 +1,129 @@
+#include "pipeline/RigRegionOrigins.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <utility>
+
+#include "sketch/PolygonGeometry.h"
+
+namespace rigmesh {
+namespace {
+
+using ChordKey = std::pair<int, int>;
+
+ChordKey keyOf(const PolygonEdge& chord) {
+    return std::minmax(chord[0], chord[1]);
+}
+
+// Where a surface region lands among the rig's regions.
+struct Target {
+    RegionKind kind = RegionKind::Connecting;
+    int region = -1;
+    bool identical = false;  // same region: origins keep their section
+};
+
+}  // namespace
+
+bool sameRegions(const Decomposition& surface, const Decomposition& rig) {
+    if (surface.cylinders.size() != rig.cylinders.size() ||
+        surface.connecting.size() != rig.connecting.size())
+        return false;
+    for (std::size_t c = 0; c < surface.cylinders.size(); ++c)
+        if (surface.cylinders[c].chords != rig.cylinders[c].chords)
+            return false;
+    return true;
+}
+
+void mapOriginsToRigRegions(SketchSurface& surface, const Decomposition& surfaceRegions,
+                            const std::vector<CylinderSections>& surfaceCylinders,
+                            const Decomposition& rigRegions,
+                            const std::vector<CylinderSections>& rigCylinders) {
+    // Each body chord of the rig belongs to one cylinder; each junction
+    // triangle to one connecting region.
+    std::map<ChordKey, int> rigCylinderOfChord;
+    for (std::size_t c = 0; c < rigRegions.cylinders.size(); ++c)
+        for (const PolygonEdge& chord : rigRegions.cylinders[c].chords)
+            rigCylinderOfChord[keyOf(chord)] = static_cast<int>(c);
+    std::map<int, int> rigRegionOfJunction;
+    for (std::size_t r = 0; r < rigRegions.connecting.size(); ++r)
+        for (int t : rigRegions.connecting[r].junctions)
+            rigRegionOfJunction[t] = static_cast<int>(r);
+
+    auto cylinderOfChords = [&](const std::vector<PolygonEdge>& chords) {
+        for (const PolygonEdge& chord : chords)
+            if (auto found = rigCylinderOfChord.find(keyOf(chord));
+                found != rigCylinderOfChord.end())
+                return found->second;
+        return -1;
+    };
+    std::vector<Target> cylinderTarget(surfaceRegions.cylinders.size());
+    for (std::size_t c = 0; c < surfaceRegions.cylinders.size(); ++c) {
+        const CylinderRegion& piece = surfaceRegions.cylinders[c];
+        const int rig = cylinderOfChords(piece.chords);
+        cylinderTarget[c] = {RegionKind::Cylindrical, rig,
+                             rig >= 0 && rigRegions.cylinders[rig].chords == piece.chords};
+    }
+    std::vector<Target> connectingTarget(surfaceRegions.connecting.size());
+    for (std::size_t r = 0; r < surfaceRegions.connecting.size(); ++r) {
+        const ConnectingRegion& region = surfaceRegions.connecting[r];
+        for (int t : region.junctions)
+            if (auto found = rigRegionOfJunction.find(t); found != rigRegionOfJunction.end())
+                connectingTarget[r] = {RegionKind::Connecting, found->second, true};
+        if (connectingTarget[r].region >= 0)
+            continue;
+        // A bump patch: part of the rig cylinder its ports came from.
+        for (const auto& port : region.ports) {
+            const int rig = cylinderTarget[port.cylinder].region;
+            if (rig >= 0)
+                connectingTarget[r] = {RegionKind::Cylindrical, rig, false};
+        }
+    }
+
+    for (std::size_t v = 0; v < surface.origins.size(); ++v) {
+        VertexOrigin& origin = surface.origins[v];
+        const Target& target = origin.kind == RegionKind::Cylindrical
+                                   ? cylinderTarget[origin.region]
+                                   : connectingTarget[origin.region];
+        if (target.region < 0) {
+            // Nothing in the rig matches (not expected): leave it to the
+            // visibility test, as a connecting vertex.
+            origin = {RegionKind::Connecting, -1, -1, 0.0, origin.onOutline};
+            continue;
+        }
+        if (target.identical) {
+            origin.region = target.region;
+            continue;
+        }
+        // The rig cylinder's cross section nearest the vertex (a ring's
+        // vertices all go by their section's centre), or its tip.
+        const CylinderSections& cylinder = rigCylinders[target.region];
+        const bool onRing = origin.kind == RegionKind::Cylindrical && origin.section >= 0;
+        const Vec2 p = onRing ? surfaceCylinders[origin.region].sections[origin.section].centre()
+                              : Vec2(surface.mesh.vertices[v].head<2>());
+        double best = std::numeric_limits<double>::infinity();
+        int section = -1;
+        double position = 0.0;
+        for (std::size_t s = 0; s < cylinder.sections.size(); ++s) {
+            const double d =
+                distanceToSegment(p, cylinder.sections[s].left, cylinder.sections[s].right);
+            if (d < best) {
+                best = d;
+                section = static_cast<int>(s);
+                position = cylinder.axisPosition[s];
+            }
+        }
+        if (cylinder.startTip && (p - *cylinder.startTip).norm() < best) {
+            best = (p - *cylinder.startTip).norm();
+            section = -1;
+            position = 0.0;
+        }
+        if (cylinder.endTip && (p - *cylinder.endTip).norm() < best) {
+            section = -1;
+            position = cylinder.endTipPosition;
+        }
+        origin = {RegionKind::Cylindrical, target.region, section, position, origin.onOutline};
+    }
+}
+
+}  // namespace rigmesh

@@ -1,0 +1,28 @@
+// The skeleton does not see pruned bumps (paper 2.1 prunes them as
+// insignificant branches), while the surface must cover them (issue 10).
+// sketchToSurface therefore decomposes twice: with body bumps as connecting
+// regions for the surface (axis/BodyBumps.h), and without for the rig, whose
+// skeleton, joint ids and recipes stay what they were. The vertex origins
+// are then told in the rig's regions: a body piece's ring belongs to the rig
+// cylinder the piece came from, at the cross section nearest the ring's
+// centre, and a bump patch's vertex at the section nearest itself, as if
+// that cylinder had been built over the bump.
+#pragma once
+
+#include <vector>
+
+#include "surface/SketchSurface.h"
+
+namespace rigmesh {
+
+// True when `surface` and `rig` decompose the sketch into the same regions.
+bool sameRegions(const Decomposition& surface, const Decomposition& rig);
+
+// Rewrites `surface.origins` from the regions of `surfaceRegions` to those
+// of `rigRegions`.
+void mapOriginsToRigRegions(SketchSurface& surface, const Decomposition& surfaceRegions,
+                            const std::vector<CylinderSections>& surfaceCylinders,
+                            const Decomposition& rigRegions,
+                            const std::vector<CylinderSections>& rigCylinders);
+
+}  // namespace rigmesh

@@ -1,0 +1,26 @@
+// Round rims for connecting patches (issue 10). The paper leaves connecting
+// regions free in Least-Squares Meshes (2.2), since they "typically share
+// only a short boundary with the user sketch". Where a patch does follow the
+// outline for long (a rump, a bump off a body, a blob between limbs), a free
+// patch held at z = 0 on the outline meets its mirror image at an angle: a
+// fold along the silhouette. Near the outline the patch's vertices are
+// therefore lifted to an inflated height, sqrt(d (2R - d)) at distance d
+// from the outline for the region's thickness R (the mean radius of the
+// cylinders meeting it), and held there softly, less so further in, so the
+// surface meets the sketch plane upright as a round cylinder does.
+#pragma once
+
+#include <vector>
+
+#include "surface/SketchSurface.h"
+
+namespace rigmesh {
+
+// Lifts the connecting regions' vertices within R of the outline (and their
+// mirror images) and returns their soft anchor weights, at most
+// `rimWeight`, falling to 0 at distance R; other vertices get 0.
+std::vector<double> inflatePatchRims(SketchSurface& surface, const Decomposition& decomposition,
+                                     const std::vector<CylinderSections>& cylinders,
+                                     double rimWeight);
+
+}  // namespace rigmesh
