@@ -92,6 +92,24 @@ inline std::vector<Vec2> blobWithBump() {
     return points;
 }
 
+// A body with seven bumps alternating on its top and bottom (a caterpillar):
+// runs of neighbouring body sleeves each carry a pruned bump.
+inline std::vector<Vec2> bumpyCaterpillar() {
+    std::vector<Vec2> points;
+    constexpr int kCount = 480;
+    for (int i = 0; i < kCount; ++i) {
+        const double t = 2 * std::numbers::pi * i / kCount;
+        const double x = 3.0 * std::cos(t);
+        const double side = std::sin(t) >= 0 ? 1.0 : -1.0;
+        double bump = 0.0;
+        for (int k = -3; k <= 3; ++k)
+            if ((k % 2 == 0) == (side > 0))
+                bump += 0.3 * std::exp(-std::pow((x - 0.8 * k) / 0.18, 2));
+        points.emplace_back(x, (0.7 + bump) * std::sin(t));
+    }
+    return points;
+}
+
 // A star with `arms` rounded arms of length about `armLength` around a body
 // of radius `body`; the higher `sharpness`, the thinner the arms.
 inline std::vector<Vec2> armedStar(int arms, double body, double armLength, int sharpness = 6,

@@ -5,8 +5,9 @@
 
 namespace rigmesh {
 
-double prunedBumpHeight(const ChordalAxis& axis, int sleeve) {
-    double height = 0.0;
+PrunedBump prunedBumpOf(const ChordalAxis& axis, int sleeve) {
+    PrunedBump bump;
+    double& height = bump.height;
     const auto& corners = axis.cdt.triangles[sleeve];
     for (int k = 0; k < 3; ++k) {
         const int start = axis.cdt.neighbors[sleeve][k];
@@ -16,6 +17,7 @@ double prunedBumpHeight(const ChordalAxis& axis, int sleeve) {
         const Vec2 a = axis.cdt.points[corners[(k + 1) % 3]];
         const Vec2 b = axis.cdt.points[corners[(k + 2) % 3]];
         const Vec2 along = (b - a).normalized();
+        bump.base = std::max(bump.base, (b - a).norm());
         // The pruned triangles form a subtree of the dual tree below the chord.
         std::vector<int> stack{start};
         std::vector<int> previous{sleeve};
@@ -35,7 +37,7 @@ double prunedBumpHeight(const ChordalAxis& axis, int sleeve) {
                 }
         }
     }
-    return height;
+    return bump;
 }
 
 BranchPieces splitAtSleeves(const AxisBranch& branch, const std::vector<int>& bumpSleeves) {

@@ -14,9 +14,13 @@
 
 namespace rigmesh {
 
-// How far the outline of the pruned bump hanging off `sleeve` reaches from
-// the chord it hangs on (0 if none hangs there).
-double prunedBumpHeight(const ChordalAxis& axis, int sleeve);
+// The pruned bump hanging off `sleeve`: how far its outline reaches from the
+// chord it hangs on, and that chord's length (both 0 if none hangs there).
+struct PrunedBump {
+    double height = 0.0;
+    double base = 0.0;
+};
+PrunedBump prunedBumpOf(const ChordalAxis& axis, int sleeve);
 
 // `branch` cut at runs of its sleeves listed in `bumpSleeves` (ascending
 // sleeve indices): a piece up to the first sleeve of each run, a piece

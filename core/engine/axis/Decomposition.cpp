@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 
 #include "axis/BodyBumps.h"
@@ -197,26 +198,47 @@ std::array<int, 2> bodySleeves(const ChordalAxis& axis, const AxisBranch& branch
 std::vector<AxisBranch> splitAtBodyBumps(const ChordalAxis& axis, std::vector<bool>& node,
                                          std::vector<bool>& forcedMerge,
                                          const DecompositionOptions& options) {
-    const int pointCount = static_cast<int>(axis.cdt.points.size());
-    double perimeter = 0.0;
-    for (int i = 0; i < pointCount; ++i)
-        perimeter += (axis.cdt.points[(i + 1) % pointCount] - axis.cdt.points[i]).norm();
-    const double minimumHeight = options.bumpHeightFactor * perimeter / pointCount;
-
     std::vector<AxisBranch> branches;
+    if (!std::isfinite(options.bumpHeightFactor)) {
+        forcedMerge.assign(axis.branches.size(), false);
+        return axis.branches;
+    }
+    // The outline's own spacing: most of its edges (thin parts are refined
+    // to shorter ones, sketch/ThinPartRefinement.h), so the 90th percentile.
+    const int pointCount = static_cast<int>(axis.cdt.points.size());
+    std::vector<double> edges;
+    for (int i = 0; i < pointCount; ++i)
+        edges.push_back((axis.cdt.points[(i + 1) % pointCount] - axis.cdt.points[i]).norm());
+    const auto percentile = edges.begin() + static_cast<long>(0.9 * (edges.size() - 1));
+    std::nth_element(edges.begin(), percentile, edges.end());
+    const double minimumHeight = options.bumpHeightFactor * *percentile;
     for (const AxisBranch& branch : axis.branches) {
         const auto [first, end] = bodySleeves(axis, branch, node, options);
         std::vector<int> bumps;
-        for (int s = first; s < end; ++s)
-            if (prunedBumpHeight(axis, branch.sleeves[s]) >= minimumHeight)
+        for (int s = first; s < end; ++s) {
+            // A bump narrower than half the body there (a wart) is left to
+            // the body's cross sections: as a patch between two body pieces
+            // whose end chords meet at one point across the body, it came
+            // out as a horn with a fold around it.
+            const PrunedBump bump = prunedBumpOf(axis, branch.sleeves[s]);
+            const double body =
+                0.5 * (axis.length(branch.chords[s]) + axis.length(branch.chords[s + 1]));
+            if (bump.height >= minimumHeight && bump.base >= 0.5 * body)
                 bumps.push_back(s);
+        }
         if (bumps.empty()) {
             branches.push_back(branch);
             forcedMerge.push_back(false);
             continue;
         }
-        for (int s : bumps)
-            node[branch.sleeves[s]] = true;
+        // The ends of each run of bump sleeves are nodes; the sleeves between
+        // them reach the region through the run's merged piece.
+        for (std::size_t i = 0; i < bumps.size(); ++i) {
+            const bool runStart = i == 0 || bumps[i - 1] != bumps[i] - 1;
+            const bool runEnd = i + 1 == bumps.size() || bumps[i + 1] != bumps[i] + 1;
+            if (runStart || runEnd)
+                node[branch.sleeves[bumps[i]]] = true;
+        }
         BranchPieces split = splitAtSleeves(branch, bumps);
         for (std::size_t p = 0; p < split.pieces.size(); ++p) {
             const AxisBranch& piece = split.pieces[p];

@@ -47,8 +47,9 @@ struct DecompositionOptions {
     // Circle factor of the cap growth test (1 = Teddy's circle).
     double capCircleFactor = 1.0;
     // A pruned bump off a body sleeve whose outline reaches this factor times
-    // the mean outline edge from its chord becomes a connecting region
-    // (axis/BodyBumps.h); lower ones are left to the body's cross sections.
+    // the outline's spacing (the 90th percentile of its edges) from its chord
+    // becomes a connecting region (axis/BodyBumps.h); lower ones are left to
+    // the body's cross sections. Infinite: none (the rig's decomposition).
     double bumpHeightFactor = 1.5;
 };
 

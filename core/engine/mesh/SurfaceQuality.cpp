@@ -1,4 +1,5 @@
 #include "mesh/SurfaceQuality.h"
+#include "sketch/PolygonGeometry.h"
 
 #include <algorithm>
 #include <array>
@@ -24,19 +25,6 @@ double percentile(std::vector<double> values, double fraction) {
         std::min(values.size() - 1, static_cast<std::size_t>(fraction * (values.size() - 1) + 0.5));
     std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
     return values[k];
-}
-
-// Even-odd test of a point against a closed polygon.
-bool insidePolygon(const std::vector<Vec2>& polygon, double x, double y) {
-    bool inside = false;
-    for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-        const Vec2& a = polygon[i];
-        const Vec2& b = polygon[j];
-        if ((a.y() > y) != (b.y() > y) &&
-            x < (b.x() - a.x()) * (y - a.y()) / (b.y() - a.y()) + a.x())
-            inside = !inside;
-    }
-    return inside;
 }
 
 }  // namespace
@@ -150,7 +138,7 @@ double silhouetteIoU(const TriMesh& mesh, const std::vector<Vec2>& outline, int 
             const Vec2 c = centre(i, j);
             const bool a = shadow[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) +
                                   static_cast<std::size_t>(i)] != 0;
-            const bool b = insidePolygon(outline, c.x(), c.y());
+            const bool b = insidePolygon(outline, c);
             both += a && b ? 1 : 0;
             either += a || b ? 1 : 0;
         }

@@ -80,6 +80,8 @@ void mapOriginsToRigRegions(SketchSurface& surface, const Decomposition& surface
         }
     }
 
+    // A ring's vertices all go to the section found for its first one.
+    std::map<std::pair<int, int>, VertexOrigin> ringOrigin;
     for (std::size_t v = 0; v < surface.origins.size(); ++v) {
         VertexOrigin& origin = surface.origins[v];
         const Target& target = origin.kind == RegionKind::Cylindrical
@@ -99,6 +101,14 @@ void mapOriginsToRigRegions(SketchSurface& surface, const Decomposition& surface
         // vertices all go by their section's centre), or its tip.
         const CylinderSections& cylinder = rigCylinders[target.region];
         const bool onRing = origin.kind == RegionKind::Cylindrical && origin.section >= 0;
+        const std::pair<int, int> ringKey{origin.region, origin.section};
+        if (onRing) {
+            if (auto found = ringOrigin.find(ringKey); found != ringOrigin.end()) {
+                origin = {found->second.kind, found->second.region, found->second.section,
+                          found->second.axisPosition, origin.onOutline};
+                continue;
+            }
+        }
         const Vec2 p = onRing ? surfaceCylinders[origin.region].sections[origin.section].centre()
                               : Vec2(surface.mesh.vertices[v].head<2>());
         double best = std::numeric_limits<double>::infinity();
@@ -123,6 +133,8 @@ void mapOriginsToRigRegions(SketchSurface& surface, const Decomposition& surface
             position = cylinder.endTipPosition;
         }
         origin = {RegionKind::Cylindrical, target.region, section, position, origin.onOutline};
+        if (onRing)
+            ringOrigin[ringKey] = origin;
     }
 }
 

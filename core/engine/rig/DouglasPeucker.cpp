@@ -6,20 +6,11 @@
 #include <utility>
 
 #include "base/Error.h"
+#include "sketch/PolygonGeometry.h"
 
 namespace rigmesh {
 
 namespace {
-
-double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
-    const Vec2 ab = b - a;
-    const double lengthSquared = ab.squaredNorm();
-    if (lengthSquared == 0.0) {
-        return (p - a).norm();
-    }
-    const double t = std::clamp((p - a).dot(ab) / lengthSquared, 0.0, 1.0);
-    return (p - (a + t * ab)).norm();
-}
 
 Vec2 perpendicular(const Vec2& v) {
     return {-v.y(), v.x()};

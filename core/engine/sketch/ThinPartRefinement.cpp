@@ -6,7 +6,6 @@
 #include <utility>
 
 #include "geometry/CatmullRom.h"
-#include "sketch/PolygonGeometry.h"
 #include "sketch/SegmentCrossings.h"
 
 namespace rigmesh {
@@ -29,6 +28,14 @@ bool crossesItself(const std::vector<Vec2>& polygon) {
         return j != i + 1 && !(i == 0 && j == n - 1);
     };
     return !findSegmentCrossings(segments, notAdjacent, true).empty();
+}
+
+// Does polygon[to] lie left of the outline's tangent at polygon[from]?
+bool facesInward(const std::vector<Vec2>& polygon, int from, int to) {
+    const int n = static_cast<int>(polygon.size());
+    const Vec2 tangent = polygon[(from + 1) % n] - polygon[(from - 1 + n) % n];
+    const Vec2 d = polygon[to] - polygon[from];
+    return tangent.x() * d.y() - tangent.y() * d.x() > 0;
 }
 
 }  // namespace
@@ -67,8 +74,10 @@ std::vector<double> outlineWidths(const std::vector<Vec2>& polygon, double limit
                         continue;  // a neighbour along the outline, not across it
                     // Across a limb, not across a gap between two (a crotch
                     // is no thin part; refining it would move the
-                    // junction's chords and with them the skeleton).
-                    if (!insidePolygon(polygon, 0.5 * (polygon[i] + polygon[j])))
+                    // junction's chords and with them the skeleton): the
+                    // other point lies on the inner side (left, as the
+                    // outline runs counter-clockwise) of each one's tangent.
+                    if (!facesInward(polygon, i, j) || !facesInward(polygon, j, i))
                         continue;
                     width[i] = d;
                 }

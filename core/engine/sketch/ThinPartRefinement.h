@@ -16,7 +16,8 @@ namespace rigmesh {
 
 // The width of the outline at each point: the distance to the nearest point
 // across the shape (one reached by the outline only along a path at least
-// twice as long as the straight line, with the segment's middle inside),
+// twice as long as the straight line, and on the inner side of the outline
+// at both ends),
 // at most `limit`, and at most a
 // neighbour's width plus half the distance to it (so the round end of a
 // thin limb counts as thin).

@@ -197,11 +197,11 @@ struct CapSlices {
 };
 
 // Continues the cross sections into a cap (paper 2.2). The outline around the
-// tip is split at its arc-length middle, the tip, and each side is walked in
-// equal steps: slice k joins the k-th points of both sides, like the latitude
+// tip (smoothCapPath) is split at the tip and each side is walked in equal
+// steps: slice k joins the k-th points of both sides, like the latitude
 // circles of a dome, so blunt and pointed ends both get rings about one edge
-// length apart. `path` runs counter-clockwise from the base chord's right end
-// point around the tip to its left end point.
+// length apart. `pathIndices` run counter-clockwise (polygon indices) from
+// the base chord's right end point around the tip to its left end point.
 CapSlices sliceCap(const CrossSection& base, const std::vector<Vec2>& polygon,
                    const std::vector<int>& pathIndices, double spacing) {
     const CapPath smooth = smoothCapPath(polygon, pathIndices, spacing);

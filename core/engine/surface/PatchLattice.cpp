@@ -8,16 +8,10 @@
 #include <Eigen/Geometry>
 
 #include "base/Error.h"
+#include "sketch/PolygonGeometry.h"
 
 namespace rigmesh {
 namespace {
-
-double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
-    Vec2 ab = b - a;
-    double t =
-        ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-    return (p - (a + t * ab)).norm();
-}
 
 // Boundary segments bucketed in square cells one edge length wide: a segment
 // within half an edge of a point touches the point's cell or a neighbour.
@@ -56,9 +50,8 @@ class SegmentGrid {
         for (int r = std::max(0, r0 - 1); r <= std::min(rows_ - 1, r0 + 1); ++r)
             for (int c = std::max(0, c0 - 1); c <= std::min(columns_ - 1, c0 + 1); ++c)
                 for (int i : cells_[index(c, r)])
-                    clearance =
-                        std::min(clearance,
-                                 pointSegmentDistance(p, loop_[i], loop_[(i + 1) % loop_.size()]));
+                    clearance = std::min(
+                        clearance, distanceToSegment(p, loop_[i], loop_[(i + 1) % loop_.size()]));
         return clearance;
     }
 

@@ -2,46 +2,62 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
-
-#include "sketch/PolygonGeometry.h"
+#include <queue>
+#include <utility>
 
 namespace rigmesh {
 namespace {
 
-// The mean radius of the cylinder ends meeting each connecting region.
-std::vector<double> regionThickness(const Decomposition& decomposition,
-                                    const std::vector<CylinderSections>& cylinders) {
-    std::vector<double> sum(decomposition.connecting.size(), 0.0);
-    std::vector<int> count(decomposition.connecting.size(), 0);
-    for (std::size_t c = 0; c < cylinders.size(); ++c) {
-        const CylinderRegion& region = decomposition.cylinders[c];
-        if (region.startConnecting >= 0) {
-            sum[region.startConnecting] += cylinders[c].sections.front().radius();
-            ++count[region.startConnecting];
-        }
-        if (region.endConnecting >= 0) {
-            sum[region.endConnecting] += cylinders[c].sections.back().radius();
-            ++count[region.endConnecting];
-        }
-    }
-    for (std::size_t r = 0; r < sum.size(); ++r)
-        sum[r] = count[r] > 0 ? sum[r] / count[r] : 0.0;
-    return sum;
+constexpr double kFar = std::numeric_limits<double>::infinity();
+
+std::vector<std::vector<int>> neighbours(const TriMesh& mesh) {
+    std::vector<std::vector<int>> ring(mesh.vertices.size());
+    for (const auto& f : mesh.faces)
+        for (int k = 0; k < 3; ++k)
+            ring[f[k]].push_back(f[(k + 1) % 3]);
+    return ring;
 }
 
-// The chords where cylinders meet each connecting region (their end sections).
-std::vector<std::vector<CrossSection>> regionPorts(const Decomposition& decomposition,
-                                                   const std::vector<CylinderSections>& cylinders) {
-    std::vector<std::vector<CrossSection>> ports(decomposition.connecting.size());
-    for (std::size_t c = 0; c < cylinders.size(); ++c) {
-        const CylinderRegion& region = decomposition.cylinders[c];
-        if (region.startConnecting >= 0)
-            ports[region.startConnecting].push_back(cylinders[c].sections.front());
-        if (region.endConnecting >= 0)
-            ports[region.endConnecting].push_back(cylinders[c].sections.back());
+// Distances along the edges (in the sketch plane) from the `sources` through
+// the connecting regions' inner vertices, with the value each vertex takes
+// from its nearest source.
+struct Field {
+    std::vector<double> distance;
+    std::vector<double> value;
+};
+
+Field spread(const SketchSurface& surface, const std::vector<std::vector<int>>& ring,
+             const std::vector<std::pair<int, double>>& sources) {
+    const auto& origins = surface.origins;
+    const auto& positions = surface.mesh.vertices;
+    Field field{std::vector<double>(positions.size(), kFar),
+                std::vector<double>(positions.size(), 0.0)};
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+    for (const auto& [v, value] : sources) {
+        field.distance[v] = 0.0;
+        field.value[v] = value;
+        queue.push({0.0, v});
     }
-    return ports;
+    while (!queue.empty()) {
+        const auto [d, v] = queue.top();
+        queue.pop();
+        if (d > field.distance[v])
+            continue;
+        for (int w : ring[v]) {
+            if (origins[w].kind != RegionKind::Connecting || origins[w].onOutline)
+                continue;
+            const double next = d + (positions[w].head<2>() - positions[v].head<2>()).norm();
+            if (next < field.distance[w]) {
+                field.distance[w] = next;
+                field.value[w] = field.value[v];
+                queue.push({next, w});
+            }
+        }
+    }
+    return field;
 }
 
 }  // namespace
@@ -50,41 +66,56 @@ std::vector<double> inflatePatchRims(SketchSurface& surface, const Decomposition
                                      const std::vector<CylinderSections>& cylinders,
                                      double rimWeight) {
     auto& positions = surface.mesh.vertices;
+    const auto& origins = surface.origins;
     const int n = static_cast<int>(positions.size());
     std::vector<double> weights(n, 0.0);
-    const std::vector<double> thickness = regionThickness(decomposition, cylinders);
+    const auto ring = neighbours(surface.mesh);
 
-    // The outline as the polygon's segments (the surface's outline vertices
-    // lie on them).
-    const auto& outline = decomposition.axis.cdt.points;
-    const int m = static_cast<int>(outline.size());
-    auto distanceToOutline = [&](const Vec2& p, double limit) {
-        double best = limit;
-        for (int i = 0; i < m; ++i)
-            best = std::min(best, distanceToSegment(p, outline[i], outline[(i + 1) % m]));
-        return best;
-    };
-    const auto ports = regionPorts(decomposition, cylinders);
+    // Distance to the outline, and to the nearest port ring with that ring's
+    // radius: both measured inside the patches, from their boundaries.
+    std::vector<std::pair<int, double>> outline, ports;
     for (int v = 0; v < n; ++v) {
-        const VertexOrigin& origin = surface.origins[v];
+        const VertexOrigin& o = origins[v];
+        if (o.onOutline) {
+            outline.push_back({v, 0.0});
+        } else if (o.kind == RegionKind::Cylindrical && o.section >= 0 &&
+                   std::any_of(ring[v].begin(), ring[v].end(),
+                               [&](int w) { return origins[w].kind == RegionKind::Connecting; })) {
+            ports.push_back({v, cylinders[o.region].sections[o.section].radius()});
+        }
+    }
+    const Field toOutline = spread(surface, ring, outline);
+    const Field toPort = spread(surface, ring, ports);
+
+    // A region's thickness R: how far its inside reaches from the outline.
+    std::vector<double> thickness(decomposition.connecting.size(), 0.0);
+    for (int v = 0; v < n; ++v)
+        if (origins[v].kind == RegionKind::Connecting && toOutline.distance[v] < kFar)
+            thickness[origins[v].region] =
+                std::max(thickness[origins[v].region], toOutline.distance[v]);
+
+    for (int v = 0; v < n; ++v) {
+        const VertexOrigin& origin = origins[v];
         if (origin.kind != RegionKind::Connecting || origin.onOutline ||
             surface.mirror[v] < v)  // each pair once, from its upper vertex
             continue;
-        const double radius = thickness[origin.region];
-        if (!(radius > 0))
-            continue;
-        const double d = distanceToOutline(positions[v].head<2>(), radius);
-        if (d >= radius)
-            continue;
         // Near a port the cylinder's rings shape the patch (a crotch is close
-        // to the outline yet high): the rim is held only a radius away.
-        double port = 2.0 * radius;
-        for (const CrossSection& s : ports[origin.region])
-            port = std::min(port, distanceToSegment(positions[v].head<2>(), s.left, s.right));
-        const double z = std::sqrt(d * (2.0 * radius - d));
-        const double w = rimWeight * (1.0 - d / radius) * std::clamp(port / radius - 1.0, 0.0, 1.0);
+        // to the outline yet high): the rim is held only a port radius away,
+        // and no thicker than the port's ring grows at 45 degrees from it
+        // (a shoulder's rim does not rise above its arm).
+        const double portRadius = toPort.value[v];
+        const double radius =
+            portRadius > 0 ? std::min(thickness[origin.region], portRadius + toPort.distance[v])
+                           : thickness[origin.region];
+        const double d = toOutline.distance[v];
+        if (!(radius > 0) || !(d < radius))
+            continue;
+        const double near =
+            portRadius > 0 ? std::clamp(toPort.distance[v] / portRadius - 1.0, 0.0, 1.0) : 1.0;
+        const double w = rimWeight * (1.0 - d / radius) * near;
         if (!(w > 0))
             continue;
+        const double z = std::sqrt(d * (2.0 * radius - d));
         const int mirror = surface.mirror[v];
         positions[v].z() = z;
         positions[mirror].z() = -z;

@@ -5,9 +5,11 @@
 // patch held at z = 0 on the outline meets its mirror image at an angle: a
 // fold along the silhouette. Near the outline the patch's vertices are
 // therefore lifted to an inflated height, sqrt(d (2R - d)) at distance d
-// from the outline for the region's thickness R (the mean radius of the
-// cylinders meeting it), and held there softly, less so further in, so the
-// surface meets the sketch plane upright as a round cylinder does.
+// from the outline for the region's thickness R (how far its inside reaches
+// from the outline), and held there softly, less so further in and not
+// within a port's radius of its ring, so the surface meets the sketch plane
+// upright as a round cylinder does. Distances are measured along the
+// patch's edges from its boundary (linear in its vertices).
 #pragma once
 
 #include <vector>
@@ -16,9 +18,9 @@
 
 namespace rigmesh {
 
-// Lifts the connecting regions' vertices within R of the outline (and their
-// mirror images) and returns their soft anchor weights, at most
-// `rimWeight`, falling to 0 at distance R; other vertices get 0.
+// Lifts the connecting regions' vertices (and their mirror images) and
+// returns their soft anchor weights, at most `rimWeight`, falling to 0 at
+// distance R; other vertices get 0.
 std::vector<double> inflatePatchRims(SketchSurface& surface, const Decomposition& decomposition,
                                      const std::vector<CylinderSections>& cylinders,
                                      double rimWeight);

@@ -35,31 +35,38 @@ constexpr int kRingLimit = 12;
 // Measured 2026-11-25. biped: a 78-degree fold on the one edge from the
 // apex of the crotch (a 90-degree concave outline corner) to the hip patch
 // above it; an inflated surface rounds such a corner far below the edge
-// length, so the corner must be rounded. quadruped: 57.6 degrees at the
-// crotch between the front legs, and its thin foot tips (resolved by a few
-// outline points) hold most of its edges above 20 degrees (p99 20.1). Its
+// length, so the corner must be rounded. quadruped: 55.3 degrees at the
+// crotch between the front legs (p99 17.0). Its
 // rump, a pruned bump off the hind leg's sleeves, is a connecting region
 // since pruned bumps off bodies are (IoU 0.964 -> 0.989), with a round rim
-// (axis/BodyBumps.h, surface/PatchRims.h).
+// (axis/BodyBumps.h, surface/PatchRims.h). caterpillar: its seven narrow
+// bumps (0.36 wide on a body 1.4 across) are left to the body's sections, so
+// they are shaved (IoU 0.942); as patches they came out as horns with folds
+// of up to 122 degrees around them.
 struct Shortfall {
     double max = kMaxLimit;
     double p99 = kP99Limit;
+    double iou = kIoULimit;
 };
 const std::map<std::string, Shortfall> kOpenShortfalls{
-    {"biped", {78.5, kP99Limit}},
-    {"quadruped", {58.0, 20.2}},
+    {"biped", {78.5, kP99Limit, kIoULimit}},
+    {"quadruped", {55.5, 17.5, kIoULimit}},
+    {"caterpillar", {kMaxLimit, kP99Limit, 0.94}},
 };
 
 std::vector<std::string> sketchNames() {
     std::vector<std::string> names = testsupport::sharedSketchNames(false);
     names.push_back("quadruped");
     names.push_back("blob_bump");
+    names.push_back("caterpillar");
     return names;
 }
 
 std::vector<Vec2> sketchPoints(const std::string& name) {
     if (name == "blob_bump")
         return testsupport::blobWithBump();
+    if (name == "caterpillar")
+        return testsupport::bumpyCaterpillar();
     if (name == "quadruped")
         return readSketchFile(std::string(RIGMESH_TEST_DATA) + "/sketches/quadruped.json").points;
     return testsupport::sharedSketchPoints(name);
@@ -141,7 +148,7 @@ TEST_P(SurfaceFigures, SmoothRoundAndTrueToTheOutline) {
     const Shortfall limits = open == kOpenShortfalls.end() ? Shortfall{} : open->second;
     EXPECT_LE(f.angles.p99, limits.p99);
     EXPECT_LE(f.angles.max, limits.max);
-    EXPECT_GE(f.iou, kIoULimit);
+    EXPECT_GE(f.iou, limits.iou);
     if (!result.cylinders.empty()) {
         EXPECT_GE(f.ring, kRingLimit);
     }
