@@ -138,4 +138,73 @@ void mapOriginsToRigRegions(SketchSurface& surface, const Decomposition& surface
     }
 }
 
+void mapOriginsByNearestSection(SketchSurface& surface,
+                                const std::vector<CylinderSections>& surfaceCylinders,
+                                const Decomposition& rigRegions,
+                                const std::vector<CylinderSections>& rigCylinders) {
+    // The rig section (or tip) nearest a point, over every rig cylinder.
+    auto nearestSection = [&](const Vec2& p, bool tipsToo) {
+        VertexOrigin best{RegionKind::Connecting, -1, -1, 0.0, false};
+        double distance = std::numeric_limits<double>::infinity();
+        for (std::size_t c = 0; c < rigCylinders.size(); ++c) {
+            const CylinderSections& cylinder = rigCylinders[c];
+            for (std::size_t s = 0; s < cylinder.sections.size(); ++s) {
+                const double d =
+                    distanceToSegment(p, cylinder.sections[s].left, cylinder.sections[s].right);
+                if (d < distance) {
+                    distance = d;
+                    best = {RegionKind::Cylindrical, static_cast<int>(c), static_cast<int>(s),
+                            cylinder.axisPosition[s], false};
+                }
+            }
+            if (!tipsToo)
+                continue;
+            if (cylinder.startTip && (p - *cylinder.startTip).norm() < distance) {
+                distance = (p - *cylinder.startTip).norm();
+                best = {RegionKind::Cylindrical, static_cast<int>(c), -1, 0.0, false};
+            }
+            if (cylinder.endTip && (p - *cylinder.endTip).norm() < distance) {
+                distance = (p - *cylinder.endTip).norm();
+                best = {RegionKind::Cylindrical, static_cast<int>(c), -1, cylinder.endTipPosition,
+                        false};
+            }
+        }
+        return best;
+    };
+    const auto& axis = rigRegions.axis;
+    std::map<std::pair<int, int>, VertexOrigin> ringOrigin;
+    for (std::size_t v = 0; v < surface.origins.size(); ++v) {
+        VertexOrigin& origin = surface.origins[v];
+        const bool onOutline = origin.onOutline;
+        const Vec2 p = surface.mesh.vertices[v].head<2>();
+        if (origin.kind == RegionKind::Cylindrical && origin.section >= 0) {
+            const std::pair<int, int> key{origin.region, origin.section};
+            auto found = ringOrigin.find(key);
+            if (found == ringOrigin.end())
+                found =
+                    ringOrigin
+                        .emplace(
+                            key,
+                            nearestSection(
+                                surfaceCylinders[origin.region].sections[origin.section].centre(),
+                                false))
+                        .first;
+            origin = found->second;
+        } else if (origin.kind == RegionKind::Cylindrical || rigRegions.connecting.empty()) {
+            origin = nearestSection(p, true);
+        } else {
+            double distance = std::numeric_limits<double>::infinity();
+            int region = -1;
+            for (std::size_t r = 0; r < rigRegions.connecting.size(); ++r)
+                for (int t : rigRegions.connecting[r].junctions)
+                    if ((axis.centroid(t) - p).norm() < distance) {
+                        distance = (axis.centroid(t) - p).norm();
+                        region = static_cast<int>(r);
+                    }
+            origin = {RegionKind::Connecting, region, -1, 0.0, false};
+        }
+        origin.onOutline = onOutline;
+    }
+}
+
 }  // namespace rigmesh

@@ -25,4 +25,15 @@ void mapOriginsToRigRegions(SketchSurface& surface, const Decomposition& surface
                             const Decomposition& rigRegions,
                             const std::vector<CylinderSections>& rigCylinders);
 
+// As above when the surface was built on another outline than the rig's
+// (concave corners rounded, sketch/ConcaveCorners.h), so no chord is shared:
+// a ring belongs to the rig section nearest its centre over all cylinders,
+// a tip to the nearest rig section or tip, a patch vertex to the rig's
+// connecting region with the nearest junction (or, without one, to the
+// nearest section).
+void mapOriginsByNearestSection(SketchSurface& surface,
+                                const std::vector<CylinderSections>& surfaceCylinders,
+                                const Decomposition& rigRegions,
+                                const std::vector<CylinderSections>& rigCylinders);
+
 }  // namespace rigmesh

@@ -3,12 +3,14 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "base/Error.h"
 #include "geometry/ConstrainedTriangulation.h"
 #include "pipeline/LocalFrame.h"
 #include "pipeline/RigRegionOrigins.h"
 #include "pipeline/SurfaceLimits.h"
+#include "sketch/ConcaveCorners.h"
 #include "sketch/ThinPartRefinement.h"
 
 namespace rigmesh {
@@ -41,7 +43,14 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     StrokeCleanOptions cleanOptions = options.stroke;
     cleanOptions.spacing /= frame.scale;
     result.polygon = cleanStroke(toLocal(frame, stroke), cleanOptions);
+    // The surface is built on the outline with its concave corners rounded
+    // (sketch/ConcaveCorners.h); the rig, and the part's outline, keep the
+    // outline as drawn.
+    std::vector<Vec2> builtOutline = surfaceOutline(result.polygon.points, result.polygon.spacing);
+    const bool rounded = builtOutline != result.polygon.points;
     result.polygon.points = refineThinParts(result.polygon.points, result.polygon.spacing);
+    builtOutline =
+        rounded ? refineThinParts(builtOutline, result.polygon.spacing) : result.polygon.points;
     SurfaceOptions surfaceOptions = options.surface;
     if (!(std::isfinite(surfaceOptions.targetEdgeLength) && surfaceOptions.targetEdgeLength >= 0))
         throw Error(MessageId::EdgeLengthNotPositive);
@@ -56,16 +65,23 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     ms.clean = clock.lap();
 
     PolygonTriangulation cdt = triangulatePolygon(result.polygon.points);
+    std::optional<PolygonTriangulation> builtCdt;
+    if (rounded)
+        builtCdt = triangulatePolygon(builtOutline);
     ms.triangulate = clock.lap();
     ChordalAxis axis = computeChordalAxis(std::move(cdt), options.decomposition.axis);
+    std::optional<ChordalAxis> builtAxis;
+    if (rounded)
+        builtAxis = computeChordalAxis(std::move(*builtCdt), options.decomposition.axis);
     ms.chordalAxis = clock.lap();
     // The rig's regions leave pruned bumps out (2.1); the surface's take in
     // those off bodies (RigRegionOrigins.h).
     DecompositionOptions rigOptions = options.decomposition;
     rigOptions.bumpHeightFactor = std::numeric_limits<double>::infinity();
     result.decomposition = decompose(axis, rigOptions);
-    Decomposition surfaceRegions = decompose(std::move(axis), options.decomposition);
-    const bool split = !sameRegions(surfaceRegions, result.decomposition);
+    Decomposition surfaceRegions =
+        decompose(rounded ? std::move(*builtAxis) : std::move(axis), options.decomposition);
+    const bool split = rounded || !sameRegions(surfaceRegions, result.decomposition);
     ms.decompose = clock.lap();
     auto sectionsOf = [&](const Decomposition& decomposition) {
         std::vector<CylinderSections> cylinders;
@@ -88,7 +104,10 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     ms.surface = clock.lap();
     if (surfaceOptions.smooth)
         smoothSurface(result.surface, builtRegions, builtCylinders, surfaceOptions);
-    if (split)
+    if (rounded)
+        mapOriginsByNearestSection(result.surface, surfaceCylinders, result.decomposition,
+                                   result.cylinders);
+    else if (split)
         mapOriginsToRigRegions(result.surface, surfaceRegions, surfaceCylinders,
                                result.decomposition, result.cylinders);
     ms.smoothing = clock.lap();

@@ -181,4 +181,15 @@ std::vector<SegmentCrossing> findSegmentCrossings(
     return crossings;
 }
 
+bool crossesItself(const std::vector<Vec2>& polygon) {
+    const std::size_t n = polygon.size();
+    std::vector<Segment2> segments;
+    for (std::size_t i = 0; i < n; ++i)
+        segments.push_back({polygon[i], polygon[(i + 1) % n]});
+    auto notAdjacent = [n](std::size_t i, std::size_t j) {
+        return j != i + 1 && !(i == 0 && j == n - 1);
+    };
+    return !findSegmentCrossings(segments, notAdjacent, true).empty();
+}
+
 }  // namespace rigmesh

@@ -32,4 +32,7 @@ std::vector<SegmentCrossing> findSegmentCrossings(
     const std::vector<Segment2>& segments,
     const std::function<bool(std::size_t, std::size_t)>& consider, bool firstOnly);
 
+// True when two non-adjacent edges of the closed polygon share a point.
+bool crossesItself(const std::vector<Vec2>& polygon);
+
 }  // namespace rigmesh

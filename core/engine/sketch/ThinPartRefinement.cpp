@@ -19,17 +19,6 @@ constexpr double kThinWidths = 3.0;
 constexpr double kPieceOfWidth = 1.0 / 3.0;
 constexpr double kFinestFraction = 1.0 / 8.0;
 
-bool crossesItself(const std::vector<Vec2>& polygon) {
-    const std::size_t n = polygon.size();
-    std::vector<Segment2> segments;
-    for (std::size_t i = 0; i < n; ++i)
-        segments.push_back({polygon[i], polygon[(i + 1) % n]});
-    auto notAdjacent = [n](std::size_t i, std::size_t j) {
-        return j != i + 1 && !(i == 0 && j == n - 1);
-    };
-    return !findSegmentCrossings(segments, notAdjacent, true).empty();
-}
-
 // Does polygon[to] lie left of the outline's tangent at polygon[from]?
 bool facesInward(const std::vector<Vec2>& polygon, int from, int to) {
     const int n = static_cast<int>(polygon.size());
