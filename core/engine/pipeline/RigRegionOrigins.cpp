@@ -23,6 +23,32 @@ struct Target {
     bool identical = false;  // same region: origins keep their section
 };
 
+// Moves `best` to the section of rig cylinder `c` nearest p (or one of its
+// tips, with `tipsToo`) when it is nearer than `distance`, which follows.
+void nearerSectionOf(const std::vector<CylinderSections>& rigCylinders, int c, const Vec2& p,
+                     bool tipsToo, double& distance, VertexOrigin& best) {
+    const CylinderSections& cylinder = rigCylinders[c];
+    for (std::size_t s = 0; s < cylinder.sections.size(); ++s) {
+        const double d =
+            distanceToSegment(p, cylinder.sections[s].left, cylinder.sections[s].right);
+        if (d < distance) {
+            distance = d;
+            best = {RegionKind::Cylindrical, c, static_cast<int>(s), cylinder.axisPosition[s],
+                    false};
+        }
+    }
+    if (!tipsToo)
+        return;
+    if (cylinder.startTip && (p - *cylinder.startTip).norm() < distance) {
+        distance = (p - *cylinder.startTip).norm();
+        best = {RegionKind::Cylindrical, c, -1, 0.0, false};
+    }
+    if (cylinder.endTip && (p - *cylinder.endTip).norm() < distance) {
+        distance = (p - *cylinder.endTip).norm();
+        best = {RegionKind::Cylindrical, c, -1, cylinder.endTipPosition, false};
+    }
+}
+
 }  // namespace
 
 bool sameRegions(const Decomposition& surface, const Decomposition& rig) {
@@ -99,7 +125,6 @@ void mapOriginsToRigRegions(SketchSurface& surface, const Decomposition& surface
         }
         // The rig cylinder's cross section nearest the vertex (a ring's
         // vertices all go by their section's centre), or its tip.
-        const CylinderSections& cylinder = rigCylinders[target.region];
         const bool onRing = origin.kind == RegionKind::Cylindrical && origin.section >= 0;
         const std::pair<int, int> ringKey{origin.region, origin.section};
         if (onRing) {
@@ -111,28 +136,11 @@ void mapOriginsToRigRegions(SketchSurface& surface, const Decomposition& surface
         }
         const Vec2 p = onRing ? surfaceCylinders[origin.region].sections[origin.section].centre()
                               : Vec2(surface.mesh.vertices[v].head<2>());
-        double best = std::numeric_limits<double>::infinity();
-        int section = -1;
-        double position = 0.0;
-        for (std::size_t s = 0; s < cylinder.sections.size(); ++s) {
-            const double d =
-                distanceToSegment(p, cylinder.sections[s].left, cylinder.sections[s].right);
-            if (d < best) {
-                best = d;
-                section = static_cast<int>(s);
-                position = cylinder.axisPosition[s];
-            }
-        }
-        if (cylinder.startTip && (p - *cylinder.startTip).norm() < best) {
-            best = (p - *cylinder.startTip).norm();
-            section = -1;
-            position = 0.0;
-        }
-        if (cylinder.endTip && (p - *cylinder.endTip).norm() < best) {
-            section = -1;
-            position = cylinder.endTipPosition;
-        }
-        origin = {RegionKind::Cylindrical, target.region, section, position, origin.onOutline};
+        double distance = std::numeric_limits<double>::infinity();
+        VertexOrigin nearest{RegionKind::Cylindrical, target.region, -1, 0.0, false};
+        nearerSectionOf(rigCylinders, target.region, p, true, distance, nearest);
+        nearest.onOutline = origin.onOutline;
+        origin = nearest;
         if (onRing)
             ringOrigin[ringKey] = origin;
     }
@@ -146,29 +154,8 @@ void mapOriginsByNearestSection(SketchSurface& surface,
     auto nearestSection = [&](const Vec2& p, bool tipsToo) {
         VertexOrigin best{RegionKind::Connecting, -1, -1, 0.0, false};
         double distance = std::numeric_limits<double>::infinity();
-        for (std::size_t c = 0; c < rigCylinders.size(); ++c) {
-            const CylinderSections& cylinder = rigCylinders[c];
-            for (std::size_t s = 0; s < cylinder.sections.size(); ++s) {
-                const double d =
-                    distanceToSegment(p, cylinder.sections[s].left, cylinder.sections[s].right);
-                if (d < distance) {
-                    distance = d;
-                    best = {RegionKind::Cylindrical, static_cast<int>(c), static_cast<int>(s),
-                            cylinder.axisPosition[s], false};
-                }
-            }
-            if (!tipsToo)
-                continue;
-            if (cylinder.startTip && (p - *cylinder.startTip).norm() < distance) {
-                distance = (p - *cylinder.startTip).norm();
-                best = {RegionKind::Cylindrical, static_cast<int>(c), -1, 0.0, false};
-            }
-            if (cylinder.endTip && (p - *cylinder.endTip).norm() < distance) {
-                distance = (p - *cylinder.endTip).norm();
-                best = {RegionKind::Cylindrical, static_cast<int>(c), -1, cylinder.endTipPosition,
-                        false};
-            }
-        }
+        for (std::size_t c = 0; c < rigCylinders.size(); ++c)
+            nearerSectionOf(rigCylinders, static_cast<int>(c), p, tipsToo, distance, best);
         return best;
     };
     const auto& axis = rigRegions.axis;

@@ -41,7 +41,7 @@ Polyline2 roundConcaveCorners(Polyline2 polygon, double radius, int maxIteration
 
 Polyline2 surfaceOutline(const Polyline2& polygon, double spacing) {
     constexpr double kCornerRadius = 1.5;  // spacings
-    constexpr double kMaxShift = 1.0;  // spacings: a narrow slot is not filled up      // spacings
+    constexpr double kMaxShift = 1.0;      // spacings: a narrow slot is not filled up
     const Polyline2 moved =
         roundConcaveCorners(polygon, kCornerRadius * spacing, 400, kMaxShift * spacing);
     if (moved == polygon)
@@ -67,20 +67,9 @@ Polyline2 surfaceOutline(const Polyline2& polygon, double spacing) {
         for (std::size_t i = 0; i <= count; ++i)
             path.push_back(moved[(first + i) % n]);
         const double length = polylineLength(path, false);
-        std::size_t segment = 1;
-        double walked = 0.0;
-        for (std::size_t i = 1; i <= count; ++i) {
-            const double target = length * static_cast<double>(i) / static_cast<double>(count + 1);
-            while (segment + 1 < path.size() &&
-                   walked + (path[segment] - path[segment - 1]).norm() < target) {
-                walked += (path[segment] - path[segment - 1]).norm();
-                ++segment;
-            }
-            const double step = (path[segment] - path[segment - 1]).norm();
-            const double f = step > 0 ? (target - walked) / step : 0.0;
-            rounded[(first + i - 1) % n] =
-                path[segment - 1] + f * (path[segment] - path[segment - 1]);
-        }
+        for (std::size_t i = 1; i <= count; ++i)
+            rounded[(first + i - 1) % n] = pointAtArcLength(
+                path, length * static_cast<double>(i) / static_cast<double>(count + 1));
         k += count;
     }
     return crossesItself(rounded) ? polygon : rounded;

@@ -143,4 +143,14 @@ bool insidePolygon(const Polyline2& polygon, const Vec2& p) {
     return inside;
 }
 
+Vec2 pointAtArcLength(const Polyline2& polyline, double distance) {
+    for (std::size_t i = 1; i < polyline.size(); ++i) {
+        const double step = (polyline[i] - polyline[i - 1]).norm();
+        if (distance <= step && step > 0)
+            return polyline[i - 1] + distance / step * (polyline[i] - polyline[i - 1]);
+        distance -= step;
+    }
+    return polyline.back();
+}
+
 }  // namespace rigmesh

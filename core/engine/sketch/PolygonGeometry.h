@@ -20,6 +20,10 @@ double boundingBoxDiagonal(const Polyline2& points);
 // Length of the polyline, plus the closing segment when `closed`.
 double polylineLength(const Polyline2& points, bool closed);
 
+// The point at arc length `distance` along the open polyline (its last point
+// beyond its length).
+Vec2 pointAtArcLength(const Polyline2& polyline, double distance);
+
 // `count` points at equal arc-length steps along the closed polygon, starting
 // at its first vertex.
 Polyline2 resampleClosed(const Polyline2& polygon, std::size_t count);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/CatmullRom.h"
+#include "sketch/PolygonGeometry.h"
 
 namespace rigmesh {
 namespace {
@@ -133,24 +134,6 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames, Cr
     return kept;
 }
 
-// The point at arc length `distance` along a polyline.
-Vec2 pointAtArcLength(const std::vector<Vec2>& polyline, double distance) {
-    for (std::size_t i = 1; i < polyline.size(); ++i) {
-        double step = (polyline[i] - polyline[i - 1]).norm();
-        if (distance <= step && step > 0)
-            return polyline[i - 1] + distance / step * (polyline[i] - polyline[i - 1]);
-        distance -= step;
-    }
-    return polyline.back();
-}
-
-double polylineLength(const std::vector<Vec2>& polyline) {
-    double length = 0.0;
-    for (std::size_t i = 1; i < polyline.size(); ++i)
-        length += (polyline[i] - polyline[i - 1]).norm();
-    return length;
-}
-
 // The outline around a tip as a smooth curve: a centripetal Catmull-Rom
 // spline through the path's polygon points (the polygon's neighbours beyond
 // either end give the end tangents), sampled at a quarter of `spacing`. At
@@ -231,7 +214,8 @@ CapSlices sliceCap(const CrossSection& base, const std::vector<Vec2>& polygon,
     CapSlices cap{{}, path[tip], smooth.indices[tip]};
     std::vector<Vec2> rightSide(path.begin(), path.begin() + static_cast<long>(tip) + 1);
     std::vector<Vec2> leftSide(path.rbegin(), path.rend() - static_cast<long>(tip));
-    const double rightLength = polylineLength(rightSide), leftLength = polylineLength(leftSide);
+    const double rightLength = polylineLength(rightSide, false);
+    const double leftLength = polylineLength(leftSide, false);
     const int intervals =
         std::max(1, static_cast<int>(std::ceil(std::max(rightLength, leftLength) / spacing)));
     for (int k = 1; k < intervals; ++k) {
