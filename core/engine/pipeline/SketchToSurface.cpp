@@ -12,6 +12,7 @@
 #include "pipeline/SurfaceLimits.h"
 #include "sketch/ConcaveCorners.h"
 #include "sketch/ThinPartRefinement.h"
+#include "surface/CapBases.h"
 
 namespace rigmesh {
 namespace {
@@ -81,7 +82,18 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     result.decomposition = decompose(axis, rigOptions);
     Decomposition surfaceRegions =
         decompose(rounded ? std::move(*builtAxis) : std::move(axis), options.decomposition);
-    const bool split = rounded || !sameRegions(surfaceRegions, result.decomposition);
+    // The surface's caps begin at chords square to their limbs (CapBases.h);
+    // the rig's keep the paper's end chords.
+    bool capBasesMoved = false;
+    for (std::size_t c = 0; c < surfaceRegions.cylinders.size(); ++c) {
+        CylinderRegion moved = withCapBases(surfaceRegions, static_cast<int>(c));
+        if (moved.chords.size() != surfaceRegions.cylinders[c].chords.size()) {
+            surfaceRegions.cylinders[c] = std::move(moved);
+            capBasesMoved = true;
+        }
+    }
+    const bool split =
+        rounded || capBasesMoved || !sameRegions(surfaceRegions, result.decomposition);
     ms.decompose = clock.lap();
     auto sectionsOf = [&](const Decomposition& decomposition) {
         std::vector<CylinderSections> cylinders;
@@ -104,7 +116,7 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     ms.surface = clock.lap();
     if (surfaceOptions.smooth)
         smoothSurface(result.surface, builtRegions, builtCylinders, surfaceOptions);
-    if (rounded)
+    if (rounded || capBasesMoved)
         mapOriginsByNearestSection(result.surface, surfaceCylinders, result.decomposition,
                                    result.cylinders);
     else if (split)

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/CatmullRom.h"
+#include "geometry/CurvatureLimit.h"
 #include "sketch/PolygonGeometry.h"
 
 namespace rigmesh {
@@ -142,6 +143,10 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames, Cr
 // itself gave a faceted tip with creases at its corners (issue 10). The
 // curve passes through every polygon point; `indices` keeps their polygon
 // indices (-1 between them).
+// The smallest radius of curvature of a cap's outline path, in local edge
+// lengths.
+constexpr double kMinTipRadius = 1.5;
+
 struct CapPath {
     std::vector<Vec2> points;
     std::vector<int> indices;
@@ -170,6 +175,11 @@ CapPath smoothCapPath(const std::vector<Vec2>& polygon, const std::vector<int>& 
     }
     result.points.push_back(polygon[path.back()]);
     result.indices.push_back(path.back());
+    // A corner of the outline stays a corner of the spline: on the
+    // silhouette a turn of 50 degrees between two points, where an
+    // obliquely ended limb was cleaned at the outline's coarse spacing
+    // (issue 10). Rounded to kMinTipRadius, the tip is a dome again.
+    limitCurvature(result.points, kMinTipRadius * spacing);
     return result;
 }
 
@@ -232,6 +242,9 @@ CapSlices sliceCap(const CrossSection& base, const std::vector<Vec2>& polygon,
     return cap;
 }
 
+// A cap's edge-length floor as a share of the body's.
+constexpr double kCapFloorShare = 0.5;
+
 CrossSection flipped(const CrossSection& s) {
     CrossSection f = s;
     std::swap(f.left, f.right);
@@ -274,6 +287,14 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
         resampleBody(frames, polygonSection(cylinder.chords.front()),
                      polygonSection(cylinder.chords.back()), spacing, options);
 
+    // A cap is sliced at its base's local edge length, down to half the
+    // body's floor: a needle's tip a little wider than the floor was a dome
+    // of two slices, creased against the tapering body (issue 10). A cap's
+    // vertex count stays bounded by its size.
+    auto capSpacing = [&](const CrossSection& base) {
+        return std::clamp(options.radiusFraction * base.radius(),
+                          kCapFloorShare * options.minimumSpacingFraction * spacing, spacing);
+    };
     CylinderSections result;
     for (const ChordFrame& frame : frames)
         result.axisChords.push_back(sectionOf(frame));
@@ -283,7 +304,7 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
     if (!cylinder.startCap.empty()) {
         // Seen from the start tip the cylinder runs backwards: flip, slice, flip back.
         CapSlices cap =
-            sliceCap(flipped(body.front()), points, cylinder.startCap, body.front().spacing);
+            sliceCap(flipped(body.front()), points, cylinder.startCap, capSpacing(body.front()));
         for (auto it = cap.slices.rbegin(); it != cap.slices.rend(); ++it)
             result.sections.push_back(flipped(*it));
         result.startTip = cap.tip;
@@ -291,7 +312,7 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
     }
     result.sections.insert(result.sections.end(), body.begin(), body.end());
     if (!cylinder.endCap.empty()) {
-        CapSlices cap = sliceCap(body.back(), points, cylinder.endCap, body.back().spacing);
+        CapSlices cap = sliceCap(body.back(), points, cylinder.endCap, capSpacing(body.back()));
         result.sections.insert(result.sections.end(), cap.slices.begin(), cap.slices.end());
         result.endTip = cap.tip;
         result.endTipPolygonIndex = cap.tipIndex;

@@ -207,12 +207,17 @@ std::vector<Vec2> branchyOutline(std::mt19937& random) {
 // On these outlines the p99, ring and IoU targets hold (the central blob's
 // arcs between arms, pruned bumps off the sleeves crossing it, are
 // connecting regions: IoU 0.73 -> 0.95; thin arms get outline points at a
-// third of their width: 0.97 and up), the max one not yet (43.5 degrees at
-// worst, 77 before the thin-part refinement). Guarded at the measured worst,
-// as an open item of issue 10.
-constexpr double kRandomMaxMeasured = 44.0;
+// third of their width: 0.97 and up), and so does the max one (caps begin at
+// chords square to their limbs, their outline paths keep no corner sharper
+// than 1.5 local edge lengths, and a needle's tip is sliced finer: 43.5 ->
+// 33.8 degrees at worst), except on outline 0: 39.4 degrees on the first
+// ring edge off the silhouette where a thin arm leaves the blob at a concave
+// corner, between the blob's coarse rings and the arm's fine ones (cause
+// not yet fixed). Guarded at the measured figure, as an open item of
+// issue 10.
+const std::map<int, double> kRandomMaxShortfalls{{0, 40.0}};
 
-TEST(SurfaceFiguresRandom, BranchyOutlinesKeepP99AndRingsAndNoWorseMaxOrIoU) {
+TEST(SurfaceFiguresRandom, BranchyOutlinesMeetTheFiguresButTheNamedMaxShortfall) {
     std::mt19937 random(1012);
     constexpr int kCases = 10;
     for (int c = 0; c < kCases; ++c) {
@@ -226,7 +231,8 @@ TEST(SurfaceFiguresRandom, BranchyOutlinesKeepP99AndRingsAndNoWorseMaxOrIoU) {
             c, result.cylinders.size(), f.angles.p99, f.angles.max, f.iou, f.ring, f.vertices,
             f.localDensity);
         EXPECT_LE(f.angles.p99, kP99Limit);
-        EXPECT_LE(f.angles.max, kRandomMaxMeasured);
+        const auto open = kRandomMaxShortfalls.find(c);
+        EXPECT_LE(f.angles.max, open == kRandomMaxShortfalls.end() ? kMaxLimit : open->second);
         EXPECT_GE(f.iou, kIoULimit);
         EXPECT_GE(f.ring, kRingLimit);
     }
