@@ -13,6 +13,7 @@
 #include "sketch/ConcaveCorners.h"
 #include "sketch/ThinPartRefinement.h"
 #include "surface/CapBases.h"
+#include "surface/EndSectionSnap.h"
 
 namespace rigmesh {
 namespace {
@@ -104,11 +105,13 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
         return cylinders;
     };
     result.cylinders = sectionsOf(result.decomposition);
-    const std::vector<CylinderSections> surfaceCylinders =
-        split ? sectionsOf(surfaceRegions) : std::vector<CylinderSections>{};
+    std::vector<CylinderSections> surfaceCylinders =
+        split ? sectionsOf(surfaceRegions) : result.cylinders;
     const Decomposition& builtRegions = split ? surfaceRegions : result.decomposition;
-    const std::vector<CylinderSections>& builtCylinders =
-        split ? surfaceCylinders : result.cylinders;
+    // The surface's sections near fixed end chords follow the outline
+    // (EndSectionSnap.h); the rig's stay as smoothed, so its joints do.
+    snapSectionsNearEndsToOutline(surfaceCylinders, builtRegions);
+    const std::vector<CylinderSections>& builtCylinders = surfaceCylinders;
     ms.crossSections = clock.lap();
     SurfaceOptions unsmoothed = surfaceOptions;
     unsmoothed.smooth = false;

@@ -26,10 +26,10 @@ struct Blender {
 // Measured on the surfaces of issue 10 (body bumps as patches, smooth caps,
 // thin parts refined; 2026-11-25).
 const std::map<std::string, Blender> kBlender = {
-    {"banana", {903, 0.22115}},  {"biped", {942, 0.17011}},    {"camel_body", {2831, 0.07934}},
+    {"banana", {903, 0.22115}},  {"biped", {901, 0.16993}},    {"camel_body", {2827, 0.07949}},
     {"camel_head", {0, 0.0}},    {"camel_leg", {0, 0.0}},      {"camel_neck", {942, 0.18435}},
-    {"kinked", {1977, 0.14071}}, {"open_gap", {0, 0.0}},       {"star", {935, 0.22465}},
-    {"tube", {0, 0.0}},          {"y_branch", {760, 0.15849}},
+    {"kinked", {1977, 0.14071}}, {"open_gap", {0, 0.0}},       {"star", {861, 0.22667}},
+    {"tube", {0, 0.0}},          {"y_branch", {728, 0.16585}},
 };
 constexpr double kPrinted = 1e-5;  // Blender's figures are printed to five digits
 
