@@ -6,7 +6,8 @@
 namespace rigmesh {
 namespace {
 
-// Enough for a right-angled corner sampled at a sixth of the radius asked.
+// Enough for a right-angled corner sampled at a fifth of the radius asked
+// (the test's case; cap paths are sampled at a sixth).
 constexpr int kMaxRounds = 400;
 // How many points on either side of a sharp one move with it, so that the
 // turn spreads instead of moving to the next point.

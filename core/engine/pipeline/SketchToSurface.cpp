@@ -119,7 +119,7 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     ms.surface = clock.lap();
     if (surfaceOptions.smooth)
         smoothSurface(result.surface, builtRegions, builtCylinders, surfaceOptions);
-    if (rounded || capBasesMoved)
+    if (rounded)
         mapOriginsByNearestSection(result.surface, surfaceCylinders, result.decomposition,
                                    result.cylinders);
     else if (split)

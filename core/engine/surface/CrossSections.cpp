@@ -135,18 +135,19 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames, Cr
     return kept;
 }
 
+// The smallest radius of curvature of a cap's outline path, in local edge
+// lengths.
+constexpr double kMinTipRadius = 1.5;
+
 // The outline around a tip as a smooth curve: a centripetal Catmull-Rom
 // spline through the path's polygon points (the polygon's neighbours beyond
 // either end give the end tangents), sampled at a quarter of `spacing`. At
 // a thin part the polygon is coarse against the local edge length (a foot
 // 0.25 wide ends in three outline points 0.1 apart), and slicing the polygon
 // itself gave a faceted tip with creases at its corners (issue 10). The
-// curve passes through every polygon point; `indices` keeps their polygon
-// indices (-1 between them).
-// The smallest radius of curvature of a cap's outline path, in local edge
-// lengths.
-constexpr double kMinTipRadius = 1.5;
-
+// curve passes through every polygon point but those of a corner sharper
+// than kMinTipRadius, which it rounds; `indices` keeps the polygon index of
+// each point still on its polygon point (-1 elsewhere).
 struct CapPath {
     std::vector<Vec2> points;
     std::vector<int> indices;
@@ -179,7 +180,11 @@ CapPath smoothCapPath(const std::vector<Vec2>& polygon, const std::vector<int>& 
     // silhouette a turn of 50 degrees between two points, where an
     // obliquely ended limb was cleaned at the outline's coarse spacing
     // (issue 10). Rounded to kMinTipRadius, the tip is a dome again.
+    const std::vector<Vec2> onSpline = result.points;
     limitCurvature(result.points, kMinTipRadius * spacing);
+    for (std::size_t i = 0; i < result.points.size(); ++i)
+        if (result.points[i] != onSpline[i])
+            result.indices[i] = -1;
     return result;
 }
 

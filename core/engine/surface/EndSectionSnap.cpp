@@ -14,16 +14,23 @@ namespace {
 // improves with the reach; 8 gave the shared sketches' lowest maximum.
 constexpr int kSnapReach = 8;
 
+// Sections closer than this share of their spacing on either side make a
+// strip of slivers (as CrossSections' resampling drops them).
+constexpr double kMinimumSideStep = 0.3;
+
 // The nearest point to `p` on the closed outline's edges within `window`
-// arc length of the outline point `anchor`, walking both ways.
-Vec2 nearestOnOutlineNear(const std::vector<Vec2>& outline, int anchor, const Vec2& p,
-                          double window) {
+// arc length of the outline point `anchor`, walking one way only
+// (`direction` +1 counter-clockwise, -1 clockwise): along the body's side,
+// never round the cap or the connecting region beyond the end chord.
+Vec2 nearestAlongSide(const std::vector<Vec2>& outline, int anchor, int direction, const Vec2& p,
+                      double window) {
     const int size = static_cast<int>(outline.size());
     Vec2 best = outline[anchor];
     double bestDistance = (p - best).norm();
-    auto consider = [&](int i) {
-        const Vec2& a = outline[i];
-        const Vec2& b = outline[(i + 1) % size];
+    double walked = 0.0;
+    for (int k = 0; k < size && walked <= window; ++k) {
+        const Vec2& a = outline[((anchor + direction * k) % size + size) % size];
+        const Vec2& b = outline[((anchor + direction * (k + 1)) % size + size) % size];
         const Vec2 ab = b - a;
         const double length2 = ab.squaredNorm();
         const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
@@ -32,41 +39,67 @@ Vec2 nearestOnOutlineNear(const std::vector<Vec2>& outline, int anchor, const Ve
             bestDistance = (q - p).norm();
             best = q;
         }
-    };
-    for (int direction : {1, -1}) {
-        double walked = 0.0;
-        for (int k = 0; k < size && walked <= window; ++k) {
-            // Edge from i to i + 1: forwards starts at the anchor, backwards ends there.
-            const int i = ((anchor + (direction > 0 ? k : -k - 1)) % size + size) % size;
-            consider(i);
-            walked += (outline[(i + 1) % size] - outline[i]).norm();
-        }
+        walked += std::sqrt(length2);
     }
     return best;
 }
 
+// Whether two sections cross or crowd each other (then the strip between
+// them would fold or be slivers).
+bool clash(const CrossSection& a, const CrossSection& b) {
+    const double step = kMinimumSideStep * std::min(a.spacing, b.spacing);
+    return segmentsIntersect(a.left, a.right, b.left, b.right) || (a.left - b.left).norm() < step ||
+           (a.right - b.right).norm() < step;
+}
+
 // Snaps the sections `end + inward`, `end + 2 inward`, ... of one cylinder,
-// stopping short of the body's middle.
+// stopping short of `inwardLimit` sections. A section that would cross or
+// crowd a neighbour as finally placed keeps its smoothed end points.
 void snapFromEnd(std::vector<CrossSection>& sections, int end, int inward, int inwardLimit,
                  const std::vector<Vec2>& outline) {
     const CrossSection& fixed = sections[end];
     if (fixed.leftPolygonIndex < 0 || fixed.rightPolygonIndex < 0)
         return;
+    // Into the body, the left side runs clockwise from a start chord and
+    // counter-clockwise from an end chord (the caps run counter-clockwise
+    // from the start chord's left end point and to the end chord's left one).
+    const int leftDirection = -inward, rightDirection = inward;
+    std::vector<int> moved;  // section indices, from the end inwards
+    std::vector<CrossSection> smoothed;
     for (int j = 1; j < kSnapReach && j < inwardLimit; ++j) {
-        CrossSection& section = sections[end + j * inward];
-        if (section.inCap)
-            return;
+        const int s = end + j * inward;
+        if (sections[s].inCap)
+            break;
+        CrossSection& section = sections[s];
+        moved.push_back(s);
+        smoothed.push_back(section);
         const double weight = 1.0 - static_cast<double>(j) / kSnapReach;
         // Search the outline as far along as the section is from the end, twice over.
         const double window = 2.0 * std::max((section.left - fixed.left).norm(),
                                              (section.right - fixed.right).norm()) +
                               section.spacing;
         const Vec2 left =
-            nearestOnOutlineNear(outline, fixed.leftPolygonIndex, section.left, window);
-        const Vec2 right =
-            nearestOnOutlineNear(outline, fixed.rightPolygonIndex, section.right, window);
+            nearestAlongSide(outline, fixed.leftPolygonIndex, leftDirection, section.left, window);
+        const Vec2 right = nearestAlongSide(outline, fixed.rightPolygonIndex, rightDirection,
+                                            section.right, window);
         section.left += weight * (left - section.left);
         section.right += weight * (right - section.right);
+    }
+    // Undo snaps that clash with a neighbour until none does.
+    const int count = static_cast<int>(sections.size());
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t k = 0; k < moved.size(); ++k) {
+            const int s = moved[k];
+            if (sections[s].left == smoothed[k].left && sections[s].right == smoothed[k].right)
+                continue;
+            const int next = s + inward;
+            if (clash(sections[s], sections[s - inward]) ||
+                (next >= 0 && next < count && clash(sections[s], sections[next]))) {
+                sections[s] = smoothed[k];
+                changed = true;
+            }
+        }
     }
 }
 

@@ -7,7 +7,7 @@
 // corner) the smoothed sections next to a fixed end lie well inside the
 // outline, so the silhouette turns sharply at the end chord's vertex: a
 // 39-degree fold. Blending those sections' end points onto the outline,
-// fully next to the end and not at all `kSnapReach` sections in, lets the
+// mostly next to the end and not at all eight sections in, lets the
 // silhouette meet the end chord without a kink.
 #pragma once
 
@@ -18,12 +18,14 @@
 
 namespace rigmesh {
 
-// Moves the end points of the body sections within `kSnapReach` sections of
-// each end chord towards the nearest point of the outline (`regions`'
-// polygon) near that chord's end point, by 1 - j / kSnapReach for the j-th
-// section in. Section counts, polygon indices and cap slices are unchanged;
-// axis positions are left as they were (the centres move by a fraction of
-// a spacing).
+// Moves the end points of the body sections 1 to kSnapReach - 1 in from
+// each end chord (at most half-way along the body) towards the nearest
+// point of the outline (`regions`' polygon) along the body's side from that
+// chord's end point, by 1 - j / kSnapReach for the j-th section in; a
+// section that would then cross or crowd a neighbour stays as it was.
+// Section counts, polygon indices and cap slices are unchanged; axis
+// positions are left as they were (the centres move by a fraction of a
+// spacing).
 void snapSectionsNearEndsToOutline(std::vector<CylinderSections>& cylinders,
                                    const Decomposition& regions);
 

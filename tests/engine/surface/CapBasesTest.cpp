@@ -8,7 +8,9 @@
 #include <numbers>
 
 #include "SurfaceTestSupport.h"
+#include "axis/ChordalAxis.h"
 #include "axis/Decomposition.h"
+#include "geometry/ConstrainedTriangulation.h"
 #include "surface/CapBases.h"
 
 namespace rigmesh {
@@ -39,6 +41,15 @@ double turnDegrees(const Decomposition& d, const PolygonEdge& chord) {
         most = std::max(most, std::abs(std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b))));
     }
     return most * 180.0 / std::numbers::pi;
+}
+
+// The old cap is one contiguous run inside the new one, which grew by at
+// most one outline point per chord moved (consecutive chords share an end
+// point), so it cannot have wrapped the wrong way round the outline.
+void expectWidenedFrom(const std::vector<int>& old, const std::vector<int>& now, long movedChords) {
+    const auto at = std::search(now.begin(), now.end(), old.begin(), old.end());
+    EXPECT_NE(at, now.end());
+    EXPECT_LE(static_cast<long>(now.size()), static_cast<long>(old.size()) + movedChords);
 }
 
 // A cap path runs counter-clockwise over consecutive outline points.
@@ -80,6 +91,7 @@ int expectValidCapBases(const Decomposition& d) {
             EXPECT_EQ(now.startCap.front(), now.chords.front()[0]);
             EXPECT_EQ(now.startCap.back(), now.chords.front()[1]);
             expectConsecutive(now.startCap, size);
+            expectWidenedFrom(old.startCap, now.startCap, offset);
         } else {
             EXPECT_EQ(offset, 0);
         }
@@ -87,6 +99,7 @@ int expectValidCapBases(const Decomposition& d) {
             EXPECT_EQ(now.endCap.front(), now.chords.back()[1]);
             EXPECT_EQ(now.endCap.back(), now.chords.back()[0]);
             expectConsecutive(now.endCap, size);
+            expectWidenedFrom(old.endCap, now.endCap, movedAtEnd);
         } else {
             EXPECT_EQ(movedAtEnd, 0);
         }
@@ -118,6 +131,32 @@ TEST(CapBases, EveryCylinderOfTheSharedSketchesKeepsOneBandOfChordsAndCaps) {
     }
     // Some limbs of the shared sketches end on an askew chord (else this
     // test could not fail): the biped's and camel_leg's did.
+    EXPECT_GE(moved, 2);
+}
+
+// The surface's regions (pruned bumps off bodies as connecting regions) on
+// the cleaned outline renumbered to start at each cap's tip, so every cap's
+// path runs across polygon index 0.
+TEST(CapBases, CapsAcrossTheOutlinesFirstPointAndTheSurfacesRegionsStayOneBand) {
+    int moved = 0;
+    for (const std::string& name : testsupport::sharedSketchNames(false)) {
+        SCOPED_TRACE(name);
+        const Decomposition rig = decompositionOf(testsupport::sharedSketchPoints(name));
+        const std::vector<Vec2>& outline = rig.axis.cdt.points;
+        std::vector<int> tips;
+        for (const CylinderRegion& c : rig.cylinders) {
+            if (c.startCap.size() > 2)
+                tips.push_back(c.startCap[c.startCap.size() / 2]);
+            if (c.endCap.size() > 2)
+                tips.push_back(c.endCap[c.endCap.size() / 2]);
+        }
+        for (int tip : tips) {
+            std::vector<Vec2> renumbered(outline.begin() + tip, outline.end());
+            renumbered.insert(renumbered.end(), outline.begin(), outline.begin() + tip);
+            moved +=
+                expectValidCapBases(decompose(computeChordalAxis(triangulatePolygon(renumbered))));
+        }
+    }
     EXPECT_GE(moved, 2);
 }
 

@@ -53,6 +53,11 @@ TEST(EndSectionSnap, SectionsNextToAFixedEndMeetTheOutlineAndNothingElseMoves) {
                     EXPECT_EQ(after[s].right, before[s].right) << c << " " << s;
                     continue;
                 }
+                // No strip folds: a moved section crosses neither neighbour.
+                for (int n : {s - 1, s + 1})
+                    EXPECT_FALSE(segmentsIntersect(after[s].left, after[s].right, after[n].left,
+                                                   after[n].right))
+                        << c << " " << s << " " << n;
                 // Never further from the outline than smoothing left it.
                 EXPECT_LE(offOutline(outline, after[s]), offOutline(outline, before[s]) + 1e-12);
                 if (in == 1 && last - first > 2) {
