@@ -45,7 +45,11 @@ const char* fillFor(TriangleKind kind, bool pruned) {
 
 std::string debugSvg(const SketchToSurfaceResult& result,
                      const std::vector<DebugOverlay>& overlays) {
-    const Decomposition& d = result.decomposition;
+    // The regions and sections the surface was built on; the rig's skeleton
+    // comes as an overlay.
+    const Decomposition& d = result.surfaceRegions ? *result.surfaceRegions : result.decomposition;
+    const std::vector<CylinderSections>& cylinders =
+        result.surfaceCylinders.empty() ? result.cylinders : result.surfaceCylinders;
     const auto& cdt = d.axis.cdt;
     Canvas canvas(cdt.points);
     std::ostringstream svg;
@@ -72,7 +76,7 @@ std::string debugSvg(const SketchToSurfaceResult& result,
         svg << "'/>\n";
     }
     svg << "</g>\n<g id='cross-sections'>\n";
-    for (const auto& cylinder : result.cylinders)
+    for (const auto& cylinder : cylinders)
         for (const auto& s : cylinder.sections)
             line(s.left, s.right, s.inCap ? "#e69500" : "#6fa8dc", 0.8);
     svg << "</g>\n<g id='outline'><polygon fill='none' stroke='black' stroke-width='1.5' points='";

@@ -40,25 +40,32 @@ void mapToWorld(const LocalFrame& frame, SketchToSurfaceResult& result) {
     result.polygon.spacing *= frame.scale;
     for (Vec2& p : result.decomposition.axis.cdt.points)
         move(p);
-    for (CylinderSections& cylinder : result.cylinders) {
-        for (CrossSection& section : cylinder.sections) {
-            move(section.left);
-            move(section.right);
-            section.spacing *= frame.scale;
+    auto moveSections = [&](std::vector<CylinderSections>& cylinders) {
+        for (CylinderSections& cylinder : cylinders) {
+            for (CrossSection& section : cylinder.sections) {
+                move(section.left);
+                move(section.right);
+                section.spacing *= frame.scale;
+            }
+            for (CrossSection& chord : cylinder.axisChords) {
+                move(chord.left);
+                move(chord.right);
+            }
+            if (cylinder.startTip)
+                move(*cylinder.startTip);
+            if (cylinder.endTip)
+                move(*cylinder.endTip);
+            for (double& position : cylinder.axisPosition)
+                position *= frame.scale;
+            cylinder.startTipPosition *= frame.scale;
+            cylinder.endTipPosition *= frame.scale;
         }
-        for (CrossSection& chord : cylinder.axisChords) {
-            move(chord.left);
-            move(chord.right);
-        }
-        if (cylinder.startTip)
-            move(*cylinder.startTip);
-        if (cylinder.endTip)
-            move(*cylinder.endTip);
-        for (double& position : cylinder.axisPosition)
-            position *= frame.scale;
-        cylinder.startTipPosition *= frame.scale;
-        cylinder.endTipPosition *= frame.scale;
-    }
+    };
+    moveSections(result.cylinders);
+    moveSections(result.surfaceCylinders);
+    if (result.surfaceRegions)
+        for (Vec2& p : result.surfaceRegions->axis.cdt.points)
+            move(p);
     for (Vec3& v : result.surface.mesh.vertices)
         v = frame.toWorld(v);
     for (VertexOrigin& origin : result.surface.origins)

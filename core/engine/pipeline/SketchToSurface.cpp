@@ -125,6 +125,9 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     else if (split)
         mapOriginsToRigRegions(result.surface, surfaceRegions, surfaceCylinders,
                                result.decomposition, result.cylinders);
+    if (split)
+        result.surfaceRegions = std::move(surfaceRegions);
+    result.surfaceCylinders = std::move(surfaceCylinders);
     ms.smoothing = clock.lap();
 
     mapToWorld(frame, result);

@@ -3,6 +3,7 @@
 // cylindrical and connecting regions -> cross sections -> surface -> LSM.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "axis/Decomposition.h"
@@ -28,8 +29,14 @@ struct StageTimings {
 
 struct SketchToSurfaceResult {
     CleanPolygon polygon;
-    Decomposition decomposition;
-    std::vector<CylinderSections> cylinders;
+    Decomposition decomposition;              // the rig's regions (paper 2.1)
+    std::vector<CylinderSections> cylinders;  // the rig's sections
+    // What the surface was built on, where it differs from the rig's: its
+    // regions when they differ (concave corners rounded, pruned bumps off
+    // bodies as connecting regions, cap bases moved), else empty; and its
+    // sections (also snapped to the outline near fixed end chords).
+    std::optional<Decomposition> surfaceRegions;
+    std::vector<CylinderSections> surfaceCylinders;
     SketchSurface surface;
     double targetEdgeLength = 0;
     StageTimings milliseconds;
