@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "base/Types.h"
+#include "sketch/PolygonGeometry.h"
 #include "sketch/Sketch.h"
 
 namespace rigmesh::testsupport {
@@ -47,25 +48,9 @@ inline double cross2(const Vec2& a, const Vec2& b) {
     return a.x() * b.y() - a.y() * b.x();
 }
 
-inline double signedArea(const std::vector<Vec2>& polygon) {
-    double twice = 0.0;
-    for (std::size_t i = 0; i < polygon.size(); ++i)
-        twice += cross2(polygon[i], polygon[(i + 1) % polygon.size()]);
-    return twice / 2.0;
-}
-
-// Even-odd point in polygon test.
-inline bool insidePolygon(const std::vector<Vec2>& polygon, const Vec2& p) {
-    bool inside = false;
-    for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-        const Vec2& a = polygon[i];
-        const Vec2& b = polygon[j];
-        if ((a.y() > p.y()) != (b.y() > p.y()) &&
-            p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-            inside = !inside;
-    }
-    return inside;
-}
+// The engine's shoelace area and even-odd test (sketch/PolygonGeometry.h).
+using rigmesh::insidePolygon;
+using rigmesh::signedArea;
 
 // Counter-clockwise polar outline r(theta) with `count` samples.
 template <typename Radius>

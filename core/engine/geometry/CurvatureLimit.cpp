@@ -3,47 +3,47 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sketch/PolygonGeometry.h"
+
 namespace rigmesh {
-namespace {
 
-// Enough for a right-angled corner sampled at a fifth of the radius asked
-// (the test's case; cap paths are sampled at a sixth).
-constexpr int kMaxRounds = 400;
-// How many points on either side of a sharp one move with it, so that the
-// turn spreads instead of moving to the next point.
-constexpr int kNeighbourhood = 2;
-
-double curvatureAt(const std::vector<Vec2>& points, int i) {
-    const Vec2 a = points[i] - points[i - 1], b = points[i + 1] - points[i];
-    const double turn = std::abs(std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b)));
-    return turn / std::max(1e-12, 0.5 * (a.norm() + b.norm()));
-}
-
-}  // namespace
-
-void limitCurvature(std::vector<Vec2>& points, double minRadius) {
+void limitCurvature(std::vector<Vec2>& points, double minRadius, const CurvatureFlow& flow) {
     const int n = static_cast<int>(points.size());
     if (n < 3 || !(minRadius > 0))
         return;
-    std::vector<char> moves(n);
-    for (int round = 0; round < kMaxRounds; ++round) {
-        std::fill(moves.begin(), moves.end(), 0);
-        bool any = false;
-        for (int i = 1; i + 1 < n; ++i) {
-            if (curvatureAt(points, i) * minRadius <= 1.0)
+    // Interior points of an open polyline; every point of a closed one.
+    const int first = flow.closed ? 0 : 1, last = flow.closed ? n - 1 : n - 2;
+    auto at = [&](int i) { return (i % n + n) % n; };
+    const std::vector<Vec2> original = points;
+    std::vector<char> marked(n);
+    for (int round = 0; round < flow.maxRounds; ++round) {
+        std::fill(marked.begin(), marked.end(), 0);
+        for (int i = first; i <= last; ++i) {
+            const Vec2 in = points[i] - points[at(i - 1)], out = points[at(i + 1)] - points[i];
+            const double turn = turnAngle(in, out);
+            if (flow.concaveOnly && turn >= 0)
                 continue;
-            any = true;
-            for (int j = std::max(1, i - kNeighbourhood); j <= std::min(n - 2, i + kNeighbourhood);
-                 ++j)
-                moves[j] = 1;
+            if (std::abs(turn) * minRadius <= 0.5 * (in.norm() + out.norm()))
+                continue;
+            for (int j = i - flow.neighbourhood; j <= i + flow.neighbourhood; ++j)
+                if (flow.closed || (j >= first && j <= last))
+                    marked[at(j)] = 1;
         }
-        if (!any)
-            return;
         // One Laplacian step (lambda 1/2) on the marked points only.
-        std::vector<Vec2> previous = points;
-        for (int i = 1; i + 1 < n; ++i)
-            if (moves[i])
-                points[i] = 0.5 * previous[i] + 0.25 * (previous[i - 1] + previous[i + 1]);
+        std::vector<Vec2> next = points;
+        bool moved = false;
+        for (int i = first; i <= last; ++i) {
+            if (!marked[i])
+                continue;
+            const Vec2 target = 0.5 * points[i] + 0.25 * (points[at(i - 1)] + points[at(i + 1)]);
+            if ((target - original[i]).norm() > flow.maxShift)
+                continue;
+            next[i] = target;
+            moved = true;
+        }
+        points = std::move(next);
+        if (!moved)
+            return;
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "geometry/CurvatureLimit.h"
 #include "sketch/PolygonGeometry.h"
 #include "sketch/SegmentCrossings.h"
 
@@ -9,33 +10,14 @@ namespace rigmesh {
 
 Polyline2 roundConcaveCorners(Polyline2 polygon, double radius, int maxIterations,
                               double maxShift) {
-    const long n = static_cast<long>(polygon.size());
-    if (n < 4 || !(radius > 0))
+    if (polygon.size() < 4)
         return polygon;
-    const Polyline2 original = polygon;
-    for (int iteration = 0; iteration < maxIterations; ++iteration) {
-        Polyline2 next = polygon;
-        bool moved = false;
-        for (long i = 0; i < n; ++i) {
-            const Vec2& a = polygon[static_cast<std::size_t>((i + n - 1) % n)];
-            const Vec2& b = polygon[static_cast<std::size_t>(i)];
-            const Vec2& c = polygon[static_cast<std::size_t>((i + 1) % n)];
-            const Vec2 in = b - a, out = c - b;
-            const double turn =
-                std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out));  // < 0: concave
-            const double length = 0.5 * (in.norm() + out.norm());
-            if (turn >= 0 || -turn * radius <= length)
-                continue;
-            const Vec2 target = 0.5 * b + 0.25 * (a + c);
-            if ((target - original[static_cast<std::size_t>(i)]).norm() > maxShift)
-                continue;
-            next[static_cast<std::size_t>(i)] = target;
-            moved = true;
-        }
-        polygon = std::move(next);
-        if (!moved)
-            break;
-    }
+    CurvatureFlow flow;
+    flow.closed = true;
+    flow.concaveOnly = true;
+    flow.maxShift = maxShift;
+    flow.maxRounds = maxIterations;
+    limitCurvature(polygon, radius, flow);
     return polygon;
 }
 

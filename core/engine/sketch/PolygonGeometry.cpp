@@ -124,11 +124,19 @@ Polyline2 taubinSmoothClosed(Polyline2 polygon, int iterations) {
     return polygon;
 }
 
-double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+Vec2 closestPointOnSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 ab = b - a;
     const double length2 = ab.squaredNorm();
     const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-    return (a + t * ab - p).norm();
+    return a + t * ab;
+}
+
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+    return (closestPointOnSegment(p, a, b) - p).norm();
+}
+
+double turnAngle(const Vec2& in, const Vec2& out) {
+    return std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out));
 }
 
 bool insidePolygon(const Polyline2& polygon, const Vec2& p) {

@@ -28,8 +28,16 @@ Vec2 pointAtArcLength(const Polyline2& polyline, double distance);
 // at its first vertex.
 Polyline2 resampleClosed(const Polyline2& polygon, std::size_t count);
 
+// The point of the segment ab nearest to p.
+Vec2 closestPointOnSegment(const Vec2& p, const Vec2& a, const Vec2& b);
+
 // Distance from p to the segment ab.
 double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
+
+// The signed angle (radians, in (-pi, pi]) from direction `in` to direction
+// `out`: positive turning counter-clockwise. At a polygon vertex with edges
+// in and out, the turn there.
+double turnAngle(const Vec2& in, const Vec2& out);
 
 // Even-odd test: is p inside the closed polygon?
 bool insidePolygon(const Polyline2& polygon, const Vec2& p);

@@ -5,16 +5,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "sketch/PolygonGeometry.h"
 #include "sketch/SvgNumberScanner.h"
 
 namespace rigmesh {
 
 namespace {
-
-// The signed angle from u to v.
-double angleBetween(const Vec2& u, const Vec2& v) {
-    return std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
-}
 
 class PathFlattener {
   public:
@@ -188,8 +184,8 @@ class PathFlattener {
                             (start + end) / 2.0;
         const Vec2 u((p.x() - centreP.x()) / rx, (p.y() - centreP.y()) / ry);
         const Vec2 v((-p.x() - centreP.x()) / rx, (-p.y() - centreP.y()) / ry);
-        const double theta1 = angleBetween(Vec2(1.0, 0.0), u);
-        double delta = angleBetween(u, v);
+        const double theta1 = turnAngle(Vec2(1.0, 0.0), u);
+        double delta = turnAngle(u, v);
         if (!sweep && delta > 0.0) {
             delta -= 2.0 * std::numbers::pi;
         } else if (sweep && delta < 0.0) {

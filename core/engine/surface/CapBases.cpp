@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "sketch/PolygonGeometry.h"
+
 namespace rigmesh {
 namespace {
 
@@ -80,9 +82,9 @@ class CapBaseChooser {
     double cornerTurn(int chord) const {
         double most = 0.0;
         for (int v : cylinder_.chords[chord]) {
-            const Vec2 a = points_[v] - points_[(v - 1 + size_) % size_];
-            const Vec2 b = points_[(v + 1) % size_] - points_[v];
-            most = std::max(most, std::abs(std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b))));
+            const Vec2 in = points_[v] - points_[(v - 1 + size_) % size_];
+            const Vec2 out = points_[(v + 1) % size_] - points_[v];
+            most = std::max(most, std::abs(turnAngle(in, out)));
         }
         return degrees(most);
     }

@@ -108,25 +108,14 @@ std::vector<CrossSection> resampleBody(const std::vector<ChordFrame>& frames, Cr
         }
         candidates.push_back(last);
     }
-    // Cross sections must not intersect: keep a section only if its chord
-    // crosses neither the previous kept one nor the final one. Around a
-    // corner of the outline one side barely moves while the other sweeps;
-    // sections whose end point on either side would crowd the previous one
-    // are dropped too, or the strip between them would be made of slivers.
-    constexpr double kMinimumSideStep = 0.3;  // of the spacing
-    auto crowds = [&](const CrossSection& a, const CrossSection& b) {
-        const double step = std::min(a.spacing, b.spacing);
-        return (a.left - b.left).norm() < kMinimumSideStep * step ||
-               (a.right - b.right).norm() < kMinimumSideStep * step;
-    };
+    // Cross sections must not intersect: keep a section only if it clashes
+    // with neither the previous kept one nor the final one (sectionsClash:
+    // crossing, or crowding on one side around an outline corner, where one
+    // side barely moves while the other sweeps).
     std::vector<CrossSection> kept{candidates.front()};
     for (std::size_t i = 1; i + 1 < candidates.size(); ++i) {
         const CrossSection& c = candidates[i];
-        if (segmentsIntersect(c.left, c.right, kept.back().left, kept.back().right))
-            continue;
-        if (segmentsIntersect(c.left, c.right, last.left, last.right))
-            continue;
-        if (crowds(c, kept.back()) || crowds(c, last))
+        if (sectionsClash(c, kept.back()) || sectionsClash(c, last))
             continue;
         kept.push_back(c);
     }
@@ -181,7 +170,9 @@ CapPath smoothCapPath(const std::vector<Vec2>& polygon, const std::vector<int>& 
     // obliquely ended limb was cleaned at the outline's coarse spacing
     // (issue 10). Rounded to kMinTipRadius, the tip is a dome again.
     const std::vector<Vec2> onSpline = result.points;
-    limitCurvature(result.points, kMinTipRadius * spacing);
+    CurvatureFlow flow;
+    flow.neighbourhood = 2;  // the turn spreads instead of moving to the next point
+    limitCurvature(result.points, kMinTipRadius * spacing, flow);
     for (std::size_t i = 0; i < result.points.size(); ++i)
         if (result.points[i] != onSpline[i])
             result.indices[i] = -1;
@@ -268,6 +259,13 @@ bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& 
                std::min(std::max(a.x(), b.x()), std::max(c.x(), d.x())) &&
            std::max(std::min(a.y(), b.y()), std::min(c.y(), d.y())) <=
                std::min(std::max(a.y(), b.y()), std::max(c.y(), d.y()));
+}
+
+bool sectionsClash(const CrossSection& a, const CrossSection& b) {
+    constexpr double kMinimumSideStep = 0.3;  // of the smaller spacing
+    const double step = kMinimumSideStep * std::min(a.spacing, b.spacing);
+    return segmentsIntersect(a.left, a.right, b.left, b.right) || (a.left - b.left).norm() < step ||
+           (a.right - b.right).norm() < step;
 }
 
 CylinderSections buildCrossSections(const Decomposition& decomposition, int cylinderIndex,

@@ -75,4 +75,9 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
 // True when the 2D segments ab and cd cross or touch.
 bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d);
 
+// True when two sections cross, or their end points on either side lie
+// closer than 0.3 of the smaller spacing (around an outline corner one side
+// barely moves): the strip between them would fold or be slivers.
+bool sectionsClash(const CrossSection& a, const CrossSection& b);
+
 }  // namespace rigmesh

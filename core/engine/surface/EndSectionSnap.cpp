@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sketch/PolygonGeometry.h"
+
 namespace rigmesh {
 namespace {
 
@@ -13,10 +15,6 @@ namespace {
 // random outlines' worst fold is 29-33 degrees with each, and the IoU
 // improves with the reach; 8 gave the shared sketches' lowest maximum.
 constexpr int kSnapReach = 8;
-
-// Sections closer than this share of their spacing on either side make a
-// strip of slivers (as CrossSections' resampling drops them).
-constexpr double kMinimumSideStep = 0.3;
 
 // The nearest point to `p` on the closed outline's edges within `window`
 // arc length of the outline point `anchor`, walking one way only
@@ -31,25 +29,14 @@ Vec2 nearestAlongSide(const std::vector<Vec2>& outline, int anchor, int directio
     for (int k = 0; k < size && walked <= window; ++k) {
         const Vec2& a = outline[((anchor + direction * k) % size + size) % size];
         const Vec2& b = outline[((anchor + direction * (k + 1)) % size + size) % size];
-        const Vec2 ab = b - a;
-        const double length2 = ab.squaredNorm();
-        const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-        const Vec2 q = a + t * ab;
+        const Vec2 q = closestPointOnSegment(p, a, b);
         if ((q - p).norm() < bestDistance) {
             bestDistance = (q - p).norm();
             best = q;
         }
-        walked += std::sqrt(length2);
+        walked += (b - a).norm();
     }
     return best;
-}
-
-// Whether two sections cross or crowd each other (then the strip between
-// them would fold or be slivers).
-bool clash(const CrossSection& a, const CrossSection& b) {
-    const double step = kMinimumSideStep * std::min(a.spacing, b.spacing);
-    return segmentsIntersect(a.left, a.right, b.left, b.right) || (a.left - b.left).norm() < step ||
-           (a.right - b.right).norm() < step;
 }
 
 // Snaps the sections `end + inward`, `end + 2 inward`, ... of one cylinder,
@@ -94,8 +81,8 @@ void snapFromEnd(std::vector<CrossSection>& sections, int end, int inward, int i
             if (sections[s].left == smoothed[k].left && sections[s].right == smoothed[k].right)
                 continue;
             const int next = s + inward;
-            if (clash(sections[s], sections[s - inward]) ||
-                (next >= 0 && next < count && clash(sections[s], sections[next]))) {
+            if (sectionsClash(sections[s], sections[s - inward]) ||
+                (next >= 0 && next < count && sectionsClash(sections[s], sections[next]))) {
                 sections[s] = smoothed[k];
                 changed = true;
             }

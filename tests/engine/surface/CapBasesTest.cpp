@@ -11,6 +11,7 @@
 #include "axis/ChordalAxis.h"
 #include "axis/Decomposition.h"
 #include "geometry/ConstrainedTriangulation.h"
+#include "sketch/PolygonGeometry.h"
 #include "surface/CapBases.h"
 
 namespace rigmesh {
@@ -37,8 +38,8 @@ double turnDegrees(const Decomposition& d, const PolygonEdge& chord) {
     const int size = static_cast<int>(p.size());
     double most = 0.0;
     for (int v : chord) {
-        const Vec2 a = p[v] - p[(v - 1 + size) % size], b = p[(v + 1) % size] - p[v];
-        most = std::max(most, std::abs(std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b))));
+        most = std::max(
+            most, std::abs(turnAngle(p[v] - p[(v - 1 + size) % size], p[(v + 1) % size] - p[v])));
     }
     return most * 180.0 / std::numbers::pi;
 }

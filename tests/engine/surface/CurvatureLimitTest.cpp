@@ -35,7 +35,9 @@ TEST(CurvatureLimit, ARightAngleIsRoundedToTheRadiusAndItsEndsStay) {
     std::vector<Vec2> points = rightAngle();
     const std::vector<Vec2> before = points;
     constexpr double kRadius = 0.1;
-    limitCurvature(points, kRadius);
+    CurvatureFlow capPath;  // as a cap's outline path is rounded
+    capPath.neighbourhood = 2;
+    limitCurvature(points, kRadius, capPath);
     EXPECT_LE(largestCurvature(points), 1.0 / kRadius + 1e-9);
     EXPECT_EQ(points.front(), before.front());
     EXPECT_EQ(points.back(), before.back());
@@ -59,7 +61,9 @@ TEST(CurvatureLimit, AnArcRounderThanTheRadiusIsLeftExactly) {
         points.push_back(Vec2(std::cos(t), std::sin(t)));  // radius 1
     }
     const std::vector<Vec2> before = points;
-    limitCurvature(points, 0.5);
+    CurvatureFlow capPath;
+    capPath.neighbourhood = 2;
+    limitCurvature(points, 0.5, capPath);
     EXPECT_EQ(points, before);
 }
 
