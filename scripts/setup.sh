@@ -15,7 +15,7 @@ packages=(
     qt6-base-dev libqt6opengl6-dev libgl-dev libgl1-mesa-dri libqt6svg6
     qt6-tools-dev qt6-l10n-tools qt6-translations-l10n
     xvfb xauth
-    libgtest-dev libgmock-dev libbenchmark-dev
+    libgtest-dev libgmock-dev libbenchmark-dev assimp-testmodels
     blender python3-numpy
     lintian appstream desktop-file-utils dpkg-dev file
 )

@@ -498,22 +498,6 @@
         <translation>Das Netz hat nur %1 brauchbare Flächen; ein Rig braucht eine geschlossene Oberfläche, die ein Volumen umschließt.</translation>
     </message>
     <message>
-        <source>The mesh is open: it has a hole of %1 edges, %2% of the model&apos;s size, too large to fill without guessing its shape. Close the mesh in your modelling tool (in Blender: select the border, Face &gt; Fill) and import it again.</source>
-        <translation>Das Netz ist offen: es hat ein Loch aus %1 Kanten, %2 % der Modellgröße, zu groß, um es zu füllen, ohne seine Form zu raten. Schließen Sie das Netz in Ihrem Modellierprogramm (in Blender: den Rand auswählen, Fläche &gt; Füllen) und importieren Sie es erneut.</translation>
-    </message>
-    <message>
-        <source>The mesh is %1 separate pieces; a rig needs one closed piece. Join them into one surface in your modelling tool, or export each piece as its own file and rig it as its own part.</source>
-        <translation>Das Netz besteht aus %1 getrennten Stücken; ein Rig braucht ein geschlossenes Stück. Verbinden Sie sie in Ihrem Modellierprogramm zu einer Oberfläche, oder exportieren Sie jedes Stück als eigene Datei und riggen Sie es als eigenes Teil.</translation>
-    </message>
-    <message>
-        <source>%1 pairs of faces of the mesh cross each other, so it does not bound one volume and its skeleton would be wrong. Remove the crossings in your modelling tool (in Blender: the 3D-Print toolbox finds them) and import it again.</source>
-        <translation>%1 Flächenpaare des Netzes kreuzen sich, es umschließt also kein einzelnes Volumen und sein Skelett wäre falsch. Entfernen Sie die Überkreuzungen in Ihrem Modellierprogramm (in Blender findet sie die 3D-Print-Toolbox) und importieren Sie es erneut.</translation>
-    </message>
-    <message>
-        <source>The mesh is not a manifold (more than two faces meet at an edge) and could not be repaired safely. Clean it up in your modelling tool (in Blender: Select &gt; All by Trait &gt; Non Manifold) and import it again.</source>
-        <translation>Das Netz ist nicht mannigfaltig (mehr als zwei Flächen treffen sich an einer Kante) und ließ sich nicht sicher reparieren. Bereinigen Sie es in Ihrem Modellierprogramm (in Blender: Auswahl &gt; Alle nach Merkmal &gt; Nicht-Mannigfaltig) und importieren Sie es erneut.</translation>
-    </message>
-    <message>
         <source>No skeleton could be found in the mesh: %1</source>
         <translation>Im Netz ließ sich kein Skelett finden: %1</translation>
     </message>
@@ -548,6 +532,54 @@
     <message>
         <source>filled %1 small holes with %2 new vertices</source>
         <translation>%1 kleine Löcher mit %2 neuen Vertices gefüllt</translation>
+    </message>
+    <message>
+        <source>the mesh is open (%1 borders, the longest of %2 edges)</source>
+        <translation>das Netz ist offen (%1 Ränder, der längste mit %2 Kanten)</translation>
+    </message>
+    <message>
+        <source>the mesh is %1 separate pieces</source>
+        <translation>das Netz besteht aus %1 getrennten Stücken</translation>
+    </message>
+    <message>
+        <source>%1 pairs of the mesh&apos;s faces cross each other</source>
+        <translation>%1 Flächenpaare des Netzes kreuzen sich</translation>
+    </message>
+    <message>
+        <source>the mesh is not a manifold (more than two faces meet at an edge)</source>
+        <translation>das Netz ist keine Mannigfaltigkeit (mehr als zwei Flächen treffen sich an einer Kante)</translation>
+    </message>
+    <message>
+        <source>A vertex of the mesh is not a finite number: the file is corrupt.</source>
+        <translation>Ein Vertex des Netzes ist keine endliche Zahl: die Datei ist beschädigt.</translation>
+    </message>
+    <message>
+        <source>A face of the mesh names vertex %1, but the mesh has only %2 vertices: the file is corrupt.</source>
+        <translation>Eine Fläche des Netzes nennt Vertex %1, das Netz hat aber nur %2 Vertices: die Datei ist beschädigt.</translation>
+    </message>
+    <message>
+        <source>The mesh has %1 faces: rigging it would need more than the %2 MiB of memory allowed. Decimate it in your modelling tool (in Blender: the Decimate modifier) and import it again.</source>
+        <translation>Das Netz hat %1 Flächen: es zu riggen bräuchte mehr als die erlaubten %2 MiB Speicher. Dezimieren Sie es in Ihrem Modellierprogramm (in Blender: der Modifikator Decimate) und importieren Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>the skeleton and weights were computed on a closed proxy of %1 vertices wrapped around the mesh&apos;s %2 pieces; the mesh itself is kept as it was</source>
+        <translation>Skelett und Gewichte wurden auf einer geschlossenen Hülle aus %1 Vertices berechnet, die die %2 Stücke des Netzes umschließt; das Netz selbst bleibt, wie es war</translation>
+    </message>
+    <message>
+        <source>%1 small pieces (eyes, teeth, buttons) follow bone %2</source>
+        <translation>%1 kleine Stücke (Augen, Zähne, Knöpfe) folgen dem Knochen %2</translation>
+    </message>
+    <message>
+        <source>%1 more small pieces follow one bone each</source>
+        <translation>%1 weitere kleine Stücke folgen je einem Knochen</translation>
+    </message>
+    <message>
+        <source>the mesh has %1 vertices, too many to compute the skeleton on directly</source>
+        <translation>das Netz hat %1 Vertices, zu viele, um das Skelett direkt darauf zu berechnen</translation>
+    </message>
+    <message>
+        <source>%1 pieces of the proxy lie apart from the body and follow its nearest bones</source>
+        <translation>%1 Stücke der Hülle liegen abseits des Körpers und folgen seinen nächsten Knochen</translation>
     </message>
 </context>
 <context>
@@ -690,15 +722,25 @@
             <numerusform>%1 mit %n Knochen geriggt</numerusform>
         </translation>
     </message>
-    <message>
-        <source>; repaired: %1</source>
-        <translation>; repariert: %1</translation>
-    </message>
     <message numerus="yes">
         <source>; %n vertex(es) saw no bone from inside and follow the closest one</source>
         <translation>
             <numerusform>; %n Vertex sah von innen keinen Knochen und folgt dem nächsten</numerusform>
             <numerusform>; %n Vertices sahen von innen keinen Knochen und folgen dem nächsten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Rig %1 with %n more part(s)</source>
+        <translation>
+            <numerusform>%1 mit %n weiteren Teil riggen</numerusform>
+            <numerusform>%1 mit %n weiteren Teilen riggen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 and %2 more parts rigged as one with %n bone(s)</source>
+        <translation>
+            <numerusform>%1 und %2 weitere Teile als eines mit %n Knochen geriggt</numerusform>
+            <numerusform>%1 und %2 weitere Teile als eines mit %n Knochen geriggt</numerusform>
         </translation>
     </message>
 </context>

@@ -498,22 +498,6 @@
         <translation>La malla solo tiene %1 caras utilizables; un rig necesita una superficie cerrada que encierre un volumen.</translation>
     </message>
     <message>
-        <source>The mesh is open: it has a hole of %1 edges, %2% of the model&apos;s size, too large to fill without guessing its shape. Close the mesh in your modelling tool (in Blender: select the border, Face &gt; Fill) and import it again.</source>
-        <translation>La malla está abierta: tiene un agujero de %1 aristas, el %2 % del tamaño del modelo, demasiado grande para rellenarlo sin adivinar su forma. Cierra la malla en tu programa de modelado (en Blender: selecciona el borde, Cara &gt; Rellenar) e impórtala de nuevo.</translation>
-    </message>
-    <message>
-        <source>The mesh is %1 separate pieces; a rig needs one closed piece. Join them into one surface in your modelling tool, or export each piece as its own file and rig it as its own part.</source>
-        <translation>La malla está formada por %1 trozos separados; un rig necesita un solo trozo cerrado. Únelos en una superficie en tu programa de modelado, o exporta cada trozo a su propio archivo y riggéalo como su propia pieza.</translation>
-    </message>
-    <message>
-        <source>%1 pairs of faces of the mesh cross each other, so it does not bound one volume and its skeleton would be wrong. Remove the crossings in your modelling tool (in Blender: the 3D-Print toolbox finds them) and import it again.</source>
-        <translation>%1 pares de caras de la malla se cruzan, así que no encierra un único volumen y su esqueleto sería erróneo. Elimina los cruces en tu programa de modelado (en Blender los encuentra la caja de herramientas 3D-Print) e impórtala de nuevo.</translation>
-    </message>
-    <message>
-        <source>The mesh is not a manifold (more than two faces meet at an edge) and could not be repaired safely. Clean it up in your modelling tool (in Blender: Select &gt; All by Trait &gt; Non Manifold) and import it again.</source>
-        <translation>La malla no es una variedad (más de dos caras se encuentran en una arista) y no se pudo reparar con seguridad. Límpiala en tu programa de modelado (en Blender: Seleccionar &gt; Todo por rasgo &gt; No variedad) e impórtala de nuevo.</translation>
-    </message>
-    <message>
         <source>No skeleton could be found in the mesh: %1</source>
         <translation>No se encontró ningún esqueleto en la malla: %1</translation>
     </message>
@@ -548,6 +532,54 @@
     <message>
         <source>filled %1 small holes with %2 new vertices</source>
         <translation>se rellenaron %1 agujeros pequeños con %2 vértices nuevos</translation>
+    </message>
+    <message>
+        <source>the mesh is open (%1 borders, the longest of %2 edges)</source>
+        <translation>la malla está abierta (%1 bordes, el más largo de %2 aristas)</translation>
+    </message>
+    <message>
+        <source>the mesh is %1 separate pieces</source>
+        <translation>la malla está formada por %1 trozos separados</translation>
+    </message>
+    <message>
+        <source>%1 pairs of the mesh&apos;s faces cross each other</source>
+        <translation>%1 pares de caras de la malla se cruzan</translation>
+    </message>
+    <message>
+        <source>the mesh is not a manifold (more than two faces meet at an edge)</source>
+        <translation>la malla no es una variedad (más de dos caras se encuentran en una arista)</translation>
+    </message>
+    <message>
+        <source>A vertex of the mesh is not a finite number: the file is corrupt.</source>
+        <translation>Un vértice de la malla no es un número finito: el archivo está dañado.</translation>
+    </message>
+    <message>
+        <source>A face of the mesh names vertex %1, but the mesh has only %2 vertices: the file is corrupt.</source>
+        <translation>Una cara de la malla nombra el vértice %1, pero la malla solo tiene %2 vértices: el archivo está dañado.</translation>
+    </message>
+    <message>
+        <source>The mesh has %1 faces: rigging it would need more than the %2 MiB of memory allowed. Decimate it in your modelling tool (in Blender: the Decimate modifier) and import it again.</source>
+        <translation>La malla tiene %1 caras: riggearla necesitaría más de los %2 MiB de memoria permitidos. Diezmala en tu programa de modelado (en Blender: el modificador Decimate) e impórtala de nuevo.</translation>
+    </message>
+    <message>
+        <source>the skeleton and weights were computed on a closed proxy of %1 vertices wrapped around the mesh&apos;s %2 pieces; the mesh itself is kept as it was</source>
+        <translation>el esqueleto y los pesos se calcularon sobre una envoltura cerrada de %1 vértices alrededor de los %2 trozos de la malla; la malla misma queda como estaba</translation>
+    </message>
+    <message>
+        <source>%1 small pieces (eyes, teeth, buttons) follow bone %2</source>
+        <translation>%1 trozos pequeños (ojos, dientes, botones) siguen al hueso %2</translation>
+    </message>
+    <message>
+        <source>%1 more small pieces follow one bone each</source>
+        <translation>%1 trozos pequeños más siguen a un hueso cada uno</translation>
+    </message>
+    <message>
+        <source>the mesh has %1 vertices, too many to compute the skeleton on directly</source>
+        <translation>la malla tiene %1 vértices, demasiados para calcular el esqueleto directamente sobre ella</translation>
+    </message>
+    <message>
+        <source>%1 pieces of the proxy lie apart from the body and follow its nearest bones</source>
+        <translation>%1 trozos de la envoltura quedan apartados del cuerpo y siguen sus huesos más cercanos</translation>
     </message>
 </context>
 <context>
@@ -690,15 +722,25 @@
             <numerusform>%1 riggeada con %n huesos</numerusform>
         </translation>
     </message>
-    <message>
-        <source>; repaired: %1</source>
-        <translation>; reparado: %1</translation>
-    </message>
     <message numerus="yes">
         <source>; %n vertex(es) saw no bone from inside and follow the closest one</source>
         <translation>
             <numerusform>; %n vértice no veía ningún hueso desde dentro y sigue al más cercano</numerusform>
             <numerusform>; %n vértices no veían ningún hueso desde dentro y siguen al más cercano</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Rig %1 with %n more part(s)</source>
+        <translation>
+            <numerusform>Riggear %1 con %n pieza más</numerusform>
+            <numerusform>Riggear %1 con %n piezas más</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 and %2 more parts rigged as one with %n bone(s)</source>
+        <translation>
+            <numerusform>%1 y %2 piezas más riggeadas como una con %n hueso</numerusform>
+            <numerusform>%1 y %2 piezas más riggeadas como una con %n huesos</numerusform>
         </translation>
     </message>
 </context>

@@ -57,13 +57,17 @@ commands:
       through this command in a separate process with time and memory
       limits, so a broken file cannot take them down.
   rig MESH -o OUT.rigmesh|.glb|.gltf|.fbx|.dae [--max-influences N] [--leaf-bones]
-      Reads a closed mesh (.obj, .ply, .off, .stl, .glb, .fbx, ... as import
-      does) and rigs every part without a skeleton: a skeleton from the
-      shape (mean curvature flow, bones by the same Cylindrical
-      Douglas-Peucker rule as sketches, a central root) and bone heat skin
-      weights. Seams, inward faces, degenerate faces and small holes are
-      repaired and listed; an open, many-piece or self-intersecting mesh is
-      refused with the reason. Writes the document or an export as for run.
+               [--separately] [--debug-proxy PROXY.obj]
+      Reads a mesh (.obj, .ply, .off, .stl, .glb, .fbx, ... as import does)
+      and rigs its parts without a skeleton as one figure (--separately:
+      each part alone): a skeleton from the shape (mean curvature flow,
+      bones by the same Cylindrical Douglas-Peucker rule as sketches, the
+      root in the thickest part) and bone heat skin weights. A mesh that is
+      not one closed piece (pieces, holes, crossing faces) is rigged on a
+      closed proxy wrapped around it; the mesh itself is kept as it is and
+      small floating pieces (eyes, teeth) follow one bone. --debug-proxy
+      writes the surface the rig was computed on. What the rig worked
+      around is listed. Writes the document or an export as for run.
   export DOC.rigmesh -o OUT.glb|.gltf|.fbx|.dae|.obj [--max-influences N]
                [--current-pose | --pose-as-key] [--no-animation] [--hidden] [--leaf-bones]
                [--subdivide N] [--decimate FACES] [--linear-blend]

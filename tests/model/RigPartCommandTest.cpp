@@ -3,12 +3,15 @@
 // and a rigged part or a part changed meanwhile is refused, unchanged.
 #include <gtest/gtest.h>
 
+#include <QFile>
 #include <QTemporaryDir>
+#include <QTextStream>
 #include <nlohmann/json.hpp>
 
 #include "ModelTestSupport.h"
 #include "RecipeTestSupport.h"
 #include "base/Error.h"
+#include "mesh/MeshPrimitives.h"
 #include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
 #include "model/commands/ImportPartsCommand.h"
@@ -92,6 +95,52 @@ TEST_F(RigPart, AResultForAPartThatChangedMeanwhileIsRefused) {
     EXPECT_THROW(RigPartCommand::fromRigged(document, id, rigged), Error);
     document.undoStack()->redo();  // the same part is back: the result fits again
     EXPECT_NO_THROW(RigPartCommand::fromRigged(document, id, rigged));
+}
+
+// Two objects in one OBJ (a body and a separate cap above it) import as
+// two parts; rigging them together makes one part of both meshes, and undo
+// gives both back where they were.
+TEST_F(RigPart, PartsFromOneFileAreRiggedAsOneFigureAndUndoGivesThemBack) {
+    const QString twoPath = folder.filePath(QStringLiteral("two.obj"));
+    {
+        QFile file(twoPath);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        QTextStream out(&file);
+        const TriMesh body = makeCylinderTube(16, 16, 0.3, 2.0);
+        const TriMesh cap = makeIcosphere(2, 0.35);
+        out << "o body\n";
+        for (const Vec3& v : body.vertices)
+            out << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+        for (const auto& f : body.faces)
+            out << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << '\n';
+        out << "o cap\n";
+        for (const Vec3& v : cap.vertices)
+            out << "v " << v.x() << ' ' << v.y() << ' ' << v.z() + 1.25 << '\n';
+        const int offset = body.vertexCount() + 1;
+        for (const auto& f : cap.faces)
+            out << "f " << f[0] + offset << ' ' << f[1] + offset << ' ' << f[2] + offset << '\n';
+    }
+    Document two;
+    auto import = ImportPartsCommand::create(two, twoPath);
+    const std::vector<PartId> ids = import->partIds();
+    two.undoStack()->push(import.release());
+    ASSERT_EQ(ids.size(), 2u);
+    const int vertices =
+        two.part(ids[0]).part->mesh.vertexCount() + two.part(ids[1]).part->mesh.vertexCount();
+    const QByteArray before = bytesOf(two);
+    auto command = RigPartCommand::create(two, ids);
+    EXPECT_EQ(command->recipeStep()["parts"], nlohmann::json::array({0, 1}));
+    two.undoStack()->push(command.release());
+    ASSERT_EQ(two.partCount(), 1);
+    const Part& rigged = *two.part(ids[0]).part;
+    EXPECT_EQ(rigged.mesh.vertexCount(), vertices);
+    EXPECT_TRUE(rigged.validate().empty());
+    EXPECT_GE(rigged.skeleton.boneCount(), 1);
+    const QByteArray after = bytesOf(two);
+    two.undoStack()->undo();
+    EXPECT_EQ(bytesOf(two), before);
+    two.undoStack()->redo();
+    EXPECT_EQ(bytesOf(two), after);
 }
 
 }  // namespace

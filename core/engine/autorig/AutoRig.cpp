@@ -1,6 +1,13 @@
 #include "autorig/AutoRig.h"
 
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <limits>
+#include <map>
+
+#include "autorig/AxisChain.h"
 #include "autorig/CurveSkeleton.h"
+#include "autorig/WeightTransfer.h"
 #include "base/Error.h"
 #include "part/BoneWeights.h"
 
@@ -8,15 +15,94 @@ namespace rigmesh {
 
 namespace {
 
-// The share of the progress bar each stage takes (measured: the flow is
-// most of the time).
-constexpr double kRepairDone = 0.05;
-constexpr double kSkeletonDone = 0.75;
+// The share of the progress bar each stage takes (measured on the assimp
+// test characters: the wrap and the flow are most of the time).
+constexpr double kSurfaceDone = 0.35;
+constexpr double kSkeletonDone = 0.8;
+constexpr double kHeatDone = 0.95;
+// At most this many "pieces follow bone" notes; the rest are counted.
+constexpr int kPieceNotes = 3;
+constexpr BoneId kNoLeader = std::numeric_limits<BoneId>::max();
 
 RigProgress stage(const RigProgress& progress, double from, double to) {
     if (!progress)
         return {};
     return [=](double fraction) { return progress(from + (to - from) * fraction); };
+}
+
+// Every input vertex's weights: its own surface vertex's, or those at its
+// closest point of the surface.
+WeightsById weightsOfInput(const TriMesh& input, const RigSurface& surface,
+                           const WeightsById& surfaceWeights) {
+    std::vector<char> wanted(input.vertices.size(), 0);
+    bool any = false;
+    for (std::size_t v = 0; v < wanted.size(); ++v)
+        any |= (wanted[v] = surface.surfaceVertexOf[v] < 0 ? 1 : 0) != 0;
+    WeightsById weights =
+        any ? weightsAtClosestPoints(surface.mesh, surfaceWeights, input.vertices, wanted)
+            : WeightsById(input.vertices.size());
+    for (std::size_t v = 0; v < wanted.size(); ++v)
+        if (!wanted[v])
+            weights[v] = surfaceWeights[surface.surfaceVertexOf[v]];
+    return weights;
+}
+
+// Small pieces (eyes, teeth, buttons) move as a whole with the bone that
+// leads their vertices' weights. Returns bone -> pieces.
+std::map<BoneId, int> followOneBone(const TriMesh& input, const RigSurface& surface,
+                                    double fraction, WeightsById& weights) {
+    std::map<BoneId, int> following;
+    if (surface.pieces < 2)
+        return following;
+    std::vector<Eigen::AlignedBox3d> boxes(surface.pieces);
+    std::vector<int> sizes(surface.pieces, 0);
+    Eigen::AlignedBox3d all;
+    for (int v = 0; v < input.vertexCount(); ++v)
+        if (surface.pieceOf[v] >= 0) {
+            boxes[surface.pieceOf[v]].extend(input.vertices[v]);
+            ++sizes[surface.pieceOf[v]];
+            all.extend(input.vertices[v]);
+        }
+    const double limit = fraction * all.diagonal().norm();
+    const int largest =
+        static_cast<int>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
+    std::vector<std::map<BoneId, double>> sums(surface.pieces);
+    for (int v = 0; v < input.vertexCount(); ++v)
+        if (surface.pieceOf[v] >= 0)
+            for (const auto& [bone, w] : weights[v])
+                sums[surface.pieceOf[v]][bone] += w;
+    std::vector<BoneId> leader(surface.pieces, kNoLeader);
+    for (int p = 0; p < surface.pieces; ++p) {
+        if (p == largest || sums[p].empty() || boxes[p].diagonal().norm() > limit)
+            continue;
+        leader[p] = std::max_element(sums[p].begin(), sums[p].end(), [](auto& a, auto& b) {
+                        return a.second < b.second;
+                    })->first;
+        ++following[leader[p]];
+    }
+    for (int v = 0; v < input.vertexCount(); ++v)
+        if (surface.pieceOf[v] >= 0 && leader[surface.pieceOf[v]] != kNoLeader)
+            weights[v] = {{leader[surface.pieceOf[v]], 1.0}};
+    return following;
+}
+
+void notePieces(const std::map<BoneId, int>& following, const std::string& partName,
+                std::vector<Message>& notes) {
+    std::vector<std::pair<int, BoneId>> byCount;
+    for (const auto& [bone, count] : following)
+        byCount.emplace_back(-count, bone);
+    std::sort(byCount.begin(), byCount.end());
+    int rest = 0;
+    for (std::size_t i = 0; i < byCount.size(); ++i) {
+        if (static_cast<int>(i) < kPieceNotes)
+            notes.push_back({MessageId::AutoRigPiecesFollowBone,
+                             {messageArgument(-byCount[i].first),
+                              partName + "_bone" + std::to_string(byCount[i].second)}});
+        else
+            rest -= byCount[i].first;
+    }
+    if (rest > 0)
+        notes.push_back({MessageId::AutoRigMorePiecesFollowBones, {messageArgument(rest)}});
 }
 
 }  // namespace
@@ -28,25 +114,43 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     if (part.mesh.faceCount() == 0)
         throw Error(MessageId::AutoRigNoSurface, part.name);
     reportRigProgress(progress, 0.0);
-    RepairedMesh repaired = repairForRigging(part.mesh, options.repair);
-    reportRigProgress(progress, kRepairDone);
+    RigSurface surface =
+        rigSurfaceFor(part.mesh, options.surface, stage(progress, 0.0, kSurfaceDone));
+    reportRigProgress(progress, kSurfaceDone);
 
-    const CurveSkeleton curve =
-        extractCurveSkeleton(repaired.mesh, stage(progress, kRepairDone, kSkeletonDone));
     AutoRigResult result;
     result.part.name = part.name;
-    result.part.mesh = std::move(repaired.mesh);
-    result.part.skeleton = skeletonFromCurve(curve, result.part.mesh, options.bones);
+    result.part.mesh = part.mesh;
+    try {
+        const CurveSkeleton curve =
+            extractCurveSkeleton(surface.mainPiece, stage(progress, kSurfaceDone, kSkeletonDone));
+        result.part.skeleton = skeletonFromCurve(curve, surface.mainPiece, options.bones);
+    } catch (const Error& error) {
+        // A blob the flow contracts to a point: a chain along its main axis.
+        if (error.message().id != MessageId::AutoRigSkeletonFailed)
+            throw;
+        result.part.skeleton = mainAxisChain(surface.mainPiece);
+    }
     reportRigProgress(progress, kSkeletonDone);
 
     // Paper 2.4: no construction shortcut here, every vertex is tested for
     // the bones it sees from inside.
-    const BoneHeatSolver solver(result.part.mesh, result.part.boneSegments(), {}, options.heat);
-    result.part.weights = weightsById(result.part.skeleton, solver.solveAll());
+    const BoneHeatSolver solver(surface.mesh, result.part.boneSegments(), {}, options.heat);
+    const WeightsById surfaceWeights =
+        weightsById(result.part.skeleton, solver.solveAll()).perVertex;
     result.verticesWithoutVisibleBone = solver.verticesWithoutVisibleBone();
-    result.sourceVertex = std::move(repaired.sourceVertex);
-    result.repairs = std::move(repaired.repairs);
-    const std::vector<std::string> problems = result.part.validateSolid();
+    reportRigProgress(progress, kHeatDone);
+
+    result.part.weights.perVertex = weightsOfInput(part.mesh, surface, surfaceWeights);
+    const std::map<BoneId, int> following = followOneBone(
+        part.mesh, surface, options.floatingPieceFraction, result.part.weights.perVertex);
+    for (const auto& [bone, count] : following)
+        result.floatingPieces += count;
+    result.repairs = std::move(surface.notes);
+    notePieces(following, part.name, result.repairs);
+    result.rigSurface = std::move(surface.mesh);
+    result.surfaceKind = surface.kind;
+    const std::vector<std::string> problems = result.part.validate();
     if (!problems.empty())
         throw Error(MessageId::AutoRigSkeletonFailed, problems.front());
     reportRigProgress(progress, 1.0);

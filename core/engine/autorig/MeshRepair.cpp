@@ -33,35 +33,14 @@ using cgal::VertexIndex;
 using Polygon = std::array<std::size_t, 3>;
 using SourceMap = SurfaceMesh::Property_map<VertexIndex, int>;
 
-void checkInput(const TriMesh& mesh) {
-    for (const Vec3& v : mesh.vertices)
-        if (!v.allFinite())
-            throw Error("A vertex of the mesh is not a finite number: the file is corrupt.");
-    for (const auto& face : mesh.faces)
-        for (int corner : face)
-            if (corner < 0 || corner >= mesh.vertexCount())
-                throw Error(
-                    "A face of the mesh names a vertex it does not have: the file is "
-                    "corrupt.");
-}
+// Raised inside the repair when the mesh cannot be made one clean piece.
+struct Unrepairable {
+    Message reason;
+};
 
-// A mesh the skeleton and the heat can take as it is.
-bool fitForRigging(const TriMesh& mesh) {
-    const MeshReport report = analyseMesh(mesh, true);
-    if (!report.isClosed() || !report.isManifold() || !report.isOutwardOriented() ||
-        report.components != 1 || report.degenerateFaces > 0 ||
-        report.selfIntersectingFacePairs > 0)
-        return false;
-    std::vector<char> used(mesh.vertices.size(), 0);
-    std::set<std::array<int, 3>> seen;
-    for (auto face : mesh.faces) {
-        for (int corner : face)
-            used[corner] = 1;
-        std::sort(face.begin(), face.end());
-        if (!seen.insert(face).second)
-            return false;
-    }
-    return std::all_of(used.begin(), used.end(), [](char u) { return u != 0; });
+template <class... Args>
+Unrepairable unrepairable(MessageId id, const Args&... args) {
+    return {Message{id, {messageArgument(args)...}}};
 }
 
 struct Soup {
@@ -170,10 +149,9 @@ void fillSmallHoles(SurfaceMesh& mesh, const MeshRepairOptions& options,
                 CGAL::squared_distance(mesh.point(mesh.source(b)), mesh.point(mesh.target(b))));
             ++edges;
         }
-        if (length > limit) {
-            const int percent = static_cast<int>(std::lround(100.0 * length / diagonal));
-            throw Error(MessageId::AutoRigOpenBorder, edges, percent);
-        }
+        if (length > limit)
+            throw unrepairable(MessageId::AutoRigOpenBorder, static_cast<int>(borders.size()),
+                               edges);
     }
     int newVertices = 0;
     for (auto h : borders) {
@@ -205,23 +183,11 @@ RepairedMesh toRepaired(const SurfaceMesh& mesh, SourceMap sources) {
     return result;
 }
 
-}  // namespace
-
-RepairedMesh repairForRigging(const TriMesh& input, const MeshRepairOptions& options) {
-    checkInput(input);
-    if (input.faceCount() >= 4 && fitForRigging(input)) {
-        RepairedMesh same;
-        same.mesh = input;
-        same.sourceVertex.resize(input.vertices.size());
-        for (int v = 0; v < input.vertexCount(); ++v)
-            same.sourceVertex[v] = v;
-        return same;
-    }
-
+RepairedMesh repaired(const TriMesh& input, const MeshRepairOptions& options) {
     std::vector<Message> repairs;
     Soup soup = weldedSoup(input, repairs);
     if (soup.polygons.size() < 4)
-        throw Error(MessageId::AutoRigTooFewFaces, static_cast<int>(soup.polygons.size()));
+        throw unrepairable(MessageId::AutoRigTooFewFaces, static_cast<int>(soup.polygons.size()));
     std::unordered_map<cgal::PointKey, int, cgal::PointKeyHash> sourceAt;
     for (std::size_t p = 0; p < soup.points.size(); ++p)
         sourceAt.emplace(cgal::keyOf(cgal::toVec(soup.points[p])), soup.source[p]);
@@ -252,18 +218,18 @@ RepairedMesh repairForRigging(const TriMesh& input, const MeshRepairOptions& opt
     if (degenerate > 0)
         repairs.push_back({MessageId::AutoRigRepairDegenerate, {messageArgument(degenerate)}});
     if (mesh.number_of_faces() < 4)
-        throw Error(MessageId::AutoRigTooFewFaces, static_cast<int>(mesh.number_of_faces()));
+        throw unrepairable(MessageId::AutoRigTooFewFaces, static_cast<int>(mesh.number_of_faces()));
 
     // Pieces are counted before the holes are filled, so a piece is never
     // filled shut only to be refused.
     auto componentOf = mesh.add_property_map<FaceIndex, std::size_t>("f:component", 0).first;
     const std::size_t pieces = PMP::connected_components(mesh, componentOf);
     if (pieces > 1)
-        throw Error(MessageId::AutoRigSeveralPieces, static_cast<int>(pieces));
+        throw unrepairable(MessageId::AutoRigSeveralPieces, static_cast<int>(pieces));
 
     fillSmallHoles(mesh, options, repairs);
     if (!CGAL::is_closed(mesh))
-        throw Error(MessageId::AutoRigNotManifold);
+        throw unrepairable(MessageId::AutoRigNotManifold);
     if (!PMP::is_outward_oriented(mesh)) {
         PMP::reverse_face_orientations(mesh);
         repairs.push_back({MessageId::AutoRigRepairFlipped, {}});
@@ -273,11 +239,42 @@ RepairedMesh repairForRigging(const TriMesh& input, const MeshRepairOptions& opt
     RepairedMesh result = toRepaired(mesh, sources);
     const MeshReport report = analyseMesh(result.mesh, true);
     if (!report.isManifold() || !report.isClosed())
-        throw Error(MessageId::AutoRigNotManifold);
+        throw unrepairable(MessageId::AutoRigNotManifold);
     if (report.selfIntersectingFacePairs > 0)
-        throw Error(MessageId::AutoRigSelfIntersecting, report.selfIntersectingFacePairs);
+        throw unrepairable(MessageId::AutoRigSelfIntersecting, report.selfIntersectingFacePairs);
     result.repairs = std::move(repairs);
     return result;
+}
+
+}  // namespace
+
+bool fitForRigging(const TriMesh& mesh) {
+    const MeshReport report = analyseMesh(mesh, true);
+    if (!report.isClosed() || !report.isManifold() || !report.isOutwardOriented() ||
+        report.components != 1 || report.degenerateFaces > 0 ||
+        report.selfIntersectingFacePairs > 0)
+        return false;
+    std::vector<char> used(mesh.vertices.size(), 0);
+    std::set<std::array<int, 3>> seen;
+    for (auto face : mesh.faces) {
+        for (int corner : face)
+            used[corner] = 1;
+        std::sort(face.begin(), face.end());
+        if (!seen.insert(face).second)
+            return false;
+    }
+    return std::all_of(used.begin(), used.end(), [](char u) { return u != 0; });
+}
+
+RepairAttempt repairForRigging(const TriMesh& input, const MeshRepairOptions& options) {
+    try {
+        return {repaired(input, options), {}};
+    } catch (const Unrepairable& failure) {
+        return {std::nullopt, failure.reason};
+    } catch (const std::exception&) {
+        // A CGAL precondition a broken mesh violates: the proxy takes it.
+        return {std::nullopt, Message{MessageId::AutoRigNotManifold, {}}};
+    }
 }
 
 }  // namespace rigmesh

@@ -1,13 +1,16 @@
 #include "autorig/SkeletonFromCurve.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <deque>
 #include <limits>
 #include <map>
+#include <queue>
 #include <set>
 #include <vector>
 
+#include "autorig/AxisChain.h"
 #include "autorig/JointsInside.h"
 #include "base/Error.h"
 #include "rig/DouglasPeucker.h"
@@ -23,6 +26,10 @@ struct Graph {
     std::vector<double> radii;
     std::vector<std::set<int>> neighbours;
     std::vector<char> alive;
+    // Per node: the mesh vertices that contracted onto it, and those of
+    // the twigs pruned into it.
+    std::vector<std::vector<int>> vertices;
+    const TriMesh* mesh = nullptr;
 
     int degree(int n) const { return static_cast<int>(neighbours[n].size()); }
     double length(int a, int b) const { return (points[a] - points[b]).norm(); }
@@ -88,8 +95,10 @@ std::vector<double> nodeRadii(const CurveSkeleton& curve, const TriMesh& mesh) {
     return radii;
 }
 
-// Keeps the component with the most nodes and a breadth-first spanning tree
-// of it: a handle's cycle is cut where the search closes it.
+// Keeps the component with the most nodes and its shortest-path tree from
+// its thickest node (the torso, where a person puts the root). A cycle (a
+// handle; legs whose feet touch) is cut where the paths from there meet: at
+// its far end, so the legs keep their own chains down to the feet.
 Graph spanningTree(const CurveSkeleton& curve, const TriMesh& mesh) {
     const int count = static_cast<int>(curve.nodes.size());
     std::vector<std::vector<int>> adjacent(count);
@@ -103,6 +112,10 @@ Graph spanningTree(const CurveSkeleton& curve, const TriMesh& mesh) {
     graph.radii = nodeRadii(curve, mesh);
     graph.neighbours.assign(count, {});
     graph.alive.assign(count, 0);
+    graph.vertices = curve.nodeVertices;
+    graph.mesh = &mesh;
+    for (auto& list : graph.vertices)
+        std::erase_if(list, [&](int v) { return v < 0 || v >= mesh.vertexCount(); });
     std::vector<int> component(count, -1);
     int best = -1, bestSize = 0;
     for (int start = 0; start < count; ++start) {
@@ -126,20 +139,34 @@ Graph spanningTree(const CurveSkeleton& curve, const TriMesh& mesh) {
             bestSize = size;
         }
     }
-    std::vector<char> reached(count, 0);
-    std::deque<int> queue{best};
-    reached[best] = 1;
+    int thickest = best;
+    for (int n = 0; n < count; ++n)
+        if (component[n] == best && graph.radii[n] > graph.radii[thickest])
+            thickest = n;
+    std::vector<double> distance(count, std::numeric_limits<double>::infinity());
+    std::vector<int> parent(count, -1);
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+    distance[thickest] = 0.0;
+    queue.push({0.0, thickest});
     while (!queue.empty()) {
-        const int n = queue.front();
-        queue.pop_front();
+        const auto [d, n] = queue.top();
+        queue.pop();
+        if (d > distance[n])
+            continue;
         graph.alive[n] = 1;
-        for (int m : adjacent[n])
-            if (!reached[m]) {
-                reached[m] = 1;
-                graph.neighbours[n].insert(m);
-                graph.neighbours[m].insert(n);
-                queue.push_back(m);
+        if (parent[n] >= 0) {
+            graph.neighbours[n].insert(parent[n]);
+            graph.neighbours[parent[n]].insert(n);
+        }
+        for (int m : adjacent[n]) {
+            const double through = d + graph.length(n, m);
+            if (through < distance[m]) {
+                distance[m] = through;
+                parent[m] = n;
+                queue.push({through, m});
             }
+        }
     }
     return graph;
 }
@@ -166,10 +193,24 @@ double branchLength(const Graph& graph, const std::vector<int>& branch) {
     return length;
 }
 
+// The farthest of the branch's vertices (its nodes' but the last) from the
+// point where it leaves the rest of the curve.
+double reachBeyond(const Graph& graph, const std::vector<int>& branch) {
+    const Vec3& junction = graph.points[branch.back()];
+    double farthest = 0.0;
+    for (std::size_t i = 0; i + 1 < branch.size(); ++i)
+        for (int v : graph.vertices[branch[i]])
+            farthest = std::max(farthest, (graph.mesh->vertices[v] - junction).norm());
+    return farthest;
+}
+
 // Removes the twig that falls shortest of its limit, one at a time (each
 // removal can turn a junction into a plain branch node); never below two
-// tips.
-void pruneTwigs(Graph& graph, const CurveRigOptions& options) {
+// tips. A branch that reaches farther than `keepReach` from its junction
+// stays whatever its length: it is a part of the body (a trunk's base, a
+// fist beside its thumb, a head), not flow noise, and without it those
+// vertices would be far from every bone.
+void pruneTwigs(Graph& graph, const CurveRigOptions& options, double keepReach) {
     while (true) {
         std::vector<int> tips;
         for (int n : graph.aliveNodes())
@@ -186,16 +227,20 @@ void pruneTwigs(Graph& graph, const CurveRigOptions& options) {
                 continue;
             const double limit = graph.radii[junction] + options.twigTipFactor * graph.radii[tip];
             const double ratio = limit > 0.0 ? branchLength(graph, branch) / limit : 1.0;
-            if (ratio < worstRatio) {
+            if (ratio < worstRatio && reachBeyond(graph, branch) <= keepReach) {
                 worstRatio = ratio;
                 worst = branch;
             }
         }
         if (worst.empty())
             return;
-        worst.pop_back();  // the junction stays
-        for (int n : worst)
+        const int junction = worst.back();
+        worst.pop_back();  // the junction stays, and takes the twig's vertices
+        for (int n : worst) {
+            auto& into = graph.vertices[junction];
+            into.insert(into.end(), graph.vertices[n].begin(), graph.vertices[n].end());
             graph.kill(n);
+        }
     }
 }
 
@@ -239,8 +284,11 @@ void collapseJunctions(Graph& graph, const CurveRigOptions& options) {
                     joined.erase(n);
                 graph.radii[a] = std::max(graph.radii[a], graph.radii[b]);
                 for (int n : branch)
-                    if (n != a)
+                    if (n != a) {
+                        auto& into = graph.vertices[a];
+                        into.insert(into.end(), graph.vertices[n].begin(), graph.vertices[n].end());
                         graph.kill(n);
+                    }
                 graph.points[a] = middle;
                 for (int m : joined) {
                     graph.neighbours[a].insert(m);
@@ -352,6 +400,24 @@ std::vector<TubeSample> branchJoints(const Graph& graph, const std::vector<int>&
     return joints;
 }
 
+int leafCount(const Skeleton& skeleton) {
+    int leaves = 0;
+    for (const Joint& joint : skeleton.joints())
+        leaves += skeleton.degree(joint.id) == 1 ? 1 : 0;
+    return leaves;
+}
+
+// The branching joint where the body is thickest (the torso); the most
+// central joint of a skeleton without branches.
+JointId thickestRoot(const Skeleton& skeleton, const std::map<JointId, double>& radiusOf) {
+    JointId best = kNoJoint;
+    for (const Joint& joint : skeleton.joints())
+        if (skeleton.degree(joint.id) >= 3 &&
+            (best == kNoJoint || radiusOf.at(joint.id) > radiusOf.at(best)))
+            best = joint.id;
+    return best == kNoJoint ? chooseCentralRoot(skeleton) : best;
+}
+
 }  // namespace
 
 Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
@@ -359,7 +425,11 @@ Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
     if (curve.nodes.size() < 2 || curve.edges.empty())
         throw Error(MessageId::AutoRigSkeletonFailed, "the flow gave no curve.");
     Graph graph = spanningTree(curve, mesh);
-    pruneTwigs(graph, options);
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : mesh.vertices)
+        box.extend(v);
+    const double diagonal = box.isEmpty() ? 0.0 : box.diagonal().norm();
+    pruneTwigs(graph, options, options.keepReachFraction * diagonal);
     collapseJunctions(graph, options);
 
     Skeleton skeleton;
@@ -393,8 +463,16 @@ Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
     // Half the local radius deep: a tip joint ends about where a sketched
     // part's sits, in the middle of its cap.
     pullJointsInside(skeleton, mesh, [&](JointId joint) { return 0.5 * radiusOf[joint]; });
-    skeleton.setRoot(chooseCentralRoot(skeleton));
+    skeleton.setRoot(thickestRoot(skeleton, radiusOf));
     skeleton.reorient();
+    if (leafCount(skeleton) <= 2) {
+        const double covered = farthestFromBones(mesh, skeleton);
+        if (covered > options.coverageFraction * diagonal) {
+            Skeleton axis = mainAxisChain(mesh);
+            if (farthestFromBones(mesh, axis) < covered)
+                skeleton = std::move(axis);
+        }
+    }
     const std::vector<std::string> problems = skeleton.validate();
     if (!problems.empty())
         throw Error(MessageId::AutoRigSkeletonFailed, problems.front());

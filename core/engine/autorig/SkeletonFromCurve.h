@@ -11,7 +11,12 @@
 //    TubeSample), threshold and minimum bone relative to the branch's mean
 //    radius as for sketches; samples inside a junction's ball are left out,
 //    as a sketch's connecting region is (its junction joint stands for them).
-// 5. The root is the most central joint; bones point away from it.
+// 5. The root is the thickest branching joint (the torso), else the most
+//    central joint; bones point away from it.
+// A twig that reaches far from its junction is never pruned (a trunk's
+// base, a head), so every region of the body stays near a bone; a chain
+// without branches that covers the body worse than its main axis would
+// (a blob) is replaced by that axis (autorig/AxisChain).
 #pragma once
 
 #include "autorig/CurveSkeleton.h"
@@ -33,6 +38,13 @@ struct CurveRigOptions {
     // Junctions joined by a branch shorter than this times the larger of
     // their radii become one joint.
     double junctionCollapseFactor = 1.0;
+    // A twig whose vertices reach farther than this fraction of the mesh's
+    // bounding-box diagonal from its junction is kept (a part of the body).
+    double keepReachFraction = 0.1;
+    // A skeleton without a branch whose farthest vertex lies farther than
+    // this fraction of the diagonal from its bones gives way to a chain
+    // along the main axis (autorig/AxisChain) when that one covers better.
+    double coverageFraction = 0.15;
 };
 
 // `mesh` gives each node its radius (the mean distance to the vertices that

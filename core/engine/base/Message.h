@@ -135,6 +135,14 @@ enum class MessageId {
     AutoRigRepairNonManifold,
     AutoRigRepairFlipped,
     AutoRigRepairHoles,
+    AutoRigNotFinite,
+    AutoRigFaceOutOfRange,
+    AutoRigOverMemoryBudget,
+    AutoRigLargeMesh,
+    AutoRigProxyWrapped,
+    AutoRigProxyApart,
+    AutoRigPiecesFollowBone,
+    AutoRigMorePiecesFollowBones,
 
     Count  // not a message: the number of ids
 };

@@ -342,30 +342,17 @@ const char* messageTemplate(MessageId id) {
                 "The mesh has only %1 usable faces; a rig needs a closed surface that bounds a "
                 "volume.");
         case MessageId::AutoRigOpenBorder:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "The mesh is open: it has a hole of %1 edges, %2% of the model's size, too "
-                "large to fill without guessing its shape. Close the mesh in your modelling "
-                "tool (in Blender: select the border, Face > Fill) and import it again.");
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "the mesh is open (%1 borders, the longest of %2 edges)");
         case MessageId::AutoRigSeveralPieces:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "The mesh is %1 separate pieces; a rig needs one closed piece. Join them into "
-                "one surface in your modelling tool, or export each piece as its own file and "
-                "rig it as its own part.");
+            return RIGMESH_TRANSLATABLE("EngineMessage", "the mesh is %1 separate pieces");
         case MessageId::AutoRigSelfIntersecting:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "%1 pairs of faces of the mesh cross each other, so it does not bound one "
-                "volume and its skeleton would be wrong. Remove the crossings in your "
-                "modelling tool (in Blender: the 3D-Print toolbox finds them) and import it "
-                "again.");
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "%1 pairs of the mesh's faces cross each other");
         case MessageId::AutoRigNotManifold:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
-                "The mesh is not a manifold (more than two faces meet at an edge) and could "
-                "not be repaired safely. Clean it up in your modelling tool (in Blender: "
-                "Select > All by Trait > Non Manifold) and import it again.");
+                "the mesh is not a manifold (more than two faces meet at an edge)");
         case MessageId::AutoRigSkeletonFailed:
             return RIGMESH_TRANSLATABLE("EngineMessage",
                                         "No skeleton could be found in the mesh: %1");
@@ -389,6 +376,40 @@ const char* messageTemplate(MessageId id) {
         case MessageId::AutoRigRepairHoles:
             return RIGMESH_TRANSLATABLE("EngineMessage",
                                         "filled %1 small holes with %2 new vertices");
+        case MessageId::AutoRigNotFinite:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "A vertex of the mesh is not a finite number: the file is corrupt.");
+        case MessageId::AutoRigFaceOutOfRange:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "A face of the mesh names vertex %1, but the mesh has only %2 vertices: the "
+                "file is corrupt.");
+        case MessageId::AutoRigOverMemoryBudget:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The mesh has %1 faces: rigging it would need more than the %2 MiB of memory "
+                "allowed. Decimate it in your modelling tool (in Blender: the Decimate "
+                "modifier) and import it again.");
+        case MessageId::AutoRigLargeMesh:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "the mesh has %1 vertices, too many to compute the skeleton on directly");
+        case MessageId::AutoRigProxyWrapped:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "the skeleton and weights were computed on a closed proxy of %1 vertices "
+                "wrapped around the mesh's %2 pieces; the mesh itself is kept as it was");
+        case MessageId::AutoRigProxyApart:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "%1 pieces of the proxy lie apart from the body and follow its nearest bones");
+        case MessageId::AutoRigPiecesFollowBone:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "%1 small pieces (eyes, teeth, buttons) follow bone %2");
+        case MessageId::AutoRigMorePiecesFollowBones:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "%1 more small pieces follow one bone each");
     }
     return "";
 }

@@ -46,7 +46,8 @@ const aiScene* readScene(Assimp::Importer& importer, const std::string& path) {
     return scene;
 }
 
-// Triangles only (points and lines are left out), vertices in world space.
+// Triangles only (points and lines are left out, and so are triangles that
+// repeat a corner: they show nothing), vertices in world space.
 TriMesh worldMesh(const aiMesh& mesh, const Eigen::Affine3d& global) {
     TriMesh out;
     out.vertices.reserve(mesh.mNumVertices);
@@ -54,7 +55,8 @@ TriMesh worldMesh(const aiMesh& mesh, const Eigen::Affine3d& global) {
         out.vertices.push_back(global * fromAi(mesh.mVertices[v]));
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
         const aiFace& face = mesh.mFaces[f];
-        if (face.mNumIndices == 3)
+        if (face.mNumIndices == 3 && face.mIndices[0] != face.mIndices[1] &&
+            face.mIndices[1] != face.mIndices[2] && face.mIndices[0] != face.mIndices[2])
             out.faces.push_back({static_cast<int>(face.mIndices[0]),
                                  static_cast<int>(face.mIndices[1]),
                                  static_cast<int>(face.mIndices[2])});

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "base/DisjointSets.h"
 #include "base/Error.h"
 #include "mesh/MeshSelfIntersections.h"
 
@@ -15,24 +16,6 @@ namespace rigmesh {
 namespace {
 
 constexpr double kDegenerateAreaFactor = 1e-12;  // times the squared bounding-box diagonal
-
-// Union-find with path halving; small and fast for the sizes we see.
-class DisjointSets {
-  public:
-    explicit DisjointSets(std::size_t n) : parent_(n) {
-        for (std::size_t i = 0; i < n; ++i)
-            parent_[i] = static_cast<int>(i);
-    }
-    int find(int x) {
-        while (parent_[x] != x)
-            x = parent_[x] = parent_[parent_[x]];
-        return x;
-    }
-    void unite(int a, int b) { parent_[find(a)] = find(b); }
-
-  private:
-    std::vector<int> parent_;
-};
 
 // One face's use of an undirected edge. Sorting by `key` groups the faces of each edge.
 struct EdgeUse {

@@ -9,6 +9,7 @@
 
 #include <Eigen/Geometry>
 
+#include "base/DisjointSets.h"
 #include "base/Error.h"
 
 namespace rigmesh {
@@ -25,31 +26,6 @@ std::string jointName(JointId id) {
 std::string boneName(BoneId id) {
     return "bone " + std::to_string(id);
 }
-
-// Union-find over dense joint indices, for cycles and components.
-class DisjointSets {
-  public:
-    explicit DisjointSets(int n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-    int find(int i) {
-        while (parent_[i] != i) {
-            parent_[i] = parent_[parent_[i]];
-            i = parent_[i];
-        }
-        return i;
-    }
-    bool unite(int a, int b) {
-        a = find(a);
-        b = find(b);
-        if (a == b) {
-            return false;
-        }
-        parent_[b] = a;
-        return true;
-    }
-
-  private:
-    std::vector<int> parent_;
-};
 
 }  // namespace
 
@@ -346,7 +322,7 @@ std::vector<std::string> Skeleton::validate() const {
     }
 
     const double zeroLength = kZeroLengthRelative * (box.isEmpty() ? 0.0 : box.diagonal().norm());
-    DisjointSets sets(jointCount());
+    DisjointSets sets(static_cast<std::size_t>(jointCount()));
     int components = jointCount();
     for (const Bone& b : bones_) {
         const bool headOk = hasJoint(b.head);

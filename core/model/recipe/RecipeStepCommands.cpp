@@ -401,10 +401,20 @@ const std::map<std::string, StepKind>& stepKinds() {
               return StepCommand{RebuildPartCommand::create(c.document, id, options), id, {}};
           }}},
         {"rig",
-         {{"part"},
+         {{"part", "parts"},
           [](const Context& c) {
-              const PartId id = c.part();
-              auto command = RigPartCommand::create(c.document, id);
+              // One part, or several rigged together as one ("parts").
+              std::vector<PartId> ids;
+              if (c.has("parts")) {
+                  if (c.has("part") || !c.step["parts"].is_array() || c.step["parts"].empty())
+                      throw Error("\"parts\" must be a non-empty list of parts, without \"part\"");
+                  for (const json& reference : c.step["parts"])
+                      ids.push_back(resolvePart(c.document, reference));
+              } else {
+                  ids.push_back(c.part());
+              }
+              const PartId id = ids.front();
+              auto command = RigPartCommand::create(c.document, ids);
               std::string detail = command->summary().toStdString();
               return StepCommand{std::move(command), id, std::move(detail)};
           }}},

@@ -1,11 +1,14 @@
-// Bad meshes (issue 17 item 2): what is safe is repaired and said, the rest
-// refused with a message naming the problem, the part given unchanged.
+// Bad meshes: what is safe is repaired and said; what is not (pieces, large
+// openings, crossing faces) is rigged on a wrapped proxy and said; only a
+// mesh nothing can be rigged from is refused. The part keeps its mesh as
+// it was given, every vertex weighted.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <limits>
 #include <memory>
 
+#include "MeshInside.h"
 #include "TestShapes.h"
 #include "autorig/AutoRig.h"
 #include "mesh/MeshChecks.h"
@@ -26,7 +29,7 @@ Part unrigged(TriMesh mesh) {
     return part;
 }
 
-bool repaired(const AutoRigResult& result, MessageId id) {
+bool said(const AutoRigResult& result, MessageId id) {
     return std::any_of(result.repairs.begin(), result.repairs.end(),
                        [&](const Message& m) { return m.id == id; });
 }
@@ -40,17 +43,35 @@ MessageId refusal(const TriMesh& mesh) {
     return MessageId::None;
 }
 
-void expectRiggedAndClosed(const AutoRigResult& result) {
-    EXPECT_TRUE(result.part.validateSolid().empty());
-    EXPECT_TRUE(analyseMesh(result.part.mesh).isWatertightGenus0());
+// The rig holds on the mesh as given: same vertices and faces, a valid
+// tree inside the surface it was computed on, every vertex's weights
+// positive and summing to 1.
+void expectRiggedAsGiven(const AutoRigResult& result, const TriMesh& given) {
+    EXPECT_EQ(result.part.mesh.vertices, given.vertices);
+    EXPECT_EQ(result.part.mesh.faces, given.faces);
+    EXPECT_TRUE(result.part.validate().empty());
     EXPECT_GE(result.part.skeleton.boneCount(), 1);
-    EXPECT_EQ(result.sourceVertex.size(), result.part.mesh.vertices.size());
+    EXPECT_TRUE(analyseMesh(result.rigSurface).isClosed());
+    for (const Joint& joint : result.part.skeleton.joints())
+        EXPECT_GT(parttest::windingNumber(result.rigSurface, joint.position), 0.5);
+    ASSERT_EQ(result.part.weights.perVertex.size(), given.vertices.size());
+    for (const auto& list : result.part.weights.perVertex) {
+        ASSERT_FALSE(list.empty());
+        double sum = 0.0;
+        for (const auto& [bone, weight] : list) {
+            EXPECT_GT(weight, 0.0);
+            sum += weight;
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-9);
+    }
 }
 
 TEST(AutoRigRepair, AClosedRodIsRiggedWithoutRepairsAlongItsLength) {
-    const AutoRigResult result = autoRigPart(unrigged(rod()));
-    expectRiggedAndClosed(result);
+    const TriMesh mesh = rod();
+    const AutoRigResult result = autoRigPart(unrigged(mesh));
+    expectRiggedAsGiven(result, mesh);
     EXPECT_TRUE(result.repairs.empty());
+    EXPECT_EQ(result.surfaceKind, RigSurface::Kind::Input);
     const Skeleton& skeleton = result.part.skeleton;
     double low = std::numeric_limits<double>::infinity(), high = -low;
     for (const Joint& joint : skeleton.joints()) {
@@ -61,22 +82,33 @@ TEST(AutoRigRepair, AClosedRodIsRiggedWithoutRepairsAlongItsLength) {
     EXPECT_GT(high - low, 1.2);  // reaches well along the 2-unit rod
 }
 
-TEST(AutoRigRepair, SplitSeamsAreJoinedAndSaid) {
+TEST(AutoRigRepair, SplitSeamsAreJoinedAndSaidAndCopiesShareWeights) {
     // Every face with its own three corners, as a careless exporter writes.
     const TriMesh closed = rod();
     TriMesh soup;
+    std::vector<int> original;
     for (const auto& face : closed.faces) {
         const int first = soup.vertexCount();
-        for (int corner : face)
+        for (int corner : face) {
             soup.vertices.push_back(closed.vertices[corner]);
+            original.push_back(corner);
+        }
         soup.faces.push_back({first, first + 1, first + 2});
     }
     const AutoRigResult result = autoRigPart(unrigged(soup));
-    expectRiggedAndClosed(result);
-    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairWelded));
-    EXPECT_EQ(result.part.mesh.vertexCount(), closed.vertexCount());
-    for (int v = 0; v < result.part.mesh.vertexCount(); ++v)
-        EXPECT_EQ(result.part.mesh.vertices[v], soup.vertices[result.sourceVertex[v]]);
+    expectRiggedAsGiven(result, soup);
+    EXPECT_EQ(result.surfaceKind, RigSurface::Kind::Repaired);
+    EXPECT_TRUE(said(result, MessageId::AutoRigRepairWelded));
+    EXPECT_EQ(result.rigSurface.vertexCount(), closed.vertexCount());
+    // Copies of one vertex move together: a seam does not open when posed.
+    std::vector<int> firstCopy(closed.vertices.size(), -1);
+    for (int v = 0; v < soup.vertexCount(); ++v) {
+        int& first = firstCopy[original[v]];
+        if (first < 0)
+            first = v;
+        else
+            EXPECT_EQ(result.part.weights.perVertex[v], result.part.weights.perVertex[first]);
+    }
 }
 
 TEST(AutoRigRepair, InwardFacesAreTurnedOutward) {
@@ -84,25 +116,25 @@ TEST(AutoRigRepair, InwardFacesAreTurnedOutward) {
     for (auto& face : mesh.faces)
         std::swap(face[1], face[2]);
     const AutoRigResult result = autoRigPart(unrigged(mesh));
-    expectRiggedAndClosed(result);
-    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairFlipped));
-    EXPECT_GT(analyseMesh(result.part.mesh).volume, 0.0);
+    expectRiggedAsGiven(result, mesh);
+    EXPECT_TRUE(said(result, MessageId::AutoRigRepairFlipped));
+    EXPECT_GT(analyseMesh(result.rigSurface).volume, 0.0);
 }
 
-TEST(AutoRigRepair, FacesWithoutAreaAndDuplicatesAndUnusedVerticesGo) {
+TEST(AutoRigRepair, FacesWithoutAreaAndDuplicatesAndUnusedVerticesAreLeftOutOfTheRig) {
     TriMesh mesh = rod();
     mesh.faces.push_back({0, 0, 1});
     mesh.faces.push_back(mesh.faces.front());
     mesh.vertices.push_back(Vec3(5, 5, 5));
     const AutoRigResult result = autoRigPart(unrigged(mesh));
-    expectRiggedAndClosed(result);
-    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairDegenerate));
-    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairDuplicateFaces));
-    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairUnusedVertices));
-    EXPECT_EQ(result.part.mesh.vertexCount(), rod().vertexCount());
+    expectRiggedAsGiven(result, mesh);
+    EXPECT_TRUE(said(result, MessageId::AutoRigRepairDegenerate));
+    EXPECT_TRUE(said(result, MessageId::AutoRigRepairDuplicateFaces));
+    EXPECT_TRUE(said(result, MessageId::AutoRigRepairUnusedVertices));
+    EXPECT_EQ(result.rigSurface.vertexCount(), rod().vertexCount());
 }
 
-TEST(AutoRigRepair, ASmallHoleIsFilledWithNewVerticesMarkedAsSuch) {
+TEST(AutoRigRepair, ASmallHoleIsFilledInTheRigSurfaceOnly) {
     TriMesh mesh = rod();
     // Drop the faces around one vertex in the middle of the side.
     const int centre = 12 * 24 + 5;
@@ -111,18 +143,13 @@ TEST(AutoRigRepair, ASmallHoleIsFilledWithNewVerticesMarkedAsSuch) {
     });
     ASSERT_FALSE(analyseMesh(mesh).isClosed());
     const AutoRigResult result = autoRigPart(unrigged(mesh));
-    expectRiggedAndClosed(result);
-    EXPECT_TRUE(repaired(result, MessageId::AutoRigRepairHoles));
-    // The hole's centre vertex is unused and dropped; any vertex the fill
-    // adds says it has no source.
-    for (int v = 0; v < result.part.mesh.vertexCount(); ++v) {
-        if (result.sourceVertex[v] >= 0) {
-            EXPECT_EQ(result.part.mesh.vertices[v], mesh.vertices[result.sourceVertex[v]]);
-        }
-    }
+    expectRiggedAsGiven(result, mesh);
+    EXPECT_EQ(result.surfaceKind, RigSurface::Kind::Repaired);
+    EXPECT_TRUE(said(result, MessageId::AutoRigRepairHoles));
+    EXPECT_TRUE(analyseMesh(result.rigSurface).isWatertightGenus0());
 }
 
-TEST(AutoRigRepair, ALargeOpeningIsRefusedByName) {
+TEST(AutoRigRepair, ALargeOpeningIsRiggedOnAProxyAndSaidByName) {
     TriMesh mesh = rod();
     // Remove the whole cap at one end: a missing piece of the shape.
     const int capCentre = mesh.vertexCount() - 1;
@@ -130,31 +157,34 @@ TEST(AutoRigRepair, ALargeOpeningIsRefusedByName) {
         return f[0] == capCentre || f[1] == capCentre || f[2] == capCentre;
     });
     ASSERT_FALSE(analyseMesh(mesh).isClosed());
-    try {
-        autoRigPart(unrigged(mesh));
-        FAIL() << "an open rod was rigged";
-    } catch (const Error& error) {
-        EXPECT_EQ(error.message().id, MessageId::AutoRigOpenBorder);
-        EXPECT_NE(std::string(error.what()).find("24 edges"), std::string::npos) << error.what();
-    }
+    const AutoRigResult result = autoRigPart(unrigged(mesh));
+    expectRiggedAsGiven(result, mesh);
+    EXPECT_EQ(result.surfaceKind, RigSurface::Kind::Proxy);
+    ASSERT_TRUE(said(result, MessageId::AutoRigOpenBorder));
+    const auto open =
+        std::find_if(result.repairs.begin(), result.repairs.end(),
+                     [](const Message& m) { return m.id == MessageId::AutoRigOpenBorder; });
+    EXPECT_EQ(open->args, (std::vector<std::string>{"1", "24"}));
+    EXPECT_TRUE(said(result, MessageId::AutoRigProxyWrapped));
 }
 
-TEST(AutoRigRepair, SeveralPiecesAreRefused) {
+TEST(AutoRigRepair, SeveralPiecesAreRiggedTogetherOnAProxy) {
     TriMesh mesh = rod();
     TriMesh other = rod();
     for (Vec3& v : other.vertices)
         v.x() += 2.0;
     testshapes::append(mesh, other);
-    try {
-        autoRigPart(unrigged(mesh));
-        FAIL() << "two rods were rigged as one";
-    } catch (const Error& error) {
-        EXPECT_EQ(error.message().id, MessageId::AutoRigSeveralPieces);
-        EXPECT_NE(std::string(error.what()).find("2 separate pieces"), std::string::npos);
-    }
+    const AutoRigResult result = autoRigPart(unrigged(mesh));
+    expectRiggedAsGiven(result, mesh);
+    EXPECT_EQ(result.surfaceKind, RigSurface::Kind::Proxy);
+    const auto pieces =
+        std::find_if(result.repairs.begin(), result.repairs.end(),
+                     [](const Message& m) { return m.id == MessageId::AutoRigSeveralPieces; });
+    ASSERT_NE(pieces, result.repairs.end());
+    EXPECT_NE(englishText(*pieces).find("2 separate pieces"), std::string::npos);
 }
 
-TEST(AutoRigRepair, PiecesTouchingAtAVertexAreSplitThenRefusedAsPieces) {
+TEST(AutoRigRepair, PiecesTouchingAtAVertexAreRiggedOnAProxy) {
     // Two tetrahedra sharing one corner: not a manifold there.
     TriMesh mesh = testshapes::tetrahedron();
     TriMesh other = testshapes::tetrahedron(Vec3(-1, -1, -1) + Vec3::Zero());
@@ -163,28 +193,56 @@ TEST(AutoRigRepair, PiecesTouchingAtAVertexAreSplitThenRefusedAsPieces) {
     for (auto& face : other.faces)
         std::swap(face[1], face[2]);
     testshapes::append(mesh, other);
-    EXPECT_EQ(refusal(mesh), MessageId::AutoRigSeveralPieces);
+    const AutoRigResult result = autoRigPart(unrigged(mesh));
+    expectRiggedAsGiven(result, mesh);
+    EXPECT_EQ(result.surfaceKind, RigSurface::Kind::Proxy);
 }
 
-TEST(AutoRigRepair, ASelfIntersectingMeshIsRefused) {
+TEST(AutoRigRepair, ASelfIntersectingMeshIsRiggedOnAProxyAndTheCrossingsSaid) {
     TriMesh mesh = rod();
     // Push one side vertex through the rod and out of the far side.
     const int v = 12 * 24 + 5;
     mesh.vertices[v] = -mesh.vertices[v] * 2.0 + Vec3(0, 0, 2 * mesh.vertices[v].z());
-    EXPECT_EQ(refusal(mesh), MessageId::AutoRigSelfIntersecting);
+    const AutoRigResult result = autoRigPart(unrigged(mesh));
+    expectRiggedAsGiven(result, mesh);
+    EXPECT_EQ(result.surfaceKind, RigSurface::Kind::Proxy);
+    EXPECT_TRUE(said(result, MessageId::AutoRigSelfIntersecting));
 }
 
-TEST(AutoRigRepair, TooFewFacesAreRefused) {
+TEST(AutoRigRepair, ASingleTriangleIsRiggedAsASheetWithVolume) {
     TriMesh mesh;
     mesh.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
     mesh.faces = {{0, 1, 2}};
+    const AutoRigResult result = autoRigPart(unrigged(mesh));
+    expectRiggedAsGiven(result, mesh);
+    EXPECT_EQ(result.surfaceKind, RigSurface::Kind::Proxy);
+}
+
+TEST(AutoRigRepair, OnlyFacesWithoutThreeCornersAreRefused) {
+    TriMesh mesh;
+    mesh.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    mesh.faces = {{0, 0, 1}, {2, 2, 2}};
     EXPECT_EQ(refusal(mesh), MessageId::AutoRigTooFewFaces);
 }
 
-TEST(AutoRigRepair, CorruptPositionsAreRefused) {
+TEST(AutoRigRepair, CorruptPositionsAndIndicesAreRefused) {
     TriMesh mesh = rod();
     mesh.vertices[3].x() = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_THROW(autoRigPart(unrigged(mesh)), Error);
+    EXPECT_EQ(refusal(mesh), MessageId::AutoRigNotFinite);
+    TriMesh outOfRange = rod();
+    outOfRange.faces[7][1] = outOfRange.vertexCount();
+    EXPECT_EQ(refusal(outOfRange), MessageId::AutoRigFaceOutOfRange);
+}
+
+TEST(AutoRigRepair, AMeshOverTheMemoryBudgetIsRefused) {
+    AutoRigOptions options;
+    options.surface.memoryBudgetBytes = 1024.0;
+    try {
+        autoRigPart(unrigged(rod()), options);
+        FAIL() << "a mesh over the budget was rigged";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.message().id, MessageId::AutoRigOverMemoryBudget);
+    }
 }
 
 TEST(AutoRigRepair, AMeshWithAHandleGetsATree) {

@@ -47,10 +47,10 @@ TEST_P(AutoRigSketch, DominantBoneIsTheClosestVisibleBoneForAtLeast95Percent) {
 TEST_P(AutoRigSketch, AGoodMeshIsRiggedVertexForVertex) {
     const auto& sketch = importedSketch(GetParam());
     EXPECT_TRUE(sketch.rigged.repairs.empty());
+    EXPECT_EQ(sketch.rigged.surfaceKind, RigSurface::Kind::Input);
     ASSERT_EQ(sketch.rigged.part.mesh.vertexCount(), sketch.imported.mesh.vertexCount());
     EXPECT_EQ(sketch.rigged.part.mesh.faces, sketch.imported.mesh.faces);
     for (int v = 0; v < sketch.imported.mesh.vertexCount(); ++v) {
-        EXPECT_EQ(sketch.rigged.sourceVertex[v], v);
         EXPECT_EQ(sketch.rigged.part.mesh.vertices[v], sketch.imported.mesh.vertices[v]);
     }
 }

@@ -1,0 +1,129 @@
+// Characters other tools made (Debian's assimp-testmodels, installed by
+// scripts/setup.sh): many pieces, open borders, crossing faces, faces that
+// repeat a corner. Each is rigged, not refused: all its meshes as one
+// figure, on a wrapped proxy where it needs one, keeping every original
+// vertex with weights summing to 1. The expected leaf count is the limbs a
+// person counts on the character (written beside each).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <map>
+#include <string>
+
+#include "AutoRigTestSupport.h"
+#include "autorig/AxisChain.h"
+
+namespace rigmesh {
+namespace {
+
+const std::string kModels = "/usr/share/assimp/models/";
+
+struct Character {
+    std::string file;
+    int leaves;  // limbs a person counts
+};
+
+void PrintTo(const Character& character, std::ostream* out) {
+    *out << character.file;
+}
+
+struct RiggedCharacter {
+    Part imported;  // every mesh of the file, in world space, one after another
+    AutoRigResult rigged;
+};
+
+const RiggedCharacter& rigged(const std::string& file) {
+    static std::map<std::string, RiggedCharacter> cache;
+    auto found = cache.find(file);
+    if (found == cache.end()) {
+        RiggedCharacter character;
+        character.imported.name = "figure";
+        for (const ImportedPart& part : importScene(kModels + file).parts) {
+            const int offset = character.imported.mesh.vertexCount();
+            for (const Vec3& v : part.part.mesh.vertices)
+                character.imported.mesh.vertices.push_back(v);
+            for (const auto& [a, b, c] : part.part.mesh.faces)
+                character.imported.mesh.faces.push_back({a + offset, b + offset, c + offset});
+        }
+        character.rigged = autoRigPart(character.imported);
+        found = cache.emplace(file, std::move(character)).first;
+    }
+    return found->second;
+}
+
+double diagonalOf(const TriMesh& mesh) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : mesh.vertices)
+        box.extend(v);
+    return box.diagonal().norm();
+}
+
+class AutoRigCharacter : public ::testing::TestWithParam<Character> {};
+
+TEST_P(AutoRigCharacter, IsRiggedKeepingEveryVertexAndSaysWhatItWorkedAround) {
+    const RiggedCharacter& character = rigged(GetParam().file);
+    EXPECT_EQ(character.rigged.part.mesh.vertices, character.imported.mesh.vertices);
+    EXPECT_EQ(character.rigged.part.mesh.faces, character.imported.mesh.faces);
+    EXPECT_TRUE(character.rigged.part.validate().empty());
+    EXPECT_FALSE(character.rigged.repairs.empty());
+}
+
+TEST_P(AutoRigCharacter, SkeletonIsATreeInsideTheProxy) {
+    const AutoRigResult& result = rigged(GetParam().file).rigged;
+    const Skeleton& skeleton = result.part.skeleton;
+    EXPECT_TRUE(skeleton.validate().empty());
+    EXPECT_TRUE(skeleton.isOrientedFromRoot());
+    int outside = 0;
+    for (const BoneSegment& bone : result.part.boneSegments())
+        for (int i = 0; i <= 8; ++i)
+            outside += parttest::windingNumber(
+                           result.rigSurface, bone.head + (bone.tail - bone.head) * (i / 8.0)) < 0.5
+                           ? 1
+                           : 0;
+    EXPECT_EQ(outside, 0);
+}
+
+TEST_P(AutoRigCharacter, EveryVertexIsWithin15PercentOfTheDiagonalFromABone) {
+    const RiggedCharacter& character = rigged(GetParam().file);
+    const double diagonal = diagonalOf(character.imported.mesh);
+    EXPECT_LE(farthestFromBones(character.imported.mesh, character.rigged.part.skeleton),
+              0.15 * diagonal);
+}
+
+TEST_P(AutoRigCharacter, LeafCountIsTheLimbsAPersonCounts) {
+    EXPECT_EQ(autorigtest::leafCount(rigged(GetParam().file).rigged.part.skeleton),
+              GetParam().leaves);
+}
+
+TEST_P(AutoRigCharacter, EveryOriginalVertexHasPositiveWeightsSummingToOne) {
+    const RiggedCharacter& character = rigged(GetParam().file);
+    const auto& weights = character.rigged.part.weights.perVertex;
+    ASSERT_EQ(weights.size(), character.imported.mesh.vertices.size());
+    for (const auto& list : weights) {
+        ASSERT_FALSE(list.empty());
+        double sum = 0.0;
+        for (const auto& [bone, weight] : list) {
+            EXPECT_GT(weight, 0.0);
+            sum += weight;
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-9);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
+                         ::testing::Values(
+                             // arms, legs, head and four wings
+                             Character{"MD2/faerie.md2", 9},
+                             // arms, legs, head
+                             Character{"MD2/sydney.md2", 5},
+                             // a bull: four legs, tail, head
+                             Character{"OBJ/WusonOBJ.obj", 6},
+                             // arms, legs, head; the axe goes with the hand
+                             Character{"COB/dwarf.cob", 5},
+                             // arms, legs, head
+                             Character{"BLEND/HUMAN.blend", 5},
+                             // eight legs, the head's and the abdomen's ends
+                             Character{"OBJ/spider.obj", 10}));
+
+}  // namespace
+}  // namespace rigmesh

@@ -1,0 +1,115 @@
+// Rigging on a wrapped proxy (autorig/RigSurface, ProxyWrap, WeightTransfer):
+// the proxy is closed around any soup, small floating pieces follow one
+// bone, a blob gets one chain along its main axis, a mesh too large to flow
+// directly is rigged on a proxy, and every region stays near a bone.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <set>
+
+#include "AutoRigTestSupport.h"
+#include "TestShapes.h"
+#include "autorig/AutoRig.h"
+#include "autorig/AxisChain.h"
+#include "autorig/ProxyWrap.h"
+#include "mesh/MeshChecks.h"
+#include "mesh/MeshPrimitives.h"
+
+namespace rigmesh {
+namespace {
+
+Part unrigged(TriMesh mesh) {
+    Part part;
+    part.name = "Figure";
+    part.mesh = std::move(mesh);
+    return part;
+}
+
+bool said(const AutoRigResult& result, MessageId id) {
+    return std::any_of(result.repairs.begin(), result.repairs.end(),
+                       [&](const Message& m) { return m.id == id; });
+}
+
+double diagonalOf(const TriMesh& mesh) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : mesh.vertices)
+        box.extend(v);
+    return box.diagonal().norm();
+}
+
+TEST(ProxyWrap, AnOpenSheetIsWrappedIntoAClosedManifoldVolume) {
+    // A square sheet of 2 x 2 units: no volume at all.
+    TriMesh sheet;
+    const int n = 10;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j)
+            sheet.vertices.push_back(Vec3(2.0 * i / n, 2.0 * j / n, 0.0));
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const int a = i * (n + 1) + j;
+            sheet.faces.push_back({a, a + n + 1, a + 1});
+            sheet.faces.push_back({a + 1, a + n + 1, a + n + 2});
+        }
+    const ProxyWrapResult wrap = wrapIntoProxy(sheet);
+    const MeshReport report = analyseMesh(wrap.mesh, true);
+    EXPECT_TRUE(report.isClosed());
+    EXPECT_TRUE(report.isManifold());
+    EXPECT_EQ(report.components, 1);
+    EXPECT_EQ(report.selfIntersectingFacePairs, 0);
+    EXPECT_GT(report.volume, 0.0);
+    const double diagonal = diagonalOf(sheet);
+    EXPECT_GE(wrap.alpha, diagonal / 90.0 - 1e-12);
+    EXPECT_LE(wrap.alpha, diagonal / 30.0 + 1e-12);
+    EXPECT_DOUBLE_EQ(wrap.offset, wrap.alpha / 10.0);
+}
+
+TEST(AutoRigProxy, ASmallPieceBesideTheBodyFollowsOneBoneAsAWhole) {
+    // A rod with an "eye" floating beside its upper end.
+    TriMesh mesh = makeCylinderTube(24, 24, 0.3, 2.0);
+    const int body = mesh.vertexCount();
+    TriMesh eye = makeIcosphere(2, 0.08);
+    for (Vec3& v : eye.vertices)
+        v += Vec3(0.35, 0.0, 1.6);
+    testshapes::append(mesh, eye);
+    const AutoRigResult result = autoRigPart(unrigged(mesh));
+    EXPECT_EQ(result.surfaceKind, RigSurface::Kind::Proxy);
+    EXPECT_EQ(result.floatingPieces, 1);
+    EXPECT_TRUE(said(result, MessageId::AutoRigPiecesFollowBone));
+    const auto& weights = result.part.weights.perVertex;
+    std::set<BoneId> eyeBones;
+    for (int v = body; v < mesh.vertexCount(); ++v) {
+        ASSERT_EQ(weights[v].size(), 1u);
+        EXPECT_EQ(weights[v].front().second, 1.0);
+        eyeBones.insert(weights[v].front().first);
+    }
+    EXPECT_EQ(eyeBones.size(), 1u);
+}
+
+TEST(AutoRigProxy, ABlobWithoutBranchesGetsOneChainCoveringIt) {
+    // An egg: a sphere stretched along x, no limbs.
+    TriMesh egg = makeIcosphere(3, 1.0);
+    for (Vec3& v : egg.vertices)
+        v.x() *= 2.2;
+    const AutoRigResult result = autoRigPart(unrigged(egg));
+    const Skeleton& skeleton = result.part.skeleton;
+    EXPECT_EQ(autorigtest::leafCount(skeleton), 2);
+    for (const Joint& joint : skeleton.joints())
+        EXPECT_LE(skeleton.degree(joint.id), 2);
+    EXPECT_LE(farthestFromBones(egg, skeleton), 0.15 * diagonalOf(egg));
+}
+
+TEST(AutoRigProxy, AMeshOverTheDirectLimitIsRiggedOnAProxyAndSaid) {
+    const TriMesh mesh = makeCylinderTube(24, 24, 0.3, 2.0);
+    AutoRigOptions options;
+    options.surface.directVertexLimit = mesh.vertexCount() - 1;
+    const AutoRigResult result = autoRigPart(unrigged(mesh), options);
+    EXPECT_EQ(result.surfaceKind, RigSurface::Kind::Proxy);
+    EXPECT_TRUE(said(result, MessageId::AutoRigLargeMesh));
+    EXPECT_TRUE(said(result, MessageId::AutoRigProxyWrapped));
+    EXPECT_EQ(result.part.mesh.vertices, mesh.vertices);
+    EXPECT_LE(farthestFromBones(mesh, result.part.skeleton), 0.15 * diagonalOf(mesh));
+}
+
+}  // namespace
+}  // namespace rigmesh
