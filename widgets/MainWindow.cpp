@@ -95,7 +95,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
         if (auto* v = currentView())
             v->viewport()->setOnionSkin(on);
     });
-    // Long work runs off the GUI thread, one job at a time (issue 16 item 3).
+    // Long work runs off the GUI thread, one job at a time.
     jobs_ = new JobRunner(this);
     jobStatus_ = new JobStatus(this, jobs_);
     properties_->setJobRunner(jobs_);
@@ -216,7 +216,7 @@ void MainWindow::createActions() {
         if (auto* v = currentView())
             v->viewport()->setDualQuaternionSkinning(on);
     });
-    // Skin weight views (issue 14 item 1), like Blender's weight paint display.
+    // Skin weight views, like Blender's weight paint display.
     auto* weights = viewMenu_->addMenu(tr("&Weights"));
     weightViewGroup_ = new QActionGroup(this);
     const std::pair<QString, WeightView> views[] = {
@@ -339,7 +339,7 @@ void MainWindow::createDocks() {
     dock(tr("Timeline"), "timelineDock", timeline_, Qt::BottomDockWidgetArea);
 }
 
-// Transport and keying (issue 15), window-wide as in Blender: a text field
+// Transport and keying, window-wide as in Blender: a text field
 // or spin box with the focus keeps its own keys (Qt's shortcut override).
 void MainWindow::createTimelineActions() {
     auto* menu = new QMenu(tr("&Animation"), this);

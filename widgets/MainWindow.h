@@ -106,7 +106,7 @@ class MainWindow : public QMainWindow {
     void activateCutTool();
     void activatePaintTool();
     void resetPose();
-    // Tools > Auto-Rig Part on the selected part (issue 17).
+    // Tools > Auto-Rig Part on the selected part.
     void rigSelectedPart();
     void deleteSelection();
     // Edit > Preferences.

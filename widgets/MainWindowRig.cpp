@@ -1,4 +1,4 @@
-// MainWindow: Tools > Auto-Rig Part (issue 17), for an unrigged part (an
+// MainWindow: Tools > Auto-Rig Part, for an unrigged part (an
 // imported mesh): a background job with a filling progress bar and Cancel
 // that stops the skeleton's flow at its next step; the result arrives as
 // one undoable command (model/commands/RigPartCommand). After an import of

@@ -1,4 +1,4 @@
-// MainWindow: Tools > Weights (issue 14 item 3), Blender's Weights menu on
+// MainWindow: Tools > Weights, Blender's Weights menu on
 // the selected part: Normalize All, Clean, Limit Total and Smooth All, each
 // one undoable command that keeps locked bones, Recompute Weights (bone heat
 // again, as a background job), and Check Rig (the Weights panel lists what
@@ -35,7 +35,7 @@ void MainWindow::showWeightView(WeightView view) {
 }
 
 void MainWindow::createWeightMenu(QMenu* tools) {
-    // The weight views on a toolbar too (issue 14 item 1): a list beside the
+    // The weight views on a toolbar too: a list beside the
     // tools, in step with View > Weights.
     auto* bar = addToolBar(tr("Weight View"));
     bar->setObjectName(QStringLiteral("weightViewToolBar"));
@@ -120,7 +120,7 @@ void MainWindow::recomputeWeights() {
         return;
     }
     // A whole-part solve takes seconds on a large part: a background job
-    // (issue 16 item 3) on the part as it is; the command is made and
+    // on the part as it is; the command is made and
     // pushed when it is done.
     if (node.part->weightsPainted &&
         !confirmDiscardWeights(

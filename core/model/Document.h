@@ -85,7 +85,7 @@ class Document : public QObject {
     // After a successful save: sets the path and marks the undo stack clean.
     void markSaved(const QString& path);
 
-    // ---- Timeline (issue 15; DocumentTimeline.cpp) ----
+    // ---- Timeline (DocumentTimeline.cpp) ----
     const TimelineSettings& timeline() const { return contents_.timeline; }
     int currentFrame() const { return contents_.currentFrame; }
     // The current frame in seconds, at the timeline's rate.

@@ -71,7 +71,7 @@ DocumentExportResult exportParts(const std::vector<PartNode>& documentParts,
     // rigged formats get parts whose rest is that pose (their clips would be
     // relative to the old rest, so none is written).
     // Or, with poseAsKey, the rest shape stays and each part's pose is a
-    // one-key animation (issue 11 item 3).
+    // one-key animation.
     const bool rigged = isRiggedFormat(exportFormatFromPath(path));
     const bool poseKey = !options.restPose && options.poseAsKey && rigged;
     const bool bakePose = !options.restPose && !poseKey && rigged;
@@ -104,9 +104,9 @@ DocumentExportResult exportParts(const std::vector<PartNode>& documentParts,
         }
         return part;
     };
-    // Every part with its own clips (issue 18 item 3), in document order;
+    // Every part with its own clips, in document order;
     // each clip by its name (an unnamed one is "Action"), so that the clips
-    // of several parts with one name are one animation (issue 15).
+    // of several parts with one name are one animation.
     std::deque<rigmesh::Clip> named;
     std::vector<ExportPart> parts;
     for (const PartNode* node : nodes) {

@@ -1,9 +1,9 @@
 // Exports a document's parts through the engine's exporter (io/SceneExport):
 // every part at its placement and current pose, each its own skinned mesh
-// animated by its own clips (issue 18 item 3; its bones share one armature
+// animated by its own clips (its bones share one armature
 // node, SceneExport.h). Every clip with keys is written; the clips of all
 // parts with one name (clipName: "Action" when unnamed) are one animation
-// (issue 15).
+//.
 #pragma once
 
 #include <QStringList>

@@ -1,4 +1,4 @@
-// Document's timeline state (issue 15): the current frame, the frame range
+// Document's timeline state: the current frame, the frame range
 // and rate, auto-key. Apart from Document.cpp so the timeline stays one
 // concept.
 #include "model/Document.h"

@@ -59,7 +59,7 @@ struct PartNode {
     // part->skeleton). A new part has no keys at 24 frames per second.
     // This is the part's active clip: the one keyed, played and posed from.
     rigmesh::Clip clip = rigmesh::Clip();  // (Clip's default constructor is explicit)
-    // The part's other named clips ("idle", "walk"; issue 15), sorted by name;
+    // The part's other named clips ("idle", "walk"), sorted by name;
     // every clip name of the part (clipName) is unique (PartClips.h).
     std::vector<rigmesh::Clip> otherClips;
 };

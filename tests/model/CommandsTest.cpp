@@ -186,7 +186,7 @@ TEST(Commands, RebuildIsOneUndoableStep) {
     Document document;
     const PartId a = addPart(document, testStrokes()[0]);
     const auto original = document.part(a).part;
-    // A new part records the edge length it was built with (issue 12 item 5).
+    // A new part records the edge length it was built with.
     const BuildOptions created = document.part(a).options;
     EXPECT_GT(created.targetEdgeLength, 0.0);
     const int count = document.undoStack()->count();

@@ -70,8 +70,8 @@ TEST_F(VersionOneDocument, LoadsValidWithEveryWeightOnTheBoneAtItsStoredPosition
 
 // The same steps replayed today give the same skeleton and weights keyed by
 // the same ids: the conversion put every weight where the engine puts it
-// now. Today's surface is finer on thin parts and its caps rounder (issue
-// 10; the end joints in the caps' middles move by up to a fifth of this
+// now. Today's surface is finer on thin parts and its caps rounder (the end
+// joints in the caps' middles move by up to a fifth of this
 // document's 0.3 edge length), so each stored vertex is compared with
 // today's nearest vertex: the same dominant bone.
 TEST_F(VersionOneDocument, EqualsTheSameRecipeReplayedToday) {

@@ -1,4 +1,4 @@
-// The document's timeline (issue 15): the current frame (shown, saved, never
+// The document's timeline: the current frame (shown, saved, never
 // an undo step), frame range and rate (a rate change keeps keys on their
 // frames), moving keys together, copy/paste/delete at the cursor as one undo
 // step each, auto-key, onion poses, and the file's version 2 with version 1

@@ -1,4 +1,4 @@
-// Long work off the GUI thread (issue 16 item 3): a rebuild at a fine edge
+// Long work off the GUI thread: a rebuild at a fine edge
 // length, an export and an import run as background jobs; the GUI thread
 // never works more than 50 ms without serving events meanwhile, the progress shows with Cancel,
 // the document changes only when the work is done (one undo step), and a

@@ -1,4 +1,4 @@
-// Edit > Preferences (issue 16 item 4): each setting takes effect at once
+// Edit > Preferences: each setting takes effect at once
 // (the language at the next start) and is kept in QSettings; the window
 // layout, the new docks included, comes back as it was left.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Tools > Auto-Rig Part in the studio (issue 17): a mesh imported without a
+// Tools > Auto-Rig Part in the studio: a mesh imported without a
 // rig is offered a rig at once; rigging runs as a background job whose bar
 // fills, Cancel leaves the mesh as it was, and the rig is one undo step.
 #include <QMessageBox>

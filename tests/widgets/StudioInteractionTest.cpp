@@ -209,7 +209,7 @@ TEST_F(Studio, WeightViewsColourTheSurfaceBySkinWeights) {
     viewport()->setWeightView(widgets::WeightView::Off);
 }
 
-// Issue 14 item 3: a brush stroke over the hand paints the selected bone's
+// A brush stroke over the hand paints the selected bone's
 // weights there only, keeps every sum at 1, is one undo step, and Esc in
 // the middle of a stroke puts the weights back.
 TEST_F(Studio, PaintingTheHandChangesItsWeightsInOneUndoStep) {

@@ -1,5 +1,5 @@
-// Merging, cutting and editing bones in the studio by mouse (issues 12 and
-// 13): a dragged leg merges into the body in one undo step, Esc puts it
+// Merging, cutting and editing bones in the studio by mouse: a
+// dragged leg merges into the body in one undo step, Esc puts it
 // back, a line cuts a part, K and Shift+K split and delete bones.
 #include <gtest/gtest.h>
 

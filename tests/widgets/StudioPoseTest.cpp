@@ -1,4 +1,4 @@
-// Posing in the studio (issue 11): a joint drag is one undo step, typed
+// Posing in the studio: a joint drag is one undo step, typed
 // rotations, FK by bone and by the rotation ring, a limb drag moving no
 // vertex outside its limb unless Alt is held, the quadruped's head moving
 // no leg.
@@ -173,7 +173,7 @@ TEST_F(Studio, DraggingABoneAnywhereTurnsItAboutItsHead) {
         << "the joint standing for the turned bone is selected";
 }
 
-// Issue 11 item 5, FK by bone at a junction: turning the biped's upper arm
+// FK by bone at a junction: turning the biped's upper arm
 // (the bone leaving the chest) moves its arm only, never the head, the
 // other arm or the body.
 TEST_F(Studio, TurningABoneLeavingAJunctionMovesNoSibling) {
@@ -263,7 +263,7 @@ TEST_F(Studio, DraggingTheRingOfTheSelectedJointTurnsIt) {
     EXPECT_NEAR(turned, qDegreesToRadians(40.0), qDegreesToRadians(4.0));
 }
 
-// Issue 11 items 2 and 5: a plain drag of a hand turns its arm's bones up to
+// A plain drag of a hand turns its arm's bones up to
 // and including the one leaving the chest, and no vertex weighted only by
 // other bones (the other arm, the head, the body, the legs) moves; with Alt
 // the chain reaches the root, so the chest turns and the other arm and the
@@ -302,7 +302,7 @@ TEST_F(Studio, DraggingAHandMovesNoVertexOutsideItsArmUnlessAltIsHeld) {
         }
 }
 
-// Issue 11 "Done when": the quadruped's head pulled with the pose tool moves
+// The quadruped's head pulled with the pose tool moves
 // the neck and head only, never a leg.
 TEST_F(Studio, DraggingTheQuadrupedsHeadMovesNoLeg) {
     const model::PartId id = addQuadruped();
@@ -336,7 +336,7 @@ TEST_F(Studio, DraggingTheQuadrupedsHeadMovesNoLeg) {
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_pose_quadruped.png"));
 }
 
-// Issue 14 item 1: the weight views colour the surface on the GPU. The
+// The weight views colour the surface on the GPU. The
 // selected joint's bone shows hot (red) where it leads and cold (blue) or
 // dark (zero) elsewhere; dominant bones show several colours.
 

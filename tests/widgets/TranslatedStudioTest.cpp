@@ -1,4 +1,4 @@
-// The studio in German and Spanish (issue 16 item 1): the translations are
+// The studio in German and Spanish: the translations are
 // compiled into the program, menus, docks and tools speak the language, and
 // a message that comes from the engine (a stroke that crosses itself)
 // reaches the status bar translated, by its id. Screenshots for

@@ -1,4 +1,4 @@
-// The studio's weight inspection and editing (issue 14): the Weights panel
+// The studio's weight inspection and editing: the Weights panel
 // lists bones and locks them (a locked bone is not painted), a click pins a
 // vertex's weights, Check Rig lists and selects what it finds, and a
 // rebuild asks before it discards painted weights.
@@ -312,7 +312,7 @@ TEST_F(WeightsStudio, RecomputeWeightsAsksThenRunsInTheBackgroundAsOneStep) {
     EXPECT_TRUE(part().weightsPainted) << "undo brings the painting back";
 }
 
-// Issue 14 item 1: the weight view is chosen per document, from the View
+// The weight view is chosen per document, from the View
 // menu or the toolbar's list, which follow the current document.
 TEST_F(WeightsStudio, EachDocumentKeepsItsOwnWeightView) {
     auto* box = window->findChild<QComboBox*>(QStringLiteral("weightViewBox"));

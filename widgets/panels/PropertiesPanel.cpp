@@ -197,7 +197,7 @@ void PropertiesPanel::rebuild() {
     options.targetEdgeLength = edgeLength_->value();
     options.smoothing = smoothing_->isChecked();
     // A rebuild recomputes the weights from the sketch: ask before painted
-    // weights go (issue 14 item 3).
+    // weights go.
     const model::PartNode* node = document_->findPart(id);
     if (node && node->part && node->part->weightsPainted &&
         !confirmDiscard(tr("%1 has hand-painted skin weights. Rebuilding recomputes them from "

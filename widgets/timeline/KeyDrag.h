@@ -1,4 +1,4 @@
-// A drag of selected keys along the timeline (issue 15): previewed live by
+// A drag of selected keys along the timeline: previewed live by
 // editing the clips in place (Document::editClip, no command), and on
 // release one undo step holding exactly the edits already applied (the
 // pattern of the Select and Pose tools: MoveKeysCommand with the applied

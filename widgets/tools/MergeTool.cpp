@@ -302,7 +302,7 @@ void MergeTool::merge(Viewport& viewport, model::PartId dragged, const Candidate
         }
     };
     // A merge of large parts takes long (the union, the local re-skin): it
-    // runs as a background job (issue 16 item 3) on copies of the two nodes,
+    // runs as a background job on copies of the two nodes,
     // and the command is made and pushed when it is done.
     const model::PartNode draggedNode = document.part(dragged);
     const model::PartNode targetNode = document.part(target);

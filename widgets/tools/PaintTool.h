@@ -1,4 +1,4 @@
-// Weight paint tool (W), issue 14 item 3, in the manner of Blender's weight
+// Weight paint tool (W), in the manner of Blender's weight
 // paint mode: drag over a part to paint the weight of the selected joint's
 // bone (the one the Selected Bone weight view shows, which the tool turns
 // on). Tool Options: Add, Subtract, Replace or Smooth, the falloff, the

@@ -178,7 +178,7 @@ void PoseTool::addOverlay(const Viewport& viewport, ColouredVertices& lines) con
 }
 
 void PoseTool::grabBone(Viewport& viewport, const BoneHit& bone, const QPointF& pixel) {
-    // FK by the bone (issue 11 item 2): it turns about its end nearer the
+    // FK by the bone: it turns about its end nearer the
     // root by its own rotation, keyed by its other end (pose/Pose.h), which
     // becomes the selection (the joint standing for the bone).
     model::Document& document = *viewport.document();

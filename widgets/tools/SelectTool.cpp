@@ -29,7 +29,7 @@ void SelectTool::press(Viewport& viewport, QMouseEvent* event) {
     }
     document.setSelection({*part, kNoJoint});
     // With a weight view on, a click also pins the vertex's weights in the
-    // Weights panel (issue 14 item 2).
+    // Weights panel.
     if (viewport.weightView() != WeightView::Off)
         if (const auto hit = viewport.surfaceAt(event->position()))
             viewport.setInspectedVertex(*hit);

@@ -1,4 +1,4 @@
-// Viewport: the weight inspection marks (issue 14 item 2), see Viewport.h.
+// Viewport: the weight inspection marks, see Viewport.h.
 #include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
 

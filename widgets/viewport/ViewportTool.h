@@ -1,7 +1,7 @@
-// A tool the viewport hands its left-button mouse events to (sketch, select,
-// pose), in the manner of Krita's tool base: press, move and release for a
-// drag (previewed live, one command pushed on release), hover for mouse
-// moves without a button, the wheel (before the camera), overlay lines drawn
+// A tool the viewport hands its left-button mouse events to (select, sketch,
+// pose, merge, cut, paint), in the manner of Krita's tool base: press, move
+// and release for a drag (previewed live, one command pushed on release),
+// hover for mouse moves without a button, the wheel (before the camera), overlay lines drawn
 // over the 3D view and an options widget. Camera navigation (middle button,
 // the wheel a tool leaves) stays with the viewport.
 #pragma once

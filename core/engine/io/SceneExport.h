@@ -1,7 +1,7 @@
 // Exporting rigged parts to glTF 2.0 (.glb, .gltf), binary FBX, COLLADA and
-// OBJ through Assimp (issue 6 item 1). Assimp stays inside the .cpp files.
+// OBJ through Assimp. Assimp stays inside the .cpp files.
 //
-// Layout (the notes' items are in /work/shared/notes/assimp-blender-facts.md):
+// Layout (the rules Assimp 5.2.5 and Blender need are in docs/EXCHANGE.md):
 // an identity root node; one node per part carrying its mesh (the part's
 // name); for rigged formats each part's bones under its own armature node
 // `<part>_armature` (in FBX holding the part's mesh node too; glTF gets one
@@ -41,7 +41,7 @@ struct ExportPart {
     // Its animation (written when it has keys and ExportOptions::animation);
     // may be null.
     const Clip* clip = nullptr;
-    // Its further clips (issue 15), each written as an animation too. Clips of
+    // Its further clips, each written as an animation too. Clips of
     // several parts with one name make one animation animating all of them.
     std::vector<const Clip*> otherClips;
 };
@@ -66,7 +66,7 @@ struct ExportOptions {
     // An end bone `<bone>_end` at each leaf bone's tail (Blender's FBX "Add
     // Leaf Bones"), so that importers know the leaves' lengths too.
     bool leafBones = false;
-    // Detail levels (issue 18 item 4, part/PartDetail.h): Loop subdivision
+    // Detail levels (part/PartDetail.h): Loop subdivision
     // rounds (0..4), then decimation to at most this many faces per part
     // (0: none). Skin weights are carried, the rig is unchanged.
     int subdivisionLevels = 0;

@@ -277,7 +277,7 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
         if (part.skeleton.hasBone(join.draggedBones.at(id)))
             part.boneNames[join.draggedBones.at(id)] = name;
     // Locks and hand-painted weights outside the re-skinned band survive
-    // (issue 14): both parts' locks on surviving bones, painted if either was.
+    //: both parts' locks on surviving bones, painted if either was.
     for (BoneId id : target.lockedBones)
         if (part.skeleton.hasBone(id))
             part.lockedBones.insert(id);

@@ -25,7 +25,7 @@ void addUnique(std::vector<BoneId>& bones, BoneId id) {
 }
 
 // A section's bone owns a vertex only between the planes through its end
-// joints normal to it (issue 19): past the plane at a joint with one other
+// joints normal to it: past the plane at a joint with one other
 // bone, that bone competes too (it is the closer one there, or ties at the
 // joint); past a branching joint's plane the vertex is left to the
 // visibility test (nullopt). Otherwise a limb bone could reach past its joint

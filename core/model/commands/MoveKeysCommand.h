@@ -1,5 +1,5 @@
 // Move several keys of a part's active clip by one time offset at once (a
-// timeline drag, issue 15). All move together, so a key moving onto the old
+// timeline drag). All move together, so a key moving onto the old
 // place of another moving key does not replace it; a key that lands within
 // half a frame of a key that stays replaces it (Clip::setKey).
 #pragma once
