@@ -48,7 +48,7 @@ const std::vector<parttest::KnownDefect> kKnownDefects = {
      "the vertices outside the bend at the root joint lie past both bones' end planes, at the "
      "same distance (to the joint) from both, so the closest visible bones tie there and the "
      "heat pulls them to 0.5 / 0.5 while the next row belongs to one bone: an edge changes by "
-     "0.88 (L1). The construction shortcut now gives the visibility test's answer there "
+     "0.88 (L1). The construction shortcut now gives the visibility test's answer there"
      "; before, it kept the section's bone and hid this (0.60), while visibility "
      "tested on every vertex gave 0.88 already"},
 };
