@@ -19,7 +19,7 @@ ExportPart exportPartOf(const PartNode& node) {
     ExportPart part;
     part.part = node.part.get();
     part.pose = node.pose;
-    part.placement = Eigen::Translation3d(node.placement.translation) * node.placement.rotation;
+    part.placement = node.placement.affine();
     part.name = node.name.toStdString();
     return part;
 }
@@ -45,10 +45,16 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
     return exportParts(document.parts(), path, options, visibleOnly);
 }
 
-DocumentExportResult exportParts(const std::vector<PartNode>& documentParts,
-                                 const std::string& path, const ExportOptions& options,
-                                 bool visibleOnly) {
-    DocumentExportResult result;
+DocumentExportResult exportParts(const std::vector<PartNode>& parts, const std::string& path,
+                                 const ExportOptions& options, bool visibleOnly) {
+    StagedDocumentExport staged = stageParts(parts, path, options, visibleOnly);
+    staged.files.commit();
+    return {staged.warnings};
+}
+
+StagedDocumentExport stageParts(const std::vector<PartNode>& documentParts, const std::string& path,
+                                const ExportOptions& options, bool visibleOnly) {
+    StagedDocumentExport result;
     std::vector<const PartNode*> nodes;
     for (const PartNode& node : documentParts)
         if (node.part && (node.visible || !visibleOnly))
@@ -133,7 +139,7 @@ DocumentExportResult exportParts(const std::vector<PartNode>& documentParts,
     }
     ExportOptions written = options;
     written.animation = options.animation || poseKey;  // the key is the pose itself
-    exportScene(parts, nullptr, path, written);
+    result.files = stageScene(parts, nullptr, path, written);
     return result;
 }
 

@@ -13,8 +13,7 @@ void Document::setCurrentFrame(int frame) {
     for (const PartNode& node : contents_.parts) {
         if (node.clip.keyCount() == 0)
             continue;
-        posePreviewOrigins_.erase(node.id);
-        applyPose(node.id, poseAtCurrentFrame(node.id));
+        setPose(node.id, poseAtCurrentFrame(node.id));
     }
     if (moved)
         emit currentFrameChanged(frame);

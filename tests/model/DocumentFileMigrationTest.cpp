@@ -24,8 +24,7 @@ class VersionOneDocument : public ::testing::Test {
   protected:
     void SetUp() override {
         const QByteArray bytes = fileBytes(kFolder + "y_branch_bone_deleted_v1.rigmesh");
-        const nlohmann::json root =
-            nlohmann::json::from_cbor(std::vector<std::uint8_t>(bytes.begin() + 3, bytes.end()));
+        const nlohmann::json root = documentJson(bytes);
         ASSERT_EQ(root.at("version"), 1);
         stored = root.at("parts").at(0).at("part");
         loaded = DocumentFile::fromBytes(bytes);
@@ -120,8 +119,7 @@ TEST_F(VersionOneDocument, EqualsTheSameRecipeReplayedToday) {
 // Saving writes the current version (bones by id), which reads back exactly.
 TEST_F(VersionOneDocument, SavesAsTheCurrentVersionAndReadsBackExactly) {
     const QByteArray saved = DocumentFile::toBytes(loaded);
-    const nlohmann::json root =
-        nlohmann::json::from_cbor(std::vector<std::uint8_t>(saved.begin() + 3, saved.end()));
+    const nlohmann::json root = documentJson(saved);
     EXPECT_EQ(root.at("version"), DocumentFile::kFormatVersion);
     EXPECT_TRUE(root.at("parts").at(0).at("part").at("weights").contains("byBoneId"));
     const DocumentContents back = DocumentFile::fromBytes(saved);

@@ -50,7 +50,7 @@ class StudioAutoRig : public test::StudioFixture {
             }
         });
         answerer.start();
-        window->importPath(path);
+        window->exchange()->importPath(path);
         test::waitForJobs();  // the import, then the offer
         test::waitWhile([&] { return !offered; }, 10000);
         answerer.stop();

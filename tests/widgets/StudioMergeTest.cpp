@@ -105,7 +105,7 @@ QPointF pixelOf(const widgets::Viewport& viewport, const Vec3& point) {
 }
 
 TEST_F(StudioMerge, ALineAcrossThePartCutsItInTwoInOneUndoStep) {
-    window->activateCutTool();
+    window->activateTool<widgets::CutTool>();
     const QByteArray before = model::DocumentFile::toBytes(*document());
     // Across the body's back half, from above it to below it.
     const QPointF top = pixelOf(*viewport(), Vec3(-1.2, 1.6, 0.0));

@@ -59,7 +59,7 @@ TEST_F(Studio, DraggingAJointChangesThePoseInOneUndoStep) {
     const QVector3D screen = viewport()->camera().project(viewport()->jointWorldPosition(id, end),
                                                           QSizeF(viewport()->size()));
     const int stepsBefore = document()->undoStack()->count();
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     std::vector<QPointF> path;
     for (int i = 0; i <= 10; ++i)
         path.emplace_back(screen.x(), screen.y() - 8.0 * i);
@@ -147,7 +147,7 @@ TEST_F(Studio, DraggingABoneAnywhereTurnsItAboutItsHead) {
         if (bone.head != skeleton.root())
             grabbed = &bone;
     ASSERT_NE(grabbed, nullptr);
-    window->activatePoseTool();  // first: the tool's options may resize the viewport
+    window->activateTool<widgets::PoseTool>();  // first: the tool's options may resize the viewport
     QTest::qWait(50);
     const QSizeF size(viewport()->size());
     const QVector3D head =
@@ -182,7 +182,7 @@ TEST_F(Studio, TurningABoneLeavingAJunctionMovesNoSibling) {
     const JointId shoulder = limbTop(skeleton, sidewaysHand(skeleton));
     const JointId chest = widgets::poseParent(skeleton, shoulder);
     ASSERT_GE(skeleton.degree(chest), 3) << "the upper arm leaves a junction";
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     QTest::qWait(50);
     const QSizeF size(viewport()->size());
     const QVector3D head =
@@ -209,7 +209,7 @@ TEST_F(Studio, TurningABoneLeavingAJunctionMovesNoSibling) {
 TEST_F(Studio, PoseToolOptionReachesThroughTheWholeBody) {
     const model::PartId id = addExampleBiped();
     const Skeleton& skeleton = document()->part(id).part->skeleton;
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     QTest::qWait(50);
     auto* wholeBody = window->findChild<QCheckBox*>(QStringLiteral("poseWholeBody"));
     ASSERT_NE(wholeBody, nullptr);
@@ -232,7 +232,7 @@ TEST_F(Studio, PoseToolOptionReachesThroughTheWholeBody) {
                                q.angularDistance(Eigen::Quaterniond::Identity()) > 1e-6);
     EXPECT_TRUE(junctionTurned);
     wholeBody->setChecked(false);
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     EXPECT_FALSE(wholeBody->isVisibleTo(window.get())) << "other tools show their own options";
 }
 
@@ -241,7 +241,7 @@ TEST_F(Studio, DraggingTheRingOfTheSelectedJointTurnsIt) {
     ASSERT_NE(id, model::kNoPart);
     const Skeleton& skeleton = document()->part(id).part->skeleton;
     const JointId joint = skeleton.root();
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     QTest::qWait(50);
     document()->setSelection({id, joint});
     const QVector3D at = viewport()->camera().project(viewport()->jointWorldPosition(id, joint),
@@ -275,7 +275,7 @@ TEST_F(Studio, DraggingAHandMovesNoVertexOutsideItsArmUnlessAltIsHeld) {
     const JointId shoulder = limbTop(skeleton, hand);
     ASSERT_NE(shoulder, hand) << "the arm has two bones";
     const std::set<BoneId> arm = bonesFrom(skeleton, shoulder);
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     QTest::qWait(50);
     const QVector3D shoulderBefore = viewport()->jointWorldPosition(id, shoulder);
     dragJointBy(id, hand, -30.0, -60.0);
@@ -313,7 +313,7 @@ TEST_F(Studio, DraggingTheQuadrupedsHeadMovesNoLeg) {
             (head == kNoJoint || joint.position.y() > skeleton.joint(head).position.y()))
             head = joint.id;
     const JointId neck = limbTop(skeleton, head);
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     QTest::qWait(50);
     dragJointBy(id, head, 40.0, -50.0);
     ASSERT_FALSE(document()->part(id).pose.rotations.empty());

@@ -24,6 +24,7 @@
 #include "dialogs/ExportDialog.h"
 #include "dialogs/PreferencesDialog.h"
 #include "preferences/Translations.h"
+#include "tools/SketchTool.h"
 
 namespace rigmesh::test {
 namespace {
@@ -73,7 +74,7 @@ TEST_P(TranslatedStudio, MenusAndDocksSpeakTheLanguage) {
 }
 
 TEST_P(TranslatedStudio, AnEngineMessageReachesTheStatusBarTranslated) {
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     // A figure eight: the engine's stroke cleaner refuses it by id
     // (MessageId::StrokeCrossesItselfNear) and the studio translates it.
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);

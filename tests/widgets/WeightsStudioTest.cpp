@@ -32,7 +32,7 @@ class WeightsStudio : public test::StudioPose {
     void paintTheArmOfTheExample() {
         const model::PartId biped = addExampleBiped();
         document()->setSelection({biped, shoulder()});
-        window->activatePaintTool();
+        window->activateTool<widgets::PaintTool>();
         QTest::qWait(20);
         drag(viewport(), armStroke());
     }
@@ -81,7 +81,7 @@ TEST_F(WeightsStudio, LockingABoneInTheWeightsPanelStopsItsPaintUntilUnlocked) {
     EXPECT_TRUE(part().lockedBones.contains(bone));
     // Painting it now changes nothing and says why.
     const QByteArray before = model::DocumentFile::toBytes(*document());
-    window->activatePaintTool();
+    window->activateTool<widgets::PaintTool>();
     QTest::qWait(20);
     drag(viewport(), armStroke());
     EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
@@ -132,7 +132,7 @@ TEST_F(WeightsStudio, MirroredStrokeStaysSymmetricAndLeavesLockedBonesAlone) {
         if (bones->item(r, 0)->data(Qt::UserRole).toUInt() == locked)
             bones->item(r, 2)->setCheckState(Qt::Checked);
     ASSERT_TRUE(part().lockedBones.contains(locked));
-    window->activatePaintTool();
+    window->activateTool<widgets::PaintTool>();
     window->findChild<QCheckBox*>(QStringLiteral("paintMirror"))->setChecked(true);
     QTest::qWait(20);
     const QByteArray before = model::DocumentFile::toBytes(*document());
@@ -161,7 +161,7 @@ TEST_F(WeightsStudio, MirroredStrokeStaysSymmetricAndLeavesLockedBonesAlone) {
 
 TEST_F(WeightsStudio, ClickingAVertexWithAWeightViewOnPinsItsWeightsInThePanel) {
     const model::PartId biped = addExampleBiped();
-    window->activateSelectTool();
+    window->activateTool<widgets::SelectTool>();
     viewport()->setWeightView(widgets::WeightView::DominantBone);
     QTest::qWait(20);
     // The middle of the forearm, in front: far from any joint marker.
@@ -191,7 +191,7 @@ TEST_F(WeightsStudio, ClickingAVertexWithAWeightViewOnPinsItsWeightsInThePanel) 
     // The paint tool's Ctrl + click samples: pinned, and the Replace weight is
     // the selected bone's weight there.
     document()->setSelection({biped, hand()});
-    window->activatePaintTool();
+    window->activateTool<widgets::PaintTool>();
     QTest::qWait(20);
     const QPointF other = armStroke()[0];
     drag(viewport(), {other}, Qt::ControlModifier);
@@ -290,7 +290,7 @@ TEST_F(WeightsStudio, RecomputeWeightsAsksThenRunsInTheBackgroundAsOneStep) {
     auto* recompute = window->findChild<QAction*>(QStringLiteral("recomputeWeights"));
     ASSERT_NE(recompute, nullptr);
     QString asked;
-    window->confirmDiscardWeights = [&](const QString& question) {
+    window->weightsController()->confirmDiscard = [&](const QString& question) {
         asked = question;
         return false;
     };
@@ -298,7 +298,7 @@ TEST_F(WeightsStudio, RecomputeWeightsAsksThenRunsInTheBackgroundAsOneStep) {
     EXPECT_TRUE(asked.contains(QStringLiteral("painted"))) << asked.toStdString();
     EXPECT_FALSE(window->jobs()->busy());
     EXPECT_EQ(document()->undoStack()->count(), steps) << "declined: nothing happens";
-    window->confirmDiscardWeights = [](const QString&) { return true; };
+    window->weightsController()->confirmDiscard = [](const QString&) { return true; };
     recompute->trigger();
     EXPECT_TRUE(window->jobs()->busy()) << "bone heat runs in the background";
     EXPECT_EQ(document()->undoStack()->count(), steps) << "nothing changes before it is done";
@@ -330,7 +330,7 @@ TEST_F(WeightsStudio, EachDocumentKeepsItsOwnWeightView) {
     QTest::qWait(20);
     EXPECT_EQ(box->currentData().toInt(), static_cast<int>(widgets::WeightView::DominantBone));
     // The paint tool turns the bone view on, and the list follows.
-    window->activatePaintTool();
+    window->activateTool<widgets::PaintTool>();
     EXPECT_EQ(box->currentData().toInt(), static_cast<int>(widgets::WeightView::SelectedBone));
 }
 

@@ -40,16 +40,14 @@ class JobRunner : public QObject {
     using Failed = std::function<void(const QString& reason)>;
     // Called on the GUI thread when the user cancelled.
     using Cancelled = std::function<void()>;
-    // Called on the GUI thread when a cancelled job's work has finished
-    // after all: removes what it made outside the document (a staged file).
-    using Discard = std::function<void()>;
 
     explicit JobRunner(QObject* parent = nullptr);
     ~JobRunner() override;
 
     // Starts a job. Returns false (and starts nothing) while another runs.
-    bool run(const QString& title, Work work, Failed failed, Cancelled cancelled = {},
-             Discard discard = {});
+    // What a cancelled job made outside the document goes with its dropped
+    // Apply (a staged export removes its files when destroyed).
+    bool run(const QString& title, Work work, Failed failed, Cancelled cancelled = {});
     // The same for work that reports progress (shown as a filling bar).
     bool runWithProgress(const QString& title, ProgressWork work, Failed failed,
                          Cancelled cancelled = {});

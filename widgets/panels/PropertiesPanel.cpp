@@ -19,9 +19,8 @@
 #include "model/Document.h"
 #include "model/ErrorText.h"
 #include "model/PartBuilder.h"
-#include "model/PoseChange.h"
 #include "model/commands/RebuildPartCommand.h"
-#include "model/commands/SetPoseCommand.h"
+#include "model/preview/PosePreview.h"
 
 namespace rigmesh::widgets {
 namespace {
@@ -173,16 +172,14 @@ void PropertiesPanel::setJointRotation() {
         Eigen::AngleAxisd(euler_[2]->value() * M_PI / 180.0, Vec3::UnitZ()) *
         Eigen::AngleAxisd(euler_[1]->value() * M_PI / 180.0, Vec3::UnitY()) *
         Eigen::AngleAxisd(euler_[0]->value() * M_PI / 180.0, Vec3::UnitX());
-    const rigmesh::Pose from = node->pose;
-    rigmesh::Pose pose = from;
+    rigmesh::Pose pose = node->pose;
     pose.setRotation(selection.joint, rotation.normalized());
     try {
-        // Each typed value is its own undo step: applied first, then pushed
-        // as already applied, which never merges with the previous one.
-        auto command = std::make_unique<model::SetPoseCommand>(*document_, selection.part, from,
-                                                               pose, selection.joint, true);
-        document_->setPose(selection.part, pose);
-        model::pushPoseChange(*document_, selection.part, command.release());
+        // Each typed value is its own undo step, which never merges with
+        // the previous one.
+        model::PosePreview preview(*document_, selection.part);
+        preview.preview(pose);
+        preview.commit(selection.joint);
     } catch (const rigmesh::Error& error) {
         emit statusMessage(tr("Not posed: %1").arg(model::errorText(error)), 8000);
         refreshPose();

@@ -7,8 +7,10 @@
 #pragma once
 
 #include <QMouseEvent>
+#include <QObject>
 #include <QString>
 #include <QWheelEvent>
+#include <optional>
 
 class QWidget;
 
@@ -17,9 +19,13 @@ namespace rigmesh::widgets {
 class Viewport;
 struct ColouredVertices;
 
-class ViewportTool {
+enum class WeightView;  // viewport/RenderScene.h
+
+class ViewportTool : public QObject {
+    Q_OBJECT
   public:
-    virtual ~ViewportTool() = default;
+    using QObject::QObject;
+    ~ViewportTool() override = default;
     virtual QString name() const = 0;
     // A one-line hint for the status bar.
     virtual QString hint() const = 0;
@@ -37,6 +43,14 @@ class ViewportTool {
     virtual void addOverlay(const Viewport&, ColouredVertices&) const {}
     // The tool's settings, shown while it is active; none by default.
     virtual QWidget* optionsWidget() { return nullptr; }
+    // The weight view the tool shows when it becomes active (the paint tool
+    // shows the weights it paints); none by default.
+    virtual std::optional<WeightView> weightView() const { return std::nullopt; }
+
+  signals:
+    // The tool's one way to the status bar: what it did, refused or needs.
+    // A timeout of 0 keeps the message until the next one.
+    void status(const QString& message, int timeoutMs = 0);
 };
 
 }  // namespace rigmesh::widgets

@@ -20,11 +20,13 @@
 // are y up; glTF is y up, metres, as are our FBX (UnitScaleFactor 100 = metres) and COLLADA files.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
 
+#include "base/StagedFile.h"
 #include "part/Part.h"
 #include "pose/Clip.h"
 #include "pose/Pose.h"
@@ -85,5 +87,38 @@ struct ExportOptions {
 // read-only target or any write failure.
 void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const std::string& path,
                  const ExportOptions& options = {});
+
+// The files of one export, complete beside their targets but not in place
+// yet (base/StagedFile.h): commit() renames them in an order that never
+// leaves a file naming a companion that is not there (a .bin before its
+// .gltf, an .mtl before its .obj), then removes the .bin the old .gltf named.
+// Destroyed uncommitted, it removes them and the targets stay as they were
+// (a background export the user cancelled after it was written).
+class StagedExport {
+  public:
+    StagedExport() = default;
+    StagedExport(StagedExport&&) noexcept = default;
+    StagedExport& operator=(StagedExport&&) noexcept = default;
+
+    // Throws Error when a rename fails; the files already renamed are then
+    // the new ones, and no file names a missing companion.
+    void commit();
+    bool empty() const { return files_.empty(); }
+
+  private:
+    friend StagedExport stageScene(const std::vector<ExportPart>&, const Clip*, const std::string&,
+                                   const ExportOptions&);
+    std::vector<StagedFile> files_;  // in commit order
+    // Removed when a later file of the set fails to commit (a new .bin whose
+    // .gltf did not land).
+    std::vector<std::filesystem::path> undoOnFailure_;
+    // Removed after every file is in place (the .bin only the old .gltf named).
+    std::vector<std::filesystem::path> obsolete_;
+};
+
+// exportScene without the final renames: everything is written and checked,
+// nothing replaced until commit(). Throws Error as exportScene does.
+StagedExport stageScene(const std::vector<ExportPart>& parts, const Clip* clip,
+                        const std::string& path, const ExportOptions& options = {});
 
 }  // namespace rigmesh

@@ -41,8 +41,8 @@ struct Part {
     // Bone names kept from an imported file: exported as
     // they are (made unique); a bone without one is `<part>_bone<id>`.
     std::map<BoneId, std::string> boneNames;
-    // Bones whose weights painting and the weight clean-ups keep as they are
-    //: an editing aid saved with the part, like Blender's
+    // Bones whose weights painting and the weight clean-ups keep as they are:
+    // an editing aid saved with the part, like Blender's
     // vertex group locks. Every id is a bone of the skeleton.
     std::set<BoneId> lockedBones;
     // True once the weights were edited by hand (paint, clean-ups): a

@@ -6,18 +6,11 @@
 #include <optional>
 #include <utility>
 
+#include "base/Stopwatch.h"
+#include "rig/BoneSegments.h"
+
 namespace rigmesh {
 namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
-
-BoneSegment segmentOf(const Skeleton& skeleton, BoneId id) {
-    const Bone& bone = skeleton.bone(id);
-    return {skeleton.joint(bone.head).position, skeleton.joint(bone.tail).position};
-}
 
 void addUnique(std::vector<BoneId>& bones, BoneId id) {
     if (std::find(bones.begin(), bones.end(), id) == bones.end())

@@ -167,8 +167,8 @@ CapPath smoothCapPath(const std::vector<Vec2>& polygon, const std::vector<int>& 
     result.indices.push_back(path.back());
     // A corner of the outline stays a corner of the spline: on the
     // silhouette a turn of 50 degrees between two points, where an
-    // obliquely ended limb was cleaned at the outline's coarse spacing
-    //. Rounded to kMinTipRadius, the tip is a dome again.
+    // obliquely ended limb was cleaned at the outline's coarse spacing.
+    // Rounded to kMinTipRadius, the tip is a dome again.
     const std::vector<Vec2> onSpline = result.points;
     CurvatureFlow flow;
     flow.neighbourhood = 2;  // the turn spreads instead of moving to the next point

@@ -18,18 +18,10 @@ class MoveKeysCommand : public ClipCommand {
     // a non-finite offset or a target time out of range.
     MoveKeysCommand(Document& document, PartId id, std::vector<double> times, double offset,
                     QUndoCommand* parent = nullptr);
-    // For a drag whose preview has already applied `applied` (the edit
-    // movedKeysEdit gave for the same keys and offset): redo() first only
-    // records.
-    MoveKeysCommand(Document& document, PartId id, std::vector<double> times, double offset,
-                    ClipEdit applied, QUndoCommand* parent = nullptr);
 
     nlohmann::json recipeStep() const override;
 
   private:
-    MoveKeysCommand(Document& document, PartId id, std::vector<double> times, double offset,
-                    ClipEdit edit, bool applied, QUndoCommand* parent);
-
     std::vector<double> times_;
     double offset_;
 };
