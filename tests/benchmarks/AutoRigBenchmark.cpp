@@ -2,11 +2,15 @@
 // vertices: the biped sketch's surface at the matching edge length, taken as
 // a bare mesh (no rig), as a file from another tool would be.
 //
-//  - whole:    autoRigPart (repair check, flow, bones, bone heat)
-//  - skeleton: extractCurveSkeleton alone (CGAL's mean curvature flow),
-//              the part measured at 0.7 s for 4.5k vertices and
-//              2.6 s for 17.7k
-//  - weights:  bone heat with visibility on every vertex, on the rig's bones
+//  - whole:    autoRigPart (rig surface, flow, bones, bone heat, weights
+//              carried to the mesh); above 6000 vertices the rig surface is
+//              a wrapped proxy (autorig/RigSurface), so the wrap is included
+//  - surface:  rigSurfaceFor alone (the check, and the wrap above 6000)
+//  - skeleton: extractCurveSkeleton alone on the whole mesh (CGAL's mean
+//              curvature flow), what rigging cost before the proxy: 0.7 s
+//              for 4.5k vertices and 2.6 s for 17.7k
+//  - weights:  bone heat with visibility on every vertex of the mesh, on
+//              the rig's bones
 //
 // Meshes are built lazily, so a --benchmark_filter run pays only for what it
 // selects. Each case reports the mesh's vertices and the rig's bones.
@@ -48,6 +52,7 @@ const Input& inputFor(int vertices) {
 void counters(benchmark::State& state, const Input& input) {
     state.counters["vertices"] = input.unrigged.mesh.vertexCount();
     state.counters["bones"] = input.rigged.part.skeleton.boneCount();
+    state.counters["rig_surface_vertices"] = input.rigged.rigSurface.vertexCount();
 }
 
 void registerBenchmarks() {
@@ -60,6 +65,16 @@ void registerBenchmarks() {
                                              benchmark::DoNotOptimize(autoRigPart(input.unrigged));
                                          counters(state, input);
                                      })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+        benchmark::RegisterBenchmark(
+            ("AutoRig/surface/" + size).c_str(),
+            [vertices](benchmark::State& state) {
+                const Input& input = inputFor(vertices);
+                for (auto _ : state)
+                    benchmark::DoNotOptimize(rigSurfaceFor(input.unrigged.mesh));
+                counters(state, input);
+            })
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
         benchmark::RegisterBenchmark(
