@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <map>
 
@@ -120,7 +121,13 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
 
     AutoRigResult result;
     result.part.name = part.name;
+    // The part keeps the mesh as given, but for faces that repeat a corner:
+    // they show nothing and a part may not have them (Part::validate).
     result.part.mesh = part.mesh;
+    const int repeating =
+        static_cast<int>(std::erase_if(result.part.mesh.faces, [](const std::array<int, 3>& f) {
+            return f[0] == f[1] || f[1] == f[2] || f[0] == f[2];
+        }));
     try {
         const CurveSkeleton curve =
             extractCurveSkeleton(surface.mainPiece, stage(progress, kSurfaceDone, kSkeletonDone));
@@ -147,6 +154,11 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     for (const auto& [bone, count] : following)
         result.floatingPieces += count;
     result.repairs = std::move(surface.notes);
+    if (repeating > 0 &&
+        std::none_of(result.repairs.begin(), result.repairs.end(),
+                     [](const Message& m) { return m.id == MessageId::AutoRigRepairDegenerate; }))
+        result.repairs.push_back(
+            {MessageId::AutoRigRepairDegenerate, {messageArgument(repeating)}});
     notePieces(following, part.name, result.repairs);
     result.rigSurface = std::move(surface.mesh);
     result.surfaceKind = surface.kind;

@@ -30,7 +30,8 @@ struct AutoRigOptions {
 };
 
 struct AutoRigResult {
-    // The input part's mesh, unchanged, with a skeleton and weights.
+    // The input part's mesh with a skeleton and weights: unchanged but for
+    // faces that repeat a corner, which are left out.
     Part part;
     // The surface the skeleton and the heat were computed on: the mesh
     // itself, its repair or the proxy (rigmesh rig --debug-proxy).

@@ -48,7 +48,11 @@ MessageId refusal(const TriMesh& mesh) {
 // positive and summing to 1.
 void expectRiggedAsGiven(const AutoRigResult& result, const TriMesh& given) {
     EXPECT_EQ(result.part.mesh.vertices, given.vertices);
-    EXPECT_EQ(result.part.mesh.faces, given.faces);
+    std::vector<std::array<int, 3>> shown = given.faces;  // faces that repeat a corner show nothing
+    std::erase_if(shown, [](const std::array<int, 3>& f) {
+        return f[0] == f[1] || f[1] == f[2] || f[0] == f[2];
+    });
+    EXPECT_EQ(result.part.mesh.faces, shown);
     EXPECT_TRUE(result.part.validate().empty());
     EXPECT_GE(result.part.skeleton.boneCount(), 1);
     EXPECT_TRUE(analyseMesh(result.rigSurface).isClosed());
