@@ -2235,16 +2235,16 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
         <translation>Ohne Rig importiert</translation>
     </message>
     <message>
-        <source>Auto-Rig gives a closed mesh a skeleton from its shape and skin weights, so it can be posed, cut, merged and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
-        <translation>Automatisches Riggen gibt einem geschlossenen Netz ein Skelett aus seiner Form und Skin-Gewichte, sodass es sich wie ein skizziertes Teil posieren, schneiden, zusammenführen und bemalen lässt. Sie können das auch später mit Werkzeuge &gt; Teil automatisch riggen tun.</translation>
-    </message>
-    <message>
         <source>Rig Now</source>
         <translation>Jetzt riggen</translation>
     </message>
     <message>
         <source>Not Now</source>
         <translation>Nicht jetzt</translation>
+    </message>
+    <message>
+        <source>Auto-Rig gives the imported meshes one skeleton from their shape and skin weights, so the figure can be posed, animated and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
+        <translation>Automatisches Riggen gibt den importierten Netzen ein Skelett aus ihrer Form und Skin-Gewichte, sodass sich die Figur wie ein skizziertes Teil posieren, animieren und bemalen lässt. Sie können das auch später mit Werkzeuge &gt; Teil automatisch riggen tun.</translation>
     </message>
 </context>
 <context>

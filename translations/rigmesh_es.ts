@@ -2235,16 +2235,16 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
         <translation>Importado sin rig</translation>
     </message>
     <message>
-        <source>Auto-Rig gives a closed mesh a skeleton from its shape and skin weights, so it can be posed, cut, merged and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
-        <translation>El rig automático da a una malla cerrada un esqueleto a partir de su forma y pesos de piel, para que se pueda posar, cortar, fusionar y pintar como una pieza dibujada. También puedes hacerlo más tarde con Herramientas &gt; Rig automático de la pieza.</translation>
-    </message>
-    <message>
         <source>Rig Now</source>
         <translation>Riggear ahora</translation>
     </message>
     <message>
         <source>Not Now</source>
         <translation>Ahora no</translation>
+    </message>
+    <message>
+        <source>Auto-Rig gives the imported meshes one skeleton from their shape and skin weights, so the figure can be posed, animated and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
+        <translation>El rig automático da a las mallas importadas un esqueleto a partir de su forma y pesos de piel, para que la figura se pueda posar, animar y pintar como una pieza dibujada. También puedes hacerlo más tarde con Herramientas &gt; Rig automático de la pieza.</translation>
     </message>
 </context>
 <context>
