@@ -17,6 +17,7 @@
 #include "io/AssimpJoinVertices.h"
 #include "io/AssimpSceneBuilder.h"
 #include "io/BoneTipHints.h"
+#include "io/ColladaSkinsAndClips.h"
 #include "io/ExportFormat.h"
 #include "io/FbxSentinels.h"
 #include "io/FiniteScene.h"
@@ -226,7 +227,8 @@ StagedExport stageScene(const std::vector<ExportPart>& parts, const Clip* clip,
             staged.files_.emplace_back(target, files.main);
             break;
         case ExportFormat::Collada:
-            staged.files_.emplace_back(target, withColladaBoneTips(files.main, rigs));
+            staged.files_.emplace_back(
+                target, withColladaSkinRootsAndClips(withColladaBoneTips(files.main, rigs)));
             break;
         case ExportFormat::Obj:
             break;  // staged above
