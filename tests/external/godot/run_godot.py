@@ -57,6 +57,15 @@ def godot_command(godot, project, *arguments):
     return ["xvfb-run", "-a", godot, "--audio-driver", "Dummy", "--path", project, *arguments]
 
 
+def hermetic_environment(work):
+    """The editor's settings and caches in WORK, not in the user's home."""
+    env = dict(os.environ)
+    for name in ("XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME"):
+        env[name] = os.path.join(work, "home", name.lower())
+        os.makedirs(env[name], exist_ok=True)
+    return env
+
+
 def can_run(godot, work):
     """None if Godot runs a script here, else why not."""
     if shutil.which("xvfb-run") is None:
@@ -71,7 +80,7 @@ def can_run(godot, work):
         f.write("extends SceneTree\nfunc _initialize():\n\tprint(\"godot runs\")\n\tquit()\n")
     try:
         run = subprocess.run(godot_command(godot, probe, "-s", "quit.gd"), capture_output=True,
-                             text=True, timeout=60)
+                             text=True, timeout=60, env=hermetic_environment(work))
     except subprocess.TimeoutExpired:
         return "Godot did not finish a one-line script within 60 s"
     if "godot runs" not in run.stdout:
@@ -104,7 +113,8 @@ def import_folder(godot, project, log):
     seconds and is then ended."""
     for attempt in range(2):
         editor = subprocess.Popen(godot_command(godot, project, "--editor", "--quit"),
-                                  stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+                                  stdout=log, stderr=subprocess.STDOUT, start_new_session=True,
+                                  env=hermetic_environment(os.path.dirname(project)))
         started = time.monotonic()
         done_at = None
         while editor.poll() is None:
@@ -298,7 +308,8 @@ def main(argv):
     report_path = os.path.join(work, "report.json")
     with open(request_path, "w") as f:
         json.dump(request, f)
-    env = dict(os.environ, RIGMESH_GODOT_REQUEST=request_path, RIGMESH_GODOT_REPORT=report_path)
+    env = dict(hermetic_environment(work), RIGMESH_GODOT_REQUEST=request_path,
+               RIGMESH_GODOT_REPORT=report_path)
     with open(os.path.join(work, "report.log"), "w") as log:
         subprocess.run(godot_command(godot, project, "-s", "report_scenes.gd"), env=env,
                        stdout=log, stderr=subprocess.STDOUT, timeout=600)
