@@ -25,8 +25,9 @@ Per case and format it checks, and prints one line per check:
     default of four influences).
 
 Known defect, reported and not failed: Godot 3.2.3 imports FBX through its
-Assimp module, which gives a bone its parent only when the parent's name
-sorts before the bone's own (measured: the biped's bone0 under bone3 loses
+Assimp module, which gives a bone its parent only when the parent was added
+to the Skeleton before it, and adds our bones in name order
+(docs/EXCHANGE.md rule 15; measured: the biped's bone0 under bone3 loses
 its parent). Where an FBX skeleton shows exactly that and nothing else
 wrong, the pose check of that file is skipped with a note; it runs again as
 soon as the hierarchy comes in right.
