@@ -18,8 +18,8 @@ namespace rigmesh {
 
 // The glTF JSON with one glTF animation per `animations` entry, named as it
 // is: per channel, LINEAR samplers for translation, rotation and scale
-// keyed at the channel's times (in seconds: mTicksPerSecond is 1, notes
-// item 4) on the node of the channel's name. Their accessors (float
+// keyed at the channel's times (in seconds: mTicksPerSecond is 1,
+// docs/EXCHANGE.md rule 4) on the node of the channel's name. Their accessors (float
 // SCALAR input with min and max, VEC3 / VEC4 outputs) go at the end of
 // `bin`, 4-byte aligned. Throws Error on JSON that is not glTF or a channel
 // whose node the JSON does not have.

@@ -13,8 +13,8 @@
 // ids the studio, documents and recipes use (Skeleton.h), which skip
 // numbers once bones are deleted, so the two differ.
 // Vertices and weights are in the part's mesh order, which every mesh file
-// of one `rigmesh build` shares (OBJ, OFF, PLY, glTF, FBX, COLLADA; issue
-// 19), so a reader can pair them by index and check the pairing by position.
+// of one `rigmesh build` shares (OBJ, OFF, PLY, glTF, FBX, COLLADA), so a reader can pair them by
+// index and check the pairing by position.
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// Set the timeline's frame range and rate (issue 15). A new rate keeps every
+// Set the timeline's frame range and rate. A new rate keeps every
 // key of every clip on its frame, as Blender does: on the frame of the
 // clip's own rate, so the key times in seconds scale by the clip's rate /
 // new rate (a clip imported at 30 fps into a 24 fps timeline keeps its key
