@@ -549,6 +549,130 @@
         <source>filled %1 small holes with %2 new vertices</source>
         <translation>%1 kleine Löcher mit %2 neuen Vertices gefüllt</translation>
     </message>
+    <message>
+        <source>The surface would intersect itself (%1 crossing face pairs) near (%2, %3): the outline is too thin or turns too sharply there. Widen it there or use a smaller edge length.</source>
+        <translation>Die Oberfläche würde sich selbst schneiden (%1 sich kreuzende Flächenpaare) bei (%2, %3): der Umriss ist dort zu dünn oder knickt zu scharf. Verbreitern Sie ihn dort oder verwenden Sie eine kleinere Kantenlänge.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot be rebuilt: it was not drawn as one sketch (it comes from a merge, a cut, a bone edit or an import), so there is no stroke to build it from.</source>
+        <translation>„%1“ lässt sich nicht neu aufbauen: es wurde nicht als eine Skizze gezeichnet (es entstand durch Zusammenführen, Schneiden, Knochenbearbeitung oder Import) und hat keinen Strich.</translation>
+    </message>
+    <message>
+        <source>The target part cannot be merged: %1 Merging needs closed, consistently oriented surfaces.</source>
+        <translation>Das Zielteil lässt sich nicht zusammenführen: %1 Zusammenführen braucht geschlossene, einheitlich orientierte Oberflächen.</translation>
+    </message>
+    <message>
+        <source>The dragged part cannot be merged: %1 Merging needs closed, consistently oriented surfaces.</source>
+        <translation>Das gezogene Teil lässt sich nicht zusammenführen: %1 Zusammenführen braucht geschlossene, einheitlich orientierte Oberflächen.</translation>
+    </message>
+    <message>
+        <source>The target part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
+        <translation>Die Oberfläche des Zielteils schneidet sich selbst (%1 sich kreuzende Flächenpaare), daher lassen sich die Teile nicht zusammenführen. Bauen Sie es zuerst mit größerer Kantenlänge oder Glättung neu.</translation>
+    </message>
+    <message>
+        <source>The dragged part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
+        <translation>Die Oberfläche des gezogenen Teils schneidet sich selbst (%1 sich kreuzende Flächenpaare), daher lassen sich die Teile nicht zusammenführen. Bauen Sie es zuerst mit größerer Kantenlänge oder Glättung neu.</translation>
+    </message>
+    <message>
+        <source>The joints to connect are %1 apart, less than the shortest bone allowed (%2); snap them instead.</source>
+        <translation>Die zu verbindenden Gelenke liegen %1 auseinander, weniger als der kürzeste erlaubte Knochen (%2); fügen Sie sie stattdessen zusammen.</translation>
+    </message>
+    <message>
+        <source>The part cannot be cut: %1 Cutting needs a closed, consistently oriented surface.</source>
+        <translation>Das Teil lässt sich nicht schneiden: %1 Schneiden braucht eine geschlossene, einheitlich orientierte Oberfläche.</translation>
+    </message>
+    <message>
+        <source>The cut would leave a piece without a bone: its only one would be %1 long, shorter than the shortest bone allowed (%2). Cut farther from the joint.</source>
+        <translation>Der Schnitt ließe ein Stück ohne Knochen zurück: sein einziger wäre %1 lang, kürzer als der kürzeste erlaubte Knochen (%2). Schneiden Sie weiter vom Gelenk entfernt.</translation>
+    </message>
+    <message>
+        <source>Splitting there would leave a bone %1 long, shorter than the shortest bone allowed (%2); split nearer the bone&apos;s middle.</source>
+        <translation>Eine Teilung dort ließe einen Knochen von %1 Länge zurück, kürzer als der kürzeste erlaubte Knochen (%2); teilen Sie näher an der Mitte des Knochens.</translation>
+    </message>
+    <message>
+        <source>Deleting the bone would leave bone %1 only %2 long, shorter than the shortest bone allowed (%3); delete a neighbouring bone instead.</source>
+        <translation>Das Löschen des Knochens ließe Knochen %1 nur %2 lang zurück, kürzer als der kürzeste erlaubte Knochen (%3); löschen Sie stattdessen einen benachbarten Knochen.</translation>
+    </message>
+    <message>
+        <source>A key time must be a finite number of seconds.</source>
+        <translation>Die Zeit eines Schlüsselbilds muss eine endliche Anzahl von Sekunden sein.</translation>
+    </message>
+    <message>
+        <source>A key at %1 s is out of range: keys lie at 0 s or later.</source>
+        <translation>Ein Schlüsselbild bei %1 s liegt außerhalb des Bereichs: Schlüsselbilder liegen bei 0 s oder später.</translation>
+    </message>
+    <message>
+        <source>A key at %1 s is out of range: keys lie from 0 s to %2 s.</source>
+        <translation>Ein Schlüsselbild bei %1 s liegt außerhalb des Bereichs: Schlüsselbilder liegen zwischen 0 s und %2 s.</translation>
+    </message>
+    <message>
+        <source>A clip&apos;s frame rate must be a positive number of frames per second.</source>
+        <translation>Die Bildrate eines Clips muss eine positive Anzahl Bilder pro Sekunde sein.</translation>
+    </message>
+    <message>
+        <source>The part has no bone %1 to lock.</source>
+        <translation>Das Teil hat keinen Knochen %1 zum Sperren.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: there is no such file.</source>
+        <translation>„%1“ kann nicht importiert werden: die Datei existiert nicht.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it is not a file.</source>
+        <translation>„%1“ kann nicht importiert werden: es ist keine Datei.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the program that reads imports (rigmesh) is not installed.</source>
+        <translation>„%1“ kann nicht importiert werden: das Programm, das Importe liest (rigmesh), ist nicht installiert.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the import reader could not be started (%2).</source>
+        <translation>„%1“ kann nicht importiert werden: das Importprogramm konnte nicht gestartet werden (%2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: reading it took longer than %2 s, so it was stopped (the file is probably broken).</source>
+        <translation>„%1“ kann nicht importiert werden: das Lesen dauerte länger als %2 s und wurde abgebrochen (die Datei ist wahrscheinlich beschädigt).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer crashed on it (%2); the file is probably broken.</source>
+        <translation>„%1“ kann nicht importiert werden: das Importprogramm ist daran abgestürzt (%2); die Datei ist wahrscheinlich beschädigt.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: reading it needed more than %2 of memory, so it was stopped.</source>
+        <translation>„%1“ kann nicht importiert werden: das Lesen brauchte mehr als %2 Speicher und wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer failed (exit status %2).</source>
+        <translation>„%1“ kann nicht importiert werden: das Importprogramm ist gescheitert (Exit-Status %2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer returned bad data (%2).</source>
+        <translation>„%1“ kann nicht importiert werden: das Importprogramm lieferte fehlerhafte Daten (%2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: its part &quot;%2&quot; is not usable: %3</source>
+        <translation>„%1“ kann nicht importiert werden: sein Teil „%2“ ist nicht verwendbar: %3</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: %2</source>
+        <translation>„%1“ kann nicht importiert werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it is damaged or not in a format the importer knows.</source>
+        <translation>„%1“ kann nicht importiert werden: die Datei ist beschädigt oder in einem Format, das das Importprogramm nicht kennt.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the file is incomplete.</source>
+        <translation>„%1“ kann nicht importiert werden: die Datei ist unvollständig.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it holds no triangle mesh.</source>
+        <translation>„%1“ kann nicht importiert werden: sie enthält kein Dreiecksnetz.</translation>
+    </message>
+    <message>
+        <source>The mesh is too small for a bone: its only bone would be %1 long, shorter than the shortest bone allowed (%2).</source>
+        <translation>Das Netz ist zu klein für einen Knochen: sein einziger Knochen wäre %1 lang, kürzer als der kürzeste erlaubte Knochen (%2).</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>
@@ -862,21 +986,6 @@
     <message>
         <source>Cannot open &quot;%1&quot;: %2</source>
         <translation>„%1“ kann nicht geöffnet werden: %2</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::ImportReader</name>
-    <message>
-        <source>cannot import %1: no such file</source>
-        <translation>%1 kann nicht importiert werden: die Datei existiert nicht</translation>
-    </message>
-    <message>
-        <source>cannot import %1: not a file</source>
-        <translation>%1 kann nicht importiert werden: keine Datei</translation>
-    </message>
-    <message>
-        <source>cannot import %1: the program that reads imports (rigmesh) is not installed</source>
-        <translation>%1 kann nicht importiert werden: das Programm, das Importe liest (rigmesh), ist nicht installiert</translation>
     </message>
 </context>
 <context>

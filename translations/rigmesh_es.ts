@@ -549,6 +549,130 @@
         <source>filled %1 small holes with %2 new vertices</source>
         <translation>se rellenaron %1 agujeros pequeños con %2 vértices nuevos</translation>
     </message>
+    <message>
+        <source>The surface would intersect itself (%1 crossing face pairs) near (%2, %3): the outline is too thin or turns too sharply there. Widen it there or use a smaller edge length.</source>
+        <translation>La superficie se intersecaría a sí misma (%1 pares de caras que se cruzan) cerca de (%2, %3): el contorno es demasiado fino o gira demasiado bruscamente ahí. Ensánchelo ahí o use una longitud de arista menor.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot be rebuilt: it was not drawn as one sketch (it comes from a merge, a cut, a bone edit or an import), so there is no stroke to build it from.</source>
+        <translation>«%1» no se puede reconstruir: no se dibujó como un solo boceto (procede de una fusión, un corte, una edición de huesos o una importación), así que no hay trazo desde el que construirla.</translation>
+    </message>
+    <message>
+        <source>The target part cannot be merged: %1 Merging needs closed, consistently oriented surfaces.</source>
+        <translation>La pieza de destino no se puede fusionar: %1 La fusión necesita superficies cerradas y orientadas de forma coherente.</translation>
+    </message>
+    <message>
+        <source>The dragged part cannot be merged: %1 Merging needs closed, consistently oriented surfaces.</source>
+        <translation>La pieza arrastrada no se puede fusionar: %1 La fusión necesita superficies cerradas y orientadas de forma coherente.</translation>
+    </message>
+    <message>
+        <source>The target part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
+        <translation>La superficie de la pieza de destino se interseca a sí misma (%1 pares de caras que se cruzan), así que las piezas no se pueden fusionar. Reconstrúyala antes con una longitud de arista mayor o con suavizado.</translation>
+    </message>
+    <message>
+        <source>The dragged part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
+        <translation>La superficie de la pieza arrastrada se interseca a sí misma (%1 pares de caras que se cruzan), así que las piezas no se pueden fusionar. Reconstrúyala antes con una longitud de arista mayor o con suavizado.</translation>
+    </message>
+    <message>
+        <source>The joints to connect are %1 apart, less than the shortest bone allowed (%2); snap them instead.</source>
+        <translation>Las articulaciones que se van a conectar están a %1 de distancia, menos que el hueso más corto permitido (%2); únalas en su lugar.</translation>
+    </message>
+    <message>
+        <source>The part cannot be cut: %1 Cutting needs a closed, consistently oriented surface.</source>
+        <translation>La pieza no se puede cortar: %1 El corte necesita una superficie cerrada y orientada de forma coherente.</translation>
+    </message>
+    <message>
+        <source>The cut would leave a piece without a bone: its only one would be %1 long, shorter than the shortest bone allowed (%2). Cut farther from the joint.</source>
+        <translation>El corte dejaría un trozo sin hueso: el único mediría %1, menos que el hueso más corto permitido (%2). Corte más lejos de la articulación.</translation>
+    </message>
+    <message>
+        <source>Splitting there would leave a bone %1 long, shorter than the shortest bone allowed (%2); split nearer the bone&apos;s middle.</source>
+        <translation>Dividir ahí dejaría un hueso de %1, menos que el hueso más corto permitido (%2); divida más cerca del centro del hueso.</translation>
+    </message>
+    <message>
+        <source>Deleting the bone would leave bone %1 only %2 long, shorter than the shortest bone allowed (%3); delete a neighbouring bone instead.</source>
+        <translation>Eliminar el hueso dejaría el hueso %1 con solo %2 de longitud, menos que el hueso más corto permitido (%3); elimine en su lugar un hueso vecino.</translation>
+    </message>
+    <message>
+        <source>A key time must be a finite number of seconds.</source>
+        <translation>El tiempo de una clave debe ser un número finito de segundos.</translation>
+    </message>
+    <message>
+        <source>A key at %1 s is out of range: keys lie at 0 s or later.</source>
+        <translation>Una clave en %1 s está fuera de rango: las claves están en 0 s o después.</translation>
+    </message>
+    <message>
+        <source>A key at %1 s is out of range: keys lie from 0 s to %2 s.</source>
+        <translation>Una clave en %1 s está fuera de rango: las claves están entre 0 s y %2 s.</translation>
+    </message>
+    <message>
+        <source>A clip&apos;s frame rate must be a positive number of frames per second.</source>
+        <translation>La velocidad de fotogramas de un clip debe ser un número positivo de fotogramas por segundo.</translation>
+    </message>
+    <message>
+        <source>The part has no bone %1 to lock.</source>
+        <translation>La pieza no tiene el hueso %1 para bloquear.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: there is no such file.</source>
+        <translation>No se puede importar «%1»: no existe ese archivo.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it is not a file.</source>
+        <translation>No se puede importar «%1»: no es un archivo.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the program that reads imports (rigmesh) is not installed.</source>
+        <translation>No se puede importar «%1»: el programa que lee las importaciones (rigmesh) no está instalado.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the import reader could not be started (%2).</source>
+        <translation>No se puede importar «%1»: no se pudo iniciar el lector de importaciones (%2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: reading it took longer than %2 s, so it was stopped (the file is probably broken).</source>
+        <translation>No se puede importar «%1»: leerlo tardó más de %2 s, así que se detuvo (probablemente el archivo está dañado).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer crashed on it (%2); the file is probably broken.</source>
+        <translation>No se puede importar «%1»: el importador falló con él (%2); probablemente el archivo está dañado.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: reading it needed more than %2 of memory, so it was stopped.</source>
+        <translation>No se puede importar «%1»: leerlo necesitaba más de %2 de memoria, así que se detuvo.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer failed (exit status %2).</source>
+        <translation>No se puede importar «%1»: el importador falló (estado de salida %2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer returned bad data (%2).</source>
+        <translation>No se puede importar «%1»: el importador devolvió datos erróneos (%2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: its part &quot;%2&quot; is not usable: %3</source>
+        <translation>No se puede importar «%1»: su pieza «%2» no se puede usar: %3</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: %2</source>
+        <translation>No se puede importar «%1»: %2</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it is damaged or not in a format the importer knows.</source>
+        <translation>No se puede importar «%1»: está dañado o en un formato que el importador no conoce.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the file is incomplete.</source>
+        <translation>No se puede importar «%1»: el archivo está incompleto.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it holds no triangle mesh.</source>
+        <translation>No se puede importar «%1»: no contiene ninguna malla de triángulos.</translation>
+    </message>
+    <message>
+        <source>The mesh is too small for a bone: its only bone would be %1 long, shorter than the shortest bone allowed (%2).</source>
+        <translation>La malla es demasiado pequeña para un hueso: su único hueso mediría %1, menos que el hueso más corto permitido (%2).</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>
@@ -862,21 +986,6 @@
     <message>
         <source>Cannot open &quot;%1&quot;: %2</source>
         <translation>No se puede abrir «%1»: %2</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::ImportReader</name>
-    <message>
-        <source>cannot import %1: no such file</source>
-        <translation>no se puede importar %1: el archivo no existe</translation>
-    </message>
-    <message>
-        <source>cannot import %1: not a file</source>
-        <translation>no se puede importar %1: no es un archivo</translation>
-    </message>
-    <message>
-        <source>cannot import %1: the program that reads imports (rigmesh) is not installed</source>
-        <translation>no se puede importar %1: el programa que lee las importaciones (rigmesh) no está instalado</translation>
     </message>
 </context>
 <context>

@@ -16,6 +16,7 @@
 #include "mesh/MeshAdjacency.h"
 #include "part/BoneAnnotations.h"
 #include "part/BoneWeights.h"
+#include "rig/ShortBones.h"
 #include "surface/PatchLattice.h"
 
 namespace rigmesh {
@@ -62,34 +63,79 @@ std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const Cut
 }
 
 // The skeleton with every bone that crosses the plane split at the crossing.
-// `tailHalf` maps a split bone to its new half beyond the crossing.
-Skeleton splitCrossingBones(const Skeleton& skeleton, const CutSurface& surface,
-                            std::map<BoneId, BoneId>& tailHalf) {
-    Skeleton split = skeleton;
+// `tailHalf` maps a split bone to its new half beyond the crossing. A
+// crossing within `minimum` of one of the bone's joints snaps to that joint
+// (rig/ShortBones.h): the bone is not split, the joint goes into `onCut`
+// (both pieces keep it), and `snapped` keeps, per side of the plane, the
+// shortest bone a split would have left there.
+struct SplitSkeleton {
+    Skeleton skeleton;
+    std::map<BoneId, BoneId> tailHalf;
+    std::set<JointId> onCut;
+    std::map<int, double> snapped;  // side (-1, 1) -> shortest bone not made
+};
+
+int sideOf(double d) {
+    return d < 0.0 ? -1 : 1;
+}
+
+SplitSkeleton splitCrossingBones(const Skeleton& skeleton, const CutSurface& surface,
+                                 double minimum) {
+    SplitSkeleton out{skeleton, {}, {}, {}};
+    auto snap = [&](JointId joint, double length) {
+        out.onCut.insert(joint);
+        const int side = sideOf(surface.side(skeleton.joint(joint).position));
+        auto [at, inserted] = out.snapped.emplace(side, length);
+        if (!inserted)
+            at->second = std::min(at->second, length);
+    };
     for (const Bone& bone : skeleton.bones()) {
         const Vec3 head = skeleton.joint(bone.head).position;
         const Vec3 tail = skeleton.joint(bone.tail).position;
         const double a = surface.side(head);
         const double b = surface.side(tail);
-        if ((a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0)) {
-            const JointId middle = split.splitBone(bone.id, surface.crossing(head, tail));
-            for (BoneId id : split.bonesAt(middle))
-                if (id != bone.id)
-                    tailHalf[bone.id] = id;
+        if (!((a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0)))
+            continue;
+        const Vec3 crossing = surface.crossing(head, tail);
+        const double toHead = (crossing - head).norm();
+        const double toTail = (crossing - tail).norm();
+        if (std::min(toHead, toTail) < minimum) {
+            if (toHead <= toTail)
+                snap(bone.head, toHead);
+            else
+                snap(bone.tail, toTail);
+            continue;
         }
+        const JointId middle = out.skeleton.splitBone(bone.id, crossing);
+        for (BoneId id : out.skeleton.bonesAt(middle))
+            if (id != bone.id)
+                out.tailHalf[bone.id] = id;
     }
-    return split;
+    return out;
 }
 
 // The joints on `side` of the plane and those on it (a split's new joints
-// belong to both pieces).
-Skeleton skeletonOnSide(const Skeleton& split, const CutSurface& surface, int side,
+// and snapped joints belong to both pieces).
+Skeleton skeletonOnSide(const SplitSkeleton& split, const CutSurface& surface, int side,
                         double tolerance) {
-    Skeleton piece = split;
-    for (const Joint& joint : split.joints()) {
+    Skeleton piece = split.skeleton;
+    for (const Joint& joint : split.skeleton.joints()) {
         const double d = surface.side(joint.position);
-        if (side * d < -tolerance)
+        if (side * d < -tolerance && !split.onCut.contains(joint.id))
             piece.removeJoint(joint.id);
+    }
+    // A snapped joint keeps only the bones into its piece's side: one
+    // towards the other side would cross the cut.
+    for (JointId joint : split.onCut) {
+        if (!piece.hasJoint(joint))
+            continue;
+        for (BoneId id : piece.bonesAt(joint)) {
+            const Bone& bone = piece.bone(id);
+            const JointId other = bone.head == joint ? bone.tail : bone.head;
+            if (!split.onCut.contains(other) &&
+                side * surface.side(piece.joint(other).position) < -tolerance)
+                piece.removeBone(id);
+        }
     }
     return piece;
 }
@@ -98,8 +144,9 @@ Skeleton skeletonOnSide(const Skeleton& split, const CutSurface& surface, int si
 // its limbs together (a star cut near its centre: the arms on one side meet
 // only at the centre joint on the other). Each stray component is joined by
 // a bone from its joint nearest to the main component, so each piece keeps
-// one tree (paper 3.1).
-void joinComponents(Skeleton& skeleton) {
+// one tree (paper 3.1); joints closer than `minimum` become one instead
+// (rig/ShortBones.h).
+void joinComponents(Skeleton& skeleton, double minimum) {
     while (true) {
         std::map<JointId, int> component;
         int count = 0;
@@ -135,7 +182,7 @@ void joinComponents(Skeleton& skeleton) {
                         best = d;
                     }
                 }
-        if (best == 0.0)
+        if (best < minimum || best == 0.0)
             skeleton.mergeJoints(from, to);
         else
             skeleton.addBone(from, to);
@@ -148,6 +195,9 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
     const auto start = std::chrono::steady_clock::now();
     if (part.skeleton.boneCount() == 0)
         throw Error(MessageId::CutNeedsRiggedPart);
+    // The split and the patches rely on a closed, oriented surface.
+    if (const std::vector<std::string> problems = part.validateSolid(); !problems.empty())
+        throw Error(MessageId::CutPartNotSolid, problems.front());
     if (request.stroke.empty() && (!(request.normal.norm() > 0.0) || !request.normal.allFinite() ||
                                    !request.point.allFinite()))
         throw Error(MessageId::CutNeedsPlane);
@@ -168,8 +218,9 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
         throw Error(MessageId::CutPiecesOnOneSide);
 
     const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(part.mesh);
-    std::map<BoneId, BoneId> tailHalf;
-    const Skeleton split = splitCrossingBones(part.skeleton, surface, tailHalf);
+    const double minimum = minimumBoneLength(part.mesh);
+    const SplitSkeleton split = splitCrossingBones(part.skeleton, surface, minimum);
+    const std::map<BoneId, BoneId>& tailHalf = split.tailHalf;
     const WeightsById& weights = part.weights.perVertex;
 
     CutResult result;
@@ -181,9 +232,16 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
             Part& out = result.pieces[k];
             out.name = part.name;
             out.skeleton = skeletonOnSide(split, surface, piece.side, 1e-9 * edge);
-            if (out.skeleton.boneCount() == 0)
+            if (out.skeleton.boneCount() == 0) {
+                // Its only bone would have been the bit of a bone beyond a
+                // snapped crossing: say how short.
+                const auto snapped = split.snapped.find(piece.side);
+                if (snapped != split.snapped.end())
+                    throw Error(MessageId::CutPieceBoneTooShort, shortNumber(snapped->second),
+                                shortNumber(minimum));
                 throw Error(MessageId::CutPieceWithoutBone);
-            joinComponents(out.skeleton);
+            }
+            joinComponents(out.skeleton, minimum);
             if (!out.skeleton.validate().empty())
                 throw Error(MessageId::CutPieceNotOneTree);
             out.skeleton.setRoot(chooseCentralRoot(out.skeleton));

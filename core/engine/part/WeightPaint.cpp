@@ -45,6 +45,9 @@ namespace {
 void checkDab(const Part& part, const WeightDab& dab) {
     if (!part.skeleton.hasBone(dab.bone))
         throw Error(MessageId::PaintNoSuchBone, dab.bone);
+    for (BoneId locked : dab.locked)
+        if (!part.skeleton.hasBone(locked))
+            throw Error(MessageId::PaintLockedNoSuchBone, locked);
     if (dab.locked.contains(dab.bone))
         throw Error(MessageId::PaintBoneLocked, dab.bone);
     if (!(dab.radius > 0.0) || !std::isfinite(dab.radius) || !(dab.strength >= 0.0) ||
