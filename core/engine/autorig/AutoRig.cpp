@@ -3,6 +3,7 @@
 #include "autorig/CurveSkeleton.h"
 #include "base/Error.h"
 #include "part/BoneWeights.h"
+#include "rig/SkeletonSymmetry.h"
 
 namespace rigmesh {
 
@@ -37,6 +38,9 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     result.part.name = part.name;
     result.part.mesh = std::move(repaired.mesh);
     result.part.skeleton = skeletonFromCurve(curve, result.part.mesh, options.bones);
+    // A mirror-symmetric mesh gets a mirror-symmetric rig: mirrored limbs
+    // get as many bones, mirrored joints (rig/SkeletonSymmetry).
+    symmetrizeSkeleton(result.part.skeleton, result.part.mesh);
     reportRigProgress(progress, kSkeletonDone);
 
     // Paper 2.4: no construction shortcut here, every vertex is tested for

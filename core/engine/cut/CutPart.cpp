@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "autorig/JointsInside.h"
 #include "base/Error.h"
 #include "base/ParallelFor.h"
 #include "base/Stopwatch.h"
@@ -14,6 +15,7 @@
 #include "geometry/ConstrainedTriangulation.h"
 #include "mesh/Fairing.h"
 #include "mesh/MeshAdjacency.h"
+#include "mesh/MeshChecks.h"
 #include "part/BoneAnnotations.h"
 #include "part/BoneWeights.h"
 #include "surface/PatchLattice.h"
@@ -61,18 +63,47 @@ std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const Cut
     return added;
 }
 
-// The skeleton with every bone that crosses the plane split at the crossing.
-// `tailHalf` maps a split bone to its new half beyond the crossing.
+// Which piece each joint of the part lies in: the piece whose closed
+// (patched) surface winds around it most (the generalized winding number).
+// A swept cut ends where the stroke was drawn, so which side of the cut
+// surface's extension a joint is on says nothing about its piece: the torso
+// beside an arm cut off is on both sides of the arm cut's extension.
+std::map<JointId, int> jointPieces(const Skeleton& skeleton, const std::array<TriMesh, 2>& meshes) {
+    std::map<JointId, int> pieceOf;
+    for (const Joint& joint : skeleton.joints())
+        pieceOf[joint.id] =
+            windingNumber(meshes[0], joint.position) >= windingNumber(meshes[1], joint.position)
+                ? 0
+                : 1;
+    return pieceOf;
+}
+
+// The skeleton with every bone whose joints lie in different pieces split
+// where it crosses the cut surface, and each joint's piece (-1: both, a new
+// joint at a crossing or a joint on the cut). `tailHalf` maps a split bone
+// to its new half on its tail's side.
 Skeleton splitCrossingBones(const Skeleton& skeleton, const CutSurface& surface,
+                            std::map<JointId, int>& pieceOf, double tolerance,
                             std::map<BoneId, BoneId>& tailHalf) {
     Skeleton split = skeleton;
     for (const Bone& bone : skeleton.bones()) {
+        if (pieceOf[bone.head] == pieceOf[bone.tail] || pieceOf[bone.head] < 0 ||
+            pieceOf[bone.tail] < 0)
+            continue;
         const Vec3 head = skeleton.joint(bone.head).position;
         const Vec3 tail = skeleton.joint(bone.tail).position;
         const double a = surface.side(head);
         const double b = surface.side(tail);
-        if ((a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0)) {
-            const JointId middle = split.splitBone(bone.id, surface.crossing(head, tail));
+        // Where the bone meets the cut; a bone whose ends read on one side
+        // (it passes the cut's end) is split at its middle.
+        const Vec3 at = (a < 0.0) != (b < 0.0) ? surface.crossing(head, tail) : 0.5 * (head + tail);
+        if ((at - head).norm() <= tolerance) {
+            pieceOf[bone.head] = -1;
+        } else if ((at - tail).norm() <= tolerance) {
+            pieceOf[bone.tail] = -1;
+        } else {
+            const JointId middle = split.splitBone(bone.id, at);
+            pieceOf[middle] = -1;
             for (BoneId id : split.bonesAt(middle))
                 if (id != bone.id)
                     tailHalf[bone.id] = id;
@@ -81,14 +112,12 @@ Skeleton splitCrossingBones(const Skeleton& skeleton, const CutSurface& surface,
     return split;
 }
 
-// The joints on `side` of the plane and those on it (a split's new joints
-// belong to both pieces).
-Skeleton skeletonOnSide(const Skeleton& split, const CutSurface& surface, int side,
-                        double tolerance) {
+// The joints of piece `k` and those shared by both pieces.
+Skeleton skeletonOfPiece(const Skeleton& split, const std::map<JointId, int>& pieceOf, int k) {
     Skeleton piece = split;
     for (const Joint& joint : split.joints()) {
-        const double d = surface.side(joint.position);
-        if (side * d < -tolerance)
+        const int owner = pieceOf.at(joint.id);
+        if (owner >= 0 && owner != k)
             piece.removeJoint(joint.id);
     }
     return piece;
@@ -168,19 +197,37 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
         throw Error(MessageId::CutPiecesOnOneSide);
 
     const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(part.mesh);
-    std::map<BoneId, BoneId> tailHalf;
-    const Skeleton split = splitCrossingBones(part.skeleton, surface, tailHalf);
     const WeightsById& weights = part.weights.perVertex;
 
     CutResult result;
-    // The two pieces are independent: one thread each (the first error is
-    // rethrown here).
+    // The holes become patches; a smooth cut fairs their interior. The two
+    // pieces are independent: one thread each (the first error is rethrown
+    // here).
+    std::array<TriMesh, 2> meshes;
+    parallelFor(2, 2, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            meshes[k] = std::move(pieces[k].mesh);
+            std::vector<int>& patch = result.patches[k];
+            for (const std::vector<int>& hole : pieces[k].holes) {
+                const std::vector<int> added = fillHole(meshes[k], hole, surface, edge);
+                patch.insert(patch.end(), added.begin(), added.end());
+            }
+            if (request.style == CutStyle::Smooth)
+                fairPositions(meshes[k], patch);
+        }
+    });
+
+    std::map<JointId, int> pieceOf = jointPieces(part.skeleton, meshes);
+    std::map<BoneId, BoneId> tailHalf;
+    const Skeleton split =
+        splitCrossingBones(part.skeleton, surface, pieceOf, 1e-9 * edge, tailHalf);
+
     parallelFor(2, 2, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             MeshPiece& piece = pieces[k];
             Part& out = result.pieces[k];
             out.name = part.name;
-            out.skeleton = skeletonOnSide(split, surface, piece.side, 1e-9 * edge);
+            out.skeleton = skeletonOfPiece(split, pieceOf, k);
             if (out.skeleton.boneCount() == 0)
                 throw Error(MessageId::CutPieceWithoutBone);
             joinComponents(out.skeleton);
@@ -188,16 +235,8 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
                 throw Error(MessageId::CutPieceNotOneTree);
             out.skeleton.setRoot(chooseCentralRoot(out.skeleton));
             out.skeleton.reorient();
-
-            // The holes become patches; a smooth cut fairs their interior.
-            out.mesh = std::move(piece.mesh);
-            std::vector<int>& patch = result.patches[k];
-            for (const std::vector<int>& hole : piece.holes) {
-                const std::vector<int> added = fillHole(out.mesh, hole, surface, edge);
-                patch.insert(patch.end(), added.begin(), added.end());
-            }
-            if (request.style == CutStyle::Smooth)
-                fairPositions(out.mesh, patch);
+            out.mesh = std::move(meshes[k]);
+            const std::vector<int>& patch = result.patches[k];
 
             // Weights: the bones this piece kept (a split bone's far half stands
             // in for it), renormalised; the patch filled by least squares.
@@ -257,6 +296,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
             const std::vector<std::string> problems = out.validateSolid();
             if (!problems.empty())
                 throw Error(MessageId::CutInvalidPiece, problems.front());
+            result.volumes[k] = analyseMesh(out.mesh, false).volume;
         }
     });
     result.milliseconds = millisecondsSince(start);
