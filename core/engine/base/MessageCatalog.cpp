@@ -351,8 +351,8 @@ const char* messageTemplate(MessageId id) {
         case MessageId::PaintMirrorAsymmetric:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
-                "This part is not mirror symmetric any more (merged or cut), so X-mirror cannot "
-                "paint it.");
+                "This part has no left-right mirror plane (its two sides differ by more than 2% "
+                "of its size), so X-mirror cannot paint it.");
         case MessageId::CleanThresholdOutOfRange:
             return RIGMESH_TRANSLATABLE("EngineMessage",
                                         "The clean threshold must be at least 0 and below 1.");

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "autorig/JointsInside.h"
 #include "base/Error.h"
 #include "base/ParallelFor.h"
 #include "base/Stopwatch.h"
@@ -14,6 +15,7 @@
 #include "geometry/ConstrainedTriangulation.h"
 #include "mesh/Fairing.h"
 #include "mesh/MeshAdjacency.h"
+#include "mesh/MeshChecks.h"
 #include "part/BoneAnnotations.h"
 #include "part/BoneWeights.h"
 #include "rig/ShortBones.h"
@@ -62,80 +64,79 @@ std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const Cut
     return added;
 }
 
-// The skeleton with every bone that crosses the plane split at the crossing.
-// `tailHalf` maps a split bone to its new half beyond the crossing. A
-// crossing within `minimum` of one of the bone's joints snaps to that joint
-// (rig/ShortBones.h): the bone is not split, the joint goes into `onCut`
-// (both pieces keep it), and `snapped` keeps, per side of the plane, the
-// shortest bone a split would have left there.
+// Which piece each joint of the part lies in: the piece whose closed
+// (patched) surface winds around it most (the generalized winding number).
+// A swept cut ends where the stroke was drawn, so which side of the cut
+// surface's extension a joint is on says nothing about its piece: the torso
+// beside an arm cut off is on both sides of the arm cut's extension.
+std::map<JointId, int> jointPieces(const Skeleton& skeleton, const std::array<TriMesh, 2>& meshes) {
+    std::map<JointId, int> pieceOf;
+    for (const Joint& joint : skeleton.joints())
+        pieceOf[joint.id] =
+            windingNumber(meshes[0], joint.position) >= windingNumber(meshes[1], joint.position)
+                ? 0
+                : 1;
+    return pieceOf;
+}
+
+// The skeleton with every bone whose joints lie in different pieces split
+// where it crosses the cut surface, and each joint's piece (-1: both, a new
+// joint at a crossing or a joint on the cut). `tailHalf` maps a split bone
+// to its new half on its tail's side. A crossing within `minimum` of one of
+// the bone's joints snaps to that joint (rig/ShortBones.h): the bone is not
+// split, the joint belongs to both pieces, and `snapped` keeps, per piece,
+// the shortest bone a split would have left there.
 struct SplitSkeleton {
     Skeleton skeleton;
     std::map<BoneId, BoneId> tailHalf;
-    std::set<JointId> onCut;
-    std::map<int, double> snapped;  // side (-1, 1) -> shortest bone not made
+    std::map<int, double> snapped;  // piece -> shortest bone not made
 };
 
-int sideOf(double d) {
-    return d < 0.0 ? -1 : 1;
-}
-
 SplitSkeleton splitCrossingBones(const Skeleton& skeleton, const CutSurface& surface,
-                                 double minimum) {
-    SplitSkeleton out{skeleton, {}, {}, {}};
+                                 std::map<JointId, int>& pieceOf, double minimum) {
+    SplitSkeleton out{skeleton, {}, {}};
     auto snap = [&](JointId joint, double length) {
-        out.onCut.insert(joint);
-        const int side = sideOf(surface.side(skeleton.joint(joint).position));
-        auto [at, inserted] = out.snapped.emplace(side, length);
+        auto [at, inserted] = out.snapped.emplace(pieceOf[joint], length);
         if (!inserted)
             at->second = std::min(at->second, length);
+        pieceOf[joint] = -1;
     };
     for (const Bone& bone : skeleton.bones()) {
+        if (pieceOf[bone.head] == pieceOf[bone.tail] || pieceOf[bone.head] < 0 ||
+            pieceOf[bone.tail] < 0)
+            continue;
         const Vec3 head = skeleton.joint(bone.head).position;
         const Vec3 tail = skeleton.joint(bone.tail).position;
         const double a = surface.side(head);
         const double b = surface.side(tail);
-        if (!((a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0)))
-            continue;
-        const Vec3 crossing = surface.crossing(head, tail);
-        const double toHead = (crossing - head).norm();
-        const double toTail = (crossing - tail).norm();
+        // Where the bone meets the cut; a bone whose ends read on one side
+        // (it passes the cut's end) is split at its middle.
+        const Vec3 at = (a < 0.0) != (b < 0.0) ? surface.crossing(head, tail) : 0.5 * (head + tail);
+        const double toHead = (at - head).norm();
+        const double toTail = (at - tail).norm();
         if (std::min(toHead, toTail) < minimum) {
             if (toHead <= toTail)
                 snap(bone.head, toHead);
             else
                 snap(bone.tail, toTail);
-            continue;
+        } else {
+            const JointId middle = out.skeleton.splitBone(bone.id, at);
+            pieceOf[middle] = -1;
+            for (BoneId id : out.skeleton.bonesAt(middle))
+                if (id != bone.id)
+                    out.tailHalf[bone.id] = id;
         }
-        const JointId middle = out.skeleton.splitBone(bone.id, crossing);
-        for (BoneId id : out.skeleton.bonesAt(middle))
-            if (id != bone.id)
-                out.tailHalf[bone.id] = id;
     }
     return out;
 }
 
-// The joints on `side` of the plane and those on it (a split's new joints
-// and snapped joints belong to both pieces).
-Skeleton skeletonOnSide(const SplitSkeleton& split, const CutSurface& surface, int side,
-                        double tolerance) {
-    Skeleton piece = split.skeleton;
-    for (const Joint& joint : split.skeleton.joints()) {
-        const double d = surface.side(joint.position);
-        if (side * d < -tolerance && !split.onCut.contains(joint.id))
+// The joints of piece `k` and those shared by both pieces.
+Skeleton skeletonOfPiece(const Skeleton& split, const std::map<JointId, int>& pieceOf, int k) {
+    Skeleton piece = split;
+    for (const Joint& joint : split.joints()) {
+        const int owner = pieceOf.at(joint.id);
+        if (owner >= 0 && owner != k)
             piece.removeJoint(joint.id);
-    }
-    // A snapped joint keeps only the bones into its piece's side: one
-    // towards the other side would cross the cut.
-    for (JointId joint : split.onCut) {
-        if (!piece.hasJoint(joint))
-            continue;
-        for (BoneId id : piece.bonesAt(joint)) {
-            const Bone& bone = piece.bone(id);
-            const JointId other = bone.head == joint ? bone.tail : bone.head;
-            if (!split.onCut.contains(other) &&
-                side * surface.side(piece.joint(other).position) < -tolerance)
-                piece.removeBone(id);
-        }
     }
     return piece;
 }
@@ -218,24 +219,41 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
         throw Error(MessageId::CutPiecesOnOneSide);
 
     const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(part.mesh);
-    const double minimum = minimumBoneLength(part.mesh);
-    const SplitSkeleton split = splitCrossingBones(part.skeleton, surface, minimum);
-    const std::map<BoneId, BoneId>& tailHalf = split.tailHalf;
     const WeightsById& weights = part.weights.perVertex;
 
     CutResult result;
-    // The two pieces are independent: one thread each (the first error is
-    // rethrown here).
+    // The holes become patches; a smooth cut fairs their interior. The two
+    // pieces are independent: one thread each (the first error is rethrown
+    // here).
+    std::array<TriMesh, 2> meshes;
+    parallelFor(2, 2, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            meshes[k] = std::move(pieces[k].mesh);
+            std::vector<int>& patch = result.patches[k];
+            for (const std::vector<int>& hole : pieces[k].holes) {
+                const std::vector<int> added = fillHole(meshes[k], hole, surface, edge);
+                patch.insert(patch.end(), added.begin(), added.end());
+            }
+            if (request.style == CutStyle::Smooth)
+                fairPositions(meshes[k], patch);
+        }
+    });
+
+    std::map<JointId, int> pieceOf = jointPieces(part.skeleton, meshes);
+    const double minimum = minimumBoneLength(part.mesh);
+    const SplitSkeleton split = splitCrossingBones(part.skeleton, surface, pieceOf, minimum);
+    const std::map<BoneId, BoneId>& tailHalf = split.tailHalf;
+
     parallelFor(2, 2, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             MeshPiece& piece = pieces[k];
             Part& out = result.pieces[k];
             out.name = part.name;
-            out.skeleton = skeletonOnSide(split, surface, piece.side, 1e-9 * edge);
+            out.skeleton = skeletonOfPiece(split.skeleton, pieceOf, k);
             if (out.skeleton.boneCount() == 0) {
                 // Its only bone would have been the bit of a bone beyond a
                 // snapped crossing: say how short.
-                const auto snapped = split.snapped.find(piece.side);
+                const auto snapped = split.snapped.find(k);
                 if (snapped != split.snapped.end())
                     throw Error(MessageId::CutPieceBoneTooShort, shortNumber(snapped->second),
                                 shortNumber(minimum));
@@ -246,16 +264,8 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
                 throw Error(MessageId::CutPieceNotOneTree);
             out.skeleton.setRoot(chooseCentralRoot(out.skeleton));
             out.skeleton.reorient();
-
-            // The holes become patches; a smooth cut fairs their interior.
-            out.mesh = std::move(piece.mesh);
-            std::vector<int>& patch = result.patches[k];
-            for (const std::vector<int>& hole : piece.holes) {
-                const std::vector<int> added = fillHole(out.mesh, hole, surface, edge);
-                patch.insert(patch.end(), added.begin(), added.end());
-            }
-            if (request.style == CutStyle::Smooth)
-                fairPositions(out.mesh, patch);
+            out.mesh = std::move(meshes[k]);
+            const std::vector<int>& patch = result.patches[k];
 
             // Weights: the bones this piece kept (a split bone's far half stands
             // in for it), renormalised; the patch filled by least squares.
@@ -315,6 +325,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
             const std::vector<std::string> problems = out.validateSolid();
             if (!problems.empty())
                 throw Error(MessageId::CutInvalidPiece, problems.front());
+            result.volumes[k] = analyseMesh(out.mesh, false).volume;
         }
     });
     result.milliseconds = millisecondsSince(start);
