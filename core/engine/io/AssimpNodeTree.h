@@ -1,5 +1,5 @@
 // An aiScene's node hierarchy flattened parent first, with rest and animated
-// global transforms (issue 6 item 2). Internal to io/: included only from
+// global transforms. Internal to io/: included only from
 // .cpp files (it includes Assimp).
 #pragma once
 

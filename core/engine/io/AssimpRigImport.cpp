@@ -217,7 +217,7 @@ std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
         const std::string name = tree.node(node).mName.C_Str();
         if (const auto end = endBones.find(node); end != endBones.end())
             return head(end->second);
-        if (const int tip = tree.find(name + "_end"); tip >= 0)  // before issue 18: a tip node
+        if (const int tip = tree.find(name + "_end"); tip >= 0)  // older exports: a tip node
             return tree.restGlobal(tip).translation();
         const Eigen::Affine3d bind = bindGlobal(*mesh.mBones[b], meshGlobal);
         if (const std::optional<Vec3> local = tailMetadata(tree.node(node)))

@@ -1,5 +1,5 @@
-// Skeleton, skin weights and clip of one imported skinned mesh (issue 6
-// item 2; the rules are in SceneImport.h). Internal to io/: included only
+// Skeleton, skin weights and clip of one imported skinned mesh (the
+// rules are in SceneImport.h). Internal to io/: included only
 // from .cpp files (it includes Assimp).
 #pragma once
 

@@ -1,5 +1,5 @@
-// Importing meshes, skeletons, skin weights and a clip through Assimp (issue
-// 6 item 2): whatever Assimp reads (.glb, .gltf, .fbx, .dae, .obj, .ply, ...).
+// Importing meshes, skeletons, skin weights and a clip through Assimp:
+// whatever Assimp reads (.glb, .gltf, .fbx, .dae, .obj, .ply, ...).
 // Assimp stays inside the .cpp files.
 //
 // Each mesh becomes a part (a mesh instanced on several nodes is taken once),
@@ -16,7 +16,7 @@
 // same place are one, within 1e-5 of the mesh's size), its tail is the head
 // of its first child bone, or of its end bone (`<bone>_end` without weights:
 // ours with leafBones, Blender's FBX "Add Leaf Bones"), or a `<bone>_end`
-// node anywhere (our exports before issue 18), or our tail hint (glTF
+// node anywhere (our older exports), or our tail hint (glTF
 // extras, FBX user property, BoneTipHints.h), or Blender's COLLADA tip
 // extra; else, as Blender guesses, along the bone node's +Y as long as its
 // parent (a tenth of the mesh's size for a lone bone). End bones are not
