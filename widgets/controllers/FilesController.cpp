@@ -205,7 +205,10 @@ void FilesController::offerRecovery() {
                 continue;
             }
         }
+        // Restored (it lives on in the open document) or discarded: the
+        // recovery file and the name beside it go.
         QFile::remove(file.path);
+        QFile::remove(model::Autosave::namePathOf(file.path));
     }
 }
 

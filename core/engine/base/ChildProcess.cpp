@@ -153,6 +153,8 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
             "cannot create a temporary file: " + std::string(std::strerror(errno));
         if (errorFd >= 0)
             close(errorFd);
+        if (resultFd >= 0)
+            close(resultFd);
         return outcome;
     }
     auto closeFiles = [&] {
