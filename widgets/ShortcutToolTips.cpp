@@ -13,7 +13,9 @@ void showShortcutsInToolTips(QWidget* window) {
             continue;
         const QString keyText = key.toString(QKeySequence::NativeText);
         const QString tip = action->toolTip();
-        if (tip.contains(keyText))
+        // A tooltip that already ends naming its key keeps its words ("Sketch
+        // Part" holds the letter S, but does not name the key).
+        if (tip.endsWith(QStringLiteral("(%1)").arg(keyText)))
             continue;
         action->setToolTip(
             QCoreApplication::translate("rigmesh::widgets::ShortcutToolTips", "%1 (%2)")

@@ -143,8 +143,12 @@ TEST_F(StudioArtist, ASelectDragOverAnotherPartShowsItInFrontAndTheMergeHint) {
     viewport()->frameAll();
     window->activateTool<widgets::SelectTool>();
     QTest::qWait(50);
+    // Grabbed on its surface between two joints (a click on a joint selects
+    // the joint and drags nothing).
     const std::vector<QPointF> path =
-        line(onScreen(Vec3(0.5, 2.3, 0.0)), onScreen(Vec3(0.5, 1.0, 0.0)));
+        line(onScreen(Vec3(0.5, 2.7, 0.0)), onScreen(Vec3(0.5, 1.4, 0.0)));
+    ASSERT_FALSE(viewport()->jointAt(path.front()).has_value());
+    ASSERT_EQ(viewport()->partAt(path.front()), std::optional<model::PartId>(limb));
     viewport()->setFocus(Qt::MouseFocusReason);
     test::sendMouse(viewport(), QEvent::MouseButtonPress, path.front(), Qt::LeftButton,
                     Qt::LeftButton);

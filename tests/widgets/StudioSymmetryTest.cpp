@@ -141,8 +141,8 @@ TEST_F(StudioSymmetry, APinnedShoulderHoldsWhileAltDragMovesTheOtherHand) {
     dragJointBy(biped, other, 60.0, -80.0, Qt::AltModifier);
     EXPECT_GT((viewport()->jointWorldPosition(biped, other) - hand).length(), 0.1f)
         << "the hand followed";
-    const Vec3 now = toEigen(viewport()->jointWorldPosition(biped, shoulder));
-    EXPECT_LT((now - toEigen(pinned)).norm(), 1e-6);
+    const Vec3 now = widgets::toEigen(viewport()->jointWorldPosition(biped, shoulder));
+    EXPECT_LT((now - widgets::toEigen(pinned)).norm(), 1e-6);
 }
 
 // Edit > Mirror Pose (Ctrl+Shift+V): the right arm raised becomes the left

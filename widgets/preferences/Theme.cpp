@@ -50,18 +50,6 @@ void applyTheme(Theme theme) {
     if (QApplication::style()->name().compare(QLatin1String("fusion"), Qt::CaseInsensitive) != 0)
         QApplication::setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
     QApplication::setPalette(themePalette(theme));
-    // Fusion draws a check box in a list or table with an outline a shade
-    // darker than the window and fills it with the base colour: on the dark
-    // palette both are near black and the box vanishes (the Skin Weights
-    // panel's Lock column). Light outlines, and a filled box when checked.
-    qApp->setStyleSheet(
-        theme == Theme::Dark
-            ? QStringLiteral("QAbstractItemView::indicator { width: 12px; height: 12px; "
-                             "border: 1px solid #9a9a9a; border-radius: 2px; "
-                             "background: #2a2a2a; } "
-                             "QAbstractItemView::indicator:checked { background: #4772b3; "
-                             "border-color: #c8d6ee; }")
-            : QString());
     // Qt hands a new application palette to existing widgets only once the
     // event loop has run (QApplication::exec); before that (start-up,
     // tests) each window takes it here, and its children from it.
@@ -86,6 +74,20 @@ QIcon tintedIcon(const QIcon& icon, const QColor& colour) {
         tinted.addPixmap(pixmap);
     }
     return tinted;
+}
+
+QString themeStyleSheet(Theme theme) {
+    // Fusion draws a check box in a list or table with an outline a shade
+    // darker than the window and fills it with the base colour: on the dark
+    // palette both are near black and the box vanishes (the Skin Weights
+    // panel's Lock column). Light outlines, and a filled box when checked.
+    return theme == Theme::Dark ? QStringLiteral(
+                                      "QAbstractItemView::indicator { width: 12px; height: 12px; "
+                                      "border: 1px solid #9a9a9a; border-radius: 2px; "
+                                      "background: #2a2a2a; } "
+                                      "QAbstractItemView::indicator:checked { background: #4772b3; "
+                                      "border-color: #c8d6ee; }")
+                                : QString();
 }
 
 QIcon themedIcon(const QString& path, Theme theme) {
