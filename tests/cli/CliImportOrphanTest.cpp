@@ -153,10 +153,10 @@ TEST_P(ImportOrphans, KillingTheParentMidImportLeavesNoChildAndNoTemporaryFile) 
 }
 
 INSTANTIATE_TEST_SUITE_P(Signals, ImportOrphans, testing::Values(SIGKILL, SIGTERM, SIGINT),
-                         [](const testing::TestParamInfo<int>& info) {
-                             return info.param == SIGKILL   ? std::string("Kill")
-                                    : info.param == SIGTERM ? std::string("Term")
-                                                            : std::string("Interrupt");
+                         [](const testing::TestParamInfo<int>& signal) {
+                             return signal.param == SIGKILL   ? std::string("Kill")
+                                    : signal.param == SIGTERM ? std::string("Term")
+                                                              : std::string("Interrupt");
                          });
 
 }  // namespace

@@ -330,9 +330,9 @@ TEST(TimelineFile, KeysOfOlderFilesBeforeZeroMoveToStartAtZero) {
     // Older versions let keys go below 0 s (a key at -1 s, keys moved by
     // -0.25 s); such a clip moves as a whole, as an import's does.
     Keyed k;  // keys at 0, 0.5 and 1 s
-    json root = rootOf(bytesOf(k.document));
+    json root = documentJson(bytesOf(k.document));
     root["parts"][0]["clip"]["keys"][0]["time"] = -1.0;
-    const DocumentContents loaded = DocumentFile::fromBytes(bytesFrom(root));
+    const DocumentContents loaded = DocumentFile::fromBytes(documentBytes(root));
     ASSERT_EQ(loaded.parts.size(), 1u);
     EXPECT_EQ(loaded.parts[0].clip.keyTimes(), (std::vector<double>{0.0, 1.5, 2.0}));
     // Clips that start at 0 s or later keep their times exactly.

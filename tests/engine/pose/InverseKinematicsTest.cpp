@@ -143,8 +143,9 @@ TEST_P(InverseKinematicsOnParts, PinsInOtherBranchesHoldUnderWholeBodyReach) {
         }
         ++checked;
     }
-    if (GetParam() != "tube")
+    if (GetParam() != "tube") {
         EXPECT_GT(checked, 0);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedSketches, InverseKinematicsOnParts,
