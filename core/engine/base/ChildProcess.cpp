@@ -190,8 +190,12 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
             dup2(nullFd, STDOUT_FILENO);
         }
         dup2(errorFd, STDERR_FILENO);
+        // Descriptor 3 is the result file or nothing: not whatever the
+        // parent happened to inherit there (ctest's own, a shell's).
         if (resultFd >= 0)
             dup2(resultFd, 3);
+        else
+            close(3);
         const rlimit noCore{0, 0};
         setrlimit(RLIMIT_CORE, &noCore);
         if (limitAddressSpace) {

@@ -84,19 +84,22 @@ std::map<JointId, int> jointPieces(const Skeleton& skeleton, const std::array<Tr
 // joint at a crossing or a joint on the cut). `tailHalf` maps a split bone
 // to its new half on its tail's side. A crossing within `minimum` of one of
 // the bone's joints snaps to that joint (rig/ShortBones.h): the bone is not
-// split, the joint belongs to both pieces, and `snapped` keeps, per piece,
-// the shortest bone a split would have left there.
+// split, the joint belongs to both pieces, and `snapped` keeps, per side of
+// the cut surface at the joint (a piece's MeshPiece::side), the shortest
+// bone a split would have left there: a tip joint may lie outside both
+// patched pieces, so its piece cannot tell.
 struct SplitSkeleton {
     Skeleton skeleton;
     std::map<BoneId, BoneId> tailHalf;
-    std::map<int, double> snapped;  // piece -> shortest bone not made
+    std::map<int, double> snapped;  // side (-1, 1) -> shortest bone not made
 };
 
 SplitSkeleton splitCrossingBones(const Skeleton& skeleton, const CutSurface& surface,
                                  std::map<JointId, int>& pieceOf, double minimum) {
     SplitSkeleton out{skeleton, {}, {}};
     auto snap = [&](JointId joint, double length) {
-        auto [at, inserted] = out.snapped.emplace(pieceOf[joint], length);
+        const int side = surface.side(skeleton.joint(joint).position) < 0.0 ? -1 : 1;
+        auto [at, inserted] = out.snapped.emplace(side, length);
         if (!inserted)
             at->second = std::min(at->second, length);
         pieceOf[joint] = -1;
@@ -253,7 +256,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
             if (out.skeleton.boneCount() == 0) {
                 // Its only bone would have been the bit of a bone beyond a
                 // snapped crossing: say how short.
-                const auto snapped = split.snapped.find(k);
+                const auto snapped = split.snapped.find(piece.side);
                 if (snapped != split.snapped.end())
                     throw Error(MessageId::CutPieceBoneTooShort, shortNumber(snapped->second),
                                 shortNumber(minimum));
