@@ -68,14 +68,20 @@ std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const Cut
 // (patched) surface winds around it most (the generalized winding number).
 // A swept cut ends where the stroke was drawn, so which side of the cut
 // surface's extension a joint is on says nothing about its piece: the torso
-// beside an arm cut off is on both sides of the arm cut's extension.
-std::map<JointId, int> jointPieces(const Skeleton& skeleton, const std::array<TriMesh, 2>& meshes) {
+// beside an arm cut off is on both sides of the arm cut's extension. A
+// joint neither piece winds around (a tip joint on or just outside the
+// surface) goes by its side of the cut; `pieces` are sorted by side.
+std::map<JointId, int> jointPieces(const Skeleton& skeleton, const std::array<TriMesh, 2>& meshes,
+                                   const CutSurface& surface) {
     std::map<JointId, int> pieceOf;
-    for (const Joint& joint : skeleton.joints())
-        pieceOf[joint.id] =
-            windingNumber(meshes[0], joint.position) >= windingNumber(meshes[1], joint.position)
-                ? 0
-                : 1;
+    for (const Joint& joint : skeleton.joints()) {
+        const double w0 = windingNumber(meshes[0], joint.position);
+        const double w1 = windingNumber(meshes[1], joint.position);
+        if (std::max(w0, w1) < 0.5)
+            pieceOf[joint.id] = surface.side(joint.position) < 0.0 ? 0 : 1;
+        else
+            pieceOf[joint.id] = w0 >= w1 ? 0 : 1;
+    }
     return pieceOf;
 }
 
@@ -242,7 +248,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
         }
     });
 
-    std::map<JointId, int> pieceOf = jointPieces(part.skeleton, meshes);
+    std::map<JointId, int> pieceOf = jointPieces(part.skeleton, meshes, surface);
     const double minimum = minimumBoneLength(part.mesh);
     const SplitSkeleton split = splitCrossingBones(part.skeleton, surface, pieceOf, minimum);
     const std::map<BoneId, BoneId>& tailHalf = split.tailHalf;
