@@ -69,15 +69,17 @@ std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const Cut
 // A swept cut ends where the stroke was drawn, so which side of the cut
 // surface's extension a joint is on says nothing about its piece: the torso
 // beside an arm cut off is on both sides of the arm cut's extension. A
-// joint neither piece winds around (a tip joint on or just outside the
-// surface) goes by its side of the cut; `pieces` are sorted by side.
+// joint that neither piece or both pieces wind around (a tip joint just
+// outside the surface; a joint on the cut's patch, which both patched
+// pieces may claim) goes by its side of the cut; `pieces` are sorted by
+// side.
 std::map<JointId, int> jointPieces(const Skeleton& skeleton, const std::array<TriMesh, 2>& meshes,
                                    const CutSurface& surface) {
     std::map<JointId, int> pieceOf;
     for (const Joint& joint : skeleton.joints()) {
         const double w0 = windingNumber(meshes[0], joint.position);
         const double w1 = windingNumber(meshes[1], joint.position);
-        if (std::max(w0, w1) < 0.5)
+        if ((w0 >= 0.5) == (w1 >= 0.5))
             pieceOf[joint.id] = surface.side(joint.position) < 0.0 ? 0 : 1;
         else
             pieceOf[joint.id] = w0 >= w1 ? 0 : 1;
