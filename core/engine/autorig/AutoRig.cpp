@@ -11,6 +11,8 @@
 #include "autorig/WeightTransfer.h"
 #include "base/Error.h"
 #include "part/BoneWeights.h"
+#include "rig/ShortBones.h"
+#include "rig/SkeletonSymmetry.h"
 
 namespace rigmesh {
 
@@ -138,6 +140,18 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
             throw;
         result.part.skeleton = mainAxisChain(surface.mainPiece);
     }
+    // A mirror-symmetric mesh gets a mirror-symmetric rig: mirrored limbs
+    // get as many bones, mirrored joints (rig/SkeletonSymmetry). The skeleton
+    // lives in the rig surface's main piece, so that is the mesh mirrored.
+    symmetrizeSkeleton(result.part.skeleton, surface.mainPiece);
+    // No bone shorter than the shortest an edit may make (rig/ShortBones.h):
+    // such a bone joins its neighbour; a mesh with only such a bone is refused.
+    const double minimum = minimumBoneLength(surface.mainPiece);
+    collapseShortBones(result.part.skeleton, minimum);
+    if (const auto shortest = shortestBone(result.part.skeleton);
+        shortest && shortest->length < minimum)
+        throw Error(MessageId::AutoRigBoneTooShort, shortNumber(shortest->length),
+                    shortNumber(minimum));
     reportRigProgress(progress, kSkeletonDone);
 
     // Paper 2.4: no construction shortcut here, every vertex is tested for

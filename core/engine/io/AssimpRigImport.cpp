@@ -316,6 +316,9 @@ std::optional<Clip> importClip(const aiAnimation& animation, const aiMesh& mesh,
     }
     Clip clip(fps);
     clip.interpolation = Interpolation::Linear;
+    // Keys lie at 0 s or later (Clip.h): a clip that starts before 0 s is
+    // moved as a whole to start there.
+    const double start = std::min(0.0, *ticks.begin());
 
     const Skeleton& skeleton = part.skeleton;
     std::map<std::string, unsigned> aiBoneByName;
@@ -353,7 +356,7 @@ std::optional<Clip> importClip(const aiAnimation& animation, const aiMesh& mesh,
                 pose.setRotation(bone.tail, (up.conjugate() * rotation).normalized());
             }
         }
-        clip.setKey(t / perSecond, pose);
+        clip.setKey((t - start) / perSecond, pose);
     }
     return clip;
 }

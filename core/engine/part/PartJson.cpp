@@ -100,6 +100,7 @@ json partToJson(const Part& part) {
         out["lockedBones"] = part.lockedBones;
     if (part.weightsPainted)
         out["weightsPainted"] = true;
+    out["surfaceFromFile"] = part.surfaceFromFile;
     return out;
 }
 
@@ -292,6 +293,11 @@ Part partFromJson(const json& object) {
         }
     if (object.contains("weightsPainted"))  // optional: older files lack it
         part->weightsPainted = boolean(field(object, "weightsPainted"), "weightsPainted");
+    // Parts written before it was stored: only a sketch's surface (it keeps
+    // its outline) is known to have been made here.
+    part->surfaceFromFile = object.contains("surfaceFromFile")
+                                ? boolean(field(object, "surfaceFromFile"), "surfaceFromFile")
+                                : part->outline.empty();
     return stored;
 }
 

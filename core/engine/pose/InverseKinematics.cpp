@@ -198,15 +198,17 @@ IkResult dragJoint(const PoseHierarchy& h, const Pose& pose, JointId joint, cons
         return result;
     }
 
-    // Walk up to the base: the root, the nearest pinned joint or, with limb
-    // reach, the nearest junction. The base stays in place; the bones below
-    // it turn, each about its head, and carry only their own subtrees, so
-    // the base's other branches never move.
+    // Walk up to the base: the root, the nearest joint with a pin at or below
+    // it or, with limb reach, the nearest junction. The base stays in place;
+    // the bones below it turn, each about its head, and carry only their own
+    // subtrees, so the base's other branches never move. A bone above a
+    // joint with a pin in its subtree would carry the pin along, so the chain
+    // never reaches past one: pins hold in world space at any reach.
     std::vector<int> joints{dragged};
     for (int current = dragged; h.parent(current) >= 0;) {
         current = h.parent(current);
         joints.push_back(current);
-        if (isPinned[current] || (options.stopAtJunctions && h.children(current).size() > 1))
+        if (pinsBelow[current] > 0 || (options.stopAtJunctions && h.children(current).size() > 1))
             break;
     }
     std::reverse(joints.begin(), joints.end());
