@@ -7,6 +7,7 @@
 #include <map>
 
 #include "autorig/AxisChain.h"
+#include "autorig/BonesInside.h"
 #include "autorig/CurveSkeleton.h"
 #include "autorig/WeightTransfer.h"
 #include "base/Error.h"
@@ -152,6 +153,11 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
         shortest && shortest->length < minimum)
         throw Error(MessageId::AutoRigBoneTooShort, shortNumber(shortest->length),
                     shortNumber(minimum));
+    // Straight bones of a thin, bent limb cut its corners, and mirroring can
+    // move a thin limb's joint out of it: back to the middle of the limb
+    // (autorig/BonesInside).
+    keepBonesInside(result.part.skeleton, surface.mainPiece, minimum);
+    result.part.skeleton.reorient();
     reportRigProgress(progress, kSkeletonDone);
 
     // Paper 2.4: no construction shortcut here, every vertex is tested for

@@ -1,0 +1,138 @@
+#include "autorig/SurfaceProbe.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "autorig/JointsInside.h"
+#include "mesh/CgalSurfaceMesh.h"
+
+namespace rigmesh {
+
+namespace {
+
+using cgal::Kernel;
+using cgal::Point;
+
+// Directions tried in the cross-section's plane from a point outside.
+constexpr int kDirections = 16;
+// A hit this many times the ray's start offset away is a wall; nearer, the
+// ray only left a face it started on (at an edge or a corner) and goes on.
+constexpr double kNearHit = 100.0;
+
+Point point(const Vec3& v) {
+    return {v.x(), v.y(), v.z()};
+}
+
+}  // namespace
+
+struct SurfaceProbe::Tree {
+    using Triangle = Kernel::Triangle_3;
+    using Iterator = std::vector<Triangle>::const_iterator;
+    using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
+    using Aabb = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+    std::vector<Triangle> triangles;
+    Aabb aabb;
+    double epsilon = 0.0;
+
+    // The first wall along the ray from `start` (none: the ray leaves).
+    std::optional<Vec3> firstWall(const Vec3& start, const Vec3& direction) const {
+        Vec3 from = start + epsilon * direction;
+        for (int attempt = 0; attempt < 4; ++attempt) {
+            const auto hit = aabb.first_intersection(Kernel::Ray_3(
+                point(from), Kernel::Vector_3(direction.x(), direction.y(), direction.z())));
+            if (!hit)
+                return std::nullopt;
+            const Point* wall = boost::get<Point>(&hit->first);
+            if (!wall)
+                return std::nullopt;
+            const Vec3 found = cgal::toVec(*wall);
+            if ((found - start).norm() > kNearHit * epsilon)
+                return found;
+            from = found + kNearHit * epsilon * direction;
+        }
+        return std::nullopt;
+    }
+};
+
+SurfaceProbe::SurfaceProbe(const TriMesh& surface) : mesh_(surface), tree_(new Tree) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : surface.vertices)
+        box.extend(v);
+    tree_->epsilon = 1e-7 * (box.isEmpty() ? 1.0 : box.diagonal().norm());
+    for (const auto& [a, b, c] : surface.faces)
+        tree_->triangles.emplace_back(point(surface.vertices[a]), point(surface.vertices[b]),
+                                      point(surface.vertices[c]));
+    tree_->aabb.insert(tree_->triangles.begin(), tree_->triangles.end());
+    tree_->aabb.accelerate_distance_queries();
+}
+
+SurfaceProbe::~SurfaceProbe() = default;
+
+bool SurfaceProbe::inside(const Vec3& p) const {
+    return windingNumber(mesh_, p) > 0.5;
+}
+
+double SurfaceProbe::distance(const Vec3& p) const {
+    return std::sqrt(tree_->aabb.squared_distance(point(p)));
+}
+
+std::optional<Vec3> SurfaceProbe::middleOfCrossSection(const Vec3& p, const Vec3& direction) const {
+    const Vec3 d = direction.norm() > 0.0 ? direction.normalized() : Vec3::UnitZ();
+    const Vec3 u = d.unitOrthogonal();
+    const Vec3 v = d.cross(u);
+    // Halfway between the walls met both ways along `along` from inside.
+    const auto centred = [&](const Vec3& from, const Vec3& along) -> std::optional<Vec3> {
+        const std::optional<Vec3> ahead = tree_->firstWall(from, along);
+        const std::optional<Vec3> behind = tree_->firstWall(from, -along);
+        if (!ahead || !behind)
+            return std::nullopt;
+        return 0.5 * (*ahead + *behind);
+    };
+    Vec3 start = p;
+    Vec3 first = u;
+    if (!inside(p)) {
+        // The nearest wall any ray in the plane meets, and the wall behind it.
+        double nearest = INFINITY;
+        std::optional<Vec3> middle;
+        for (int k = 0; k < kDirections; ++k) {
+            const double angle = 2.0 * std::numbers::pi * k / kDirections;
+            const Vec3 ray = std::cos(angle) * u + std::sin(angle) * v;
+            const std::optional<Vec3> in = tree_->firstWall(p, ray);
+            if (!in || (*in - p).norm() >= nearest)
+                continue;
+            const std::optional<Vec3> out = tree_->firstWall(*in, ray);
+            if (!out)
+                continue;
+            nearest = (*in - p).norm();
+            middle = 0.5 * (*in + *out);
+            first = ray;
+        }
+        if (!middle || !inside(*middle))
+            return std::nullopt;
+        start = *middle;
+    } else {
+        const std::optional<Vec3> once = centred(p, u);
+        if (!once || !inside(*once))
+            return std::nullopt;
+        start = *once;
+    }
+    // Centred across the first direction too.
+    const std::optional<Vec3> across = centred(start, d.cross(first).normalized());
+    if (across && inside(*across))
+        return across;
+    return start;
+}
+
+Vec3 SurfaceProbe::entry(const Vec3& outsidePoint, const Vec3& insidePoint) const {
+    double out = 0.0, in = 1.0;
+    for (int step = 0; step < 30; ++step) {
+        const double t = 0.5 * (out + in);
+        (inside(outsidePoint + t * (insidePoint - outsidePoint)) ? in : out) = t;
+    }
+    return outsidePoint + in * (insidePoint - outsidePoint);
+}
+
+}  // namespace rigmesh
