@@ -7,6 +7,7 @@
 #include <map>
 
 #include "autorig/AxisChain.h"
+#include "autorig/BoneCoverage.h"
 #include "autorig/BonesInside.h"
 #include "autorig/CurveSkeleton.h"
 #include "autorig/WeightTransfer.h"
@@ -27,6 +28,13 @@ constexpr double kHeatDone = 0.95;
 // At most this many "pieces follow bone" notes; the rest are counted.
 constexpr int kPieceNotes = 3;
 constexpr BoneId kNoLeader = std::numeric_limits<BoneId>::max();
+
+double diagonalOf(const TriMesh& mesh) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : mesh.vertices)
+        box.extend(v);
+    return box.isEmpty() ? 0.0 : box.diagonal().norm();
+}
 
 RigProgress stage(const RigProgress& progress, double from, double to) {
     if (!progress)
@@ -153,6 +161,10 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
         shortest && shortest->length < minimum)
         throw Error(MessageId::AutoRigBoneTooShort, shortNumber(shortest->length),
                     shortNumber(minimum));
+    // Every region near a bone (autorig/BoneCoverage): a bone bends or a
+    // branch grows into a region the curve skeleton left without one.
+    coverWithBones(result.part.skeleton, surface.mainPiece, part.mesh.vertices,
+                   options.bones.coverageFraction * diagonalOf(part.mesh), minimum);
     // Straight bones of a thin, bent limb cut its corners, and mirroring can
     // move a thin limb's joint out of it: back to the middle of the limb
     // (autorig/BonesInside).
