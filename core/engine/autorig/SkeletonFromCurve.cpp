@@ -378,13 +378,17 @@ std::vector<TubeSample> branchJoints(const Graph& graph, const std::vector<int>&
     double radiusSum = 0.0;
     for (const TubeSample& sample : tube)
         radiusSum += sample.radius;
-    const double meanRadius = radiusSum / static_cast<double>(tube.size());
-    const std::vector<int> kept =
-        cylindricalDouglasPeuckerInSpace(tube, options.relativeThreshold * meanRadius);
     std::vector<double> along(tube.size(), 0.0);
     for (std::size_t i = 1; i < tube.size(); ++i)
         along[i] = along[i - 1] + (tube[i].point - tube[i - 1].point).norm();
-    const double minimumBone = options.relativeMinimumBone * meanRadius;
+    // A thin limb's bones are measured against its length too: CDP by the
+    // radius alone gives a spider's leg, fifty radii long, a bone for every
+    // wobble of the flow's curve.
+    const double scale = std::max(radiusSum / static_cast<double>(tube.size()),
+                                  options.thinLimbLengthShare * along.back());
+    const std::vector<int> kept =
+        cylindricalDouglasPeuckerInSpace(tube, options.relativeThreshold * scale);
+    const double minimumBone = options.relativeMinimumBone * scale;
     std::vector<int> merged{kept.front()};
     for (std::size_t i = 1; i + 1 < kept.size(); ++i)
         if (along[kept[i]] - along[merged.back()] >= minimumBone)

@@ -29,6 +29,9 @@ struct CurveRigOptions {
     // branch, as fractions of the branch's mean radius.
     double relativeThreshold = 0.35;
     double relativeMinimumBone = 0.5;
+    // For a branch longer than its mean radius over this share, those
+    // fractions are of this share of its length instead (a thin limb).
+    double thinLimbLengthShare = 0.08;
     // Rounds of Laplacian smoothing of each branch's points and radii
     // before CDP (the paper smooths the chordal axis the same way, 2.1).
     int smoothingIterations = 5;
