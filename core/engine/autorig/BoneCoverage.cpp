@@ -4,6 +4,7 @@
 #include <limits>
 #include <optional>
 
+#include "autorig/SkeletonFromCurve.h"
 #include "autorig/SurfaceProbe.h"
 #include "rig/BoneSegment.h"
 
@@ -50,13 +51,6 @@ Nearest nearestBone(const Skeleton& skeleton, const Vec3& p) {
         }
     }
     return best;
-}
-
-int leafCount(const Skeleton& skeleton) {
-    int leaves = 0;
-    for (const Joint& joint : skeleton.joints())
-        leaves += skeleton.degree(joint.id) == 1 ? 1 : 0;
-    return leaves;
 }
 
 bool segmentInside(const SurfaceProbe& surface, const Vec3& a, const Vec3& b) {

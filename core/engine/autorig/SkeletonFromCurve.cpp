@@ -404,13 +404,6 @@ std::vector<TubeSample> branchJoints(const Graph& graph, const std::vector<int>&
     return joints;
 }
 
-int leafCount(const Skeleton& skeleton) {
-    int leaves = 0;
-    for (const Joint& joint : skeleton.joints())
-        leaves += skeleton.degree(joint.id) == 1 ? 1 : 0;
-    return leaves;
-}
-
 // The branching joint where the body is thickest (the torso); the most
 // central joint of a skeleton without branches.
 JointId thickestRoot(const Skeleton& skeleton, const std::map<JointId, double>& radiusOf) {
@@ -423,6 +416,13 @@ JointId thickestRoot(const Skeleton& skeleton, const std::map<JointId, double>& 
 }
 
 }  // namespace
+
+int leafCount(const Skeleton& skeleton) {
+    int leaves = 0;
+    for (const Joint& joint : skeleton.joints())
+        leaves += skeleton.degree(joint.id) == 1 ? 1 : 0;
+    return leaves;
+}
 
 Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
                            const CurveRigOptions& options) {

@@ -56,4 +56,7 @@ struct CurveRigOptions {
 Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
                            const CurveRigOptions& options = {});
 
+// The joints with one bone (the limbs' ends).
+int leafCount(const Skeleton& skeleton);
+
 }  // namespace rigmesh
