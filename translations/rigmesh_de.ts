@@ -15,6 +15,10 @@
         <source>%1 in %2 ms: %3 vertices and %4 bones re-skinned</source>
         <translation>%1 in %2 ms: %3 Vertices und %4 Knochen neu gewichtet</translation>
     </message>
+    <message>
+        <source>Connect Bone %1 of %2</source>
+        <translation>Knochen %1 von %2 verbinden</translation>
+    </message>
 </context>
 <context>
     <name>ClipListCommand</name>
@@ -548,6 +552,18 @@
     <message>
         <source>filled %1 small holes with %2 new vertices</source>
         <translation>%1 kleine Löcher mit %2 neuen Vertices gefüllt</translation>
+    </message>
+    <message>
+        <source>Bone %1 is not connected to its parent; connect it first (Edit &gt; Connect Bone).</source>
+        <translation>Knochen %1 ist nicht mit seinem Elternknochen verbunden; verbinden Sie ihn zuerst (Bearbeiten &gt; Knochen verbinden).</translation>
+    </message>
+    <message>
+        <source>Bone %1 is already connected to its parent.</source>
+        <translation>Knochen %1 ist bereits mit seinem Elternknochen verbunden.</translation>
+    </message>
+    <message>
+        <source>Bone %1 starts at the skeleton&apos;s root: it has no parent to connect to.</source>
+        <translation>Knochen %1 beginnt an der Wurzel des Skeletts: Er hat keinen Elternknochen, mit dem er verbunden werden könnte.</translation>
     </message>
 </context>
 <context>
@@ -1821,6 +1837,26 @@
         <source>Not Now</source>
         <translation>Nicht jetzt</translation>
     </message>
+    <message>
+        <source>Co&amp;nnect Bone</source>
+        <translation>Knochen &amp;verbinden</translation>
+    </message>
+    <message>
+        <source>Move the selected bone&apos;s head onto its parent&apos;s tail, as Blender&apos;s Connected does (cut and merge need connected bones)</source>
+        <translation>Den Kopf des gewählten Knochens auf das Ende seines Elternknochens setzen, wie Blenders „Verbunden“ (Schneiden und Zusammenfügen brauchen verbundene Knochen)</translation>
+    </message>
+    <message>
+        <source>Select the joint of the bone to connect first</source>
+        <translation>Wählen Sie zuerst das Gelenk des zu verbindenden Knochens</translation>
+    </message>
+    <message>
+        <source>The selected joint ends no bone</source>
+        <translation>Am gewählten Gelenk endet kein Knochen</translation>
+    </message>
+    <message>
+        <source>Bone not connected: %1</source>
+        <translation>Knochen nicht verbunden: %1</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::MergeTool</name>
@@ -2581,6 +2617,10 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
     <message>
         <source>Point at a bone: K splits it there, Shift+K deletes it</source>
         <translation>Zeigen Sie auf einen Knochen: K teilt ihn dort, Umschalt+K löscht ihn</translation>
+    </message>
+    <message>
+        <source>Connect Bone</source>
+        <translation>Knochen verbinden</translation>
     </message>
 </context>
 <context>

@@ -186,6 +186,9 @@ void MainWindow::createActions() {
     edit->addSeparator();
     add(edit, tr("&Delete Part"), QKeySequence::Delete, &MainWindow::deleteSelection,
         QStyle::SP_TrashIcon);
+    add(edit, tr("Co&nnect Bone"), QKeySequence(), &MainWindow::connectSelectedBone)
+        ->setToolTip(tr("Move the selected bone's head onto its parent's tail, as Blender's "
+                        "Connected does (cut and merge need connected bones)"));
     edit->addSeparator();
     add(edit, tr("&Preferences..."), QKeySequence::Preferences, &MainWindow::openPreferences)
         ->setMenuRole(QAction::PreferencesRole);

@@ -108,6 +108,7 @@ class MainWindow : public QMainWindow {
     void resetPose();
     // Tools > Auto-Rig Part on the selected part (issue 17).
     void rigSelectedPart();
+    void connectSelectedBone();
     void deleteSelection();
     // Edit > Preferences.
     void openPreferences();

@@ -2,7 +2,9 @@
 // imported mesh): a background job with a filling progress bar and Cancel
 // that stops the skeleton's flow at its next step; the result arrives as
 // one undoable command (model/commands/RigPartCommand). After an import of
-// meshes without a rig the studio offers to rig them at once.
+// meshes without a rig the studio offers to rig them at once. Edit >
+// Connect Bone connects the selected joint's disconnected bone to its
+// parent (part/BoneConnection.h), one undoable BoneEditCommand.
 #include <QMessageBox>
 #include <QPointer>
 #include <QPushButton>
@@ -12,7 +14,9 @@
 #include "jobs/JobRunner.h"
 #include "model/Document.h"
 #include "model/ErrorText.h"
+#include "model/commands/BoneEditCommand.h"
 #include "model/commands/RigPartCommand.h"
+#include "part/BoneConnection.h"
 
 namespace rigmesh::widgets {
 
@@ -31,6 +35,33 @@ void MainWindow::rigSelectedPart() {
         return;
     }
     rigParts(document, {node.id});
+}
+
+void MainWindow::connectSelectedBone() {
+    model::Document* document = currentDocument();
+    const model::Selection selection = document ? document->selection() : model::Selection{};
+    if (!document || !document->contains(selection.part) || selection.joint == kNoJoint) {
+        showStatus(tr("Select the joint of the bone to connect first"), 4000);
+        return;
+    }
+    const Skeleton& skeleton = document->part(selection.part).part->skeleton;
+    // The joint stands for the bone ending at it, or (a chain's root) for
+    // the first bone leaving it; that bone's head is what moves.
+    std::optional<BoneId> bone = boneForJoint(skeleton, selection.joint);
+    if (skeleton.isAttached(selection.joint) && !skeleton.childrenOf(selection.joint).empty())
+        bone = skeleton.childrenOf(selection.joint).front();
+    if (!bone) {
+        showStatus(tr("The selected joint ends no bone"), 4000);
+        return;
+    }
+    try {
+        auto command = model::BoneEditCommand::connect(*document, selection.part, *bone);
+        const QString text = command->text();
+        document->undoStack()->push(command.release());
+        showStatus(text, 6000);
+    } catch (const Error& error) {
+        showStatus(tr("Bone not connected: %1").arg(model::errorText(error)), 8000);
+    }
 }
 
 void MainWindow::rigParts(model::Document* document, std::vector<model::PartId> ids) {

@@ -74,6 +74,9 @@ enum class MessageId {
     SplitTooCloseToJoint,
     SplitBoneLeadsNothing,
     DeleteOnlyBone,
+    BoneNotConnected,
+    ConnectBoneAlreadyConnected,
+    ConnectBoneHasNoParent,
 
     // Posing and keys (pose/)
     IkTargetNotFinite,

@@ -35,6 +35,19 @@ BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& we
                   [&](const auto& entry) { return !result.part.skeleton.hasBone(entry.first); });
     std::erase_if(result.part.lockedBones,
                   [&](BoneId id) { return !result.part.skeleton.hasBone(id); });
+    // A kept frame holds while its bone points the same way (a split's first
+    // half); a bone that turned (next to a deleted one) loses it.
+    std::erase_if(result.part.boneFrames, [&](const auto& entry) {
+        const Skeleton& before = part.skeleton;
+        const Skeleton& after = result.part.skeleton;
+        if (!after.hasBone(entry.first))
+            return true;
+        auto direction = [](const Skeleton& s, BoneId id) {
+            return Vec3(s.joint(s.bone(id).tail).position - s.joint(s.bone(id).head).position)
+                .normalized();
+        };
+        return direction(before, entry.first).dot(direction(after, entry.first)) < 1.0 - 1e-12;
+    });
     result.reskinned = local.failedTest;
     result.reskinned.insert(result.reskinned.end(), local.transition.begin(),
                             local.transition.end());

@@ -13,6 +13,7 @@
 #include "geometry/ConstrainedTriangulation.h"
 #include "mesh/Fairing.h"
 #include "mesh/MeshAdjacency.h"
+#include "part/BoneConnection.h"
 #include "part/BoneWeights.h"
 #include "surface/PatchLattice.h"
 
@@ -146,6 +147,8 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
     const auto start = std::chrono::steady_clock::now();
     if (part.skeleton.boneCount() == 0)
         throw Error(MessageId::CutNeedsRiggedPart);
+    // Each piece's skeleton is rebuilt as one connected tree.
+    requireConnectedSkeleton(part);
     if (request.stroke.empty() && (!(request.normal.norm() > 0.0) || !request.normal.allFinite() ||
                                    !request.point.allFinite()))
         throw Error(MessageId::CutNeedsPlane);

@@ -50,9 +50,9 @@ void addTips(tinyxml2::XMLElement& parent,
         tinyxml2::XMLElement* technique =
             node->InsertNewChildElement("extra")->InsertNewChildElement("technique");
         technique->SetAttribute("profile", "blender");
-        addParameter(*technique, "connect", "bool", "0");
+        addParameter(*technique, "connect", "bool", bone->second->connected ? "1" : "0");
         addParameter(*technique, "layer", "string", "0");
-        addParameter(*technique, "roll", "float", "0");
+        addParameter(*technique, "roll", "float", number(bone->second->roll()));
         addParameter(*technique, "tip_x", "float", number(tip.x()));
         addParameter(*technique, "tip_y", "float", number(tip.y()));
         addParameter(*technique, "tip_z", "float", number(tip.z()));
@@ -80,10 +80,13 @@ std::string withColladaBoneTips(const std::string& dae, const std::vector<Export
 
 namespace {
 
-void collectTips(const tinyxml2::XMLElement& parent, std::map<std::string, Vec3>& tips) {
+// Calls visit(joint name, technique) for every `<technique profile="blender">`
+// of every node below `parent`.
+template <typename Visit>
+void forEachBlenderTechnique(const tinyxml2::XMLElement& parent, Visit&& visit) {
     for (const tinyxml2::XMLElement* node = parent.FirstChildElement("node"); node != nullptr;
          node = node->NextSiblingElement("node")) {
-        collectTips(*node, tips);
+        forEachBlenderTechnique(*node, visit);
         const char* name = node->Attribute("name");
         if (name == nullptr)
             continue;
@@ -92,23 +95,26 @@ void collectTips(const tinyxml2::XMLElement& parent, std::map<std::string, Vec3>
             for (const tinyxml2::XMLElement* technique = extra->FirstChildElement("technique");
                  technique != nullptr; technique = technique->NextSiblingElement("technique")) {
                 const char* profile = technique->Attribute("profile");
-                if (profile == nullptr || std::string(profile) != "blender")
-                    continue;
-                Vec3 tip;
-                bool complete = true;
-                const char* axes[] = {"tip_x", "tip_y", "tip_z"};
-                for (int k = 0; k < 3; ++k) {
-                    const tinyxml2::XMLElement* value = technique->FirstChildElement(axes[k]);
-                    double number = 0;
-                    complete = complete && value != nullptr &&
-                               value->QueryDoubleText(&number) == tinyxml2::XML_SUCCESS &&
-                               std::isfinite(number);
-                    tip[k] = number;
-                }
-                if (complete)
-                    tips[name] = tip;
+                if (profile != nullptr && std::string(profile) == "blender")
+                    visit(std::string(name), *technique);
             }
     }
+}
+
+// The same for every visual scene of a COLLADA text (nothing for text that
+// is not XML).
+template <typename Visit>
+void forEachBlenderJointTechnique(const std::string& dae, Visit&& visit) {
+    tinyxml2::XMLDocument document;
+    if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
+        document.RootElement() == nullptr)
+        return;
+    const tinyxml2::XMLElement* scenes =
+        document.RootElement()->FirstChildElement("library_visual_scenes");
+    for (const tinyxml2::XMLElement* scene =
+             scenes != nullptr ? scenes->FirstChildElement("visual_scene") : nullptr;
+         scene != nullptr; scene = scene->NextSiblingElement("visual_scene"))
+        forEachBlenderTechnique(*scene, visit);
 }
 
 }  // namespace
@@ -117,7 +123,7 @@ std::string withFbxLeafTails(const std::string& fbx, const std::vector<ExportRig
     std::map<std::string, Vec3> tails;
     for (const ExportRig& rig : rigs)
         for (const ExportBoneNode& node : rig.nodes)
-            if (node.leaf)
+            if (node.tailUnmarked)
                 tails.emplace(node.name, node.localTail());
     const std::vector<std::uint8_t> out = withFbxModelVectors(
         std::vector<std::uint8_t>(fbx.begin(), fbx.end()), kTailMetadataKey, tails);
@@ -126,17 +132,35 @@ std::string withFbxLeafTails(const std::string& fbx, const std::vector<ExportRig
 
 std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae) {
     std::map<std::string, Vec3> tips;
-    tinyxml2::XMLDocument document;
-    if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
-        document.RootElement() == nullptr)
-        return tips;
-    const tinyxml2::XMLElement* scenes =
-        document.RootElement()->FirstChildElement("library_visual_scenes");
-    for (const tinyxml2::XMLElement* scene =
-             scenes != nullptr ? scenes->FirstChildElement("visual_scene") : nullptr;
-         scene != nullptr; scene = scene->NextSiblingElement("visual_scene"))
-        collectTips(*scene, tips);
+    forEachBlenderJointTechnique(
+        dae, [&](const std::string& name, const tinyxml2::XMLElement& technique) {
+            Vec3 tip;
+            bool complete = true;
+            const char* axes[] = {"tip_x", "tip_y", "tip_z"};
+            for (int k = 0; k < 3; ++k) {
+                const tinyxml2::XMLElement* value = technique.FirstChildElement(axes[k]);
+                double number = 0;
+                complete = complete && value != nullptr &&
+                           value->QueryDoubleText(&number) == tinyxml2::XML_SUCCESS &&
+                           std::isfinite(number);
+                tip[k] = number;
+            }
+            if (complete)
+                tips[name] = tip;
+        });
     return tips;
+}
+
+std::map<std::string, bool> readColladaBoneConnections(const std::string& dae) {
+    std::map<std::string, bool> connected;
+    forEachBlenderJointTechnique(
+        dae, [&](const std::string& name, const tinyxml2::XMLElement& technique) {
+            const tinyxml2::XMLElement* value = technique.FirstChildElement("connect");
+            int flag = 0;
+            if (value != nullptr && value->QueryIntText(&flag) == tinyxml2::XML_SUCCESS)
+                connected[name] = flag != 0;
+        });
+    return connected;
 }
 
 std::string withGltfLeafTails(const std::string& gltfJson, const std::vector<ExportRig>& rigs) {
@@ -147,7 +171,7 @@ std::string withGltfLeafTails(const std::string& gltfJson, const std::vector<Exp
     if (gltf.contains("nodes") && gltf["nodes"].is_array())
         for (nlohmann::json& node : gltf["nodes"]) {
             const auto bone = bones.find(node.value("name", std::string()));
-            if (bone == bones.end() || !bone->second->leaf)
+            if (bone == bones.end() || !bone->second->tailUnmarked)
                 continue;
             const Vec3 tail = bone->second->localTail();
             node["extras"][kTailMetadataKey] = {tail.x(), tail.y(), tail.z()};

@@ -6,10 +6,12 @@
 // `<extra><technique profile="blender">` with `tip_x/y/z`, the tail minus
 // the head in the file's coordinates (measured with Blender 3.4.1: with it
 // every bone's head, direction and length match ours). In glTF each leaf
-// bone's node gets `extras.rigmesh_tail`, its tail in the node's own
-// frame, which our importer (through Assimp's node metadata) reads back;
-// Blender shows it as a custom property of the bone. FBX gets the same as a
-// user property of the leaf's Model.
+// bone's node (and each bone whose children are all disconnected: no bone
+// starts at its tail, ExportBoneNode::tailUnmarked) gets
+// `extras.rigmesh_tail`, its tail in the node's own frame, which our
+// importer (through Assimp's node metadata) reads back; Blender shows it as
+// a custom property of the bone. FBX gets the same as a user property of
+// the bone's Model.
 #pragma once
 
 #include <map>
@@ -41,5 +43,8 @@ inline constexpr const char* kTailMetadataKey = "rigmesh_tail";
 // from a COLLADA file's `<technique profile="blender">` extras, as our
 // exporter and Blender's write them. Empty for text that is not XML.
 std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae);
+// Per joint name: Blender's "Connected" flag from the same extras (`connect`,
+// which Blender's COLLADA importer honours and we write from the skeleton).
+std::map<std::string, bool> readColladaBoneConnections(const std::string& dae);
 
 }  // namespace rigmesh

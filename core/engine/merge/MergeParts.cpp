@@ -8,6 +8,7 @@
 #include "merge/MeshUnion.h"
 #include "merge/SeamSmoothing.h"
 #include "mesh/MeshAdjacency.h"
+#include "part/BoneConnection.h"
 #include "part/CarryAcross.h"
 #include "rig/LocalBoneHeat.h"
 
@@ -168,6 +169,9 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
     const auto start = Clock::now();
     if (target.skeleton.boneCount() == 0 || dragged.skeleton.boneCount() == 0)
         throw Error(MessageId::MergeNeedsRiggedParts);
+    // The joined skeleton is one connected tree (SkeletonJoin).
+    requireConnectedSkeleton(target);
+    requireConnectedSkeleton(dragged);
     MergeResult result;
     SkeletonJoin join = joinSkeletons(target.skeleton, dragged.skeleton, request.join);
     result.draggedTranslation = join.draggedTranslation;
