@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# PackageInstallsAndRuns (issue 16 item 2): builds the .deb from a configured
+# PackageInstallsAndRuns: builds the .deb from a configured
 # build tree, unpacks it into a scratch root (dpkg -x, no root needed) and
 # runs what it installed from there: `rigmesh --version`, a `rigmesh build`,
 # and `rigmesh-studio --screenshot` under Xvfb; checks the desktop entry,

@@ -1160,6 +1160,87 @@
     </message>
 </context>
 <context>
+    <name>rigmesh::widgets::ExchangeController</name>
+    <message>
+        <source>Import</source>
+        <translation>Importieren</translation>
+    </message>
+    <message>
+        <source>3D scenes (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;All files (*)</source>
+        <translation>3D-Szenen (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>%1 wird importiert</translation>
+    </message>
+    <message>
+        <source>Cannot import</source>
+        <translation>Import nicht möglich</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled</source>
+        <translation>Import von %1 abgebrochen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n part(s) from %1</source>
+        <translation>
+            <numerusform>%n Teil aus %1 importiert</numerusform>
+            <numerusform>%n Teile aus %1 importiert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>: %n of them without a skeleton, so they cannot be posed yet.</source>
+        <translation>
+            <numerusform>: %n davon ohne Skelett, es lässt sich also noch nicht posieren.</numerusform>
+            <numerusform>: %n davon ohne Skelett, sie lassen sich also noch nicht posieren.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save History as Recipe</source>
+        <translation>Verlauf als Rezept speichern</translation>
+    </message>
+    <message>
+        <source>RigMesh recipes (*.json)</source>
+        <translation>RigMesh-Rezepte (*.json)</translation>
+    </message>
+    <message>
+        <source>Saved the history as %1: replay it with rigmesh run</source>
+        <translation>Verlauf als %1 gespeichert: mit „rigmesh run“ erneut abspielen</translation>
+    </message>
+    <message>
+        <source>Cannot save the recipe</source>
+        <translation>Rezept kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>Nothing to export: sketch a part first</source>
+        <translation>Nichts zu exportieren: skizzieren Sie zuerst ein Teil</translation>
+    </message>
+    <message>
+        <source>Exporting %1</source>
+        <translation>%1 wird exportiert</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>Export nicht möglich</translation>
+    </message>
+    <message>
+        <source>%1 could not be replaced: %2</source>
+        <translation>%1 konnte nicht ersetzt werden: %2</translation>
+    </message>
+    <message>
+        <source>no animation: no visible part has keys</source>
+        <translation>keine Animation: kein sichtbares Teil hat Schlüsselbilder</translation>
+    </message>
+    <message>
+        <source>Exported %1%2</source>
+        <translation>%1%2 exportiert</translation>
+    </message>
+    <message>
+        <source>Export of %1 cancelled: nothing written</source>
+        <translation>Export von %1 abgebrochen: nichts geschrieben</translation>
+    </message>
+</context>
+<context>
     <name>rigmesh::widgets::ExportDialog</name>
     <message>
         <source>glTF 2.0 binary (.glb)</source>
@@ -1276,6 +1357,57 @@
     <message>
         <source>%1 (*.%2)</source>
         <translation>%1 (*.%2)</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::FilesController</name>
+    <message>
+        <source>Untitled %1</source>
+        <translation>Unbenannt %1</translation>
+    </message>
+    <message>
+        <source>Open Document</source>
+        <translation>Dokument öffnen</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <source>Cannot open document</source>
+        <translation>Dokument kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Cannot save document</source>
+        <translation>Dokument kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>Save Document</source>
+        <translation>Dokument speichern</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work?</source>
+        <translation>Ungespeicherte Arbeit wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>RigMesh Studio did not close properly. Restore the document autosaved at %1?</source>
+        <translation>RigMesh Studio wurde nicht ordnungsgemäß beendet. Das um %1 automatisch gespeicherte Dokument wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Could not recover: %1</source>
+        <translation>Wiederherstellen fehlgeschlagen: %1</translation>
     </message>
 </context>
 <context>
@@ -1569,108 +1701,12 @@
         <translation>RigMesh Studio</translation>
     </message>
     <message>
-        <source>Untitled %1</source>
-        <translation>Unbenannt %1</translation>
-    </message>
-    <message>
-        <source>Open Document</source>
-        <translation>Dokument öffnen</translation>
-    </message>
-    <message>
-        <source>Opened %1</source>
-        <translation>%1 geöffnet</translation>
-    </message>
-    <message>
-        <source>Cannot open document</source>
-        <translation>Dokument kann nicht geöffnet werden</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>%1 gespeichert</translation>
-    </message>
-    <message>
-        <source>Cannot save document</source>
-        <translation>Dokument kann nicht gespeichert werden</translation>
-    </message>
-    <message>
-        <source>Save Document</source>
-        <translation>Dokument speichern</translation>
-    </message>
-    <message>
-        <source>Unsaved changes</source>
-        <translation>Ungespeicherte Änderungen</translation>
-    </message>
-    <message>
-        <source>%1 has unsaved changes. Save them?</source>
-        <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
-    </message>
-    <message>
         <source>Select a part to reset its pose</source>
         <translation>Wählen Sie ein Teil aus, um seine Pose zurückzusetzen</translation>
     </message>
     <message>
         <source>Select a part to delete</source>
         <translation>Wählen Sie ein Teil zum Löschen aus</translation>
-    </message>
-    <message>
-        <source>Recover unsaved work?</source>
-        <translation>Ungespeicherte Arbeit wiederherstellen?</translation>
-    </message>
-    <message>
-        <source>RigMesh Studio did not close properly. Restore the document autosaved at %1?</source>
-        <translation>RigMesh Studio wurde nicht ordnungsgemäß beendet. Das um %1 automatisch gespeicherte Dokument wiederherstellen?</translation>
-    </message>
-    <message>
-        <source>Could not recover: %1</source>
-        <translation>Wiederherstellen fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <source>Import</source>
-        <translation>Importieren</translation>
-    </message>
-    <message>
-        <source>3D scenes (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;All files (*)</source>
-        <translation>3D-Szenen (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <source>Imported without a rig</source>
-        <translation>Ohne Rig importiert</translation>
-    </message>
-    <message>
-        <source>Cannot import</source>
-        <translation>Import nicht möglich</translation>
-    </message>
-    <message>
-        <source>Save History as Recipe</source>
-        <translation>Verlauf als Rezept speichern</translation>
-    </message>
-    <message>
-        <source>RigMesh recipes (*.json)</source>
-        <translation>RigMesh-Rezepte (*.json)</translation>
-    </message>
-    <message>
-        <source>Saved the history as %1: replay it with rigmesh run</source>
-        <translation>Verlauf als %1 gespeichert: mit „rigmesh run“ erneut abspielen</translation>
-    </message>
-    <message>
-        <source>Cannot save the recipe</source>
-        <translation>Rezept kann nicht gespeichert werden</translation>
-    </message>
-    <message>
-        <source>Nothing to export: sketch a part first</source>
-        <translation>Nichts zu exportieren: skizzieren Sie zuerst ein Teil</translation>
-    </message>
-    <message>
-        <source>no animation: no visible part has keys</source>
-        <translation>keine Animation: kein sichtbares Teil hat Schlüsselbilder</translation>
-    </message>
-    <message>
-        <source>Exported %1%2</source>
-        <translation>%1%2 exportiert</translation>
-    </message>
-    <message>
-        <source>Cannot export</source>
-        <translation>Export nicht möglich</translation>
     </message>
     <message>
         <source>The new language applies when RigMesh Studio starts again.</source>
@@ -1689,153 +1725,12 @@
         <translation>Oberfläche nach ihren Skin-Gewichten einfärben (Ansicht &gt; Gewichte)</translation>
     </message>
     <message>
-        <source>Weigh&amp;ts</source>
-        <translation>Ge&amp;wichte</translation>
-    </message>
-    <message>
-        <source>Select a part first</source>
-        <translation>Wählen Sie zuerst ein Teil aus</translation>
-    </message>
-    <message numerus="yes">
-        <source>%1: %n vertices changed</source>
-        <translation>
-            <numerusform>%1: %n Vertex geändert</numerusform>
-            <numerusform>%1: %n Vertices geändert</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>&amp;Normalize All</source>
-        <translation>Alle &amp;normalisieren</translation>
-    </message>
-    <message>
-        <source>&amp;Clean (below 0.01)</source>
-        <translation>&amp;Bereinigen (unter 0,01)</translation>
-    </message>
-    <message>
-        <source>&amp;Limit Total (4 bones)</source>
-        <translation>Gesamtzahl &amp;begrenzen (4 Knochen)</translation>
-    </message>
-    <message>
-        <source>&amp;Smooth All</source>
-        <translation>Alle &amp;glätten</translation>
-    </message>
-    <message>
-        <source>Every unlocked bone&apos;s weight halfway towards its neighbours&apos; mean</source>
-        <translation>Das Gewicht jedes nicht gesperrten Knochens halb zum Mittel seiner Nachbarn hin</translation>
-    </message>
-    <message>
-        <source>Check &amp;Rig</source>
-        <translation>&amp;Rig prüfen</translation>
-    </message>
-    <message numerus="yes">
-        <source>Imported %n part(s) from %1</source>
-        <translation>
-            <numerusform>%n Teil aus %1 importiert</numerusform>
-            <numerusform>%n Teile aus %1 importiert</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Importing %1</source>
-        <translation>%1 wird importiert</translation>
-    </message>
-    <message>
-        <source>Import of %1 cancelled</source>
-        <translation>Import von %1 abgebrochen</translation>
-    </message>
-    <message>
-        <source>Cannot write into %1</source>
-        <translation>Kann nicht in %1 schreiben</translation>
-    </message>
-    <message>
-        <source>Exporting %1</source>
-        <translation>%1 wird exportiert</translation>
-    </message>
-    <message>
-        <source>%1 could not be replaced: %2</source>
-        <translation>%1 konnte nicht ersetzt werden: %2</translation>
-    </message>
-    <message>
-        <source>Export of %1 cancelled: nothing written</source>
-        <translation>Export von %1 abgebrochen: nichts geschrieben</translation>
-    </message>
-    <message>
-        <source>Recompute Weights</source>
-        <translation>Gewichte neu berechnen</translation>
-    </message>
-    <message>
-        <source>&amp;Recompute Weights (Bone Heat)</source>
-        <translation>Gewichte neu &amp;berechnen (Knochenwärme)</translation>
-    </message>
-    <message>
-        <source>Bone heat over the whole part again, as a new sketch gets it; locked bones keep their weights</source>
-        <translation>Knochenwärme erneut über das ganze Teil, wie eine neue Skizze sie bekommt; gesperrte Knochen behalten ihre Gewichte</translation>
-    </message>
-    <message>
-        <source>%1 has no skeleton, so it has no weights to recompute</source>
-        <translation>%1 hat kein Skelett und daher keine Gewichte zum Neuberechnen</translation>
-    </message>
-    <message>
-        <source>The weights of %1 were painted or cleaned up by hand. Recomputing them by bone heat replaces that work (locked bones keep theirs; Undo brings it back). Recompute anyway?</source>
-        <translation>Die Gewichte von %1 wurden von Hand gemalt oder bereinigt. Sie mit Knochenwärme neu zu berechnen ersetzt diese Arbeit (gesperrte Knochen behalten ihre; Rückgängig holt sie zurück). Trotzdem neu berechnen?</translation>
-    </message>
-    <message>
-        <source>Weights not recomputed: the painted weights are kept</source>
-        <translation>Gewichte nicht neu berechnet: die gemalten Gewichte bleiben erhalten</translation>
-    </message>
-    <message>
-        <source>Recomputing the weights of %1</source>
-        <translation>Gewichte von %1 werden neu berechnet</translation>
-    </message>
-    <message>
-        <source>Weights not recomputed: %1</source>
-        <translation>Gewichte nicht neu berechnet: %1</translation>
-    </message>
-    <message>
         <source>&amp;Auto-Rig Part</source>
         <translation>Teil &amp;automatisch riggen</translation>
     </message>
     <message>
         <source>Give the selected part without a skeleton (an imported mesh) a skeleton from its shape and skin weights</source>
         <translation>Dem ausgewählten Teil ohne Skelett (einem importierten Netz) ein Skelett aus seiner Form und Skin-Gewichte geben</translation>
-    </message>
-    <message numerus="yes">
-        <source>: %n of them without a skeleton, so they cannot be posed yet.</source>
-        <translation>
-            <numerusform>: %n davon ohne Skelett, es lässt sich also noch nicht posieren.</numerusform>
-            <numerusform>: %n davon ohne Skelett, sie lassen sich also noch nicht posieren.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Select a part to rig first</source>
-        <translation>Wählen Sie zuerst ein Teil zum Riggen aus</translation>
-    </message>
-    <message>
-        <source>%1 already has a skeleton; Auto-Rig is for parts without one, such as imported meshes</source>
-        <translation>%1 hat bereits ein Skelett; automatisches Riggen ist für Teile ohne Skelett, etwa importierte Netze</translation>
-    </message>
-    <message>
-        <source>Rigging %1</source>
-        <translation>%1 wird geriggt</translation>
-    </message>
-    <message>
-        <source>Cannot rig %1</source>
-        <translation>%1 kann nicht geriggt werden</translation>
-    </message>
-    <message>
-        <source>Rigging %1 cancelled</source>
-        <translation>Riggen von %1 abgebrochen</translation>
-    </message>
-    <message>
-        <source>Auto-Rig gives a closed mesh a skeleton from its shape and skin weights, so it can be posed, cut, merged and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
-        <translation>Automatisches Riggen gibt einem geschlossenen Netz ein Skelett aus seiner Form und Skin-Gewichte, sodass es sich wie ein skizziertes Teil posieren, schneiden, zusammenführen und bemalen lässt. Sie können das auch später mit Werkzeuge &gt; Teil automatisch riggen tun.</translation>
-    </message>
-    <message>
-        <source>Rig Now</source>
-        <translation>Jetzt riggen</translation>
-    </message>
-    <message>
-        <source>Not Now</source>
-        <translation>Nicht jetzt</translation>
     </message>
     <message>
         <source>Co&amp;nnect Bone</source>
@@ -1844,18 +1739,6 @@
     <message>
         <source>Move the selected bone&apos;s head onto its parent&apos;s tail, as Blender&apos;s Connected does (cut and merge need connected bones)</source>
         <translation>Den Kopf des gewählten Knochens auf das Ende seines Elternknochens setzen, wie Blenders „Verbunden“ (Schneiden und Zusammenfügen brauchen verbundene Knochen)</translation>
-    </message>
-    <message>
-        <source>Select the joint of the bone to connect first</source>
-        <translation>Wählen Sie zuerst das Gelenk des zu verbindenden Knochens</translation>
-    </message>
-    <message>
-        <source>The selected joint ends no bone</source>
-        <translation>Am gewählten Gelenk endet kein Knochen</translation>
-    </message>
-    <message>
-        <source>Bone not connected: %1</source>
-        <translation>Knochen nicht verbunden: %1</translation>
     </message>
 </context>
 <context>
@@ -2098,6 +1981,10 @@
         <source>Pose</source>
         <translation>Posieren</translation>
     </message>
+    <message>
+        <source>Not posed: %1</source>
+        <translation>Nicht posiert: %1</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::PreferencesDialog</name>
@@ -2301,6 +2188,57 @@
 Not rigged: imported as a static mesh. Tools &gt; Auto-Rig Part gives it a skeleton and skin weights.</source>
         <translation>
 Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch riggen gibt ihm ein Skelett und Skin-Gewichte.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::RigController</name>
+    <message>
+        <source>Select a part to rig first</source>
+        <translation>Wählen Sie zuerst ein Teil zum Riggen aus</translation>
+    </message>
+    <message>
+        <source>%1 already has a skeleton; Auto-Rig is for parts without one, such as imported meshes</source>
+        <translation>%1 hat bereits ein Skelett; automatisches Riggen ist für Teile ohne Skelett, etwa importierte Netze</translation>
+    </message>
+    <message>
+        <source>Rigging %1</source>
+        <translation>%1 wird geriggt</translation>
+    </message>
+    <message>
+        <source>Cannot rig %1</source>
+        <translation>%1 kann nicht geriggt werden</translation>
+    </message>
+    <message>
+        <source>Rigging %1 cancelled</source>
+        <translation>Riggen von %1 abgebrochen</translation>
+    </message>
+    <message>
+        <source>Imported without a rig</source>
+        <translation>Ohne Rig importiert</translation>
+    </message>
+    <message>
+        <source>Auto-Rig gives a closed mesh a skeleton from its shape and skin weights, so it can be posed, cut, merged and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
+        <translation>Automatisches Riggen gibt einem geschlossenen Netz ein Skelett aus seiner Form und Skin-Gewichte, sodass es sich wie ein skizziertes Teil posieren, schneiden, zusammenführen und bemalen lässt. Sie können das auch später mit Werkzeuge &gt; Teil automatisch riggen tun.</translation>
+    </message>
+    <message>
+        <source>Rig Now</source>
+        <translation>Jetzt riggen</translation>
+    </message>
+    <message>
+        <source>Not Now</source>
+        <translation>Nicht jetzt</translation>
+    </message>
+    <message>
+        <source>Select the joint of the bone to connect first</source>
+        <translation>Wählen Sie zuerst das Gelenk des zu verbindenden Knochens</translation>
+    </message>
+    <message>
+        <source>The selected joint ends no bone</source>
+        <translation>Am gewählten Gelenk endet kein Knochen</translation>
+    </message>
+    <message>
+        <source>Bone not connected: %1</source>
+        <translation>Knochen nicht verbunden: %1</translation>
     </message>
 </context>
 <context>
@@ -2621,6 +2559,80 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
     <message>
         <source>Connect Bone</source>
         <translation>Knochen verbinden</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::WeightsController</name>
+    <message>
+        <source>Recompute Weights</source>
+        <translation>Gewichte neu berechnen</translation>
+    </message>
+    <message>
+        <source>Weigh&amp;ts</source>
+        <translation>Ge&amp;wichte</translation>
+    </message>
+    <message>
+        <source>Select a part first</source>
+        <translation>Wählen Sie zuerst ein Teil aus</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n vertices changed</source>
+        <translation>
+            <numerusform>%1: %n Vertex geändert</numerusform>
+            <numerusform>%1: %n Vertices geändert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Normalize All</source>
+        <translation>Alle &amp;normalisieren</translation>
+    </message>
+    <message>
+        <source>&amp;Clean (below 0.01)</source>
+        <translation>&amp;Bereinigen (unter 0,01)</translation>
+    </message>
+    <message>
+        <source>&amp;Limit Total (4 bones)</source>
+        <translation>Gesamtzahl &amp;begrenzen (4 Knochen)</translation>
+    </message>
+    <message>
+        <source>&amp;Smooth All</source>
+        <translation>Alle &amp;glätten</translation>
+    </message>
+    <message>
+        <source>Every unlocked bone&apos;s weight halfway towards its neighbours&apos; mean</source>
+        <translation>Das Gewicht jedes nicht gesperrten Knochens halb zum Mittel seiner Nachbarn hin</translation>
+    </message>
+    <message>
+        <source>&amp;Recompute Weights (Bone Heat)</source>
+        <translation>Gewichte neu &amp;berechnen (Knochenwärme)</translation>
+    </message>
+    <message>
+        <source>Bone heat over the whole part again, as a new sketch gets it; locked bones keep their weights</source>
+        <translation>Knochenwärme erneut über das ganze Teil, wie eine neue Skizze sie bekommt; gesperrte Knochen behalten ihre Gewichte</translation>
+    </message>
+    <message>
+        <source>Check &amp;Rig</source>
+        <translation>&amp;Rig prüfen</translation>
+    </message>
+    <message>
+        <source>%1 has no skeleton, so it has no weights to recompute</source>
+        <translation>%1 hat kein Skelett und daher keine Gewichte zum Neuberechnen</translation>
+    </message>
+    <message>
+        <source>The weights of %1 were painted or cleaned up by hand. Recomputing them by bone heat replaces that work (locked bones keep theirs; Undo brings it back). Recompute anyway?</source>
+        <translation>Die Gewichte von %1 wurden von Hand gemalt oder bereinigt. Sie mit Knochenwärme neu zu berechnen ersetzt diese Arbeit (gesperrte Knochen behalten ihre; Rückgängig holt sie zurück). Trotzdem neu berechnen?</translation>
+    </message>
+    <message>
+        <source>Weights not recomputed: the painted weights are kept</source>
+        <translation>Gewichte nicht neu berechnet: die gemalten Gewichte bleiben erhalten</translation>
+    </message>
+    <message>
+        <source>Recomputing the weights of %1</source>
+        <translation>Gewichte von %1 werden neu berechnet</translation>
+    </message>
+    <message>
+        <source>Weights not recomputed: %1</source>
+        <translation>Gewichte nicht neu berechnet: %1</translation>
     </message>
 </context>
 <context>

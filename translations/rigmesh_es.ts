@@ -1160,6 +1160,87 @@
     </message>
 </context>
 <context>
+    <name>rigmesh::widgets::ExchangeController</name>
+    <message>
+        <source>Import</source>
+        <translation>Importar</translation>
+    </message>
+    <message>
+        <source>3D scenes (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;All files (*)</source>
+        <translation>Escenas 3D (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>Importando %1</translation>
+    </message>
+    <message>
+        <source>Cannot import</source>
+        <translation>No se puede importar</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled</source>
+        <translation>Importación de %1 cancelada</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n part(s) from %1</source>
+        <translation>
+            <numerusform>Se ha importado %n pieza de %1</numerusform>
+            <numerusform>Se han importado %n piezas de %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>: %n of them without a skeleton, so they cannot be posed yet.</source>
+        <translation>
+            <numerusform>: %n de ellas sin esqueleto, así que aún no se puede posar.</numerusform>
+            <numerusform>: %n de ellas sin esqueleto, así que aún no se pueden posar.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save History as Recipe</source>
+        <translation>Guardar historial como receta</translation>
+    </message>
+    <message>
+        <source>RigMesh recipes (*.json)</source>
+        <translation>Recetas de RigMesh (*.json)</translation>
+    </message>
+    <message>
+        <source>Saved the history as %1: replay it with rigmesh run</source>
+        <translation>Se ha guardado el historial como %1: reprodúzcalo con rigmesh run</translation>
+    </message>
+    <message>
+        <source>Cannot save the recipe</source>
+        <translation>No se puede guardar la receta</translation>
+    </message>
+    <message>
+        <source>Nothing to export: sketch a part first</source>
+        <translation>No hay nada que exportar: dibuje primero una pieza</translation>
+    </message>
+    <message>
+        <source>Exporting %1</source>
+        <translation>Exportando %1</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>No se puede exportar</translation>
+    </message>
+    <message>
+        <source>%1 could not be replaced: %2</source>
+        <translation>No se ha podido reemplazar %1: %2</translation>
+    </message>
+    <message>
+        <source>no animation: no visible part has keys</source>
+        <translation>sin animación: ninguna pieza visible tiene claves</translation>
+    </message>
+    <message>
+        <source>Exported %1%2</source>
+        <translation>Se ha exportado %1%2</translation>
+    </message>
+    <message>
+        <source>Export of %1 cancelled: nothing written</source>
+        <translation>Exportación de %1 cancelada: no se ha escrito nada</translation>
+    </message>
+</context>
+<context>
     <name>rigmesh::widgets::ExportDialog</name>
     <message>
         <source>glTF 2.0 binary (.glb)</source>
@@ -1276,6 +1357,57 @@
     <message>
         <source>%1 (*.%2)</source>
         <translation>%1 (*.%2)</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::FilesController</name>
+    <message>
+        <source>Untitled %1</source>
+        <translation>Sin título %1</translation>
+    </message>
+    <message>
+        <source>Open Document</source>
+        <translation>Abrir documento</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Se ha abierto %1</translation>
+    </message>
+    <message>
+        <source>Cannot open document</source>
+        <translation>No se puede abrir el documento</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Se ha guardado %1</translation>
+    </message>
+    <message>
+        <source>Cannot save document</source>
+        <translation>No se puede guardar el documento</translation>
+    </message>
+    <message>
+        <source>Save Document</source>
+        <translation>Guardar documento</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Cambios sin guardar</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 tiene cambios sin guardar. ¿Guardarlos?</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work?</source>
+        <translation>¿Recuperar el trabajo sin guardar?</translation>
+    </message>
+    <message>
+        <source>RigMesh Studio did not close properly. Restore the document autosaved at %1?</source>
+        <translation>RigMesh Studio no se cerró correctamente. ¿Restaurar el documento guardado automáticamente el %1?</translation>
+    </message>
+    <message>
+        <source>Could not recover: %1</source>
+        <translation>No se pudo recuperar: %1</translation>
     </message>
 </context>
 <context>
@@ -1569,108 +1701,12 @@
         <translation>RigMesh Studio</translation>
     </message>
     <message>
-        <source>Untitled %1</source>
-        <translation>Sin título %1</translation>
-    </message>
-    <message>
-        <source>Open Document</source>
-        <translation>Abrir documento</translation>
-    </message>
-    <message>
-        <source>Opened %1</source>
-        <translation>Se ha abierto %1</translation>
-    </message>
-    <message>
-        <source>Cannot open document</source>
-        <translation>No se puede abrir el documento</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>Se ha guardado %1</translation>
-    </message>
-    <message>
-        <source>Cannot save document</source>
-        <translation>No se puede guardar el documento</translation>
-    </message>
-    <message>
-        <source>Save Document</source>
-        <translation>Guardar documento</translation>
-    </message>
-    <message>
-        <source>Unsaved changes</source>
-        <translation>Cambios sin guardar</translation>
-    </message>
-    <message>
-        <source>%1 has unsaved changes. Save them?</source>
-        <translation>%1 tiene cambios sin guardar. ¿Guardarlos?</translation>
-    </message>
-    <message>
         <source>Select a part to reset its pose</source>
         <translation>Seleccione una pieza para restablecer su pose</translation>
     </message>
     <message>
         <source>Select a part to delete</source>
         <translation>Seleccione la pieza que eliminar</translation>
-    </message>
-    <message>
-        <source>Recover unsaved work?</source>
-        <translation>¿Recuperar el trabajo sin guardar?</translation>
-    </message>
-    <message>
-        <source>RigMesh Studio did not close properly. Restore the document autosaved at %1?</source>
-        <translation>RigMesh Studio no se cerró correctamente. ¿Restaurar el documento guardado automáticamente el %1?</translation>
-    </message>
-    <message>
-        <source>Could not recover: %1</source>
-        <translation>No se pudo recuperar: %1</translation>
-    </message>
-    <message>
-        <source>Import</source>
-        <translation>Importar</translation>
-    </message>
-    <message>
-        <source>3D scenes (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;All files (*)</source>
-        <translation>Escenas 3D (*.glb *.gltf *.fbx *.dae *.obj *.ply *.off *.stl);;Todos los archivos (*)</translation>
-    </message>
-    <message>
-        <source>Imported without a rig</source>
-        <translation>Importado sin rig</translation>
-    </message>
-    <message>
-        <source>Cannot import</source>
-        <translation>No se puede importar</translation>
-    </message>
-    <message>
-        <source>Save History as Recipe</source>
-        <translation>Guardar historial como receta</translation>
-    </message>
-    <message>
-        <source>RigMesh recipes (*.json)</source>
-        <translation>Recetas de RigMesh (*.json)</translation>
-    </message>
-    <message>
-        <source>Saved the history as %1: replay it with rigmesh run</source>
-        <translation>Se ha guardado el historial como %1: reprodúzcalo con rigmesh run</translation>
-    </message>
-    <message>
-        <source>Cannot save the recipe</source>
-        <translation>No se puede guardar la receta</translation>
-    </message>
-    <message>
-        <source>Nothing to export: sketch a part first</source>
-        <translation>No hay nada que exportar: dibuje primero una pieza</translation>
-    </message>
-    <message>
-        <source>no animation: no visible part has keys</source>
-        <translation>sin animación: ninguna pieza visible tiene claves</translation>
-    </message>
-    <message>
-        <source>Exported %1%2</source>
-        <translation>Se ha exportado %1%2</translation>
-    </message>
-    <message>
-        <source>Cannot export</source>
-        <translation>No se puede exportar</translation>
     </message>
     <message>
         <source>The new language applies when RigMesh Studio starts again.</source>
@@ -1689,153 +1725,12 @@
         <translation>Colorear la superficie según sus pesos de piel (Vista &gt; Pesos)</translation>
     </message>
     <message>
-        <source>Weigh&amp;ts</source>
-        <translation>Pe&amp;sos</translation>
-    </message>
-    <message>
-        <source>Select a part first</source>
-        <translation>Seleccione primero una pieza</translation>
-    </message>
-    <message numerus="yes">
-        <source>%1: %n vertices changed</source>
-        <translation>
-            <numerusform>%1: %n vértice cambiado</numerusform>
-            <numerusform>%1: %n vértices cambiados</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>&amp;Normalize All</source>
-        <translation>&amp;Normalizar todo</translation>
-    </message>
-    <message>
-        <source>&amp;Clean (below 0.01)</source>
-        <translation>&amp;Limpiar (por debajo de 0,01)</translation>
-    </message>
-    <message>
-        <source>&amp;Limit Total (4 bones)</source>
-        <translation>Limitar &amp;total (4 huesos)</translation>
-    </message>
-    <message>
-        <source>&amp;Smooth All</source>
-        <translation>&amp;Suavizar todo</translation>
-    </message>
-    <message>
-        <source>Every unlocked bone&apos;s weight halfway towards its neighbours&apos; mean</source>
-        <translation>El peso de cada hueso no bloqueado, a medio camino hacia la media de sus vecinos</translation>
-    </message>
-    <message>
-        <source>Check &amp;Rig</source>
-        <translation>&amp;Comprobar rig</translation>
-    </message>
-    <message numerus="yes">
-        <source>Imported %n part(s) from %1</source>
-        <translation>
-            <numerusform>Se ha importado %n pieza de %1</numerusform>
-            <numerusform>Se han importado %n piezas de %1</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Importing %1</source>
-        <translation>Importando %1</translation>
-    </message>
-    <message>
-        <source>Import of %1 cancelled</source>
-        <translation>Importación de %1 cancelada</translation>
-    </message>
-    <message>
-        <source>Cannot write into %1</source>
-        <translation>No se puede escribir en %1</translation>
-    </message>
-    <message>
-        <source>Exporting %1</source>
-        <translation>Exportando %1</translation>
-    </message>
-    <message>
-        <source>%1 could not be replaced: %2</source>
-        <translation>No se ha podido reemplazar %1: %2</translation>
-    </message>
-    <message>
-        <source>Export of %1 cancelled: nothing written</source>
-        <translation>Exportación de %1 cancelada: no se ha escrito nada</translation>
-    </message>
-    <message>
-        <source>Recompute Weights</source>
-        <translation>Recalcular pesos</translation>
-    </message>
-    <message>
-        <source>&amp;Recompute Weights (Bone Heat)</source>
-        <translation>&amp;Recalcular pesos (calor de huesos)</translation>
-    </message>
-    <message>
-        <source>Bone heat over the whole part again, as a new sketch gets it; locked bones keep their weights</source>
-        <translation>Calor de huesos de nuevo sobre toda la pieza, como lo recibe un boceto nuevo; los huesos bloqueados conservan sus pesos</translation>
-    </message>
-    <message>
-        <source>%1 has no skeleton, so it has no weights to recompute</source>
-        <translation>%1 no tiene esqueleto, así que no tiene pesos que recalcular</translation>
-    </message>
-    <message>
-        <source>The weights of %1 were painted or cleaned up by hand. Recomputing them by bone heat replaces that work (locked bones keep theirs; Undo brings it back). Recompute anyway?</source>
-        <translation>Los pesos de %1 se pintaron o limpiaron a mano. Recalcularlos con calor de huesos sustituye ese trabajo (los huesos bloqueados conservan los suyos; Deshacer lo recupera). ¿Recalcular de todos modos?</translation>
-    </message>
-    <message>
-        <source>Weights not recomputed: the painted weights are kept</source>
-        <translation>No se han recalculado los pesos: se conservan los pesos pintados</translation>
-    </message>
-    <message>
-        <source>Recomputing the weights of %1</source>
-        <translation>Recalculando los pesos de %1</translation>
-    </message>
-    <message>
-        <source>Weights not recomputed: %1</source>
-        <translation>No se han recalculado los pesos: %1</translation>
-    </message>
-    <message>
         <source>&amp;Auto-Rig Part</source>
         <translation>&amp;Rig automático de la pieza</translation>
     </message>
     <message>
         <source>Give the selected part without a skeleton (an imported mesh) a skeleton from its shape and skin weights</source>
         <translation>Dar a la pieza seleccionada sin esqueleto (una malla importada) un esqueleto a partir de su forma y pesos de piel</translation>
-    </message>
-    <message numerus="yes">
-        <source>: %n of them without a skeleton, so they cannot be posed yet.</source>
-        <translation>
-            <numerusform>: %n de ellas sin esqueleto, así que aún no se puede posar.</numerusform>
-            <numerusform>: %n de ellas sin esqueleto, así que aún no se pueden posar.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Select a part to rig first</source>
-        <translation>Selecciona primero una pieza para riggear</translation>
-    </message>
-    <message>
-        <source>%1 already has a skeleton; Auto-Rig is for parts without one, such as imported meshes</source>
-        <translation>%1 ya tiene un esqueleto; el rig automático es para piezas sin esqueleto, como las mallas importadas</translation>
-    </message>
-    <message>
-        <source>Rigging %1</source>
-        <translation>Riggeando %1</translation>
-    </message>
-    <message>
-        <source>Cannot rig %1</source>
-        <translation>No se puede riggear %1</translation>
-    </message>
-    <message>
-        <source>Rigging %1 cancelled</source>
-        <translation>Rigging de %1 cancelado</translation>
-    </message>
-    <message>
-        <source>Auto-Rig gives a closed mesh a skeleton from its shape and skin weights, so it can be posed, cut, merged and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
-        <translation>El rig automático da a una malla cerrada un esqueleto a partir de su forma y pesos de piel, para que se pueda posar, cortar, fusionar y pintar como una pieza dibujada. También puedes hacerlo más tarde con Herramientas &gt; Rig automático de la pieza.</translation>
-    </message>
-    <message>
-        <source>Rig Now</source>
-        <translation>Riggear ahora</translation>
-    </message>
-    <message>
-        <source>Not Now</source>
-        <translation>Ahora no</translation>
     </message>
     <message>
         <source>Co&amp;nnect Bone</source>
@@ -1844,18 +1739,6 @@
     <message>
         <source>Move the selected bone&apos;s head onto its parent&apos;s tail, as Blender&apos;s Connected does (cut and merge need connected bones)</source>
         <translation>Mover la cabeza del hueso seleccionado a la cola de su padre, como «Conectado» de Blender (cortar y unir necesitan huesos conectados)</translation>
-    </message>
-    <message>
-        <source>Select the joint of the bone to connect first</source>
-        <translation>Seleccione primero la articulación del hueso que quiere conectar</translation>
-    </message>
-    <message>
-        <source>The selected joint ends no bone</source>
-        <translation>En la articulación seleccionada no termina ningún hueso</translation>
-    </message>
-    <message>
-        <source>Bone not connected: %1</source>
-        <translation>Hueso no conectado: %1</translation>
     </message>
 </context>
 <context>
@@ -2098,6 +1981,10 @@
         <source>Pose</source>
         <translation>Posar</translation>
     </message>
+    <message>
+        <source>Not posed: %1</source>
+        <translation>No se ha posado: %1</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::PreferencesDialog</name>
@@ -2301,6 +2188,57 @@
 Not rigged: imported as a static mesh. Tools &gt; Auto-Rig Part gives it a skeleton and skin weights.</source>
         <translation>
 Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la pieza le da un esqueleto y pesos de piel.</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::RigController</name>
+    <message>
+        <source>Select a part to rig first</source>
+        <translation>Selecciona primero una pieza para riggear</translation>
+    </message>
+    <message>
+        <source>%1 already has a skeleton; Auto-Rig is for parts without one, such as imported meshes</source>
+        <translation>%1 ya tiene un esqueleto; el rig automático es para piezas sin esqueleto, como las mallas importadas</translation>
+    </message>
+    <message>
+        <source>Rigging %1</source>
+        <translation>Riggeando %1</translation>
+    </message>
+    <message>
+        <source>Cannot rig %1</source>
+        <translation>No se puede riggear %1</translation>
+    </message>
+    <message>
+        <source>Rigging %1 cancelled</source>
+        <translation>Rigging de %1 cancelado</translation>
+    </message>
+    <message>
+        <source>Imported without a rig</source>
+        <translation>Importado sin rig</translation>
+    </message>
+    <message>
+        <source>Auto-Rig gives a closed mesh a skeleton from its shape and skin weights, so it can be posed, cut, merged and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
+        <translation>El rig automático da a una malla cerrada un esqueleto a partir de su forma y pesos de piel, para que se pueda posar, cortar, fusionar y pintar como una pieza dibujada. También puedes hacerlo más tarde con Herramientas &gt; Rig automático de la pieza.</translation>
+    </message>
+    <message>
+        <source>Rig Now</source>
+        <translation>Riggear ahora</translation>
+    </message>
+    <message>
+        <source>Not Now</source>
+        <translation>Ahora no</translation>
+    </message>
+    <message>
+        <source>Select the joint of the bone to connect first</source>
+        <translation>Seleccione primero la articulación del hueso que quiere conectar</translation>
+    </message>
+    <message>
+        <source>The selected joint ends no bone</source>
+        <translation>En la articulación seleccionada no termina ningún hueso</translation>
+    </message>
+    <message>
+        <source>Bone not connected: %1</source>
+        <translation>Hueso no conectado: %1</translation>
     </message>
 </context>
 <context>
@@ -2621,6 +2559,80 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
     <message>
         <source>Connect Bone</source>
         <translation>Conectar hueso</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::WeightsController</name>
+    <message>
+        <source>Recompute Weights</source>
+        <translation>Recalcular pesos</translation>
+    </message>
+    <message>
+        <source>Weigh&amp;ts</source>
+        <translation>Pe&amp;sos</translation>
+    </message>
+    <message>
+        <source>Select a part first</source>
+        <translation>Seleccione primero una pieza</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n vertices changed</source>
+        <translation>
+            <numerusform>%1: %n vértice cambiado</numerusform>
+            <numerusform>%1: %n vértices cambiados</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Normalize All</source>
+        <translation>&amp;Normalizar todo</translation>
+    </message>
+    <message>
+        <source>&amp;Clean (below 0.01)</source>
+        <translation>&amp;Limpiar (por debajo de 0,01)</translation>
+    </message>
+    <message>
+        <source>&amp;Limit Total (4 bones)</source>
+        <translation>Limitar &amp;total (4 huesos)</translation>
+    </message>
+    <message>
+        <source>&amp;Smooth All</source>
+        <translation>&amp;Suavizar todo</translation>
+    </message>
+    <message>
+        <source>Every unlocked bone&apos;s weight halfway towards its neighbours&apos; mean</source>
+        <translation>El peso de cada hueso no bloqueado, a medio camino hacia la media de sus vecinos</translation>
+    </message>
+    <message>
+        <source>&amp;Recompute Weights (Bone Heat)</source>
+        <translation>&amp;Recalcular pesos (calor de huesos)</translation>
+    </message>
+    <message>
+        <source>Bone heat over the whole part again, as a new sketch gets it; locked bones keep their weights</source>
+        <translation>Calor de huesos de nuevo sobre toda la pieza, como lo recibe un boceto nuevo; los huesos bloqueados conservan sus pesos</translation>
+    </message>
+    <message>
+        <source>Check &amp;Rig</source>
+        <translation>&amp;Comprobar rig</translation>
+    </message>
+    <message>
+        <source>%1 has no skeleton, so it has no weights to recompute</source>
+        <translation>%1 no tiene esqueleto, así que no tiene pesos que recalcular</translation>
+    </message>
+    <message>
+        <source>The weights of %1 were painted or cleaned up by hand. Recomputing them by bone heat replaces that work (locked bones keep theirs; Undo brings it back). Recompute anyway?</source>
+        <translation>Los pesos de %1 se pintaron o limpiaron a mano. Recalcularlos con calor de huesos sustituye ese trabajo (los huesos bloqueados conservan los suyos; Deshacer lo recupera). ¿Recalcular de todos modos?</translation>
+    </message>
+    <message>
+        <source>Weights not recomputed: the painted weights are kept</source>
+        <translation>No se han recalculado los pesos: se conservan los pesos pintados</translation>
+    </message>
+    <message>
+        <source>Recomputing the weights of %1</source>
+        <translation>Recalculando los pesos de %1</translation>
+    </message>
+    <message>
+        <source>Weights not recomputed: %1</source>
+        <translation>No se han recalculado los pesos: %1</translation>
     </message>
 </context>
 <context>

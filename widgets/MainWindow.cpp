@@ -4,9 +4,8 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QDockWidget>
-#include <QFileDialog>
-#include <QFileInfo>
 #include <QIcon>
 #include <QLabel>
 #include <QMenuBar>
@@ -19,22 +18,21 @@
 #include <QTabWidget>
 #include <QToolBar>
 #include <QUndoView>
+#include <tuple>
 
 #include "DocumentView.h"
 #include "MouseHint.h"
 #include "base/Error.h"
-#include "dialogs/ExportDialog.h"
+#include "controllers/ExchangeController.h"
+#include "controllers/FilesController.h"
+#include "controllers/RigController.h"
+#include "controllers/WeightsController.h"
 #include "jobs/JobRunner.h"
 #include "jobs/JobStatus.h"
-#include "model/Autosave.h"
-#include "model/DocumentExport.h"
-#include "model/DocumentFile.h"
 #include "model/ErrorText.h"
 #include "model/PoseChange.h"
 #include "model/commands/DeletePartCommand.h"
-#include "model/commands/ImportPartsCommand.h"
 #include "model/commands/ResetPoseCommand.h"
-#include "model/recipe/RecipeFromHistory.h"
 #include "panels/OutlinerPanel.h"
 #include "panels/PropertiesPanel.h"
 #include "panels/WeightsPanel.h"
@@ -63,31 +61,15 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
       weights_(new WeightsPanel(this)),
       history_(new QUndoView(&undoGroup_, this)),
       timeline_(new TimelineDock(this)),
-      selectTool_(new SelectTool(this)),
-      sketchTool_(new SketchTool(this)),
-      poseTool_(new PoseTool(this)),
-      mergeTool_(new MergeTool(this)),
-      cutTool_(new CutTool(this)),
-      paintTool_(new PaintTool(this)),
-      recoveryDirectory_(recoveryDirectory.isEmpty() ? QStandardPaths::writableLocation(
-                                                           QStandardPaths::AppLocalDataLocation) +
-                                                           QStringLiteral("/recovery")
-                                                     : recoveryDirectory) {
+      tools_(new ToolRegistry(this)) {
     registerIconResources();
     setObjectName(QStringLiteral("RigMeshStudioMainWindow"));
     setWindowIcon(QIcon(QStringLiteral(":/icons/rigmesh-studio.svg")));
-    confirmDiscardWeights = [this](const QString& question) {
-        return QMessageBox::question(this, tr("Recompute Weights"), question,
-                                     QMessageBox::Yes | QMessageBox::Cancel,
-                                     QMessageBox::Cancel) == QMessageBox::Yes;
-    };
     tabs_->setTabsClosable(true);
     tabs_->setDocumentMode(true);
     setCentralWidget(tabs_);
     connect(tabs_, &QTabWidget::currentChanged, this, &MainWindow::currentTabChanged);
     connect(tabs_, &QTabWidget::tabCloseRequested, this, &MainWindow::closeDocument);
-    connect(sketchTool_, &SketchTool::hintMessage, this,
-            [this](const QString& m) { showStatus(m, 5000); });
     connect(properties_, &PropertiesPanel::statusMessage, this, &MainWindow::showStatus);
     connect(weights_, &WeightsPanel::statusMessage, this, &MainWindow::showStatus);
     connect(timeline_, &TimelineDock::statusMessage, this, &MainWindow::showStatus);
@@ -95,9 +77,26 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
         if (auto* v = currentView())
             v->viewport()->setOnionSkin(on);
     });
-    // Long work runs off the GUI thread, one job at a time (issue 16 item 3).
+    // Long work runs off the GUI thread, one job at a time.
     jobs_ = new JobRunner(this);
     jobStatus_ = new JobStatus(this, jobs_);
+    // The features, each its own controller over this window (StudioHost).
+    files_ = new FilesController(
+        *this,
+        recoveryDirectory.isEmpty()
+            ? QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) +
+                  QStringLiteral("/recovery")
+            : recoveryDirectory,
+        this);
+    rig_ = new RigController(*this, this);
+    exchange_ = new ExchangeController(
+        *this, *rig_,
+        [this] {
+            return dqsAction_->isChecked() ? SkinningMethod::DualQuaternion
+                                           : SkinningMethod::LinearBlend;
+        },
+        this);
+    weightsController_ = new WeightsController(*this, weights_, this);
     properties_->setJobRunner(jobs_);
     mouseHint_ = new MouseHint(tabs_);
     createActions();
@@ -110,7 +109,6 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     if (!settings.contains(QStringLiteral("window/geometry")))
         resize(1280, 800);
-    rebuildRecentMenu();
     updateTitle();
     mouseHint_->showOnFirstRun();
     showStatus(tr("Ready: S sketches a part, Q selects, P poses; %1")
@@ -127,7 +125,7 @@ MainWindow::~MainWindow() {
             continue;
         disconnect(view->document(), nullptr, this, nullptr);
         undoGroup_.removeStack(view->document()->undoStack());
-        autosaves_.erase(view);
+        files_->unwatch(view);
         delete view;
     }
 }
@@ -149,18 +147,23 @@ void MainWindow::createActions() {
     };
     toolbar->addAction(
         add(file, tr("&New"), QKeySequence::New, &MainWindow::newDocument, QStyle::SP_FileIcon));
-    toolbar->addAction(add(file, tr("&Open..."), QKeySequence::Open, &MainWindow::open,
-                           QStyle::SP_DialogOpenButton));
-    recentMenu_ = file->addMenu(tr("Open &Recent"));
-    toolbar->addAction(
-        add(file, tr("&Save"), QKeySequence::Save, &MainWindow::save, QStyle::SP_DialogSaveButton));
+    toolbar->addAction(add(
+        file, tr("&Open..."), QKeySequence::Open, [this] { files_->open(); },
+        QStyle::SP_DialogOpenButton));
+    files_->setRecentMenu(file->addMenu(tr("Open &Recent")));
+    toolbar->addAction(add(
+        file, tr("&Save"), QKeySequence::Save, [this] { files_->save(); },
+        QStyle::SP_DialogSaveButton));
     // Explicit: QKeySequence::SaveAs is empty on platforms without a desktop theme.
     add(file, tr("Save &As..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
-        &MainWindow::saveAs);
+        [this] { files_->saveAs(); });
     file->addSeparator();
-    add(file, tr("&Import..."), QKeySequence(Qt::CTRL | Qt::Key_I), &MainWindow::importFile);
-    add(file, tr("&Export..."), QKeySequence(Qt::CTRL | Qt::Key_E), &MainWindow::exportDocument);
-    add(file, tr("Save History as &Recipe..."), QKeySequence(), &MainWindow::saveHistoryAsRecipe);
+    add(file, tr("&Import..."), QKeySequence(Qt::CTRL | Qt::Key_I),
+        [this] { exchange_->importFile(); });
+    add(file, tr("&Export..."), QKeySequence(Qt::CTRL | Qt::Key_E),
+        [this] { exchange_->exportDocument(); });
+    add(file, tr("Save History as &Recipe..."), QKeySequence(),
+        [this] { exchange_->saveHistoryAsRecipe(); });
     file->addSeparator();
     add(file, tr("&Close"), QKeySequence::Close, [this] { closeDocument(tabs_->currentIndex()); });
     add(file, tr("&Quit"), QKeySequence::Quit, &QWidget::close);
@@ -186,7 +189,7 @@ void MainWindow::createActions() {
     edit->addSeparator();
     add(edit, tr("&Delete Part"), QKeySequence::Delete, &MainWindow::deleteSelection,
         QStyle::SP_TrashIcon);
-    add(edit, tr("Co&nnect Bone"), QKeySequence(), &MainWindow::connectSelectedBone)
+    add(edit, tr("Co&nnect Bone"), QKeySequence(), [this] { rig_->connectSelectedBone(); })
         ->setToolTip(tr("Move the selected bone's head onto its parent's tail, as Blender's "
                         "Connected does (cut and merge need connected bones)"));
     edit->addSeparator();
@@ -219,7 +222,7 @@ void MainWindow::createActions() {
         if (auto* v = currentView())
             v->viewport()->setDualQuaternionSkinning(on);
     });
-    // Skin weight views (issue 14 item 1), like Blender's weight paint display.
+    // Skin weight views, like Blender's weight paint display.
     auto* weights = viewMenu_->addMenu(tr("&Weights"));
     weightViewGroup_ = new QActionGroup(this);
     const std::pair<QString, WeightView> views[] = {
@@ -253,47 +256,18 @@ void MainWindow::createActions() {
     viewMenu_->addSeparator();
 
     auto* tools = menuBar()->addMenu(tr("&Tools"));
-    toolGroup_ = new QActionGroup(this);
-    // Our own icons (resources/icons, drawn by Qt's SVG icon engine,
-    // libqt6svg6) say what each tool does.
-    selectToolAction_ =
-        add(tools, tr("&Select / Move"), QKeySequence(Qt::Key_Q), &MainWindow::activateSelectTool);
-    selectToolAction_->setIcon(QIcon(QStringLiteral(":/icons/select.svg")));
-    sketchToolAction_ =
-        add(tools, tr("S&ketch Part"), QKeySequence(Qt::Key_S), &MainWindow::activateSketchTool);
-    sketchToolAction_->setIcon(QIcon(QStringLiteral(":/icons/sketch.svg")));
-    poseToolAction_ =
-        add(tools, tr("&Pose"), QKeySequence(Qt::Key_P), &MainWindow::activatePoseTool);
-    poseToolAction_->setIcon(QIcon(QStringLiteral(":/icons/pose.svg")));
-    mergeToolAction_ =
-        add(tools, tr("&Merge Parts"), QKeySequence(Qt::Key_M), &MainWindow::activateMergeTool);
-    mergeToolAction_->setIcon(QIcon(QStringLiteral(":/icons/merge.svg")));
-    cutToolAction_ =
-        add(tools, tr("&Cut Part"), QKeySequence(Qt::Key_C), &MainWindow::activateCutTool);
-    cutToolAction_->setIcon(QIcon(QStringLiteral(":/icons/cut.svg")));
-    paintToolAction_ =
-        add(tools, tr("Paint &Weights"), QKeySequence(Qt::Key_W), &MainWindow::activatePaintTool);
-    paintToolAction_->setIcon(QIcon(QStringLiteral(":/icons/paint.svg")));
+    toolbar->addSeparator();
+    createTools(tools, toolbar);
     tools->addSeparator();
     add(tools, tr("&Reset Pose"), QKeySequence(Qt::ALT | Qt::Key_R), &MainWindow::resetPose);
-    QAction* rig = add(tools, tr("&Auto-Rig Part"), QKeySequence(), &MainWindow::rigSelectedPart);
+    QAction* rig =
+        add(tools, tr("&Auto-Rig Part"), QKeySequence(), [this] { rig_->rigSelectedPart(); });
     rig->setObjectName(QStringLiteral("autoRigPart"));
     rig->setToolTip(
         tr("Give the selected part without a skeleton (an imported mesh) a skeleton "
            "from its shape and skin weights"));
-    createWeightMenu(tools);
-    for (const auto& [action, tool] : toolPairs()) {
-        action->setCheckable(true);
-        toolGroup_->addAction(action);
-    }
-    toolbar->addSeparator();
-    toolbar->addAction(selectToolAction_);
-    toolbar->addAction(sketchToolAction_);
-    toolbar->addAction(poseToolAction_);
-    toolbar->addAction(mergeToolAction_);
-    toolbar->addAction(cutToolAction_);
-    toolbar->addAction(paintToolAction_);
-    sketchToolAction_->setChecked(true);
+    weightsController_->addMenu(tools);
+    createWeightViewBar();
 
     auto* help = menuBar()->addMenu(tr("&Help"));
     add(help, tr("&Mouse Gestures"), QKeySequence(), [this] {
@@ -334,15 +308,15 @@ void MainWindow::createDocks() {
     none->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     none->setMargin(6);
     toolOptions_->addWidget(none);
-    for (const auto& [action, tool] : toolPairs())
-        if (QWidget* options = tool->optionsWidget())
+    for (const ToolRegistry::Entry& entry : tools_->entries())
+        if (QWidget* options = entry.tool->optionsWidget())
             toolOptions_->addWidget(options);
     dock(tr("Tool Options"), "toolOptionsDock", toolOptions_, Qt::LeftDockWidgetArea);
     // The timeline along the bottom, under the view, as in Blender.
     dock(tr("Timeline"), "timelineDock", timeline_, Qt::BottomDockWidgetArea);
 }
 
-// Transport and keying (issue 15), window-wide as in Blender: a text field
+// Transport and keying, window-wide as in Blender: a text field
 // or spin box with the focus keeps its own keys (Qt's shortcut override).
 void MainWindow::createTimelineActions() {
     auto* menu = new QMenu(tr("&Animation"), this);
@@ -374,11 +348,6 @@ DocumentView* MainWindow::addDocument(std::unique_ptr<model::Document> document)
         if (currentView() == view)
             showWeightView(shown);
     });
-    connect(sketchTool_, &SketchTool::strokeFinished, view,
-            [this, view](const auto& stroke, const auto& plane) {
-                if (currentView() == view)
-                    view->createPartFromStroke(stroke, plane);
-            });
     auto refreshTab = [this, view] {
         const int index = tabs_->indexOf(view);
         if (index < 0)
@@ -397,12 +366,53 @@ DocumentView* MainWindow::addDocument(std::unique_ptr<model::Document> document)
     });
     connect(doc, &model::Document::modifiedChanged, this, refreshTab);
     connect(doc, &model::Document::filePathChanged, this, refreshTab);
-    autosaves_[view] = new model::Autosave(doc, recoveryDirectory_, view);
-    autosaves_[view]->setDelay(preferences_.autosaveSeconds * 1000);
+    files_->watch(view);
     const int index = tabs_->addTab(view, doc->displayName());
     tabs_->setCurrentIndex(index);
     refreshTab();
     return view;
+}
+
+std::vector<DocumentView*> MainWindow::views() const {
+    std::vector<DocumentView*> views;
+    for (int i = 0; i < tabs_->count(); ++i)
+        if (auto* view = qobject_cast<DocumentView*>(tabs_->widget(i)))
+            views.push_back(view);
+    return views;
+}
+
+DocumentView* MainWindow::newDocument() {
+    return files_->newDocument();
+}
+
+void MainWindow::setCurrentView(DocumentView* view) {
+    tabs_->setCurrentWidget(view);
+}
+
+void MainWindow::removeView(DocumentView* view) {
+    const int index = tabs_->indexOf(view);
+    if (index < 0)
+        return;
+    undoGroup_.removeStack(view->document()->undoStack());
+    files_->unwatch(view);
+    tabs_->removeTab(index);
+    delete view;
+}
+
+bool MainWindow::closeDocument(int index) {
+    return files_->close(qobject_cast<DocumentView*>(tabs_->widget(index)));
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    jobs_->cancel();  // a running job's result would have no document to go to
+    if (!files_->closeAll()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    event->accept();
 }
 
 DocumentView* MainWindow::currentView() const {
@@ -423,7 +433,7 @@ void MainWindow::currentTabChanged(int) {
     weights_->setDocument(document, view ? view->viewport() : nullptr);
     timeline_->setDocument(document);
     if (view) {
-        view->viewport()->setTool(activeTool());  // the checked tool, whichever it is
+        view->viewport()->setTool(tools_->active());  // the checked tool, whichever it is
         view->viewport()->setWireframe(wireframeAction_->isChecked());
         view->viewport()->setDualQuaternionSkinning(dqsAction_->isChecked());
         view->viewport()->setGridVisible(gridAction_->isChecked());
@@ -446,56 +456,84 @@ void MainWindow::showStatus(const QString& message, int timeoutMs) {
     statusBar()->showMessage(message, timeoutMs);
 }
 
+// Select first (Blender's default), the Sketch tool active: a new user
+// draws at once. Every tool reports through its status signal; a finished
+// stroke becomes a part of the current document only.
+void MainWindow::createTools(QMenu* menu, QToolBar* toolbar) {
+    // Our own icons (resources/icons, drawn by Qt's SVG icon engine,
+    // libqt6svg6) say what each tool does.
+    auto* sketch = new SketchTool;
+    const std::tuple<ViewportTool*, QString, QKeySequence, QString> tools[] = {
+        {new SelectTool, tr("&Select / Move"), QKeySequence(Qt::Key_Q), "select"},
+        {sketch, tr("S&ketch Part"), QKeySequence(Qt::Key_S), "sketch"},
+        {new PoseTool, tr("&Pose"), QKeySequence(Qt::Key_P), "pose"},
+        {new MergeTool, tr("&Merge Parts"), QKeySequence(Qt::Key_M), "merge"},
+        {new CutTool, tr("&Cut Part"), QKeySequence(Qt::Key_C), "cut"},
+        {new PaintTool, tr("Paint &Weights"), QKeySequence(Qt::Key_W), "paint"}};
+    for (const auto& [tool, text, key, icon] : tools) {
+        QAction* action = tools_->add(tool, text, key, QStringLiteral(":/icons/%1.svg").arg(icon));
+        menu->addAction(action);
+        toolbar->addAction(action);
+        connect(tool, &ViewportTool::status, this, &MainWindow::showStatus);
+    }
+    tools_->actionOf(sketch)->setChecked(true);
+    connect(tools_, &ToolRegistry::activated, this,
+            qOverload<ViewportTool*>(&MainWindow::activateTool));
+    connect(sketch, &SketchTool::strokeFinished, this,
+            [this](const auto& stroke, const auto& plane) {
+                if (DocumentView* view = currentView())
+                    view->createPartFromStroke(stroke, plane);
+            });
+}
+
 // One activation path for every tool: its action checked, the current
-// view's viewport given the tool, its hint in the status bar.
-void MainWindow::activateTool(QAction* action, ViewportTool* tool) {
-    action->setChecked(true);
+// view's viewport given the tool, its options and weight view shown, its
+// hint in the status bar.
+void MainWindow::activateTool(ViewportTool* tool) {
+    if (!tool)
+        return;
+    if (QAction* action = tools_->actionOf(tool); action && !action->isChecked()) {
+        tools_->activate(tool);  // checks the action, then comes back here
+        return;
+    }
     QWidget* options = tool->optionsWidget();
     toolOptions_->setCurrentIndex(options ? toolOptions_->indexOf(options) : 0);
     if (auto* v = currentView())
         v->viewport()->setTool(tool);
     showStatus(tool->hint());
-}
-
-void MainWindow::activateSelectTool() {
-    activateTool(selectToolAction_, selectTool_);
-}
-
-void MainWindow::activateSketchTool() {
-    activateTool(sketchToolAction_, sketchTool_);
-}
-
-void MainWindow::activatePoseTool() {
-    activateTool(poseToolAction_, poseTool_);
-}
-
-void MainWindow::activateMergeTool() {
-    activateTool(mergeToolAction_, mergeTool_);
-}
-
-void MainWindow::activateCutTool() {
-    activateTool(cutToolAction_, cutTool_);
-}
-
-void MainWindow::activatePaintTool() {
-    activateTool(paintToolAction_, paintTool_);
     // Painting shows what it paints: the selected bone's weights.
+    if (const std::optional<WeightView> shown = tool->weightView())
+        for (QAction* action : weightViewGroup_->actions())
+            if (static_cast<WeightView>(action->data().toInt()) == *shown)
+                action->trigger();
+}
+
+void MainWindow::showWeightView(WeightView view) {
     for (QAction* action : weightViewGroup_->actions())
-        if (static_cast<WeightView>(action->data().toInt()) == WeightView::SelectedBone)
-            action->trigger();
+        if (static_cast<WeightView>(action->data().toInt()) == view)
+            action->setChecked(true);
+    if (weightViewBox_) {
+        const QSignalBlocker block(weightViewBox_);
+        weightViewBox_->setCurrentIndex(weightViewBox_->findData(static_cast<int>(view)));
+    }
 }
 
-ViewportTool* MainWindow::activeTool() const {
-    for (const auto& [action, tool] : toolPairs())
-        if (action->isChecked())
-            return tool;
-    return selectTool_;
-}
-
-std::vector<std::pair<QAction*, ViewportTool*>> MainWindow::toolPairs() const {
-    return {{selectToolAction_, selectTool_}, {sketchToolAction_, sketchTool_},
-            {poseToolAction_, poseTool_},     {mergeToolAction_, mergeTool_},
-            {cutToolAction_, cutTool_},       {paintToolAction_, paintTool_}};
+void MainWindow::createWeightViewBar() {
+    auto* bar = addToolBar(tr("Weight View"));
+    bar->setObjectName(QStringLiteral("weightViewToolBar"));
+    bar->addWidget(new QLabel(tr(" Weights: "), bar));
+    weightViewBox_ = new QComboBox(bar);
+    weightViewBox_->setObjectName(QStringLiteral("weightViewBox"));
+    weightViewBox_->setToolTip(tr("Colour the surface by its skin weights (View > Weights)"));
+    for (QAction* action : weightViewGroup_->actions())
+        weightViewBox_->addItem(action->text().remove(QLatin1Char('&')), action->data());
+    bar->addWidget(weightViewBox_);
+    connect(weightViewBox_, &QComboBox::activated, this, [this](int index) {
+        const QVariant view = weightViewBox_->itemData(index);
+        for (QAction* action : weightViewGroup_->actions())
+            if (action->data() == view)
+                action->trigger();
+    });
 }
 
 void MainWindow::resetPose() {

@@ -1,23 +1,22 @@
 // The studio's main window: documents in tabs, one undo stack each joined by
 // a QUndoGroup for the Edit menu, docks for the outliner, properties and undo
 // history, File/Edit/View/Tools/Help menus with standard shortcuts, a
-// toolbar, a status bar for hints and errors, settings and recent files kept
-// in QSettings, and autosave with recovery. Panels and tools own their own
-// wiring; the window only routes the active document to them.
+// toolbar, a status bar for hints and errors, and the window's layout kept
+// in QSettings. It assembles: the tools live in a registry
+// (tools/ToolRegistry), each feature in its controller (controllers/: files,
+// exchange, rig, weights), the panels and tools wire themselves; the window
+// routes the active document to them and is their StudioHost.
 #pragma once
-
-#include <functional>
 
 #include <QMainWindow>
 #include <QUndoGroup>
-#include <map>
 #include <memory>
-#include <utility>
 #include <vector>
-#include "io/SceneExport.h"
-#include "model/PartNode.h"
 
+#include "controllers/StudioHost.h"
+#include "model/PartNode.h"
 #include "preferences/StudioPreferences.h"
+#include "tools/ToolRegistry.h"
 
 class QStackedWidget;
 class QTabWidget;
@@ -25,11 +24,10 @@ class QUndoView;
 class QMenu;
 class QActionGroup;
 class QComboBox;
+class QToolBar;
 
 namespace rigmesh::model {
-class Autosave;
 class Document;
-class ImportPartsCommand;
 }  // namespace rigmesh::model
 
 namespace rigmesh::widgets {
@@ -38,80 +36,69 @@ class MouseHint;
 enum class WeightView;  // viewport/RenderScene.h
 
 class DocumentView;
-class OutlinerPanel;
-class PropertiesPanel;
+class ExchangeController;
+class FilesController;
 class JobRunner;
 class JobStatus;
-class WeightsPanel;
-class CutTool;
-class PaintTool;
-class MergeTool;
-class PoseTool;
-class SelectTool;
-class SketchTool;
+class OutlinerPanel;
+class PropertiesPanel;
+class RigController;
 class TimelineDock;
+class ViewportTool;
+class WeightsController;
+class WeightsPanel;
 
-class MainWindow : public QMainWindow {
+class MainWindow : public QMainWindow, public StudioHost {
     Q_OBJECT
   public:
     // `recoveryDirectory`: where autosave writes; empty = the standard location.
     explicit MainWindow(const QString& recoveryDirectory = {}, QWidget* parent = nullptr);
     ~MainWindow() override;
 
+    // ---- StudioHost ----
+    model::Document* currentDocument() const override;
+    DocumentView* currentView() const override;
+    // Long work off the GUI thread (widgets/jobs) and what the window shows
+    // of it.
+    JobRunner* jobs() const override { return jobs_; }
+    QWidget* dialogParent() override { return this; }
+    void showStatus(const QString& message, int timeoutMs = 0) override;
+    std::vector<DocumentView*> views() const override;
+    // A new "Untitled N" document as the current tab.
+    DocumentView* newDocument() override;
     // Adds a document as a new tab and makes it current.
-    DocumentView* addDocument(std::unique_ptr<model::Document> document);
-    DocumentView* currentView() const;
-    model::Document* currentDocument() const;
+    DocumentView* addDocument(std::unique_ptr<model::Document> document) override;
+    void setCurrentView(DocumentView* view) override;
+    void removeView(DocumentView* view) override;
+
     QTabWidget* tabs() const { return tabs_; }
     OutlinerPanel* outliner() const { return outliner_; }
     WeightsPanel* weightsPanel() const { return weights_; }
-    // Long work off the GUI thread (widgets/jobs) and what the window shows
-    // of it.
-    JobRunner* jobs() const { return jobs_; }
-    // Asked before Recompute Weights replaces hand-painted weights (the
-    // question in its argument); true goes on. A message box by default;
-    // tests answer it.
-    std::function<bool(const QString&)> confirmDiscardWeights;
     JobStatus* jobStatus() const { return jobStatus_; }
     PropertiesPanel* propertiesPanel() const { return properties_; }
     TimelineDock* timeline() const { return timeline_; }
+    // The viewport tools, each with its action (tools/ToolRegistry.h).
+    ToolRegistry* tools() const { return tools_; }
+    // The feature controllers (controllers/).
+    FilesController* files() const { return files_; }
+    ExchangeController* exchange() const { return exchange_; }
+    RigController* rig() const { return rig_; }
+    WeightsController* weightsController() const { return weightsController_; }
+    // Activates the registered tool of type T (SketchTool, PoseTool, ...).
+    template <typename T>
+    void activateTool() {
+        activateTool(tools_->template find<T>());
+    }
+    // Makes `tool` (one of tools()) the active tool of every view: its
+    // action checked, its options shown, its hint in the status bar.
+    void activateTool(ViewportTool* tool);
 
-    bool openFile(const QString& path);
     // Puts every preference into effect at once (the language at the next
     // start) and keeps them in QSettings (MainWindowPreferences.cpp).
     void applyPreferences(const StudioPreferences& preferences);
     const StudioPreferences& preferences() const { return preferences_; }
-    // Offers to restore documents left in the recovery folder by a crash.
-    void offerRecovery();
-
-  public slots:
-    void newDocument();
-    void open();
-    bool save();
-    bool saveAs();
-    void exportDocument();
-    void importFile();
-    // Imports `path` into the current document (File > Import without the
-    // file dialog), as a background job.
-    void importPath(const QString& path);
-    // Exports the current document's visible parts to `path` (File > Export
-    // without the dialog), as a background job.
-    void exportTo(const QString& path, const ExportOptions& options);
-    void saveHistoryAsRecipe();
+    // Closes the document in tab `index`, asking about unsaved changes first.
     bool closeDocument(int index);
-    void activateSelectTool();
-    void activateSketchTool();
-    void activatePoseTool();
-    void activateMergeTool();
-    void activateCutTool();
-    void activatePaintTool();
-    void resetPose();
-    // Tools > Auto-Rig Part on the selected part (issue 17).
-    void rigSelectedPart();
-    void connectSelectedBone();
-    void deleteSelection();
-    // Edit > Preferences.
-    void openPreferences();
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -119,34 +106,21 @@ class MainWindow : public QMainWindow {
   private:
     void createActions();
     void createDocks();
-    void finishImport(model::Document& document, const QString& file,
-                      std::unique_ptr<model::ImportPartsCommand> command);
-    // Tools > Weights: the clean-ups, Smooth All, Recompute Weights and Check
-    // Rig (MainWindowWeights.cpp).
-    void createWeightMenu(QMenu* tools);
-    // Bone heat over the selected part again, as a background job; asks
-    // first if its weights were painted.
-    void recomputeWeights();
-    // Rigs the parts one after another, each a background job and one undo step.
-    void rigParts(model::Document* document, std::vector<model::PartId> ids);
-    // After an import: offers to rig the parts without a skeleton now.
-    bool offerToRig(model::Document& document, const std::vector<model::PartId>& ids,
-                    const QString& message);
+    void createTimelineActions();
+    // The tools, their actions in the Tools menu and toolbar, their options.
+    void createTools(QMenu* menu, QToolBar* toolbar);
+    // The weight views on a toolbar too: a list beside the tools, in step
+    // with View > Weights.
+    void createWeightViewBar();
     // The View > Weights choice and the Weight View toolbar follow the
     // current document's viewport (each document keeps its own view).
     void showWeightView(WeightView view);
-    void createTimelineActions();
     void currentTabChanged(int index);
-    class ViewportTool* activeTool() const;
-    void activateTool(QAction* action, class ViewportTool* tool);
-    // Every tool with its action, in toolbar order.
-    std::vector<std::pair<QAction*, class ViewportTool*>> toolPairs() const;
     void updateTitle();
-    bool saveDocument(DocumentView* view, const QString& path);
-    bool maybeSave(DocumentView* view);
-    void addRecentFile(const QString& path);
-    void rebuildRecentMenu();
-    void showStatus(const QString& message, int timeoutMs = 0);
+    void resetPose();
+    void deleteSelection();
+    // Edit > Preferences.
+    void openPreferences();
 
     QTabWidget* tabs_;
     QUndoGroup undoGroup_;
@@ -155,34 +129,22 @@ class MainWindow : public QMainWindow {
     WeightsPanel* weights_;
     QUndoView* history_;
     TimelineDock* timeline_;
-    QMenu* recentMenu_ = nullptr;
+    ToolRegistry* tools_;
     QMenu* viewMenu_ = nullptr;
-    QActionGroup* toolGroup_ = nullptr;
-    QAction* selectToolAction_ = nullptr;
-    QAction* sketchToolAction_ = nullptr;
-    QAction* poseToolAction_ = nullptr;
-    QAction* mergeToolAction_ = nullptr;
     QActionGroup* weightViewGroup_ = nullptr;
     QComboBox* weightViewBox_ = nullptr;
-    QAction* cutToolAction_ = nullptr;
-    QAction* paintToolAction_ = nullptr;
     QAction* wireframeAction_ = nullptr;
     QAction* dqsAction_ = nullptr;
     QAction* gridAction_ = nullptr;
-    SelectTool* selectTool_;
-    SketchTool* sketchTool_;
-    PoseTool* poseTool_;
-    MergeTool* mergeTool_;
-    CutTool* cutTool_;
-    PaintTool* paintTool_;
-    QString recoveryDirectory_;
-    int untitledCount_ = 0;  // new documents are "Untitled 1", "Untitled 2", ...
-    std::map<DocumentView*, model::Autosave*> autosaves_;
     MouseHint* mouseHint_ = nullptr;
     QStackedWidget* toolOptions_ = nullptr;
     StudioPreferences preferences_;
     JobRunner* jobs_ = nullptr;
     JobStatus* jobStatus_ = nullptr;
+    FilesController* files_ = nullptr;
+    RigController* rig_ = nullptr;
+    ExchangeController* exchange_ = nullptr;
+    WeightsController* weightsController_ = nullptr;
 };
 
 }  // namespace rigmesh::widgets

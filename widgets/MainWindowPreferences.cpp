@@ -4,8 +4,8 @@
 #include "DocumentView.h"
 #include "MainWindow.h"
 #include "MouseHint.h"
+#include "controllers/FilesController.h"
 #include "dialogs/PreferencesDialog.h"
-#include "model/Autosave.h"
 #include "preferences/Theme.h"
 #include "viewport/Viewport.h"
 
@@ -25,8 +25,7 @@ void MainWindow::applyPreferences(const StudioPreferences& preferences) {
     // The View menu's skinning follows at once; it applies to the current
     // view, and currentTabChanged() gives each other view the same.
     dqsAction_->setChecked(preferences_.dualQuaternionSkinning);
-    for (const auto& [view, autosave] : autosaves_)
-        autosave->setDelay(preferences_.autosaveSeconds * 1000);
+    files_->setAutosaveDelay(preferences_.autosaveSeconds * 1000);
     if (DocumentView* view = currentView()) {
         view->viewport()->setMouseBindings(preferences_.mouseBindings);
         view->setDefaultEdgeLength(preferences_.defaultEdgeLength);

@@ -1,4 +1,4 @@
-// The first-run hint (issue 11 item 4): a translucent card over the bottom of
+// The first-run hint: a translucent card over the bottom of
 // the view with the three mouse gestures a newcomer needs (left-drag does the
 // tool's work, middle-drag orbits, the wheel zooms). It shows until it is
 // clicked or the first part is made, once per user (QSettings

@@ -16,6 +16,7 @@
 #include "EmbeddedExamples.h"
 #include "base/Error.h"
 #include "base/StagedFile.h"
+#include "base/Stopwatch.h"
 #include "debug/DebugSvg.h"
 #include "io/PoseDemoClip.h"
 #include "io/RigJson.h"
@@ -103,9 +104,7 @@ int runBuild(const std::vector<std::string>& arguments) {
 
     const auto checksStart = std::chrono::steady_clock::now();
     const MeshReport report = analyseMesh(part.mesh);
-    const double checksMilliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - checksStart)
-            .count();
+    const double checksMilliseconds = millisecondsSince(checksStart);
     const nlohmann::json statistics =
         buildStatistics(sketch.name, result, report, checksMilliseconds);
     // At a detail level, every file (mesh, rig JSON) describes the written

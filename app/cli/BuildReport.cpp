@@ -33,7 +33,8 @@ nlohmann::json buildStatistics(const std::string& name, const SketchToPartResult
                           {"skeleton", rigged.skeletonMilliseconds},
                           {"weights", rigged.weightsMilliseconds},
                           {"mesh_checks", meshChecksMilliseconds}};
-    // Issue 10's figures: creases and the front silhouette against the outline.
+    // The surface figures (mesh/SurfaceQuality.h): creases and the front silhouette against the
+    // outline.
     const NormalAngles angles = normalAngles(result.surface.mesh);
     stats["surface_quality"] = {
         {"normal_angle_p50_degrees", angles.p50},

@@ -1,7 +1,6 @@
 // `rigmesh rig MESH -o OUT`: reads a mesh (as `import` does, in a child
 // process), rigs every part that has no skeleton (the studio's Rig command,
-// model/commands/RigPartCommand) and writes the document or an export
-// (issue 17 item 1).
+// model/commands/RigPartCommand) and writes the document or an export.
 #pragma once
 
 #include <string>

@@ -12,6 +12,7 @@
 #include "ExampleDocument.h"
 #include "MainWindow.h"
 #include "base/Error.h"
+#include "controllers/FilesController.h"
 #include "model/ErrorText.h"
 #include "preferences/StudioPreferences.h"
 #include "preferences/Translations.h"
@@ -59,7 +60,7 @@ int main(int argc, char** argv) {
     rigmesh::widgets::MainWindow window;
     const QStringList files = parser.positionalArguments();
     for (const QString& file : files)
-        window.openFile(file);
+        window.files()->openFile(file);
     if (files.isEmpty()) {
         try {
             window.addDocument(rigmesh::studio::makeExampleDocument());
@@ -77,7 +78,7 @@ int main(int argc, char** argv) {
             app.quit();
         });
     } else {
-        QTimer::singleShot(0, &window, [&] { window.offerRecovery(); });
+        QTimer::singleShot(0, &window, [&] { window.files()->offerRecovery(); });
     }
     return app.exec();
 }

@@ -1,5 +1,5 @@
 // A change to a part's clip as the keys it takes out and puts in, and the
-// settings before and after (issue 9: key commands stored two whole clips
+// settings before and after (key commands once stored two whole clips
 // each, so keying n times took O(n^2) time and memory). An edit is computed
 // from a few keys around the edited times (localClipEdit), applied in place
 // (Document::editClip) and undone by its inverse, each in O(log n) per key

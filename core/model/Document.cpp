@@ -149,11 +149,48 @@ PartNode Document::removePart(PartId id) {
     if (selection_.part == id)
         clearSelection();
     emit partAboutToBeRemoved(id, index);
-    posePreviewOrigins_.erase(id);
     PartNode node = std::move(contents_.parts[index]);
     contents_.parts.erase(contents_.parts.begin() + index);
     emit partRemoved(id, index);
     return node;
+}
+
+void Document::replaceNode(PartId id, PartNode node) {
+    PartNode& old = mutablePart(id);
+    if (node.id != id)
+        throw Error("Part " + std::to_string(id) + " cannot be replaced by part " +
+                    std::to_string(node.id) + ".");
+    checkPose(node, node.pose);
+    checkPins(node, node.pinnedJoints);
+    checkClip(node, node.clip);
+    for (const rigmesh::Clip& other : node.otherClips)
+        checkClip(node, other);
+    checkClipNamesUnique(node.clip, node.otherClips);
+    node.otherClips = sortedByName(std::move(node.otherClips));
+    Changes what;
+    if (old.name != node.name)
+        what |= Change::Name;
+    if (!(old.placement == node.placement))
+        what |= Change::Placement;
+    if (old.visible != node.visible)
+        what |= Change::Visibility;
+    if (old.part != node.part)
+        what |= Change::Geometry;
+    if (!(old.options == node.options) || old.stroke != node.stroke)
+        what |= Change::Options;
+    if (!identicalPoses(old.pose, node.pose))
+        what |= Change::Pose;
+    if (old.pinnedJoints != node.pinnedJoints)
+        what |= Change::Pins;
+    if (!identicalClips(old.clip, node.clip) ||
+        !identicalClipLists(old.otherClips, node.otherClips))
+        what |= Change::Clip;
+    if (!what)
+        return;
+    old = std::move(node);
+    if (selection_.part == id && (!old.part || !old.part->skeleton.hasJoint(selection_.joint)))
+        setSelection({id, kNoJoint});
+    emit partChanged(id, what);
 }
 
 void Document::setName(PartId id, const QString& name) {
@@ -190,40 +227,14 @@ void Document::replacePart(PartId id, std::shared_ptr<const Part> part, const Bu
 void Document::replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options,
                            const rigmesh::Pose& pose, std::set<JointId> pinned,
                            const rigmesh::Clip& clip, std::vector<rigmesh::Clip> otherClips) {
-    PartNode& node = mutablePart(id);
-    PartNode probe;
-    probe.id = id;
-    probe.part = part;
-    checkPose(probe, pose);
-    checkPins(probe, pinned);
-    checkClip(probe, clip);
-    for (const rigmesh::Clip& other : otherClips)
-        checkClip(probe, other);
-    checkClipNamesUnique(clip, otherClips);
-    otherClips = sortedByName(std::move(otherClips));
-    Changes what;
-    if (node.part != part)
-        what |= Change::Geometry;
-    if (!(node.options == options))
-        what |= Change::Options;
-    if (!identicalPoses(node.pose, pose))
-        what |= Change::Pose;
-    if (node.pinnedJoints != pinned)
-        what |= Change::Pins;
-    if (!identicalClips(node.clip, clip) || !identicalClipLists(node.otherClips, otherClips))
-        what |= Change::Clip;
-    if (!what)
-        return;
-    posePreviewOrigins_.erase(id);
+    PartNode node = this->part(id);
     node.part = std::move(part);
     node.options = options;
     node.pose = pose;
     node.pinnedJoints = std::move(pinned);
     node.clip = clip;
     node.otherClips = std::move(otherClips);
-    if (selection_.part == id && (!node.part || !node.part->skeleton.hasJoint(selection_.joint)))
-        setSelection({id, kNoJoint});
-    emit partChanged(id, what);
+    replaceNode(id, std::move(node));
 }
 
 void Document::replacePart(PartId id, std::shared_ptr<const Part> part,
@@ -254,19 +265,13 @@ void Document::replaceSkinning(PartId id, std::shared_ptr<const Part> part) {
     emit partChanged(id, Change::Geometry);
 }
 
-void Document::applyPose(PartId id, const rigmesh::Pose& pose) {
+void Document::setPose(PartId id, const rigmesh::Pose& pose) {
     PartNode& node = mutablePart(id);
     checkPose(node, pose);
     if (identicalPoses(node.pose, pose))
         return;
     node.pose = pose;
     emit partChanged(id, Change::Pose);
-}
-
-void Document::setPose(PartId id, const rigmesh::Pose& pose) {
-    checkPose(part(id), pose);
-    posePreviewOrigins_.erase(id);
-    applyPose(id, pose);
 }
 
 void Document::setPinnedJoints(PartId id, std::set<JointId> pinned) {
@@ -311,27 +316,6 @@ void Document::editClip(PartId id, const ClipEdit& edit) {
         return;
     edit.applyTo(node.clip);
     emit partChanged(id, Change::Clip);
-}
-
-void Document::previewPose(PartId id, const rigmesh::Pose& pose) {
-    const PartNode& node = part(id);
-    checkPose(node, pose);
-    posePreviewOrigins_.try_emplace(id, node.pose);
-    applyPose(id, pose);
-}
-
-void Document::cancelPosePreview(PartId id) {
-    const auto it = posePreviewOrigins_.find(id);
-    if (it == posePreviewOrigins_.end())
-        return;
-    const rigmesh::Pose origin = std::move(it->second);
-    posePreviewOrigins_.erase(it);
-    applyPose(id, origin);
-}
-
-const rigmesh::Pose* Document::posePreviewOrigin(PartId id) const {
-    const auto it = posePreviewOrigins_.find(id);
-    return it == posePreviewOrigins_.end() ? nullptr : &it->second;
 }
 
 }  // namespace rigmesh::model

@@ -85,14 +85,14 @@ class Document : public QObject {
     // After a successful save: sets the path and marks the undo stack clean.
     void markSaved(const QString& path);
 
-    // ---- Timeline (issue 15; DocumentTimeline.cpp) ----
+    // ---- Timeline (DocumentTimeline.cpp) ----
     const TimelineSettings& timeline() const { return contents_.timeline; }
     int currentFrame() const { return contents_.currentFrame; }
     // The current frame in seconds, at the timeline's rate.
     double currentTime() const { return contents_.timeline.timeOfFrame(contents_.currentFrame); }
     // Not an undo step and not a modification (it is saved with the next
     // save): moves to `frame` and shows there the pose of every part whose
-    // active clip has keys, ending their pose previews. Another pose a part
+    // active clip has keys. Another pose a part
     // was given at the old frame is gone, as in Blender. Throws
     // rigmesh::Error on a frame outside [0, kMaxFrame].
     void setCurrentFrame(int frame);
@@ -121,6 +121,13 @@ class Document : public QObject {
     void insertPart(int index, PartNode node);
     // Removes and returns the node.
     PartNode removePart(PartId id);
+    // Swaps the whole node of part `id` for `node` (same id, same place in
+    // parts()): one partChanged with every Change that differs (a different
+    // stroke counts as Options: what the part is built from). The selection
+    // stays on the part, and on its joint if the new skeleton has it. Throws
+    // rigmesh::Error (nothing changed) on another id, or a pose, pins or
+    // clips that do not fit the new part's skeleton.
+    void replaceNode(PartId id, PartNode node);
     void setName(PartId id, const QString& name);
     void setPlacement(PartId id, const Placement& placement);
     void setVisible(PartId id, bool visible);
@@ -136,13 +143,13 @@ class Document : public QObject {
     void replacePart(PartId id, std::shared_ptr<const Part> part, const BuildOptions& options);
     // Swaps the engine part for one with the same mesh and skeleton whose
     // skin weights or bone locks differ (paint, weight clean-ups, locks):
-    // pose, pins and keys stay as they are, and a running pose preview too.
+    // pose, pins and keys stay as they are.
     // Throws rigmesh::Error (nothing changed) if the new part's skeleton or
     // vertex count differs.
     void replaceSkinning(PartId id, std::shared_ptr<const Part> part);
     // Throws rigmesh::Error when the pose names a joint the part's skeleton
     // does not have or holds a non-finite or zero quaternion / translation.
-    // Ends any pose preview of the part (see previewPose).
+    // Live drags go through model/preview/PosePreview.h.
     void setPose(PartId id, const rigmesh::Pose& pose);
     // Throws rigmesh::Error on a joint the part's skeleton does not have.
     void setPinnedJoints(PartId id, std::set<JointId> pinned);
@@ -165,17 +172,6 @@ class Document : public QObject {
     // (ClipEdit::applyTo).
     void editClip(PartId id, const ClipEdit& edit);
 
-    // ---- Live pose preview (interactive drags) ----
-    // Applies `pose` to the part now (partChanged(Pose)) without a command,
-    // remembering the pose the part had before the first preview. A
-    // SetPoseCommand pushed with alreadyApplied = true then takes that
-    // remembered pose as its `from`, so the whole drag undoes in one step.
-    void previewPose(PartId id, const rigmesh::Pose& pose);
-    // Puts back the pose from before the preview (no-op without a preview).
-    void cancelPosePreview(PartId id);
-    // The pose before the running preview of the part, or nullptr.
-    const rigmesh::Pose* posePreviewOrigin(PartId id) const;
-
   signals:
     void partInserted(rigmesh::model::PartId id, int index);
     void partAboutToBeRemoved(rigmesh::model::PartId id, int index);
@@ -190,14 +186,12 @@ class Document : public QObject {
 
   private:
     PartNode& mutablePart(PartId id);
-    void applyPose(PartId id, const rigmesh::Pose& pose);
 
     DocumentContents contents_;
     Selection selection_;
     QUndoStack undoStack_;
     QString filePath_;
     QString untitledName_;
-    std::map<PartId, rigmesh::Pose> posePreviewOrigins_;
     bool autoKey_ = false;
 };
 

@@ -19,7 +19,7 @@ ExportPart exportPartOf(const PartNode& node) {
     ExportPart part;
     part.part = node.part.get();
     part.pose = node.pose;
-    part.placement = Eigen::Translation3d(node.placement.translation) * node.placement.rotation;
+    part.placement = node.placement.affine();
     part.name = node.name.toStdString();
     return part;
 }
@@ -45,10 +45,16 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
     return exportParts(document.parts(), path, options, visibleOnly);
 }
 
-DocumentExportResult exportParts(const std::vector<PartNode>& documentParts,
-                                 const std::string& path, const ExportOptions& options,
-                                 bool visibleOnly) {
-    DocumentExportResult result;
+DocumentExportResult exportParts(const std::vector<PartNode>& parts, const std::string& path,
+                                 const ExportOptions& options, bool visibleOnly) {
+    StagedDocumentExport staged = stageParts(parts, path, options, visibleOnly);
+    staged.files.commit();
+    return {staged.warnings};
+}
+
+StagedDocumentExport stageParts(const std::vector<PartNode>& documentParts, const std::string& path,
+                                const ExportOptions& options, bool visibleOnly) {
+    StagedDocumentExport result;
     std::vector<const PartNode*> nodes;
     for (const PartNode& node : documentParts)
         if (node.part && (node.visible || !visibleOnly))
@@ -71,7 +77,7 @@ DocumentExportResult exportParts(const std::vector<PartNode>& documentParts,
     // rigged formats get parts whose rest is that pose (their clips would be
     // relative to the old rest, so none is written).
     // Or, with poseAsKey, the rest shape stays and each part's pose is a
-    // one-key animation (issue 11 item 3).
+    // one-key animation.
     const bool rigged = isRiggedFormat(exportFormatFromPath(path));
     const bool poseKey = !options.restPose && options.poseAsKey && rigged;
     const bool bakePose = !options.restPose && !poseKey && rigged;
@@ -104,9 +110,9 @@ DocumentExportResult exportParts(const std::vector<PartNode>& documentParts,
         }
         return part;
     };
-    // Every part with its own clips (issue 18 item 3), in document order;
+    // Every part with its own clips, in document order;
     // each clip by its name (an unnamed one is "Action"), so that the clips
-    // of several parts with one name are one animation (issue 15).
+    // of several parts with one name are one animation.
     std::deque<rigmesh::Clip> named;
     std::vector<ExportPart> parts;
     for (const PartNode* node : nodes) {
@@ -133,7 +139,7 @@ DocumentExportResult exportParts(const std::vector<PartNode>& documentParts,
     }
     ExportOptions written = options;
     written.animation = options.animation || poseKey;  // the key is the pose itself
-    exportScene(parts, nullptr, path, written);
+    result.files = stageScene(parts, nullptr, path, written);
     return result;
 }
 

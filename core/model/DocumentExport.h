@@ -1,9 +1,8 @@
 // Exports a document's parts through the engine's exporter (io/SceneExport):
 // every part at its placement and current pose, each its own skinned mesh
-// animated by its own clips (issue 18 item 3; its bones share one armature
+// animated by its own clips (its bones share one armature
 // node, SceneExport.h). Every clip with keys is written; the clips of all
-// parts with one name (clipName: "Action" when unnamed) are one animation
-// (issue 15).
+// parts with one name (clipName: "Action" when unnamed) are one animation.
 #pragma once
 
 #include <QStringList>
@@ -24,5 +23,15 @@ DocumentExportResult exportDocument(const Document& document, const std::string&
 // The same from a copy of the parts (a background job's snapshot).
 DocumentExportResult exportParts(const std::vector<PartNode>& parts, const std::string& path,
                                  const ExportOptions& options = {}, bool visibleOnly = false);
+
+// An export written but not yet in place (io/SceneExport.h: StagedExport):
+// a background job stages it off the GUI thread, and the GUI thread commits
+// it when the job is applied, or drops it when the user cancelled.
+struct StagedDocumentExport {
+    StagedExport files;
+    QStringList warnings;
+};
+StagedDocumentExport stageParts(const std::vector<PartNode>& parts, const std::string& path,
+                                const ExportOptions& options = {}, bool visibleOnly = false);
 
 }  // namespace rigmesh::model

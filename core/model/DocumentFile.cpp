@@ -120,7 +120,7 @@ rigmesh::Clip readClipValue(const PartNode& node, const json& clip) {
     out.interpolation =
         readMode(field(clip, "interpolation"), "clip interpolation", &interpolationFromName);
     out.mode = readMode(field(clip, "playback"), "clip playback", &playbackFromName);
-    if (clip.contains("name"))  // since issue 18
+    if (clip.contains("name"))  // optional: older files lack it
         out.name = text(field(clip, "name"), "clip name");
     return out;
 }

@@ -63,7 +63,7 @@ namespace DocumentFile {
 
 inline constexpr const char* kFormatName = "rigmesh-studio-document";
 // 2: per-bone pose rotations (version 1 files are converted on loading);
-// 3: the timeline and named clips (issue 15; DocumentMigration.h adds them
+// 3: the timeline and named clips (DocumentMigration.h adds them
 // to older files);
 // 4: skin weights, failed bones and known closest bones keyed by bone id
 // (older files name them by position in the bone list; part/PartJson.h

@@ -3,7 +3,7 @@
 // Only the structure is added here; every value is still checked by the
 // reader afterwards.
 //
-//   2 -> 3 (issue 15, the timeline): the document gains "timeline"
+//   2 -> 3 (the timeline): the document gains "timeline"
 //     {startFrame, endFrame, framesPerSecond, currentFrame} and every part
 //     "otherClips" []. The rate is the first part's clip rate (24 without
 //     one, kept within the timeline's limits), the range runs from frame 0

@@ -1,4 +1,4 @@
-// Document's timeline state (issue 15): the current frame, the frame range
+// Document's timeline state: the current frame, the frame range
 // and rate, auto-key. Apart from Document.cpp so the timeline stays one
 // concept.
 #include "model/Document.h"
@@ -13,8 +13,7 @@ void Document::setCurrentFrame(int frame) {
     for (const PartNode& node : contents_.parts) {
         if (node.clip.keyCount() == 0)
             continue;
-        posePreviewOrigins_.erase(node.id);
-        applyPose(node.id, poseAtCurrentFrame(node.id));
+        setPose(node.id, poseAtCurrentFrame(node.id));
     }
     if (moved)
         emit currentFrameChanged(frame);

@@ -1,4 +1,4 @@
-// Reading files to import (issue 9 item 2). Assimp 5.2.5 crashes, asserts,
+// Reading files to import. Assimp 5.2.5 crashes, asserts,
 // loops or allocates gigabytes on some broken COLLADA, FBX and PLY files, so
 // the studio and the recipe runner never parse an import themselves: a child
 // process (`rigmesh import FILE -o PARTS.rigmesh`) reads it under a time and

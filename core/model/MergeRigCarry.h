@@ -1,6 +1,6 @@
 // What of the dragged part's pose, pins and keyed clip a merge keeps (paper
-// 3.2; issue 12 item 7: "keep what maps onto surviving bones and say what was
-// dropped"). The merge gives the dragged part's joints new ids
+// 3.2: keep what maps onto surviving bones and say what was
+// dropped). The merge gives the dragged part's joints new ids
 // (MergeResult::draggedJoints, absent for pruned joints). A pose holds one
 // rotation per bone, keyed by the joint the bone ends at (pose/Pose.h), so a
 // dragged rotation is kept, on its new id, when its bone is still the same

@@ -1,4 +1,4 @@
-// Onion skin (issue 15): the keyed poses either side of the current frame,
+// Onion skin: the keyed poses either side of the current frame,
 // drawn as translucent ghosts. Blender offers this only for grease pencil;
 // here it shows where a part comes from and goes to while posing between
 // keys.

@@ -31,7 +31,7 @@ struct BuiltPart {
     BuildOptions options;  // with the edge length actually used (never 0)
 };
 
-// One resolution per document (issue 12 item 5): a new sketch with the
+// One resolution per document: a new sketch with the
 // automatic edge length gets the document's (documentEdgeLength), so merged
 // surfaces are uniform; the first part, or a sketch too small to build at
 // that length, gets its own automatic length. The options returned record

@@ -1,4 +1,4 @@
-// A part's named clips (issue 15): the active one (PartNode::clip) and the
+// A part's named clips: the active one (PartNode::clip) and the
 // others (PartNode::otherClips, sorted by name). A clip read from an older
 // file or made without a name is called "Action" (Blender's name for a new
 // action); names are unique within a part, so a clip is addressed by

@@ -4,6 +4,14 @@
 
 namespace rigmesh::model {
 
+Eigen::AlignedBox3d worldBounds(const PartNode& node) {
+    Eigen::AlignedBox3d box;
+    if (node.part)
+        for (const Vec3& v : node.part->mesh.vertices)
+            box.extend(node.placement.toWorld(v));
+    return box;
+}
+
 rigmesh::Pose restPoseOf(const PartNode& node) {
     return node.part ? rigmesh::restPose(node.part->skeleton) : rigmesh::Pose{};
 }

@@ -35,10 +35,20 @@ struct Placement {
     Vec3 translation = Vec3::Zero();
     Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
 
+    Vec3 toWorld(const Vec3& local) const { return rotation * local + translation; }
+    Vec3 toLocal(const Vec3& world) const { return rotation.conjugate() * (world - translation); }
+    // A direction (no translation) from the world into the part.
+    Vec3 directionToLocal(const Vec3& world) const { return rotation.conjugate() * world; }
+    Eigen::Affine3d affine() const { return Eigen::Translation3d(translation) * rotation; }
+
     friend bool operator==(const Placement& a, const Placement& b) {
         return a.translation == b.translation && a.rotation.coeffs() == b.rotation.coeffs();
     }
 };
+
+struct PartNode;
+// The box around the part's surface placed in the scene (empty without a part).
+Eigen::AlignedBox3d worldBounds(const PartNode& node);
 
 struct PartNode {
     PartId id = kNoPart;
@@ -59,7 +69,7 @@ struct PartNode {
     // part->skeleton). A new part has no keys at 24 frames per second.
     // This is the part's active clip: the one keyed, played and posed from.
     rigmesh::Clip clip = rigmesh::Clip();  // (Clip's default constructor is explicit)
-    // The part's other named clips ("idle", "walk"; issue 15), sorted by name;
+    // The part's other named clips ("idle", "walk"), sorted by name;
     // every clip name of the part (clipName) is unique (PartClips.h).
     std::vector<rigmesh::Clip> otherClips;
 };

@@ -1,5 +1,5 @@
 // How the studio pushes a pose change (a pose drag, a typed rotation, Reset
-// Pose): on its own, or with auto-key on (Document::autoKey, issue 15) as
+// Pose): on its own, or with auto-key on (Document::autoKey) as
 // one undo step "<change> and key" that also keys the new pose at the
 // current frame, as Blender's auto keying does.
 #pragma once

@@ -108,8 +108,7 @@ QVariant SceneItemModel::displayData(const SceneNode& node, int column) const {
                                          .arg(p.y(), 0, 'f', 3)
                                          .arg(p.z(), 0, 'f', 3);
             QString text = position;
-            // The bone ending at the joint and how many vertices it leads
-            // (issue 14 item 2).
+            // The bone ending at the joint and how many vertices it leads.
             for (const Bone& bone : skeleton->bones())
                 if (bone.tail == node.jointId()) {
                     const std::map<BoneId, int> leads =

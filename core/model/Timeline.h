@@ -1,4 +1,4 @@
-// The document's timeline (issue 15): the frame range played and shown, the
+// The document's timeline: the frame range played and shown, the
 // frame rate that turns frames into the seconds clips are keyed in, and the
 // current frame.
 //

@@ -1,4 +1,4 @@
-// The timeline's key edits (issue 15) as document operations, each one undo
+// The timeline's key edits as document operations, each one undo
 // step (a macro when it touches several keys or parts): insert keys at the
 // current frame, delete selected keys, copy them and paste them at the
 // current frame. The dock calls these; they need no display.

@@ -1,4 +1,4 @@
-// The document's clips as a Qt item model (issue 15), as Krita's time-based
+// The document's clips as a Qt item model, as Krita's time-based
 // item models are: rows are parts (the active clip of each), each with one
 // child row per joint; columns are frames 0..frameCount()-1. The timeline
 // dock is a view over it, and it is tested without a display

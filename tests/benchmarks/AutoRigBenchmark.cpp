@@ -1,10 +1,10 @@
-// Auto-rig of an imported mesh (issue 17 item 4) at 5k, 20k and 100k
+// Auto-rig of an imported mesh at 5k, 20k and 100k
 // vertices: the biped sketch's surface at the matching edge length, taken as
 // a bare mesh (no rig), as a file from another tool would be.
 //
 //  - whole:    autoRigPart (repair check, flow, bones, bone heat)
 //  - skeleton: extractCurveSkeleton alone (CGAL's mean curvature flow),
-//              the part the issue measured at 0.7 s for 4.5k vertices and
+//              the part measured at 0.7 s for 4.5k vertices and
 //              2.6 s for 17.7k
 //  - weights:  bone heat with visibility on every vertex, on the rig's bones
 //

@@ -1,4 +1,4 @@
-// Exporting a rigged part (issue 9 item 7): the biped at 10k, 30k and 110k
+// Exporting a rigged part: the biped at 10k, 30k and 110k
 // vertices written as .glb and .fbx. Assimp's own JoinIdenticalVertices made
 // this about n^1.8; with our linear join the time should grow linearly.
 #include <benchmark/benchmark.h>

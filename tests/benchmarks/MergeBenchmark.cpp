@@ -8,7 +8,7 @@
 // to its last merge, with the model's recipe runner, once per program.
 // Re-skin times are the merge's own measurement of that stage
 // (MergeStats::reskinMs) reported as manual time. Cut (3.1), bone split and
-// bone delete (3.3) run on the finished camel (issue 13's bar: 20, 30 and
+// bone delete (3.3) run on the finished camel (the bar: 20, 30 and
 // 40 ms at about 6.5k vertices).
 #include <benchmark/benchmark.h>
 

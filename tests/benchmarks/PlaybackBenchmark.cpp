@@ -1,4 +1,4 @@
-// Playback of the timeline (issue 15): the biped at 10k and 50k vertices with
+// Playback of the timeline: the biped at 10k and 50k vertices with
 // a three-key smooth clip, one frame after another in a 960x540 viewport as
 // the studio plays it: the clip evaluated at the new frame and the pose set
 // (Document::setCurrentFrame), forward kinematics, GPU skinning and drawing,

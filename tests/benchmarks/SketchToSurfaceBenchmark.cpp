@@ -292,7 +292,7 @@ void registerBenchmarks() {
         if (owned->name != "biped") {
             continue;
         }
-        // 110k: the size the issue measured (surface stage about n^1.4 there).
+        // 110k: the size once measured (surface stage about n^1.4 there).
         for (int target : {1000, 3000, 10000, 30000, 110000}) {
             scalingCases.push_back(
                 std::make_unique<ScalingCase>(ScalingCase{owned.get(), target, nullptr}));

@@ -1,5 +1,5 @@
-// Frame times of the studio's viewport with a 50k-triangle part (issue 14
-// item 5: the weight views colour on the GPU, so they should cost no more
+// Frame times of the studio's viewport with a 50k-triangle part (the
+// weight views colour on the GPU, so they should cost no more
 // than the plain view). One frame = paintGL into the widget's framebuffer
 // plus reading it back (QOpenGLWidget::grabFramebuffer), at 1200 x 800 under
 // Xvfb with Mesa llvmpipe: an upper bound of what the screen shows.

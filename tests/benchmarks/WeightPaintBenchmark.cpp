@@ -1,4 +1,4 @@
-// Weight painting on a 50k-vertex biped (issue 14 item 5): one dab (bar:
+// Weight painting on a 50k-vertex biped: one dab (bar:
 // 1 ms), a stroke of 100 dabs (bar: 50 ms) through the engine's
 // WeightPainter, the same stroke as the studio pushes it (one
 // PaintWeightsCommand: every dab plus one copy of the part), and Smooth All.

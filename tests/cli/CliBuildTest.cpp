@@ -123,7 +123,7 @@ TEST(CliBuild, UnknownOutputFormatIsAClearError) {
     EXPECT_NE(result.err.find(".obj"), std::string::npos) << result.err;
 }
 
-// Issue 9: on a full disk .obj and .dae exited 0 with a truncated file and
+// On a full disk, .obj and .dae once exited 0 with a truncated file and
 // .fbx aborted. `ulimit -f` with SIGXFSZ ignored makes writes past 2 KiB fail
 // as on a full disk; every output must then exit 1 and keep the old file.
 TEST(CliBuild, AFullDiskExitsOneAndKeepsThePreviousFiles) {

@@ -1,5 +1,5 @@
 // Every file one `rigmesh build` writes describes the same vertices in the
-// same order (issue 19): the mesh in each format, read back with our own
+// same order: the mesh in each format, read back with our own
 // readers (MeshFilePositions.h), has vertex i where the rig JSON's vertex i
 // is, and the rig JSON names the mesh file it goes with. Before, the OBJ
 // came from Assimp's exporter, which numbers vertices in the order faces

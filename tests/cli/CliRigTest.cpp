@@ -1,4 +1,4 @@
-// `rigmesh rig` end to end (issue 17): a plain OBJ of one of our sketches
+// `rigmesh rig` end to end: a plain OBJ of one of our sketches
 // comes out rigged in every format; a mesh that cannot be rigged is a
 // one-line reason with exit code 1 and no output file.
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 """Opens one of our exports of an imported rig with Blender's default
 importer and plays its clip: at each time posed_vertices gave, the meshes
 as Blender deforms them (linear blend) lie where the studio's skinning puts
-them, every vertex within 1% of the size (issue 31: a rig from Debian's
+them, every vertex within 1% of the size (a rig from Debian's
 assimp-testmodels posed in the studio and in Blender at the same frame).
 
 usage: blender -b --factory-startup --python-exit-code 1 \

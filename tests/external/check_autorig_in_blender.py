@@ -1,5 +1,5 @@
-"""Blender check of a mesh made in Blender, rigged by `rigmesh rig` (issue
-17): what an artist sees after a default import of the rigged file.
+"""Blender check of a mesh made in Blender, rigged by `rigmesh rig`:
+what an artist sees after a default import of the rigged file.
 
 - one armature whose leaf bones are the figure's limbs (LEAVES of them);
 - every bone's head, middle and tail inside the surface;

@@ -1,7 +1,7 @@
 """Opens, with Blender's default importer, the Blender rig of
 make_blender_rig.py after a trip through RigMesh (`rigmesh import`, then
 `rigmesh export` to the same format) and checks that Blender sees what it
-exported (issue 18 item 2): bones Lower, Middle and Upper, chained, with
+exported: bones Lower, Middle and Upper, chained, with
 their heads and tails where they were (metres), the capsule 3 units tall,
 and the action (named Wave, except from COLLADA, whose Blender exporter
 names it after the object) with its keys.

@@ -1,6 +1,6 @@
 """Imports one RigMesh export into an empty Blender scene with the importer's
-default options and checks what a rigger sees of the armature (issue 18
-item 1): every bone's head on our head, its tail within 1 degree of our
+default options and checks what a rigger sees of the armature:
+every bone's head on our head, its tail within 1 degree of our
 head-to-tail direction, and its length within 1% of ours; no stray empties;
 every vertex weighted (also after --subdivide and --decimate, item 4).
 

@@ -1,4 +1,4 @@
-"""Imports a RigMesh export with named clips over several parts (issue 15)
+"""Imports a RigMesh export with named clips over several parts
 and checks that every clip arrives as its own action on every part's
 armature, keyed at our key times, and deforms like our own skinning.
 

@@ -1,11 +1,11 @@
 """Opens a several-part RigMesh export with Blender's default importer and
-checks that every part arrives (issue 18 item 3): a mesh object named after
+checks that every part arrives: a mesh object named after
 the part, bound (Armature modifier) to an armature with bones. In glTF and
 FBX each part has its own armature `<part>_armature`; Blender's COLLADA
 importer makes one armature for all (see AssimpSceneBuilder.cpp).
 
 With --bones=N, the file must hold exactly the parts named (no other mesh
-object) and each armature N bones: the merged camel (issue 12) is one mesh
+object) and each armature N bones: the merged camel is one mesh
 over one armature.
 
 usage: blender -b --factory-startup --python-exit-code 1 \

@@ -1,4 +1,4 @@
-# Blender check of "export the current pose" (issue 11 item 3): the file's
+# Blender check of "export the current pose": the file's
 # mesh, as Blender shows it after a default import, must lie where our own
 # skinning puts the posed part (the current pose exported as an .obj), within
 # 1e-5 of the mesh's size.

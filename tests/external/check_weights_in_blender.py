@@ -1,6 +1,6 @@
 """Opens a RigMesh export with Blender's default importer and checks that
-hand-painted skin weights arrived (issue 14: "the fix survives save, reopen
-and export to Blender"): every vertex of the part within RADIUS of CENTRE
+hand-painted skin weights arrived (they must survive
+save, reopen and export to Blender): every vertex of the part within RADIUS of CENTRE
 (our Y-up coordinates) has VALUE in the vertex group GROUP, at least
 MINIMUM such vertices exist, and every vertex's groups sum to 1.
 

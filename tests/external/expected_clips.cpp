@@ -1,5 +1,5 @@
 // expected_clips: what Blender must show for a document with named clips
-// over several parts (issue 15), exported by `rigmesh run RECIPE -o ...`.
+// over several parts, exported by `rigmesh run RECIPE -o ...`.
 // Reads the document the same recipe writes (.rigmesh) and, for every clip
 // name and every part with a clip of that name, gives the key times, a time
 // between the first two keys where Blender's interpolation equals ours

@@ -1,5 +1,5 @@
 """Builds in Blender the kind of mesh a user brings from another tool to be
-rigged (issue 17) and writes it as plain OBJ, without a rig:
+rigged and writes it as plain OBJ, without a rig:
 
 - figure.obj: a metaball figure (a body ball and four limbs of capsules,
   like a starfish standing up), converted to a mesh and triangulated:

@@ -1,5 +1,5 @@
 """Builds in Blender the rig a user would make by hand and exports it as .glb,
-.fbx and .dae with each exporter's default options (issue 18 item 2): a
+.fbx and .dae with each exporter's default options: a
 capsule 3 units tall standing on the origin, skinned (automatic weights) to
 an armature "Rig" of three chained bones Lower, Middle, Upper (1 unit each,
 up the capsule), and an action "Wave" that bends Middle by 40 degrees about

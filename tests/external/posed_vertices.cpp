@@ -1,5 +1,5 @@
 // posed_vertices: where the studio puts an imported part's vertices when its
-// clip plays (issue 31: posed in the studio and in Blender at the same frame,
+// clip plays (posed in the studio and in Blender at the same frame,
 // linear blend skinning on both sides). Reads a document (`rigmesh import`
 // writes one), takes its rigged parts' vertices one after the other, rest and
 // skinned by the clip of that name at each time, in world coordinates (each

@@ -157,7 +157,7 @@ TEST(Fuzz, Document) {
     EXPECT_TRUE(runFuzzTarget(target).failures.empty());
 }
 
-// File > Import (issue 9 item 2): our own export of a rigged part in each
+// File > Import: our own export of a rigged part in each
 // format Assimp reads for us, mutated and read through the child process.
 // Every input gives valid parts or an Error with a message; the child's
 // crashes, hangs and runaway allocations are contained (limits below the

@@ -199,7 +199,7 @@ TEST(ClipCommands, RebuildKeepsTheKeysAndSettingsAndUndoRestoresThem) {
     EXPECT_EQ(bytesOf(a.document), before);
 }
 
-// Issue 9: each key command kept two whole clips, so n key steps took
+// Each key command used to keep two whole clips, so n key steps took
 // O(n^2) time and memory (2,000 keys: 8.8 s). A command now keeps only the
 // keys it changes, and undo/redo still give back the exact clips.
 TEST(ClipCommands, KeyCommandsKeepOnlyTheKeysTheyChangeAndUndoExactly) {

@@ -42,26 +42,6 @@ std::unique_ptr<Document> animatedDocument() {
     return document;
 }
 
-json decode(const QByteArray& bytes) {
-    return json::from_cbor(std::vector<std::uint8_t>(bytes.begin() + 3, bytes.end()));
-}
-
-QByteArray encode(const json& root) {
-    std::vector<std::uint8_t> out = {0xD9, 0xD9, 0xF7};
-    json::to_cbor(root, out);
-    return QByteArray(reinterpret_cast<const char*>(out.data()),
-                      static_cast<qsizetype>(out.size()));
-}
-
-void expectRejected(const QByteArray& bytes, const std::string& fragment) {
-    try {
-        DocumentFile::fromBytes(bytes);
-        ADD_FAILURE() << "accepted a file that should fail with \"" << fragment << "\"";
-    } catch (const DocumentFileError& e) {
-        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-    }
-}
-
 TEST(ClipFile, ClipsRoundTripExactly) {
     const auto document = animatedDocument();
     ASSERT_EQ(document->parts()[0].clip.keyCount(), 3);
@@ -79,7 +59,7 @@ TEST(ClipFile, ClipsRoundTripExactly) {
 }
 
 TEST(ClipFile, ClipIsStoredAsTimesAndPosesWithItsSettings) {
-    const json root = decode(bytesOf(*animatedDocument()));
+    const json root = documentJson(bytesOf(*animatedDocument()));
     const json& clip = root["parts"][0]["clip"];
     EXPECT_EQ(clip["framesPerSecond"], 29.97);
     EXPECT_EQ(clip["interpolation"], "smooth");
@@ -93,44 +73,44 @@ TEST(ClipFile, ClipIsStoredAsTimesAndPosesWithItsSettings) {
 }
 
 TEST(ClipFile, FileWithoutClipsLoadsWithEmptyClips) {
-    json root = decode(bytesOf(*animatedDocument()));
+    json root = documentJson(bytesOf(*animatedDocument()));
     for (json& part : root["parts"])
         part.erase("clip");
-    const DocumentContents loaded = DocumentFile::fromBytes(encode(root));
+    const DocumentContents loaded = DocumentFile::fromBytes(documentBytes(root));
     for (const PartNode& node : loaded.parts)
         EXPECT_TRUE(identicalClips(node.clip, rigmesh::Clip()));
 }
 
 TEST(ClipFile, CorruptClipsAreRejectedWithAClearMessage) {
-    const json good = decode(bytesOf(*animatedDocument()));
+    const json good = documentJson(bytesOf(*animatedDocument()));
     json bad = good;
     bad["parts"][0]["clip"]["interpolation"] = "cubic";
-    expectRejected(encode(bad), "unknown clip interpolation \"cubic\"");
+    expectRejected(documentBytes(bad), "unknown clip interpolation \"cubic\"");
     bad = good;
     bad["parts"][0]["clip"]["playback"] = "bounce";
-    expectRejected(encode(bad), "unknown clip playback \"bounce\"");
+    expectRejected(documentBytes(bad), "unknown clip playback \"bounce\"");
     bad = good;
     bad["parts"][0]["clip"]["framesPerSecond"] = 0.0;
-    expectRejected(encode(bad), "clip frame rate of part 1 (\"Y\") is not positive");
+    expectRejected(documentBytes(bad), "clip frame rate of part 1 (\"Y\") is not positive");
     bad = good;
     bad["parts"][0]["clip"]["keys"][1]["time"] = std::numeric_limits<double>::infinity();
-    expectRejected(encode(bad), "key time of part 1 (\"Y\") is not finite");
+    expectRejected(documentBytes(bad), "key time of part 1 (\"Y\") is not finite");
     bad = good;
     bad["parts"][0]["clip"]["keys"][1]["time"] = 0.0;
-    expectRejected(encode(bad), "two keys at one time");
+    expectRejected(documentBytes(bad), "two keys at one time");
     bad = good;
     bad["parts"][0]["clip"]["keys"][0]["pose"]["rotations"][0][0] = 424242;
-    expectRejected(encode(bad), "pose joint 424242 of part 1 (\"Y\") is not a joint");
+    expectRejected(documentBytes(bad), "pose joint 424242 of part 1 (\"Y\") is not a joint");
     bad = good;
     bad["parts"][0]["clip"]["keys"][0]["pose"]["rotations"][0][1] =
         std::numeric_limits<double>::quiet_NaN();
-    expectRejected(encode(bad), "is not finite or is zero");
+    expectRejected(documentBytes(bad), "is not finite or is zero");
     bad = good;
     bad["parts"][0]["clip"]["keys"][0].erase("pose");
-    expectRejected(encode(bad), "missing \"pose\"");
+    expectRejected(documentBytes(bad), "missing \"pose\"");
     bad = good;
     bad["parts"][0]["clip"].erase("keys");
-    expectRejected(encode(bad), "missing \"keys\"");
+    expectRejected(documentBytes(bad), "missing \"keys\"");
 }
 
 }  // namespace

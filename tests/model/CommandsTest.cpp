@@ -9,6 +9,7 @@
 #include "model/commands/RebuildPartCommand.h"
 #include "model/commands/RenamePartCommand.h"
 #include "model/commands/SetPartVisibleCommand.h"
+#include "model/preview/PlacementPreview.h"
 
 namespace rigmesh::model::test {
 namespace {
@@ -168,25 +169,49 @@ TEST(Commands, RotationIsPartOfTheMove) {
     EXPECT_EQ(document.part(a).placement, turned);
 }
 
-TEST(Commands, AlreadyAppliedMoveSkipsItsFirstRedo) {
+// A drag previewed live is one undo step from where it started, pushed
+// once; a second drag is a second step (no merging); a reverted preview
+// leaves no step and puts the part back.
+TEST(Commands, PlacementPreviewCommitsOneStepFromWhereItStarted) {
     Document document;
     const PartId a = addPart(document, testStrokes()[0]);
     const Placement from = document.part(a).placement;
     const Placement to = movedBy(from, 0.5);
-    QSignalSpy changed(&document, &Document::partChanged);
-    document.undoStack()->push(new MovePartCommand(document, a, from, to, true));
-    EXPECT_EQ(changed.count(), 0);
-    EXPECT_EQ(document.part(a).placement, from);  // a live preview would hold `to`
+    const int stepsBefore = document.undoStack()->count();
+    {
+        PlacementPreview preview(document, a);
+        preview.preview(movedBy(from, 0.25));
+        preview.preview(to);
+        EXPECT_EQ(document.part(a).placement, to);
+        EXPECT_EQ(document.undoStack()->count(), stepsBefore);
+        EXPECT_TRUE(preview.commit());
+    }
+    EXPECT_EQ(document.undoStack()->count(), stepsBefore + 1);
+    EXPECT_EQ(document.part(a).placement, to);
+    {
+        PlacementPreview second(document, a);
+        second.preview(movedBy(to, 0.5));
+        EXPECT_TRUE(second.commit());
+    }
+    EXPECT_EQ(document.undoStack()->count(), stepsBefore + 2);
     document.undoStack()->undo();
+    document.undoStack()->undo();
+    EXPECT_EQ(document.part(a).placement, from);
     document.undoStack()->redo();
     EXPECT_EQ(document.part(a).placement, to);
+    {
+        PlacementPreview dropped(document, a);
+        dropped.preview(movedBy(to, 3.0));
+    }  // destroyed uncommitted: reverted
+    EXPECT_EQ(document.part(a).placement, to);
+    EXPECT_EQ(document.undoStack()->count(), stepsBefore + 2);
 }
 
 TEST(Commands, RebuildIsOneUndoableStep) {
     Document document;
     const PartId a = addPart(document, testStrokes()[0]);
     const auto original = document.part(a).part;
-    // A new part records the edge length it was built with (issue 12 item 5).
+    // A new part records the edge length it was built with.
     const BuildOptions created = document.part(a).options;
     EXPECT_GT(created.targetEdgeLength, 0.0);
     const int count = document.undoStack()->count();

@@ -24,8 +24,7 @@ class VersionOneDocument : public ::testing::Test {
   protected:
     void SetUp() override {
         const QByteArray bytes = fileBytes(kFolder + "y_branch_bone_deleted_v1.rigmesh");
-        const nlohmann::json root =
-            nlohmann::json::from_cbor(std::vector<std::uint8_t>(bytes.begin() + 3, bytes.end()));
+        const nlohmann::json root = documentJson(bytes);
         ASSERT_EQ(root.at("version"), 1);
         stored = root.at("parts").at(0).at("part");
         loaded = DocumentFile::fromBytes(bytes);
@@ -70,8 +69,8 @@ TEST_F(VersionOneDocument, LoadsValidWithEveryWeightOnTheBoneAtItsStoredPosition
 
 // The same steps replayed today give the same skeleton and weights keyed by
 // the same ids: the conversion put every weight where the engine puts it
-// now. Today's surface is finer on thin parts and its caps rounder (issue
-// 10; the end joints in the caps' middles move by up to a fifth of this
+// now. Today's surface is finer on thin parts and its caps rounder (the end
+// joints in the caps' middles move by up to a fifth of this
 // document's 0.3 edge length), so each stored vertex is compared with
 // today's nearest vertex: the same dominant bone.
 TEST_F(VersionOneDocument, EqualsTheSameRecipeReplayedToday) {
@@ -120,8 +119,7 @@ TEST_F(VersionOneDocument, EqualsTheSameRecipeReplayedToday) {
 // Saving writes the current version (bones by id), which reads back exactly.
 TEST_F(VersionOneDocument, SavesAsTheCurrentVersionAndReadsBackExactly) {
     const QByteArray saved = DocumentFile::toBytes(loaded);
-    const nlohmann::json root =
-        nlohmann::json::from_cbor(std::vector<std::uint8_t>(saved.begin() + 3, saved.end()));
+    const nlohmann::json root = documentJson(saved);
     EXPECT_EQ(root.at("version"), DocumentFile::kFormatVersion);
     EXPECT_TRUE(root.at("parts").at(0).at("part").at("weights").contains("byBoneId"));
     const DocumentContents back = DocumentFile::fromBytes(saved);

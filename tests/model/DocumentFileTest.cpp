@@ -119,15 +119,6 @@ TEST(DocumentFile, LoadedDocumentKeepsAllocatingFreshIds) {
         EXPECT_NE(node.id, id);
 }
 
-void expectRejected(const QByteArray& bytes, const std::string& expected) {
-    try {
-        DocumentFile::fromBytes(bytes);
-        ADD_FAILURE() << "accepted a bad file; expected: " << expected;
-    } catch (const DocumentFileError& e) {
-        EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
-    }
-}
-
 TEST(DocumentFile, TruncatedFilesAreRejected) {
     const QByteArray bytes = bytesOf(*sampleDocument());
     for (const qsizetype size : {qsizetype(1), qsizetype(3), qsizetype(4), qsizetype(40),
@@ -145,38 +136,31 @@ TEST(DocumentFile, CorruptFilesAreRejected) {
 
     // Structurally valid CBOR with bad contents.
     using nlohmann::json;
-    const std::vector<std::uint8_t> raw(bytes.begin() + 3, bytes.end());
-    const json good = json::from_cbor(raw);
-    const auto encode = [](const json& j) {
-        std::vector<std::uint8_t> out = {0xD9, 0xD9, 0xF7};
-        json::to_cbor(j, out);
-        return QByteArray(reinterpret_cast<const char*>(out.data()),
-                          static_cast<qsizetype>(out.size()));
-    };
+    const json good = documentJson(bytes);
     json bad = good;
     bad["parts"][0]["part"]["mesh"]["faces"][0] = 1000000;
-    expectRejected(encode(bad), "face refers to a missing vertex");
+    expectRejected(documentBytes(bad), "face refers to a missing vertex");
     bad = good;
     bad["parts"][0]["part"]["mesh"].erase("vertices");
-    expectRejected(encode(bad), "missing \"vertices\"");
+    expectRejected(documentBytes(bad), "missing \"vertices\"");
     bad = good;
     bad["parts"][1]["id"] = bad["parts"][0]["id"];
-    expectRejected(encode(bad), "same id");
+    expectRejected(documentBytes(bad), "same id");
     bad = good;
     bad["parts"][0]["name"] = 12;
-    expectRejected(encode(bad), "part name is not text");
+    expectRejected(documentBytes(bad), "part name is not text");
     bad = good;
     bad["parts"][0]["part"]["weights"]["byBoneId"][0] = json::array({99, 1.0});
-    expectRejected(encode(bad), "bone 99, which the skeleton does not have");
+    expectRejected(documentBytes(bad), "bone 99, which the skeleton does not have");
     bad = good;
     bad["parts"][0]["part"]["skeleton"]["root"] = 424242;
-    expectRejected(encode(bad), "root");
+    expectRejected(documentBytes(bad), "root");
     bad = good;
     bad["format"] = "something-else";
-    expectRejected(encode(bad), "not a RigMesh Studio document");
+    expectRejected(documentBytes(bad), "not a RigMesh Studio document");
     bad = good;
     bad["nextPartId"] = 1;
-    expectRejected(encode(bad), "next part id");
+    expectRejected(documentBytes(bad), "next part id");
 }
 
 // The sample document as json, changed by `edit`, encoded back to a file.
@@ -184,12 +168,9 @@ template <typename Edit>
 QByteArray editedSample(const Edit& edit) {
     using nlohmann::json;
     static const QByteArray bytes = bytesOf(*sampleDocument());
-    json root = json::from_cbor(std::vector<std::uint8_t>(bytes.begin() + 3, bytes.end()));
+    json root = documentJson(bytes);
     edit(root);
-    std::vector<std::uint8_t> out = {0xD9, 0xD9, 0xF7};
-    json::to_cbor(root, out);
-    return QByteArray(reinterpret_cast<const char*>(out.data()),
-                      static_cast<qsizetype>(out.size()));
+    return documentBytes(root);
 }
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -292,14 +273,10 @@ TEST(DocumentFile, DeeplyNestedListsAreRejectedWithoutRecursingIntoThem) {
 TEST(DocumentFile, NewerVersionIsRejectedWithAClearMessage) {
     using nlohmann::json;
     const QByteArray bytes = bytesOf(*sampleDocument());
-    json root = json::from_cbor(std::vector<std::uint8_t>(bytes.begin() + 3, bytes.end()));
+    json root = documentJson(bytes);
     root["version"] = DocumentFile::kFormatVersion + 1;
-    std::vector<std::uint8_t> out = {0xD9, 0xD9, 0xF7};
-    json::to_cbor(root, out);
-    expectRejected(
-        QByteArray(reinterpret_cast<const char*>(out.data()), static_cast<qsizetype>(out.size())),
-        "newer RigMesh Studio (format version " + std::to_string(DocumentFile::kFormatVersion + 1) +
-            ")");
+    expectRejected(documentBytes(root), "newer RigMesh Studio (format version " +
+                                            std::to_string(DocumentFile::kFormatVersion + 1) + ")");
 }
 
 TEST(DocumentFile, LoadFailureOpensNothingAndNamesTheFile) {

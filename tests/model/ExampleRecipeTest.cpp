@@ -26,7 +26,7 @@ TEST(ExampleRecipe, CamelIsMergedIntoOneRiggedPartAndItsHistoryReplaysExactly) {
     EXPECT_TRUE(camel.part->skeleton.validate().empty());
     // One resolution for the document: the paper has 6,582 vertices; ours
     // has more because the thin legs and neck are meshed at a quarter of
-    // their radius (issue 10: at least 24 vertices around).
+    // their radius (at least 24 vertices around).
     EXPECT_GT(camel.part->mesh.vertexCount(), 5000);
     EXPECT_LT(camel.part->mesh.vertexCount(), 12000);
     ASSERT_EQ(camel.clip.keyCount(), 3);

@@ -1,4 +1,4 @@
-// Rigs made elsewhere in the document (issue 31): a Half-Life model and a
+// Rigs made elsewhere in the document: a Half-Life model and a
 // DirectX character from Debian's assimp-testmodels come in rigged, with
 // disconnected bones and every animation a named clip; they pose, key, save
 // and load exactly; a cut refuses them naming the bone, Connect Bone

@@ -78,8 +78,8 @@ TEST(LegacyDocument, VersionOneDocumentOpensWithIdenticalDeformedVertices) {
 
 // The recipe replayed today converts its poses as the document's were
 // converted: the same joints and bit for bit the same per-bone rotations at
-// every key. The surface itself is today's (issue 10 made thin parts finer
-// and caps rounder; an end joint sits in the middle of its cap, so it moves
+// every key. The surface itself is today's (thin parts are finer
+// and caps rounder than in version 1; an end joint sits in the middle of its cap, so it moves
 // by up to 0.031 on this 5.4-high biped), so the deformed vertices are
 // compared through the document's own mesh above, not here.
 TEST(LegacyDocument, VersionOneRecipeReplaysToTheVersionOneDocument) {

@@ -1,6 +1,6 @@
 // A merge keeps the dragged part's pose, pins and keys on its new joint ids
-// where they still turn the same bones, and says what it dropped (issue 12
-// item 7); undo restores both parts exactly and the history replays.
+// where they still turn the same bones, and says what it dropped; undo restores both parts exactly
+// and the history replays.
 #include "ModelTestSupport.h"
 #include "RecipeTestSupport.h"
 #include "model/commands/MergePartsCommand.h"

@@ -113,7 +113,7 @@ TEST(DocumentResolution, SketchesAfterTheFirstShareItsEdgeLength) {
     EXPECT_EQ(leg.targetEdgeLength, body.targetEdgeLength);
     // The small leg is coarser than when sketched alone (at 1/60 of its own
     // size). Not much coarser: a thin part is meshed at a fraction of its
-    // radius whatever the document's edge length (issue 10).
+    // radius whatever the document's edge length.
     Document alone;
     runSteps(alone, {{{"command", "sketch"},
                       {"points", pointsOf(sharedStroke("camel_leg"))},

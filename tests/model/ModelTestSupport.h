@@ -7,7 +7,9 @@
 #include <QCoreApplication>
 #include <QTemporaryDir>
 #include <cmath>
+#include <cstdint>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -61,6 +63,29 @@ inline PartId addPart(Document& document, const std::vector<Vec2>& stroke,
 
 inline QByteArray bytesOf(const Document& document) {
     return DocumentFile::toBytes(document);
+}
+
+// A .rigmesh file's JSON tree: CBOR after the 3-byte self-describe tag.
+inline nlohmann::json documentJson(const QByteArray& bytes) {
+    return nlohmann::json::from_cbor(std::vector<std::uint8_t>(bytes.begin() + 3, bytes.end()));
+}
+
+// The file of a JSON tree: the self-describe tag, then CBOR.
+inline QByteArray documentBytes(const nlohmann::json& root) {
+    std::vector<std::uint8_t> out = {0xD9, 0xD9, 0xF7};
+    nlohmann::json::to_cbor(root, out);
+    return QByteArray(reinterpret_cast<const char*>(out.data()),
+                      static_cast<qsizetype>(out.size()));
+}
+
+// Loading `bytes` fails with a DocumentFileError mentioning `fragment`.
+inline void expectRejected(const QByteArray& bytes, const std::string& fragment) {
+    try {
+        DocumentFile::fromBytes(bytes);
+        ADD_FAILURE() << "accepted a file that should fail with \"" << fragment << "\"";
+    } catch (const DocumentFileError& e) {
+        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace rigmesh::model::test

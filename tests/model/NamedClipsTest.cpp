@@ -1,4 +1,4 @@
-// Named clips per part (issue 15): new, duplicate, rename, delete and the
+// Named clips per part: new, duplicate, rename, delete and the
 // active clip as undoable commands with exact undo (by saved bytes), their
 // refusals before any push, their recipe steps and replay, and the other
 // clips carried through a rebuild.

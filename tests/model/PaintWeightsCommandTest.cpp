@@ -1,4 +1,4 @@
-// Weight painting in the document (issue 14 items 3-4): a paint_weights step
+// Weight painting in the document: a paint_weights step
 // is one undo step that undo takes back byte for byte, painted weights are
 // saved and read back, and a painting session replays headless.
 #include "ModelTestSupport.h"

@@ -11,6 +11,7 @@
 #include "model/commands/ResetPoseCommand.h"
 #include "model/commands/SetJointPinnedCommand.h"
 #include "model/commands/SetPoseCommand.h"
+#include "model/preview/PosePreview.h"
 
 namespace rigmesh::model::test {
 namespace {
@@ -105,15 +106,16 @@ TEST(PoseCommands, LivePreviewIsOneStepFromThePoseBeforeIt) {
     const rigmesh::Pose rest = p.node().pose;
     const JointId joint = p.ends[0];
     QSignalSpy changed(&p.document, &Document::partChanged);
+    PosePreview preview(p.document, p.id);
     for (int step = 1; step <= 3; ++step)
-        p.document.previewPose(p.id, dragged(p.node(), joint, Vec3(0.04 * step, 0.0, 0.03)));
+        preview.preview(dragged(p.node(), joint, Vec3(0.04 * step, 0.0, 0.03)));
     EXPECT_EQ(changed.count(), 3);
-    ASSERT_NE(p.document.posePreviewOrigin(p.id), nullptr);
-    EXPECT_TRUE(identicalPoses(*p.document.posePreviewOrigin(p.id), rest));
+    ASSERT_TRUE(preview.previewing());
+    EXPECT_TRUE(identicalPoses(preview.original(), rest));
     const rigmesh::Pose last = p.node().pose;
-    p.stack().push(new SetPoseCommand(p.document, p.id, last, joint, true));
+    EXPECT_TRUE(preview.commit(joint));
     EXPECT_EQ(p.stack().count(), 1);
-    EXPECT_EQ(p.document.posePreviewOrigin(p.id), nullptr);
+    EXPECT_FALSE(preview.previewing());
     EXPECT_TRUE(identicalPoses(p.node().pose, last));
     p.stack().undo();
     EXPECT_TRUE(identicalPoses(p.node().pose, rest));
@@ -121,8 +123,9 @@ TEST(PoseCommands, LivePreviewIsOneStepFromThePoseBeforeIt) {
     EXPECT_TRUE(identicalPoses(p.node().pose, last));
 
     // A cancelled preview puts the pose back and leaves no step.
-    p.document.previewPose(p.id, dragged(p.node(), p.ends[1], Vec3(0.1, 0.0, 0.0)));
-    p.document.cancelPosePreview(p.id);
+    PosePreview cancelled(p.document, p.id);
+    cancelled.preview(dragged(p.node(), p.ends[1], Vec3(0.1, 0.0, 0.0)));
+    cancelled.revert();
     EXPECT_TRUE(identicalPoses(p.node().pose, last));
     EXPECT_EQ(p.stack().count(), 1);
 }

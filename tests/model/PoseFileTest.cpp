@@ -34,26 +34,6 @@ std::unique_ptr<Document> posedDocument() {
     return document;
 }
 
-json decode(const QByteArray& bytes) {
-    return json::from_cbor(std::vector<std::uint8_t>(bytes.begin() + 3, bytes.end()));
-}
-
-QByteArray encode(const json& root) {
-    std::vector<std::uint8_t> out = {0xD9, 0xD9, 0xF7};
-    json::to_cbor(root, out);
-    return QByteArray(reinterpret_cast<const char*>(out.data()),
-                      static_cast<qsizetype>(out.size()));
-}
-
-void expectRejected(const QByteArray& bytes, const std::string& fragment) {
-    try {
-        DocumentFile::fromBytes(bytes);
-        ADD_FAILURE() << "accepted a file that should fail with \"" << fragment << "\"";
-    } catch (const DocumentFileError& e) {
-        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-    }
-}
-
 TEST(PoseFile, PoseAndPinsRoundTripExactly) {
     const auto document = posedDocument();
     const QByteArray bytes = bytesOf(*document);
@@ -70,12 +50,12 @@ TEST(PoseFile, PoseAndPinsRoundTripExactly) {
 }
 
 TEST(PoseFile, FileWithoutPoseFieldsLoadsInTheRestPose) {
-    json root = decode(bytesOf(*posedDocument()));
+    json root = documentJson(bytesOf(*posedDocument()));
     for (json& part : root["parts"]) {
         part.erase("pose");
         part.erase("pinned");
     }
-    const DocumentContents loaded = DocumentFile::fromBytes(encode(root));
+    const DocumentContents loaded = DocumentFile::fromBytes(documentBytes(root));
     for (const PartNode& node : loaded.parts) {
         EXPECT_TRUE(identicalPoses(node.pose, restPose(node.part->skeleton)));
         EXPECT_TRUE(node.pinnedJoints.empty());
@@ -83,33 +63,33 @@ TEST(PoseFile, FileWithoutPoseFieldsLoadsInTheRestPose) {
 }
 
 TEST(PoseFile, CorruptPoseDataIsRejectedWithAClearMessage) {
-    const json good = decode(bytesOf(*posedDocument()));
+    const json good = documentJson(bytesOf(*posedDocument()));
     const JointId joint = good["parts"][0]["pose"]["rotations"][0][0].get<JointId>();
 
     json bad = good;
     bad["parts"][0]["pose"]["rotations"][0][1] = std::numeric_limits<double>::quiet_NaN();
-    expectRejected(encode(bad), "the pose rotation of joint " + std::to_string(joint) +
-                                    " of part 1 (\"Y\") is not finite or is zero");
+    expectRejected(documentBytes(bad), "the pose rotation of joint " + std::to_string(joint) +
+                                           " of part 1 (\"Y\") is not finite or is zero");
     bad = good;
     for (int k = 1; k <= 4; ++k)
         bad["parts"][0]["pose"]["rotations"][0][k] = 0.0;
-    expectRejected(encode(bad), "is not finite or is zero");
+    expectRejected(documentBytes(bad), "is not finite or is zero");
     bad = good;
     bad["parts"][0]["pose"]["rotations"][0][0] = 424242;
-    expectRejected(encode(bad),
+    expectRejected(documentBytes(bad),
                    "pose joint 424242 of part 1 (\"Y\") is not a joint of its skeleton");
     bad = good;
     bad["parts"][0]["pinned"][0] = 424242;
-    expectRejected(encode(bad), "pinned joint 424242 of part 1 (\"Y\") is not a joint");
+    expectRejected(documentBytes(bad), "pinned joint 424242 of part 1 (\"Y\") is not a joint");
     bad = good;
     bad["parts"][0]["pose"]["rotations"][0] = json::array({joint, 1.0, 0.0});
-    expectRejected(encode(bad), "is not [joint, w, x, y, z]");
+    expectRejected(documentBytes(bad), "is not [joint, w, x, y, z]");
     bad = good;
     bad["parts"][0]["pose"]["rootTranslation"][1] = std::numeric_limits<double>::infinity();
-    expectRejected(encode(bad), "root translation of part 1 (\"Y\") is not finite");
+    expectRejected(documentBytes(bad), "root translation of part 1 (\"Y\") is not finite");
     bad = good;
     bad["parts"][0]["pose"].erase("rotations");
-    expectRejected(encode(bad), "missing \"rotations\"");
+    expectRejected(documentBytes(bad), "missing \"rotations\"");
 }
 
 }  // namespace

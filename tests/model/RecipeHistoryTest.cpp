@@ -21,6 +21,7 @@
 #include "model/commands/SetJointPinnedCommand.h"
 #include "model/commands/SetPartVisibleCommand.h"
 #include "model/commands/SetPoseCommand.h"
+#include "model/preview/PosePreview.h"
 #include "model/recipe/RecipeFromHistory.h"
 
 namespace rigmesh::model::test {
@@ -136,7 +137,7 @@ class RandomHistory {
 
   private:
     // An IK drag step, often of the same joint again (merging); `live` drags
-    // preview the pose first and push with alreadyApplied, as the studio may.
+    // preview the pose first and commit it (model/preview/PosePreview.h), as the studio does.
     void drag(Document& document, bool live) {
         if (!document.contains(lastPosed_) || pick(0, 2) == 0) {
             lastPosed_ = randomPart(document);
@@ -147,10 +148,13 @@ class RandomHistory {
         }
         const PartNode& node = document.part(lastPosed_);
         const rigmesh::Pose pose = dragged(node, lastDragged_, 0.2 * Vec3(real(), real(), real()));
-        if (live)
-            document.previewPose(lastPosed_, pose);
-        document.undoStack()->push(
-            new SetPoseCommand(document, lastPosed_, pose, lastDragged_, live));
+        if (live) {
+            PosePreview preview(document, lastPosed_);
+            preview.preview(pose);
+            preview.commit(lastDragged_);
+            return;
+        }
+        document.undoStack()->push(new SetPoseCommand(document, lastPosed_, pose, lastDragged_));
     }
     int pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
     double real() { return std::uniform_real_distribution<double>(-1.0, 1.0)(rng_); }

@@ -1,4 +1,4 @@
-// Auto-Rig in the model (issue 17): a mesh imported without a rig gets a
+// Auto-Rig in the model: a mesh imported without a rig gets a
 // skeleton and weights as one undo step, the recipe step "rig" replays it,
 // and a rigged part or a part changed meanwhile is refused, unchanged.
 #include <gtest/gtest.h>

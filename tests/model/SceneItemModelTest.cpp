@@ -17,7 +17,7 @@ Kind kindOf(const QModelIndex& index) {
     return static_cast<Kind>(index.data(SceneItemModel::KindRole).toInt());
 }
 
-// Issue 14 item 2: each joint row says how many vertices the bone ending at
+// Each joint row says how many vertices the bone ending at
 // it leads; over all bones they are every vertex.
 TEST(SceneItemModel, JointRowsShowTheVertexCountOfTheirBone) {
     Document document;

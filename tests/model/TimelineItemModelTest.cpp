@@ -1,4 +1,4 @@
-// The timeline's item model (issue 15): rows are parts with one child per
+// The timeline's item model: rows are parts with one child per
 // joint, columns frames; keys, holds, the current frame and the range are
 // its data. A random session of clip, part and timeline commands with undo
 // and redo runs under QAbstractItemModelTester (fatal mode), and after every

@@ -1,4 +1,4 @@
-// The document's timeline (issue 15): the current frame (shown, saved, never
+// The document's timeline: the current frame (shown, saved, never
 // an undo step), frame range and rate (a rate change keeps keys on their
 // frames), moving keys together, copy/paste/delete at the cursor as one undo
 // step each, auto-key, onion poses, and the file's version 2 with version 1
@@ -124,14 +124,17 @@ TEST(Timeline, MovingKeysTogetherIsOneStepAndUndoesExactly) {
     EXPECT_THROW(MoveKeysCommand(k.document, k.id, {k.frameTime(12)}, 2e6), Error);
 }
 
-TEST(Timeline, AnAlreadyAppliedKeyMoveRecordsWithoutApplyingAgain) {
+// A key move previewed live (widgets/timeline/KeyDrag) is put back and
+// pushed: the command's redo ends where the preview showed.
+TEST(Timeline, APreviewedKeyMoveIsOneStepEndingWhereThePreviewShowed) {
     Keyed k;
     const QByteArray before = bytesOf(k.document);
     const std::vector<double> times{k.frameTime(24)};
     const ClipEdit edit = movedKeysEdit(k.node().clip, times, k.frameTime(6));
     k.document.editClip(k.id, edit);  // the live preview
     const QByteArray previewed = bytesOf(k.document);
-    k.stack().push(new MoveKeysCommand(k.document, k.id, times, k.frameTime(6), edit));
+    k.document.editClip(k.id, edit.inverse());  // put back on release
+    k.stack().push(new MoveKeysCommand(k.document, k.id, times, k.frameTime(6)));
     EXPECT_EQ(bytesOf(k.document), previewed);
     EXPECT_EQ(k.frames(), (std::vector<double>{0, 12, 30}));
     k.stack().undo();
@@ -257,18 +260,6 @@ TEST(Timeline, OnionPosesAreTheKeysEitherSideOfTheFrame) {
 
 // ---- The file ----
 
-json rootOf(const QByteArray& bytes) {
-    const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.constData());
-    return json::from_cbor(data + 3, data + bytes.size());  // after the CBOR magic tag
-}
-
-QByteArray bytesFrom(const json& root) {
-    std::vector<std::uint8_t> bytes{0xD9, 0xD9, 0xF7};
-    json::to_cbor(root, bytes);
-    return QByteArray(reinterpret_cast<const char*>(bytes.data()),
-                      static_cast<qsizetype>(bytes.size()));
-}
-
 TEST(TimelineFile, TheTimelineClipsAndCurrentFrameRoundTrip) {
     Keyed k;
     k.stack().push(ClipListCommand::create(k.document, k.id, "walk").release());
@@ -276,7 +267,7 @@ TEST(TimelineFile, TheTimelineClipsAndCurrentFrameRoundTrip) {
     k.stack().push(new SetTimelineCommand(k.document, {3, 77, 30.0}));
     k.document.setCurrentFrame(17);
     const QByteArray bytes = bytesOf(k.document);
-    EXPECT_EQ(rootOf(bytes)["version"], DocumentFile::kFormatVersion);
+    EXPECT_EQ(documentJson(bytes)["version"], DocumentFile::kFormatVersion);
     const DocumentContents loaded = DocumentFile::fromBytes(bytes);
     EXPECT_EQ(loaded.timeline, (TimelineSettings{3, 77, 30.0}));
     EXPECT_EQ(loaded.currentFrame, 17);
@@ -291,12 +282,12 @@ TEST(TimelineFile, AVersion2FileIsMigrated) {
     Keyed k;
     // Version 2 (per-bone poses, before the timeline) wrote exactly this,
     // without the timeline and other clips.
-    json root = rootOf(bytesOf(k.document));
+    json root = documentJson(bytesOf(k.document));
     root["version"] = 2;
     root.erase("timeline");
     for (json& part : root["parts"])
         part.erase("otherClips");
-    const DocumentContents loaded = DocumentFile::fromBytes(bytesFrom(root));
+    const DocumentContents loaded = DocumentFile::fromBytes(documentBytes(root));
     EXPECT_EQ(loaded.currentFrame, 0);
     EXPECT_EQ(loaded.timeline.startFrame, 0);
     EXPECT_EQ(loaded.timeline.endFrame, 48);
@@ -309,7 +300,7 @@ TEST(TimelineFile, AVersion2FileIsMigrated) {
     // range reaches the key.
     root["parts"][0]["clip"]["framesPerSecond"] = 30.0;
     root["parts"][0]["clip"]["keys"][2]["time"] = 3.0;
-    const DocumentContents thirty = DocumentFile::fromBytes(bytesFrom(root));
+    const DocumentContents thirty = DocumentFile::fromBytes(documentBytes(root));
     EXPECT_EQ(thirty.timeline.framesPerSecond, 30.0);
     EXPECT_EQ(thirty.timeline.endFrame, 90);
 }
@@ -317,10 +308,10 @@ TEST(TimelineFile, AVersion2FileIsMigrated) {
 TEST(TimelineFile, BadTimelinesAndClipNamesAreCorrupt) {
     Keyed k;
     k.stack().push(ClipListCommand::create(k.document, k.id, "walk").release());
-    const json good = rootOf(bytesOf(k.document));
+    const json good = documentJson(bytesOf(k.document));
     auto message = [](const json& root) {
         try {
-            DocumentFile::fromBytes(bytesFrom(root));
+            DocumentFile::fromBytes(documentBytes(root));
         } catch (const DocumentFileError& e) {
             return std::string(e.what());
         }

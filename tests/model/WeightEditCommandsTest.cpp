@@ -1,4 +1,4 @@
-// Weight edits in the document (issue 14 items 3-4): a paint stroke of many
+// Weight edits in the document: a paint stroke of many
 // dabs is one undo step, bone locks are undoable and saved and keep their
 // bone through painting and Smooth All, and hand-painted weights are marked
 // so a rebuild can ask before discarding them; each replays headless.

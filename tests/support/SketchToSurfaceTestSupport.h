@@ -63,7 +63,7 @@ std::vector<Vec2> polarOutline(int count, Radius radius, const Vec2& centre = Ve
     return points;
 }
 
-// An ellipse with a round bump on its top (issue 10): the bump is pruned as
+// An ellipse with a round bump on its top: the bump is pruned as
 // an insignificant branch off the middle of the body, so it once came out
 // missing, with a dimple and a pointed tip on the side opposite.
 inline std::vector<Vec2> blobWithBump() {

@@ -1,4 +1,4 @@
-// Long work off the GUI thread (issue 16 item 3): a rebuild at a fine edge
+// Long work off the GUI thread: a rebuild at a fine edge
 // length, an export and an import run as background jobs; the GUI thread
 // never works more than 50 ms without serving events meanwhile, the progress shows with Cancel,
 // the document changes only when the work is done (one undo step), and a
@@ -126,7 +126,7 @@ TEST_F(BackgroundJobs, TheChosenMouseBindingsNavigateWhileAJobRunsAndToolsWait) 
     EXPECT_GT((view->camera().eye() - eye).length(), 0.01f);
     EXPECT_FALSE(view->navigating());
     // A plain left drag is the tool's: it waits, the part stays.
-    window->activateSelectTool();
+    window->activateTool<widgets::SelectTool>();
     leftDrag(Qt::NoModifier);
     EXPECT_TRUE(window->jobs()->busy());
     EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
@@ -159,7 +159,7 @@ TEST_F(BackgroundJobs, ExportAndImportRunAsJobsAndACancelledExportWritesNothing)
     QTemporaryDir folder;
     ASSERT_TRUE(folder.isValid());
     const QString path = folder.filePath(QStringLiteral("biped.glb"));
-    window->exportTo(path, ExportOptions{});
+    window->exchange()->exportTo(path, ExportOptions{});
     EXPECT_TRUE(window->jobs()->busy());
     test::waitForJobs();
     EXPECT_TRUE(QFileInfo::exists(path));
@@ -168,7 +168,7 @@ TEST_F(BackgroundJobs, ExportAndImportRunAsJobsAndACancelledExportWritesNothing)
         << "no staging folder left";
     // A cancelled export: no file, and no staging folder once the worker ends.
     const QString cancelled = folder.filePath(QStringLiteral("cancelled.fbx"));
-    window->exportTo(cancelled, ExportOptions{});
+    window->exchange()->exportTo(cancelled, ExportOptions{});
     window->jobs()->cancel();
     QTest::qWait(3000);
     EXPECT_FALSE(QFileInfo::exists(cancelled));
@@ -176,7 +176,7 @@ TEST_F(BackgroundJobs, ExportAndImportRunAsJobsAndACancelledExportWritesNothing)
               QStringList{QStringLiteral("biped.glb")});
     // The import of what was written: one step, one more part.
     const int parts = document()->partCount();
-    window->importPath(path);
+    window->exchange()->importPath(path);
     EXPECT_TRUE(window->jobs()->busy());
     test::waitForJobs();
     EXPECT_EQ(document()->partCount(), parts + 1);

@@ -1,4 +1,4 @@
-// Edit > Preferences (issue 16 item 4): each setting takes effect at once
+// Edit > Preferences: each setting takes effect at once
 // (the language at the next start) and is kept in QSettings; the window
 // layout, the new docks included, comes back as it was left.
 #include <gtest/gtest.h>
@@ -100,7 +100,7 @@ TEST_F(Preferences, TheDialogOffersEveryLanguageAndTheSystemDefault) {
 }
 
 TEST_F(Preferences, DefaultEdgeLengthIsTheEdgeLengthOfNewSketches) {
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
     drag(viewport(), ellipseStroke(centre, 220, 70));
     ASSERT_EQ(document()->partCount(), 1);
@@ -150,7 +150,7 @@ TEST_F(Preferences, AutosaveIntervalReachesOpenAndNewDocuments) {
 
 TEST_F(Preferences, MayaBindingsNavigateWithAltAndLeaveTheToolAlone) {
     const model::PartId id = addExampleBiped();
-    window->activateSelectTool();
+    window->activateTool<widgets::SelectTool>();
     // The first paint frames the scene: let it happen before the camera is measured.
     QTest::qWait(50);
     const QPointF middle(viewport()->width() / 2.0, viewport()->height() / 2.0);

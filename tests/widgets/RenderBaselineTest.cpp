@@ -88,7 +88,7 @@ QImage exampleFrame(Prepare&& prepare) {
 }
 
 // A part built from `points` alone in a 480 x 480 view, framed: the surface
-// as an artist first sees it (issue 10: no crease, dimple or faceted limb).
+// as an artist first sees it (no crease, dimple or faceted limb).
 QImage sketchFrame(const std::vector<Vec2>& points, const std::string& name) {
     QTemporaryDir recovery;
     widgets::MainWindow window(recovery.path());
@@ -125,7 +125,7 @@ TEST(RenderBaseline, ExampleDocumentFrameMatchesTheBaseline) {
                           QStringLiteral("example_document"));
 }
 
-// Each weight view (issue 14 item 5) of the biped with its right arm's bone
+// Each weight view of the biped with its right arm's bone
 // selected and one Replace dab painted on the chest (so the difference view
 // shows something): the colours come from the GPU, so a shader or upload
 // change shows here.

@@ -1,4 +1,4 @@
-// Tools > Auto-Rig Part in the studio (issue 17): a mesh imported without a
+// Tools > Auto-Rig Part in the studio: a mesh imported without a
 // rig is offered a rig at once; rigging runs as a background job whose bar
 // fills, Cancel leaves the mesh as it was, and the rig is one undo step.
 #include <QMessageBox>
@@ -50,7 +50,7 @@ class StudioAutoRig : public test::StudioFixture {
             }
         });
         answerer.start();
-        window->importPath(path);
+        window->exchange()->importPath(path);
         test::waitForJobs();  // the import, then the offer
         test::waitWhile([&] { return !offered; }, 10000);
         answerer.stop();

@@ -15,6 +15,17 @@
 #include "model/Document.h"
 #include "model/commands/CreatePartCommand.h"
 #include "sketch/Sketch.h"
+// The controllers and every tool (for activateTool<T>(), MainWindow.h).
+#include "controllers/ExchangeController.h"
+#include "controllers/FilesController.h"
+#include "controllers/RigController.h"
+#include "controllers/WeightsController.h"
+#include "tools/CutTool.h"
+#include "tools/MergeTool.h"
+#include "tools/PaintTool.h"
+#include "tools/PoseTool.h"
+#include "tools/SelectTool.h"
+#include "tools/SketchTool.h"
 
 namespace rigmesh::test {
 

@@ -90,7 +90,7 @@ TEST(StudioFirstRun, MouseHintShowsOnceUntilTheFirstPartIsMade) {
     ASSERT_NE(hint, nullptr);
     EXPECT_TRUE(hint->isVisible()) << "a first run shows the mouse gestures";
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_first_run.png"));
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     widgets::Viewport* viewport = window->currentView()->viewport();
     drag(viewport,
          ellipseStroke(QPointF(viewport->width() / 2.0, viewport->height() / 2.0), 200, 60));
@@ -104,7 +104,7 @@ TEST(StudioFirstRun, MouseHintShowsOnceUntilTheFirstPartIsMade) {
 }
 
 TEST_F(Studio, MouseStrokeInTheViewportCreatesARiggedPart) {
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
     // For people: the stroke half drawn, as the window shows it.
     const auto stroke = ellipseStroke(centre, 220, 60);
@@ -129,7 +129,7 @@ TEST_F(Studio, MouseStrokeInTheViewportCreatesARiggedPart) {
 }
 
 TEST_F(Studio, CtrlZRemovesTheSketchedPartAndCtrlShiftZBringsItBack) {
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
     drag(viewport(), ellipseStroke(centre, 200, 70));
     ASSERT_EQ(document()->partCount(), 1);
@@ -141,14 +141,14 @@ TEST_F(Studio, CtrlZRemovesTheSketchedPartAndCtrlShiftZBringsItBack) {
 }
 
 TEST_F(Studio, TooShortStrokeChangesNothing) {
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     drag(viewport(), {QPointF(100, 100), QPointF(102, 101), QPointF(103, 103)});
     EXPECT_EQ(document()->partCount(), 0);
     EXPECT_EQ(document()->undoStack()->count(), 0);
 }
 
 TEST_F(Studio, ClickInTheSketchToolDoesNothingAndSaysNothing) {
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     window->statusBar()->clearMessage();
     drag(viewport(), {QPointF(200, 200), QPointF(200, 200)});
     EXPECT_EQ(document()->partCount(), 0);
@@ -157,7 +157,7 @@ TEST_F(Studio, ClickInTheSketchToolDoesNothingAndSaysNothing) {
 }
 
 TEST_F(Studio, LargeCircleDrawnFastInFewEventsBecomesAPart) {
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
     // 13 mouse events around a circle of radius 150 px: a quick flick.
     drag(viewport(), ellipseStroke(centre, 150, 150, 13));
@@ -209,7 +209,7 @@ TEST_F(Studio, WeightViewsColourTheSurfaceBySkinWeights) {
     viewport()->setWeightView(widgets::WeightView::Off);
 }
 
-// Issue 14 item 3: a brush stroke over the hand paints the selected bone's
+// A brush stroke over the hand paints the selected bone's
 // weights there only, keeps every sum at 1, is one undo step, and Esc in
 // the middle of a stroke puts the weights back.
 TEST_F(Studio, PaintingTheHandChangesItsWeightsInOneUndoStep) {
@@ -223,7 +223,7 @@ TEST_F(Studio, PaintingTheHandChangesItsWeightsInOneUndoStep) {
             shoulder = bone.head;
     ASSERT_NE(shoulder, kNoJoint);
     document()->setSelection({biped, shoulder});
-    window->activatePaintTool();
+    window->activateTool<widgets::PaintTool>();
     QTest::qWait(50);
     const QByteArray before = model::DocumentFile::toBytes(*document());
     const int steps = document()->undoStack()->count();
@@ -276,13 +276,13 @@ TEST_F(Studio, PaintingTheHandChangesItsWeightsInOneUndoStep) {
 }
 
 TEST_F(Studio, DraggingAPartMovesItAndCtrlDragTurnsIt) {
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
     drag(viewport(), ellipseStroke(centre, 220, 60));
     ASSERT_EQ(document()->partCount(), 1);
     const model::PartId id = document()->parts().front().id;
     const model::Placement before = document()->part(id).placement;
-    window->activateSelectTool();
+    window->activateTool<widgets::SelectTool>();
     QTest::qWait(50);  // the first paint frames the new part
     // A pixel on the surface but away from every joint.
     QPointF grab;
@@ -320,7 +320,7 @@ TEST_F(Studio, DraggingAPartMovesItAndCtrlDragTurnsIt) {
 }
 
 TEST_F(Studio, UnriggedImportedMeshIsDrawnAndCannotBePosed) {
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
     drag(viewport(), ellipseStroke(centre, 220, 60));
     ASSERT_EQ(document()->partCount(), 1);
@@ -332,14 +332,14 @@ TEST_F(Studio, UnriggedImportedMeshIsDrawnAndCannotBePosed) {
     QTest::qWait(50);  // paints both parts; the unrigged one at rest
     const QImage frame = viewport()->grabFramebuffer();
     EXPECT_FALSE(frame.isNull());
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     document()->setSelection({document()->parts().back().id, kNoJoint});
     QTest::keyClick(window.get(), Qt::Key_R, Qt::AltModifier);  // reset pose: nothing to do
     EXPECT_EQ(document()->partCount(), 2);
 }
 
 TEST_F(Studio, SavedDocumentReopensWithTheSameContent) {
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
     drag(viewport(), ellipseStroke(centre, 220, 60));
     ASSERT_EQ(document()->partCount(), 1);
@@ -348,7 +348,7 @@ TEST_F(Studio, SavedDocumentReopensWithTheSameContent) {
     const QByteArray saved = model::DocumentFile::toBytes(*document());
     EXPECT_FALSE(document()->isModified());
     ASSERT_TRUE(window->closeDocument(window->tabs()->currentIndex()));
-    ASSERT_TRUE(window->openFile(path));
+    ASSERT_TRUE(window->files()->openFile(path));
     EXPECT_EQ(model::DocumentFile::toBytes(*document()), saved);
 }
 

@@ -1,4 +1,4 @@
-// The Merge tool's choices (issue 12 item 7): a plain release over a
+// The Merge tool's choices: a plain release over a
 // candidate opens a small menu (Snap, Split, Connect); hovering an item says
 // what it will do, Enter takes it, Esc puts the part back; Shift and Ctrl +
 // release split and connect at once without the menu.

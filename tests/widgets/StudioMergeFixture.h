@@ -30,7 +30,7 @@ class StudioMerge : public test::StudioFixture {
                                              "leg", {}, legPlace)
                 .release());
         viewport()->frameAll();
-        window->activateMergeTool();
+        window->activateTool<widgets::MergeTool>();
         QTest::qWait(50);
     }
     // A pixel on the leg's lower half, far from the body.

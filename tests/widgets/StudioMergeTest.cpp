@@ -1,5 +1,5 @@
-// Merging, cutting and editing bones in the studio by mouse (issues 12 and
-// 13): a dragged leg merges into the body in one undo step, Esc puts it
+// Merging, cutting and editing bones in the studio by mouse: a
+// dragged leg merges into the body in one undo step, Esc puts it
 // back, a line cuts a part, K and Shift+K split and delete bones.
 #include <gtest/gtest.h>
 
@@ -105,7 +105,7 @@ QPointF pixelOf(const widgets::Viewport& viewport, const Vec3& point) {
 }
 
 TEST_F(StudioMerge, ALineAcrossThePartCutsItInTwoInOneUndoStep) {
-    window->activateCutTool();
+    window->activateTool<widgets::CutTool>();
     const QByteArray before = model::DocumentFile::toBytes(*document());
     // Across the body's back half, from above it to below it.
     const QPointF top = pixelOf(*viewport(), Vec3(-1.2, 1.6, 0.0));

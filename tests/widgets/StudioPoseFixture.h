@@ -88,7 +88,7 @@ class StudioPose : public StudioFixture {
     }
     // Sketches a long ellipse across the viewport: the new part's id.
     model::PartId sketchEllipse() {
-        window->activateSketchTool();
+        window->activateTool<widgets::SketchTool>();
         const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
         drag(viewport(), ellipseStroke(centre, 260, 50));
         EXPECT_EQ(document()->partCount(), 1);

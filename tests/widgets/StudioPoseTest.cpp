@@ -1,4 +1,4 @@
-// Posing in the studio (issue 11): a joint drag is one undo step, typed
+// Posing in the studio: a joint drag is one undo step, typed
 // rotations, FK by bone and by the rotation ring, a limb drag moving no
 // vertex outside its limb unless Alt is held, the quadruped's head moving
 // no leg.
@@ -59,7 +59,7 @@ TEST_F(Studio, DraggingAJointChangesThePoseInOneUndoStep) {
     const QVector3D screen = viewport()->camera().project(viewport()->jointWorldPosition(id, end),
                                                           QSizeF(viewport()->size()));
     const int stepsBefore = document()->undoStack()->count();
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     std::vector<QPointF> path;
     for (int i = 0; i <= 10; ++i)
         path.emplace_back(screen.x(), screen.y() - 8.0 * i);
@@ -147,7 +147,7 @@ TEST_F(Studio, DraggingABoneAnywhereTurnsItAboutItsHead) {
         if (bone.head != skeleton.root())
             grabbed = &bone;
     ASSERT_NE(grabbed, nullptr);
-    window->activatePoseTool();  // first: the tool's options may resize the viewport
+    window->activateTool<widgets::PoseTool>();  // first: the tool's options may resize the viewport
     QTest::qWait(50);
     const QSizeF size(viewport()->size());
     const QVector3D head =
@@ -173,7 +173,7 @@ TEST_F(Studio, DraggingABoneAnywhereTurnsItAboutItsHead) {
         << "the joint standing for the turned bone is selected";
 }
 
-// Issue 11 item 5, FK by bone at a junction: turning the biped's upper arm
+// FK by bone at a junction: turning the biped's upper arm
 // (the bone leaving the chest) moves its arm only, never the head, the
 // other arm or the body.
 TEST_F(Studio, TurningABoneLeavingAJunctionMovesNoSibling) {
@@ -182,7 +182,7 @@ TEST_F(Studio, TurningABoneLeavingAJunctionMovesNoSibling) {
     const JointId shoulder = limbTop(skeleton, sidewaysHand(skeleton));
     const JointId chest = widgets::poseParent(skeleton, shoulder);
     ASSERT_GE(skeleton.degree(chest), 3) << "the upper arm leaves a junction";
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     QTest::qWait(50);
     const QSizeF size(viewport()->size());
     const QVector3D head =
@@ -209,7 +209,7 @@ TEST_F(Studio, TurningABoneLeavingAJunctionMovesNoSibling) {
 TEST_F(Studio, PoseToolOptionReachesThroughTheWholeBody) {
     const model::PartId id = addExampleBiped();
     const Skeleton& skeleton = document()->part(id).part->skeleton;
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     QTest::qWait(50);
     auto* wholeBody = window->findChild<QCheckBox*>(QStringLiteral("poseWholeBody"));
     ASSERT_NE(wholeBody, nullptr);
@@ -232,7 +232,7 @@ TEST_F(Studio, PoseToolOptionReachesThroughTheWholeBody) {
                                q.angularDistance(Eigen::Quaterniond::Identity()) > 1e-6);
     EXPECT_TRUE(junctionTurned);
     wholeBody->setChecked(false);
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     EXPECT_FALSE(wholeBody->isVisibleTo(window.get())) << "other tools show their own options";
 }
 
@@ -241,7 +241,7 @@ TEST_F(Studio, DraggingTheRingOfTheSelectedJointTurnsIt) {
     ASSERT_NE(id, model::kNoPart);
     const Skeleton& skeleton = document()->part(id).part->skeleton;
     const JointId joint = skeleton.root();
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     QTest::qWait(50);
     document()->setSelection({id, joint});
     const QVector3D at = viewport()->camera().project(viewport()->jointWorldPosition(id, joint),
@@ -263,7 +263,7 @@ TEST_F(Studio, DraggingTheRingOfTheSelectedJointTurnsIt) {
     EXPECT_NEAR(turned, qDegreesToRadians(40.0), qDegreesToRadians(4.0));
 }
 
-// Issue 11 items 2 and 5: a plain drag of a hand turns its arm's bones up to
+// A plain drag of a hand turns its arm's bones up to
 // and including the one leaving the chest, and no vertex weighted only by
 // other bones (the other arm, the head, the body, the legs) moves; with Alt
 // the chain reaches the root, so the chest turns and the other arm and the
@@ -275,7 +275,7 @@ TEST_F(Studio, DraggingAHandMovesNoVertexOutsideItsArmUnlessAltIsHeld) {
     const JointId shoulder = limbTop(skeleton, hand);
     ASSERT_NE(shoulder, hand) << "the arm has two bones";
     const std::set<BoneId> arm = bonesFrom(skeleton, shoulder);
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     QTest::qWait(50);
     const QVector3D shoulderBefore = viewport()->jointWorldPosition(id, shoulder);
     dragJointBy(id, hand, -30.0, -60.0);
@@ -302,7 +302,7 @@ TEST_F(Studio, DraggingAHandMovesNoVertexOutsideItsArmUnlessAltIsHeld) {
         }
 }
 
-// Issue 11 "Done when": the quadruped's head pulled with the pose tool moves
+// The quadruped's head pulled with the pose tool moves
 // the neck and head only, never a leg.
 TEST_F(Studio, DraggingTheQuadrupedsHeadMovesNoLeg) {
     const model::PartId id = addQuadruped();
@@ -313,7 +313,7 @@ TEST_F(Studio, DraggingTheQuadrupedsHeadMovesNoLeg) {
             (head == kNoJoint || joint.position.y() > skeleton.joint(head).position.y()))
             head = joint.id;
     const JointId neck = limbTop(skeleton, head);
-    window->activatePoseTool();
+    window->activateTool<widgets::PoseTool>();
     QTest::qWait(50);
     dragJointBy(id, head, 40.0, -50.0);
     ASSERT_FALSE(document()->part(id).pose.rotations.empty());
@@ -336,7 +336,7 @@ TEST_F(Studio, DraggingTheQuadrupedsHeadMovesNoLeg) {
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_pose_quadruped.png"));
 }
 
-// Issue 14 item 1: the weight views colour the surface on the GPU. The
+// The weight views colour the surface on the GPU. The
 // selected joint's bone shows hot (red) where it leads and cold (blue) or
 // dark (zero) elsewhere; dominant bones show several colours.
 

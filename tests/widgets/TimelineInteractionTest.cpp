@@ -1,4 +1,4 @@
-// The timeline dock end to end (issue 15), driven with the mouse and keys
+// The timeline dock end to end, driven with the mouse and keys
 // like a person: scrubbing the ruler shows the clip's pose live with no undo
 // step; clicking, Shift-clicking and box-selecting keys; dragging keys is one
 // undo step per drag; Delete, Ctrl+C and Ctrl+V at the cursor; I keys the

@@ -1,4 +1,4 @@
-// The studio in German and Spanish (issue 16 item 1): the translations are
+// The studio in German and Spanish: the translations are
 // compiled into the program, menus, docks and tools speak the language, and
 // a message that comes from the engine (a stroke that crosses itself)
 // reaches the status bar translated, by its id. Screenshots for
@@ -24,6 +24,7 @@
 #include "dialogs/ExportDialog.h"
 #include "dialogs/PreferencesDialog.h"
 #include "preferences/Translations.h"
+#include "tools/SketchTool.h"
 
 namespace rigmesh::test {
 namespace {
@@ -73,7 +74,7 @@ TEST_P(TranslatedStudio, MenusAndDocksSpeakTheLanguage) {
 }
 
 TEST_P(TranslatedStudio, AnEngineMessageReachesTheStatusBarTranslated) {
-    window->activateSketchTool();
+    window->activateTool<widgets::SketchTool>();
     // A figure eight: the engine's stroke cleaner refuses it by id
     // (MessageId::StrokeCrossesItselfNear) and the studio translates it.
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);

@@ -1,4 +1,4 @@
-// The studio's weight inspection and editing (issue 14): the Weights panel
+// The studio's weight inspection and editing: the Weights panel
 // lists bones and locks them (a locked bone is not painted), a click pins a
 // vertex's weights, Check Rig lists and selects what it finds, and a
 // rebuild asks before it discards painted weights.
@@ -32,7 +32,7 @@ class WeightsStudio : public test::StudioPose {
     void paintTheArmOfTheExample() {
         const model::PartId biped = addExampleBiped();
         document()->setSelection({biped, shoulder()});
-        window->activatePaintTool();
+        window->activateTool<widgets::PaintTool>();
         QTest::qWait(20);
         drag(viewport(), armStroke());
     }
@@ -81,7 +81,7 @@ TEST_F(WeightsStudio, LockingABoneInTheWeightsPanelStopsItsPaintUntilUnlocked) {
     EXPECT_TRUE(part().lockedBones.contains(bone));
     // Painting it now changes nothing and says why.
     const QByteArray before = model::DocumentFile::toBytes(*document());
-    window->activatePaintTool();
+    window->activateTool<widgets::PaintTool>();
     QTest::qWait(20);
     drag(viewport(), armStroke());
     EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
@@ -132,7 +132,7 @@ TEST_F(WeightsStudio, MirroredStrokeStaysSymmetricAndLeavesLockedBonesAlone) {
         if (bones->item(r, 0)->data(Qt::UserRole).toUInt() == locked)
             bones->item(r, 2)->setCheckState(Qt::Checked);
     ASSERT_TRUE(part().lockedBones.contains(locked));
-    window->activatePaintTool();
+    window->activateTool<widgets::PaintTool>();
     window->findChild<QCheckBox*>(QStringLiteral("paintMirror"))->setChecked(true);
     QTest::qWait(20);
     const QByteArray before = model::DocumentFile::toBytes(*document());
@@ -161,7 +161,7 @@ TEST_F(WeightsStudio, MirroredStrokeStaysSymmetricAndLeavesLockedBonesAlone) {
 
 TEST_F(WeightsStudio, ClickingAVertexWithAWeightViewOnPinsItsWeightsInThePanel) {
     const model::PartId biped = addExampleBiped();
-    window->activateSelectTool();
+    window->activateTool<widgets::SelectTool>();
     viewport()->setWeightView(widgets::WeightView::DominantBone);
     QTest::qWait(20);
     // The middle of the forearm, in front: far from any joint marker.
@@ -191,7 +191,7 @@ TEST_F(WeightsStudio, ClickingAVertexWithAWeightViewOnPinsItsWeightsInThePanel) 
     // The paint tool's Ctrl + click samples: pinned, and the Replace weight is
     // the selected bone's weight there.
     document()->setSelection({biped, hand()});
-    window->activatePaintTool();
+    window->activateTool<widgets::PaintTool>();
     QTest::qWait(20);
     const QPointF other = armStroke()[0];
     drag(viewport(), {other}, Qt::ControlModifier);
@@ -290,7 +290,7 @@ TEST_F(WeightsStudio, RecomputeWeightsAsksThenRunsInTheBackgroundAsOneStep) {
     auto* recompute = window->findChild<QAction*>(QStringLiteral("recomputeWeights"));
     ASSERT_NE(recompute, nullptr);
     QString asked;
-    window->confirmDiscardWeights = [&](const QString& question) {
+    window->weightsController()->confirmDiscard = [&](const QString& question) {
         asked = question;
         return false;
     };
@@ -298,7 +298,7 @@ TEST_F(WeightsStudio, RecomputeWeightsAsksThenRunsInTheBackgroundAsOneStep) {
     EXPECT_TRUE(asked.contains(QStringLiteral("painted"))) << asked.toStdString();
     EXPECT_FALSE(window->jobs()->busy());
     EXPECT_EQ(document()->undoStack()->count(), steps) << "declined: nothing happens";
-    window->confirmDiscardWeights = [](const QString&) { return true; };
+    window->weightsController()->confirmDiscard = [](const QString&) { return true; };
     recompute->trigger();
     EXPECT_TRUE(window->jobs()->busy()) << "bone heat runs in the background";
     EXPECT_EQ(document()->undoStack()->count(), steps) << "nothing changes before it is done";
@@ -312,7 +312,7 @@ TEST_F(WeightsStudio, RecomputeWeightsAsksThenRunsInTheBackgroundAsOneStep) {
     EXPECT_TRUE(part().weightsPainted) << "undo brings the painting back";
 }
 
-// Issue 14 item 1: the weight view is chosen per document, from the View
+// The weight view is chosen per document, from the View
 // menu or the toolbar's list, which follow the current document.
 TEST_F(WeightsStudio, EachDocumentKeepsItsOwnWeightView) {
     auto* box = window->findChild<QComboBox*>(QStringLiteral("weightViewBox"));
@@ -330,7 +330,7 @@ TEST_F(WeightsStudio, EachDocumentKeepsItsOwnWeightView) {
     QTest::qWait(20);
     EXPECT_EQ(box->currentData().toInt(), static_cast<int>(widgets::WeightView::DominantBone));
     // The paint tool turns the bone view on, and the list follows.
-    window->activatePaintTool();
+    window->activateTool<widgets::PaintTool>();
     EXPECT_EQ(box->currentData().toInt(), static_cast<int>(widgets::WeightView::SelectedBone));
 }
 

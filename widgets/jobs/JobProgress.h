@@ -1,6 +1,5 @@
-// What a background job's work and the window share while it runs (issue
-// 17 item 3): how far the work got, written by the worker, shown by
-// JobStatus; and whether the user cancelled, set by the GUI thread, so work
+// What a background job's work and the window share while it runs: how far the work got, written by
+// the worker, shown by JobStatus; and whether the user cancelled, set by the GUI thread, so work
 // that checks it (the auto-rig's flow steps) stops early instead of running
 // to the end for nothing. Lock-free: both sides only read and write atomics.
 #pragma once

@@ -27,7 +27,6 @@ struct JobRunner::Job {
     Work work;
     Failed failed;
     Cancelled cancelled;
-    Discard discard;
     Apply apply;
     QString error;
     std::shared_ptr<JobProgress> progress = std::make_shared<JobProgress>();
@@ -78,15 +77,13 @@ bool JobRunner::runWithProgress(const QString& title, ProgressWork work, Failed 
     return started;
 }
 
-bool JobRunner::run(const QString& title, Work work, Failed failed, Cancelled cancelled,
-                    Discard discard) {
+bool JobRunner::run(const QString& title, Work work, Failed failed, Cancelled cancelled) {
     if (running_)
         return false;
     auto job = std::make_shared<Job>();
     job->work = std::move(work);
     job->failed = std::move(failed);
     job->cancelled = std::move(cancelled);
-    job->discard = std::move(discard);
     running_ = job;
     title_ = title;
     clock_.start();
@@ -118,8 +115,6 @@ bool JobRunner::run(const QString& title, Work work, Failed failed, Cancelled ca
             [job, self] {
                 if (self)
                     self->finish(job);
-                else if (job->discard)
-                    job->discard();
             },
             Qt::QueuedConnection);
     }).detach();
@@ -127,13 +122,8 @@ bool JobRunner::run(const QString& title, Work work, Failed failed, Cancelled ca
 }
 
 void JobRunner::finish(const std::shared_ptr<Job>& job) {
-    if (job != running_) {
-        // Cancelled: the result is dropped, and what the work left outside
-        // the document goes.
-        if (job->discard)
-            job->discard();
-        return;
-    }
+    if (job != running_)
+        return;  // cancelled: the result is dropped with the job
     end();
     if (!job->error.isEmpty()) {
         if (job->failed)

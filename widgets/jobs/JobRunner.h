@@ -1,4 +1,4 @@
-// Long work off the GUI thread (issue 16 item 3): a job computes on a worker
+// Long work off the GUI thread: a job computes on a worker
 // thread and hands back what to apply; the GUI thread applies it as one
 // command when the work is done, or drops it when the user cancelled. The
 // window stays responsive the whole time (it repaints, orbits, shows the
@@ -7,7 +7,7 @@
 // The contract for `work`: it reads the document but never changes it
 // (commands' create() functions do just that: they run the engine on the
 // immutable parts), touches no widget, and returns the step to apply on the
-// GUI thread. While a job runs the studio is read-only (MainWindow::setBusy)
+// GUI thread. While a job runs the studio is read-only (jobs/JobStatus)
 // so nothing else changes the document under it. A rigmesh::Error thrown by
 // the work becomes the failure message; the document is untouched.
 //
@@ -40,16 +40,14 @@ class JobRunner : public QObject {
     using Failed = std::function<void(const QString& reason)>;
     // Called on the GUI thread when the user cancelled.
     using Cancelled = std::function<void()>;
-    // Called on the GUI thread when a cancelled job's work has finished
-    // after all: removes what it made outside the document (a staged file).
-    using Discard = std::function<void()>;
 
     explicit JobRunner(QObject* parent = nullptr);
     ~JobRunner() override;
 
     // Starts a job. Returns false (and starts nothing) while another runs.
-    bool run(const QString& title, Work work, Failed failed, Cancelled cancelled = {},
-             Discard discard = {});
+    // What a cancelled job made outside the document goes with its dropped
+    // Apply (a staged export removes its files when destroyed).
+    bool run(const QString& title, Work work, Failed failed, Cancelled cancelled = {});
     // The same for work that reports progress (shown as a filling bar).
     bool runWithProgress(const QString& title, ProgressWork work, Failed failed,
                          Cancelled cancelled = {});

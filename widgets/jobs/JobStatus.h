@@ -1,9 +1,8 @@
-// What a window shows and blocks while a background job runs (issue 16
-// item 3): after 100 ms, the job's title, elapsed time, a busy bar (jobs/BusyBar)
-// and Cancel (also Esc) in the status bar; from the first moment, every
-// key, click and shortcut that could edit the document is swallowed, so the
-// document cannot change under the job. The view still repaints and
-// navigates (middle button, wheel), and nothing greys out for a quick job.
+// What a window shows and blocks while a background job runs: after 100 ms, the job's title,
+// elapsed time, a busy bar (jobs/BusyBar) and Cancel (also Esc) in the status bar; from the first
+// moment, every key, click and shortcut that could edit the document is swallowed, so the document
+// cannot change under the job. The view still repaints and navigates (middle button, wheel), and
+// nothing greys out for a quick job.
 #pragma once
 
 #include <QObject>

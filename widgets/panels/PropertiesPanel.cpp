@@ -19,9 +19,8 @@
 #include "model/Document.h"
 #include "model/ErrorText.h"
 #include "model/PartBuilder.h"
-#include "model/PoseChange.h"
 #include "model/commands/RebuildPartCommand.h"
-#include "model/commands/SetPoseCommand.h"
+#include "model/preview/PosePreview.h"
 
 namespace rigmesh::widgets {
 namespace {
@@ -173,16 +172,14 @@ void PropertiesPanel::setJointRotation() {
         Eigen::AngleAxisd(euler_[2]->value() * M_PI / 180.0, Vec3::UnitZ()) *
         Eigen::AngleAxisd(euler_[1]->value() * M_PI / 180.0, Vec3::UnitY()) *
         Eigen::AngleAxisd(euler_[0]->value() * M_PI / 180.0, Vec3::UnitX());
-    const rigmesh::Pose from = node->pose;
-    rigmesh::Pose pose = from;
+    rigmesh::Pose pose = node->pose;
     pose.setRotation(selection.joint, rotation.normalized());
     try {
-        // Each typed value is its own undo step: applied first, then pushed
-        // as already applied, which never merges with the previous one.
-        auto command = std::make_unique<model::SetPoseCommand>(*document_, selection.part, from,
-                                                               pose, selection.joint, true);
-        document_->setPose(selection.part, pose);
-        model::pushPoseChange(*document_, selection.part, command.release());
+        // Each typed value is its own undo step, which never merges with
+        // the previous one.
+        model::PosePreview preview(*document_, selection.part);
+        preview.preview(pose);
+        preview.commit(selection.joint);
     } catch (const rigmesh::Error& error) {
         emit statusMessage(tr("Not posed: %1").arg(model::errorText(error)), 8000);
         refreshPose();
@@ -197,7 +194,7 @@ void PropertiesPanel::rebuild() {
     options.targetEdgeLength = edgeLength_->value();
     options.smoothing = smoothing_->isChecked();
     // A rebuild recomputes the weights from the sketch: ask before painted
-    // weights go (issue 14 item 3).
+    // weights go.
     const model::PartNode* node = document_->findPart(id);
     if (node && node->part && node->part->weightsPainted &&
         !confirmDiscard(tr("%1 has hand-painted skin weights. Rebuilding recomputes them from "

@@ -1,4 +1,4 @@
-// The Weights panel (issue 14 item 2), after Blender's vertex group list and
+// The Weights panel, after Blender's vertex group list and
 // Vertex Weights panel: the selected part's bones with the vertices each
 // leads and a lock box (an undoable SetBoneLockCommand; painting and the
 // clean-ups keep a locked bone's weights); the weights of the pinned vertex

@@ -61,18 +61,23 @@ std::map<model::PartId, std::vector<double>> KeyDrag::finish() {
             moved[part].push_back(offset_ == 0 ? time : time + by);
     if (offset_ == 0 || applied_.empty())
         return moved;
+    // The commands are made on the clips as the drag found them and redo the
+    // move when pushed.
+    std::vector<model::PartId> parts;
+    for (const auto& [part, edit] : applied_)
+        parts.push_back(part);
+    revert();
     std::unique_ptr<QUndoCommand> parent;
     if (applied_.size() > 1)
         parent = std::make_unique<QUndoCommand>(QCoreApplication::translate(
             "rigmesh::widgets::KeyDrag", "Move keys by %n frame(s)", nullptr, offset_));
     std::unique_ptr<QUndoCommand> single;
-    for (auto& [part, edit] : applied_) {
-        auto* command = new model::MoveKeysCommand(document_, part, keys_.at(part), by,
-                                                   std::move(edit), parent.get());
+    for (const model::PartId part : parts) {
+        auto* command =
+            new model::MoveKeysCommand(document_, part, keys_.at(part), by, parent.get());
         if (!parent)
             single.reset(command);
     }
-    applied_.clear();
     document_.undoStack()->push(parent ? parent.release() : single.release());
     return moved;
 }

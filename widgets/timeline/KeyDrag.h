@@ -1,8 +1,8 @@
-// A drag of selected keys along the timeline (issue 15): previewed live by
+// A drag of selected keys along the timeline: previewed live by
 // editing the clips in place (Document::editClip, no command), and on
-// release one undo step holding exactly the edits already applied (the
-// pattern of the Select and Pose tools: MoveKeysCommand with the applied
-// edit; a macro of them when keys of several parts move). Offsets are whole
+// release put back and pushed as one undo step whose redo() moves the keys
+// again (MoveKeysCommand; a macro of them when keys of several parts move),
+// as model/preview/PartPreview.h does for parts. Offsets are whole
 // frames. Cancelling puts every key back.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Playing the timeline (issue 15): real time, never slow motion. Each tick
+// Playing the timeline: real time, never slow motion. Each tick
 // works out the frame from the time since play started, so when drawing a
 // frame takes longer than a frame lasts the frames in between are dropped,
 // as Blender's "Frame Dropping" sync does. The frame range loops.

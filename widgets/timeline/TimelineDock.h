@@ -1,4 +1,4 @@
-// The timeline dock (issue 15), at the bottom of the main window as in
+// The timeline dock, at the bottom of the main window as in
 // Blender: transport (start, previous frame, play/pause, next frame, end),
 // the current frame, the frame range and rate; the selected part's clips
 // (choose the active one; new, duplicate, rename, delete) with their

@@ -1,4 +1,4 @@
-// The timeline's key area (issue 15): a view over a TimelineItemModel drawn
+// The timeline's key area: a view over a TimelineItemModel drawn
 // as Blender's timeline and dope sheet are. A ruler of frames (the time in
 // seconds on hover) over one row per part with its keys as diamonds, each
 // part expandable into one row per joint (with hold bars where a joint keeps

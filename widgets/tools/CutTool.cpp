@@ -70,7 +70,7 @@ void CutTool::release(Viewport& viewport, QMouseEvent* event) {
                                                     (static_cast<double>(k) / kSamplesPerSegment)))
                 ++crossed[*part];
     if (crossed.empty()) {
-        emit viewport.statusMessage(tr("Nothing cut: the line does not cross a part"));
+        emit status(tr("Nothing cut: the line does not cross a part"));
         return;
     }
     const model::PartId part =
@@ -78,15 +78,13 @@ void CutTool::release(Viewport& viewport, QMouseEvent* event) {
             return x.second < y.second;
         })->first;
     if (viewport.partAt(a) == part || viewport.partAt(b) == part) {
-        emit viewport.statusMessage(
+        emit status(
             tr("Nothing cut: draw the line across the whole part, from outside it to outside it"));
         return;
     }
     model::Document& document = *viewport.document();
     const model::PartNode& node = document.part(part);
-    Eigen::AlignedBox3d box;
-    for (const Vec3& v : node.part->mesh.vertices)
-        box.extend(node.placement.rotation * v + node.placement.translation);
+    const Eigen::AlignedBox3d box = model::worldBounds(node);
     // The stroke on the view plane through the part's centre, in that
     // plane's (right, up) coordinates: the recipe's form.
     const QVector3D centre = toQt(box.center());
@@ -108,9 +106,9 @@ void CutTool::release(Viewport& viewport, QMouseEvent* event) {
                 .arg(command->milliseconds(), 0, 'f', 0)
                 .arg(spec.style == CutStyle::Smooth ? tr("smooth face") : tr("flat face"));
         document.undoStack()->push(command.release());
-        emit viewport.statusMessage(text);
+        emit status(text);
     } catch (const Error& error) {
-        emit viewport.statusMessage(tr("Nothing cut: %1").arg(model::errorText(error)));
+        emit status(tr("Nothing cut: %1").arg(model::errorText(error)));
     }
     viewport.update();
 }

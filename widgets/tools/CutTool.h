@@ -15,10 +15,10 @@
 
 namespace rigmesh::widgets {
 
-class CutTool : public QObject, public ViewportTool {
+class CutTool : public ViewportTool {
     Q_OBJECT
   public:
-    using QObject::QObject;
+    using ViewportTool::ViewportTool;
     QString name() const override { return tr("Cut"); }
     QString hint() const override;
     void press(Viewport& viewport, QMouseEvent* event) override;

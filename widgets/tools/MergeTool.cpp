@@ -4,12 +4,13 @@
 #include <QElapsedTimer>
 #include <QMenu>
 #include <QPointer>
+#include <memory>
+#include <utility>
 
 #include "base/Error.h"
 #include "jobs/JobRunner.h"
 #include "model/ErrorText.h"
 #include "model/commands/MergePartsCommand.h"
-#include "model/commands/MovePartCommand.h"
 #include "rig/BoneSegment.h"
 #include "viewport/RenderScene.h"
 #include "viewport/ViewMath.h"
@@ -18,17 +19,6 @@
 namespace rigmesh::widgets {
 
 namespace {
-
-Vec3 toWorld(const model::Placement& placement, const Vec3& p) {
-    return placement.rotation * p + placement.translation;
-}
-
-Eigen::AlignedBox3d worldBox(const model::PartNode& node) {
-    Eigen::AlignedBox3d box;
-    for (const Vec3& v : node.part->mesh.vertices)
-        box.extend(toWorld(node.placement, v));
-    return box;
-}
 
 bool rigged(const model::PartNode& node) {
     return node.part && node.part->skeleton.boneCount() > 0;
@@ -60,9 +50,7 @@ void MergeTool::press(Viewport& viewport, QMouseEvent* event) {
         return;
     }
     document.setSelection({*part, kNoJoint});
-    dragged_ = part;
-    grabPoint_ = viewport.sketchPlanePoint(event->position());
-    startPlacement_ = document.part(*part).placement;
+    drag_ = std::make_shared<PartDrag>(viewport, *part, event->position(), false);
     candidate_.reset();
 }
 
@@ -80,50 +68,47 @@ std::optional<MergeMode> modeOf(Qt::KeyboardModifiers modifiers) {
 }  // namespace
 
 void MergeTool::move(Viewport& viewport, QMouseEvent* event) {
-    if (!dragged_ || !(event->buttons() & Qt::LeftButton))
+    if (!drag_ || !(event->buttons() & Qt::LeftButton))
         return;
     model::Document& document = *viewport.document();
-    if (!document.contains(*dragged_)) {
-        dragged_.reset();
+    if (!document.contains(drag_->part())) {
+        drag_.reset();
         return;
     }
-    model::Placement target = startPlacement_;
-    target.translation +=
-        toEigen(viewport.viewPlanePoint(event->position(), grabPoint_) - grabPoint_);
-    document.setPlacement(*dragged_, target);  // a live preview
+    drag_->dragTo(viewport, event->position());
     candidate_ = findCandidate(viewport);
     if (candidate_)
         candidate_ =
             withMode(document, *candidate_, modeOf(event->modifiers()).value_or(MergeMode::Snap));
     const QString what = !candidate_ ? tr("Drag the part into another to merge them")
                          : modeOf(event->modifiers())
-                             ? describe(document, *dragged_, *candidate_)
+                             ? describe(document, drag_->part(), *candidate_)
                              : tr("Release to choose: snap, split or connect %1 of %2 and %3 "
                                   "of %4 (Shift: split, Ctrl: connect, Esc: cancel)")
                                    .arg(model::jointDisplayName(candidate_->draggedJoint),
-                                        document.part(*dragged_).name,
+                                        document.part(drag_->part()).name,
                                         model::jointDisplayName(candidate_->targetJoint),
                                         document.part(candidate_->target).name);
-    emit viewport.statusMessage(what);
+    emit status(what);
 }
 
 std::optional<MergeTool::Candidate> MergeTool::findCandidate(const Viewport& viewport) const {
     const model::Document& document = *viewport.document();
-    const model::PartNode& dragged = document.part(*dragged_);
+    const model::PartNode& dragged = document.part(drag_->part());
     if (!rigged(dragged))
         return std::nullopt;
-    const Eigen::AlignedBox3d draggedBox = worldBox(dragged);
+    const Eigen::AlignedBox3d draggedBox = model::worldBounds(dragged);
     std::optional<Candidate> best;
     double bestDistance = 0.0;
     for (const model::PartNode& node : document.parts()) {
         // "Close proximity" (paper 3.2): the parts' boxes overlap.
         if (node.id == dragged.id || !node.visible || !rigged(node) ||
-            !worldBox(node).intersects(draggedBox))
+            !model::worldBounds(node).intersects(draggedBox))
             continue;
         for (const Joint& from : dragged.part->skeleton.joints())
             for (const Joint& to : node.part->skeleton.joints()) {
-                const Vec3 a = toWorld(dragged.placement, from.position);
-                const Vec3 b = toWorld(node.placement, to.position);
+                const Vec3 a = dragged.placement.toWorld(from.position);
+                const Vec3 b = node.placement.toWorld(to.position);
                 const double d = (a - b).norm();
                 if (!best || d < bestDistance) {
                     best = Candidate{node.id, from.id, to.id, a, b, MergeMode::Snap};
@@ -139,14 +124,14 @@ MergeTool::Candidate MergeTool::withMode(const model::Document& document, Candid
     candidate.mode = mode;
     const model::PartNode& target = document.part(candidate.target);
     candidate.targetPoint =
-        toWorld(target.placement, target.part->skeleton.joint(candidate.targetJoint).position);
+        target.placement.toWorld(target.part->skeleton.joint(candidate.targetJoint).position);
     if (mode != MergeMode::Split)
         return candidate;
     // The dragged joint projected on the other part's nearest bone.
     double nearest = -1.0;
     for (const BoneSegment& bone : target.part->boneSegments()) {
-        const BoneSegment world{toWorld(target.placement, bone.head),
-                                toWorld(target.placement, bone.tail)};
+        const BoneSegment world{target.placement.toWorld(bone.head),
+                                target.placement.toWorld(bone.tail)};
         const Vec3 p = closestPointOnSegment(candidate.draggedPoint, world);
         const double d = (p - candidate.draggedPoint).norm();
         if (nearest < 0.0 || d < nearest) {
@@ -179,25 +164,22 @@ QString MergeTool::describe(const model::Document& document, model::PartId dragg
 
 void MergeTool::release(Viewport& viewport, QMouseEvent* event) {
     model::Document& document = *viewport.document();
-    if (!dragged_ || !document.contains(*dragged_)) {
-        dragged_.reset();
+    if (!drag_ || !document.contains(drag_->part())) {
+        drag_.reset();
         return;
     }
-    const model::PartId dragged = *dragged_;
     std::optional<Candidate> candidate = findCandidate(viewport);
     if (!candidate) {
         // Not near another part: an ordinary move, one undo step.
-        dragged_.reset();
+        drag_->preview().commit();
+        drag_.reset();
         candidate_.reset();
-        document.undoStack()->push(new model::MovePartCommand(
-            document, dragged, startPlacement_, document.part(dragged).placement, true));
         viewport.update();
         return;
     }
     if (const std::optional<MergeMode> mode = modeOf(event->modifiers())) {
-        dragged_.reset();
         candidate_.reset();
-        merge(viewport, dragged, withMode(document, *candidate, *mode));
+        merge(viewport, std::exchange(drag_, nullptr), withMode(document, *candidate, *mode));
         return;
     }
     candidate_ = candidate;
@@ -209,8 +191,7 @@ QMenu* MergeTool::choices() const {
 }
 
 void MergeTool::offerChoices(Viewport& viewport, const QPointF& pixel) {
-    pending_ = *dragged_;
-    dragged_.reset();  // no more drag; the overlay stays on the candidate
+    pending_ = std::exchange(drag_, nullptr);  // no more drag; the overlay stays on the candidate
     auto* menu = new QMenu(&viewport);
     menu->setAttribute(Qt::WA_DeleteOnClose);
     const QPointer<Viewport> view(&viewport);
@@ -225,10 +206,10 @@ void MergeTool::offerChoices(Viewport& viewport, const QPointF& pixel) {
         first = first ? first : action;
         // Hovering an item previews it: the lit joints or point and the status.
         connect(action, &QAction::hovered, this, [this, view, mode = mode] {
-            if (!view || !pending_ || !candidate_ || !view->document()->contains(*pending_))
+            if (!view || !pending_ || !candidate_ || !view->document()->contains(pending_->part()))
                 return;
             candidate_ = withMode(*view->document(), *candidate_, mode);
-            emit view->statusMessage(describe(*view->document(), *pending_, *candidate_));
+            emit status(describe(*view->document(), pending_->part(), *candidate_));
             view->update();
         });
         connect(action, &QAction::triggered, this, [this, view, mode = mode] {
@@ -261,25 +242,24 @@ void MergeTool::offerChoices(Viewport& viewport, const QPointF& pixel) {
 void MergeTool::choose(Viewport& viewport, std::optional<MergeMode> mode) {
     if (!pending_)
         return;
-    const model::PartId dragged = *pending_;
-    pending_.reset();
+    std::shared_ptr<PartDrag> drag = std::exchange(pending_, nullptr);
     const std::optional<Candidate> candidate = candidate_;
     candidate_.reset();
     if (choices_)
         choices_->close();
-    if (!viewport.document()->contains(dragged))
+    if (!viewport.document()->contains(drag->part()))
         return;
     if (!mode || !candidate) {
-        putBack(viewport, dragged);
+        putBack(viewport, *drag);
         return;
     }
-    merge(viewport, dragged, withMode(*viewport.document(), *candidate, *mode));
+    merge(viewport, std::move(drag), withMode(*viewport.document(), *candidate, *mode));
 }
 
-void MergeTool::merge(Viewport& viewport, model::PartId dragged, const Candidate& candidate) {
+void MergeTool::merge(Viewport& viewport, std::shared_ptr<PartDrag> drag,
+                      const Candidate& candidate) {
     model::Document& document = *viewport.document();
-    const model::Placement dropped = document.part(dragged).placement;
-    const model::Placement start = startPlacement_;
+    const model::PartId dragged = drag->part();
     model::MergeSpec spec;
     spec.mode = candidate.mode;
     spec.draggedJoint = candidate.draggedJoint;
@@ -290,26 +270,25 @@ void MergeTool::merge(Viewport& viewport, model::PartId dragged, const Candidate
     timer->start();
     QPointer<Viewport> view(&viewport);
     QPointer<model::Document> guarded(&document);
+    QPointer<MergeTool> self(this);
     // Puts the dragged part back where the drag started (a refused or
     // cancelled merge leaves the document as it was).
-    auto putBackTo = [view, guarded, dragged, start](const QString& message) {
-        if (!guarded || !guarded->contains(dragged))
-            return;
-        guarded->setPlacement(dragged, start);
-        if (view) {
-            emit view->statusMessage(message);
+    auto putBackTo = [view, self, drag](const QString& message) {
+        drag->preview().revert();
+        if (self)
+            emit self->status(message);
+        if (view)
             view->update();
-        }
     };
     // A merge of large parts takes long (the union, the local re-skin): it
-    // runs as a background job (issue 16 item 3) on copies of the two nodes,
+    // runs as a background job on copies of the two nodes,
     // and the command is made and pushed when it is done.
     const model::PartNode draggedNode = document.part(dragged);
     const model::PartNode targetNode = document.part(target);
     JobRunner::runOn(
         viewport.jobRunner(),
         tr("Merging %1 into %2").arg(document.part(dragged).name, document.part(target).name),
-        [draggedNode, targetNode, dragged, target, spec, guarded, view, start, dropped,
+        [draggedNode, targetNode, dragged, target, spec, guarded, view, self, drag, putBackTo,
          timer]() -> JobRunner::Apply {
             auto computed = std::make_shared<model::ComputedMerge>(
                 model::MergePartsCommand::compute(draggedNode, targetNode, spec));
@@ -321,24 +300,21 @@ void MergeTool::merge(Viewport& viewport, model::PartId dragged, const Candidate
                     merge = model::MergePartsCommand::fromComputed(*guarded, dragged, target,
                                                                    std::move(*computed));
                 } catch (const Error& error) {
-                    if (view)
-                        emit view->statusMessage(tr("Not merged: %1").arg(model::errorText(error)));
+                    putBackTo(tr("Not merged: %1").arg(model::errorText(error)));
                     return;
                 }
                 const QString summary = merge->summary();
                 // The drop and the merge are one step: undo puts both parts
                 // back where they were before the drag.
                 guarded->undoStack()->beginMacro(merge->text());
-                guarded->undoStack()->push(
-                    new model::MovePartCommand(*guarded, dragged, start, dropped, true));
+                drag->preview().commit();
                 guarded->undoStack()->push(merge.release());
                 guarded->undoStack()->endMacro();
                 guarded->setSelection({target, kNoJoint});
-                if (view) {
-                    emit view->statusMessage(
-                        tr("%1 (%2 ms in all)").arg(summary).arg(timer->elapsed()));
+                if (self)
+                    emit self->status(tr("%1 (%2 ms in all)").arg(summary).arg(timer->elapsed()));
+                if (view)
                     view->update();
-                }
             };
         },
         [putBackTo](const QString& reason) { putBackTo(tr("Not merged: %1").arg(reason)); },
@@ -346,28 +322,30 @@ void MergeTool::merge(Viewport& viewport, model::PartId dragged, const Candidate
     viewport.update();
 }
 
-void MergeTool::putBack(Viewport& viewport, model::PartId dragged) {
-    viewport.document()->setPlacement(dragged, startPlacement_);
-    emit viewport.statusMessage(tr("Merge cancelled"));
+void MergeTool::putBack(Viewport& viewport, PartDrag& drag) {
+    drag.preview().revert();
+    emit status(tr("Merge cancelled"));
     viewport.update();
 }
 
 void MergeTool::cancel(Viewport& viewport) {
     if (pending_) {
         choose(viewport, std::nullopt);
-    } else if (dragged_ && viewport.document()->contains(*dragged_)) {
-        putBack(viewport, *dragged_);
+    } else if (drag_ && viewport.document()->contains(drag_->part())) {
+        putBack(viewport, *drag_);
     }
-    dragged_.reset();
+    drag_.reset();
     candidate_.reset();
 }
 
 void MergeTool::addOverlay(const Viewport& viewport, ColouredVertices& lines) const {
-    const std::optional<model::PartId> part = dragged_ ? dragged_ : pending_;
-    if (!candidate_ || !part || !viewport.document()->contains(*part))
+    const std::shared_ptr<PartDrag>& drag = drag_ ? drag_ : pending_;
+    if (!candidate_ || !drag || !viewport.document()->contains(drag->part()))
         return;
+    const std::optional<model::PartId> part = drag->part();
     const QVector3D lit(0.2f, 0.75f, 1.0f);
-    const double size = 0.03 * worldBox(viewport.document()->part(*part)).diagonal().norm();
+    const double size =
+        0.03 * model::worldBounds(viewport.document()->part(*part)).diagonal().norm();
     lines.add(toQt(candidate_->draggedPoint), lit);
     lines.add(toQt(candidate_->targetPoint), lit);
     addCross(lines, candidate_->draggedPoint, size, lit);

@@ -16,16 +16,17 @@
 #include "merge/SkeletonJoin.h"
 #include "model/Document.h"
 #include "model/PartNode.h"
+#include "tools/PartDrag.h"
 #include "viewport/ViewportTool.h"
 
 class QMenu;
 
 namespace rigmesh::widgets {
 
-class MergeTool : public QObject, public ViewportTool {
+class MergeTool : public ViewportTool {
     Q_OBJECT
   public:
-    using QObject::QObject;
+    using ViewportTool::ViewportTool;
     QString name() const override { return tr("Merge"); }
     QString hint() const override;
     void press(Viewport& viewport, QMouseEvent* event) override;
@@ -56,15 +57,16 @@ class MergeTool : public QObject, public ViewportTool {
     // Opens the menu at `pixel`; the part stays where it was dropped.
     void offerChoices(Viewport& viewport, const QPointF& pixel);
     void choose(Viewport& viewport, std::optional<MergeMode> mode);
-    void merge(Viewport& viewport, model::PartId dragged, const Candidate& candidate);
-    void putBack(Viewport& viewport, model::PartId dragged);
+    // The drag is shared with the merge's background job, which commits or
+    // reverts its preview when done.
+    void merge(Viewport& viewport, std::shared_ptr<PartDrag> drag, const Candidate& candidate);
+    void putBack(Viewport& viewport, PartDrag& drag);
 
-    std::optional<model::PartId> dragged_;
-    QVector3D grabPoint_;
-    model::Placement startPlacement_;
+    std::shared_ptr<PartDrag> drag_;
     std::optional<Candidate> candidate_;
-    // A release waiting for the menu's choice: the dropped part and its candidate.
-    std::optional<model::PartId> pending_;
+    // A release waiting for the menu's choice: the dropped part's drag (its
+    // candidate is candidate_).
+    std::shared_ptr<PartDrag> pending_;
     QPointer<QMenu> choices_;
 };
 

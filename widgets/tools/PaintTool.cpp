@@ -37,6 +37,10 @@ QString PaintTool::hint() const {
         "the stroke back");
 }
 
+std::optional<WeightView> PaintTool::weightView() const {
+    return WeightView::SelectedBone;
+}
+
 void PaintTool::press(Viewport& viewport, QMouseEvent* event) {
     model::Document& document = *viewport.document();
     if (viewport.weightView() != WeightView::SelectedBone)
@@ -48,22 +52,20 @@ void PaintTool::press(Viewport& viewport, QMouseEvent* event) {
     const std::optional<BoneId> bone = selectedBone(document);
     const auto hit = viewport.surfaceAt(event->position());
     if (!bone || !hit || hit->part != document.selection().part) {
-        emit viewport.statusMessage(
+        emit status(
             tr("Select a joint of the part first (its bone is the one painted), then paint on "
                "that part"));
         return;
     }
-    before_ = document.part(hit->part).part;
-    if (before_->lockedBones.contains(*bone)) {
-        emit viewport.statusMessage(
-            tr("%1 is locked: unlock it in the Skin Weights panel to paint it")
-                .arg(model::boneDisplayName(*before_, *bone)));
-        before_.reset();
+    const Part& before = *document.part(hit->part).part;
+    if (before.lockedBones.contains(*bone)) {
+        emit status(tr("%1 is locked: unlock it in the Skin Weights panel to paint it")
+                        .arg(model::boneDisplayName(before, *bone)));
         return;
     }
-    part_ = hit->part;
+    stroke_ = std::make_unique<model::SkinningPreview>(document, hit->part);
     bone_ = *bone;
-    working_ = std::make_shared<Part>(*before_);
+    working_ = std::make_shared<Part>(before);
     painter_ = std::make_unique<WeightPainter>(working_->mesh);
     skipped_ = 0;
     dabs_.clear();
@@ -73,7 +75,7 @@ void PaintTool::press(Viewport& viewport, QMouseEvent* event) {
 
 void PaintTool::move(Viewport& viewport, QMouseEvent* event) {
     cursor_ = event->position();
-    if (!part_ || !(event->buttons() & Qt::LeftButton))
+    if (!stroke_ || !(event->buttons() & Qt::LeftButton))
         return;
     // Dabs a third of the radius apart along the drag.
     if (QLineF(lastDab_, event->position()).length() < radiusPixels / 3.0) {
@@ -86,14 +88,15 @@ void PaintTool::move(Viewport& viewport, QMouseEvent* event) {
 
 void PaintTool::dab(Viewport& viewport, const QPointF& pixel) {
     model::Document& document = *viewport.document();
-    if (!document.contains(*part_))
+    const model::PartId part = stroke_->partId();
+    if (!document.contains(part))
         return;
     const auto hit = viewport.surfaceAt(pixel);
-    if (!hit || hit->part != *part_)
+    if (!hit || hit->part != part)
         return;
-    const model::Placement placement = document.part(*part_).placement;
+    const model::Placement placement = document.part(part).placement;
     const Vec3 local = working_->mesh.vertices[hit->vertex];
-    const Vec3 centre = placement.rotation * local + placement.translation;
+    const Vec3 centre = placement.toWorld(local);
     // The radius in pixels as a length at the surface's depth.
     const QVector3D at = toQt(centre);
     const double radius = (viewport.viewPlanePoint(pixel + QPointF(radiusPixels, 0.0), at) -
@@ -113,17 +116,17 @@ void PaintTool::dab(Viewport& viewport, const QPointF& pixel) {
     WeightDab partDab = dab;
     partDab.centre = local;
     if (dab.towardsViewer)
-        partDab.towardsViewer = placement.rotation.conjugate() * *dab.towardsViewer;
+        partDab.towardsViewer = placement.directionToLocal(*dab.towardsViewer);
     partDab.locked = working_->lockedBones;
     try {
         skipped_ += painter_->paint(*working_, partDab).skippedLocked;
     } catch (const Error& error) {
-        emit viewport.statusMessage(model::errorText(error));
+        emit status(model::errorText(error));
         return;
     }
     dabs_.push_back(dab);
     // A live preview; the stroke becomes one command on release.
-    document.replaceSkinning(*part_, std::make_shared<const Part>(*working_));
+    stroke_->preview(std::make_shared<const Part>(*working_));
 }
 
 void PaintTool::sample(Viewport& viewport, const QPointF& pixel) {
@@ -136,66 +139,65 @@ void PaintTool::sample(Viewport& viewport, const QPointF& pixel) {
     const std::optional<BoneId> bone = selectedBone(document);
     if (!bone || hit->part != document.selection().part ||
         hit->vertex >= static_cast<int>(part.weights.perVertex.size())) {
-        emit viewport.statusMessage(viewport.weightsAt(pixel));
+        emit status(viewport.weightsAt(pixel));
         return;
     }
     value = weightOfBone(part.weights.perVertex[hit->vertex], *bone);
     if (valueBox_)
         valueBox_->setValue(value);
-    emit viewport.statusMessage(tr("Sampled %1 = %2 at vertex %3: the Replace brush paints it")
-                                    .arg(model::boneDisplayName(part, *bone))
-                                    .arg(value, 0, 'f', 3)
-                                    .arg(hit->vertex));
+    emit status(tr("Sampled %1 = %2 at vertex %3: the Replace brush paints it")
+                    .arg(model::boneDisplayName(part, *bone))
+                    .arg(value, 0, 'f', 3)
+                    .arg(hit->vertex));
 }
 
 void PaintTool::release(Viewport& viewport, QMouseEvent*) {
-    if (!part_)
+    if (!stroke_)
         return;
     model::Document& document = *viewport.document();
-    const model::PartId part = *part_;
+    const model::PartId part = stroke_->partId();
     if (document.contains(part) && !dabs_.empty()) {
-        // Back to where the stroke started, then the stroke as one command.
-        document.replaceSkinning(part, before_);
+        // The stroke as one command, painted again on the part as the stroke
+        // found it.
         try {
-            auto command = model::PaintWeightsCommand::create(document, part, dabs_);
-            if (command->changedVertices() == 0) {
-                // Nothing to undo: no step in the history for it.
-                emit viewport.statusMessage(
-                    command->skippedVertices() > 0
-                        ? tr("The stroke changed no weights: every other bone there is locked")
-                        : tr("The stroke changed no weights: they are already as it paints"));
-                endStroke();
-                return;
-            }
-            QString message = tr("Painted %n dab(s), %1 vertices changed", nullptr,
-                                 static_cast<int>(dabs_.size()))
-                                  .arg(command->changedVertices());
-            if (command->skippedVertices() > 0)
-                message += tr("; %n vertex visit(s) skipped: every other bone there is locked",
-                              nullptr, command->skippedVertices());
-            document.undoStack()->push(command.release());
-            emit viewport.statusMessage(message);
+            QString message;
+            stroke_->commit([&]() -> std::unique_ptr<QUndoCommand> {
+                auto command = model::PaintWeightsCommand::create(document, part, dabs_);
+                if (command->changedVertices() == 0) {
+                    // Nothing to undo: no step in the history for it.
+                    message =
+                        command->skippedVertices() > 0
+                            ? tr("The stroke changed no weights: every other bone there is locked")
+                            : tr("The stroke changed no weights: they are already as it paints");
+                    return nullptr;
+                }
+                message = tr("Painted %n dab(s), %1 vertices changed", nullptr,
+                             static_cast<int>(dabs_.size()))
+                              .arg(command->changedVertices());
+                if (command->skippedVertices() > 0)
+                    message += tr("; %n vertex visit(s) skipped: every other bone there is locked",
+                                  nullptr, command->skippedVertices());
+                return command;
+            });
+            emit status(message);
         } catch (const Error& error) {
-            emit viewport.statusMessage(model::errorText(error));
+            emit status(model::errorText(error));
         }
     }
     endStroke();
 }
 
-void PaintTool::cancel(Viewport& viewport) {
-    if (part_ && viewport.document()->contains(*part_)) {
-        viewport.document()->replaceSkinning(*part_, before_);
-        emit viewport.statusMessage(tr("Stroke put back"));
-    }
+void PaintTool::cancel(Viewport&) {
+    if (stroke_ && stroke_->previewing())
+        emit status(tr("Stroke put back"));
     endStroke();
 }
 
 void PaintTool::endStroke() {
-    part_.reset();
+    stroke_.reset();  // reverts what was not committed
     dabs_.clear();
     painter_.reset();
     working_.reset();
-    before_.reset();
 }
 
 void PaintTool::hover(Viewport& viewport, QMouseEvent* event) {
@@ -211,8 +213,7 @@ void PaintTool::addOverlay(const Viewport& viewport, ColouredVertices& lines) co
     const auto hit = viewport.surfaceAt(cursor_);
     const QVector3D through = hit ? toQt([&] {
         const model::PartNode& node = viewport.document()->part(hit->part);
-        return Vec3(node.placement.rotation * node.part->mesh.vertices[hit->vertex] +
-                    node.placement.translation);
+        return Vec3(node.placement.toWorld(node.part->mesh.vertices[hit->vertex]));
     }())
                                   : viewport.sceneCentre();
     const QVector3D colour(1.0f, 1.0f, 1.0f);

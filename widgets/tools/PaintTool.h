@@ -1,4 +1,4 @@
-// Weight paint tool (W), issue 14 item 3, in the manner of Blender's weight
+// Weight paint tool (W), in the manner of Blender's weight
 // paint mode: drag over a part to paint the weight of the selected joint's
 // bone (the one the Selected Bone weight view shows, which the tool turns
 // on). Tool Options: Add, Subtract, Replace or Smooth, the falloff, the
@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "model/Document.h"
+#include "model/preview/SkinningPreview.h"
 #include "part/WeightPaint.h"
 #include "viewport/ViewportTool.h"
 
@@ -26,10 +27,10 @@ class QDoubleSpinBox;
 
 namespace rigmesh::widgets {
 
-class PaintTool : public QObject, public ViewportTool {
+class PaintTool : public ViewportTool {
     Q_OBJECT
   public:
-    using QObject::QObject;
+    using ViewportTool::ViewportTool;
     QString name() const override { return tr("Paint Weights"); }
     QString hint() const override;
     void press(Viewport& viewport, QMouseEvent* event) override;
@@ -39,6 +40,8 @@ class PaintTool : public QObject, public ViewportTool {
     void hover(Viewport& viewport, QMouseEvent* event) override;
     void addOverlay(const Viewport& viewport, ColouredVertices& lines) const override;
     QWidget* optionsWidget() override;
+    // Painting shows what it paints: the selected bone's weights.
+    std::optional<WeightView> weightView() const override;
 
     // The brush (options), for tests and the options widget.
     BrushMode mode = BrushMode::Add;
@@ -58,9 +61,9 @@ class PaintTool : public QObject, public ViewportTool {
 
     QWidget* options_ = nullptr;
     QDoubleSpinBox* valueBox_ = nullptr;
-    std::optional<model::PartId> part_;
+    // The stroke's live weights (model/preview/SkinningPreview.h).
+    std::unique_ptr<model::SkinningPreview> stroke_;
     BoneId bone_ = 0;
-    std::shared_ptr<const Part> before_;      // the part as the stroke found it
     std::shared_ptr<Part> working_;           // with the stroke's dabs so far
     std::unique_ptr<WeightPainter> painter_;  // over working_'s mesh
     int skipped_ = 0;                         // vertex visits no dab could change

@@ -6,10 +6,9 @@
 #include <cmath>
 
 #include "base/Error.h"
-#include "model/PoseChange.h"
+#include "model/ErrorText.h"
 #include "model/PoseDrag.h"
 #include "model/commands/SetJointPinnedCommand.h"
-#include "model/commands/SetPoseCommand.h"
 #include "pose/InverseKinematics.h"
 #include "viewport/RenderScene.h"
 #include "viewport/ViewMath.h"
@@ -51,7 +50,7 @@ void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
         if (const auto bone = viewport.boneAt(event->position()))
             grabBone(viewport, *bone, event->position());
         else
-            emit hintMessage(tr("Click on a joint or a bone to pose the part"));
+            emit status(tr("Click on a joint or a bone to pose the part"), 5000);
         return;
     }
     document.setSelection(*hit);
@@ -77,13 +76,14 @@ void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
         if (node.part->skeleton.isAttached(hit->joint))
             drag.pivot = hit->joint;  // a chain's root turns its chain about itself
         if (drag.pivot == kNoJoint) {
-            emit hintMessage(
+            emit status(
                 tr("The root joint ends no bone: drag its ring to turn the whole part, or drag "
-                   "it without Ctrl to move the part"));
+                   "it without Ctrl to move the part"),
+                5000);
             return;
         }
     }
-    drag_ = drag;
+    startDrag(*viewport.document(), drag);
 }
 
 std::optional<QPointF> PoseTool::ringCentre(const Viewport& viewport) const {
@@ -122,7 +122,7 @@ void PoseTool::grabRing(Viewport& viewport, const QPointF& pixel) {
     drag.startPose = node.pose;
     drag.forward = true;
     drag.ring = true;
-    drag_ = drag;
+    startDrag(*viewport.document(), drag);
 }
 
 QWidget* PoseTool::optionsWidget() {
@@ -181,7 +181,7 @@ void PoseTool::addOverlay(const Viewport& viewport, ColouredVertices& lines) con
 }
 
 void PoseTool::grabBone(Viewport& viewport, const BoneHit& bone, const QPointF& pixel) {
-    // FK by the bone (issue 11 item 2): it turns about its end nearer the
+    // FK by the bone: it turns about its end nearer the
     // root by its own rotation, keyed by its other end (pose/Pose.h), which
     // becomes the selection (the joint standing for the bone).
     model::Document& document = *viewport.document();
@@ -197,14 +197,14 @@ void PoseTool::grabBone(Viewport& viewport, const BoneHit& bone, const QPointF& 
     drag.startPose = node.pose;
     drag.forward = true;
     document.setSelection({bone.part, drag.joint});
-    drag_ = drag;
+    startDrag(*viewport.document(), drag);
 }
 
 void PoseTool::move(Viewport& viewport, QMouseEvent* event) {
     if (!drag_ || !(event->buttons() & Qt::LeftButton))
         return;
     if (!viewport.document()->contains(drag_->part)) {
-        drag_.reset();
+        endDrag();
         return;
     }
     if (drag_->forward)
@@ -218,12 +218,12 @@ void PoseTool::dragWithIk(Viewport& viewport, const QPointF& pixel) {
     const model::PartNode& node = document.part(drag_->part);
     // The target on the view plane through the joint, in the part's frame.
     const Vec3 world = toEigen(viewport.viewPlanePoint(pixel, drag_->grabPoint));
-    const Vec3 target = node.placement.rotation.conjugate() * (world - node.placement.translation);
+    const Vec3 target = node.placement.toLocal(world);
     // The same IK as the recipe's "pose" step (model::dragPartJoint).
     const IkResult result = model::dragPartJoint(
         node, drag_->joint, target, drag_->wholeBody ? model::IkReach::Body : model::IkReach::Limb);
     // A live preview, warm starting the next step; one command on release.
-    document.previewPose(drag_->part, result.pose);
+    preview_->preview(result.pose);
 }
 
 void PoseTool::rotateWithFk(Viewport& viewport, const QPointF& pixel) {
@@ -257,27 +257,34 @@ void PoseTool::rotateWithFk(Viewport& viewport, const QPointF& pixel) {
                                     drag_->startPose.rotation(drag_->joint))
                                        .normalized());
     // A live preview; the drag becomes one command on release.
-    document.previewPose(drag_->part, pose);
+    preview_->preview(pose);
 }
 
-void PoseTool::release(Viewport& viewport, QMouseEvent*) {
+void PoseTool::release(Viewport&, QMouseEvent*) {
     if (!drag_)
         return;
-    // One undo step per drag, already applied by the preview.
-    model::Document& document = *viewport.document();
-    if (document.contains(drag_->part) && document.posePreviewOrigin(drag_->part))
-        model::pushPoseChange(
-            document, drag_->part,
-            new model::SetPoseCommand(document, drag_->part, document.part(drag_->part).pose,
-                                      drag_->joint, true));
-    drag_.reset();
+    // One undo step per drag.
+    try {
+        preview_->commit(drag_->joint);
+    } catch (const Error& error) {
+        emit status(tr("Not posed: %1").arg(model::errorText(error)));
+    }
+    endDrag();
 }
 
-void PoseTool::cancel(Viewport& viewport) {
+void PoseTool::cancel(Viewport&) {
     // A drag cut short (tool switch) leaves the pose as it was.
-    if (drag_ && viewport.document()->contains(drag_->part))
-        viewport.document()->cancelPosePreview(drag_->part);
+    endDrag();
+}
+
+void PoseTool::startDrag(model::Document& document, const Drag& drag) {
+    drag_ = drag;
+    preview_ = std::make_unique<model::PosePreview>(document, drag.part);
+}
+
+void PoseTool::endDrag() {
     drag_.reset();
+    preview_.reset();  // reverts what was not committed
 }
 
 }  // namespace rigmesh::widgets

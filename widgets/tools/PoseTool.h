@@ -13,19 +13,21 @@
 #pragma once
 
 #include <QObject>
+#include <memory>
 #include <optional>
 
 #include "model/PartNode.h"
+#include "model/preview/PosePreview.h"
 #include "viewport/ViewportTool.h"
 
 namespace rigmesh::widgets {
 
 struct BoneHit;
 
-class PoseTool : public QObject, public ViewportTool {
+class PoseTool : public ViewportTool {
     Q_OBJECT
   public:
-    using QObject::QObject;
+    using ViewportTool::ViewportTool;
     QString name() const override { return tr("Pose"); }
     QString hint() const override;
     void press(Viewport& viewport, QMouseEvent* event) override;
@@ -36,9 +38,6 @@ class PoseTool : public QObject, public ViewportTool {
     void addOverlay(const Viewport& viewport, ColouredVertices& lines) const override;
     // "Reach through the whole body" (what Alt does for one drag).
     QWidget* optionsWidget() override;
-
-  signals:
-    void hintMessage(const QString& message);
 
   private:
     // The head of the selected joint's bone (the root itself for the root),
@@ -63,7 +62,12 @@ class PoseTool : public QObject, public ViewportTool {
         QPointF startPixel;
         Pose startPose;
     };
+    void startDrag(model::Document& document, const Drag& drag);
+    void endDrag();
+
     std::optional<Drag> drag_;
+    // The drag's live pose (model/preview/PosePreview.h), while drag_ is set.
+    std::unique_ptr<model::PosePreview> preview_;
     bool ringHovered_ = false;
     bool wholeBodyByDefault_ = false;
     QWidget* options_ = nullptr;  // owned by the options dock once shown

@@ -1,22 +1,21 @@
 // Select/Move tool: a click selects the joint or part under the cursor (or
 // clears the selection); dragging a part moves it in the view plane, Ctrl +
-// drag turns it about the view direction around its centre. A drag is one
-// undo step: every move pushes a MovePartCommand that merges with the
-// previous one of the same part.
+// drag turns it about the view direction around its centre (tools/PartDrag).
+// A drag is previewed live and pushed as one undo step on release.
 #pragma once
 
 #include <QObject>
-#include <optional>
+#include <memory>
 
-#include "model/PartNode.h"
+#include "tools/PartDrag.h"
 #include "viewport/ViewportTool.h"
 
 namespace rigmesh::widgets {
 
-class SelectTool : public QObject, public ViewportTool {
+class SelectTool : public ViewportTool {
     Q_OBJECT
   public:
-    using QObject::QObject;
+    using ViewportTool::ViewportTool;
     QString name() const override { return tr("Select"); }
     QString hint() const override;
     void press(Viewport& viewport, QMouseEvent* event) override;
@@ -25,11 +24,7 @@ class SelectTool : public QObject, public ViewportTool {
     void cancel(Viewport& viewport) override;
 
   private:
-    std::optional<model::PartId> dragged_;
-    QVector3D grabPoint_;
-    QPointF grabPixel_;
-    bool rotating_ = false;
-    model::Placement startPlacement_;
+    std::unique_ptr<PartDrag> drag_;
 };
 
 }  // namespace rigmesh::widgets

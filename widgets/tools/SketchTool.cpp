@@ -81,7 +81,7 @@ void SketchTool::release(Viewport& viewport, QMouseEvent* event) {
     if (length < kMinimumLengthPixels ||
         std::max(extent.width(), extent.height()) < kMinimumExtentPixels) {
         pixels_.clear();
-        emit hintMessage(tr("That stroke is too short: drag to draw a closed outline"));
+        emit status(tr("That stroke is too short: drag to draw a closed outline"), 5000);
         return;
     }
     pixels_ = filledIn(pixels_);

@@ -13,10 +13,10 @@
 
 namespace rigmesh::widgets {
 
-class SketchTool : public QObject, public ViewportTool {
+class SketchTool : public ViewportTool {
     Q_OBJECT
   public:
-    using QObject::QObject;
+    using ViewportTool::ViewportTool;
     QString name() const override { return tr("Sketch"); }
     QString hint() const override;
     void press(Viewport& viewport, QMouseEvent* event) override;
@@ -27,7 +27,6 @@ class SketchTool : public QObject, public ViewportTool {
   signals:
     void strokeFinished(const std::vector<rigmesh::Vec2>& stroke,
                         const rigmesh::model::Placement& plane);
-    void hintMessage(const QString& message);
 
   private:
     std::vector<QPointF> pixels_;

@@ -41,8 +41,7 @@ std::optional<BoneUnder> boneUnder(const Viewport& viewport, const QPointF& pixe
             ab.squaredNorm() > 0.0 ? std::clamp(ap.dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.5;
         const Vec3 rest =
             (1.0 - t) * skeleton.joint(bone.head).position + t * skeleton.joint(bone.tail).position;
-        return BoneUnder{hit->part, bone.id,
-                         node.placement.rotation * rest + node.placement.translation};
+        return BoneUnder{hit->part, bone.id, node.placement.toWorld(rest)};
     }
     return std::nullopt;
 }

@@ -2,7 +2,7 @@
 // 15): per vertex, the L1 distance between a part's weights and what
 // section 2.4 would give on the whole part now. That is a whole-part bone
 // heat solve, seconds on a large part, so it runs on a worker thread the
-// first time a part is shown this way (issue 16 item 3: never frozen); until
+// first time a part is shown this way (the GUI never freezes); until
 // it is ready the view shows no difference and `ready` repaints it.
 #pragma once
 

@@ -12,7 +12,7 @@
 
 namespace rigmesh::widgets {
 
-// How parts are coloured (issue 14 item 1): by their own colour, or by skin
+// How parts are coloured: by their own colour, or by skin
 // weights computed on the GPU from the vertex attributes.
 enum class WeightView {
     Off,
@@ -54,7 +54,7 @@ struct ColouredVertices {
 
 struct RenderScene {
     std::vector<RenderPart> parts;
-    // Onion skin (issue 15): parts in their previous and next keyed poses,
+    // Onion skin: parts in their previous and next keyed poses,
     // translucent, not selectable.
     std::vector<RenderPart> ghosts;
     ColouredVertices lines;   // skeleton bones and other overlays, in pairs

@@ -1,4 +1,4 @@
-// Small helpers every tool and the viewport share (issue 11 item 1): Qt and
+// Small helpers every tool and the viewport share: Qt and
 // Eigen vectors, the angle the cursor sweeps around a point on screen (the
 // turns of Select and Pose), and a joint's parent as the pose sees it.
 #pragma once

@@ -27,16 +27,12 @@ namespace rigmesh::widgets {
 namespace {
 
 QMatrix4x4 placementMatrix(const model::Placement& placement) {
-    Eigen::Affine3d affine = Eigen::Translation3d(placement.translation) * placement.rotation;
+    Eigen::Affine3d affine = placement.affine();
     QMatrix4x4 m;
     for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 4; ++c)
             m(r, c) = static_cast<float>(affine.matrix()(r, c));
     return m;
-}
-
-Vec3 toWorld(const model::Placement& placement, const Vec3& p) {
-    return placement.rotation * p + placement.translation;
 }
 
 // Soft, distinct colours per part id.
@@ -222,15 +218,13 @@ Eigen::AlignedBox3d Viewport::sceneBox(bool selectedOnly) const {
             continue;
         if (selectedOnly && selection.joint != kNoJoint &&
             node.part->skeleton.hasJoint(selection.joint)) {
-            const Vec3 p =
-                toWorld(node.placement,
-                        posedSkeleton(node)
-                            .jointPositions[node.part->skeleton.indexOfJoint(selection.joint)]);
+            const Vec3 p = node.placement.toWorld(
+                posedSkeleton(node)
+                    .jointPositions[node.part->skeleton.indexOfJoint(selection.joint)]);
             box.extend(p);
             continue;
         }
-        for (const Vec3& v : node.part->mesh.vertices)
-            box.extend(toWorld(node.placement, v));
+        box.extend(model::worldBounds(node));
     }
     return box;
 }
@@ -329,8 +323,8 @@ RenderScene Viewport::gatherScene() const {
         for (const Bone& bone : skeleton.bones()) {
             const QVector3D colour =
                 selectedBone == bone.id ? QVector3D(1.0f, 0.55f, 0.1f) : boneColour;
-            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.head))), colour);
-            scene.lines.add(toQt(toWorld(node.placement, posedJoint(bone.tail))), colour);
+            scene.lines.add(toQt(node.placement.toWorld(posedJoint(bone.head))), colour);
+            scene.lines.add(toQt(node.placement.toWorld(posedJoint(bone.tail))), colour);
         }
         // A disconnected bone's head and its parent's tail: a dashed line, as
         // Blender draws the relationship (Skeleton.h: attached chains).
@@ -353,7 +347,7 @@ RenderScene Viewport::gatherScene() const {
             const QVector3D colour = selected ? QVector3D(1.0f, 0.55f, 0.1f)
                                      : pinned ? QVector3D(0.85f, 0.15f, 0.15f)
                                               : QVector3D(0.2f, 0.2f, 0.22f);
-            scene.points.add(toQt(toWorld(node.placement, posedJoint(joint.id))), colour);
+            scene.points.add(toQt(node.placement.toWorld(posedJoint(joint.id))), colour);
         }
     }
     for (const QVector3D& p : strokeOverlay_)
@@ -389,7 +383,7 @@ QVector3D Viewport::jointWorldPosition(model::PartId part, JointId joint) const 
     const model::PartNode& node = document_->part(part);
     const PosedSkeleton& posed = posedSkeleton(node);
     return toQt(
-        toWorld(node.placement, posed.jointPositions[node.part->skeleton.indexOfJoint(joint)]));
+        node.placement.toWorld(posed.jointPositions[node.part->skeleton.indexOfJoint(joint)]));
 }
 
 std::optional<model::Selection> Viewport::jointAt(const QPointF& pixel) const {
@@ -403,7 +397,7 @@ std::optional<model::Selection> Viewport::jointAt(const QPointF& pixel) const {
         for (const Joint& joint : node.part->skeleton.joints()) {
             const Vec3& position = posed.jointPositions[node.part->skeleton.indexOfJoint(joint.id)];
             QVector3D screen =
-                camera_.project(toQt(toWorld(node.placement, position)), QSizeF(size()));
+                camera_.project(toQt(node.placement.toWorld(position)), QSizeF(size()));
             double d = std::hypot(screen.x() - pixel.x(), screen.y() - pixel.y());
             if (d < bestDistance) {
                 bestDistance = d;
@@ -426,7 +420,7 @@ std::optional<BoneHit> Viewport::boneAt(const QPointF& pixel) const {
         const PosedSkeleton& posed = posedSkeleton(node);
         auto screenOf = [&](JointId joint) {
             const Vec3& p = posed.jointPositions[skeleton.indexOfJoint(joint)];
-            const QVector3D s = camera_.project(toQt(toWorld(node.placement, p)), screenSize);
+            const QVector3D s = camera_.project(toQt(node.placement.toWorld(p)), screenSize);
             return QPointF(s.x(), s.y());
         };
         for (const Bone& bone : skeleton.bones()) {
@@ -460,9 +454,8 @@ std::optional<Viewport::SurfaceHit> Viewport::surfaceAt(const QPointF& pixel) co
         if (!node.visible || !node.part)
             continue;
         // Into the part's own frame.
-        const Eigen::Quaterniond inverse = node.placement.rotation.conjugate();
-        const Vec3 origin = inverse * (toEigen(ray.origin) - node.placement.translation);
-        const Vec3 direction = inverse * toEigen(ray.direction);
+        const Vec3 origin = node.placement.toLocal(toEigen(ray.origin));
+        const Vec3 direction = node.placement.directionToLocal(toEigen(ray.direction));
         const auto& v = node.part->mesh.vertices;
         for (const auto& f : node.part->mesh.faces) {
             double t = rayTriangle(origin, direction, v[f[0]], v[f[1]], v[f[2]]);

@@ -57,7 +57,7 @@ class Viewport : public QOpenGLWidget {
     void setDualQuaternionSkinning(bool on);
     void setGridVisible(bool on);
     void setWeightView(WeightView view);
-    // Ghosts of each part's previous and next keyed poses (issue 15).
+    // Ghosts of each part's previous and next keyed poses.
     void setOnionSkin(bool on);
     bool onionSkin() const { return onionSkin_; }
     WeightView weightView() const { return weightView_; }
@@ -98,10 +98,10 @@ class Viewport : public QOpenGLWidget {
     };
     std::optional<SurfaceHit> surfaceAt(const QPointF& pixel) const;
     // "Vertex 12 of arm: bone 3 0.82, bone 2 0.18": the weights under a
-    // pixel, for the status bar while a weight view is on (issue 14 item 2).
+    // pixel, for the status bar while a weight view is on.
     QString weightsAt(const QPointF& pixel) const;
 
-    // Weight inspection (issue 14 item 2): the vertex whose weights the
+    // Weight inspection: the vertex whose weights the
     // Weights panel shows (pinned by a click with a weight view on, or the
     // paint tool's Ctrl + click), and the vertices Check Rig selected; both
     // are drawn as marks where the posed surface has them.

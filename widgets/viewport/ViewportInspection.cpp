@@ -1,4 +1,4 @@
-// Viewport: the weight inspection marks (issue 14 item 2), see Viewport.h.
+// Viewport: the weight inspection marks, see Viewport.h.
 #include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
 
@@ -52,10 +52,8 @@ void Viewport::addInspectionMarks(RenderScene& scene) const {
         const PosedSkeleton& posed = posedSkeleton(*node);
         for (int v : vertices)
             if (v >= 0 && v < node->part->mesh.vertexCount())
-                scene.points.add(
-                    toQt(node->placement.rotation * posedVertex(*node->part, posed, v) +
-                         node->placement.translation),
-                    colour);
+                scene.points.add(toQt(node->placement.toWorld(posedVertex(*node->part, posed, v))),
+                                 colour);
     };
     mark(markedPart_, marked_, QVector3D(1.0f, 0.2f, 0.85f));  // Check Rig: magenta
     if (inspected_)

@@ -1,14 +1,16 @@
-// A tool the viewport hands its left-button mouse events to (sketch, select,
-// pose), in the manner of Krita's tool base: press, move and release for a
-// drag (previewed live, one command pushed on release), hover for mouse
-// moves without a button, the wheel (before the camera), overlay lines drawn
+// A tool the viewport hands its left-button mouse events to (select, sketch,
+// pose, merge, cut, paint), in the manner of Krita's tool base: press, move
+// and release for a drag (previewed live, one command pushed on release),
+// hover for mouse moves without a button, the wheel (before the camera), overlay lines drawn
 // over the 3D view and an options widget. Camera navigation (middle button,
 // the wheel a tool leaves) stays with the viewport.
 #pragma once
 
 #include <QMouseEvent>
+#include <QObject>
 #include <QString>
 #include <QWheelEvent>
+#include <optional>
 
 class QWidget;
 
@@ -17,9 +19,13 @@ namespace rigmesh::widgets {
 class Viewport;
 struct ColouredVertices;
 
-class ViewportTool {
+enum class WeightView;  // viewport/RenderScene.h
+
+class ViewportTool : public QObject {
+    Q_OBJECT
   public:
-    virtual ~ViewportTool() = default;
+    using QObject::QObject;
+    ~ViewportTool() override = default;
     virtual QString name() const = 0;
     // A one-line hint for the status bar.
     virtual QString hint() const = 0;
@@ -37,6 +43,14 @@ class ViewportTool {
     virtual void addOverlay(const Viewport&, ColouredVertices&) const {}
     // The tool's settings, shown while it is active; none by default.
     virtual QWidget* optionsWidget() { return nullptr; }
+    // The weight view the tool shows when it becomes active (the paint tool
+    // shows the weights it paints); none by default.
+    virtual std::optional<WeightView> weightView() const { return std::nullopt; }
+
+  signals:
+    // The tool's one way to the status bar: what it did, refused or needs.
+    // A timeout of 0 keeps the message until the next one.
+    void status(const QString& message, int timeoutMs = 0);
 };
 
 }  // namespace rigmesh::widgets

@@ -1,4 +1,4 @@
-// Rigging an unrigged part, usually an imported mesh (issue 17; the paper
+// Rigging an unrigged part, usually an imported mesh (the paper
 // names it as future work): the mesh repaired where that is safe
 // (autorig/MeshRepair), a curve skeleton by mean curvature flow
 // (autorig/CurveSkeleton), bones by the sketches' rules

@@ -2,7 +2,7 @@
 // Alhashim, Olson and Zhang 2012; CGAL's Mean_curvature_flow_skeletonization):
 // the surface contracts to a medially centred curve, and every mesh vertex
 // ends up at one curve node. It stands in for the chordal axis a sketched
-// part has (paper 2.1) when the part comes from a file (issue 17). Only
+// part has (paper 2.1) when the part comes from a file. Only
 // CurveSkeleton.cpp sees CGAL.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Making an imported mesh fit for rigging (issue 17 item 2): the curve
+// Making an imported mesh fit for rigging: the curve
 // skeleton needs a closed, manifold, single-component triangle mesh, and bone
 // heat needs an outward one. What is safe to repair is repaired and listed;
 // what is not is refused with a message naming the problem. Only this file's

@@ -1,5 +1,5 @@
 // How a long rigging step reports how far it got and learns that the user
-// cancelled (issue 17 item 3): the engine has no Qt, so a plain callback.
+// cancelled: the engine has no Qt, so a plain callback.
 #pragma once
 
 #include <functional>

@@ -1,4 +1,4 @@
-// Bones from an imported mesh's curve skeleton (issue 17), by the rules a
+// Bones from an imported mesh's curve skeleton, by the rules a
 // sketched part's skeleton follows (paper 2.3, Fig. 6):
 // 1. Cycles (a handle, a mesh of genus > 0) are cut: bones form a tree.
 // 2. Twigs, branches that end within about a radius of the junction they

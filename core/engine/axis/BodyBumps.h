@@ -2,7 +2,7 @@
 // insignificant branches of the chordal axis). The pruned triangles hang off
 // one live sleeve (their former junction); when that sleeve ends up in a
 // cylinder's body, the bump's outline is in no region and the surface misses
-// it (issue 10: an ellipse with a bump on top came out without it). Such a
+// it (an ellipse with a bump on top came out without it). Such a
 // sleeve becomes a node of the decomposition instead: the branch is split
 // there and the sleeve, with its bump, is a connecting region whose patch
 // follows the bump's outline.

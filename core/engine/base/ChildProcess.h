@@ -1,7 +1,7 @@
 // Runs a program in a child process with a time limit and an address-space
 // limit, and says how it ended. For work we cannot trust not to crash, loop
-// or allocate without end: reading untrusted files through Assimp (issue 9
-// item 2). POSIX only (fork, execv, setrlimit, waitpid); no Qt.
+// or allocate without end: reading untrusted files through Assimp. POSIX only (fork, execv,
+// setrlimit, waitpid); no Qt.
 //
 // The child's standard output is discarded and its standard error kept (up
 // to `maxErrorBytes`), so a `rigmesh: <message>` line can be passed on.

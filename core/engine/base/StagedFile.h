@@ -1,5 +1,5 @@
 // Writing files so that a crash or a full disk never leaves a truncated file
-// where the user expects a complete one (issue 9 item 5).
+// where the user expects a complete one.
 //
 // A StagedFile writes its bytes to a temporary file beside the target,
 // checking every write, the flush, the sync to disk and the close; it takes

@@ -5,7 +5,9 @@
 #include <set>
 
 #include "base/Error.h"
+#include "base/Stopwatch.h"
 #include "mesh/MeshAdjacency.h"
+#include "part/BoneAnnotations.h"
 #include "part/BoneWeights.h"
 #include "rig/LocalBoneHeat.h"
 
@@ -31,10 +33,9 @@ BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& we
     result.part.weights = SkinWeightsById{local.weights, {}, {}};
     // Closest bones known from the sketch no longer hold where bones changed.
     result.part.knownClosestBones.clear();
-    std::erase_if(result.part.boneNames,
-                  [&](const auto& entry) { return !result.part.skeleton.hasBone(entry.first); });
-    std::erase_if(result.part.lockedBones,
-                  [&](BoneId id) { return !result.part.skeleton.hasBone(id); });
+    result.part.boneNames.clear();
+    result.part.lockedBones.clear();
+    carryBoneAnnotations(part, result.part);
     // A kept frame holds while its bone points the same way (a split's first
     // half); a bone that turned (next to a deleted one) loses it.
     std::erase_if(result.part.boneFrames, [&](const auto& entry) {
@@ -56,7 +57,7 @@ BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& we
     const std::vector<std::string> problems = result.part.validateSolid();
     if (!problems.empty())
         throw Error(MessageId::BoneEditInvalidResult, problems.front());
-    result.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    result.milliseconds = millisecondsSince(start);
     return result;
 }
 

@@ -9,10 +9,12 @@
 
 #include "base/Error.h"
 #include "base/ParallelFor.h"
+#include "base/Stopwatch.h"
 #include "cut/SurfaceSplit.h"
 #include "geometry/ConstrainedTriangulation.h"
 #include "mesh/Fairing.h"
 #include "mesh/MeshAdjacency.h"
+#include "part/BoneAnnotations.h"
 #include "part/BoneConnection.h"
 #include "part/BoneWeights.h"
 #include "surface/PatchLattice.h"
@@ -252,13 +254,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
                     pieceWeights[v].emplace_back(bones.front(), 1.0);
             }
             out.weights.perVertex = std::move(pieceWeights);
-            for (const auto& [id, name] : part.boneNames)
-                if (out.skeleton.hasBone(id))
-                    out.boneNames[id] = name;
-            for (BoneId id : part.lockedBones)
-                if (out.skeleton.hasBone(id))
-                    out.lockedBones.insert(id);
-            out.weightsPainted = part.weightsPainted;
+            carryBoneAnnotations(part, out);
             result.sources[k] = std::move(piece.sources);
             result.sources[k].resize(out.mesh.vertexCount());  // patch vertices: New
             const std::vector<std::string> problems = out.validateSolid();
@@ -266,8 +262,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
                 throw Error(MessageId::CutInvalidPiece, problems.front());
         }
     });
-    result.milliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    result.milliseconds = millisecondsSince(start);
     return result;
 }
 

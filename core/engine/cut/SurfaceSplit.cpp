@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "mesh/CgalSurfaceMesh.h"
+#include "mesh/MeshChecks.h"
 
 namespace rigmesh {
 
@@ -75,10 +76,7 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut
         const Vec3& n = cut.planeNormal();
         PMP::split(surface, Kernel::Plane_3(n.x(), n.y(), n.z(), -n.dot(cut.planePoint())));
     } else {
-        Eigen::AlignedBox3d box;
-        for (const Vec3& v : mesh.vertices)
-            box.extend(v);
-        SurfaceMesh splitter = toSurfaceMesh(cut.strip(box), "the cut", false);
+        SurfaceMesh splitter = toSurfaceMesh(cut.strip(boundingBox(mesh)), "the cut", false);
         PMP::split(surface, splitter);
     }
     std::vector<SurfaceMesh> components;

@@ -1,7 +1,7 @@
 // A picture of what the engine decided for a sketch, so a person can check
 // it: the outline, the CDT by triangle kind, the chordal axis before and after
 // pruning, and the regions and cross sections the surface was built on (they
-// differ from the rig's where issue 10's surface-only steps apply).
+// differ from the rig's where the surface-only steps of ARCHITECTURE section 2 apply).
 #pragma once
 
 #include <string>

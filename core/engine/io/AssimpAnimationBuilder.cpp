@@ -110,7 +110,7 @@ aiAnimation* makeAnimation(const std::vector<AnimatedRig>& rigs, const std::stri
     }
     auto* animation = new aiAnimation;
     animation->mName = aiString(name);
-    animation->mTicksPerSecond = 1.0;  // notes item 4: times in seconds
+    animation->mTicksPerSecond = 1.0;  // docs/EXCHANGE.md rule 4: times in seconds
     animation->mDuration = 0.0;
     animation->mNumChannels = static_cast<unsigned>(channelCount);
     animation->mChannels = new aiNodeAnim*[channelCount]();

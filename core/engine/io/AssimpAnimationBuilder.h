@@ -1,8 +1,8 @@
-// Clips as an aiAnimation (issue 6 item 1) following the notes' items 4
+// Clips as an aiAnimation following docs/EXCHANGE.md rules 4
 // and 5: mTicksPerSecond = 1 with key times in seconds, and every bone node a
 // channel with position, rotation and scaling keys at the same times. One
 // animation may animate several rigs, each by its own clip (the clips of
-// several parts sharing a name, issue 15).
+// several parts sharing a name).
 // Internal to io/: the header only forward-declares Assimp.
 #pragma once
 

@@ -1,10 +1,9 @@
-// Assimp's aiProcess_JoinIdenticalVertices, done in linear time (issue 9
-// item 7). Assimp 5.2.5 runs that step on every glTF export (and we need it
-// for FBX and COLLADA, notes item 8), but its bone-weight update searches
-// each bone's new weight list for every weight: quadratic in the vertices a
-// bone influences (2.6 s at 110k vertices, about n^1.8). We join here with a
-// hash map and tell the exporter that the step has been applied.
-// Internal to io/: the header only forward-declares Assimp.
+// Assimp's aiProcess_JoinIdenticalVertices, done in linear time. Assimp 5.2.5 runs that step on
+// every glTF export (and we need it for FBX and COLLADA, docs/EXCHANGE.md rule 8), but its
+// bone-weight update searches each bone's new weight list for every weight: quadratic in the
+// vertices a bone influences (2.6 s at 110k vertices, about n^1.8). We join here with a hash map
+// and tell the exporter that the step has been applied. Internal to io/: the header only
+// forward-declares Assimp.
 #pragma once
 
 struct aiMesh;

@@ -18,7 +18,7 @@
 namespace rigmesh {
 namespace {
 
-// Part names made safe and unique (notes item 2: every node name unique).
+// Part names made safe and unique (docs/EXCHANGE.md rule 2: every node name unique).
 std::vector<std::string> uniquePartNames(const std::vector<ExportPart>& parts) {
     std::vector<std::string> names;
     std::set<std::string> used = {"RootNode", "Armature"};
@@ -45,7 +45,7 @@ std::string uniqueName(const std::string& wanted, std::set<std::string>& used) {
 }
 
 // The clips of every part by animation name, in order of first appearance:
-// clips of several parts with one name are one animation (issue 15). A part
+// clips of several parts with one name are one animation. A part
 // with two clips of one name (not made by the studio) gets "<name>_2" for
 // the second.
 struct AnimationGroups {
@@ -111,8 +111,8 @@ std::string endBoneName(const ExportBoneNode& leaf) {
 }
 
 // One node per bone at its head, its +Y along the bone, parented by the bone
-// hierarchy (issue 6 item 1, issue 18 item 1), nodes in the bind pose (notes
-// item 6); with `leafBones`, an end node under each leaf.
+// hierarchy, nodes in the bind pose
+// (docs/EXCHANGE.md rule 6); with `leafBones`, an end node under each leaf.
 std::vector<aiNode*> boneNodes(const ExportRig& rig, bool leafBones) {
     std::vector<aiNode*> nodes;
     std::vector<std::vector<aiNode*>> children(rig.nodes.size());
@@ -133,8 +133,8 @@ std::vector<aiNode*> boneNodes(const ExportRig& rig, bool leafBones) {
     return roots;
 }
 
-// Skin weights cut to the format's influences (notes item 9), one aiBone per
-// bone node named as the node (notes item 2), offset = inverse bind matrix.
+// Skin weights cut to the format's influences (docs/EXCHANGE.md rule 9), one
+// aiBone per bone node named as the node (rule 2), offset = inverse bind matrix.
 // End bones (leafBones) are joints without weights, so importers make bones
 // of them.
 void addBones(aiMesh* mesh, const Part& part, const ExportRig& rig, int maxInfluences,
@@ -294,14 +294,14 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
     usedNames.insert({"RootNode", "Armature"});
     const int influences = effectiveInfluenceLimit(format, options.maxInfluences);
 
-    // Notes items 1 and 7: identity root; meshes on child nodes. Issue 18
-    // item 3, one armature and mesh per part: each part's root bones under
+    // docs/EXCHANGE.md rules 1 and 7: identity root; meshes on child
+    // nodes. One armature and mesh per part: each part's root bones under
     // its own node `<part>_armature`. In FBX that node also holds the part's
     // mesh node, as Blender's own FBX files do (measured with Blender 3.4.1
     // on the camel: with the mesh nodes beside the armatures, every other
     // mesh came in unbound); in glTF the mesh node stays a scene root and
     // GltfSkins.h gives each mesh its own skin. COLLADA keeps every bone
-    // under one `Armature` beside the mesh nodes (notes item 12): Blender's
+    // under one `Armature` beside the mesh nodes (docs/EXCHANGE.md rule 12): Blender's
     // COLLADA importer binds every mesh to the first armature anyway and
     // leaves the others empty.
     scene.mRootNode = new aiNode("RootNode");

@@ -1,4 +1,4 @@
-// Builds the aiScene that SceneExport.h describes, following the notes' items
+// Builds the aiScene that SceneExport.h describes, following docs/EXCHANGE.md's rules
 // 1-7, 9 and 10. Internal to io/: the header only forward-declares Assimp.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Where each bone's tail is, written into the exported file for importers
-// that would otherwise guess it (issue 18 items 1 and 2). A bone node's
+// that would otherwise guess it. A bone node's
 // frame gives the tail's direction, but not a leaf bone's length, and
 // Blender's COLLADA importer reads no frame at all: it points every bone
 // along the file's up axis unless the joint carries Blender's own

@@ -1,5 +1,5 @@
-// The file formats exportScene writes, chosen by the path's extension (issue
-// 6 item 1), and what each allows: skin influences per vertex and whether it
+// The file formats exportScene writes, chosen by the path's extension,
+// and what each allows: skin influences per vertex and whether it
 // carries a skeleton and an animation at all.
 #pragma once
 

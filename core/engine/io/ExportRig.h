@@ -1,10 +1,10 @@
-// The node layout of one part's skeleton in an exported file (issue 6 item 1,
-// notes items 2, 6, 7), independent of Assimp: one node per bone, placed at
+// The node layout of one part's skeleton in an exported file
+// (docs/EXCHANGE.md rules 2, 6, 7), independent of Assimp: one node per bone, placed at
 // the bone's head (its joint nearer the root) as Blender's bones are, and
 // parented by the bone hierarchy, so that bones sharing a joint are separate
 // nodes that rotate independently. Root bones hang from the `Armature` node.
 //
-// Bone frames (issue 18 item 1): at rest a bone node's +Y axis runs from its
+// Bone frames: at rest a bone node's +Y axis runs from its
 // head to its tail, Blender's bone convention, which its glTF, FBX and
 // COLLADA importers read to place each tail. The frame is the shortest
 // rotation taking +Y onto the bone (no roll), or the bone's frame kept from

@@ -1,5 +1,5 @@
-// The post-export pass that repairs Assimp 5.2.5's binary FBX (notes, table
-// row `fbx`): its FBXExportNode.cpp writes an empty string where the null
+// The post-export pass that repairs Assimp 5.2.5's binary FBX (docs/EXCHANGE.md,
+// table row `fbx`): its FBXExportNode.cpp writes an empty string where the null
 // record (block sentinel) belongs, after every node's nested list and after
 // the top-level list, so Blender (and Assimp's own reader) fail with "failed
 // to read nested block sentinel". Fixed upstream in Assimp 5.3.0.
@@ -34,7 +34,7 @@ std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file)
 
 // Returns the (sentinel-complete) file with a user property `property` of
 // type Vector added to the Properties70 of each Model named in `values`
-// (issue 18: our leaf bones' tails, which Assimp's reader hands back as node
+// (our leaf bones' tails, which Assimp's reader hands back as node
 // metadata and Blender shows as a custom property). Throws Error as above.
 std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& file,
                                               const std::string& property,

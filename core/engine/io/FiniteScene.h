@@ -1,5 +1,5 @@
 // The last check before an aiScene is handed to Assimp's exporters: every
-// number that will be written is finite (issue 9: key times of 1e308 put
+// number that will be written is finite (key times of 1e308 once put
 // Infinity into a .glb). Internal to io/: the header only forward-declares
 // Assimp.
 #pragma once

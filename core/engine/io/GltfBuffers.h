@@ -1,4 +1,4 @@
-// Post-export passes over Assimp 5.2.5's glTF output (issue 9 item 5).
+// Post-export passes over Assimp 5.2.5's glTF output.
 //
 // Its glTF2 exporter writes the joint indices as 32-bit floats, converts them
 // in place to 16-bit integers and shrinks the buffer view to half, but copies

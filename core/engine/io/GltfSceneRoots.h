@@ -1,9 +1,7 @@
-// Lifts the children of Assimp's root node into the glTF scene (issue 18
-// item 1). Assimp 5.2.5's glTF exporter writes its one root node as the
-// scene's only root, so Blender shows it as a stray empty `RootNode` and the
-// skinned mesh is never a root node (the validator's
-// NODE_SKINNED_MESH_NON_ROOT: a skinned mesh's parent transforms are
-// ignored). Our root is always the identity (SceneExport.h), so its
+// Lifts the children of Assimp's root node into the glTF scene. Assimp 5.2.5's glTF exporter writes
+// its one root node as the scene's only root, so Blender shows it as a stray empty `RootNode` and
+// the skinned mesh is never a root node (the validator's NODE_SKINNED_MESH_NON_ROOT: a skinned
+// mesh's parent transforms are ignored). Our root is always the identity (SceneExport.h), so its
 // children can be the scene's roots instead, with the same world transforms.
 #pragma once
 

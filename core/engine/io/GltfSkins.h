@@ -1,4 +1,4 @@
-// One glTF skin per part (issue 18 item 3). Assimp 5.2.5's glTF exporter
+// One glTF skin per part. Assimp 5.2.5's glTF exporter
 // writes a single skin listing every part's bones, so Blender's importer
 // makes one armature of all parts (it puts the armature at the deepest
 // common ancestor of a skin's joints). This pass gives each skinned mesh a

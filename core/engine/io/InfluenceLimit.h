@@ -1,5 +1,5 @@
 // Cutting skin weights to at most N influences per vertex without creases
-// (issue 6 item 1; notes item 9: glb needs <= 4, normalised).
+// (docs/EXCHANGE.md rule 9: glb needs <= 4, normalised).
 //
 // Dropping the smallest weights and renormalising the rest jumps wherever two
 // weights swap rank across the surface (the dropped one goes from w to 0 in

@@ -1,5 +1,5 @@
 // Wavefront OBJ (+ MTL) text of an export scene, written by us rather than by
-// Assimp's ObjExporter (issue 19). Assimp's exporter numbers the positions it
+// Assimp's ObjExporter. Assimp's exporter numbers the positions it
 // writes in the order the faces first use them (ObjExporter::GetMeshes'
 // vertex map), so vertex i of the .obj was not vertex i of the part: only 54%
 // of an octopus's indices matched the rig JSON and the other formats. Here

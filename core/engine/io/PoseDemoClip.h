@@ -1,4 +1,4 @@
-// The demo animation `rigmesh build --pose-demo` exports (issue 6 item 5): a
+// The demo animation `rigmesh build --pose-demo` exports: a
 // three-key clip, rest at 0 s, an IK bend of the end joint at 0.5 s, rest
 // again at 1 s, so that every exported file carries an animation.
 #pragma once

@@ -6,8 +6,8 @@
 //  "weights": [[[bone index, weight], ...] per mesh vertex],
 //  "failed_bones": [...], "warning": "..."}
 // Vertices and weights are in the part's mesh order, which every mesh file
-// of one `rigmesh build` shares (OBJ, OFF, PLY, glTF, FBX, COLLADA; issue
-// 19), so a reader can pair them by index and check the pairing by position.
+// of one `rigmesh build` shares (OBJ, OFF, PLY, glTF, FBX, COLLADA), so a reader can pair them by
+// index and check the pairing by position.
 #pragma once
 
 #include <array>

@@ -105,7 +105,8 @@ std::string readWholeFile(const fs::path& path) {
 // leaves the old .gltf with its old, untouched .bin (plus an orphan new .bin);
 // after the .gltf's rename the new pair is complete. So the .gltf and the .bin
 // it names never disagree.
-void writeGltf(const ExportedFiles& files, const fs::path& target) {
+void stageGltf(const ExportedFiles& files, const fs::path& target, std::vector<StagedFile>& staged,
+               std::vector<fs::path>& undoOnFailure, std::vector<fs::path>& obsolete) {
     const auto bin = files.companions.find("bin");
     if (bin == files.companions.end())
         throw Error(MessageId::CannotWriteFile, target.string(), "the glTF exporter wrote no .bin");
@@ -115,36 +116,26 @@ void writeGltf(const ExportedFiles& files, const fs::path& target) {
     const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
     const std::string oldBin = fs::exists(target) ? bufferUriOf(readWholeFile(target)) : "";
 
-    StagedFile stagedGltf(target, gltfText);
-    StagedFile stagedBin(folder / binName, binBytes);
-    stagedBin.commit();
-    try {
-        stagedGltf.commit();
-    } catch (const Error&) {
-        std::error_code ignored;
-        if (oldBin != binName)
-            fs::remove(folder / binName, ignored);
-        throw;
-    }
+    staged.emplace_back(folder / binName, binBytes);
+    staged.emplace_back(target, gltfText);
+    if (oldBin != binName)
+        undoOnFailure.push_back(folder / binName);
     // Only a .bin this exporter could have written: no path, the same stem.
     const bool ours = oldBin != binName && oldBin.find('/') == std::string::npos &&
                       oldBin.find('\\') == std::string::npos &&
                       oldBin.starts_with(target.stem().string() + ".") && oldBin.ends_with(".bin");
-    if (ours) {
-        std::error_code ignored;
-        fs::remove(folder / oldBin, ignored);
-    }
+    if (ours)
+        obsolete.push_back(folder / oldBin);
 }
 
 // .obj + .mtl, written by us in each mesh's own vertex order
 // (ObjSceneText.h); the .mtl goes first, so that the .obj never names a
 // missing one.
-void writeObj(const aiScene& scene, const fs::path& target) {
+void stageObj(const aiScene& scene, const fs::path& target, std::vector<StagedFile>& staged) {
     const fs::path mtlPath = fs::path(target).replace_extension(".mtl");
     const ObjText text = objSceneText(scene, mtlPath.filename().string());
-    StagedFile stagedObj(target, text.obj);
-    StagedFile(mtlPath, text.mtl).commit();
-    stagedObj.commit();
+    staged.emplace_back(mtlPath, text.mtl);
+    staged.emplace_back(target, text.obj);
 }
 
 // What Assimp's glTF needs after export: its root node lifted out, one skin
@@ -177,8 +168,28 @@ std::vector<ExportPart> withDetailLevel(const std::vector<ExportPart>& parts,
 
 }  // namespace
 
-void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const std::string& path,
-                 const ExportOptions& options) {
+void StagedExport::commit() {
+    for (std::size_t i = 0; i < files_.size(); ++i) {
+        try {
+            files_[i].commit();
+        } catch (const Error&) {
+            std::error_code ignored;
+            if (i > 0)
+                for (const fs::path& path : undoOnFailure_)
+                    fs::remove(path, ignored);
+            files_.clear();
+            throw;
+        }
+    }
+    files_.clear();
+    for (const fs::path& path : obsolete_) {
+        std::error_code ignored;
+        fs::remove(path, ignored);
+    }
+}
+
+StagedExport stageScene(const std::vector<ExportPart>& parts, const Clip* clip,
+                        const std::string& path, const ExportOptions& options) {
     const ExportFormat format = exportFormatFromPath(path);
     aiScene scene;
     std::vector<Part> detailed;
@@ -187,9 +198,10 @@ void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const s
     checkSceneIsFinite(scene);
     const fs::path target(path);
     checkReplaceable(target);
+    StagedExport staged;
     if (format == ExportFormat::Obj) {
-        writeObj(scene, target);
-        return;
+        stageObj(scene, target, staged.files_);
+        return staged;
     }
 
     ExportedFiles files = exportToMemory(scene, format, path);
@@ -197,12 +209,12 @@ void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const s
         case ExportFormat::Glb: {
             GlbChunks glb = splitGlb(zeroUnreferencedGlbBytes(std::move(files.main)));
             glb.json = gltfPostPasses(glb.json, glb.bin, rigs);
-            writeFileAtomically(target, joinGlb(glb));
+            staged.files_.emplace_back(target, joinGlb(glb));
             break;
         }
         case ExportFormat::Gltf:
             files.main = gltfPostPasses(files.main, files.companions["bin"], rigs);
-            writeGltf(files, target);
+            stageGltf(files, target, staged.files_, staged.undoOnFailure_, staged.obsolete_);
             break;
         case ExportFormat::Fbx:
             if (assimpNeedsFbxSentinelFix()) {
@@ -211,14 +223,20 @@ void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const s
                 files.main.assign(fixed.begin(), fixed.end());
             }
             files.main = withFbxLeafTails(files.main, rigs);
-            writeFileAtomically(target, files.main);
+            staged.files_.emplace_back(target, files.main);
             break;
         case ExportFormat::Collada:
-            writeFileAtomically(target, withColladaBoneTips(files.main, rigs));
+            staged.files_.emplace_back(target, withColladaBoneTips(files.main, rigs));
             break;
         case ExportFormat::Obj:
-            break;  // written above
+            break;  // staged above
     }
+    return staged;
+}
+
+void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const std::string& path,
+                 const ExportOptions& options) {
+    stageScene(parts, clip, path, options).commit();
 }
 
 }  // namespace rigmesh

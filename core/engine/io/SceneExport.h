@@ -1,7 +1,7 @@
 // Exporting rigged parts to glTF 2.0 (.glb, .gltf), binary FBX, COLLADA and
-// OBJ through Assimp (issue 6 item 1). Assimp stays inside the .cpp files.
+// OBJ through Assimp. Assimp stays inside the .cpp files.
 //
-// Layout (the notes' items are in /work/shared/notes/assimp-blender-facts.md):
+// Layout (the rules Assimp 5.2.5 and Blender need are in docs/EXCHANGE.md):
 // an identity root node; one node per part carrying its mesh (the part's
 // name); for rigged formats each part's bones under its own armature node
 // `<part>_armature` (in FBX holding the part's mesh node too; glTF gets one
@@ -20,11 +20,13 @@
 // are y up; glTF is y up, metres, as are our FBX (UnitScaleFactor 100 = metres) and COLLADA files.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
 
+#include "base/StagedFile.h"
 #include "part/Part.h"
 #include "pose/Clip.h"
 #include "pose/Pose.h"
@@ -41,7 +43,7 @@ struct ExportPart {
     // Its animation (written when it has keys and ExportOptions::animation);
     // may be null.
     const Clip* clip = nullptr;
-    // Its further clips (issue 15), each written as an animation too. Clips of
+    // Its further clips, each written as an animation too. Clips of
     // several parts with one name make one animation animating all of them.
     std::vector<const Clip*> otherClips;
 };
@@ -66,7 +68,7 @@ struct ExportOptions {
     // An end bone `<bone>_end` at each leaf bone's tail (Blender's FBX "Add
     // Leaf Bones"), so that importers know the leaves' lengths too.
     bool leafBones = false;
-    // Detail levels (issue 18 item 4, part/PartDetail.h): Loop subdivision
+    // Detail levels (part/PartDetail.h): Loop subdivision
     // rounds (0..4), then decimation to at most this many faces per part
     // (0: none). Skin weights are carried, the rig is unchanged.
     int subdivisionLevels = 0;
@@ -85,5 +87,38 @@ struct ExportOptions {
 // read-only target or any write failure.
 void exportScene(const std::vector<ExportPart>& parts, const Clip* clip, const std::string& path,
                  const ExportOptions& options = {});
+
+// The files of one export, complete beside their targets but not in place
+// yet (base/StagedFile.h): commit() renames them in an order that never
+// leaves a file naming a companion that is not there (a .bin before its
+// .gltf, an .mtl before its .obj), then removes the .bin the old .gltf named.
+// Destroyed uncommitted, it removes them and the targets stay as they were
+// (a background export the user cancelled after it was written).
+class StagedExport {
+  public:
+    StagedExport() = default;
+    StagedExport(StagedExport&&) noexcept = default;
+    StagedExport& operator=(StagedExport&&) noexcept = default;
+
+    // Throws Error when a rename fails; the files already renamed are then
+    // the new ones, and no file names a missing companion.
+    void commit();
+    bool empty() const { return files_.empty(); }
+
+  private:
+    friend StagedExport stageScene(const std::vector<ExportPart>&, const Clip*, const std::string&,
+                                   const ExportOptions&);
+    std::vector<StagedFile> files_;  // in commit order
+    // Removed when a later file of the set fails to commit (a new .bin whose
+    // .gltf did not land).
+    std::vector<std::filesystem::path> undoOnFailure_;
+    // Removed after every file is in place (the .bin only the old .gltf named).
+    std::vector<std::filesystem::path> obsolete_;
+};
+
+// exportScene without the final renames: everything is written and checked,
+// nothing replaced until commit(). Throws Error as exportScene does.
+StagedExport stageScene(const std::vector<ExportPart>& parts, const Clip* clip,
+                        const std::string& path, const ExportOptions& options = {});
 
 }  // namespace rigmesh

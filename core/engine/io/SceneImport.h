@@ -1,5 +1,5 @@
-// Importing meshes, skeletons, skin weights and clips through Assimp (issue
-// 6 item 2): whatever Assimp reads (.glb, .gltf, .fbx, .dae, .x, .mdl, .smd,
+// Importing meshes, skeletons, skin weights and clips through Assimp:
+// whatever Assimp reads (.glb, .gltf, .fbx, .dae, .x, .mdl, .smd,
 // .md5mesh, .obj, .ply, ...). Assimp stays inside the .cpp files.
 //
 // Every rig a file holds comes in whole (ARCHITECTURE.md section 2e):

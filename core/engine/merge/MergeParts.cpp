@@ -5,11 +5,14 @@
 #include <set>
 
 #include "base/Error.h"
+#include "base/Stopwatch.h"
 #include "merge/MeshUnion.h"
 #include "merge/SeamSmoothing.h"
 #include "mesh/MeshAdjacency.h"
+#include "part/BoneAnnotations.h"
 #include "part/BoneConnection.h"
 #include "part/CarryAcross.h"
+#include "rig/BoneSegments.h"
 #include "rig/LocalBoneHeat.h"
 
 namespace rigmesh {
@@ -17,15 +20,6 @@ namespace rigmesh {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-BoneSegment segmentOf(const Skeleton& skeleton, BoneId id) {
-    const Bone& bone = skeleton.bone(id);
-    return {skeleton.joint(bone.head).position, skeleton.joint(bone.tail).position};
-}
 
 // The target's weights by merged bone id. After a split the bone keeps its
 // id and its weights, and the vertices weighted on it seed the inclusion
@@ -156,15 +150,6 @@ std::vector<double> weightDifferences(const WeightsById& a, const WeightsById& b
     return differences;
 }
 
-double percentile(std::vector<double> values, double fraction) {
-    if (values.empty())
-        return 0.0;
-    const auto at = values.begin() +
-                    static_cast<std::ptrdiff_t>(fraction * static_cast<double>(values.size() - 1));
-    std::nth_element(values.begin(), at, values.end());
-    return *at;
-}
-
 MergeResult mergeParts(const Part& target, const Part& dragged, const MergeRequest& request) {
     const auto start = Clock::now();
     if (target.skeleton.boneCount() == 0 || dragged.skeleton.boneCount() == 0)
@@ -274,21 +259,10 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
     part.mirror = std::move(carried.mirror);
     part.skeleton = std::move(join.skeleton);
     part.weights.perVertex = std::move(weights);
-    for (const auto& [id, name] : target.boneNames)
-        if (part.skeleton.hasBone(id))
-            part.boneNames[id] = name;
-    for (const auto& [id, name] : dragged.boneNames)
-        if (part.skeleton.hasBone(join.draggedBones.at(id)))
-            part.boneNames[join.draggedBones.at(id)] = name;
-    // Locks and hand-painted weights outside the re-skinned band survive
-    // (issue 14): both parts' locks on surviving bones, painted if either was.
-    for (BoneId id : target.lockedBones)
-        if (part.skeleton.hasBone(id))
-            part.lockedBones.insert(id);
-    for (BoneId id : dragged.lockedBones)
-        if (part.skeleton.hasBone(join.draggedBones.at(id)))
-            part.lockedBones.insert(join.draggedBones.at(id));
-    part.weightsPainted = target.weightsPainted || dragged.weightsPainted;
+    // Names, locks and hand-painted weights outside the re-skinned band
+    // survive: both parts' on surviving bones, painted if either was.
+    carryBoneAnnotations(target, part);
+    carryBoneAnnotations(dragged, part, &join.draggedBones);
     result.sources = std::move(merged.sources);
     result.stats.vertices = part.mesh.vertexCount();
     result.stats.bones = part.skeleton.boneCount();

@@ -7,6 +7,7 @@
 #include <map>
 #include <vector>
 
+#include "base/Statistics.h"
 #include "merge/SkeletonJoin.h"
 #include "part/BoneWeights.h"
 #include "part/Part.h"
@@ -59,7 +60,5 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
 
 // The per-vertex L1 difference of two weightings of the same vertices.
 std::vector<double> weightDifferences(const WeightsById& a, const WeightsById& b);
-// The value below which `fraction` of `values` lie (nearest rank).
-double percentile(std::vector<double> values, double fraction);
 
 }  // namespace rigmesh

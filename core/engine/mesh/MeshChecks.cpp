@@ -100,13 +100,6 @@ void forEachEdge(const std::vector<EdgeUse>& uses, Visit visit) {
     }
 }
 
-Eigen::AlignedBox3d boundingBox(const TriMesh& mesh) {
-    Eigen::AlignedBox3d box;
-    for (const Vec3& v : mesh.vertices)
-        box.extend(v);
-    return box;
-}
-
 // Topology from the edge map: boundary, non-manifold and mis-oriented edges,
 // fans around vertices, components and the Euler characteristic.
 void analyseTopology(const TriMesh& mesh, MeshReport& report) {
@@ -229,6 +222,13 @@ void analyseGeometry(const TriMesh& mesh, MeshReport& report) {
 }
 
 }  // namespace
+
+Eigen::AlignedBox3d boundingBox(const TriMesh& mesh) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : mesh.vertices)
+        box.extend(v);
+    return box;
+}
 
 MeshReport analyseMesh(const TriMesh& mesh, bool checkSelfIntersections) {
     validate(mesh);

@@ -7,6 +7,8 @@
 #include <array>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "mesh/TriMesh.h"
 
 namespace rigmesh {
@@ -53,6 +55,9 @@ MeshReport analyseMesh(const TriMesh& mesh, bool checkSelfIntersections = true);
 // MeshReport::degenerateFaces alone, without the rest of the analysis.
 // Throws as analyseMesh does.
 int countDegenerateFaces(const TriMesh& mesh);
+
+// The axis-aligned box around the vertices (empty for no vertices).
+Eigen::AlignedBox3d boundingBox(const TriMesh& mesh);
 
 // The edges with exactly one incident face, as (from, to) in that face's order.
 std::vector<std::array<int, 2>> boundaryEdgeList(const TriMesh& mesh);

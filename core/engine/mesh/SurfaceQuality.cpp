@@ -1,4 +1,5 @@
 #include "mesh/SurfaceQuality.h"
+#include "base/Statistics.h"
 #include "sketch/PolygonGeometry.h"
 
 #include <algorithm>
@@ -16,15 +17,6 @@ std::uint64_t edgeKey(int a, int b) {
     if (a > b)
         std::swap(a, b);
     return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-}
-
-double percentile(std::vector<double> values, double fraction) {
-    if (values.empty())
-        return 0;
-    const std::size_t k =
-        std::min(values.size() - 1, static_cast<std::size_t>(fraction * (values.size() - 1) + 0.5));
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-    return values[k];
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// The figures issue 10 judges a sketched surface by: how sharply it creases
+// The figures a sketched surface is judged by: how sharply it creases
 // (the angle between the normals of faces sharing an edge) and how well its
 // front view matches the sketch (intersection over union of the two
 // silhouettes). Measured here so tests, benchmarks and `rigmesh build

@@ -1,4 +1,4 @@
-// Skin weights keyed by stable bone ids (issue 12 item 1). A Part stores its
+// Skin weights keyed by stable bone ids. A Part stores its
 // weights by BoneId, so a bone that goes (pruned, deleted, collapsed) never
 // shifts the other bones' weights. The solvers, the GPU upload and the
 // exporters want dense arrays by bone position (index in skeleton.bones());

@@ -1,4 +1,4 @@
-// Carries per-vertex part data across a topology edit (issue 12 item 1):
+// Carries per-vertex part data across a topology edit:
 // given where each output vertex came from (VertexSources), the one place
 // that moves skin weights, the mirror map and known closest bones to the new
 // mesh and lists the vertices whose weights must be computed afresh.

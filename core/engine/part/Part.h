@@ -1,7 +1,7 @@
 // A rigged part: the value every modelling operation takes and returns
-// (paper sections 2-3). It is always rigged: surface, skeleton and skin
-// weights, plus the per-vertex bookkeeping that local updates (cut, merge,
-// bone edits) reuse.
+// (paper sections 2-3): surface, skeleton and skin weights (an imported
+// static mesh has no skeleton until it is auto-rigged: autorig/AutoRig.h), plus the per-vertex
+// bookkeeping that local updates (cut, merge, bone edits) reuse.
 #pragma once
 
 #include <map>
@@ -50,7 +50,7 @@ struct Part {
     // shortcut for cylindrical vertices); empty where visibility had to be
     // tested.
     ClosestBonesById knownClosestBones;
-    // Bone names kept from an imported file (issue 18 item 2): exported as
+    // Bone names kept from an imported file: exported as
     // they are (made unique); a bone without one is `<part>_bone<id>`.
     std::map<BoneId, std::string> boneNames;
     // Rest orientations kept from an imported file: the axes of each bone's
@@ -62,8 +62,8 @@ struct Part {
     // The meshes of a shared skeleton (empty: one mesh), exported as
     // separate meshes again. Any edit of the surface's topology clears it.
     std::vector<PartMeshPiece> meshPieces;
-    // Bones whose weights painting and the weight clean-ups keep as they are
-    // (issue 14 item 3): an editing aid saved with the part, like Blender's
+    // Bones whose weights painting and the weight clean-ups keep as they are:
+    // an editing aid saved with the part, like Blender's
     // vertex group locks. Every id is a bone of the skeleton.
     std::set<BoneId> lockedBones;
     // True once the weights were edited by hand (paint, clean-ups): a

@@ -1,4 +1,4 @@
-// Detail levels for export (issue 18 item 4): a part's surface made finer
+// Detail levels for export: a part's surface made finer
 // or coarser while its rig stays as it is. Skin weights travel with the
 // vertices as vertex properties and come out non-negative, summing to 1
 // (tiny ones dropped, the rest renormalised). Per-vertex bookkeeping of a

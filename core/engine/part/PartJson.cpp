@@ -315,7 +315,7 @@ Part partFromJson(const json& object) {
     part->knownClosestBones = readPairs(
         array(object, byIndex ? "knownClosestBones" : "knownClosestByBoneId"), vertexCount,
         part->skeleton, byIndex, PairValues::Distances, "known closest bones");
-    if (object.contains("boneNames"))  // since issue 18
+    if (object.contains("boneNames"))  // optional: older files lack it
         for (const json& entry : array(object, "boneNames")) {
             if (!entry.is_array() || entry.size() != 2)
                 fail("a bone name is not [bone id, name]");
@@ -324,13 +324,13 @@ Part partFromJson(const json& object) {
                 fail("a bone name refers to a missing bone, or twice to one");
             part->boneNames[bone] = text(entry[1], "bone name");
         }
-    if (object.contains("lockedBones"))  // since issue 14
+    if (object.contains("lockedBones"))  // optional: older files lack it
         for (const json& entry : array(object, "lockedBones")) {
             const auto bone = integer<BoneId>(entry, "locked bone");
             if (!part->skeleton.hasBone(bone) || !part->lockedBones.insert(bone).second)
                 fail("a locked bone refers to a missing bone, or twice to one");
         }
-    if (object.contains("weightsPainted"))  // since issue 14
+    if (object.contains("weightsPainted"))  // optional: older files lack it
         part->weightsPainted = boolean(field(object, "weightsPainted"), "weightsPainted");
     if (object.contains("boneFrames"))  // since format version 5
         for (const json& entry : array(object, "boneFrames")) {

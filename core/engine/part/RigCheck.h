@@ -1,4 +1,4 @@
-// Check Rig (issue 14 item 2): what an artist must fix before a rig is
+// Check Rig: what an artist must fix before a rig is
 // trusted in another tool, listed by vertex and by bone so the studio can
 // select each. Unlike Part::validate() (which refuses broken data) these are
 // legal states a paint stroke or a clean-up can leave behind.

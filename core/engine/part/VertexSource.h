@@ -1,4 +1,4 @@
-// Where a vertex of a mesh made from other meshes came from (issue 12 item 1):
+// Where a vertex of a mesh made from other meshes came from:
 // the bookkeeping every topology edit (merge 3.2, cut 3.1, bone edits 3.3)
 // returns so that skin weights and other per-vertex data can follow it.
 // Idiom: geometry-central's surgery returns maps back to the old mesh; CGAL's

@@ -1,8 +1,7 @@
-// Whole-part weight clean-ups, as Blender's Weights menu has them (issue 14
-// item 3). Each returns how many vertices changed; a vertex already as asked
-// is left bit for bit, and so is every weight of a locked bone (the rest of
-// the vertex is rescaled to what the locked bones leave; a vertex with
-// nothing unlocked to rescale is left as it is).
+// Whole-part weight clean-ups, as Blender's Weights menu has them. Each returns how many vertices
+// changed; a vertex already as asked is left bit for bit, and so is every weight of a locked bone
+// (the rest of the vertex is rescaled to what the locked bones leave; a vertex with nothing
+// unlocked to rescale is left as it is).
 #pragma once
 
 #include <set>

@@ -1,6 +1,6 @@
 // One vertex's skin weight list, (bone id, weight) sorted by bone id, as
 // SkinWeightsById holds it: the edits painting and the clean-ups share, each
-// keeping locked bones bit for bit (issue 14 item 3).
+// keeping locked bones bit for bit.
 #pragma once
 
 #include <set>

@@ -1,4 +1,4 @@
-// Painting skin weights (issue 14 item 3), as Blender's weight paint and
+// Painting skin weights, as Blender's weight paint and
 // Maya's Paint Skin Weights do: a dab raises (Add), lowers (Subtract), sets
 // (Replace) or evens out (Smooth) one bone's weight within a radius, with a
 // chosen falloff; the vertex's other unlocked bones take up the difference

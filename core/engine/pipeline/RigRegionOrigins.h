@@ -1,5 +1,5 @@
 // The skeleton does not see pruned bumps (paper 2.1 prunes them as
-// insignificant branches), while the surface must cover them (issue 10).
+// insignificant branches), while the surface must cover them.
 // sketchToSurface therefore decomposes twice: with body bumps as connecting
 // regions for the surface (axis/BodyBumps.h), and without for the rig, whose
 // skeleton, joint ids and recipes stay what they were. The vertex origins

@@ -6,18 +6,11 @@
 #include <optional>
 #include <utility>
 
+#include "base/Stopwatch.h"
+#include "rig/BoneSegments.h"
+
 namespace rigmesh {
 namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
-
-BoneSegment segmentOf(const Skeleton& skeleton, BoneId id) {
-    const Bone& bone = skeleton.bone(id);
-    return {skeleton.joint(bone.head).position, skeleton.joint(bone.tail).position};
-}
 
 void addUnique(std::vector<BoneId>& bones, BoneId id) {
     if (std::find(bones.begin(), bones.end(), id) == bones.end())
@@ -25,7 +18,7 @@ void addUnique(std::vector<BoneId>& bones, BoneId id) {
 }
 
 // A section's bone owns a vertex only between the planes through its end
-// joints normal to it (issue 19): past the plane at a joint with one other
+// joints normal to it: past the plane at a joint with one other
 // bone, that bone competes too (it is the closer one there, or ties at the
 // joint); past a branching joint's plane the vertex is left to the
 // visibility test (nullopt). Otherwise a limb bone could reach past its joint

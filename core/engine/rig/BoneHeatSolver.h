@@ -15,7 +15,7 @@
 // L positive semi-definite. Cotangents scale by 1, A by s^2 and H by s^-2, so
 // the system is invariant under scaling mesh and bones together.
 //
-// Area normalisation (issue 19). Pinocchio's attachment.cpp builds each row
+// Area normalisation. Pinocchio's attachment.cpp builds each row
 // from the full cotangent sums (cot a + cot b) and adds H / D with
 // D = 1 / (1e-10 + sum over the one ring of |e_j x e_j+1|), i.e. twice the
 // one-ring area; halving the row gives exactly L + A H above. Baran and
@@ -61,7 +61,7 @@ struct BoneHeatOptions {
     // [taperEnd, taperStart) becomes taperStart (w - taperEnd) / (taperStart -
     // taperEnd), continuous at both ends; larger ones are kept. Heat decays
     // exponentially but never reaches zero, so without the taper every bone
-    // leaves a small weight far down its neighbours (issue 19).
+    // leaves a small weight far down its neighbours.
     // Blender ramps over 0.025..0.05; with Pinocchio's one-ring area (heat
     // 0.75 times Blender's, see above) that left the limb-leak figure 16-25%
     // above Blender's on every shared sketch with two or more limbs. Over
@@ -79,7 +79,7 @@ struct BoneHeatOptions {
     // p99 of the largest per-bone jump 0.147 against 0.141). 1e-4 and 1e-3
     // fix kinked but leave banana's tip rougher than Blender's (0.227 against
     // 0.220); 3e-3 keeps every shared sketch smoother than Blender's with
-    // the limb leak below it (tests/external/heat_vs_blender, issue 19).
+    // the limb leak below it (tests/external/heat_vs_blender).
     double tieTolerance = 3e-3;
 };
 

@@ -62,7 +62,7 @@ double cdpError(const CdpTrapezoid& trapezoid, const AxisSample& sample);
 // both sides (or by more than threshold on one side).
 std::vector<int> cylindricalDouglasPeucker(const std::vector<AxisSample>& axis, double threshold);
 
-// One sample of a curve skeleton in space (an imported mesh's, issue 17):
+// One sample of a curve skeleton in space (an imported mesh's):
 // its point and the mean distance from it to the surface around it.
 struct TubeSample {
     Vec3 point;

@@ -17,7 +17,7 @@ namespace rigmesh {
 
 // A triangle with an angle whose sine is below this (relative, so
 // scale-free), a repeated corner or a zero-length edge has no usable angles:
-// its cotangents would reach 1e8 and pin a vertex (issue 19). Such faces are
+// its cotangents would reach 1e8 and pin a vertex. Such faces are
 // left out of the Laplacian and the areas, so every cotangent stays below 1e8.
 inline constexpr double kMinSineRelative = 1e-8;
 

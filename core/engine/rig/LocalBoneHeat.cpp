@@ -11,22 +11,13 @@
 
 #include "base/Error.h"
 #include "mesh/MeshAdjacency.h"
+#include "rig/BoneSegments.h"
 #include "rig/BoneVisibility.h"
 #include "rig/HeatTerms.h"
 
 namespace rigmesh {
 
 namespace {
-
-std::vector<BoneSegment> segmentsOf(const Skeleton& skeleton, const std::vector<BoneId>& ids) {
-    std::vector<BoneSegment> segments;
-    for (BoneId id : ids) {
-        const Bone& bone = skeleton.bone(id);
-        segments.push_back(
-            {skeleton.joint(bone.head).position, skeleton.joint(bone.tail).position});
-    }
-    return segments;
-}
 
 double weightOf(const std::vector<std::pair<BoneId, double>>& weights, BoneId bone) {
     for (const auto& [id, w] : weights)
@@ -276,11 +267,8 @@ LocalBoneHeatResult recomputeWeightsLocally(const TriMesh& mesh, const Skeleton&
 
 WeightsById recomputeWeightsGlobally(const TriMesh& mesh, const Skeleton& skeleton,
                                      const BoneHeatOptions& options) {
-    std::vector<BoneSegment> segments;
-    for (const Bone& bone : skeleton.bones())
-        segments.push_back(
-            {skeleton.joint(bone.head).position, skeleton.joint(bone.tail).position});
-    return weightsById(skeleton, computeBoneHeatWeights(mesh, segments, {}, options)).perVertex;
+    return weightsById(skeleton, computeBoneHeatWeights(mesh, segmentsOf(skeleton), {}, options))
+        .perVertex;
 }
 
 }  // namespace rigmesh

@@ -1,4 +1,4 @@
-// Rounding the concave corners of a cleaned outline (issue 10).
+// Rounding the concave corners of a cleaned outline.
 //
 // An inflated surface rounds a concave outline corner (a crotch, an armpit)
 // only with a radius of about z^2 / 2R, far below one edge length, so a

@@ -1,4 +1,4 @@
-// Outline resolution follows thickness (issue 10). The cleaned outline is
+// Outline resolution follows thickness. The cleaned outline is
 // sampled at one spacing everywhere, so a limb about one spacing across ends
 // in two or three outline points: its tip is a coarse polygon whose corners
 // become creases, however finely the surface then slices it. Where the

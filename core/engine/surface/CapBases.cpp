@@ -11,7 +11,7 @@ namespace {
 
 // A cap base more askew than this (degrees) leaves a ring tilted against
 // both the body's sections and the cap's slices: a crease of 40 degrees
-// across a thin limb (issue 10). The zigzag of a triangulation's chords is
+// across a thin limb. The zigzag of a triangulation's chords is
 // about +-10 degrees, so about half of all limbs end on a skew chord.
 constexpr double kAskewDegrees = 8.0;
 // An outline turn (degrees) at a cap base's end point above which the

@@ -59,7 +59,7 @@ CrossSection sectionOf(const ChordFrame& frame) {
     return section;
 }
 
-// The local edge length at a chord of this radius (issue 10: resolution
+// The local edge length at a chord of this radius (resolution
 // follows thickness).
 double localSpacing(double radius, double spacing, const CrossSectionOptions& options) {
     return std::clamp(options.radiusFraction * radius, options.minimumSpacingFraction * spacing,
@@ -133,7 +133,7 @@ constexpr double kMinTipRadius = 1.5;
 // either end give the end tangents), sampled at a quarter of `spacing`. At
 // a thin part the polygon is coarse against the local edge length (a foot
 // 0.25 wide ends in three outline points 0.1 apart), and slicing the polygon
-// itself gave a faceted tip with creases at its corners (issue 10). The
+// itself gave a faceted tip with creases at its corners. The
 // curve passes through every polygon point but those of a corner sharper
 // than kMinTipRadius, which it rounds; `indices` keeps the polygon index of
 // each point still on its polygon point (-1 elsewhere).
@@ -167,8 +167,8 @@ CapPath smoothCapPath(const std::vector<Vec2>& polygon, const std::vector<int>& 
     result.indices.push_back(path.back());
     // A corner of the outline stays a corner of the spline: on the
     // silhouette a turn of 50 degrees between two points, where an
-    // obliquely ended limb was cleaned at the outline's coarse spacing
-    // (issue 10). Rounded to kMinTipRadius, the tip is a dome again.
+    // obliquely ended limb was cleaned at the outline's coarse spacing.
+    // Rounded to kMinTipRadius, the tip is a dome again.
     const std::vector<Vec2> onSpline = result.points;
     CurvatureFlow flow;
     flow.neighbourhood = 2;  // the turn spreads instead of moving to the next point
@@ -202,7 +202,7 @@ CapSlices sliceCap(const CrossSection& base, const std::vector<Vec2>& polygon,
     // 2% of the cap's height), and there nearest the arc-length middle:
     // the middle of a round or flat end, the apex of a pointed or oblique one
     // (at the middle, an oblique thin tip folded where its apex became a
-    // point on one side, issue 10).
+    // point on one side).
     const Vec2 baseDirection = (base.right - base.left).normalized();
     auto height = [&](const Vec2& p) { return std::abs(cross2(baseDirection, p - base.left)); };
     double highest = 0.0;
@@ -292,7 +292,7 @@ CylinderSections buildCrossSections(const Decomposition& decomposition, int cyli
 
     // A cap is sliced at its base's local edge length, down to half the
     // body's floor: a needle's tip a little wider than the floor was a dome
-    // of two slices, creased against the tapering body (issue 10). A cap's
+    // of two slices, creased against the tapering body. A cap's
     // vertex count stays bounded by its size.
     auto capSpacing = [&](const CrossSection& base) {
         return std::clamp(options.radiusFraction * base.radius(),

@@ -56,11 +56,11 @@ struct CylinderSections {
 struct CrossSectionOptions {
     int axisSmoothingIterations = 8;  // Laplacian steps on the axis and chord directions
     double smoothingStep = 0.5;       // lambda of each step
-    // Resolution follows thickness (issue 10): the local edge length is at
+    // Resolution follows thickness: the local edge length is at
     // most this fraction of the local radius, so a semicircle has at least
     // pi / radiusFraction segments (13 at 0.25: 26 vertices around a thin
     // part, neighbouring faces about 14 degrees apart; at 0.35 they were 20
-    // degrees apart, issue 10's limit) while parts wider than
+    // degrees apart) while parts wider than
     // targetEdgeLength / radiusFraction keep the target edge length.
     double radiusFraction = 0.25;
     // Floor of the local edge length, as a fraction of the target one, so a

@@ -1,5 +1,4 @@
-// Body sections near a cylinder's fixed end chord follow the drawn outline
-// (issue 10).
+// Body sections near a cylinder's fixed end chord follow the drawn outline.
 //
 // Paper 2.1 smooths the axis, chords and radii but keeps each body's end
 // chords where they are, since a connecting region or a cap shares them.

@@ -1,4 +1,4 @@
-// Round rims for connecting patches (issue 10). The paper leaves connecting
+// Round rims for connecting patches. The paper leaves connecting
 // regions free in Least-Squares Meshes (2.2), since they "typically share
 // only a short boundary with the user sketch". Where a patch does follow the
 // outline for long (a rump, a bump off a body, a blob between limbs), a free

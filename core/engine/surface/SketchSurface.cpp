@@ -195,7 +195,7 @@ class HalfSurfaceBuilder {
         // Cap slices shrink towards the tip; below six segments the last
         // rings make a pyramid of the tip (a crease of 45 degrees or more).
         constexpr int kMinimumCapSegments = 10;
-        // A body section is a ring of at least 12 (issue 10), even where a
+        // A body section is a ring of at least 12, even where a
         // hair-thin limb's radius falls below the floor of the local edge
         // length (1/16 of the target), as just before a thin tip.
         constexpr int kMinimumBodySegments = 6;
@@ -262,7 +262,7 @@ std::vector<double> anchorWeights(const SketchSurface& surface, const Decomposit
         const VertexOrigin& origin = surface.origins[v];
         if (origin.kind != RegionKind::Cylindrical) {
             // The outline of a connecting region is the sketch itself: held,
-            // so the silhouette does not shrink at junctions (issue 10).
+            // so the silhouette does not shrink at junctions.
             if (origin.onOutline)
                 weights[v] = options.maxAnchorWeight;
             continue;

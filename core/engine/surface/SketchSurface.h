@@ -47,7 +47,7 @@ struct SurfaceOptions {
     // Distance (in mean cylinder diameters) over which anchor weights rise
     // from 0 at a connecting region to maxAnchorWeight.
     double anchorFalloff = 1.0;
-    // Anchor weight of a cap's vertices off the outline (issue 10): low, so
+    // Anchor weight of a cap's vertices off the outline: low, so
     // LSM smooths the tips.
     double capAnchorWeight = 1.0;
 };

@@ -26,9 +26,7 @@ const Part& riggedPart(const Document& document, PartId id) {
 std::unique_ptr<BoneEditCommand> BoneEditCommand::split(Document& document, PartId part,
                                                         BoneId bone, const Vec3& at) {
     const Placement& placement = document.part(part).placement;
-    BoneEditResult result =
-        splitBoneAt(riggedPart(document, part), bone,
-                    placement.rotation.conjugate() * (at - placement.translation));
+    BoneEditResult result = splitBoneAt(riggedPart(document, part), bone, placement.toLocal(at));
     return std::unique_ptr<BoneEditCommand>(
         new BoneEditCommand(document, part, bone, Kind::Split, &at, std::move(result)));
 }
@@ -84,13 +82,11 @@ QString BoneEditCommand::summary() const {
 }
 
 void BoneEditCommand::redo() {
-    document_.removePart(id_);
-    document_.insertPart(index_, after_);
+    document_.replaceNode(id_, after_);
 }
 
 void BoneEditCommand::undo() {
-    document_.removePart(id_);
-    document_.insertPart(index_, before_);
+    document_.replaceNode(id_, before_);
 }
 
 nlohmann::json BoneEditCommand::recipeStep() const {

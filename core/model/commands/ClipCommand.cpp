@@ -12,10 +12,6 @@ ClipCommand::ClipCommand(Document& document, PartId id, ClipEdit edit, QUndoComm
 }
 
 void ClipCommand::redo() {
-    if (skipRedo_) {
-        skipRedo_ = false;
-        return;
-    }
     document_.editClip(id_, edit_);
 }
 

@@ -28,16 +28,12 @@ class ClipCommand : public QUndoCommand, public RecipeStepSource {
     ClipCommand(Document& document, PartId id, ClipEdit edit, QUndoCommand* parent);
     // The part's index when the command was made (recipe steps).
     int partIndex() const { return index_; }
-    // For a command whose edit a live preview has already applied (a key
-    // drag): the first redo() only records, as SetPoseCommand's alreadyApplied.
-    void markAlreadyApplied() { skipRedo_ = true; }
 
   private:
     Document& document_;
     PartId id_;
     int index_;
     ClipEdit edit_;
-    bool skipRedo_ = false;
 };
 
 }  // namespace rigmesh::model

@@ -1,4 +1,4 @@
-// Edits to a part's list of named clips (issue 15): new, duplicate, rename,
+// Edits to a part's list of named clips: new, duplicate, rename,
 // delete, and choosing the active clip. Each keeps the part's clips before
 // and after (these are rare, whole-clip edits; keying stays O(log n) through
 // ClipCommand). Made by the static functions, which check everything first

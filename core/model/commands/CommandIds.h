@@ -8,4 +8,9 @@ enum CommandId : int {
     SetPoseCommandId = 1002,
 };
 
+// Whether a command merges with the one before it of the same kind (recipe
+// steps, scripted moves) or stands alone (a whole interactive drag, a typed
+// value: model/preview/PartPreview.h), so two drags are two undo steps.
+enum class CommandMerging { Consecutive, Never };
+
 }  // namespace rigmesh::model

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/Error.h"
+#include "mesh/MeshChecks.h"
 #include "model/RigCarryOver.h"
 
 namespace rigmesh::model {
@@ -28,24 +29,19 @@ CutPartCommand::CutPartCommand(Document& document, PartId part, const CutSpec& s
     // The plane or the swept stroke in the part's own frame.
     CutRequest request;
     const Placement& placement = original_.placement;
-    const Eigen::Quaterniond inverse = placement.rotation.conjugate();
-    request.point = inverse * (spec.point - placement.translation);
-    request.normal = inverse * spec.normal;
+    request.point = placement.toLocal(spec.point);
+    request.normal = placement.directionToLocal(spec.normal);
     if (!spec.viewStroke.empty()) {
         const Vec3 direction = spec.viewDirection.normalized();
         const Vec3 right = direction.cross(spec.viewUp).normalized();
         const Vec3 up = right.cross(direction);
         if (!right.allFinite() || !direction.allFinite())
             throw Error("The cut's view needs a direction and an up that is not along it.");
-        Eigen::AlignedBox3d box;
-        for (const Vec3& v : original_.part->mesh.vertices)
-            box.extend(v);
         // The view plane through the part's centre.
-        const Vec3 centre = placement.rotation * box.center() + placement.translation;
+        const Vec3 centre = placement.toWorld(boundingBox(original_.part->mesh).center());
         for (const Vec2& p : spec.viewStroke)
-            request.stroke.push_back(inverse *
-                                     (centre + p.x() * right + p.y() * up - placement.translation));
-        request.sweep = inverse * direction;
+            request.stroke.push_back(placement.toLocal(centre + p.x() * right + p.y() * up));
+        request.sweep = placement.directionToLocal(direction);
     }
     request.style = spec.style;
     request.edgeLength = original_.options.targetEdgeLength;
@@ -66,15 +62,13 @@ CutPartCommand::CutPartCommand(Document& document, PartId part, const CutSpec& s
 }
 
 void CutPartCommand::redo() {
-    document_.removePart(id_);
-    document_.insertPart(index_, pieces_[0]);
-    document_.insertPart(index_ + 1, pieces_[1]);
+    document_.replaceNode(id_, pieces_[0]);
+    document_.insertPart(document_.indexOf(id_) + 1, pieces_[1]);
 }
 
 void CutPartCommand::undo() {
     document_.removePart(pieces_[1].id);
-    document_.removePart(id_);
-    document_.insertPart(index_, original_);
+    document_.replaceNode(id_, original_);
     document_.releasePartId(pieces_[1].id);
 }
 

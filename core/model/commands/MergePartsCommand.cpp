@@ -15,22 +15,14 @@ namespace rigmesh::model {
 
 namespace {
 
-Vec3 toPart(const Placement& placement, const Vec3& world) {
-    return placement.rotation.conjugate() * (world - placement.translation);
-}
-
-Vec3 toWorld(const Placement& placement, const Vec3& local) {
-    return placement.rotation * local + placement.translation;
-}
-
 // The part as seen from `frame`: its vertices and joints moved from its own
 // placement into the frame's coordinates.
 Part inFrameOf(const Part& part, const Placement& own, const Placement& frame) {
     Part moved = part;
     for (Vec3& p : moved.mesh.vertices)
-        p = toPart(frame, toWorld(own, p));
+        p = frame.toLocal(own.toWorld(p));
     for (const Joint& joint : std::vector<Joint>(moved.skeleton.joints()))
-        moved.skeleton.setJointPosition(joint.id, toPart(frame, toWorld(own, joint.position)));
+        moved.skeleton.setJointPosition(joint.id, frame.toLocal(own.toWorld(joint.position)));
     return moved;
 }
 
@@ -65,7 +57,7 @@ JointId resolveJoint(const JointChoice& choice, const Part& part, const Placemen
             throw Error(partName.toStdString() + " has no joint " + std::to_string(*id));
         return *id;
     }
-    return nearestJoint(part.skeleton, toPart(placement, std::get<Vec3>(choice)));
+    return nearestJoint(part.skeleton, placement.toLocal(std::get<Vec3>(choice)));
 }
 
 }  // namespace
@@ -98,13 +90,13 @@ ComputedMerge MergePartsCommand::compute(const PartNode& from, const PartNode& i
     if (spec.mode == MergeMode::Split) {
         const Vec3 point =
             std::holds_alternative<Vec3>(spec.target)
-                ? toPart(into.placement, std::get<Vec3>(spec.target))
+                ? into.placement.toLocal(std::get<Vec3>(spec.target))
                 : into.part->skeleton
                       .joint(resolveJoint(spec.target, *into.part, into.placement, into.name))
                       .position;
         request.join.targetBone = nearestBone(*into.part, point);
         request.join.splitPoint = point;
-        resolved.target = toWorld(into.placement, point);
+        resolved.target = into.placement.toWorld(point);
     } else {
         request.join.targetJoint = resolveJoint(spec.target, *into.part, into.placement, into.name);
         resolved.target = request.join.targetJoint;
@@ -169,21 +161,13 @@ QString MergePartsCommand::summary() const {
 
 void MergePartsCommand::redo() {
     document_.removePart(draggedId_);
-    const int index = document_.indexOf(targetId_);
-    document_.removePart(targetId_);
-    document_.insertPart(index, mergedNode_);
+    document_.replaceNode(targetId_, mergedNode_);
 }
 
 void MergePartsCommand::undo() {
-    document_.removePart(targetId_);
-    // Re-insert in index order so each lands where it was.
-    if (draggedIndex_ < targetIndex_) {
-        document_.insertPart(draggedIndex_, draggedNode_);
-        document_.insertPart(targetIndex_, targetNode_);
-    } else {
-        document_.insertPart(targetIndex_, targetNode_);
-        document_.insertPart(draggedIndex_, draggedNode_);
-    }
+    document_.replaceNode(targetId_, targetNode_);
+    // The target is back at its index once the dragged part is.
+    document_.insertPart(draggedIndex_, draggedNode_);
 }
 
 nlohmann::json MergePartsCommand::recipeStep() const {

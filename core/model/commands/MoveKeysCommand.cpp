@@ -34,20 +34,9 @@ ClipEdit movedKeysEdit(const rigmesh::Clip& clip, const std::vector<double>& tim
 
 MoveKeysCommand::MoveKeysCommand(Document& document, PartId id, std::vector<double> times,
                                  double offset, QUndoCommand* parent)
-    : MoveKeysCommand(document, id, times, offset,
-                      movedKeysEdit(document.part(id).clip, times, offset), false, parent) {}
-
-MoveKeysCommand::MoveKeysCommand(Document& document, PartId id, std::vector<double> times,
-                                 double offset, ClipEdit applied, QUndoCommand* parent)
-    : MoveKeysCommand(document, id, std::move(times), offset, std::move(applied), true, parent) {}
-
-MoveKeysCommand::MoveKeysCommand(Document& document, PartId id, std::vector<double> times,
-                                 double offset, ClipEdit edit, bool applied, QUndoCommand* parent)
-    : ClipCommand(document, id, std::move(edit), parent),
+    : ClipCommand(document, id, movedKeysEdit(document.part(id).clip, times, offset), parent),
       times_(std::move(times)),
       offset_(offset) {
-    if (applied)
-        markAlreadyApplied();
     setText(tr("Move %n key(s) of %1 by %2 s", nullptr, static_cast<int>(times_.size()))
                 .arg(document.part(id).name)
                 .arg(offset));

@@ -1,5 +1,5 @@
 // Move several keys of a part's active clip by one time offset at once (a
-// timeline drag, issue 15). All move together, so a key moving onto the old
+// timeline drag). All move together, so a key moving onto the old
 // place of another moving key does not replace it; a key that lands within
 // half a frame of a key that stays replaces it (Clip::setKey).
 #pragma once
@@ -18,18 +18,10 @@ class MoveKeysCommand : public ClipCommand {
     // a non-finite offset or a target time out of range.
     MoveKeysCommand(Document& document, PartId id, std::vector<double> times, double offset,
                     QUndoCommand* parent = nullptr);
-    // For a drag whose preview has already applied `applied` (the edit
-    // movedKeysEdit gave for the same keys and offset): redo() first only
-    // records.
-    MoveKeysCommand(Document& document, PartId id, std::vector<double> times, double offset,
-                    ClipEdit applied, QUndoCommand* parent = nullptr);
 
     nlohmann::json recipeStep() const override;
 
   private:
-    MoveKeysCommand(Document& document, PartId id, std::vector<double> times, double offset,
-                    ClipEdit edit, bool applied, QUndoCommand* parent);
-
     std::vector<double> times_;
     double offset_;
 };

@@ -7,15 +7,14 @@
 namespace rigmesh::model {
 
 MovePartCommand::MovePartCommand(Document& document, PartId id, const Placement& from,
-                                 const Placement& to, bool alreadyApplied, QUndoCommand* parent)
+                                 const Placement& to, CommandMerging merging, QUndoCommand* parent)
     : QUndoCommand(parent),
       document_(document),
       id_(id),
       index_(document.indexOf(id)),
       from_(from),
       to_(to),
-      skipRedo_(alreadyApplied),
-      wholeDrag_(alreadyApplied) {
+      merging_(merging) {
     const PartNode& node = document.part(id);
     setText(from.rotation.coeffs() == to.rotation.coeffs() ? tr("Move %1").arg(node.name)
                                                            : tr("Rotate %1").arg(node.name));
@@ -24,13 +23,10 @@ MovePartCommand::MovePartCommand(Document& document, PartId id, const Placement&
 
 MovePartCommand::MovePartCommand(Document& document, PartId id, const Placement& to,
                                  QUndoCommand* parent)
-    : MovePartCommand(document, id, document.part(id).placement, to, false, parent) {}
+    : MovePartCommand(document, id, document.part(id).placement, to, CommandMerging::Consecutive,
+                      parent) {}
 
 void MovePartCommand::redo() {
-    if (skipRedo_) {
-        skipRedo_ = false;
-        return;
-    }
     document_.setPlacement(id_, to_);
 }
 

@@ -2,10 +2,9 @@
 // steps, scripted moves) merge into one undo step (id() + mergeWith); a merge
 // that lands back where it started makes the command obsolete.
 //
-// Interactive drags apply the placement live (Document::setPlacement as a
-// preview) and push the command once, on release, with `alreadyApplied`: the
-// first redo() then only records. Such a command is one whole drag and never
-// merges (id() is -1), so two drags are two undo steps.
+// Interactive drags preview the placement live and push the command once, on
+// release (model/preview/PlacementPreview.h), with CommandMerging::Never: a
+// whole drag never merges (id() is -1), so two drags are two undo steps.
 #pragma once
 
 #include <QCoreApplication>
@@ -21,9 +20,10 @@ class MovePartCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(MovePartCommand)
   public:
     // Throws rigmesh::Error on an unknown id. `from` is the placement before
-    // the move (the part's current one unless the move was applied live).
+    // the move (the part's current one unless a preview shows the move).
     MovePartCommand(Document& document, PartId id, const Placement& from, const Placement& to,
-                    bool alreadyApplied = false, QUndoCommand* parent = nullptr);
+                    CommandMerging merging = CommandMerging::Consecutive,
+                    QUndoCommand* parent = nullptr);
     // From the part's current placement.
     MovePartCommand(Document& document, PartId id, const Placement& to,
                     QUndoCommand* parent = nullptr);
@@ -31,7 +31,7 @@ class MovePartCommand : public QUndoCommand, public RecipeStepSource {
     void redo() override;
     void undo() override;
     nlohmann::json recipeStep() const override;
-    int id() const override { return wholeDrag_ ? -1 : MovePartCommandId; }
+    int id() const override { return merging_ == CommandMerging::Never ? -1 : MovePartCommandId; }
     bool mergeWith(const QUndoCommand* other) override;
 
     PartId partId() const { return id_; }
@@ -41,8 +41,7 @@ class MovePartCommand : public QUndoCommand, public RecipeStepSource {
     PartId id_;
     int index_;
     Placement from_, to_;
-    bool skipRedo_;
-    bool wholeDrag_;
+    CommandMerging merging_;
 };
 
 }  // namespace rigmesh::model

@@ -79,9 +79,9 @@ std::unique_ptr<PaintWeightsCommand> PaintWeightsCommand::create(Document& docum
     for (const WeightDab& dab : dabs) {
         // To the part's own coordinates, where its vertices are.
         WeightDab local = dab;
-        local.centre = placement.rotation.conjugate() * (dab.centre - placement.translation);
+        local.centre = placement.toLocal(dab.centre);
         if (dab.towardsViewer)
-            local.towardsViewer = placement.rotation.conjugate() * *dab.towardsViewer;
+            local.towardsViewer = placement.directionToLocal(*dab.towardsViewer);
         local.locked.insert(painted->lockedBones.begin(), painted->lockedBones.end());
         const DabResult result = painter.paint(*painted, local);
         changed.insert(changed.end(), result.changed.begin(), result.changed.end());

@@ -1,4 +1,4 @@
-// One weight paint stroke (issue 14 item 3) as one undoable step: its dabs
+// One weight paint stroke as one undoable step: its dabs
 // (part/WeightPaint.h) painted in order on a copy in create(), so a refused
 // dab (locked or unknown bone, bad brush) throws rigmesh::Error and changes
 // nothing. The part's locked bones are kept as well as the dabs' own. Undo

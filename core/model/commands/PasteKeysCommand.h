@@ -1,4 +1,4 @@
-// Put copied keys into a part's active clip (the timeline's paste, issue 15):
+// Put copied keys into a part's active clip (the timeline's paste):
 // each key at its time, replacing a key within half a frame of it
 // (Clip::setKey).
 #pragma once

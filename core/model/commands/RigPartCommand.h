@@ -1,5 +1,5 @@
 // Rig an unrigged part (an imported mesh) automatically, as one undoable
-// step (issue 17): the mesh repaired where safe, a skeleton by mean
+// step: the mesh repaired where safe, a skeleton by mean
 // curvature flow and the sketches' bone rules, bone heat weights
 // (engine autorig/AutoRig). Recipe step {"command": "rig", "part"}. The
 // engine work runs in rigged() on the part as it is, touching no document

@@ -1,4 +1,4 @@
-// Locks or unlocks a bone's weights (issue 14 item 3), as Blender's vertex
+// Locks or unlocks a bone's weights, as Blender's vertex
 // group lock: painting and the weight clean-ups then keep that bone's
 // weights bit for bit. Undoable; saved with the part (Part::lockedBones);
 // the recipe steps "lock_bone" and "unlock_bone".

@@ -10,15 +10,6 @@ namespace rigmesh::model {
 
 namespace {
 
-const rigmesh::Pose& poseBefore(const Document& document, PartId id, bool alreadyApplied) {
-    const PartNode& node = document.part(id);
-    if (alreadyApplied) {
-        if (const rigmesh::Pose* origin = document.posePreviewOrigin(id))
-            return *origin;
-    }
-    return node.pose;
-}
-
 void checkPoseFits(const PartNode& node, const rigmesh::Pose& pose, const char* what) {
     if (!pose.isFinite())
         throw Error(std::string("The ") + what + " pose of part " + std::to_string(node.id) +
@@ -34,14 +25,13 @@ void checkPoseFits(const PartNode& node, const rigmesh::Pose& pose, const char* 
 }  // namespace
 
 SetPoseCommand::SetPoseCommand(Document& document, PartId id, const rigmesh::Pose& to,
-                               rigmesh::JointId draggedJoint, bool alreadyApplied,
+                               rigmesh::JointId draggedJoint, CommandMerging merging,
                                QUndoCommand* parent)
-    : SetPoseCommand(document, id, poseBefore(document, id, alreadyApplied), to, draggedJoint,
-                     alreadyApplied, parent) {}
+    : SetPoseCommand(document, id, document.part(id).pose, to, draggedJoint, merging, parent) {}
 
 SetPoseCommand::SetPoseCommand(Document& document, PartId id, const rigmesh::Pose& from,
                                const rigmesh::Pose& to, rigmesh::JointId draggedJoint,
-                               bool alreadyApplied, QUndoCommand* parent)
+                               CommandMerging merging, QUndoCommand* parent)
     : QUndoCommand(parent),
       document_(document),
       id_(id),
@@ -49,8 +39,7 @@ SetPoseCommand::SetPoseCommand(Document& document, PartId id, const rigmesh::Pos
       joint_(draggedJoint),
       from_(from),
       to_(to),
-      skipRedo_(alreadyApplied),
-      wholeDrag_(alreadyApplied) {
+      merging_(merging) {
     const PartNode& node = document.part(id);
     if (draggedJoint != rigmesh::kNoJoint &&
         (!node.part || !node.part->skeleton.hasJoint(draggedJoint)))
@@ -64,13 +53,6 @@ SetPoseCommand::SetPoseCommand(Document& document, PartId id, const rigmesh::Pos
 }
 
 void SetPoseCommand::redo() {
-    if (skipRedo_) {
-        skipRedo_ = false;
-        // The pose is on screen already; a preview becomes the committed pose.
-        if (document_.posePreviewOrigin(id_) || !identicalPoses(document_.part(id_).pose, to_))
-            document_.setPose(id_, to_);
-        return;
-    }
     document_.setPose(id_, to_);
 }
 

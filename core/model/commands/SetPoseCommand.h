@@ -3,9 +3,9 @@
 // merge into one undo step (id() + mergeWith), so a drag undoes at once; a
 // merge that lands back on the starting pose makes the command obsolete.
 //
-// Interactive drags may apply poses live with Document::previewPose and push
-// the command at the end with `alreadyApplied`: `from` is then the pose from
-// before the preview and the first redo() only records.
+// Interactive drags preview poses live and push the command once, at the end
+// (model/preview/PosePreview.h), with CommandMerging::Never: `from` is then
+// the pose from before the preview.
 #pragma once
 
 #include <QCoreApplication>
@@ -21,23 +21,21 @@ class SetPoseCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(SetPoseCommand)
   public:
     // Throws rigmesh::Error on an unknown part, an unknown dragged joint or a
-    // pose that does not fit the part's skeleton. `from` is the part's
-    // current pose, or with `alreadyApplied` the pose before the live
-    // preview (Document::posePreviewOrigin; the current pose without one).
+    // pose that does not fit the part's skeleton. From the part's current pose.
     SetPoseCommand(Document& document, PartId id, const rigmesh::Pose& to,
-                   rigmesh::JointId draggedJoint = rigmesh::kNoJoint, bool alreadyApplied = false,
+                   rigmesh::JointId draggedJoint = rigmesh::kNoJoint,
+                   CommandMerging merging = CommandMerging::Consecutive,
                    QUndoCommand* parent = nullptr);
-    // With an explicit `from` (the pose before a change the caller applied
-    // itself with Document::setPose; then pass alreadyApplied = true).
+    // With an explicit `from` (the pose before a preview showed `to`).
     SetPoseCommand(Document& document, PartId id, const rigmesh::Pose& from,
-                   const rigmesh::Pose& to, rigmesh::JointId draggedJoint, bool alreadyApplied,
+                   const rigmesh::Pose& to, rigmesh::JointId draggedJoint, CommandMerging merging,
                    QUndoCommand* parent = nullptr);
 
     void redo() override;
     void undo() override;
     nlohmann::json recipeStep() const override;
-    // A command pushed with alreadyApplied is one whole drag: it never merges.
-    int id() const override { return wholeDrag_ ? -1 : SetPoseCommandId; }
+    // A whole drag or typed value never merges.
+    int id() const override { return merging_ == CommandMerging::Never ? -1 : SetPoseCommandId; }
     bool mergeWith(const QUndoCommand* other) override;
 
     PartId partId() const { return id_; }
@@ -51,8 +49,7 @@ class SetPoseCommand : public QUndoCommand, public RecipeStepSource {
     int index_;
     rigmesh::JointId joint_;
     rigmesh::Pose from_, to_;
-    bool skipRedo_;
-    bool wholeDrag_;
+    CommandMerging merging_;
 };
 
 }  // namespace rigmesh::model

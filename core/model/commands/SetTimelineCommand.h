@@ -1,4 +1,4 @@
-// Set the timeline's frame range and rate (issue 15). A new rate keeps every
+// Set the timeline's frame range and rate. A new rate keeps every
 // key of every clip on its frame, as Blender does (the key times in seconds
 // scale by old rate / new rate), and becomes every clip's frame rate (its
 // half-frame tolerance and the frames an export samples).

@@ -1,5 +1,5 @@
 // The common ground of commands that change only a part's skin weights or
-// bone locks (paint strokes, weight clean-ups, bone locks; issue 14): the
+// bone locks (paint strokes, weight clean-ups, bone locks): the
 // engine edit runs on a copy in the factory (a bad argument throws
 // rigmesh::Error and nothing changes), redo and undo swap the part through
 // Document::replaceSkinning, so the pose, pins and keys stay as they are and

@@ -1,5 +1,5 @@
 // A whole-part weight clean-up (Normalize All, Clean, Limit Total, Smooth
-// All; issue 14 item 3) or a recomputation of the weights by bone heat, as
+// All) or a recomputation of the weights by bone heat, as
 // one undoable step, keeping the part's locked bones; the recipe steps
 // normalize_weights, clean_weights, limit_weights, smooth_weights and
 // recompute_weights. A clean-up that changes weights marks them painted

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <utility>
 
+#include "base/Stopwatch.h"
 #include "model/recipe/RecipeFile.h"
 #include "model/recipe/RecipeStepCommands.h"
 
@@ -76,8 +77,7 @@ RecipeStepReport RecipeRunner::apply(const nlohmann::json& step, int number,
     } catch (const std::exception& error) {
         throw RecipeError(number, command, error.what());
     }
-    const double milliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double milliseconds = millisecondsSince(start);
     return {number, command, summaryOf(document_, command, text, made), milliseconds,
             std::move(made.stats)};
 }

@@ -19,7 +19,7 @@
 //   rebuild       "part", optional "options" (the fields given replace the current ones)
 //   rig           "part": an unrigged part (an imported mesh) gets a skeleton
 //                 by mean curvature flow, bones by the sketches' CDP rule and
-//                 bone heat weights; the mesh is repaired where safe (issue 17)
+//                 bone heat weights; the mesh is repaired where safe
 //   pose          "part" and either
 //                   "joint" + "target": [x, y, z] in the part's frame: an IK drag
 //                   as the studio's pose tool does (current pose, pinned joints
@@ -74,7 +74,7 @@
 //                 "mirror" (X-mirror through the sketch plane),
 //                 "frontFacesOnly": [x, y, z] (the direction towards the
 //                 viewer: vertices facing away are not painted), "locked":
-//                 [bone ids] (besides the part's locked bones) (issue 14)
+//                 [bone ids] (besides the part's locked bones)
 //   normalize_weights "part"; clean_weights "part", optional "threshold"
 //                 (default 0.01); limit_weights "part", optional "influences"
 //                 (default 4); smooth_weights "part", optional "factor" (0..1,
@@ -93,7 +93,7 @@
 //                 y, z], ...}, optional "rootTranslation"}, ...]: whole poses
 //                 keyed at their times (a timeline paste)
 //   timeline      optional "start", "end" (whole frames), "frameRate": a new
-//                 rate keeps every key on its frame (issue 15)
+//                 rate keeps every key on its frame
 //   new_clip      "part", "name": a new empty clip, made active
 //   duplicate_clip "part", "clip", "name": a copy of "clip", made active
 //   rename_clip   "part", "clip", "name"

@@ -324,8 +324,7 @@ BoneId readBone(const Context& c, const PartNode& node) {
         return bone;
     }
     const Vec3 at = readVec3(c.required("at"), "\"at\"");
-    return nearestBone(*node.part,
-                       node.placement.rotation.conjugate() * (at - node.placement.translation));
+    return nearestBone(*node.part, node.placement.toLocal(at));
 }
 
 // "connect_bone": "part" and "bone" or "at" (part/BoneConnection.h).
@@ -345,8 +344,8 @@ StepCommand boneEdit(const Context& c, bool split) {
         const Bone& b = node.part->skeleton.bone(bone);
         const Vec3 middle = 0.5 * (node.part->skeleton.joint(b.head).position +
                                    node.part->skeleton.joint(b.tail).position);
-        const Vec3 at = c.has("at") ? readVec3(c.step["at"], "\"at\"")
-                                    : node.placement.rotation * middle + node.placement.translation;
+        const Vec3 at =
+            c.has("at") ? readVec3(c.step["at"], "\"at\"") : node.placement.toWorld(middle);
         command = BoneEditCommand::split(c.document, id, bone, at);
     } else {
         command = BoneEditCommand::remove(c.document, id, bone);

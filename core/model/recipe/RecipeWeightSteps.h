@@ -1,4 +1,4 @@
-// Recipe steps that edit skin weights (issue 14): paint_weights,
+// Recipe steps that edit skin weights: paint_weights,
 // normalize_weights, clean_weights, limit_weights, smooth_weights,
 // recompute_weights,
 // lock_bone and unlock_bone (formats in RecipeRunner.h).

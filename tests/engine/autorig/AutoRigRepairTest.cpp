@@ -1,4 +1,4 @@
-// Bad meshes (issue 17 item 2): what is safe is repaired and said, the rest
+// Bad meshes: what is safe is repaired and said, the rest
 // refused with a message naming the problem, the part given unchanged.
 #include <gtest/gtest.h>
 

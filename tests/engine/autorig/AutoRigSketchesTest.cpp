@@ -1,5 +1,5 @@
 // Our own sketches written as plain OBJ (no rig), imported through Assimp
-// as a user's file would be, and rigged (issue 17 item 4).
+// as a user's file would be, and rigged.
 #include <gtest/gtest.h>
 
 #include "AutoRigTestSupport.h"

@@ -52,7 +52,7 @@ TEST(Decomposition, BipedHasLimbCylindersAroundConnectingRegions) {
     EXPECT_EQ(countCapped(d), 5);
 }
 
-// A pruned bump off the middle of a body (issue 10) is a connecting region
+// A pruned bump off the middle of a body is a connecting region
 // between the body's two halves, holding the bump's outline, so the surface
 // follows it; the skeleton stays one chain (two caps, no other leaf).
 TEST(Decomposition, APrunedBumpOffTheBodyBecomesAConnectingRegionWithItsOutline) {

@@ -1,6 +1,6 @@
 // A rig made in Blender (tests/data/blender_rig) imported here keeps its bone
 // names, its size (FBX unit scale, glTF metres, COLLADA unit) and its action,
-// and survives our own export and import in the same format (issue 18 item 2).
+// and survives our own export and import in the same format.
 #include <gtest/gtest.h>
 
 #include <cmath>

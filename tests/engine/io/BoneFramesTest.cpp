@@ -1,4 +1,4 @@
-// Bone frames in every rigged export (issue 18 item 1): each bone node's
+// Bone frames in every rigged export: each bone node's
 // rest frame runs along its bone (+Y; -Z for a glTF leaf bone without a
 // parent bone, ExportRig.h), the skinned mesh is a glTF scene root with no
 // helper `RootNode`, and every bone's tail survives our own round trip:

@@ -1,5 +1,5 @@
 // Clip export is bounded by the keys, not by the clip's length in frames
-// (issue 9: a key at 1e6 s, or 20,000 keys, never finished).
+// (a key at 1e6 s, or 20,000 keys, once never finished).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // Exported files are complete or untouched (full disk, read-only target),
 // keep their permissions, leave no temporary file, and hold only defined
-// bytes (issue 9 item 5).
+// bytes.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -50,7 +50,7 @@ TEST_P(Structure, NodesBonesWeightsAndChannels) {
     int count = 0;
     collect(scene->mRootNode, byName, count);
     EXPECT_EQ(static_cast<int>(byName.size()), count) << "node names are not unique";
-    // One armature node per part (issue 18 item 3), but for COLLADA: every
+    // One armature node per part, but for COLLADA: every
     // bone under `Armature`.
     const std::string armature = extension == ".dae" ? "Armature" : sketch + "_armature";
     ASSERT_TRUE(byName.contains(armature));

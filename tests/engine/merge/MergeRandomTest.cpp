@@ -1,6 +1,6 @@
 // Random merges and cuts: whatever the placement or plane, the result is a
 // valid rigged part (or two) or an Error with a message; never a crash and
-// never an invalid part (issue 12 item 2, issue 13 item 1).
+// never an invalid part.
 #include <random>
 
 #include "MergeTestSupport.h"

@@ -269,7 +269,7 @@ TEST_F(MeshFile, MissingFileThrows) {
     EXPECT_NE(readError(path("nothing.obj")).find("does not exist"), std::string::npos);
 }
 
-// Issue 9: on a full disk OBJ exited 0 and replaced the file with a
+// On a full disk, OBJ once exited 0 and replaced the file with a
 // truncated one.
 TEST_F(MeshFile, AFullDiskIsAnErrorAndLeavesThePreviousFileAndNoTemporaryFile) {
     const TriMesh big = makeIcosphere(4, 1.0);

@@ -1,8 +1,8 @@
 // Bending one limb leaves the other limbs where they were as well as
-// Blender's bone heat does (issue 19), while the weights stay smoother than
+// Blender's bone heat does, while the weights stay smoother than
 // Blender's and the dominant bone stays the closest visible bone at least as
-// often as before issue 19. The figures are defined in LimbWeightMetrics.h.
-// Blender's figures are Blender 3.4.1's automatic weights on the same meshes
+// often as before the taper was widened (commit 6df566f). The figures are defined in
+// LimbWeightMetrics.h. Blender's figures are Blender 3.4.1's automatic weights on the same meshes
 // and exactly the same bone segments, measured with the same figures by
 // tests/external/heat_vs_blender (run.sh; the CTest external_heat_vs_blender
 // measures them again on every run): when the surfaces change, measure again
@@ -23,7 +23,7 @@ struct Blender {
     double smoothnessP99;  // largest per-bone weight jump over an edge, 99th percentile
 };
 
-// Measured on the surfaces of issue 10 (body bumps as patches, smooth caps,
+// Measured on today's surfaces (body bumps as patches, smooth caps,
 // thin parts refined; 2026-11-25).
 const std::map<std::string, Blender> kBlender = {
     {"banana", {903, 0.22115}},  {"biped", {901, 0.16993}},    {"camel_body", {2827, 0.07949}},
@@ -33,7 +33,7 @@ const std::map<std::string, Blender> kBlender = {
 };
 constexpr double kPrinted = 1e-5;  // Blender's figures are printed to five digits
 
-// The dominant-bone rate before issue 19 (commit 6df566f), which must hold.
+// The dominant-bone rate before the taper was widened (commit 6df566f), which must hold.
 const std::map<std::string, double> kDominanceBefore = {
     {"banana", 0.989011}, {"biped", 0.973085}, {"camel_body", 1.0}, {"camel_head", 1.0},
     {"camel_leg", 1.0},   {"camel_neck", 1.0}, {"kinked", 1.0},     {"open_gap", 0.991344},

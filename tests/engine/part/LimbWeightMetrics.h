@@ -1,4 +1,4 @@
-// Figures of merit for a part's skin weights (issue 19), measured the same
+// Figures of merit for a part's skin weights, measured the same
 // way before and after a change to the bone heat:
 //  - leak: turn one limb 60 degrees at its base (in the sketch plane and out
 //    of it), skin with linear blend, and count the vertices of the other

@@ -109,7 +109,7 @@ TEST_P(PartBookkeeping, KnownClosestBonesAreTheClosestVisibleBones) {
     EXPECT_EQ(wrong, 0) << "first wrong vertex " << firstWrong;
 }
 
-// Issue 19: the construction shortcut gives the bones the visibility test
+// The construction shortcut gives the bones the visibility test
 // gives, ties included: a section's bone stops at the planes through its end
 // joints, and neighbours within the tie tolerance share the vertex. Measured:
 // every known list equals the tested one on every sketch but biped (7 of

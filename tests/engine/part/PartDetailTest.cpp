@@ -1,4 +1,4 @@
-// Detail levels for export (issue 18 item 4): Loop subdivision and quadric
+// Detail levels for export: Loop subdivision and quadric
 // decimation carry the skin weights and leave the rig as it is.
 #include <gtest/gtest.h>
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "SketchToSurfaceTestSupport.h"
+#include "base/Statistics.h"
 #include "pipeline/SketchToPart.h"
 #include "rig/BoneVisibility.h"
 
@@ -140,14 +141,8 @@ inline std::vector<std::pair<int, int>> meshEdges(const TriMesh& mesh) {
     return edges;
 }
 
-// The value below which `fraction` of `values` lie (nearest rank); 0 if empty.
-inline double percentile(std::vector<double> values, double fraction) {
-    if (values.empty())
-        return 0.0;
-    std::sort(values.begin(), values.end());
-    const auto rank = static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1));
-    return values[std::min(rank, values.size() - 1)];
-}
+// The value below which `fraction` of `values` lie (base/Statistics.h).
+using rigmesh::percentile;
 
 // A known engine defect: the sketch and what is wrong, for GTEST_SKIP.
 struct KnownDefect {

@@ -1,4 +1,4 @@
-// Part::validate() on skin weights keyed by bone id (issue 12 item 1): a
+// Part::validate() on skin weights keyed by bone id: a
 // weight, failed bone or known closest bone naming a bone the skeleton does
 // not have is reported, and so are weights out of bone id order.
 #include <gtest/gtest.h>

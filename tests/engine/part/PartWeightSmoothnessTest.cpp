@@ -32,7 +32,7 @@ constexpr double kPercentile = 0.99;
 // L1 change per unit of e / d (d: mean distance of the edge's two vertices
 // to their nearest bone). Measured: at most 2.03 (star), 99th percentile at
 // most 1.68 (star), 1.5 to 2.0 on every sketch; since ties share a vertex
-// only within 0.3% (issue 19: every shared sketch smoother than Blender's by
+// only within 0.3% (every shared sketch smoother than Blender's by
 // the largest per-bone jump), one edge of the star reaches 2.503, p99 1.95.
 constexpr double kMaximumRelativeChange = 2.6;
 constexpr double kPercentileRelativeChange = 2.0;
@@ -48,8 +48,8 @@ const std::vector<parttest::KnownDefect> kKnownDefects = {
      "the vertices outside the bend at the root joint lie past both bones' end planes, at the "
      "same distance (to the joint) from both, so the closest visible bones tie there and the "
      "heat pulls them to 0.5 / 0.5 while the next row belongs to one bone: an edge changes by "
-     "0.88 (L1). The construction shortcut now gives the visibility test's answer there "
-     "(issue 19); before, it kept the section's bone and hid this (0.60), while visibility "
+     "0.88 (L1). The construction shortcut now gives the visibility test's answer there"
+     "; before, it kept the section's bone and hid this (0.60), while visibility "
      "tested on every vertex gave 0.88 already"},
 };
 

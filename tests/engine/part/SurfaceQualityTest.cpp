@@ -1,4 +1,4 @@
-// The surface figures of issue 10 (mesh/SurfaceQuality): what they measure on
+// The surface figures (mesh/SurfaceQuality): what they measure on
 // shapes with known answers. Their values on every shared sketch and on
 // random outlines are guarded in test_surface's SurfaceFigures.
 #include <gtest/gtest.h>

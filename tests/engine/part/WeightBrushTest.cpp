@@ -1,5 +1,5 @@
 // The brush's falloff and "front faces only", the locks every clean-up
-// keeps, Smooth All, Recompute Weights and Check Rig (issue 14 items 2-3).
+// keeps, Smooth All, Recompute Weights and Check Rig.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -183,7 +183,7 @@ TEST(WeightCleanup, SmoothAllMakesWeightsSmootherAndKeepsSums) {
         previous = now;
     }
     // Each pass spreads one ring of neighbours; the biped's limbs are meshed
-    // at 0.25 of their radius (issue 10), so many passes means 60.
+    // at 0.25 of their radius, so many passes means 60.
     smoothAllWeights(part, {0.5, 60});
     EXPECT_LT(roughness(part), 0.8 * start);
     EXPECT_THROW(smoothAllWeights(part, {1.5, 1}), Error);

@@ -1,4 +1,4 @@
-// Weight painting (issue 14 item 3): a dab changes weights only inside its
+// Weight painting: a dab changes weights only inside its
 // radius, keeps every sum at 1, leaves locked bones alone, skips vertices
 // it cannot change, and with X-mirror keeps the part mirror symmetric.
 #include <gtest/gtest.h>

@@ -228,7 +228,7 @@ TEST(Clip, SingleKeyHoldsEverywhere) {
     EXPECT_EQ(clip.evaluate(7.0).rootTranslation, a.rootTranslation);
 }
 
-// Issue 9: key times of 1e308 reached a .glb as Infinity.
+// Key times of 1e308 once reached a .glb as Infinity.
 TEST(Clip, KeysBeyondTheLongestKeyTimeAreRefused) {
     Clip clip;
     EXPECT_THROW(clip.setKey(1e308, Pose{}), Error);

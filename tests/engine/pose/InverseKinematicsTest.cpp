@@ -359,7 +359,7 @@ TEST_P(LimbReach, DraggingALeafMovesOnlyItsLimbUnlessWholeBodyReach) {
 INSTANTIATE_TEST_SUITE_P(SharedSketches, LimbReach,
                          ::testing::Values("y_branch", "star", "biped", "quadruped"));
 
-// Issue 11 item 2: a limb drag of a joint hanging right below a junction
+// A limb drag of a joint hanging right below a junction
 // turns that limb's first bone (the one leaving the junction) and nothing
 // else: every joint and bone outside the dragged joint's subtree keeps its
 // place and transform exactly, from any pose.

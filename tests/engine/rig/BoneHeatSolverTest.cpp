@@ -259,8 +259,8 @@ TEST(BoneHeatSolver, SmallWeightsFadeToZeroBetweenTaperEndAndStart) {
 
 // A junction patch can emit triangles with a repeated corner or three
 // collinear corners. Their cotangents (~1e8) once pinned a vertex at 0 in
-// every solve, so it fell back to one bone among neighbours at 0.2-0.4
-// (issue 19). The solver leaves such faces out: the other vertices get
+// every solve, so it fell back to one bone among neighbours at 0.2-0.4.
+// The solver leaves such faces out: the other vertices get
 // the weights of the clean mesh, and a vertex with only degenerate
 // faces takes the mean of its neighbours.
 TEST(BoneHeatSolver, DegenerateFacesLeaveNoSpike) {

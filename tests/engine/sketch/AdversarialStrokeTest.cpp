@@ -58,7 +58,7 @@ TEST(AdversarialStrokes, MillionPointCircleCleansIntoTheCircle) {
     }
     const CleanPolygon clean = cleanStroke(stroke);
     expectSimpleCounterClockwise(clean.points);
-    EXPECT_NEAR(testSignedArea(clean.points), M_PI, 0.02 * M_PI);
+    EXPECT_NEAR(signedArea(clean.points), M_PI, 0.02 * M_PI);
 }
 
 TEST(AdversarialStrokes, MillionRandomPointsNeverCrash) {

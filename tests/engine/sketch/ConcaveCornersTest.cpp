@@ -1,4 +1,4 @@
-// Rounding an outline's concave corners (issue 10): a concave corner
+// Rounding an outline's concave corners: a concave corner
 // sharper than an arc of the given radius becomes about that arc, convex
 // corners and straight runs stay where they are, and the area only grows.
 #include <gtest/gtest.h>

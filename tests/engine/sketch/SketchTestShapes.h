@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "base/Types.h"
+#include "sketch/PolygonGeometry.h"
 
 namespace rigmesh {
 
@@ -34,16 +35,6 @@ inline std::vector<Vec2> transformed(const std::vector<Vec2>& points, double sca
         out.push_back(scale * Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()) + offset);
     }
     return out;
-}
-
-inline double boxDiagonal(const std::vector<Vec2>& points) {
-    Vec2 low = points.front();
-    Vec2 high = low;
-    for (const Vec2& p : points) {
-        low = low.cwiseMin(p);
-        high = high.cwiseMax(p);
-    }
-    return (high - low).norm();
 }
 
 }  // namespace rigmesh

@@ -9,19 +9,10 @@
 #include <vector>
 
 #include "base/Types.h"
+#include "sketch/PolygonGeometry.h"
 #include "sketch/StrokeCleaner.h"
 
 namespace rigmesh {
-
-inline double testSignedArea(const std::vector<Vec2>& polygon) {
-    double twice = 0.0;
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-        const Vec2& p = polygon[i];
-        const Vec2& q = polygon[(i + 1) % polygon.size()];
-        twice += p.x() * q.y() - q.x() * p.y();
-    }
-    return twice / 2.0;
-}
 
 // True when closed segments ab and cd share a point.
 inline bool testSegmentsMeet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
@@ -66,7 +57,7 @@ inline bool testIsSimple(const std::vector<Vec2>& polygon) {
 
 inline void expectSimpleCounterClockwise(const std::vector<Vec2>& polygon) {
     ASSERT_GE(polygon.size(), 3u);
-    EXPECT_GT(testSignedArea(polygon), 0.0);
+    EXPECT_GT(signedArea(polygon), 0.0);
     EXPECT_NE(polygon.front(), polygon.back());
     EXPECT_TRUE(testIsSimple(polygon));
 }

@@ -38,7 +38,7 @@ TEST(StrokeCleaner, ScalingTheInputScalesTheResult) {
         SCOPED_TRACE(name);
         const auto points = sharedPoints(name);
         const CleanPolygon reference = cleanStroke(points);
-        const double size = boxDiagonal(reference.points);
+        const double size = boundingBoxDiagonal(reference.points);
         for (const double factor : {1e-3, 1e3}) {
             const CleanPolygon scaled = cleanStroke(transformed(points, factor));
             ASSERT_EQ(scaled.points.size(), reference.points.size());
@@ -56,11 +56,11 @@ TEST(StrokeCleaner, RotatingOrRestartingTheOutlineKeepsItsAreaWithinOnePercent) 
     for (const char* name : kGoodSketches) {
         SCOPED_TRACE(name);
         const CleanPolygon reference = cleanStroke(sharedPoints(name));
-        const double area = testSignedArea(reference.points);
+        const double area = signedArea(reference.points);
         std::vector<Vec2> restarted = reference.points;
         std::rotate(restarted.begin(), restarted.begin() + restarted.size() / 3, restarted.end());
         const CleanPolygon again = cleanStroke(transformed(restarted, 1.0, 0.7, Vec2(3.0, -2.0)));
-        EXPECT_NEAR(testSignedArea(again.points), area, 0.01 * area);
+        EXPECT_NEAR(signedArea(again.points), area, 0.01 * area);
         expectSimpleCounterClockwise(again.points);
     }
 }
@@ -72,8 +72,7 @@ TEST(StrokeCleaner, ClockwiseInputComesOutCounterClockwise) {
 
 TEST(StrokeCleaner, SmoothingDoesNotShrinkACircle) {
     const CleanPolygon clean = cleanStroke(circleStroke(300, 1.0, 2.0));
-    EXPECT_NEAR(testSignedArea(clean.points), std::numbers::pi * 4.0,
-                0.01 * std::numbers::pi * 4.0);
+    EXPECT_NEAR(signedArea(clean.points), std::numbers::pi * 4.0, 0.01 * std::numbers::pi * 4.0);
     for (const Vec2& p : clean.points) {
         EXPECT_NEAR(p.norm(), 2.0, 0.01);
     }
@@ -104,7 +103,7 @@ TEST(StrokeCleaner, OvershootThatCrossesTheStartIsTrimmedAtTheCrossing) {
     CleanPolygon clean;
     ASSERT_NO_THROW(clean = cleanStroke(stroke));
     expectSimpleCounterClockwise(clean.points);
-    EXPECT_NEAR(testSignedArea(clean.points), std::numbers::pi, 0.05 * std::numbers::pi);
+    EXPECT_NEAR(signedArea(clean.points), std::numbers::pi, 0.05 * std::numbers::pi);
 }
 
 TEST(StrokeCleaner, OvershootThatSlidesPastTheStartIsTrimmed) {
@@ -114,8 +113,7 @@ TEST(StrokeCleaner, OvershootThatSlidesPastTheStartIsTrimmed) {
     CleanPolygon clean;
     ASSERT_NO_THROW(clean = cleanStroke(stroke));
     expectSimpleCounterClockwise(clean.points);
-    EXPECT_NEAR(testSignedArea(clean.points), std::numbers::pi * 1.03 * 1.03,
-                0.05 * std::numbers::pi);
+    EXPECT_NEAR(signedArea(clean.points), std::numbers::pi * 1.03 * 1.03, 0.05 * std::numbers::pi);
 }
 
 TEST(StrokeCleaner, GapIsClosedWithAStraightSegment) {
@@ -125,7 +123,7 @@ TEST(StrokeCleaner, GapIsClosedWithAStraightSegment) {
     expectSimpleCounterClockwise(clean.points);
     const double gap = 2.0 * std::numbers::pi * 0.2;
     const double expected = std::numbers::pi - (gap - std::sin(gap)) / 2.0;
-    EXPECT_NEAR(testSignedArea(clean.points), expected, 0.01 * expected);
+    EXPECT_NEAR(signedArea(clean.points), expected, 0.01 * expected);
     // Some points lie on the chord, well inside the circle.
     const Vec2 chordMiddle = Vec2(1.0 + std::cos(-gap), std::sin(-gap)) / 2.0;
     double closest = INFINITY;
@@ -139,14 +137,14 @@ TEST(StrokeCleaner, ExplicitlyClosedStrokeKeepsItsShape) {
     const std::vector<Vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
     const CleanPolygon clean = cleanStroke(square);
     expectSimpleCounterClockwise(clean.points);
-    EXPECT_NEAR(testSignedArea(clean.points), 1.0, 0.02);
+    EXPECT_NEAR(signedArea(clean.points), 1.0, 0.02);
     EXPECT_NE(clean.points.front(), clean.points.back());
 }
 
 TEST(StrokeCleaner, TriangleOfThreeDistinctPointsCleans) {
     const CleanPolygon clean = cleanStroke({{0, 0}, {1, 0}, {0, 1}});
     expectSimpleCounterClockwise(clean.points);
-    EXPECT_NEAR(testSignedArea(clean.points), 0.5, 0.02);
+    EXPECT_NEAR(signedArea(clean.points), 0.5, 0.02);
 }
 
 TEST(StrokeCleaner, AbsoluteSpacingOverridesRelativeSpacing) {

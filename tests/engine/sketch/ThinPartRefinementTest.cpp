@@ -1,4 +1,4 @@
-// Outline resolution follows thickness (issue 10): thin stretches of the
+// Outline resolution follows thickness: thin stretches of the
 // cleaned outline get points along a smooth spline, wide ones keep theirs.
 #include <gtest/gtest.h>
 

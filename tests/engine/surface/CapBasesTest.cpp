@@ -1,4 +1,4 @@
-// Caps begin at a chord square to the limb (surface/CapBases.h, issue 10):
+// Caps begin at a chord square to the limb (surface/CapBases.h):
 // a capped end's askew chord or one at an outline corner is handed to the
 // cap, whose outline path takes in the points between.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // A cap's outline path keeps no corner sharper than a given radius
-// (geometry/CurvatureLimit.h, issue 10), and leaves rounder parts alone.
+// (geometry/CurvatureLimit.h), and leaves rounder parts alone.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // The debug SVG shows what the surface was built on (debug/DebugSvg.h): its
-// regions and sections, which differ from the rig's where issue 10's
-// surface-only steps apply, in world coordinates like everything else.
+// regions and sections, which differ from the rig's where the
+// surface-only steps (ARCHITECTURE section 2) apply, in world coordinates like everything else.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>

@@ -1,5 +1,5 @@
 // Body sections next to a fixed end chord follow the drawn outline
-// (surface/EndSectionSnap.h, issue 10): the section one in lies within an
+// (surface/EndSectionSnap.h): the section one in lies within an
 // eighth of its smoothed distance from the outline, those further in move
 // less, and nothing else changes.
 #include <gtest/gtest.h>

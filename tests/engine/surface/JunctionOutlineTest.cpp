@@ -1,4 +1,4 @@
-// Issue 10, item 3: junction silhouettes do not shrink. The outline vertices
+// Junction silhouettes do not shrink. The outline vertices
 // of connecting regions are held by Least-Squares Meshes, so after smoothing
 // they still lie on the cleaned outline, in the sketch plane.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // The surface covers a pruned bump off a body while the rig does not see it
-// (pipeline/RigRegionOrigins.h, issue 10): the rig's regions are the
+// (pipeline/RigRegionOrigins.h): the rig's regions are the
 // paper's, and every vertex origin names one of them.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Where a shared sketch's surface creases (issue 10): the worst edges by the
+// Where a shared sketch's surface creases: the worst edges by the
 // angle between their two face normals, with where their vertices came from
 // (VertexOrigin). Prints only when RIGMESH_CREASE_REPORT is set (to the
 // number of edges to list per sketch); RIGMESH_CREASE_PLY=DIR also writes

@@ -1,15 +1,14 @@
-// Issue 10's figures as guards, on every shared sketch (and the quadruped of
-// tests/data/sketches and the blob with a bump) at the default edge length and on random outlines
-// with many branches and thin parts: neighbouring face normals at most 20
-// degrees apart at the 99th percentile and 35 on every edge, a front view
-// whose silhouette covers the cleaned outline (IoU >= 0.95), at least 12
-// vertices around every body cross section, and a vertex count that follows
-// the area over the local edge length squared.
+// The surface figures (mesh/SurfaceQuality.h) as guards, on every shared sketch (and the quadruped
+// of tests/data/sketches and the blob with a bump) at the default edge length and on random
+// outlines with many branches and thin parts: neighbouring face normals at most 20 degrees apart at
+// the 99th percentile and 35 on every edge, a front view whose silhouette covers the cleaned
+// outline (IoU >= 0.95), at least 12 vertices around every body cross section, and a vertex count
+// that follows the area over the local edge length squared.
 //
 // One outline does not meet every target yet; it is listed in
 // kOpenShortfalls with the figure measured when this test was written, which
-// it must not exceed (the issue stays open for it; see the crease report
-// in SurfaceCreaseReportTest for where the angles sit).
+// it must not exceed (see the crease report in
+// SurfaceCreaseReportTest for where the angles sit).
 #include <gtest/gtest.h>
 
 #include <algorithm>

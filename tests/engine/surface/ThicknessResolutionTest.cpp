@@ -1,4 +1,4 @@
-// Resolution follows thickness (issue 10, item 1): the local edge length is
+// Resolution follows thickness: the local edge length is
 // at most CrossSectionOptions::radiusFraction of the local radius, so a thin
 // part is round (at least 12 vertices around every body cross section), while
 // a part wide enough keeps the document's edge length.

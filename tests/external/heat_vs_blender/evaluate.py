@@ -1,4 +1,4 @@
-"""Issue 19's leak and smoothness figures for our weights and Blender's, per sketch.
+"""The limb leak and smoothness figures for our weights and Blender's, per sketch.
 
 Run inside Blender's Python (numpy):
   blender -b --factory-startup --python evaluate.py -- OUTDIR SKETCH [SKETCH ...]

@@ -1,4 +1,4 @@
-"""Issue 19's figures of merit, ported from tests/engine/part/LimbWeightMetrics.h
+"""The skin weights' figures of merit, ported from tests/engine/part/LimbWeightMetrics.h
 and PartTestSupport.h (limbsOf, closestVisibleBones, nearestVisibleBone,
 limbLeak, largestBoneJumpP99, dominantIsClosestVisibleRate).
 

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Issue 19: our bone heat against Blender's automatic weights (bone heat) on
+# Our bone heat against Blender's automatic weights (bone heat) on
 # the same mesh and exactly the same bone segments, for every good shared
 # sketch: the limb-leak figure, the 99th percentile of the largest per-bone
 # weight jump over an edge and the dominant-bone rate (figures ported from

@@ -1,21 +1,19 @@
-// MainWindow: the File menu's documents: New, Open (and Open Recent), Save,
-// Save As, asking before unsaved work goes, closing tabs and the window, and
-// offering autosaved work back after a crash.
+#include "controllers/FilesController.h"
+
 #include <QAction>
-#include <QCloseEvent>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
-#include <QTabWidget>
+#include <memory>
 
 #include "DocumentView.h"
-#include "MainWindow.h"
 #include "base/Error.h"
-#include "jobs/JobRunner.h"
+#include "controllers/StudioHost.h"
 #include "model/Autosave.h"
+#include "model/Document.h"
 #include "model/DocumentFile.h"
 #include "model/ErrorText.h"
 
@@ -32,53 +30,57 @@ QString fileFilter() {
 
 }  // namespace
 
-void MainWindow::newDocument() {
+FilesController::FilesController(StudioHost& host, QString recoveryDirectory, QObject* parent)
+    : QObject(parent), host_(host), recoveryDirectory_(std::move(recoveryDirectory)) {}
+
+DocumentView* FilesController::newDocument() {
     auto document = std::make_unique<model::Document>();
     document->setUntitledName(tr("Untitled %1").arg(++untitledCount_));
-    addDocument(std::move(document));
+    return host_.addDocument(std::move(document));
 }
 
-void MainWindow::open() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open Document"), QString(), fileFilter());
+void FilesController::open() {
+    const QString path = QFileDialog::getOpenFileName(host_.dialogParent(), tr("Open Document"),
+                                                      QString(), fileFilter());
     if (!path.isEmpty())
         openFile(path);
 }
 
-bool MainWindow::openFile(const QString& path) {
-    for (int i = 0; i < tabs_->count(); ++i) {
-        auto* view = qobject_cast<DocumentView*>(tabs_->widget(i));
-        if (view && QFileInfo(view->document()->filePath()) == QFileInfo(path)) {
-            tabs_->setCurrentIndex(i);
+bool FilesController::openFile(const QString& path) {
+    for (DocumentView* view : host_.views())
+        if (QFileInfo(view->document()->filePath()) == QFileInfo(path)) {
+            host_.setCurrentView(view);
             return true;
         }
-    }
     try {
-        addDocument(model::DocumentFile::load(path));
+        host_.addDocument(model::DocumentFile::load(path));
         addRecentFile(path);
-        showStatus(tr("Opened %1").arg(QFileInfo(path).fileName()), 4000);
+        host_.showStatus(tr("Opened %1").arg(QFileInfo(path).fileName()), 4000);
         return true;
     } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(this, tr("Cannot open document"), model::errorText(error));
+        QMessageBox::warning(host_.dialogParent(), tr("Cannot open document"),
+                             model::errorText(error));
         return false;
     }
 }
 
-bool MainWindow::saveDocument(DocumentView* view, const QString& path) {
+bool FilesController::saveDocument(DocumentView* view, const QString& path) {
     try {
         model::DocumentFile::save(*view->document(), path);
-        autosaves_[view]->discard();
+        if (const auto it = autosaves_.find(view); it != autosaves_.end())
+            it->second->discard();
         addRecentFile(path);
-        showStatus(tr("Saved %1").arg(QFileInfo(path).fileName()), 4000);
+        host_.showStatus(tr("Saved %1").arg(QFileInfo(path).fileName()), 4000);
         return true;
     } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(this, tr("Cannot save document"), model::errorText(error));
+        QMessageBox::warning(host_.dialogParent(), tr("Cannot save document"),
+                             model::errorText(error));
         return false;
     }
 }
 
-bool MainWindow::save() {
-    DocumentView* view = currentView();
+bool FilesController::save() {
+    DocumentView* view = host_.currentView();
     if (!view)
         return false;
     if (view->document()->filePath().isEmpty())
@@ -86,11 +88,11 @@ bool MainWindow::save() {
     return saveDocument(view, view->document()->filePath());
 }
 
-bool MainWindow::saveAs() {
-    DocumentView* view = currentView();
+bool FilesController::saveAs() {
+    DocumentView* view = host_.currentView();
     if (!view)
         return false;
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Document"),
+    QString path = QFileDialog::getSaveFileName(host_.dialogParent(), tr("Save Document"),
                                                 view->document()->filePath(), fileFilter());
     if (path.isEmpty())
         return false;
@@ -100,12 +102,12 @@ bool MainWindow::saveAs() {
     return saveDocument(view, path);
 }
 
-bool MainWindow::maybeSave(DocumentView* view) {
+bool FilesController::maybeSave(DocumentView* view) {
     if (!view->document()->isModified())
         return true;
-    tabs_->setCurrentWidget(view);
+    host_.setCurrentView(view);
     const auto answer = QMessageBox::warning(
-        this, tr("Unsaved changes"),
+        host_.dialogParent(), tr("Unsaved changes"),
         tr("%1 has unsaved changes. Save them?").arg(view->document()->displayName()),
         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Cancel)
@@ -115,32 +117,44 @@ bool MainWindow::maybeSave(DocumentView* view) {
     return true;
 }
 
-bool MainWindow::closeDocument(int index) {
-    auto* view = qobject_cast<DocumentView*>(tabs_->widget(index));
+bool FilesController::close(DocumentView* view) {
     if (!view || !maybeSave(view))
         return false;
-    undoGroup_.removeStack(view->document()->undoStack());
-    autosaves_.erase(view);  // the Autosave is a child of the view: it goes with it
-    tabs_->removeTab(index);
-    delete view;
+    unwatch(view);
+    host_.removeView(view);
     return true;
 }
 
-void MainWindow::closeEvent(QCloseEvent* event) {
-    jobs_->cancel();  // a running job's result would have no document to go to
-    while (tabs_->count() > 0) {
-        if (!closeDocument(tabs_->count() - 1)) {
-            event->ignore();
-            return;
-        }
-    }
-    QSettings settings;
-    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    settings.setValue(QStringLiteral("window/state"), saveState());
-    event->accept();
+bool FilesController::closeAll() {
+    for (std::vector<DocumentView*> views = host_.views(); !views.empty(); views.pop_back())
+        if (!close(views.back()))
+            return false;
+    return true;
 }
 
-void MainWindow::addRecentFile(const QString& path) {
+void FilesController::watch(DocumentView* view) {
+    // A child of the view: it goes with it.
+    auto* autosave = new model::Autosave(view->document(), recoveryDirectory_, view);
+    autosave->setDelay(autosaveDelay_);
+    autosaves_[view] = autosave;
+}
+
+void FilesController::unwatch(DocumentView* view) {
+    autosaves_.erase(view);
+}
+
+void FilesController::setAutosaveDelay(int milliseconds) {
+    autosaveDelay_ = milliseconds;
+    for (const auto& [view, autosave] : autosaves_)
+        autosave->setDelay(milliseconds);
+}
+
+void FilesController::setRecentMenu(QMenu* menu) {
+    recentMenu_ = menu;
+    rebuildRecentMenu();
+}
+
+void FilesController::addRecentFile(const QString& path) {
     QSettings settings;
     QStringList files = settings.value(QString::fromLatin1(kRecentKey)).toStringList();
     const QString absolute = QFileInfo(path).absoluteFilePath();
@@ -152,7 +166,9 @@ void MainWindow::addRecentFile(const QString& path) {
     rebuildRecentMenu();
 }
 
-void MainWindow::rebuildRecentMenu() {
+void FilesController::rebuildRecentMenu() {
+    if (!recentMenu_)
+        return;
     recentMenu_->clear();
     const QStringList files = QSettings().value(QString::fromLatin1(kRecentKey)).toStringList();
     for (const QString& path : files)
@@ -161,11 +177,11 @@ void MainWindow::rebuildRecentMenu() {
     recentMenu_->setEnabled(!files.isEmpty());
 }
 
-void MainWindow::offerRecovery() {
+void FilesController::offerRecovery() {
     const auto files = model::Autosave::recoveryFiles(recoveryDirectory_);
     for (const auto& file : files) {
         const auto answer = QMessageBox::question(
-            this, tr("Recover unsaved work?"),
+            host_.dialogParent(), tr("Recover unsaved work?"),
             tr("RigMesh Studio did not close properly. Restore the document autosaved at %1?")
                 .arg(file.lastModified.toString()),
             QMessageBox::Yes | QMessageBox::Discard);
@@ -175,9 +191,9 @@ void MainWindow::offerRecovery() {
                     std::make_unique<model::Document>(model::DocumentFile::read(file.path));
                 // Recovered work is unsaved work: mark it modified so closing asks.
                 document->undoStack()->resetClean();
-                addDocument(std::move(document));
+                host_.addDocument(std::move(document));
             } catch (const rigmesh::Error& error) {
-                showStatus(tr("Could not recover: %1").arg(model::errorText(error)), 8000);
+                host_.showStatus(tr("Could not recover: %1").arg(model::errorText(error)), 8000);
                 continue;
             }
         }

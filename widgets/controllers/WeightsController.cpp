@@ -1,63 +1,36 @@
-// MainWindow: Tools > Weights (issue 14 item 3), Blender's Weights menu on
-// the selected part: Normalize All, Clean, Limit Total and Smooth All, each
-// one undoable command that keeps locked bones, Recompute Weights (bone heat
-// again, as a background job), and Check Rig (the Weights panel lists what
-// it finds).
-#include <QAction>
-#include <QActionGroup>
-#include <QComboBox>
-#include <QDockWidget>
-#include <QLabel>
-#include <QMenu>
-#include <QPointer>
-#include <QSignalBlocker>
-#include <QToolBar>
+#include "controllers/WeightsController.h"
 
-#include "MainWindow.h"
+#include <QAction>
+#include <QDockWidget>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPointer>
+
 #include "base/Error.h"
+#include "controllers/StudioHost.h"
 #include "jobs/JobRunner.h"
 #include "model/Document.h"
 #include "model/ErrorText.h"
 #include "model/commands/WeightCleanupCommand.h"
 #include "panels/WeightsPanel.h"
-#include "viewport/RenderScene.h"
 
 namespace rigmesh::widgets {
 
-void MainWindow::showWeightView(WeightView view) {
-    for (QAction* action : weightViewGroup_->actions())
-        if (static_cast<WeightView>(action->data().toInt()) == view)
-            action->setChecked(true);
-    if (weightViewBox_) {
-        const QSignalBlocker block(weightViewBox_);
-        weightViewBox_->setCurrentIndex(weightViewBox_->findData(static_cast<int>(view)));
-    }
+WeightsController::WeightsController(StudioHost& host, WeightsPanel* panel, QObject* parent)
+    : QObject(parent), host_(host), panel_(panel) {
+    confirmDiscard = [this](const QString& question) {
+        return QMessageBox::question(host_.dialogParent(), tr("Recompute Weights"), question,
+                                     QMessageBox::Yes | QMessageBox::Cancel,
+                                     QMessageBox::Cancel) == QMessageBox::Yes;
+    };
 }
 
-void MainWindow::createWeightMenu(QMenu* tools) {
-    // The weight views on a toolbar too (issue 14 item 1): a list beside the
-    // tools, in step with View > Weights.
-    auto* bar = addToolBar(tr("Weight View"));
-    bar->setObjectName(QStringLiteral("weightViewToolBar"));
-    bar->addWidget(new QLabel(tr(" Weights: "), bar));
-    weightViewBox_ = new QComboBox(bar);
-    weightViewBox_->setObjectName(QStringLiteral("weightViewBox"));
-    weightViewBox_->setToolTip(tr("Colour the surface by its skin weights (View > Weights)"));
-    for (QAction* action : weightViewGroup_->actions())
-        weightViewBox_->addItem(action->text().remove(QLatin1Char('&')), action->data());
-    bar->addWidget(weightViewBox_);
-    connect(weightViewBox_, &QComboBox::activated, this, [this](int index) {
-        const QVariant view = weightViewBox_->itemData(index);
-        for (QAction* action : weightViewGroup_->actions())
-            if (action->data() == view)
-                action->trigger();
-    });
-
+void WeightsController::addMenu(QMenu* tools) {
     auto* menu = tools->addMenu(tr("Weigh&ts"));
     auto cleanup = [this](auto make) {
-        model::Document* document = currentDocument();
+        model::Document* document = host_.currentDocument();
         if (!document || !document->contains(document->selection().part)) {
-            showStatus(tr("Select a part first"), 4000);
+            host_.showStatus(tr("Select a part first"), 4000);
             return;
         }
         try {
@@ -65,9 +38,9 @@ void MainWindow::createWeightMenu(QMenu* tools) {
             const QString text = tr("%1: %n vertices changed", nullptr, command->changedVertices())
                                      .arg(command->text());
             document->undoStack()->push(command.release());
-            showStatus(text, 6000);
+            host_.showStatus(text, 6000);
         } catch (const Error& error) {
-            showStatus(model::errorText(error), 6000);
+            host_.showStatus(model::errorText(error), 6000);
         }
     };
     auto add = [&](const QString& text, auto make) {
@@ -93,47 +66,47 @@ void MainWindow::createWeightMenu(QMenu* tools) {
     recompute->setToolTip(
         tr("Bone heat over the whole part again, as a new sketch gets it; locked bones keep "
            "their weights"));
-    connect(recompute, &QAction::triggered, this, &MainWindow::recomputeWeights);
+    connect(recompute, &QAction::triggered, this, &WeightsController::recomputeWeights);
     menu->addSeparator();
     QAction* check = menu->addAction(tr("Check &Rig"));
     connect(check, &QAction::triggered, this, [this] {
-        for (auto* dock : findChildren<QDockWidget*>())
-            if (dock->widget() == weights_) {
-                dock->show();
-                dock->raise();
-            }
-        weights_->checkRig();
+        // The panel's dock comes to the front with the findings.
+        if (auto* dock = qobject_cast<QDockWidget*>(panel_->parentWidget())) {
+            dock->show();
+            dock->raise();
+        }
+        panel_->checkRig();
     });
 }
 
-void MainWindow::recomputeWeights() {
-    model::Document* document = currentDocument();
+void WeightsController::recomputeWeights() {
+    model::Document* document = host_.currentDocument();
     if (!document || !document->contains(document->selection().part)) {
-        showStatus(tr("Select a part first"), 4000);
+        host_.showStatus(tr("Select a part first"), 4000);
         return;
     }
     const model::PartId id = document->selection().part;
     const model::PartNode& node = document->part(id);
     if (!node.part || node.part->skeleton.boneCount() == 0) {
-        showStatus(tr("%1 has no skeleton, so it has no weights to recompute").arg(node.name),
-                   6000);
+        host_.showStatus(tr("%1 has no skeleton, so it has no weights to recompute").arg(node.name),
+                         6000);
         return;
     }
     // A whole-part solve takes seconds on a large part: a background job
-    // (issue 16 item 3) on the part as it is; the command is made and
+    // on the part as it is; the command is made and
     // pushed when it is done.
     if (node.part->weightsPainted &&
-        !confirmDiscardWeights(
+        !confirmDiscard(
             tr("The weights of %1 were painted or cleaned up by hand. Recomputing them by bone "
                "heat replaces that work (locked bones keep theirs; Undo brings it back). "
                "Recompute anyway?")
                 .arg(node.name))) {
-        showStatus(tr("Weights not recomputed: the painted weights are kept"), 6000);
+        host_.showStatus(tr("Weights not recomputed: the painted weights are kept"), 6000);
         return;
     }
     QPointer<model::Document> guarded(document);
     const std::shared_ptr<const Part> part = node.part;
-    jobs_->run(
+    host_.jobs()->run(
         tr("Recomputing the weights of %1").arg(node.name),
         [=, this]() -> JobRunner::Apply {
             auto result = std::make_shared<model::WeightCleanupCommand::Recomputed>(
@@ -148,14 +121,14 @@ void MainWindow::recomputeWeights() {
                         tr("%1: %n vertices changed", nullptr, command->changedVertices())
                             .arg(command->text());
                     guarded->undoStack()->push(command.release());
-                    showStatus(text, 6000);
+                    host_.showStatus(text, 6000);
                 } catch (const Error& error) {
-                    showStatus(model::errorText(error), 6000);
+                    host_.showStatus(model::errorText(error), 6000);
                 }
             };
         },
         [this](const QString& reason) {
-            showStatus(tr("Weights not recomputed: %1").arg(reason), 8000);
+            host_.showStatus(tr("Weights not recomputed: %1").arg(reason), 8000);
         });
 }
 

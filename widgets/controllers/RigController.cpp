@@ -1,16 +1,11 @@
-// MainWindow: Tools > Auto-Rig Part (issue 17), for an unrigged part (an
-// imported mesh): a background job with a filling progress bar and Cancel
-// that stops the skeleton's flow at its next step; the result arrives as
-// one undoable command (model/commands/RigPartCommand). After an import of
-// meshes without a rig the studio offers to rig them at once. Edit >
-// Connect Bone connects the selected joint's disconnected bone to its
-// parent (part/BoneConnection.h), one undoable BoneEditCommand.
+#include "controllers/RigController.h"
+
 #include <QMessageBox>
 #include <QPointer>
 #include <QPushButton>
 
-#include "MainWindow.h"
 #include "base/Error.h"
+#include "controllers/StudioHost.h"
 #include "jobs/JobRunner.h"
 #include "model/Document.h"
 #include "model/ErrorText.h"
@@ -20,28 +15,30 @@
 
 namespace rigmesh::widgets {
 
-void MainWindow::rigSelectedPart() {
-    model::Document* document = currentDocument();
+RigController::RigController(StudioHost& host, QObject* parent) : QObject(parent), host_(host) {}
+
+void RigController::rigSelectedPart() {
+    model::Document* document = host_.currentDocument();
     if (!document || !document->contains(document->selection().part)) {
-        showStatus(tr("Select a part to rig first"), 4000);
+        host_.showStatus(tr("Select a part to rig first"), 4000);
         return;
     }
     const model::PartNode& node = document->part(document->selection().part);
     if (node.part && node.part->skeleton.jointCount() > 0) {
-        showStatus(tr("%1 already has a skeleton; Auto-Rig is for parts without one, such as "
-                      "imported meshes")
-                       .arg(node.name),
-                   8000);
+        host_.showStatus(tr("%1 already has a skeleton; Auto-Rig is for parts without one, such as "
+                            "imported meshes")
+                             .arg(node.name),
+                         8000);
         return;
     }
     rigParts(document, {node.id});
 }
 
-void MainWindow::connectSelectedBone() {
-    model::Document* document = currentDocument();
+void RigController::connectSelectedBone() {
+    model::Document* document = host_.currentDocument();
     const model::Selection selection = document ? document->selection() : model::Selection{};
     if (!document || !document->contains(selection.part) || selection.joint == kNoJoint) {
-        showStatus(tr("Select the joint of the bone to connect first"), 4000);
+        host_.showStatus(tr("Select the joint of the bone to connect first"), 4000);
         return;
     }
     const Skeleton& skeleton = document->part(selection.part).part->skeleton;
@@ -51,20 +48,20 @@ void MainWindow::connectSelectedBone() {
     if (skeleton.isAttached(selection.joint) && !skeleton.childrenOf(selection.joint).empty())
         bone = skeleton.childrenOf(selection.joint).front();
     if (!bone) {
-        showStatus(tr("The selected joint ends no bone"), 4000);
+        host_.showStatus(tr("The selected joint ends no bone"), 4000);
         return;
     }
     try {
         auto command = model::BoneEditCommand::connect(*document, selection.part, *bone);
         const QString text = command->text();
         document->undoStack()->push(command.release());
-        showStatus(text, 6000);
+        host_.showStatus(text, 6000);
     } catch (const Error& error) {
-        showStatus(tr("Bone not connected: %1").arg(model::errorText(error)), 8000);
+        host_.showStatus(tr("Bone not connected: %1").arg(model::errorText(error)), 8000);
     }
 }
 
-void MainWindow::rigParts(model::Document* document, std::vector<model::PartId> ids) {
+void RigController::rigParts(model::Document* document, std::vector<model::PartId> ids) {
     if (!document || ids.empty())
         return;
     const model::PartId id = ids.front();
@@ -74,7 +71,7 @@ void MainWindow::rigParts(model::Document* document, std::vector<model::PartId> 
     QPointer<model::Document> guarded(document);
     const QString name = document->part(id).name;
     const std::shared_ptr<const Part> part = document->part(id).part;
-    jobs_->runWithProgress(
+    host_.jobs()->runWithProgress(
         tr("Rigging %1").arg(name),
         [=, this](JobProgress& progress) -> JobRunner::Apply {
             auto rigged = std::make_shared<model::RigPartCommand::Rigged>(
@@ -90,9 +87,9 @@ void MainWindow::rigParts(model::Document* document, std::vector<model::PartId> 
                     const QString summary = command->summary();
                     guarded->undoStack()->push(command.release());
                     guarded->setSelection({id, kNoJoint});
-                    showStatus(summary, 10000);
+                    host_.showStatus(summary, 10000);
                 } catch (const Error& error) {
-                    QMessageBox::warning(this, tr("Cannot rig %1").arg(name),
+                    QMessageBox::warning(host_.dialogParent(), tr("Cannot rig %1").arg(name),
                                          model::errorText(error));
                     return;
                 }
@@ -100,15 +97,15 @@ void MainWindow::rigParts(model::Document* document, std::vector<model::PartId> 
             };
         },
         [this, name](const QString& reason) {
-            QMessageBox::warning(this, tr("Cannot rig %1").arg(name), reason);
+            QMessageBox::warning(host_.dialogParent(), tr("Cannot rig %1").arg(name), reason);
         },
-        [this, name] { showStatus(tr("Rigging %1 cancelled").arg(name), 6000); });
+        [this, name] { host_.showStatus(tr("Rigging %1 cancelled").arg(name), 6000); });
 }
 
-bool MainWindow::offerToRig(model::Document& document, const std::vector<model::PartId>& ids,
-                            const QString& message) {
+bool RigController::offerToRig(model::Document& document, const std::vector<model::PartId>& ids,
+                               const QString& message) {
     QMessageBox box(QMessageBox::Question, tr("Imported without a rig"), message,
-                    QMessageBox::NoButton, this);
+                    QMessageBox::NoButton, host_.dialogParent());
     box.setObjectName(QStringLiteral("offerToRig"));
     box.setInformativeText(
         tr("Auto-Rig gives a closed mesh a skeleton from its shape and skin weights, so it can "
