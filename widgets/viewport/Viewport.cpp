@@ -331,8 +331,8 @@ RenderScene Viewport::gatherScene() const {
         for (const auto& [joint, parent] : skeleton.attachments()) {
             if (parent == kNoBone || !skeleton.hasBone(parent))
                 continue;
-            const Vec3 from = toWorld(node.placement, posedJoint(joint));
-            const Vec3 to = toWorld(node.placement, posedJoint(skeleton.bone(parent).tail));
+            const Vec3 from = node.placement.toWorld(posedJoint(joint));
+            const Vec3 to = node.placement.toWorld(posedJoint(skeleton.bone(parent).tail));
             constexpr int kDashes = 8;
             for (int k = 0; k < kDashes; ++k) {
                 const double a = static_cast<double>(2 * k) / (2 * kDashes - 1);
