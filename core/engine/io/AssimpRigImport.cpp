@@ -43,13 +43,16 @@ struct CollectedBones {
 };
 
 // The ancestors of `bones` that the file animates, up to the first one it
-// does not (the scene root never).
+// does not. Neither the scene root nor its children: a child of the root
+// is the armature object (Blender's FBX keys its armature, and its
+// importer makes no bone of it), while a game format's unweighted root
+// bones hang lower (Half-Life's under <MDL_bones>).
 std::set<int> animatedAncestors(const std::set<int>& bones, const AssimpNodeTree& tree,
                                 const std::set<std::string>& animated) {
     std::set<int> out;
     for (int node : bones)
-        for (int up = tree.parent(node);
-             up > 0 && !bones.contains(up) && animated.contains(tree.node(up).mName.C_Str());
+        for (int up = tree.parent(node); up > 0 && tree.parent(up) > 0 && !bones.contains(up) &&
+                                         animated.contains(tree.node(up).mName.C_Str());
              up = tree.parent(up))
             out.insert(up);
     return out;
