@@ -52,6 +52,22 @@ if ! compgen -G "/var/lib/apt/lists/*_Packages*" >/dev/null; then
     $sudo apt-get update -qq
 fi
 
+# Godot 3 for the Godot import check (tests/external/godot): only for a build
+# with tests (not the release preset), and only where Debian has it for this
+# machine's architecture (read from the package lists above); elsewhere the
+# check skips and says why.
+if [ "$preset" != "release" ] &&
+    ! dpkg-query -W -f='${Status}' godot3 2>/dev/null | grep -q "install ok installed"; then
+    if apt-cache policy godot3 2>/dev/null | grep -q "Candidate: [0-9]"; then
+        echo "setup: installing godot3"
+        sudo=""
+        if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+        DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends godot3 >/dev/null
+    else
+        echo "setup: Debian has no godot3 for this machine; the Godot import check will be skipped"
+    fi
+fi
+
 # The glTF validator of the external export tests (tests/external), pinned by
 # its package-lock.json; installed once.
 if [ ! -d tests/external/node_modules ]; then

@@ -12,8 +12,16 @@
         <translation>Knochen %1 von %2 löschen</translation>
     </message>
     <message>
-        <source>%1 in %2 ms: %3 vertices and %4 bones re-skinned</source>
-        <translation>%1 in %2 ms: %3 Vertices und %4 Knochen neu gewichtet</translation>
+        <source>%1 in %2 ms: %3 vertices and %4 re-skinned</source>
+        <translation>%1 in %2 ms: %3 Vertices und %4 neu gebunden</translation>
+    </message>
+    <message>
+        <source>1 bone</source>
+        <translation>1 Knochen</translation>
+    </message>
+    <message>
+        <source>%1 bones</source>
+        <translation>%1 Knochen</translation>
     </message>
     <message>
         <source>Connect Bone %1 of %2</source>
@@ -57,12 +65,12 @@
 <context>
     <name>CutPartCommand</name>
     <message>
-        <source>%1 2</source>
-        <translation>%1 2</translation>
-    </message>
-    <message>
         <source>Cut %1</source>
         <translation>%1 schneiden</translation>
+    </message>
+    <message>
+        <source>%1 cut</source>
+        <translation>%1 abgeschnitten</translation>
     </message>
 </context>
 <context>
@@ -414,10 +422,6 @@
         <translation>„Nur Vorderseiten“ braucht eine endliche Blickrichtung ungleich null.</translation>
     </message>
     <message>
-        <source>This part is not mirror symmetric any more (merged or cut), so X-mirror cannot paint it.</source>
-        <translation>Dieses Teil ist nicht mehr spiegelsymmetrisch (zusammengeführt oder geschnitten), daher kann X-Spiegelung es nicht malen.</translation>
-    </message>
-    <message>
         <source>The clean threshold must be at least 0 and below 1.</source>
         <translation>Der Schwellwert zum Bereinigen muss mindestens 0 und kleiner als 1 sein.</translation>
     </message>
@@ -564,6 +568,132 @@
     <message>
         <source>Bone %1 starts at the skeleton&apos;s root: it has no parent to connect to.</source>
         <translation>Knochen %1 beginnt an der Wurzel des Skeletts: Er hat keinen Elternknochen, mit dem er verbunden werden könnte.</translation>
+        <source>The surface would intersect itself (%1 crossing face pairs) near (%2, %3): the outline is too thin or turns too sharply there. Widen it there or use a smaller edge length.</source>
+        <translation>Die Oberfläche würde sich selbst schneiden (%1 sich kreuzende Flächenpaare) bei (%2, %3): der Umriss ist dort zu dünn oder knickt zu scharf. Verbreitern Sie ihn dort oder verwenden Sie eine kleinere Kantenlänge.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot be rebuilt: it was not drawn as one sketch (it comes from a merge, a cut, a bone edit or an import), so there is no stroke to build it from.</source>
+        <translation>„%1“ lässt sich nicht neu aufbauen: es wurde nicht als eine Skizze gezeichnet (es entstand durch Zusammenführen, Schneiden, Knochenbearbeitung oder Import) und hat keinen Strich.</translation>
+    </message>
+    <message>
+        <source>The target part cannot be merged: %1 Merging needs closed, consistently oriented surfaces.</source>
+        <translation>Das Zielteil lässt sich nicht zusammenführen: %1 Zusammenführen braucht geschlossene, einheitlich orientierte Oberflächen.</translation>
+    </message>
+    <message>
+        <source>The dragged part cannot be merged: %1 Merging needs closed, consistently oriented surfaces.</source>
+        <translation>Das gezogene Teil lässt sich nicht zusammenführen: %1 Zusammenführen braucht geschlossene, einheitlich orientierte Oberflächen.</translation>
+    </message>
+    <message>
+        <source>The target part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
+        <translation>Die Oberfläche des Zielteils schneidet sich selbst (%1 sich kreuzende Flächenpaare), daher lassen sich die Teile nicht zusammenführen. Bauen Sie es zuerst mit größerer Kantenlänge oder Glättung neu.</translation>
+    </message>
+    <message>
+        <source>The dragged part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
+        <translation>Die Oberfläche des gezogenen Teils schneidet sich selbst (%1 sich kreuzende Flächenpaare), daher lassen sich die Teile nicht zusammenführen. Bauen Sie es zuerst mit größerer Kantenlänge oder Glättung neu.</translation>
+    </message>
+    <message>
+        <source>The joints to connect are %1 apart, less than the shortest bone allowed (%2); snap them instead.</source>
+        <translation>Die zu verbindenden Gelenke liegen %1 auseinander, weniger als der kürzeste erlaubte Knochen (%2); fügen Sie sie stattdessen zusammen.</translation>
+    </message>
+    <message>
+        <source>The part cannot be cut: %1 Cutting needs a closed, consistently oriented surface.</source>
+        <translation>Das Teil lässt sich nicht schneiden: %1 Schneiden braucht eine geschlossene, einheitlich orientierte Oberfläche.</translation>
+    </message>
+    <message>
+        <source>The cut would leave a piece without a bone: its only one would be %1 long, shorter than the shortest bone allowed (%2). Cut farther from the joint.</source>
+        <translation>Der Schnitt ließe ein Stück ohne Knochen zurück: sein einziger wäre %1 lang, kürzer als der kürzeste erlaubte Knochen (%2). Schneiden Sie weiter vom Gelenk entfernt.</translation>
+    </message>
+    <message>
+        <source>Splitting there would leave a bone %1 long, shorter than the shortest bone allowed (%2); split nearer the bone&apos;s middle.</source>
+        <translation>Eine Teilung dort ließe einen Knochen von %1 Länge zurück, kürzer als der kürzeste erlaubte Knochen (%2); teilen Sie näher an der Mitte des Knochens.</translation>
+    </message>
+    <message>
+        <source>Deleting the bone would leave bone %1 only %2 long, shorter than the shortest bone allowed (%3); delete a neighbouring bone instead.</source>
+        <translation>Das Löschen des Knochens ließe Knochen %1 nur %2 lang zurück, kürzer als der kürzeste erlaubte Knochen (%3); löschen Sie stattdessen einen benachbarten Knochen.</translation>
+    </message>
+    <message>
+        <source>A key time must be a finite number of seconds.</source>
+        <translation>Die Zeit eines Schlüsselbilds muss eine endliche Anzahl von Sekunden sein.</translation>
+    </message>
+    <message>
+        <source>A key at %1 s is out of range: keys lie at 0 s or later.</source>
+        <translation>Ein Schlüsselbild bei %1 s liegt außerhalb des Bereichs: Schlüsselbilder liegen bei 0 s oder später.</translation>
+    </message>
+    <message>
+        <source>A key at %1 s is out of range: keys lie from 0 s to %2 s.</source>
+        <translation>Ein Schlüsselbild bei %1 s liegt außerhalb des Bereichs: Schlüsselbilder liegen zwischen 0 s und %2 s.</translation>
+    </message>
+    <message>
+        <source>A clip&apos;s frame rate must be a positive number of frames per second.</source>
+        <translation>Die Bildrate eines Clips muss eine positive Anzahl Bilder pro Sekunde sein.</translation>
+    </message>
+    <message>
+        <source>The part has no bone %1 to lock.</source>
+        <translation>Das Teil hat keinen Knochen %1 zum Sperren.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: there is no such file.</source>
+        <translation>„%1“ kann nicht importiert werden: die Datei existiert nicht.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it is not a file.</source>
+        <translation>„%1“ kann nicht importiert werden: es ist keine Datei.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the program that reads imports (rigmesh) is not installed.</source>
+        <translation>„%1“ kann nicht importiert werden: das Programm, das Importe liest (rigmesh), ist nicht installiert.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the import reader could not be started (%2).</source>
+        <translation>„%1“ kann nicht importiert werden: das Importprogramm konnte nicht gestartet werden (%2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: reading it took longer than %2 s, so it was stopped (the file is probably broken).</source>
+        <translation>„%1“ kann nicht importiert werden: das Lesen dauerte länger als %2 s und wurde abgebrochen (die Datei ist wahrscheinlich beschädigt).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer crashed on it (%2); the file is probably broken.</source>
+        <translation>„%1“ kann nicht importiert werden: das Importprogramm ist daran abgestürzt (%2); die Datei ist wahrscheinlich beschädigt.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: reading it needed more than %2 of memory, so it was stopped.</source>
+        <translation>„%1“ kann nicht importiert werden: das Lesen brauchte mehr als %2 Speicher und wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer failed (exit status %2).</source>
+        <translation>„%1“ kann nicht importiert werden: das Importprogramm ist gescheitert (Exit-Status %2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer returned bad data (%2).</source>
+        <translation>„%1“ kann nicht importiert werden: das Importprogramm lieferte fehlerhafte Daten (%2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: its part &quot;%2&quot; is not usable: %3</source>
+        <translation>„%1“ kann nicht importiert werden: sein Teil „%2“ ist nicht verwendbar: %3</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: %2</source>
+        <translation>„%1“ kann nicht importiert werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it is damaged or not in a format the importer knows.</source>
+        <translation>„%1“ kann nicht importiert werden: die Datei ist beschädigt oder in einem Format, das das Importprogramm nicht kennt.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the file is incomplete.</source>
+        <translation>„%1“ kann nicht importiert werden: die Datei ist unvollständig.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it holds no triangle mesh.</source>
+        <translation>„%1“ kann nicht importiert werden: sie enthält kein Dreiecksnetz.</translation>
+    </message>
+    <message>
+        <source>The mesh is too small for a bone: its only bone would be %1 long, shorter than the shortest bone allowed (%2).</source>
+        <translation>Das Netz ist zu klein für einen Knochen: sein einziger Knochen wäre %1 lang, kürzer als der kürzeste erlaubte Knochen (%2).</translation>
+    </message>
+    <message>
+        <source>This part has no left-right mirror plane (its two sides differ by more than 2% of its size), so X-mirror cannot paint it.</source>
+        <translation>Dieses Teil hat keine Links-rechts-Spiegelebene (seine beiden Seiten weichen um mehr als 2 % seiner Größe voneinander ab), daher kann X-Spiegelung es nicht malen.</translation>
     </message>
 </context>
 <context>
@@ -881,21 +1011,6 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::model::ImportReader</name>
-    <message>
-        <source>cannot import %1: no such file</source>
-        <translation>%1 kann nicht importiert werden: die Datei existiert nicht</translation>
-    </message>
-    <message>
-        <source>cannot import %1: not a file</source>
-        <translation>%1 kann nicht importiert werden: keine Datei</translation>
-    </message>
-    <message>
-        <source>cannot import %1: the program that reads imports (rigmesh) is not installed</source>
-        <translation>%1 kann nicht importiert werden: das Programm, das Importe liest (rigmesh), ist nicht installiert</translation>
-    </message>
-</context>
-<context>
     <name>rigmesh::model::MergePartsCommand</name>
     <message>
         <source>A part cannot be merged into itself.</source>
@@ -970,10 +1085,6 @@
         <translation>Skelett</translation>
     </message>
     <message>
-        <source>%1 joints, %2 bones</source>
-        <translation>%1 Gelenke, %2 Knochen</translation>
-    </message>
-    <message>
         <source>Joint %1 (root)</source>
         <translation>Gelenk %1 (Wurzel)</translation>
     </message>
@@ -999,6 +1110,26 @@
     <message>
         <source>Info</source>
         <translation>Info</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>1 joint</source>
+        <translation>1 Gelenk</translation>
+    </message>
+    <message>
+        <source>%1 joints</source>
+        <translation>%1 Gelenke</translation>
+    </message>
+    <message>
+        <source>1 bone</source>
+        <translation>1 Knochen</translation>
+    </message>
+    <message>
+        <source>%1 bones</source>
+        <translation>%1 Knochen</translation>
     </message>
 </context>
 <context>
@@ -1157,6 +1288,10 @@
     <message>
         <source>Building %1</source>
         <translation>%1 wird gebaut</translation>
+    </message>
+    <message>
+        <source>Nothing created: the stroke crosses itself where the red cross is; draw a silhouette that does not cross itself</source>
+        <translation>Nichts erstellt: Der Strich kreuzt sich beim roten Kreuz selbst; zeichnen Sie eine Silhouette, die sich nicht selbst kreuzt</translation>
     </message>
 </context>
 <context>
@@ -1402,12 +1537,16 @@
         <translation>Ungespeicherte Arbeit wiederherstellen?</translation>
     </message>
     <message>
-        <source>RigMesh Studio did not close properly. Restore the document autosaved at %1?</source>
-        <translation>RigMesh Studio wurde nicht ordnungsgemäß beendet. Das um %1 automatisch gespeicherte Dokument wiederherstellen?</translation>
-    </message>
-    <message>
         <source>Could not recover: %1</source>
         <translation>Wiederherstellen fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>RigMesh Studio did not close properly. Restore &quot;%1&quot;, autosaved %2?</source>
+        <translation>RigMesh Studio wurde nicht ordnungsgemäß beendet. „%1“ wiederherstellen, automatisch gespeichert am %2?</translation>
+    </message>
+    <message>
+        <source>%1 (recovered)</source>
+        <translation>%1 (wiederhergestellt)</translation>
     </message>
 </context>
 <context>
@@ -1609,10 +1748,6 @@
         <translation>&amp;Gewichte malen</translation>
     </message>
     <message>
-        <source>&amp;Reset Pose</source>
-        <translation>Pose &amp;zurücksetzen</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -1701,10 +1836,6 @@
         <translation>RigMesh Studio</translation>
     </message>
     <message>
-        <source>Select a part to reset its pose</source>
-        <translation>Wählen Sie ein Teil aus, um seine Pose zurückzusetzen</translation>
-    </message>
-    <message>
         <source>Select a part to delete</source>
         <translation>Wählen Sie ein Teil zum Löschen aus</translation>
     </message>
@@ -1766,10 +1897,6 @@
     <message>
         <source>Merge: drag a part into another; release over the lit joints to snap, split or connect them (Shift + release splits, Ctrl + release connects at once); Esc cancels</source>
         <translation>Zusammenführen: ziehen Sie ein Teil in ein anderes; lassen Sie über den hervorgehobenen Gelenken los, um sie einzurasten, zu teilen oder zu verbinden (Umschalt + Loslassen teilt, Strg + Loslassen verbindet sofort); Esc bricht ab</translation>
-    </message>
-    <message>
-        <source>Release to choose: snap, split or connect %1 of %2 and %3 of %4 (Shift: split, Ctrl: connect, Esc: cancel)</source>
-        <translation>Loslassen zum Wählen: %1 von %2 und %3 von %4 einrasten, teilen oder verbinden (Umschalt: teilen, Strg: verbinden, Esc: abbrechen)</translation>
     </message>
     <message>
         <source>Snap %1 of %2 onto %3 of %4 (Esc: cancel)</source>
@@ -1839,10 +1966,6 @@
     <message>
         <source>Paint Weights: select a joint (its bone is painted, shown red to blue), then drag over the part; Ctrl + click samples a vertex; Tool Options set the brush; Esc puts the stroke back</source>
         <translation>Gewichte malen: wählen Sie ein Gelenk aus (sein Knochen wird gemalt, dargestellt von Rot bis Blau), dann ziehen Sie über das Teil; Strg + Klick nimmt einen Vertex auf; die Werkzeugoptionen stellen den Pinsel ein; Esc nimmt den Strich zurück</translation>
-    </message>
-    <message>
-        <source>Select a joint of the part first (its bone is the one painted), then paint on that part</source>
-        <translation>Wählen Sie zuerst ein Gelenk des Teils aus (sein Knochen wird gemalt) und malen Sie dann auf diesem Teil</translation>
     </message>
     <message>
         <source>%1 is locked: unlock it in the Skin Weights panel to paint it</source>
@@ -1947,12 +2070,71 @@
         <translation>Aus: der Pinsel malt durch das Teil hindurch auch seine Rückseite</translation>
     </message>
     <message>
-        <source>X-mirror (through the sketch plane)</source>
-        <translation>X-Spiegelung (an der Skizzenebene)</translation>
-    </message>
-    <message>
         <source>Paint Weights</source>
         <translation>Gewichte malen</translation>
+    </message>
+    <message>
+        <source>Select a joint first: its bone is the one painted</source>
+        <translation>Wählen Sie zuerst ein Gelenk aus: Sein Knochen wird gemalt</translation>
+    </message>
+    <message>
+        <source>The stroke did not pass over %1: nothing painted</source>
+        <translation>Der Strich ging nicht über %1: nichts gemalt</translation>
+    </message>
+    <message>
+        <source>The stroke changed no weights: %1 has one bone only, whose weight is 1 everywhere</source>
+        <translation>Der Strich hat keine Gewichte geändert: %1 hat nur einen Knochen, dessen Gewicht überall 1 ist</translation>
+    </message>
+    <message>
+        <source>X-mirror (left and right)</source>
+        <translation>X-Spiegelung (links und rechts)</translation>
+    </message>
+    <message>
+        <source>Also paints the other side, about the part&apos;s left-right mirror plane, on the bone&apos;s mirror image (Blender&apos;s X-mirror)</source>
+        <translation>Malt auch die andere Seite, an der Links-rechts-Spiegelebene des Teils, auf das Spiegelbild des Knochens (Blenders X-Spiegelung)</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::PoseController</name>
+    <message>
+        <source>&amp;Mirror Pose</source>
+        <translation>Pose &amp;spiegeln</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Pose</source>
+        <translation>Pose &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Select a part to reset its pose</source>
+        <translation>Wählen Sie ein Teil aus, um seine Pose zurückzusetzen</translation>
+    </message>
+    <message>
+        <source>Select a part to mirror its pose</source>
+        <translation>Wählen Sie ein Teil aus, um seine Pose zu spiegeln</translation>
+    </message>
+    <message>
+        <source>%1 has no skeleton to pose</source>
+        <translation>%1 hat kein Skelett zum Posieren</translation>
+    </message>
+    <message>
+        <source>%1 has no left-right mirror plane: its two sides differ too much to mirror its pose</source>
+        <translation>%1 hat keine Links-rechts-Spiegelebene: Seine beiden Seiten unterscheiden sich zu sehr, um seine Pose zu spiegeln</translation>
+    </message>
+    <message>
+        <source>Mirror Pose of %1</source>
+        <translation>Pose von %1 spiegeln</translation>
+    </message>
+    <message>
+        <source>Mirrored the pose of %1 left to right</source>
+        <translation>Pose von %1 von links nach rechts gespiegelt</translation>
+    </message>
+    <message>
+        <source>Flip the selected part&apos;s pose left to right about its mirror plane, as Blender&apos;s Paste Pose Flipped</source>
+        <translation>Spiegelt die Pose des ausgewählten Teils von links nach rechts an seiner Spiegelebene, wie Blenders „Pose gespiegelt einfügen“</translation>
+    </message>
+    <message>
+        <source>Put the selected part back in its rest pose</source>
+        <translation>Setzt das ausgewählte Teil in seine Ruhepose zurück</translation>
     </message>
 </context>
 <context>
@@ -2124,14 +2306,6 @@
         <translation>Wählen Sie ein Teil im 3D-Fenster oder in der Gliederung aus.</translation>
     </message>
     <message>
-        <source>%1 vertices, %2 faces
-%3 joints, %4 bones
-</source>
-        <translation>%1 Vertices, %2 Flächen
-%3 Gelenke, %4 Knochen
-</translation>
-    </message>
-    <message>
         <source>stroke of %1 points</source>
         <translation>Strich aus %1 Punkten</translation>
     </message>
@@ -2188,6 +2362,30 @@
 Not rigged: imported as a static mesh. Tools &gt; Auto-Rig Part gives it a skeleton and skin weights.</source>
         <translation>
 Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch riggen gibt ihm ein Skelett und Skin-Gewichte.</translation>
+    </message>
+    <message>
+        <source>%1 vertices, %2 faces
+%3, %4
+</source>
+        <translation>%1 Vertices, %2 Flächen
+%3, %4
+</translation>
+    </message>
+    <message>
+        <source>1 joint</source>
+        <translation>1 Gelenk</translation>
+    </message>
+    <message>
+        <source>%1 joints</source>
+        <translation>%1 Gelenke</translation>
+    </message>
+    <message>
+        <source>1 bone</source>
+        <translation>1 Knochen</translation>
+    </message>
+    <message>
+        <source>%1 bones</source>
+        <translation>%1 Knochen</translation>
     </message>
 </context>
 <context>
@@ -2250,6 +2448,17 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
     <message>
         <source>Select</source>
         <translation>Auswählen</translation>
+    </message>
+    <message>
+        <source>%1 overlaps %2: moving does not join parts; the Merge tool (M) merges them</source>
+        <translation>%1 überlappt %2: Verschieben verbindet keine Teile; das Zusammenführen-Werkzeug (M) führt sie zusammen</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::ShortcutToolTips</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -2515,6 +2724,52 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
     </message>
 </context>
 <context>
+    <name>rigmesh::widgets::UndoStatus</name>
+    <message>
+        <source>Undone: %1</source>
+        <translation>Rückgängig gemacht: %1</translation>
+    </message>
+    <message>
+        <source>Redone: %1</source>
+        <translation>Wiederhergestellt: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::Viewpoint</name>
+    <message>
+        <source>&amp;Front</source>
+        <translation>&amp;Vorne</translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation>&amp;Hinten</translation>
+    </message>
+    <message>
+        <source>&amp;Right</source>
+        <translation>&amp;Rechts</translation>
+    </message>
+    <message>
+        <source>&amp;Left</source>
+        <translation>&amp;Links</translation>
+    </message>
+    <message>
+        <source>&amp;Top</source>
+        <translation>&amp;Oben</translation>
+    </message>
+    <message>
+        <source>B&amp;ottom</source>
+        <translation>&amp;Unten</translation>
+    </message>
+    <message>
+        <source>View&amp;point</source>
+        <translation>&amp;Blickpunkt</translation>
+    </message>
+    <message>
+        <source>&amp;Orthographic / Perspective</source>
+        <translation>Orthografisch / &amp;Perspektivisch</translation>
+    </message>
+</context>
+<context>
     <name>rigmesh::widgets::Viewport</name>
     <message>
         <source>Bone not changed: %1</source>
@@ -2689,13 +2944,6 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
         <source>Select a part to see its bones&apos; weights</source>
         <translation>Wählen Sie ein Teil aus, um die Gewichte seiner Knochen zu sehen</translation>
     </message>
-    <message numerus="yes">
-        <source>%1: %n bone(s), %2 locked</source>
-        <translation>
-            <numerusform>%1: %n Knochen, %2 gesperrt</numerusform>
-            <numerusform>%1: %n Knochen, %2 gesperrt</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Click a vertex with a weight view on (or Ctrl + click while painting) to pin its weights here.</source>
         <translation>Klicken Sie bei eingeschalteter Gewichtsansicht auf einen Vertex (oder beim Malen mit Strg + Klick), um seine Gewichte hier anzuheften.</translation>
@@ -2746,6 +2994,18 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
     <message>
         <source>Check Rig found problems in %1: click a line to select them</source>
         <translation>„Rig prüfen“ hat Probleme in %1 gefunden: klicken Sie auf eine Zeile, um sie auszuwählen</translation>
+    </message>
+    <message>
+        <source>%1: %2, %3 locked</source>
+        <translation>%1: %2, %3 gesperrt</translation>
+    </message>
+    <message>
+        <source>1 bone</source>
+        <translation>1 Knochen</translation>
+    </message>
+    <message>
+        <source>%1 bones</source>
+        <translation>%1 Knochen</translation>
     </message>
 </context>
 </TS>

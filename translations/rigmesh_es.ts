@@ -12,8 +12,16 @@
         <translation>Eliminar hueso %1 de %2</translation>
     </message>
     <message>
-        <source>%1 in %2 ms: %3 vertices and %4 bones re-skinned</source>
-        <translation>%1 en %2 ms: %3 vértices y %4 huesos con pesos recalculados</translation>
+        <source>%1 in %2 ms: %3 vertices and %4 re-skinned</source>
+        <translation>%1 en %2 ms: %3 vértices y %4 revinculados</translation>
+    </message>
+    <message>
+        <source>1 bone</source>
+        <translation>1 hueso</translation>
+    </message>
+    <message>
+        <source>%1 bones</source>
+        <translation>%1 huesos</translation>
     </message>
     <message>
         <source>Connect Bone %1 of %2</source>
@@ -57,12 +65,12 @@
 <context>
     <name>CutPartCommand</name>
     <message>
-        <source>%1 2</source>
-        <translation>%1 2</translation>
-    </message>
-    <message>
         <source>Cut %1</source>
         <translation>Cortar %1</translation>
+    </message>
+    <message>
+        <source>%1 cut</source>
+        <translation>%1 cortada</translation>
     </message>
 </context>
 <context>
@@ -414,10 +422,6 @@
         <translation>«Solo caras frontales» necesita una dirección de vista finita y no nula.</translation>
     </message>
     <message>
-        <source>This part is not mirror symmetric any more (merged or cut), so X-mirror cannot paint it.</source>
-        <translation>Esta pieza ya no es simétrica (se fusionó o se cortó), así que el espejo en X no puede pintarla.</translation>
-    </message>
-    <message>
         <source>The clean threshold must be at least 0 and below 1.</source>
         <translation>El umbral de limpieza debe ser al menos 0 y menor que 1.</translation>
     </message>
@@ -564,6 +568,132 @@
     <message>
         <source>Bone %1 starts at the skeleton&apos;s root: it has no parent to connect to.</source>
         <translation>El hueso %1 empieza en la raíz del esqueleto: no tiene padre al que conectarse.</translation>
+        <source>The surface would intersect itself (%1 crossing face pairs) near (%2, %3): the outline is too thin or turns too sharply there. Widen it there or use a smaller edge length.</source>
+        <translation>La superficie se intersecaría a sí misma (%1 pares de caras que se cruzan) cerca de (%2, %3): el contorno es demasiado fino o gira demasiado bruscamente ahí. Ensánchelo ahí o use una longitud de arista menor.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot be rebuilt: it was not drawn as one sketch (it comes from a merge, a cut, a bone edit or an import), so there is no stroke to build it from.</source>
+        <translation>«%1» no se puede reconstruir: no se dibujó como un solo boceto (procede de una fusión, un corte, una edición de huesos o una importación), así que no hay trazo desde el que construirla.</translation>
+    </message>
+    <message>
+        <source>The target part cannot be merged: %1 Merging needs closed, consistently oriented surfaces.</source>
+        <translation>La pieza de destino no se puede fusionar: %1 La fusión necesita superficies cerradas y orientadas de forma coherente.</translation>
+    </message>
+    <message>
+        <source>The dragged part cannot be merged: %1 Merging needs closed, consistently oriented surfaces.</source>
+        <translation>La pieza arrastrada no se puede fusionar: %1 La fusión necesita superficies cerradas y orientadas de forma coherente.</translation>
+    </message>
+    <message>
+        <source>The target part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
+        <translation>La superficie de la pieza de destino se interseca a sí misma (%1 pares de caras que se cruzan), así que las piezas no se pueden fusionar. Reconstrúyala antes con una longitud de arista mayor o con suavizado.</translation>
+    </message>
+    <message>
+        <source>The dragged part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
+        <translation>La superficie de la pieza arrastrada se interseca a sí misma (%1 pares de caras que se cruzan), así que las piezas no se pueden fusionar. Reconstrúyala antes con una longitud de arista mayor o con suavizado.</translation>
+    </message>
+    <message>
+        <source>The joints to connect are %1 apart, less than the shortest bone allowed (%2); snap them instead.</source>
+        <translation>Las articulaciones que se van a conectar están a %1 de distancia, menos que el hueso más corto permitido (%2); únalas en su lugar.</translation>
+    </message>
+    <message>
+        <source>The part cannot be cut: %1 Cutting needs a closed, consistently oriented surface.</source>
+        <translation>La pieza no se puede cortar: %1 El corte necesita una superficie cerrada y orientada de forma coherente.</translation>
+    </message>
+    <message>
+        <source>The cut would leave a piece without a bone: its only one would be %1 long, shorter than the shortest bone allowed (%2). Cut farther from the joint.</source>
+        <translation>El corte dejaría un trozo sin hueso: el único mediría %1, menos que el hueso más corto permitido (%2). Corte más lejos de la articulación.</translation>
+    </message>
+    <message>
+        <source>Splitting there would leave a bone %1 long, shorter than the shortest bone allowed (%2); split nearer the bone&apos;s middle.</source>
+        <translation>Dividir ahí dejaría un hueso de %1, menos que el hueso más corto permitido (%2); divida más cerca del centro del hueso.</translation>
+    </message>
+    <message>
+        <source>Deleting the bone would leave bone %1 only %2 long, shorter than the shortest bone allowed (%3); delete a neighbouring bone instead.</source>
+        <translation>Eliminar el hueso dejaría el hueso %1 con solo %2 de longitud, menos que el hueso más corto permitido (%3); elimine en su lugar un hueso vecino.</translation>
+    </message>
+    <message>
+        <source>A key time must be a finite number of seconds.</source>
+        <translation>El tiempo de una clave debe ser un número finito de segundos.</translation>
+    </message>
+    <message>
+        <source>A key at %1 s is out of range: keys lie at 0 s or later.</source>
+        <translation>Una clave en %1 s está fuera de rango: las claves están en 0 s o después.</translation>
+    </message>
+    <message>
+        <source>A key at %1 s is out of range: keys lie from 0 s to %2 s.</source>
+        <translation>Una clave en %1 s está fuera de rango: las claves están entre 0 s y %2 s.</translation>
+    </message>
+    <message>
+        <source>A clip&apos;s frame rate must be a positive number of frames per second.</source>
+        <translation>La velocidad de fotogramas de un clip debe ser un número positivo de fotogramas por segundo.</translation>
+    </message>
+    <message>
+        <source>The part has no bone %1 to lock.</source>
+        <translation>La pieza no tiene el hueso %1 para bloquear.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: there is no such file.</source>
+        <translation>No se puede importar «%1»: no existe ese archivo.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it is not a file.</source>
+        <translation>No se puede importar «%1»: no es un archivo.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the program that reads imports (rigmesh) is not installed.</source>
+        <translation>No se puede importar «%1»: el programa que lee las importaciones (rigmesh) no está instalado.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the import reader could not be started (%2).</source>
+        <translation>No se puede importar «%1»: no se pudo iniciar el lector de importaciones (%2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: reading it took longer than %2 s, so it was stopped (the file is probably broken).</source>
+        <translation>No se puede importar «%1»: leerlo tardó más de %2 s, así que se detuvo (probablemente el archivo está dañado).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer crashed on it (%2); the file is probably broken.</source>
+        <translation>No se puede importar «%1»: el importador falló con él (%2); probablemente el archivo está dañado.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: reading it needed more than %2 of memory, so it was stopped.</source>
+        <translation>No se puede importar «%1»: leerlo necesitaba más de %2 de memoria, así que se detuvo.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer failed (exit status %2).</source>
+        <translation>No se puede importar «%1»: el importador falló (estado de salida %2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the importer returned bad data (%2).</source>
+        <translation>No se puede importar «%1»: el importador devolvió datos erróneos (%2).</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: its part &quot;%2&quot; is not usable: %3</source>
+        <translation>No se puede importar «%1»: su pieza «%2» no se puede usar: %3</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: %2</source>
+        <translation>No se puede importar «%1»: %2</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it is damaged or not in a format the importer knows.</source>
+        <translation>No se puede importar «%1»: está dañado o en un formato que el importador no conoce.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: the file is incomplete.</source>
+        <translation>No se puede importar «%1»: el archivo está incompleto.</translation>
+    </message>
+    <message>
+        <source>Cannot import &quot;%1&quot;: it holds no triangle mesh.</source>
+        <translation>No se puede importar «%1»: no contiene ninguna malla de triángulos.</translation>
+    </message>
+    <message>
+        <source>The mesh is too small for a bone: its only bone would be %1 long, shorter than the shortest bone allowed (%2).</source>
+        <translation>La malla es demasiado pequeña para un hueso: su único hueso mediría %1, menos que el hueso más corto permitido (%2).</translation>
+    </message>
+    <message>
+        <source>This part has no left-right mirror plane (its two sides differ by more than 2% of its size), so X-mirror cannot paint it.</source>
+        <translation>Esta pieza no tiene plano de simetría izquierda-derecha (sus dos lados difieren en más del 2 % de su tamaño), así que el espejo en X no puede pintarla.</translation>
     </message>
 </context>
 <context>
@@ -881,21 +1011,6 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::model::ImportReader</name>
-    <message>
-        <source>cannot import %1: no such file</source>
-        <translation>no se puede importar %1: el archivo no existe</translation>
-    </message>
-    <message>
-        <source>cannot import %1: not a file</source>
-        <translation>no se puede importar %1: no es un archivo</translation>
-    </message>
-    <message>
-        <source>cannot import %1: the program that reads imports (rigmesh) is not installed</source>
-        <translation>no se puede importar %1: el programa que lee las importaciones (rigmesh) no está instalado</translation>
-    </message>
-</context>
-<context>
     <name>rigmesh::model::MergePartsCommand</name>
     <message>
         <source>A part cannot be merged into itself.</source>
@@ -970,10 +1085,6 @@
         <translation>Esqueleto</translation>
     </message>
     <message>
-        <source>%1 joints, %2 bones</source>
-        <translation>%1 articulaciones, %2 huesos</translation>
-    </message>
-    <message>
         <source>Joint %1 (root)</source>
         <translation>Articulación %1 (raíz)</translation>
     </message>
@@ -999,6 +1110,26 @@
     <message>
         <source>Info</source>
         <translation>Información</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>1 joint</source>
+        <translation>1 articulación</translation>
+    </message>
+    <message>
+        <source>%1 joints</source>
+        <translation>%1 articulaciones</translation>
+    </message>
+    <message>
+        <source>1 bone</source>
+        <translation>1 hueso</translation>
+    </message>
+    <message>
+        <source>%1 bones</source>
+        <translation>%1 huesos</translation>
     </message>
 </context>
 <context>
@@ -1157,6 +1288,10 @@
     <message>
         <source>Building %1</source>
         <translation>Construyendo %1</translation>
+    </message>
+    <message>
+        <source>Nothing created: the stroke crosses itself where the red cross is; draw a silhouette that does not cross itself</source>
+        <translation>No se creó nada: el trazo se cruza a sí mismo donde está la cruz roja; dibuje una silueta que no se cruce</translation>
     </message>
 </context>
 <context>
@@ -1402,12 +1537,16 @@
         <translation>¿Recuperar el trabajo sin guardar?</translation>
     </message>
     <message>
-        <source>RigMesh Studio did not close properly. Restore the document autosaved at %1?</source>
-        <translation>RigMesh Studio no se cerró correctamente. ¿Restaurar el documento guardado automáticamente el %1?</translation>
-    </message>
-    <message>
         <source>Could not recover: %1</source>
         <translation>No se pudo recuperar: %1</translation>
+    </message>
+    <message>
+        <source>RigMesh Studio did not close properly. Restore &quot;%1&quot;, autosaved %2?</source>
+        <translation>RigMesh Studio no se cerró correctamente. ¿Restaurar «%1», guardado automáticamente el %2?</translation>
+    </message>
+    <message>
+        <source>%1 (recovered)</source>
+        <translation>%1 (recuperado)</translation>
     </message>
 </context>
 <context>
@@ -1609,10 +1748,6 @@
         <translation>Pintar &amp;pesos</translation>
     </message>
     <message>
-        <source>&amp;Reset Pose</source>
-        <translation>&amp;Restablecer pose</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
@@ -1701,10 +1836,6 @@
         <translation>RigMesh Studio</translation>
     </message>
     <message>
-        <source>Select a part to reset its pose</source>
-        <translation>Seleccione una pieza para restablecer su pose</translation>
-    </message>
-    <message>
         <source>Select a part to delete</source>
         <translation>Seleccione la pieza que eliminar</translation>
     </message>
@@ -1766,10 +1897,6 @@
     <message>
         <source>Merge: drag a part into another; release over the lit joints to snap, split or connect them (Shift + release splits, Ctrl + release connects at once); Esc cancels</source>
         <translation>Fusionar: arrastre una pieza dentro de otra; suelte sobre las articulaciones resaltadas para ajustarlas, dividir o conectarlas (Mayús + soltar divide, Ctrl + soltar conecta directamente); Esc cancela</translation>
-    </message>
-    <message>
-        <source>Release to choose: snap, split or connect %1 of %2 and %3 of %4 (Shift: split, Ctrl: connect, Esc: cancel)</source>
-        <translation>Suelte para elegir: ajustar, dividir o conectar %1 de %2 y %3 de %4 (Mayús: dividir, Ctrl: conectar, Esc: cancelar)</translation>
     </message>
     <message>
         <source>Snap %1 of %2 onto %3 of %4 (Esc: cancel)</source>
@@ -1839,10 +1966,6 @@
     <message>
         <source>Paint Weights: select a joint (its bone is painted, shown red to blue), then drag over the part; Ctrl + click samples a vertex; Tool Options set the brush; Esc puts the stroke back</source>
         <translation>Pintar pesos: seleccione una articulación (se pinta su hueso, mostrado de rojo a azul) y arrastre sobre la pieza; Ctrl + clic toma una muestra de un vértice; las opciones de herramienta ajustan el pincel; Esc deshace el trazo</translation>
-    </message>
-    <message>
-        <source>Select a joint of the part first (its bone is the one painted), then paint on that part</source>
-        <translation>Seleccione primero una articulación de la pieza (se pinta su hueso) y luego pinte sobre esa pieza</translation>
     </message>
     <message>
         <source>%1 is locked: unlock it in the Skin Weights panel to paint it</source>
@@ -1947,12 +2070,71 @@
         <translation>Desactivado: el pincel también pinta el lado opuesto de la pieza, a través de ella</translation>
     </message>
     <message>
-        <source>X-mirror (through the sketch plane)</source>
-        <translation>Espejo en X (por el plano del boceto)</translation>
-    </message>
-    <message>
         <source>Paint Weights</source>
         <translation>Pintar pesos</translation>
+    </message>
+    <message>
+        <source>Select a joint first: its bone is the one painted</source>
+        <translation>Seleccione primero una articulación: se pinta su hueso</translation>
+    </message>
+    <message>
+        <source>The stroke did not pass over %1: nothing painted</source>
+        <translation>El trazo no pasó por %1: no se pintó nada</translation>
+    </message>
+    <message>
+        <source>The stroke changed no weights: %1 has one bone only, whose weight is 1 everywhere</source>
+        <translation>El trazo no cambió ningún peso: %1 tiene un solo hueso, cuyo peso es 1 en todas partes</translation>
+    </message>
+    <message>
+        <source>X-mirror (left and right)</source>
+        <translation>Espejo en X (izquierda y derecha)</translation>
+    </message>
+    <message>
+        <source>Also paints the other side, about the part&apos;s left-right mirror plane, on the bone&apos;s mirror image (Blender&apos;s X-mirror)</source>
+        <translation>Pinta también el otro lado, respecto al plano de simetría izquierda-derecha de la pieza, en el hueso reflejado (el espejo en X de Blender)</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::PoseController</name>
+    <message>
+        <source>&amp;Mirror Pose</source>
+        <translation>&amp;Reflejar pose</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Pose</source>
+        <translation>&amp;Restablecer pose</translation>
+    </message>
+    <message>
+        <source>Select a part to reset its pose</source>
+        <translation>Seleccione una pieza para restablecer su pose</translation>
+    </message>
+    <message>
+        <source>Select a part to mirror its pose</source>
+        <translation>Seleccione una pieza para reflejar su pose</translation>
+    </message>
+    <message>
+        <source>%1 has no skeleton to pose</source>
+        <translation>%1 no tiene esqueleto que posar</translation>
+    </message>
+    <message>
+        <source>%1 has no left-right mirror plane: its two sides differ too much to mirror its pose</source>
+        <translation>%1 no tiene plano de simetría izquierda-derecha: sus dos lados difieren demasiado para reflejar su pose</translation>
+    </message>
+    <message>
+        <source>Mirror Pose of %1</source>
+        <translation>Reflejar pose de %1</translation>
+    </message>
+    <message>
+        <source>Mirrored the pose of %1 left to right</source>
+        <translation>Pose de %1 reflejada de izquierda a derecha</translation>
+    </message>
+    <message>
+        <source>Flip the selected part&apos;s pose left to right about its mirror plane, as Blender&apos;s Paste Pose Flipped</source>
+        <translation>Refleja la pose de la pieza seleccionada de izquierda a derecha respecto a su plano de simetría, como «Pegar pose reflejada» de Blender</translation>
+    </message>
+    <message>
+        <source>Put the selected part back in its rest pose</source>
+        <translation>Devuelve la pieza seleccionada a su pose de reposo</translation>
     </message>
 </context>
 <context>
@@ -2124,14 +2306,6 @@
         <translation>Seleccione una pieza en la vista 3D o en el listado.</translation>
     </message>
     <message>
-        <source>%1 vertices, %2 faces
-%3 joints, %4 bones
-</source>
-        <translation>%1 vértices, %2 caras
-%3 articulaciones, %4 huesos
-</translation>
-    </message>
-    <message>
         <source>stroke of %1 points</source>
         <translation>trazo de %1 puntos</translation>
     </message>
@@ -2188,6 +2362,30 @@
 Not rigged: imported as a static mesh. Tools &gt; Auto-Rig Part gives it a skeleton and skin weights.</source>
         <translation>
 Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la pieza le da un esqueleto y pesos de piel.</translation>
+    </message>
+    <message>
+        <source>%1 vertices, %2 faces
+%3, %4
+</source>
+        <translation>%1 vértices, %2 caras
+%3, %4
+</translation>
+    </message>
+    <message>
+        <source>1 joint</source>
+        <translation>1 articulación</translation>
+    </message>
+    <message>
+        <source>%1 joints</source>
+        <translation>%1 articulaciones</translation>
+    </message>
+    <message>
+        <source>1 bone</source>
+        <translation>1 hueso</translation>
+    </message>
+    <message>
+        <source>%1 bones</source>
+        <translation>%1 huesos</translation>
     </message>
 </context>
 <context>
@@ -2250,6 +2448,17 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
     <message>
         <source>Select</source>
         <translation>Seleccionar</translation>
+    </message>
+    <message>
+        <source>%1 overlaps %2: moving does not join parts; the Merge tool (M) merges them</source>
+        <translation>%1 se superpone a %2: mover no une piezas; la herramienta Fusionar (M) las fusiona</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::ShortcutToolTips</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -2515,6 +2724,52 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
     </message>
 </context>
 <context>
+    <name>rigmesh::widgets::UndoStatus</name>
+    <message>
+        <source>Undone: %1</source>
+        <translation>Deshecho: %1</translation>
+    </message>
+    <message>
+        <source>Redone: %1</source>
+        <translation>Rehecho: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::Viewpoint</name>
+    <message>
+        <source>&amp;Front</source>
+        <translation>&amp;Frente</translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation>&amp;Detrás</translation>
+    </message>
+    <message>
+        <source>&amp;Right</source>
+        <translation>De&amp;recha</translation>
+    </message>
+    <message>
+        <source>&amp;Left</source>
+        <translation>&amp;Izquierda</translation>
+    </message>
+    <message>
+        <source>&amp;Top</source>
+        <translation>&amp;Arriba</translation>
+    </message>
+    <message>
+        <source>B&amp;ottom</source>
+        <translation>A&amp;bajo</translation>
+    </message>
+    <message>
+        <source>View&amp;point</source>
+        <translation>&amp;Punto de vista</translation>
+    </message>
+    <message>
+        <source>&amp;Orthographic / Perspective</source>
+        <translation>&amp;Ortográfica / Perspectiva</translation>
+    </message>
+</context>
+<context>
     <name>rigmesh::widgets::Viewport</name>
     <message>
         <source>Bone not changed: %1</source>
@@ -2689,13 +2944,6 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
         <source>Select a part to see its bones&apos; weights</source>
         <translation>Seleccione una pieza para ver los pesos de sus huesos</translation>
     </message>
-    <message numerus="yes">
-        <source>%1: %n bone(s), %2 locked</source>
-        <translation>
-            <numerusform>%1: %n hueso, %2 bloqueados</numerusform>
-            <numerusform>%1: %n huesos, %2 bloqueados</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Click a vertex with a weight view on (or Ctrl + click while painting) to pin its weights here.</source>
         <translation>Haga clic en un vértice con una vista de pesos activa (o Ctrl + clic al pintar) para fijar aquí sus pesos.</translation>
@@ -2746,6 +2994,18 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
     <message>
         <source>Check Rig found problems in %1: click a line to select them</source>
         <translation>Comprobar rig encontró problemas en %1: haga clic en una línea para seleccionarlos</translation>
+    </message>
+    <message>
+        <source>%1: %2, %3 locked</source>
+        <translation>%1: %2, %3 bloqueados</translation>
+    </message>
+    <message>
+        <source>1 bone</source>
+        <translation>1 hueso</translation>
+    </message>
+    <message>
+        <source>%1 bones</source>
+        <translation>%1 huesos</translation>
     </message>
 </context>
 </TS>

@@ -2,15 +2,38 @@
 
 #include <QPointer>
 #include <QVBoxLayout>
+#include <optional>
 
 #include "base/Error.h"
 #include "jobs/JobRunner.h"
 #include "model/ErrorText.h"
 #include "model/PartBuilder.h"
 #include "model/commands/CreatePartCommand.h"
+#include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
 
 namespace rigmesh::widgets {
+
+namespace {
+
+// The point a StrokeCrossesItselfNear error names ("(x, y)", in the
+// stroke's coordinates), if it is one.
+std::optional<Vec2> crossingOf(const Error& error) {
+    const Message& message = error.message();
+    if (message.id != MessageId::StrokeCrossesItselfNear || message.args.empty())
+        return std::nullopt;
+    QString text = QString::fromStdString(message.args.front());
+    text.remove(QLatin1Char('(')).remove(QLatin1Char(')'));
+    const QStringList xy = text.split(QLatin1Char(','));
+    bool okX = false, okY = false;
+    const double x = xy.value(0).trimmed().toDouble(&okX);
+    const double y = xy.value(1).trimmed().toDouble(&okY);
+    if (!okX || !okY)
+        return std::nullopt;
+    return Vec2(x, y);
+}
+
+}  // namespace
 
 DocumentView::DocumentView(std::unique_ptr<model::Document> document, QWidget* parent)
     : QWidget(parent), document_(std::move(document)) {
@@ -41,8 +64,23 @@ void DocumentView::createPartFromStroke(const std::vector<Vec2>& stroke,
     JobRunner::runOn(
         viewport_->jobRunner(), tr("Building %1").arg(name),
         [=, this]() -> JobRunner::Apply {
-            model::BuiltPart built =
-                model::buildPartAtDocumentLength(documentLength, stroke, name, options);
+            model::BuiltPart built;
+            try {
+                built = model::buildPartAtDocumentLength(documentLength, stroke, name, options);
+            } catch (const Error& error) {
+                // Where a stroke crosses itself is shown, not told in
+                // coordinates (the engine's message names the point).
+                const std::optional<Vec2> at = crossingOf(error);
+                if (!at)
+                    throw;
+                return [=, this]() {
+                    viewport_->setProblemMark(toQt(plane.toWorld(Vec3(at->x(), at->y(), 0.0))));
+                    emit statusMessage(tr("Nothing created: the stroke crosses itself where "
+                                          "the red cross is; draw a silhouette that does not "
+                                          "cross itself"),
+                                       8000);
+                };
+            }
             return [=, this]() mutable {
                 if (!document)
                     return;

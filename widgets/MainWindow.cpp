@@ -22,17 +22,18 @@
 
 #include "DocumentView.h"
 #include "MouseHint.h"
+#include "ShortcutToolTips.h"
+#include "UndoStatus.h"
 #include "base/Error.h"
 #include "controllers/ExchangeController.h"
 #include "controllers/FilesController.h"
+#include "controllers/PoseController.h"
 #include "controllers/RigController.h"
 #include "controllers/WeightsController.h"
 #include "jobs/JobRunner.h"
 #include "jobs/JobStatus.h"
 #include "model/ErrorText.h"
-#include "model/PoseChange.h"
 #include "model/commands/DeletePartCommand.h"
-#include "model/commands/ResetPoseCommand.h"
 #include "panels/OutlinerPanel.h"
 #include "panels/PropertiesPanel.h"
 #include "panels/WeightsPanel.h"
@@ -43,6 +44,7 @@
 #include "tools/PoseTool.h"
 #include "tools/SelectTool.h"
 #include "tools/SketchTool.h"
+#include "viewport/ViewpointActions.h"
 #include "viewport/Viewport.h"
 
 // The tool icons are compiled into this static library: register them
@@ -97,11 +99,19 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
         },
         this);
     weightsController_ = new WeightsController(*this, weights_, this);
+    pose_ = new PoseController(*this, this);
     properties_->setJobRunner(jobs_);
     mouseHint_ = new MouseHint(tabs_);
     createActions();
     createDocks();
     createTimelineActions();
+    showShortcutsInToolTips(this);
+    // An undo or redo says so in the status bar, in place of what the step
+    // itself reported.
+    new UndoStatus(
+        undoGroup_, [this](const QString& m) { showStatus(m, 4000); }, this);
+    // Below this the docks crowd the view and each other.
+    setMinimumSize(900, 600);
     applyPreferences(StudioPreferences::load());
 
     QSettings settings;
@@ -192,6 +202,7 @@ void MainWindow::createActions() {
     add(edit, tr("Co&nnect Bone"), QKeySequence(), [this] { rig_->connectSelectedBone(); })
         ->setToolTip(tr("Move the selected bone's head onto its parent's tail, as Blender's "
                         "Connected does (cut and merge need connected bones)"));
+    pose_->addMirrorAction(edit);
     edit->addSeparator();
     add(edit, tr("&Preferences..."), QKeySequence::Preferences, &MainWindow::openPreferences)
         ->setMenuRole(QAction::PreferencesRole);
@@ -206,6 +217,10 @@ void MainWindow::createActions() {
             if (auto* v = currentView())
                 v->viewport()->frameSelected();
         });
+    addViewpointMenu(viewMenu_, [this]() -> Viewport* {
+        auto* v = currentView();
+        return v ? v->viewport() : nullptr;
+    });
     viewMenu_->addSeparator();
     wireframeAction_ = viewMenu_->addAction(tr("&Wireframe"));
     wireframeAction_->setCheckable(true);
@@ -259,7 +274,7 @@ void MainWindow::createActions() {
     toolbar->addSeparator();
     createTools(tools, toolbar);
     tools->addSeparator();
-    add(tools, tr("&Reset Pose"), QKeySequence(Qt::ALT | Qt::Key_R), &MainWindow::resetPose);
+    pose_->addResetAction(tools);
     QAction* rig =
         add(tools, tr("&Auto-Rig Part"), QKeySequence(), [this] { rig_->rigSelectedPart(); });
     rig->setObjectName(QStringLiteral("autoRigPart"));
@@ -534,16 +549,6 @@ void MainWindow::createWeightViewBar() {
             if (action->data() == view)
                 action->trigger();
     });
-}
-
-void MainWindow::resetPose() {
-    model::Document* document = currentDocument();
-    if (!document || !document->contains(document->selection().part)) {
-        showStatus(tr("Select a part to reset its pose"), 4000);
-        return;
-    }
-    const model::PartId id = document->selection().part;
-    model::pushPoseChange(*document, id, new model::ResetPoseCommand(*document, id));
 }
 
 void MainWindow::deleteSelection() {

@@ -4,7 +4,7 @@
 // toolbar, a status bar for hints and errors, and the window's layout kept
 // in QSettings. It assembles: the tools live in a registry
 // (tools/ToolRegistry), each feature in its controller (controllers/: files,
-// exchange, rig, weights), the panels and tools wire themselves; the window
+// exchange, rig, weights, pose), the panels and tools wire themselves; the window
 // routes the active document to them and is their StudioHost.
 #pragma once
 
@@ -41,6 +41,7 @@ class FilesController;
 class JobRunner;
 class JobStatus;
 class OutlinerPanel;
+class PoseController;
 class PropertiesPanel;
 class RigController;
 class TimelineDock;
@@ -84,6 +85,7 @@ class MainWindow : public QMainWindow, public StudioHost {
     ExchangeController* exchange() const { return exchange_; }
     RigController* rig() const { return rig_; }
     WeightsController* weightsController() const { return weightsController_; }
+    PoseController* pose() const { return pose_; }
     // Activates the registered tool of type T (SketchTool, PoseTool, ...).
     template <typename T>
     void activateTool() {
@@ -117,7 +119,6 @@ class MainWindow : public QMainWindow, public StudioHost {
     void showWeightView(WeightView view);
     void currentTabChanged(int index);
     void updateTitle();
-    void resetPose();
     void deleteSelection();
     // Edit > Preferences.
     void openPreferences();
@@ -145,6 +146,7 @@ class MainWindow : public QMainWindow, public StudioHost {
     RigController* rig_ = nullptr;
     ExchangeController* exchange_ = nullptr;
     WeightsController* weightsController_ = nullptr;
+    PoseController* pose_ = nullptr;
 };
 
 }  // namespace rigmesh::widgets

@@ -22,6 +22,8 @@ void MainWindow::applyPreferences(const StudioPreferences& preferences) {
     preferences_ = preferences;
     preferences_.save();
     applyTheme(preferences_.theme);
+    setStyleSheet(themeStyleSheet(preferences_.theme));
+    tools_->setTheme(preferences_.theme);
     // The View menu's skinning follows at once; it applies to the current
     // view, and currentTabChanged() gives each other view the same.
     dqsAction_->setChecked(preferences_.dualQuaternionSkinning);

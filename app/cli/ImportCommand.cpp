@@ -1,5 +1,6 @@
 #include "ImportCommand.h"
 
+#include <QFile>
 #include <QSaveFile>
 #include <QString>
 #include <cstdio>
@@ -28,15 +29,25 @@ int runImport(const std::vector<std::string>& arguments) {
     for (model::PartNode& node : contents.parts) {
         const std::vector<std::string> problems = node.part->validate();
         if (!problems.empty())
-            throw Error(path.toStdString() + ": part \"" + node.name.toStdString() +
-                        "\" is not usable: " + problems.front());
+            throw Error(MessageId::ImportPartUnusable, path.toStdString(), node.name.toStdString(),
+                        problems.front());
         node.id = contents.nextPartId++;
     }
 
-    QSaveFile file(QString::fromStdString(*out));
-    if (!file.open(QIODevice::WriteOnly) ||
-        file.write(model::DocumentFile::toBytes(contents)) < 0 || !file.commit())
-        throw Error("cannot write " + *out + ": " + file.errorString().toStdString());
+    const QByteArray bytes = model::DocumentFile::toBytes(contents);
+    const QString target = QString::fromStdString(*out);
+    if (target.startsWith(QStringLiteral("/dev/fd/"))) {
+        // A descriptor the caller handed over (model/ImportReader: an unnamed
+        // temporary file), written in place: there is no folder to stage in.
+        QFile file(target);
+        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
+            file.write(bytes) != bytes.size() || !file.flush())
+            throw Error(MessageId::CannotWriteFile, *out, file.errorString().toStdString());
+    } else {
+        QSaveFile file(target);
+        if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
+            throw Error(MessageId::CannotWriteFile, *out, file.errorString().toStdString());
+    }
 
     int unrigged = 0;
     for (const model::PartNode& node : contents.parts)

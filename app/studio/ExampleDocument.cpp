@@ -4,6 +4,7 @@
 
 #include "EmbeddedExamples.h"
 #include "model/commands/CreatePartCommand.h"
+#include "model/commands/WeightCleanupCommand.h"
 #include "sketch/Sketch.h"
 
 namespace rigmesh::studio {
@@ -19,7 +20,13 @@ std::unique_ptr<model::Document> makeExampleDocument() {
     placement.translation = Vec3(-box.center().x(), -box.center().y(), 0.0);
     auto command = model::CreatePartCommand::create(
         *document, sketch.points, QString::fromStdString(sketch.name), {}, placement);
+    const model::PartId id = command->partId();
     document->undoStack()->push(command.release());
+    // Its weights are a fresh global solve (Tools > Weights > Recompute
+    // Weights), so Difference from Global Weights, the first view a newcomer
+    // tries, shows none: the sketch's construction shortcut (paper 2.4)
+    // differs at the shoulders and the crotch.
+    document->undoStack()->push(model::WeightCleanupCommand::recompute(*document, id).release());
     // An example is a starting point, not an edit: no history, not modified.
     document->undoStack()->clear();
     document->undoStack()->setClean();

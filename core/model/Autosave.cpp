@@ -3,6 +3,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QSaveFile>
 #include <QUuid>
 #include <algorithm>
 
@@ -68,6 +69,15 @@ bool Autosave::writeNow() {
         emit failed(QString::fromStdString(e.what()));
         return false;
     }
+    // Its name and file, for the offer to recover it. The document itself
+    // is recovered without them.
+    QSaveFile name(namePathOf(path_));
+    if (name.open(QIODevice::WriteOnly | QIODevice::Text)) {
+        name.write((document_->displayName() + QLatin1Char('\n') + document_->filePath() +
+                    QLatin1Char('\n'))
+                       .toUtf8());
+        name.commit();
+    }
     emit written(path_);
     return true;
 }
@@ -76,14 +86,30 @@ void Autosave::discard() {
     timer_.stop();
     if (QFileInfo::exists(path_))
         QFile::remove(path_);
+    if (QFileInfo::exists(namePathOf(path_)))
+        QFile::remove(namePathOf(path_));
+}
+
+QString Autosave::namePathOf(const QString& recoveryPath) {
+    return recoveryPath + QStringLiteral(".name");
 }
 
 QList<RecoveryFile> Autosave::recoveryFiles(const QString& directory) {
     QList<RecoveryFile> files;
     const QFileInfoList entries = QDir(directory).entryInfoList(
         {QStringLiteral("*.") + QString::fromLatin1(kSuffix)}, QDir::Files, QDir::Time);
-    for (const QFileInfo& entry : entries)
-        files.push_back({entry.absoluteFilePath(), entry.lastModified()});
+    for (const QFileInfo& entry : entries) {
+        RecoveryFile file{entry.absoluteFilePath(), entry.lastModified(), {}, {}};
+        QFile name(namePathOf(file.path));
+        if (name.open(QIODevice::ReadOnly | QIODevice::Text)) {
+            const QStringList lines = QString::fromUtf8(name.readAll()).split(QLatin1Char('\n'));
+            file.name = lines.value(0);
+            file.documentPath = lines.value(1);
+        }
+        if (file.name.isEmpty())
+            file.name = entry.completeBaseName().section(QLatin1Char('-'), 0, 0);
+        files.push_back(std::move(file));
+    }
     return files;
 }
 

@@ -1,10 +1,10 @@
 // Autosave and crash recovery. While a document has unsaved changes, its
 // contents are written to a recovery file in `directory` a few seconds after
-// the last change. The file is removed when the document becomes clean again
-// (saved, or undone back to the saved state) and when the Autosave is
-// destroyed (the document was closed cleanly). Files found in the directory
-// at start-up were left by a crash: recoveryFiles() lists them, and
-// DocumentFile::read() opens them.
+// the last change, with its name and file beside it (a ".name" file: one
+// line each), so a recovered document is named as it was. The file is removed when the document
+// becomes clean again (saved, or undone back to the saved state) and when the Autosave is destroyed
+// (the document was closed cleanly). Files found in the directory at start-up were left by a crash:
+// recoveryFiles() lists them, and DocumentFile::read() opens them.
 #pragma once
 
 #include <QDateTime>
@@ -20,6 +20,10 @@ namespace rigmesh::model {
 struct RecoveryFile {
     QString path;
     QDateTime lastModified;
+    // The document's name when it was autosaved ("Untitled 2", its file's
+    // name) and its file (empty if never saved).
+    QString name;
+    QString documentPath;
 };
 
 class Autosave : public QObject {
@@ -47,6 +51,8 @@ class Autosave : public QObject {
 
     // Recovery files left in `directory`, newest first.
     static QList<RecoveryFile> recoveryFiles(const QString& directory);
+    // The file beside a recovery file that names its document.
+    static QString namePathOf(const QString& recoveryPath);
 
   signals:
     void written(const QString& path);

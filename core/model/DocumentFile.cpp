@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <QSaveFile>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -47,6 +48,22 @@ constexpr unsigned char kMagic[] = {0xD9, 0xD9, 0xF7};
 
 std::string partLabel(const PartNode& node) {
     return "part " + std::to_string(node.id) + " (\"" + node.name.toStdString() + "\")";
+}
+
+// Every part keeps Part::validate(); a rigged part whose surface was made
+// here (not read from another program's file) is also closed, manifold and
+// consistently oriented, which merge and cut rely on (Part::validateSolid).
+void checkPartInvariants(const PartNode& node) {
+    const Part& part = *node.part;
+    std::vector<std::string> problems = part.validate();
+    if (problems.empty() && part.skeleton.boneCount() > 0 && !part.surfaceFromFile)
+        problems = part.validateSolid();
+    if (!problems.empty()) {
+        std::string problem = problems.front();
+        if (!problem.empty() && problem.back() == '.')
+            problem.pop_back();  // corrupt() ends the sentence
+        corrupt(partLabel(node) + ": " + problem);
+    }
 }
 
 JointId readJointOf(const PartNode& node, const json& value, const char* what) {
@@ -107,12 +124,20 @@ rigmesh::Clip readClipValue(const PartNode& node, const json& clip) {
     // (left by a frame rate change) come back exactly; the frame rate is set
     // last.
     rigmesh::Clip out(std::numeric_limits<double>::max());
+    std::vector<std::pair<double, rigmesh::Pose>> keys;
+    double start = 0.0;
     for (const json& key : array(clip, "keys")) {
         const double time = rawNumber(field(key, "time"), "key time");
         if (!std::isfinite(time))
             corrupt("a key time of " + partLabel(node) + " is not finite");
+        start = std::min(start, time);
+        keys.emplace_back(time, readPoseValue(node, field(key, "pose")));
+    }
+    // Keys lie at 0 s or later (pose/Clip.h); older versions let them go
+    // below, so such a clip moves as a whole to start at 0 s, as an import does.
+    for (auto& [time, pose] : keys) {
         const int before = out.keyCount();
-        out.setKey(time, readPoseValue(node, field(key, "pose")));
+        out.setKey(time - start, pose);
         if (out.keyCount() != before + 1)
             corrupt("the clip of " + partLabel(node) + " has two keys at one time");
     }
@@ -202,6 +227,7 @@ PartNode readNode(const json& object) {
     if (!object.contains("part"))
         corrupt("a part has no geometry");
     node.part = std::make_shared<const Part>(partFromJson(object.at("part")));
+    checkPartInvariants(node);
     node.pose = readPose(node, object);
     node.pinnedJoints = readPinned(node, object);
     node.clip = readClip(node, object);
@@ -291,14 +317,14 @@ DocumentContents fromBytes(const QByteArray& bytes) {
     } catch (const json::exception& e) {
         fail(QCoreApplication::translate("rigmesh::model::DocumentFile",
                                          "The document is corrupt or truncated (%1).")
-                 .arg(QString::fromUtf8(e.what())));
+                 .arg(QString::fromStdString(parseErrorReason(e))));
     } catch (const Error& e) {
         corrupt(e.what());
     }
     try {
         return readContents(std::move(root));
     } catch (const json::exception& e) {
-        corrupt(e.what());
+        corrupt(parseErrorReason(e));
     } catch (const DocumentFileError&) {
         throw;
     } catch (const Error& e) {  // an engine value refused what the file holds

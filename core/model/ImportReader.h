@@ -1,8 +1,10 @@
 // Reading files to import. Assimp 5.2.5 crashes, asserts,
 // loops or allocates gigabytes on some broken COLLADA, FBX and PLY files, so
 // the studio and the recipe runner never parse an import themselves: a child
-// process (`rigmesh import FILE -o PARTS.rigmesh`) reads it under a time and
-// an address-space limit and writes the parts as a document; this side reads
+// process (`rigmesh import FILE -o /dev/fd/3`) reads it under a time and
+// an address-space limit and writes the parts as a document into a
+// temporary file without a name (base/ChildProcess: nothing is left on disk
+// and the child dies with its parent, however that ends); this side reads
 // that document with the usual checks, plus Part::validate() on every part.
 // A crash, a timeout, the memory limit or a bad result becomes an Error with
 // a message for the user, and the caller's document is left unchanged.
@@ -22,9 +24,12 @@ struct ImportLimits {
     std::uint64_t addressSpaceBytes = 0;  // its address space (0 = no limit)
 };
 
-// The default limits for a file of `fileBytes`: generous for real scenes
-// (a minute plus a second per MiB; 2 GiB plus 64 times the file size, at most
-// 8 GiB), tight enough that a runaway reader cannot freeze or swap the machine.
+// The default limits for a file of `fileBytes`: a few seconds for a small
+// file, growing with its size (5 s plus 5 s per MiB, at most 600 s; several
+// times what reading real scenes takes, see ImportReader.cpp; eight times
+// that in sanitizer builds, which run that much slower), and 2 GiB plus 64
+// times the file size of address space, at most 8 GiB: a broken file is
+// refused in seconds, and a runaway reader cannot freeze or swap the machine.
 ImportLimits importLimitsFor(std::uint64_t fileBytes);
 
 // The parts of an imported scene as document nodes without ids (in-process;

@@ -1,5 +1,7 @@
 #include "model/SceneItemModel.h"
 
+#include "model/CountText.h"
+
 #include "part/BoneWeights.h"
 
 #include <algorithm>
@@ -89,9 +91,9 @@ QVariant SceneItemModel::displayData(const SceneNode& node, int column) const {
                 return tr("Skeleton");
             if (!part || !part->part)
                 return {};
-            return tr("%1 joints, %2 bones")
-                .arg(part->part->skeleton.jointCount())
-                .arg(part->part->skeleton.boneCount());
+            return tr("%1, %2").arg(
+                countText(part->part->skeleton.jointCount(), tr("1 joint"), tr("%1 joints")),
+                countText(part->part->skeleton.boneCount(), tr("1 bone"), tr("%1 bones")));
         case SceneNode::Kind::Joint: {
             const Skeleton* skeleton = part && part->part ? &part->part->skeleton : nullptr;
             const bool known = skeleton && skeleton->hasJoint(node.jointId());

@@ -14,7 +14,11 @@
 // importer's per-component quaternion blend equals our slerp); a Smooth or
 // Constant clip, baked per frame on export, the frame nearest that middle.
 //
-// usage: expected_clips DOCUMENT.rigmesh OUT.json
+// With --at-second-key the time is the clip's second key instead (the first
+// when it has one): a key's time, for importers that bake the animation at
+// their own frame rate (Godot, tests/external/godot).
+//
+// usage: expected_clips DOCUMENT.rigmesh OUT.json [--at-second-key]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -41,9 +45,12 @@ nlohmann::json point(const Vec3& p) {
     return {p.x(), p.y(), p.z()};
 }
 
-// The time checked between the clip's first two keys (see above).
-double checkedTime(const rigmesh::Clip& clip) {
+// The time checked between the clip's first two keys, or at its second key
+// (see above).
+double checkedTime(const rigmesh::Clip& clip, bool atSecondKey) {
     const std::vector<double> keys = clip.keyTimes();
+    if (atSecondKey)
+        return keys.size() > 1 ? keys[1] : keys[0];
     const double middle = keys.size() > 1 ? 0.5 * (keys[0] + keys[1]) : keys[0];
     if (clip.interpolation == rigmesh::Interpolation::Linear)
         return middle;
@@ -71,8 +78,9 @@ std::vector<int> sampleVertices(const std::vector<Vec3>& rest, const std::vector
 }
 
 int run(int argc, char** argv) {
-    if (argc != 3) {
-        std::fprintf(stderr, "usage: expected_clips DOCUMENT.rigmesh OUT.json\n");
+    const bool atSecondKey = argc == 4 && std::string(argv[3]) == "--at-second-key";
+    if (argc != 3 && !atSecondKey) {
+        std::fprintf(stderr, "usage: expected_clips DOCUMENT.rigmesh OUT.json [--at-second-key]\n");
         return 2;
     }
     const rigmesh::model::DocumentContents document =
@@ -91,7 +99,7 @@ int run(int argc, char** argv) {
         for (const rigmesh::Clip* clip : rigmesh::model::clipsOf(node)) {
             if (clip->keyCount() == 0)
                 continue;
-            const double time = checkedTime(*clip);
+            const double time = checkedTime(*clip, atSecondKey);
             const rigmesh::Pose pose = clip->evaluate(time);
             const std::vector<Vec3> posedFull =
                 rigmesh::posePart(*node.part, pose, linear).mesh.vertices;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "base/MessageText.h"
 #include "mesh/MeshChecks.h"
 #include "model/DocumentFile.h"
 #include "pose/Skinning.h"
@@ -49,11 +50,43 @@ std::string partProblem(const Part& part, Topology topology) {
     return {};
 }
 
+std::string messageProblem(const std::string& message) {
+    if (message.empty())
+        return "rejected without a message";
+    if (message.find('\n') != std::string::npos)
+        return "a message of more than one line: " + message;
+    if (oneLine(message, kMaxMessageCharacters) != message)
+        return "a message longer than " + std::to_string(kMaxMessageCharacters) +
+               " characters: " + message.substr(0, 300);
+    if (message.find("json.exception") != std::string::npos)
+        return "a message with the JSON library's own text: " + message;
+    return {};
+}
+
+// Every key of every clip at 0 s or later (glTF refuses negative times).
+std::string clipProblem(const model::PartNode& node) {
+    std::vector<const Clip*> clips{&node.clip};
+    for (const Clip& other : node.otherClips)
+        clips.push_back(&other);
+    for (const Clip* clip : clips)
+        for (const double time : clip->keyTimes())
+            if (!(time >= 0.0))
+                return "a key at " + std::to_string(time) + " s, before 0 s";
+    return {};
+}
+
 std::string documentProblem(const model::Document& document, Topology topology) {
     for (const model::PartNode& node : document.parts()) {
         if (!node.part)
             return "a part has no geometry";
-        if (std::string problem = partProblem(*node.part, topology); !problem.empty())
+        // A surface made here is closed whatever the document holds.
+        const Topology expected =
+            node.part->surfaceFromFile ? Topology::Any : Topology::ClosedManifold;
+        if (std::string problem =
+                partProblem(*node.part, topology == Topology::Any ? topology : expected);
+            !problem.empty())
+            return "part " + std::to_string(node.id) + ": " + problem;
+        if (std::string problem = clipProblem(node); !problem.empty())
             return "part " + std::to_string(node.id) + ": " + problem;
         if (node.part->skeleton.jointCount() == 0)
             continue;

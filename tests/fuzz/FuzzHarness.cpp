@@ -35,13 +35,14 @@ double environmentNumber(const char* name, double fallback) {
     return end != text && *end == '\0' && value >= 0 ? value : fallback;
 }
 
-double inputBoundSeconds() {
+double inputBoundSeconds(double targetSeconds) {
 #ifdef RIGMESH_FUZZ_SANITIZED
     constexpr double kSlowdown = 10;  // Debug + ASan/UBSan
 #else
     constexpr double kSlowdown = 1;
 #endif
-    return kSlowdown * environmentNumber("RIGMESH_FUZZ_INPUT_SECONDS", 5);
+    return kSlowdown * (targetSeconds > 0.0 ? targetSeconds
+                                            : environmentNumber("RIGMESH_FUZZ_INPUT_SECONDS", 5));
 }
 
 fs::path outputFolder() {
@@ -158,11 +159,11 @@ std::vector<std::string> filesIn(const std::string& folder, const std::string& e
     return out;
 }
 
-FuzzSummary runFuzzTarget(const FuzzTarget& target) {
+FuzzSummary runFuzzTarget(const FuzzTarget& target, double inputSeconds) {
     FuzzSummary summary;
     const double budget = environmentNumber("RIGMESH_FUZZ_SECONDS", 15);
     const auto seed = static_cast<std::uint64_t>(environmentNumber("RIGMESH_FUZZ_SEED", 20261123));
-    const double bound = inputBoundSeconds();
+    const double bound = inputBoundSeconds(inputSeconds);
     const fs::path output = outputFolder();
     const fs::path current = output / (target.name + "-current." + target.extension);
     std::snprintf(gCurrentInputPath, sizeof gCurrentInputPath, "%s", current.c_str());

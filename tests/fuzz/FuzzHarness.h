@@ -44,7 +44,9 @@ struct FuzzSummary {
 };
 
 // Runs the target; adds GoogleTest failures. Returns the counts.
-FuzzSummary runFuzzTarget(const FuzzTarget& target);
+// `inputSeconds` > 0 is this target's per-input bound instead of the
+// default above (a whole modelling session is one input of some targets).
+FuzzSummary runFuzzTarget(const FuzzTarget& target, double inputSeconds = 0.0);
 
 // Reads a whole file (throws std::runtime_error if it cannot).
 std::string readFile(const std::string& path);

@@ -262,6 +262,52 @@ TEST(DocumentFile, ClipKeyTimesOutOfRangeAreRejected) {
     EXPECT_EQ(DocumentFile::fromBytes(clipWithKeysAt(10.0, 24)).parts[1].clip.keyCount(), 2);
 }
 
+// A part's invariants (Part::validate) and, for a surface made here, what
+// merge and cut rely on: closed, manifold, consistently oriented.
+TEST(DocumentFile, AFaceCornerMovedOntoAnotherVertexIsRejectedNamingThePart) {
+    const auto moved = [](bool fromFile) {
+        return editedSample([fromFile](auto& root) {
+            auto& part = root["parts"][1]["part"];
+            auto& faces = part["mesh"]["faces"];
+            // Face 0's first corner onto a vertex of another face, not its own.
+            for (std::size_t k = 3; k < faces.size(); ++k)
+                if (faces[k] != faces[0] && faces[k] != faces[1] && faces[k] != faces[2]) {
+                    faces[0] = faces[k];
+                    break;
+                }
+            if (fromFile)
+                part["surfaceFromFile"] = true;
+        });
+    };
+    expectRejected(moved(false), "boundary edges");
+    expectRejected(moved(false), "part 2 (\"Y\")");
+    // An imported surface may be open: it loads (merge and cut refuse it).
+    EXPECT_EQ(DocumentFile::fromBytes(moved(true)).parts.size(), 2u);
+    // A face repeating a vertex breaks Part::validate for any part.
+    expectRejected(editedSample([](auto& root) {
+                       auto& part = root["parts"][1]["part"];
+                       part["surfaceFromFile"] = true;
+                       part["mesh"]["faces"][0] = part["mesh"]["faces"][1];
+                   }),
+                   "repeats a vertex");
+}
+
+TEST(DocumentFile, ACorruptFileNamesNoLibraryInternals) {
+    const QByteArray bytes = bytesOf(*sampleDocument());
+    for (const QByteArray& bad : {bytes.left(bytes.size() / 3), bytes + QByteArray("x"),
+                                  QByteArray("\xD9\xD9\xF7\xFF\x00", 5)}) {
+        try {
+            DocumentFile::fromBytes(bad);
+            ADD_FAILURE() << "accepted";
+        } catch (const DocumentFileError& e) {
+            const std::string text = e.what();
+            EXPECT_EQ(text.find("json.exception"), std::string::npos) << text;
+            EXPECT_EQ(text.find("parse_error"), std::string::npos) << text;
+            EXPECT_NE(text.find("byte"), std::string::npos) << "says where: " << text;
+        }
+    }
+}
+
 TEST(DocumentFile, DeeplyNestedListsAreRejectedWithoutRecursingIntoThem) {
     // 100000 nested one-element arrays: 100 kB that would overflow the stack.
     QByteArray bytes("\xD9\xD9\xF7", 3);

@@ -183,7 +183,7 @@ TEST(CutPartCommand, AStrokeInAViewCutsAndABadCutChangesNothing) {
                          {"stroke", {{0.05, -5.0}, {0.0, 5.0}}},
                          {"view", {{"direction", {0, 0, -1}}, {"up", {0, 1, 0}}}}}});
     ASSERT_EQ(document.partCount(), 2);
-    EXPECT_EQ(document.parts()[1].name, QStringLiteral("tube 2"));
+    EXPECT_EQ(document.parts()[1].name, QStringLiteral("tube cut"));
 }
 
 }  // namespace

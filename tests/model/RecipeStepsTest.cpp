@@ -291,6 +291,53 @@ TEST(RecipeSteps, ErrorsNameTheStepItsCommandAndTheReason) {
     }
 }
 
+TEST(RecipeSteps, StepsThatWouldLeaveNoValidResultAreRefusedWithTheReason) {
+    struct Case {
+        json step;
+        std::string message;
+    };
+    Sketched s;
+    runSteps(s.document, {{{"command", "key"}, {"part", 1}, {"time", 0.0}}});
+    const BoneId bone = s.node(1).part->skeleton.bones().front().id;
+    const std::vector<Case> cases = {
+        // Keys before 0 s reached glTF files as negative animation times.
+        {{{"command", "key"}, {"part", 1}, {"time", -1.0}},
+         "step 1 (key): A key at -1 s is out of range: keys lie at 0 s or later."},
+        {{{"command", "move_keys"}, {"part", 1}, {"times", {0.0}}, {"by", -0.25}},
+         "step 1 (move_keys): A key at -0.25 s is out of range"},
+        // Every bone id of a step is checked, "locked" as "bone".
+        {{{"command", "paint_weights"},
+          {"part", 1},
+          {"bone", bone},
+          {"locked", {99}},
+          {"center", {0, 0, 0}},
+          {"radius", 0.3}},
+         "step 1 (paint_weights): The part has no bone 99 to lock."},
+    };
+    const QByteArray before = bytesOf(s.document);
+    const int steps = s.stack().count();
+    for (const Case& c : cases) {
+        const std::string message = stepError(s.document, {c.step});
+        EXPECT_EQ(message.rfind(c.message, 0), 0u) << "got: " << message;
+        EXPECT_EQ(bytesOf(s.document), before) << c.message;
+        EXPECT_EQ(s.stack().count(), steps) << c.message;
+    }
+}
+
+TEST(RecipeSteps, RebuildingAPartWithoutAStrokeSaysWhy) {
+    // It said "The stroke has only 0 distinct points".
+    // A bone edit, like a merge, a cut or an import, leaves no stroke.
+    Sketched s;
+    const BoneId bone = s.node(0).part->skeleton.bones().front().id;
+    runSteps(s.document, {{{"command", "split_bone"}, {"part", 0}, {"bone", bone}}});
+    const std::string message = stepError(s.document, {{{"command", "rebuild"}, {"part", "body"}}});
+    EXPECT_EQ(message.rfind("step 1 (rebuild): \"body\" cannot be rebuilt: it was not drawn as one "
+                            "sketch",
+                            0),
+              0u)
+        << message;
+}
+
 TEST(RecipeSteps, AmbiguousNamesMustBeReferredToByIndex) {
     Document document;
     const std::vector<Vec2> stroke = ellipseStroke(1.0, 0.3);

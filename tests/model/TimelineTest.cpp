@@ -207,6 +207,27 @@ TEST(Timeline, ARateChangeKeepsKeysOnTheirFramesAndUndoes) {
     EXPECT_THROW(SetTimelineCommand(k.document, settings), Error);
 }
 
+TEST(Timeline, ARateChangeRetimesEachClipByItsOwnRate) {
+    // A clip at 30 fps (as an import brings it) keyed on its frame 30 (1 s)
+    // in a 24 fps timeline: the timeline going to 30 fps leaves the key on
+    // frame 30 at 1 s. Retimed by the timeline's old rate it went to 0.8 s.
+    Keyed k;  // keys at 0, 0.5 and 1 s
+    runSteps(k.document, {{{"command", "clip_settings"}, {"part", 0}, {"frameRate", 30}}});
+    ASSERT_EQ(k.node().clip.framesPerSecond(), 30.0);
+    const std::vector<double> before = k.node().clip.keyTimes();
+    ASSERT_EQ(before, (std::vector<double>{0.0, 0.5, 1.0}));
+    TimelineSettings settings = k.document.timeline();
+    settings.framesPerSecond = 30;
+    settings.endFrame = 90;
+    k.stack().push(new SetTimelineCommand(k.document, settings));
+    EXPECT_EQ(k.node().clip.keyTimes(), before);
+    // Going on to 60 fps, the keys stay on the clip's frames 0, 15 and 30.
+    settings.framesPerSecond = 60;
+    settings.endFrame = 180;
+    k.stack().push(new SetTimelineCommand(k.document, settings));
+    EXPECT_EQ(k.node().clip.keyTimes(), (std::vector<double>{0.0, 0.25, 0.5}));
+}
+
 TEST(Timeline, TimelineStepReplaysAndErrs) {
     Keyed k;
     runSteps(k.document, {{{"command", "timeline"}, {"start", 5}, {"end", 60}, {"frameRate", 25}}});
@@ -303,6 +324,20 @@ TEST(TimelineFile, AVersion2FileIsMigrated) {
     const DocumentContents thirty = DocumentFile::fromBytes(documentBytes(root));
     EXPECT_EQ(thirty.timeline.framesPerSecond, 30.0);
     EXPECT_EQ(thirty.timeline.endFrame, 90);
+}
+
+TEST(TimelineFile, KeysOfOlderFilesBeforeZeroMoveToStartAtZero) {
+    // Older versions let keys go below 0 s (a key at -1 s, keys moved by
+    // -0.25 s); such a clip moves as a whole, as an import's does.
+    Keyed k;  // keys at 0, 0.5 and 1 s
+    json root = documentJson(bytesOf(k.document));
+    root["parts"][0]["clip"]["keys"][0]["time"] = -1.0;
+    const DocumentContents loaded = DocumentFile::fromBytes(documentBytes(root));
+    ASSERT_EQ(loaded.parts.size(), 1u);
+    EXPECT_EQ(loaded.parts[0].clip.keyTimes(), (std::vector<double>{0.0, 1.5, 2.0}));
+    // Clips that start at 0 s or later keep their times exactly.
+    EXPECT_EQ(DocumentFile::fromBytes(bytesOf(k.document)).parts[0].clip.keyTimes(),
+              k.node().clip.keyTimes());
 }
 
 TEST(TimelineFile, BadTimelinesAndClipNamesAreCorrupt) {

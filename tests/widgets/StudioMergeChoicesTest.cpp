@@ -48,9 +48,13 @@ TEST_F(StudioMergeChoices, APlainReleaseOffersSnapSplitAndConnectAndSplitsFromTh
                                   QStringLiteral("S&plit the bone here"),
                                   QStringLiteral("&Connect by a new bone"),
                                   QStringLiteral("Cancel (Esc)")}));
-    EXPECT_EQ(menu->activeAction()->text(), items.front()) << "Snap is the default";
+    // The drop point lies on the body's bone away from its joints: Split is
+    // what it suggests, the active item.
+    EXPECT_EQ(menu->activeAction()->text(), items[1]);
 
-    QTest::keyClick(menu, Qt::Key_Down);  // hovering Split previews it
+    QTest::keyClick(menu, Qt::Key_Down);  // hovering Connect previews it
+    EXPECT_TRUE(status().startsWith(QStringLiteral("Connect "))) << status().toStdString();
+    QTest::keyClick(menu, Qt::Key_Up);  // and back to Split
     EXPECT_TRUE(status().startsWith(QStringLiteral("Split a bone of body")))
         << status().toStdString();
     QTest::qWait(100);
@@ -75,8 +79,10 @@ TEST_F(StudioMergeChoices, ConnectFromTheMenuJoinsTheJointsByANewBone) {
     drag(viewport(), shortDrag());
     QMenu* menu = choices();
     ASSERT_NE(menu, nullptr);
-    QTest::keyClick(menu, Qt::Key_Down);
-    QTest::keyClick(menu, Qt::Key_Down);
+    // Down from the suggested item to Connect.
+    for (int i = 0;
+         i < 3 && menu->activeAction()->text() != QStringLiteral("&Connect by a new bone"); ++i)
+        QTest::keyClick(menu, Qt::Key_Down);
     EXPECT_TRUE(status().startsWith(QStringLiteral("Connect "))) << status().toStdString();
     QTest::keyClick(menu, Qt::Key_Return);
     rigmesh::test::waitForJobs();  // the merge runs in the background

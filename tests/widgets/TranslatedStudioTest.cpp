@@ -76,7 +76,8 @@ TEST_P(TranslatedStudio, MenusAndDocksSpeakTheLanguage) {
 TEST_P(TranslatedStudio, AnEngineMessageReachesTheStatusBarTranslated) {
     window->activateTool<widgets::SketchTool>();
     // A figure eight: the engine's stroke cleaner refuses it by id
-    // (MessageId::StrokeCrossesItselfNear) and the studio translates it.
+    // (MessageId::StrokeCrossesItselfNear) and the studio says so in its
+    // language, pointing at the red cross it draws there.
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
     std::vector<QPointF> eight;
     for (int i = 0; i <= 120; ++i) {
@@ -146,16 +147,17 @@ INSTANTIATE_TEST_SUITE_P(
              QStringLiteral("&Werkzeuge"), QStringLiteral("&Animation"), QStringLiteral("&Hilfe")},
             QStringLiteral("Zeitleiste"),
             QStringLiteral("Skin-Gewichte"),
-            QStringLiteral("Nichts erstellt: Der Strich kreuzt sich selbst bei"),
+            QStringLiteral("Nichts erstellt: Der Strich kreuzt sich beim roten Kreuz selbst"),
             QStringLiteral("Abbrechen")},
-        Language{"es",
-                 {QStringLiteral("&Archivo"), QStringLiteral("&Editar"), QStringLiteral("&Vista"),
-                  QStringLiteral("&Herramientas"), QStringLiteral("A&nimación"),
-                  QStringLiteral("A&yuda")},
-                 QStringLiteral("Línea de tiempo"),
-                 QStringLiteral("Pesos de piel"),
-                 QStringLiteral("No se ha creado nada: El trazo se cruza a sí mismo cerca de"),
-                 QStringLiteral("Cancelar")}),
+        Language{
+            "es",
+            {QStringLiteral("&Archivo"), QStringLiteral("&Editar"), QStringLiteral("&Vista"),
+             QStringLiteral("&Herramientas"), QStringLiteral("A&nimación"),
+             QStringLiteral("A&yuda")},
+            QStringLiteral("Línea de tiempo"),
+            QStringLiteral("Pesos de piel"),
+            QStringLiteral("No se creó nada: el trazo se cruza a sí mismo donde está la cruz roja"),
+            QStringLiteral("Cancelar")}),
     [](const testing::TestParamInfo<Language>& language) {
         return std::string(language.param.code);
     });

@@ -16,6 +16,7 @@
 #include "model/Document.h"
 #include "model/DocumentFile.h"
 #include "model/ErrorText.h"
+#include "preferences/Translations.h"
 
 namespace rigmesh::widgets {
 namespace {
@@ -177,18 +178,25 @@ void FilesController::rebuildRecentMenu() {
     recentMenu_->setEnabled(!files.isEmpty());
 }
 
+QString FilesController::recoveryQuestion(const model::RecoveryFile& file) {
+    return tr("RigMesh Studio did not close properly. Restore \"%1\", autosaved %2?")
+        .arg(file.name, studioLocale().toString(file.lastModified, QLocale::LongFormat));
+}
+
 void FilesController::offerRecovery() {
     const auto files = model::Autosave::recoveryFiles(recoveryDirectory_);
     for (const auto& file : files) {
-        const auto answer = QMessageBox::question(
-            host_.dialogParent(), tr("Recover unsaved work?"),
-            tr("RigMesh Studio did not close properly. Restore the document autosaved at %1?")
-                .arg(file.lastModified.toString()),
-            QMessageBox::Yes | QMessageBox::Discard);
+        const auto answer =
+            QMessageBox::question(host_.dialogParent(), tr("Recover unsaved work?"),
+                                  recoveryQuestion(file), QMessageBox::Yes | QMessageBox::Discard);
         if (answer == QMessageBox::Yes) {
             try {
                 auto document =
                     std::make_unique<model::Document>(model::DocumentFile::read(file.path));
+                // Named as it was: its own file (Save writes there), or its
+                // title, marked recovered.
+                document->setFilePath(file.documentPath);
+                document->setUntitledName(tr("%1 (recovered)").arg(file.name));
                 // Recovered work is unsaved work: mark it modified so closing asks.
                 document->undoStack()->resetClean();
                 host_.addDocument(std::move(document));
@@ -197,7 +205,10 @@ void FilesController::offerRecovery() {
                 continue;
             }
         }
+        // Restored (it lives on in the open document) or discarded: the
+        // recovery file and the name beside it go.
         QFile::remove(file.path);
+        QFile::remove(model::Autosave::namePathOf(file.path));
     }
 }
 

@@ -11,7 +11,8 @@ class QMenu;
 
 namespace rigmesh::model {
 class Autosave;
-}
+struct RecoveryFile;
+}  // namespace rigmesh::model
 
 namespace rigmesh::widgets {
 
@@ -38,8 +39,12 @@ class FilesController : public QObject {
     bool close(DocumentView* view);
     // Closes every document (the window closing); false if one was kept.
     bool closeAll();
-    // Offers to restore documents left in the recovery folder by a crash.
+    // Offers to restore documents left in the recovery folder by a crash,
+    // each named as it was.
     void offerRecovery();
+    // The question offerRecovery() asks about `file`: its document's name
+    // and when it was autosaved, in the studio's language.
+    static QString recoveryQuestion(const model::RecoveryFile& file);
 
     // Autosaves `view`'s document from now on (MainWindow::addDocument).
     void watch(DocumentView* view);

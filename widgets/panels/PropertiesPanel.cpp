@@ -16,6 +16,7 @@
 
 #include "base/Error.h"
 #include "jobs/JobRunner.h"
+#include "model/CountText.h"
 #include "model/Document.h"
 #include "model/ErrorText.h"
 #include "model/PartBuilder.h"
@@ -121,16 +122,19 @@ void PropertiesPanel::refresh() {
     if (!hasPart) {
         title_->setText(tr("No part selected"));
         figures_->setText(tr("Select a part in the viewport or the outliner."));
+        // This document's own edge length, never the last one shown (of
+        // another document's part).
+        edgeLength_->setValue(document_ ? model::documentEdgeLength(*document_) : 0.0);
         return;
     }
     const Part& part = *node->part;
     title_->setText(node->name);
     figures_->setText(
-        tr("%1 vertices, %2 faces\n%3 joints, %4 bones\n")
+        tr("%1 vertices, %2 faces\n%3, %4\n")
             .arg(part.mesh.vertexCount())
             .arg(part.mesh.faceCount())
-            .arg(part.skeleton.jointCount())
-            .arg(part.skeleton.boneCount()) +
+            .arg(model::countText(part.skeleton.jointCount(), tr("1 joint"), tr("%1 joints")),
+                 model::countText(part.skeleton.boneCount(), tr("1 bone"), tr("%1 bones"))) +
         (!node->stroke.empty() ? tr("stroke of %1 points").arg(node->stroke.size())
                                : tr("made by merging or importing: no stroke to rebuild from")) +
         (part.skeleton.jointCount() == 0

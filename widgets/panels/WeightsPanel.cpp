@@ -15,6 +15,7 @@
 
 #include "base/Error.h"
 #include "model/BoneDisplayName.h"
+#include "model/CountText.h"
 #include "model/ErrorText.h"
 #include "model/commands/SetBoneLockCommand.h"
 #include "part/BoneWeights.h"
@@ -160,8 +161,9 @@ void WeightsPanel::refreshBones() {
     const std::map<BoneId, int> leading = leadingVertexCounts(part.weights.perVertex);
     const std::optional<BoneId> selectedBone =
         boneForJoint(part.skeleton, document_->selection().joint);
-    title_->setText(tr("%1: %n bone(s), %2 locked", nullptr, part.skeleton.boneCount())
-                        .arg(node->name)
+    title_->setText(tr("%1: %2, %3 locked")
+                        .arg(node->name, model::countText(part.skeleton.boneCount(), tr("1 bone"),
+                                                          tr("%1 bones")))
                         .arg(part.lockedBones.size()));
     bones_->setRowCount(part.skeleton.boneCount());
     for (int b = 0; b < part.skeleton.boneCount(); ++b) {

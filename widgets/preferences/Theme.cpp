@@ -1,6 +1,7 @@
 #include "preferences/Theme.h"
 
 #include <QApplication>
+#include <QImage>
 #include <QPainter>
 #include <QPixmap>
 #include <QStyle>
@@ -73,6 +74,44 @@ QIcon tintedIcon(const QIcon& icon, const QColor& colour) {
         tinted.addPixmap(pixmap);
     }
     return tinted;
+}
+
+QString themeStyleSheet(Theme theme) {
+    // Fusion draws a check box in a list or table with an outline a shade
+    // darker than the window and fills it with the base colour: on the dark
+    // palette both are near black and the box vanishes (the Skin Weights
+    // panel's Lock column). Light outlines, and a filled box when checked.
+    return theme == Theme::Dark ? QStringLiteral(
+                                      "QAbstractItemView::indicator { width: 12px; height: 12px; "
+                                      "border: 1px solid #9a9a9a; border-radius: 2px; "
+                                      "background: #2a2a2a; } "
+                                      "QAbstractItemView::indicator:checked { background: #4772b3; "
+                                      "border-color: #c8d6ee; }")
+                                : QString();
+}
+
+QIcon themedIcon(const QString& path, Theme theme) {
+    const QIcon icon(path);
+    if (theme == Theme::Light)
+        return icon;
+    QIcon themed;
+    for (int size : {16, 20, 24, 32, 48}) {
+        QImage image = icon.pixmap(size, size).toImage().convertToFormat(QImage::Format_ARGB32);
+        for (int y = 0; y < image.height(); ++y) {
+            auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = QColor::fromRgba(line[x]);
+                // The icons' line colour is a dark grey (#3c3c3c): dark and
+                // without colour becomes as light; colours stay.
+                if (c.alpha() == 0 || c.hslSaturation() > 40 || c.lightness() > 110)
+                    continue;
+                const int light = 255 - c.lightness() / 2;
+                line[x] = qRgba(light, light, light, c.alpha());
+            }
+        }
+        themed.addPixmap(QPixmap::fromImage(image));
+    }
+    return themed;
 }
 
 }  // namespace rigmesh::widgets

@@ -18,4 +18,14 @@ void applyTheme(Theme theme);
 // palette made readable on the dark one.
 QIcon tintedIcon(const QIcon& icon, const QColor& colour);
 
+// The style sheet a window of the studio takes for `theme` (set on the
+// window, not the application, so the application's style stays Fusion):
+// on the dark palette, check boxes in lists and tables with light outlines.
+QString themeStyleSheet(Theme theme);
+
+// The studio's own icon at `path` (resources/icons, drawn in dark grey
+// lines for a light palette) for `theme`: on the dark one its dark grey
+// lines are light grey, its colours kept.
+QIcon themedIcon(const QString& path, Theme theme);
+
 }  // namespace rigmesh::widgets

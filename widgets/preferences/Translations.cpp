@@ -86,6 +86,12 @@ QString resolvedLanguage(const QString& preference) {
     return QStringLiteral("en");
 }
 
+QLocale studioLocale() {
+    const QString language =
+        studioTranslator().isEmpty() ? QString() : studioTranslator().language();
+    return language.isEmpty() ? QLocale(QLocale::English) : QLocale(language);
+}
+
 bool installTranslations(const QString& code) {
     QCoreApplication::removeTranslator(&studioTranslator());
     QCoreApplication::removeTranslator(&qtTranslator());

@@ -5,6 +5,8 @@
 // installed: standard dialog buttons, context menus of text fields).
 #pragma once
 
+#include <QLocale>
+
 #include <QList>
 #include <QString>
 
@@ -35,5 +37,9 @@ QString resolvedLanguage(const QString& preference);
 // applies a new language at its next start. False if the studio's own
 // translation of a language other than English is missing.
 bool installTranslations(const QString& code);
+
+// The locale of the language installTranslations() installed (English
+// without one), for dates and numbers in the studio's own sentences.
+QLocale studioLocale();
 
 }  // namespace rigmesh::widgets

@@ -5,6 +5,8 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QScrollBar>
+#include <QSignalBlocker>
 #include <QToolTip>
 #include <QWheelEvent>
 #include <algorithm>
@@ -53,6 +55,14 @@ TimelineView::TimelineView(QWidget* parent) : QWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
     setAttribute(Qt::WA_OpaquePaintEvent);
+    // The rows scroll under the ruler; the bar shows when they do not fit.
+    scrollBar_ = new QScrollBar(Qt::Vertical, this);
+    scrollBar_->setObjectName(QStringLiteral("timelineRowsScrollBar"));
+    scrollBar_->hide();
+    connect(scrollBar_, &QScrollBar::valueChanged, this, [this](int value) {
+        scrollRows_ = value;
+        update();
+    });
 }
 
 TimelineView::~TimelineView() = default;
@@ -65,7 +75,10 @@ void TimelineView::setModel(model::TimelineItemModel* model) {
     selection_.clear();
     scrollRows_ = 0;
     if (model_) {
-        auto refresh = [this] { update(); };
+        auto refresh = [this] {
+            updateScrollBar();
+            update();
+        };
         connect(model_, &QAbstractItemModel::dataChanged, this, refresh);
         connect(model_, &QAbstractItemModel::headerDataChanged, this, refresh);
         connect(model_, &QAbstractItemModel::rowsInserted, this, refresh);
@@ -74,11 +87,47 @@ void TimelineView::setModel(model::TimelineItemModel* model) {
             std::erase_if(selection_, [this](const auto& entry) {
                 return !model_->indexOfPart(entry.first).isValid();
             });
+            updateScrollBar();
             update();
         });
         connect(model_, &QAbstractItemModel::modelReset, this, refresh);
     }
+    updateScrollBar();
     update();
+}
+
+int TimelineView::rowCount() const {
+    int total = 0;
+    for (int r = 0; model_ && r < model_->rowCount(); ++r) {
+        ++total;
+        const QModelIndex partIndex = model_->index(r, 0);
+        if (expanded_.contains(static_cast<model::PartId>(
+                partIndex.data(model::TimelineItemModel::PartIdRole).toUInt())))
+            total += model_->rowCount(partIndex);
+    }
+    return total;
+}
+
+void TimelineView::updateScrollBar() {
+    const int visible = std::max(1, (height() - kRulerHeight) / kRowHeight);
+    const int hidden = std::max(0, rowCount() - visible);
+    const QSignalBlocker block(scrollBar_);
+    scrollBar_->setRange(0, hidden);
+    scrollBar_->setPageStep(visible);
+    scrollRows_ = std::clamp(scrollRows_, 0, hidden);
+    scrollBar_->setValue(scrollRows_);
+    scrollBar_->setVisible(hidden > 0);
+    scrollBar_->setGeometry(width() - scrollBar_->sizeHint().width(), kRulerHeight,
+                            scrollBar_->sizeHint().width(), height() - kRulerHeight);
+}
+
+int TimelineView::keyAreaRight() const {
+    return width() - (scrollBar_->isVisible() ? scrollBar_->width() : 0);
+}
+
+void TimelineView::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    updateScrollBar();
 }
 
 void TimelineView::setSelectedKeys(KeySelection selection) {
@@ -102,6 +151,7 @@ void TimelineView::setExpanded(model::PartId part, bool expanded) {
         expanded_.insert(part);
     else
         expanded_.erase(part);
+    updateScrollBar();
     update();
 }
 
@@ -123,7 +173,7 @@ double TimelineView::pixelsPerFrame() const {
     const auto& timeline = model_->document()->timeline();
     const double frames =
         timeline.endFrame - timeline.startFrame + 3.0;  // a frame's margin each side
-    return std::max(1e-3, (width() - kHeaderWidth) / frames);
+    return std::max(1e-3, (keyAreaRight() - kHeaderWidth) / frames);
 }
 
 double TimelineView::xOfFrame(double frame) const {
@@ -136,7 +186,7 @@ int TimelineView::frameAt(double x) const {
 }
 
 QRect TimelineView::rulerRect() const {
-    return {kHeaderWidth, 0, width() - kHeaderWidth, kRulerHeight};
+    return {kHeaderWidth, 0, keyAreaRight() - kHeaderWidth, kRulerHeight};
 }
 
 std::vector<TimelineView::Row> TimelineView::rows() const {
@@ -382,15 +432,8 @@ void TimelineView::wheelEvent(QWheelEvent* event) {
         return;
     // Scroll the rows, three at a time per notch.
     const int notches = event->angleDelta().y() / 120;
-    int total = 0;
-    for (int r = 0; r < model_->rowCount(); ++r) {
-        ++total;
-        const QModelIndex partIndex = model_->index(r, 0);
-        if (expanded_.contains(static_cast<model::PartId>(
-                partIndex.data(model::TimelineItemModel::PartIdRole).toUInt())))
-            total += model_->rowCount(partIndex);
-    }
-    scrollRows_ = std::clamp(scrollRows_ - 3 * notches, 0, std::max(0, total - 1));
+    scrollRows_ -= 3 * notches;
+    updateScrollBar();
     update();
 }
 

@@ -2,7 +2,8 @@
 // as Blender's timeline and dope sheet are. A ruler of frames (the time in
 // seconds on hover) over one row per part with its keys as diamonds, each
 // part expandable into one row per joint (with hold bars where a joint keeps
-// its rotation to the next key); the current frame is a blue line.
+// its rotation to the next key); the current frame is a blue line. Rows
+// that do not fit scroll (the wheel, or the scroll bar that then shows).
 //
 // Mouse: the ruler scrubs (click to jump, drag to scrub, live); a click on a
 // key selects it (Shift adds or removes), a drag from empty space selects
@@ -21,6 +22,8 @@
 #include <vector>
 
 #include "model/TimelineItemModel.h"
+
+class QScrollBar;
 
 namespace rigmesh::widgets {
 
@@ -70,6 +73,7 @@ class TimelineView : public QWidget {
     void mouseReleaseEvent(QMouseEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
   private:
     struct Row {
@@ -79,6 +83,12 @@ class TimelineView : public QWidget {
         int top = 0;  // pixel
     };
     std::vector<Row> rows() const;
+    // Every row, scrolled out of view or not.
+    int rowCount() const;
+    // The scroll bar's range, page and place for the rows and the height.
+    void updateScrollBar();
+    // Where the key area ends on the right (left of the scroll bar).
+    int keyAreaRight() const;
     std::optional<Row> rowAt(int y) const;
     // The key under the pixel, as (part, exact time).
     std::optional<std::pair<model::PartId, double>> keyAt(const QPointF& pixel) const;
@@ -96,6 +106,7 @@ class TimelineView : public QWidget {
     std::set<model::PartId> expanded_;
     KeySelection selection_;
     int scrollRows_ = 0;  // rows scrolled out of view at the top
+    QScrollBar* scrollBar_ = nullptr;
 
     enum class Gesture { None, Scrub, PressKey, DragKeys, BoxSelect };
     Gesture gesture_ = Gesture::None;

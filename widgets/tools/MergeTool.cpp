@@ -20,6 +20,13 @@ namespace rigmesh::widgets {
 
 namespace {
 
+// A dropped joint this close (pixels) to a joint of the other part snaps
+// onto it; farther, the other part's bone is split where the joint fell.
+constexpr double kSnapPixels = 30.0;
+// A split within this fraction of a bone's length from its end snaps onto
+// that end instead.
+constexpr double kSplitEnds = 0.1;
+
 bool rigged(const model::PartNode& node) {
     return node.part && node.part->skeleton.boneCount() > 0;
 }
@@ -78,18 +85,11 @@ void MergeTool::move(Viewport& viewport, QMouseEvent* event) {
     drag_->dragTo(viewport, event->position());
     candidate_ = findCandidate(viewport);
     if (candidate_)
-        candidate_ =
-            withMode(document, *candidate_, modeOf(event->modifiers()).value_or(MergeMode::Snap));
-    const QString what = !candidate_ ? tr("Drag the part into another to merge them")
-                         : modeOf(event->modifiers())
-                             ? describe(document, drag_->part(), *candidate_)
-                             : tr("Release to choose: snap, split or connect %1 of %2 and %3 "
-                                  "of %4 (Shift: split, Ctrl: connect, Esc: cancel)")
-                                   .arg(model::jointDisplayName(candidate_->draggedJoint),
-                                        document.part(drag_->part()).name,
-                                        model::jointDisplayName(candidate_->targetJoint),
-                                        document.part(candidate_->target).name);
-    emit status(what);
+        candidate_ = withMode(document, *candidate_,
+                              modeOf(event->modifiers()).value_or(candidate_->preferred));
+    // What a release here suggests (the menu offers the others too).
+    emit status(candidate_ ? describe(document, drag_->part(), *candidate_)
+                           : tr("Drag the part into another to merge them"));
 }
 
 std::optional<MergeTool::Candidate> MergeTool::findCandidate(const Viewport& viewport) const {
@@ -97,48 +97,82 @@ std::optional<MergeTool::Candidate> MergeTool::findCandidate(const Viewport& vie
     const model::PartNode& dragged = document.part(drag_->part());
     if (!rigged(dragged))
         return std::nullopt;
-    const Eigen::AlignedBox3d draggedBox = model::worldBounds(dragged);
+    const QSizeF size(viewport.size());
+    auto screen = [&](const Vec3& p) {
+        const QVector3D s = viewport.camera().project(toQt(p), size);
+        return QPointF(s.x(), s.y());
+    };
+    // The dragged joint is the one nearest (on screen) to another part's
+    // skeleton: where the part was dropped.
     std::optional<Candidate> best;
     double bestDistance = 0.0;
-    for (const model::PartNode& node : document.parts()) {
-        // "Close proximity" (paper 3.2): the parts' boxes overlap.
-        if (node.id == dragged.id || !node.visible || !rigged(node) ||
-            !model::worldBounds(node).intersects(draggedBox))
+    for (const model::PartId id : drag_->overlapping(document)) {
+        const model::PartNode& node = document.part(id);
+        if (!rigged(node))
             continue;
-        for (const Joint& from : dragged.part->skeleton.joints())
-            for (const Joint& to : node.part->skeleton.joints()) {
-                const Vec3 a = dragged.placement.toWorld(from.position);
-                const Vec3 b = node.placement.toWorld(to.position);
-                const double d = (a - b).norm();
-                if (!best || d < bestDistance) {
-                    best = Candidate{node.id, from.id, to.id, a, b, MergeMode::Snap};
-                    bestDistance = d;
-                }
+        const Skeleton& target = node.part->skeleton;
+        for (const Joint& from : dragged.part->skeleton.joints()) {
+            const Vec3 a = dragged.placement.toWorld(from.position);
+            const QPointF at = screen(a);
+            for (const Bone& bone : target.bones()) {
+                const Vec3 head = node.placement.toWorld(target.joint(bone.head).position);
+                const Vec3 tail = node.placement.toWorld(target.joint(bone.tail).position);
+                const QPointF h = screen(head), t = screen(tail);
+                const QPointF ht = t - h;
+                const double length2 = QPointF::dotProduct(ht, ht);
+                const double u =
+                    length2 > 0.0 ? std::clamp(QPointF::dotProduct(at - h, ht) / length2, 0.0, 1.0)
+                                  : 0.0;
+                const double d = QLineF(at, h + u * ht).length();
+                if (best && d >= bestDistance)
+                    continue;
+                bestDistance = d;
+                best = Candidate{};
+                best->target = id;
+                best->draggedJoint = from.id;
+                best->draggedPoint = a;
+                best->splitPoint = head + u * (tail - head);
+                // A split this near a bone's end would leave a stub: the
+                // end is snapped onto instead.
+                best->splitNear = u < kSplitEnds         ? bone.head
+                                  : u > 1.0 - kSplitEnds ? bone.tail
+                                                         : kNoJoint;
             }
-    }
-    return best;
-}
-
-MergeTool::Candidate MergeTool::withMode(const model::Document& document, Candidate candidate,
-                                         MergeMode mode) const {
-    candidate.mode = mode;
-    const model::PartNode& target = document.part(candidate.target);
-    candidate.targetPoint =
-        target.placement.toWorld(target.part->skeleton.joint(candidate.targetJoint).position);
-    if (mode != MergeMode::Split)
-        return candidate;
-    // The dragged joint projected on the other part's nearest bone.
-    double nearest = -1.0;
-    for (const BoneSegment& bone : target.part->boneSegments()) {
-        const BoneSegment world{target.placement.toWorld(bone.head),
-                                target.placement.toWorld(bone.tail)};
-        const Vec3 p = closestPointOnSegment(candidate.draggedPoint, world);
-        const double d = (p - candidate.draggedPoint).norm();
-        if (nearest < 0.0 || d < nearest) {
-            nearest = d;
-            candidate.targetPoint = p;
         }
     }
+    if (!best)
+        return std::nullopt;
+    // The target's joint nearest the drop on screen: snapped onto when
+    // within the snap radius, else the bone is split where the joint fell.
+    const model::PartNode& node = document.part(best->target);
+    const QPointF drop = screen(best->draggedPoint);
+    double nearest = -1.0;
+    for (const Joint& to : node.part->skeleton.joints()) {
+        const Vec3 b = node.placement.toWorld(to.position);
+        const double d = QLineF(drop, screen(b)).length();
+        if (nearest < 0.0 || d < nearest) {
+            nearest = d;
+            best->targetJoint = to.id;
+            best->jointPoint = b;
+        }
+    }
+    if (nearest <= kSnapPixels) {
+        best->preferred = MergeMode::Snap;
+    } else if (best->splitNear != kNoJoint) {
+        best->targetJoint = best->splitNear;
+        best->jointPoint =
+            node.placement.toWorld(node.part->skeleton.joint(best->splitNear).position);
+        best->preferred = MergeMode::Snap;
+    } else {
+        best->preferred = MergeMode::Split;
+    }
+    return withMode(document, *best, best->preferred);
+}
+
+MergeTool::Candidate MergeTool::withMode(const model::Document&, Candidate candidate,
+                                         MergeMode mode) const {
+    candidate.mode = mode;
+    candidate.targetPoint = mode == MergeMode::Split ? candidate.splitPoint : candidate.jointPoint;
     return candidate;
 }
 
@@ -168,6 +202,7 @@ void MergeTool::release(Viewport& viewport, QMouseEvent* event) {
         drag_.reset();
         return;
     }
+    drag_->dragTo(viewport, event->position());
     std::optional<Candidate> candidate = findCandidate(viewport);
     if (!candidate) {
         // Not near another part: an ordinary move, one undo step.
@@ -199,11 +234,13 @@ void MergeTool::offerChoices(Viewport& viewport, const QPointF& pixel) {
         {MergeMode::Snap, tr("&Snap the joints together")},
         {MergeMode::Split, tr("S&plit the bone here")},
         {MergeMode::Connect, tr("&Connect by a new bone")}};
+    // The item for what the drop point suggests is active: Enter takes it.
     QAction* first = nullptr;
     for (const auto& [mode, text] : items) {
         QAction* action = menu->addAction(text);
         action->setData(static_cast<int>(mode));
-        first = first ? first : action;
+        if (!first || (candidate_ && mode == candidate_->preferred))
+            first = action;
         // Hovering an item previews it: the lit joints or point and the status.
         connect(action, &QAction::hovered, this, [this, view, mode = mode] {
             if (!view || !pending_ || !candidate_ || !view->document()->contains(pending_->part()))
@@ -336,6 +373,18 @@ void MergeTool::cancel(Viewport& viewport) {
     }
     drag_.reset();
     candidate_.reset();
+}
+
+std::vector<ViewportTool::PartInFront> MergeTool::partsInFront(const Viewport& viewport) const {
+    const std::shared_ptr<PartDrag>& drag = drag_ ? drag_ : pending_;
+    if (!drag || !viewport.document()->contains(drag->part()))
+        return {};
+    // See-through and in front of the part it goes into, and a second copy
+    // where the merge would put it (snap and split move it onto the joint).
+    PartInFront shown{drag->part(), std::nullopt};
+    if (candidate_ && candidate_->mode != MergeMode::Connect)
+        shown.resultOffset = candidate_->targetPoint - candidate_->draggedPoint;
+    return {shown};
 }
 
 void MergeTool::addOverlay(const Viewport& viewport, ColouredVertices& lines) const {

@@ -1,12 +1,17 @@
-// Merge tool (M), paper 3.2: drag a part near another; the nearest pair of
-// joints lights up (a line between them, crosses on both) and the status bar
-// says what a release will do. Release over a candidate opens a small menu:
-// Snap (the default item), Split (the other part's bone under the dragged
-// joint) or Connect (a new bone between the two joints); hovering an item
-// previews it, Esc or a click elsewhere puts the part back. Shift + release
-// splits and Ctrl + release connects at once, without the menu. Esc during
-// the drag (or a tool switch) puts the part back too. The move and the
-// merge are one undo step; a refused merge puts the part back and says why.
+// Merge tool (M), paper 3.2: drag a part into another. The merge is chosen
+// where the part is dropped: the dragged joint nearest (on screen) to the
+// other part's skeleton snaps onto that part's joint when one is within 30
+// pixels of it, else splits that part's nearest bone where the joint fell
+// (a split within a tenth of a bone's end snaps onto the end). The pair
+// lights up (a line between them, crosses on both), the dragged part shows
+// see-through in front of the other with a second copy where the merge puts
+// it, and the status bar says what a release will do. Release opens a small
+// menu: Snap, Split (the point where the joint fell) or Connect (a new bone
+// between the joints), the suggested one active; hovering an item previews
+// it, Esc or a click elsewhere puts the part back. Shift + release splits and
+// Ctrl + release connects at once, without the menu. Esc during the drag (or
+// a tool switch) puts the part back too. The move and the merge are one undo
+// step; a refused merge puts the part back and says why.
 #pragma once
 
 #include <QObject>
@@ -34,6 +39,7 @@ class MergeTool : public ViewportTool {
     void release(Viewport& viewport, QMouseEvent* event) override;
     void cancel(Viewport& viewport) override;
     void addOverlay(const Viewport& viewport, ColouredVertices& lines) const override;
+    std::vector<PartInFront> partsInFront(const Viewport& viewport) const override;
 
     // The Snap / Split / Connect menu while it waits for a choice, else null.
     QMenu* choices() const;
@@ -43,14 +49,18 @@ class MergeTool : public ViewportTool {
     struct Candidate {
         model::PartId target = model::kNoPart;
         JointId draggedJoint = kNoJoint;
-        JointId targetJoint = kNoJoint;
-        Vec3 draggedPoint, targetPoint;  // the joints (split: the point on the bone)
+        JointId targetJoint = kNoJoint;  // nearest the drop on screen (snap, connect)
+        JointId splitNear = kNoJoint;    // the bone end a split point lies close to
+        Vec3 draggedPoint = Vec3::Zero();
+        Vec3 jointPoint = Vec3::Zero();   // targetJoint
+        Vec3 splitPoint = Vec3::Zero();   // on the target's bone, where the joint fell
+        Vec3 targetPoint = Vec3::Zero();  // of the mode: jointPoint or splitPoint
         MergeMode mode = MergeMode::Snap;
+        MergeMode preferred = MergeMode::Snap;  // what the drop point suggests
     };
-    // The nearest pair of joints, as a snap.
+    // The merge where the dragged part is, in the mode its drop suggests.
     std::optional<Candidate> findCandidate(const Viewport& viewport) const;
-    // The candidate in `mode` (a split targets the point on the other part's
-    // nearest bone).
+    // The candidate in `mode`.
     Candidate withMode(const model::Document& document, Candidate candidate, MergeMode mode) const;
     QString describe(const model::Document& document, model::PartId dragged,
                      const Candidate& candidate) const;

@@ -49,25 +49,24 @@ void PaintTool::press(Viewport& viewport, QMouseEvent* event) {
         sample(viewport, event->position());
         return;
     }
+    // The stroke paints the selected joint's part wherever the cursor
+    // passes over it; it may start beside the part (as in Blender).
     const std::optional<BoneId> bone = selectedBone(document);
-    const auto hit = viewport.surfaceAt(event->position());
-    if (!bone || !hit || hit->part != document.selection().part) {
-        emit status(
-            tr("Select a joint of the part first (its bone is the one painted), then paint on "
-               "that part"));
+    if (!bone) {
+        emit status(tr("Select a joint first: its bone is the one painted"));
         return;
     }
-    const Part& before = *document.part(hit->part).part;
+    const model::PartId part = document.selection().part;
+    const Part& before = *document.part(part).part;
     if (before.lockedBones.contains(*bone)) {
         emit status(tr("%1 is locked: unlock it in the Skin Weights panel to paint it")
                         .arg(model::boneDisplayName(before, *bone)));
         return;
     }
-    stroke_ = std::make_unique<model::SkinningPreview>(document, hit->part);
+    stroke_ = std::make_unique<model::SkinningPreview>(document, part);
     bone_ = *bone;
     working_ = std::make_shared<Part>(before);
     painter_ = std::make_unique<WeightPainter>(working_->mesh);
-    skipped_ = 0;
     dabs_.clear();
     dab(viewport, event->position());
     lastDab_ = event->position();
@@ -110,7 +109,7 @@ void PaintTool::dab(Viewport& viewport, const QPointF& pixel) {
     dab.radius = radius;
     dab.strength = strength;
     dab.value = value;
-    dab.mirror = mirror && working_->mirror.size() == working_->mesh.vertices.size();
+    dab.mirror = mirror;
     if (frontFacesOnly)
         dab.towardsViewer = -toEigen(viewport.camera().forward());
     WeightDab partDab = dab;
@@ -119,7 +118,7 @@ void PaintTool::dab(Viewport& viewport, const QPointF& pixel) {
         partDab.towardsViewer = placement.directionToLocal(*dab.towardsViewer);
     partDab.locked = working_->lockedBones;
     try {
-        skipped_ += painter_->paint(*working_, partDab).skippedLocked;
+        painter_->paint(*working_, partDab);
     } catch (const Error& error) {
         emit status(model::errorText(error));
         return;
@@ -156,17 +155,25 @@ void PaintTool::release(Viewport& viewport, QMouseEvent*) {
         return;
     model::Document& document = *viewport.document();
     const model::PartId part = stroke_->partId();
-    if (document.contains(part) && !dabs_.empty()) {
+    if (document.contains(part) && dabs_.empty()) {
+        emit status(
+            tr("The stroke did not pass over %1: nothing painted").arg(document.part(part).name));
+    } else if (document.contains(part)) {
         // The stroke as one command, painted again on the part as the stroke
         // found it.
         try {
             QString message;
             stroke_->commit([&]() -> std::unique_ptr<QUndoCommand> {
                 auto command = model::PaintWeightsCommand::create(document, part, dabs_);
+                const QString name = document.part(part).name;
                 if (command->changedVertices() == 0) {
                     // Nothing to undo: no step in the history for it.
                     message =
-                        command->skippedVertices() > 0
+                        command->skippedOnlyBone() > 0
+                            ? tr("The stroke changed no weights: %1 has one bone only, whose "
+                                 "weight is 1 everywhere")
+                                  .arg(name)
+                        : command->skippedVertices() > 0
                             ? tr("The stroke changed no weights: every other bone there is locked")
                             : tr("The stroke changed no weights: they are already as it paints");
                     return nullptr;
@@ -273,8 +280,11 @@ QWidget* PaintTool::optionsWidget() {
     front->setToolTip(tr("Off: the brush also paints the far side of the part, through it"));
     connect(front, &QCheckBox::toggled, this, [this](bool on) { frontFacesOnly = on; });
     form->addRow(front);
-    auto* mirrorBox = new QCheckBox(tr("X-mirror (through the sketch plane)"), options_);
+    auto* mirrorBox = new QCheckBox(tr("X-mirror (left and right)"), options_);
     mirrorBox->setObjectName(QStringLiteral("paintMirror"));
+    mirrorBox->setToolTip(
+        tr("Also paints the other side, about the part's left-right mirror plane, on the bone's "
+           "mirror image (Blender's X-mirror)"));
     connect(mirrorBox, &QCheckBox::toggled, this, [this](bool on) { mirror = on; });
     form->addRow(mirrorBox);
     return options_;

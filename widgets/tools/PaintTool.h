@@ -6,7 +6,10 @@
 // Replace weight, front faces only (on by default: a brush never paints
 // through a limb onto its far side) and X-mirror. Every dab auto-normalises
 // and keeps the part's locked bones; a stroke is one undo step (one
-// PaintWeightsCommand the recipe replays). Ctrl + click samples: the
+// PaintWeightsCommand the recipe replays). A stroke paints the selected
+// joint's part wherever it passes over it, and may start beside it. X-mirror
+// paints the other side too, about the part's left-right mirror plane
+// (rig/MirrorSymmetry). Ctrl + click samples: the
 // vertex's weights are pinned in the Weights panel and the Replace weight
 // becomes the bone's weight there (Blender's Sample Weight). Esc puts the
 // stroke back.
@@ -66,7 +69,6 @@ class PaintTool : public ViewportTool {
     BoneId bone_ = 0;
     std::shared_ptr<Part> working_;           // with the stroke's dabs so far
     std::unique_ptr<WeightPainter> painter_;  // over working_'s mesh
-    int skipped_ = 0;                         // vertex visits no dab could change
     std::vector<WeightDab> dabs_;             // centres in document coordinates
     QPointF lastDab_;
     QPointF cursor_;

@@ -34,4 +34,16 @@ void PartDrag::dragTo(const Viewport& viewport, const QPointF& pixel) {
     preview_.preview(target);
 }
 
+std::vector<model::PartId> PartDrag::overlapping(const model::Document& document) const {
+    std::vector<model::PartId> parts;
+    if (!document.contains(part()))
+        return parts;
+    const Eigen::AlignedBox3d box = model::worldBounds(document.part(part()));
+    for (const model::PartNode& node : document.parts())
+        if (node.id != part() && node.visible && node.part &&
+            model::worldBounds(node).intersects(box))
+            parts.push_back(node.id);
+    return parts;
+}
+
 }  // namespace rigmesh::widgets

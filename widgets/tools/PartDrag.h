@@ -8,6 +8,7 @@
 
 #include <QPointF>
 #include <QVector3D>
+#include <vector>
 
 #include "model/preview/PlacementPreview.h"
 
@@ -24,6 +25,9 @@ class PartDrag {
     // Previews the placement the cursor at `pixel` gives.
     void dragTo(const Viewport& viewport, const QPointF& pixel);
     model::PlacementPreview& preview() { return preview_; }
+    // The other visible parts the dragged one overlaps (their boxes meet:
+    // the paper's "close proximity" for a merge, 3.2), in document order.
+    std::vector<model::PartId> overlapping(const model::Document& document) const;
 
   private:
     model::PlacementPreview preview_;

@@ -35,6 +35,18 @@ void SelectTool::move(Viewport& viewport, QMouseEvent* event) {
     if (!drag_ || !(event->buttons() & Qt::LeftButton))
         return;
     drag_->dragTo(viewport, event->position());
+    // Moving a part into another does not join them: say which tool does,
+    // and show the part in front so it does not vanish inside the other.
+    const model::Document& document = *viewport.document();
+    const std::vector<model::PartId> under = drag_->overlapping(document);
+    const bool overlapping = !under.empty();
+    if (overlapping && !overlapping_)
+        emit status(tr("%1 overlaps %2: moving does not join parts; the Merge tool (M) merges "
+                       "them")
+                        .arg(document.part(drag_->part()).name, document.part(under.front()).name));
+    else if (!overlapping && overlapping_)
+        emit status(hint());
+    overlapping_ = overlapping;
 }
 
 void SelectTool::release(Viewport&, QMouseEvent*) {
@@ -42,11 +54,19 @@ void SelectTool::release(Viewport&, QMouseEvent*) {
     if (drag_)
         drag_->preview().commit();
     drag_.reset();
+    overlapping_ = false;
 }
 
 void SelectTool::cancel(Viewport&) {
     // A drag cut short (tool switch) puts the part back.
     drag_.reset();
+    overlapping_ = false;
+}
+
+std::vector<ViewportTool::PartInFront> SelectTool::partsInFront(const Viewport&) const {
+    if (!drag_ || !overlapping_)
+        return {};
+    return {PartInFront{drag_->part(), std::nullopt}};
 }
 
 }  // namespace rigmesh::widgets

@@ -3,6 +3,8 @@
 #include <QAction>
 #include <QIcon>
 
+#include "preferences/Theme.h"
+
 namespace rigmesh::widgets {
 
 ToolRegistry::ToolRegistry(QObject* parent) : QObject(parent), group_(this) {}
@@ -16,7 +18,7 @@ QAction* ToolRegistry::add(ViewportTool* tool, const QString& text, const QKeySe
     action->setChecked(entries_.empty());
     group_.addAction(action);
     connect(action, &QAction::triggered, this, [this, tool] { activate(tool); });
-    entries_.push_back({tool, action});
+    entries_.push_back({tool, action, iconPath});
     return action;
 }
 
@@ -32,6 +34,11 @@ QAction* ToolRegistry::actionOf(const ViewportTool* tool) const {
         if (entry.tool == tool)
             return entry.action;
     return nullptr;
+}
+
+void ToolRegistry::setTheme(Theme theme) {
+    for (const Entry& entry : entries_)
+        entry.action->setIcon(themedIcon(entry.iconPath, theme));
 }
 
 void ToolRegistry::activate(ViewportTool* tool) {

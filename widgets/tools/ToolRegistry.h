@@ -11,6 +11,7 @@
 #include <QString>
 #include <vector>
 
+#include "preferences/StudioPreferences.h"
 #include "viewport/ViewportTool.h"
 
 class QAction;
@@ -25,6 +26,7 @@ class ToolRegistry : public QObject {
     struct Entry {
         ViewportTool* tool = nullptr;
         QAction* action = nullptr;
+        QString iconPath;
     };
 
     // Takes `tool` (parented to the registry) and makes its action; the
@@ -36,6 +38,8 @@ class ToolRegistry : public QObject {
     QAction* actionOf(const ViewportTool* tool) const;
     // Checks the tool's action and emits activated (also when it already is).
     void activate(ViewportTool* tool);
+    // The actions' icons drawn for the light or dark theme.
+    void setTheme(Theme theme);
     // The registered tool of type T, or nullptr.
     template <typename T>
     T* find() const {

@@ -15,7 +15,10 @@ QVector3D OrbitCamera::forward() const {
 }
 
 QVector3D OrbitCamera::right() const {
-    return QVector3D::crossProduct(forward(), QVector3D(0, 1, 0)).normalized();
+    // Horizontal, from the yaw alone: defined straight above and below too
+    // (the top and bottom views).
+    const double yaw = qDegreesToRadians(yawDegrees_);
+    return QVector3D(std::cos(yaw), 0.0, -std::sin(yaw));
 }
 
 QVector3D OrbitCamera::up() const {
@@ -35,22 +38,67 @@ QMatrix4x4 OrbitCamera::viewMatrix() const {
 QMatrix4x4 OrbitCamera::projectionMatrix(const QSizeF& viewport) const {
     QMatrix4x4 projection;
     const double aspect = viewport.height() > 0 ? viewport.width() / viewport.height() : 1.0;
+    if (orthographic_) {
+        // Depth reaches behind the eye too: nothing is clipped away by
+        // zooming in.
+        const double h = halfHeightAtTarget();
+        projection.ortho(static_cast<float>(-h * aspect), static_cast<float>(h * aspect),
+                         static_cast<float>(-h), static_cast<float>(h),
+                         static_cast<float>(-distance_ * 100.0),
+                         static_cast<float>(distance_ * 100.0));
+        return projection;
+    }
     projection.perspective(static_cast<float>(fieldOfViewDegrees_), static_cast<float>(aspect),
                            static_cast<float>(distance_ * 0.01),
                            static_cast<float>(distance_ * 100.0));
     return projection;
 }
 
+double OrbitCamera::halfHeightAtTarget() const {
+    return distance_ * std::tan(qDegreesToRadians(fieldOfViewDegrees_) / 2.0);
+}
+
 void OrbitCamera::orbit(const QPointF& delta) {
-    yawDegrees_ -= delta.x() * 0.4;
-    // Stop short of the poles so "up" stays defined.
-    pitchDegrees_ = std::clamp(pitchDegrees_ + delta.y() * 0.4, -89.0, 89.0);
+    yawDegrees_ = std::remainder(yawDegrees_ - delta.x() * kDegreesPerPixel, 360.0);
+    pitchDegrees_ = std::clamp(pitchDegrees_ + delta.y() * kDegreesPerPixel, -90.0, 90.0);
+}
+
+void OrbitCamera::setAxisView(AxisView view) {
+    switch (view) {
+        case AxisView::Front:
+            setView(0.0, 0.0);
+            break;
+        case AxisView::Back:
+            setView(180.0, 0.0);
+            break;
+        case AxisView::Right:
+            setView(90.0, 0.0);
+            break;
+        case AxisView::Left:
+            setView(-90.0, 0.0);
+            break;
+        case AxisView::Top:
+            setView(0.0, 90.0);
+            break;
+        case AxisView::Bottom:
+            setView(0.0, -90.0);
+            break;
+    }
+}
+
+std::optional<AxisView> OrbitCamera::axisView() const {
+    for (AxisView view : {AxisView::Front, AxisView::Back, AxisView::Right, AxisView::Left,
+                          AxisView::Top, AxisView::Bottom}) {
+        OrbitCamera axis = *this;
+        axis.setAxisView(view);
+        if ((axis.forward() - forward()).length() < 1e-6f && (axis.up() - up()).length() < 1e-6f)
+            return view;
+    }
+    return std::nullopt;
 }
 
 void OrbitCamera::pan(const QPointF& delta, const QSizeF& viewport) {
-    const double worldPerPixel = 2.0 * distance_ *
-                                 std::tan(qDegreesToRadians(fieldOfViewDegrees_) / 2.0) /
-                                 std::max(1.0, viewport.height());
+    const double worldPerPixel = 2.0 * halfHeightAtTarget() / std::max(1.0, viewport.height());
     target_ += (-right() * static_cast<float>(delta.x()) + up() * static_cast<float>(delta.y())) *
                static_cast<float>(worldPerPixel);
 }
@@ -66,8 +114,8 @@ void OrbitCamera::frame(const QVector3D& centre, double radius) {
 }
 
 void OrbitCamera::setView(double yawDegrees, double pitchDegrees) {
-    yawDegrees_ = yawDegrees;
-    pitchDegrees_ = std::clamp(pitchDegrees, -89.0, 89.0);
+    yawDegrees_ = std::remainder(yawDegrees, 360.0);
+    pitchDegrees_ = std::clamp(pitchDegrees, -90.0, 90.0);
 }
 
 Ray OrbitCamera::rayThrough(const QPointF& pixel, const QSizeF& viewport) const {
@@ -76,7 +124,9 @@ Ray OrbitCamera::rayThrough(const QPointF& pixel, const QSizeF& viewport) const 
     const float y = static_cast<float>(1.0 - 2.0 * pixel.y() / viewport.height());
     const QVector3D nearPoint = inverse.map(QVector3D(x, y, -1.0f));
     const QVector3D farPoint = inverse.map(QVector3D(x, y, 1.0f));
-    return {eye(), (farPoint - nearPoint).normalized()};
+    // Orthographic rays are parallel, each from its own point of the near
+    // plane (behind the eye); perspective ones start at the eye.
+    return {orthographic_ ? nearPoint : eye(), (farPoint - nearPoint).normalized()};
 }
 
 QVector3D OrbitCamera::pointOnViewPlane(const QPointF& pixel, const QSizeF& viewport,

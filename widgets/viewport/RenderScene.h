@@ -57,6 +57,9 @@ struct RenderScene {
     // Onion skin: parts in their previous and next keyed poses,
     // translucent, not selectable.
     std::vector<RenderPart> ghosts;
+    // Parts drawn see-through over everything else (ViewportTool::
+    // partsInFront): translucent, their own nearest faces only.
+    std::vector<RenderPart> inFront;
     ColouredVertices lines;   // skeleton bones and other overlays, in pairs
     ColouredVertices points;  // joints
     ColouredVertices stroke;  // the stroke being drawn, as a strip
@@ -64,9 +67,13 @@ struct RenderScene {
     bool dualQuaternionSkinning = true;
     bool showGrid = true;
     WeightView weightView = WeightView::Off;
-    float gridHeight = 0.0f;  // the ground grid lies in the plane y = gridHeight
+    // The grid lies in the plane through gridCentre normal to the world axis
+    // gridNormal (1: the ground, y up; an axis view's own plane otherwise),
+    // lines gridSpacing apart on world multiples of it, gridLines each side.
+    QVector3D gridCentre{0.0f, 0.0f, 0.0f};
+    int gridNormal = 1;
     float gridSpacing = 0.1f;
-    int gridLines = 20;  // on each side of the origin
+    int gridLines = 20;
 };
 
 }  // namespace rigmesh::widgets

@@ -1,5 +1,8 @@
 #include "viewport/SceneRenderer.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/Geometry>
 #include <QFile>
 #include <algorithm>
@@ -185,6 +188,17 @@ void SceneRenderer::render(const RenderScene& scene, const OrbitCamera& camera,
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }
+    if (!scene.inFront.empty()) {
+        // In front of everything, see-through (Blender's In Front display):
+        // a fresh depth buffer, so only these parts' own faces hide each
+        // other, blended over what is drawn.
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        drawParts(scene.inFront, scene, view, projection,
+                  QVector2D(pixels.width(), pixels.height()));
+        glDisable(GL_BLEND);
+    }
     // Overlays stay visible through the surface, like Blender's bone overlay.
     glDisable(GL_DEPTH_TEST);
     drawColoured(scene.lines, GL_LINES, viewProjection, 1.0f);
@@ -297,16 +311,34 @@ void SceneRenderer::drawColoured(const ColouredVertices& vertices, GLenum mode,
 
 void SceneRenderer::drawGrid(const RenderScene& scene, const QMatrix4x4& viewProjection) {
     ColouredVertices grid;
-    const float extent = scene.gridSpacing * static_cast<float>(scene.gridLines);
+    // The plane's two axes (u, v) and the lines' colours: through the world
+    // origin tinted like Blender's axes (x red, y green, z blue).
+    const int n = std::clamp(scene.gridNormal, 0, 2);
+    const int u = n == 0 ? 2 : 0;
+    const int v = n == 1 ? 2 : 1;
+    const QVector3D axisColours[] = {
+        {0.55f, 0.25f, 0.25f}, {0.3f, 0.5f, 0.28f}, {0.25f, 0.35f, 0.6f}};
+    const QVector3D plain(0.33f, 0.34f, 0.36f);
+    const float spacing = scene.gridSpacing;
+    const float extent = spacing * static_cast<float>(scene.gridLines);
+    // On whole multiples of the spacing, around the centre.
+    const float cu = spacing * std::round(scene.gridCentre[u] / spacing);
+    const float cv = spacing * std::round(scene.gridCentre[v] / spacing);
+    auto point = [&](float a, float b) {
+        QVector3D p = scene.gridCentre;
+        p[u] = a;
+        p[v] = b;
+        return p;
+    };
     for (int i = -scene.gridLines; i <= scene.gridLines; ++i) {
-        const float offset = scene.gridSpacing * static_cast<float>(i);
-        // The axes through the origin are tinted like Blender's (x red, z blue).
-        QVector3D alongX = i == 0 ? QVector3D(0.55f, 0.25f, 0.25f) : QVector3D(0.33f, 0.34f, 0.36f);
-        QVector3D alongZ = i == 0 ? QVector3D(0.25f, 0.35f, 0.6f) : QVector3D(0.33f, 0.34f, 0.36f);
-        grid.add({-extent, scene.gridHeight, offset}, alongX);
-        grid.add({extent, scene.gridHeight, offset}, alongX);
-        grid.add({offset, scene.gridHeight, -extent}, alongZ);
-        grid.add({offset, scene.gridHeight, extent}, alongZ);
+        const float a = cu + spacing * static_cast<float>(i);
+        const float b = cv + spacing * static_cast<float>(i);
+        const bool originV = std::abs(b) < 0.5f * spacing;  // the u axis
+        const bool originU = std::abs(a) < 0.5f * spacing;  // the v axis
+        grid.add(point(cu - extent, b), originV ? axisColours[u] : plain);
+        grid.add(point(cu + extent, b), originV ? axisColours[u] : plain);
+        grid.add(point(a, cv - extent), originU ? axisColours[v] : plain);
+        grid.add(point(a, cv + extent), originU ? axisColours[v] : plain);
     }
     drawColoured(grid, GL_LINES, viewProjection, 1.0f);
 }

@@ -21,6 +21,7 @@
 #include "viewport/GlobalDifferences.h"
 #include "viewport/SceneRenderer.h"
 #include "viewport/ViewMath.h"
+#include "viewport/ViewpointActions.h"
 #include "viewport/ViewportTool.h"
 
 namespace rigmesh::widgets {
@@ -113,9 +114,13 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     connect(globalDifferences_, &GlobalDifferences::ready, this, [this] { update(); });
     setMinimumSize(320, 240);
     auto refresh = [this] { update(); };
-    connect(document_, &model::Document::partInserted, this, refresh);
-    connect(document_, &model::Document::partRemoved, this, refresh);
-    connect(document_, &model::Document::partChanged, this, refresh);
+    auto changed = [this] {
+        problemMark_.reset();
+        update();
+    };
+    connect(document_, &model::Document::partInserted, this, changed);
+    connect(document_, &model::Document::partRemoved, this, changed);
+    connect(document_, &model::Document::partChanged, this, changed);
     connect(document_, &model::Document::selectionChanged, this, refresh);
     connect(document_, &model::Document::currentFrameChanged, this, refresh);
     camera_.setView(0, 0);
@@ -189,6 +194,13 @@ void Viewport::setGridVisible(bool on) {
 
 void Viewport::setStrokeOverlay(std::vector<QVector3D> points) {
     strokeOverlay_ = std::move(points);
+    if (strokeOverlay_.size() == 1)
+        problemMark_.reset();  // a new stroke begins
+    update();
+}
+
+void Viewport::setProblemMark(std::optional<QVector3D> at) {
+    problemMark_ = at;
     update();
 }
 
@@ -199,9 +211,12 @@ void Viewport::initializeGL() {
 }
 
 void Viewport::paintGL() {
-    if (!framedOnce_ && document_->partCount() > 0) {
+    // A document opened with parts is framed once, when first shown; a
+    // sketch or an import later never moves the camera (Home does).
+    if (!framedOnce_) {
         framedOnce_ = true;
-        frameAll();
+        if (document_->partCount() > 0)
+            frameAll();
     }
     renderer_->render(
         gatherScene(), camera_,
@@ -242,6 +257,12 @@ void Viewport::frameBox(const Eigen::AlignedBox3d& box) {
     update();
 }
 
+double Viewport::gridSpacing() const {
+    // About 10 to 100 lines across the view's height.
+    return std::pow(10.0,
+                    std::floor(std::log10(std::max(camera_.halfHeightAtTarget(), 1e-30) / 2.0)));
+}
+
 void Viewport::frameAll() {
     frameBox(sceneBox(false));
 }
@@ -262,18 +283,28 @@ RenderScene Viewport::gatherScene() const {
     scene.showGrid = gridVisible_;
     scene.weightView = weightView_;
     const auto box = sceneBox(false);
-    if (box.isEmpty()) {
+    // The grid's spacing follows the zoom alone; its lines reach well past
+    // the view.
+    scene.gridSpacing = static_cast<float>(gridSpacing());
+    scene.gridLines = std::clamp(
+        static_cast<int>(std::ceil(4.0 * camera_.halfHeightAtTarget() / gridSpacing())), 5, 100);
+    scene.gridCentre = camera_.target();
+    const std::optional<AxisView> axis = camera_.orthographic() ? camera_.axisView() : std::nullopt;
+    if (axis && axis != AxisView::Top && axis != AxisView::Bottom) {
+        // An orthographic side view sees the floor edge-on: its grid is
+        // the view's own plane through the target, as in Blender.
+        scene.gridNormal = axis == AxisView::Front || axis == AxisView::Back ? 2 : 0;
+    } else if (box.isEmpty()) {
         // An empty scene: a floor in the lower part of the view, seen from
         // slightly above (not edge-on through the centre), while the sketch
         // plane stays the front plane through the centre.
-        scene.gridHeight = static_cast<float>(-0.22 * camera_.distance());
+        scene.gridCentre.setY(static_cast<float>(-0.22 * camera_.distance()));
     } else {
-        scene.gridHeight = static_cast<float>(box.min().y());
-        const double size = std::max(box.sizes().maxCoeff(), 1e-6);
-        scene.gridSpacing = static_cast<float>(std::pow(10.0, std::floor(std::log10(size / 2.0))));
-        scene.gridLines = std::clamp(static_cast<int>(std::ceil(size / scene.gridSpacing)), 5, 40);
+        scene.gridCentre.setY(static_cast<float>(box.min().y()));
     }
     const auto selection = document_->selection();
+    const std::vector<ViewportTool::PartInFront> inFront =
+        tool_ ? tool_->partsInFront(*this) : std::vector<ViewportTool::PartInFront>{};
     for (const model::PartNode& node : document_->parts()) {
         if (!node.visible || !node.part)
             continue;
@@ -306,7 +337,23 @@ RenderScene Viewport::gatherScene() const {
                 scene.ghosts.push_back(std::move(ghost));
             }
         }
-        scene.parts.push_back(std::move(item));
+        const auto front = std::find_if(inFront.begin(), inFront.end(),
+                                        [&](const auto& f) { return f.part == node.id; });
+        if (front == inFront.end()) {
+            scene.parts.push_back(std::move(item));
+        } else {
+            item.opacity = 0.55f;
+            if (front->resultOffset) {
+                // Where the tool's action puts it, fainter.
+                RenderPart result = item;
+                QMatrix4x4 offset;
+                offset.translate(toQt(*front->resultOffset));
+                result.model = offset * item.model;
+                result.opacity = 0.3f;
+                scene.inFront.push_back(std::move(result));
+            }
+            scene.inFront.push_back(std::move(item));
+        }
 
         const Skeleton& skeleton = node.part->skeleton;
         auto posedJoint = [&](JointId id) {
@@ -352,6 +399,16 @@ RenderScene Viewport::gatherScene() const {
     }
     for (const QVector3D& p : strokeOverlay_)
         scene.stroke.add(p, QVector3D(1.0f, 0.45f, 0.2f));
+    if (problemMark_) {
+        // A cross on the view plane, a fortieth of the view's height.
+        const float size = static_cast<float>(camera_.halfHeightAtTarget() / 20.0);
+        const QVector3D red(1.0f, 0.15f, 0.15f);
+        for (const QVector3D& d :
+             {camera_.right() + camera_.up(), camera_.right() - camera_.up()}) {
+            scene.lines.add(*problemMark_ - size * d, red);
+            scene.lines.add(*problemMark_ + size * d, red);
+        }
+    }
     addInspectionMarks(scene);
     if (tool_)
         tool_->addOverlay(*this, scene.lines);
@@ -524,6 +581,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
                 break;
             default:
                 camera_.orbit(delta);
+                leaveAutoOrthographic();
         }
         update();
         return;
@@ -561,6 +619,9 @@ void Viewport::setWeightView(WeightView view) {
     if (view == weightView_)
         return;
     weightView_ = view;
+    // The pinned vertex belongs to the weight views: it goes with them.
+    if (view == WeightView::Off && inspected_)
+        setInspectedVertex(std::nullopt);
     update();
     emit weightViewChanged(view);
 }
@@ -573,8 +634,22 @@ void Viewport::contextMenuEvent(QContextMenuEvent* event) {
         QOpenGLWidget::contextMenuEvent(event);
 }
 
+bool Viewport::event(QEvent* event) {
+    // The numpad's viewpoint keys belong to the view while it has the focus
+    // (without Num Lock they are Home, End and the arrows, other actions'
+    // shortcuts).
+    if (event->type() == QEvent::ShortcutOverride &&
+        isViewpointKey(*static_cast<QKeyEvent*>(event))) {
+        event->accept();
+        return true;
+    }
+    return QOpenGLWidget::event(event);
+}
+
 void Viewport::keyPressEvent(QKeyEvent* event) {
-    if (event->key() == Qt::Key_Home) {
+    if (handleViewpointKey(*this, *event)) {
+        return;
+    } else if (event->key() == Qt::Key_Home) {
         frameAll();
     } else if (event->key() == Qt::Key_Period && (event->modifiers() & Qt::KeypadModifier)) {
         frameSelected();

@@ -1,9 +1,12 @@
 // The 3D view of a document: a QOpenGLWidget (GL 3.3 core) that draws the
 // document's parts with GPU skinning, the ground grid and the skeleton
 // overlay, navigates like Blender (middle drag orbits, Shift + middle drag
-// pans, wheel zooms, Home frames all, numpad period frames the selection) or,
-// by preference, like Maya (Alt + left / middle / right drag, MouseBindings.h)
-// and hands left-button input to the active tool.
+// pans, wheel zooms, Home frames all, numpad period frames the selection,
+// numpad 1 3 7 5 look along axes and switch the projection,
+// ViewpointActions.h) or, by preference, like Maya (Alt + left / middle /
+// right drag, MouseBindings.h) and hands left-button input to the active
+// tool. The camera moves only when asked: a document with parts is framed
+// when first shown, nothing re-frames later (Home does).
 #pragma once
 
 #include <QOpenGLWidget>
@@ -73,6 +76,10 @@ class Viewport : public QOpenGLWidget {
 
     // The stroke being sketched, in world space (drawn as an overlay).
     void setStrokeOverlay(std::vector<QVector3D> points);
+    // A red cross where something went wrong (a stroke crossing itself),
+    // until the next stroke begins or the document changes.
+    void setProblemMark(std::optional<QVector3D> at);
+    const std::optional<QVector3D>& problemMark() const { return problemMark_; }
 
     // The world-space point under a pixel on the plane through the scene
     // centre facing the camera: where sketches are drawn.
@@ -116,6 +123,16 @@ class Viewport : public QOpenGLWidget {
     // The part's skeleton in its current pose (cached per part and pose).
     const PosedSkeleton& posedSkeleton(const model::PartNode& node) const;
 
+    // Looks along an axis, orthographically unless the view was in
+    // perspective by choice (Blender's Auto Perspective, ViewpointActions.h).
+    void lookAlong(AxisView view);
+    void setOrthographic(bool on);
+    // Orbits by whole degrees (numpad 4 6 8 2).
+    void orbitBy(double yawDegrees, double pitchDegrees);
+    // The ground grid's line spacing: a power of ten set by the camera's
+    // distance alone, so new parts never change it.
+    double gridSpacing() const;
+
   public slots:
     void frameAll();
     void frameSelected();
@@ -127,8 +144,11 @@ class Viewport : public QOpenGLWidget {
     void inspectedVertexChanged();
     // setWeightView() changed how the surface is coloured.
     void weightViewChanged(rigmesh::widgets::WeightView view);
+    // The viewpoint or projection changed by a key or menu.
+    void viewChanged();
 
   protected:
+    bool event(QEvent* event) override;
     void initializeGL() override;
     void paintGL() override;
     void mousePressEvent(QMouseEvent* event) override;
@@ -143,6 +163,9 @@ class Viewport : public QOpenGLWidget {
     // The inspected and marked vertices, posed, as points (ViewportInspection.cpp).
     void addInspectionMarks(RenderScene& scene) const;
     void frameBox(const Eigen::AlignedBox3d& box);
+    // Ends an orthographic view the camera chose itself once it is no longer
+    // along an axis (ViewpointActions.cpp).
+    void leaveAutoOrthographic();
     Eigen::AlignedBox3d sceneBox(bool selectedOnly) const;
 
     model::Document* document_;
@@ -151,6 +174,7 @@ class Viewport : public QOpenGLWidget {
     ViewportTool* tool_ = nullptr;
     JobRunner* jobs_ = nullptr;
     std::vector<QVector3D> strokeOverlay_;
+    std::optional<QVector3D> problemMark_;
     bool wireframe_ = false;
     bool dualQuaternion_ = true;
     bool gridVisible_ = true;
@@ -158,6 +182,7 @@ class Viewport : public QOpenGLWidget {
     WeightView weightView_ = WeightView::Off;
     GlobalDifferences* globalDifferences_ = nullptr;
     bool framedOnce_ = false;
+    bool autoOrthographic_ = false;
     struct PosedCacheEntry {
         const Part* part = nullptr;
         Pose pose;

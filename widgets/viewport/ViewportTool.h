@@ -10,7 +10,11 @@
 #include <QObject>
 #include <QString>
 #include <QWheelEvent>
+#include <cstdint>
 #include <optional>
+#include <vector>
+
+#include "base/Types.h"
 
 class QWidget;
 
@@ -46,6 +50,15 @@ class ViewportTool : public QObject {
     // The weight view the tool shows when it becomes active (the paint tool
     // shows the weights it paints); none by default.
     virtual std::optional<WeightView> weightView() const { return std::nullopt; }
+    // A part the tool shows see-through in front of everything (a part
+    // dragged into another, which would hide inside it) and, if the tool's
+    // action would move it, a second see-through copy moved by resultOffset
+    // (world coordinates).
+    struct PartInFront {
+        std::uint32_t part = 0;  // a model::PartId
+        std::optional<Vec3> resultOffset;
+    };
+    virtual std::vector<PartInFront> partsInFront(const Viewport&) const { return {}; }
 
   signals:
     // The tool's one way to the status bar: what it did, refused or needs.

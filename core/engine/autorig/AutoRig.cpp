@@ -3,6 +3,8 @@
 #include "autorig/CurveSkeleton.h"
 #include "base/Error.h"
 #include "part/BoneWeights.h"
+#include "rig/ShortBones.h"
+#include "rig/SkeletonSymmetry.h"
 
 namespace rigmesh {
 
@@ -37,6 +39,17 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     result.part.name = part.name;
     result.part.mesh = std::move(repaired.mesh);
     result.part.skeleton = skeletonFromCurve(curve, result.part.mesh, options.bones);
+    // A mirror-symmetric mesh gets a mirror-symmetric rig: mirrored limbs
+    // get as many bones, mirrored joints (rig/SkeletonSymmetry).
+    symmetrizeSkeleton(result.part.skeleton, result.part.mesh);
+    // No bone shorter than the shortest an edit may make (rig/ShortBones.h):
+    // such a bone joins its neighbour; a mesh with only such a bone is refused.
+    const double minimum = minimumBoneLength(result.part.mesh);
+    collapseShortBones(result.part.skeleton, minimum);
+    if (const auto shortest = shortestBone(result.part.skeleton);
+        shortest && shortest->length < minimum)
+        throw Error(MessageId::AutoRigBoneTooShort, shortNumber(shortest->length),
+                    shortNumber(minimum));
     reportRigProgress(progress, kSkeletonDone);
 
     // Paper 2.4: no construction shortcut here, every vertex is tested for

@@ -1,6 +1,7 @@
 #include "base/ChildProcess.h"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,41 +14,63 @@ extern char** environ;
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <thread>
+
+#include "base/ForwardedSignals.h"
 
 namespace rigmesh {
 namespace {
 
-// A temporary file that is already unlinked: it disappears with its last
-// descriptor, so no error path can leave it behind.
+// Descriptors the parent hands over are moved to 10 and above first, so
+// that placing them at 0-3 in the child never overwrites one another (a
+// parent started with its standard input closed gets new files at 0).
+constexpr int kFirstHighDescriptor = 10;
+
+int highDescriptor(int fd) {
+    if (fd < 0 || fd >= kFirstHighDescriptor)
+        return fd;
+    const int high = fcntl(fd, F_DUPFD_CLOEXEC, kFirstHighDescriptor);
+    close(fd);
+    return high;
+}
+
+// A temporary file without a name (O_TMPFILE; where the file system cannot,
+// one unlinked at once): it disappears with its last descriptor, so no
+// error path and no signal can leave it behind.
 int anonymousTemporaryFile() {
     std::error_code error;
     std::filesystem::path folder = std::filesystem::temp_directory_path(error);
     if (error)
         folder = "/tmp";  // TMPDIR names a missing folder
-    std::string pattern = (folder / "rigmesh-child-XXXXXX").string();
     // Close-on-exec: no other child of this process inherits it (dup2 onto
-    // the child's stderr clears the flag there).
-    const int fd = mkostemp(pattern.data(), O_CLOEXEC);
-    if (fd >= 0)
-        unlink(pattern.c_str());
-    return fd;
+    // the child's own descriptors clears the flag there).
+    int fd = open(folder.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+    if (fd < 0) {
+        std::string pattern = (folder / "rigmesh-child-XXXXXX").string();
+        fd = mkostemp(pattern.data(), O_CLOEXEC);
+        if (fd >= 0)
+            unlink(pattern.c_str());
+    }
+    return highDescriptor(fd);
 }
 
-// The last `maxBytes` of what the child wrote: its final message matters most.
-std::string readBack(int fd, std::size_t maxBytes) {
+// The last `maxBytes` of what the child wrote (its final message matters
+// most), or with `fromStart` the first.
+std::string readBack(int fd, std::size_t maxBytes, bool fromStart = false) {
     std::string text;
     const off_t size = lseek(fd, 0, SEEK_END);
     if (size < 0)
         return text;
     const off_t start =
-        size > static_cast<off_t>(maxBytes) ? size - static_cast<off_t>(maxBytes) : 0;
+        size > static_cast<off_t>(maxBytes) && !fromStart ? size - static_cast<off_t>(maxBytes) : 0;
     if (lseek(fd, start, SEEK_SET) != start)
         return text;
-    text.resize(maxBytes);
+    const std::size_t wanted = std::min(maxBytes, static_cast<std::size_t>(size - start));
+    text.resize(wanted);
     std::size_t got = 0;
-    while (got < maxBytes) {
-        const ssize_t n = read(fd, text.data() + got, maxBytes - got);
+    while (got < wanted) {
+        const ssize_t n = read(fd, text.data() + got, wanted - got);
         if (n < 0 && errno == EINTR)
             continue;
         if (n <= 0)
@@ -124,31 +147,55 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
     envp.push_back(nullptr);
 
     const int errorFd = anonymousTemporaryFile();
-    if (errorFd < 0) {
+    const int resultFd = limits.maxResultBytes > 0 ? anonymousTemporaryFile() : -1;
+    if (errorFd < 0 || (limits.maxResultBytes > 0 && resultFd < 0)) {
         outcome.standardError =
             "cannot create a temporary file: " + std::string(std::strerror(errno));
+        if (errorFd >= 0)
+            close(errorFd);
+        if (resultFd >= 0)
+            close(resultFd);
         return outcome;
     }
+    auto closeFiles = [&] {
+        close(errorFd);
+        if (resultFd >= 0)
+            close(resultFd);
+    };
     // exec failure is reported through a close-on-exec pipe: it closes
     // unread on success and carries errno on failure.
     int execPipe[2];
     if (pipe2(execPipe, O_CLOEXEC) != 0) {
         outcome.standardError = "cannot create a pipe: " + std::string(std::strerror(errno));
-        close(errorFd);
+        closeFiles();
         return outcome;
     }
-    const int nullFd = open("/dev/null", O_RDWR | O_CLOEXEC);
+    execPipe[0] = highDescriptor(execPipe[0]);
+    execPipe[1] = highDescriptor(execPipe[1]);
+    const int nullFd = highDescriptor(open("/dev/null", O_RDWR | O_CLOEXEC));
     const bool limitAddressSpace = limits.addressSpaceBytes > 0 && addressSpaceLimitsSupported();
+    const pid_t parent = getpid();
     const auto start = std::chrono::steady_clock::now();
 
     const pid_t pid = fork();
     if (pid == 0) {
         setpgid(0, 0);  // its own group: a timeout kills whatever it started too
+        // Dies with the thread that started it, even when that is killed
+        // with SIGKILL; if the parent is already gone, stop here.
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() != parent)
+            _exit(127);
         if (nullFd >= 0) {
             dup2(nullFd, STDIN_FILENO);
             dup2(nullFd, STDOUT_FILENO);
         }
         dup2(errorFd, STDERR_FILENO);
+        // Descriptor 3 is the result file or nothing: not whatever the
+        // parent happened to inherit there (ctest's own, a shell's).
+        if (resultFd >= 0)
+            dup2(resultFd, 3);
+        else
+            close(3);
         const rlimit noCore{0, 0};
         setrlimit(RLIMIT_CORE, &noCore);
         if (limitAddressSpace) {
@@ -166,9 +213,14 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
     if (pid < 0) {
         outcome.standardError = "cannot start a process: " + std::string(std::strerror(errno));
         close(execPipe[0]);
-        close(errorFd);
+        closeFiles();
         return outcome;
     }
+    // The group exists before anything is forwarded to it, whichever of
+    // parent and child runs first (one of the two calls fails harmlessly).
+    setpgid(pid, pid);
+    std::optional<ForwardedSignals> forwarding;
+    forwarding.emplace(pid);
 
     int status = 0;
     bool ended = false;
@@ -194,6 +246,7 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
             pause = std::min(pause * 2, std::chrono::microseconds(20000));
         }
     }
+    forwarding.reset();  // reaped: its group id may be anyone's now
     outcome.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -201,7 +254,13 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
     const bool execFailed = read(execPipe[0], &execErrno, sizeof execErrno) == sizeof execErrno;
     close(execPipe[0]);
     outcome.standardError = readBack(errorFd, limits.maxErrorBytes);
-    close(errorFd);
+    if (resultFd >= 0) {
+        const off_t size = lseek(resultFd, 0, SEEK_END);
+        outcome.resultTooLarge = size > static_cast<off_t>(limits.maxResultBytes);
+        if (!outcome.resultTooLarge)
+            outcome.result = readBack(resultFd, limits.maxResultBytes, true);
+    }
+    closeFiles();
 
     if (execFailed) {
         outcome.end = ChildOutcome::End::FailedToStart;

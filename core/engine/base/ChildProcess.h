@@ -4,7 +4,17 @@
 // setrlimit, waitpid); no Qt.
 //
 // The child's standard output is discarded and its standard error kept (up
-// to `maxErrorBytes`), so a `rigmesh: <message>` line can be passed on.
+// to `maxErrorBytes`), so a `rigmesh: <message>` line can be passed on. A
+// result can come back through descriptor 3 (`maxResultBytes`), a temporary
+// file that has no name, so nothing is left on disk whichever way the child
+// or the parent ends.
+//
+// The child never outlives the thread that started it: it gets SIGKILL when
+// that thread ends (PR_SET_PDEATHSIG, which also covers the parent being
+// killed with SIGKILL), and SIGINT, SIGTERM and SIGHUP sent to the parent
+// while it waits are passed on to the child's process group
+// (base/ForwardedSignals). runChildProcess waits on the calling thread, so
+// that thread outlives the child.
 #pragma once
 
 #include <cstddef>
@@ -17,6 +27,10 @@ struct ChildLimits {
     double seconds = 60.0;              // wall clock; the child is killed after it
     std::size_t addressSpaceBytes = 0;  // RLIMIT_AS; 0 = no limit
     std::size_t maxErrorBytes = 64 * 1024;
+    // > 0: the child's descriptor 3 is an unnamed temporary file (the child
+    // may write to it, e.g. as /dev/fd/3), and what it holds when the child
+    // ends comes back in ChildOutcome::result, up to this many bytes.
+    std::size_t maxResultBytes = 0;
 };
 
 struct ChildOutcome {
@@ -30,7 +44,9 @@ struct ChildOutcome {
     int exitCode = -1;
     int signal = 0;
     double seconds = 0.0;
-    std::string standardError;  // what the child wrote there, or why it did not start
+    std::string standardError;    // what the child wrote there, or why it did not start
+    std::string result;           // what it wrote to descriptor 3 (maxResultBytes > 0)
+    bool resultTooLarge = false;  // it wrote more than maxResultBytes there
 };
 
 // `program` is a path (no PATH search); `arguments` exclude argv[0].

@@ -2,7 +2,9 @@
 // written for the user: it says what is wrong with their input and, where it
 // helps, what to do instead. An Error made from a MessageId also carries the
 // id and its arguments, so the studio can show it translated; what() is
-// always the English text (the CLI prints it).
+// always the English text (the CLI prints it). Every text is put in the
+// shape messages keep (base/MessageText.h: one line, at most about 200
+// characters, quoted names at most 60).
 #pragma once
 
 #include <stdexcept>
@@ -10,13 +12,14 @@
 #include <utility>
 
 #include "base/Message.h"
+#include "base/MessageText.h"
 
 namespace rigmesh {
 
 class Error : public std::runtime_error {
   public:
     // A message without an id: shown as it is, in English.
-    explicit Error(const std::string& text) : std::runtime_error(text) {}
+    explicit Error(const std::string& text) : std::runtime_error(messageText(text)) {}
 
     explicit Error(Message message)
         : std::runtime_error(englishText(message)), message_(std::move(message)) {}

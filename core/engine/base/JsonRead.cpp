@@ -64,4 +64,21 @@ std::vector<Vec2> readVec2s(const json& list, const char* what) {
     return out;
 }
 
+std::string parseErrorReason(const nlohmann::json::exception& error) {
+    // nlohmann's ids: parse_error 101 (syntax), 110 (input ends early),
+    // 112-115 (binary formats); out_of_range 406/407 (a number no double
+    // or integer holds); type_error 3xx.
+    if (const auto* parse = dynamic_cast<const nlohmann::json::parse_error*>(&error)) {
+        const std::string at = "at byte " + std::to_string(parse->byte);
+        if (parse->id == 110)
+            return "it ends too early, " + at;
+        return "it is malformed " + at;
+    }
+    if (error.id == 406 || error.id == 407)
+        return "it holds a number too large to read";
+    if (dynamic_cast<const nlohmann::json::type_error*>(&error))
+        return "a value has the wrong type";
+    return "it is malformed";
+}
+
 }  // namespace rigmesh::jsonread

@@ -52,4 +52,9 @@ Int integer(const json& value, const char* what) {
     return static_cast<Int>(v);
 }
 
+// What a user can be told about a JSON or CBOR parsing error: where it
+// stopped and why in plain words ("it ends too early, at byte 12"), never
+// the library's own ids and wording ("[json.exception.parse_error.110]").
+std::string parseErrorReason(const nlohmann::json::exception& error);
+
 }  // namespace rigmesh::jsonread

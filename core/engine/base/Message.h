@@ -41,6 +41,8 @@ enum class MessageId {
     EdgeLengthNotPositive,
     SurfaceSmoothingNotFactored,
     SurfaceSmoothingNoSolution,
+    SurfaceSelfIntersecting,
+    PartHasNoSketch,
 
     // Merging (merge/)
     MergeNeedsRiggedParts,
@@ -54,6 +56,11 @@ enum class MessageId {
     MergePartsApart,
     MergePartInside,
     LocalWeightsUnsolved,
+    MergeTargetNotSolid,
+    MergeDraggedNotSolid,
+    MergeTargetIntersectsItself,
+    MergeDraggedIntersectsItself,
+    MergeJointsTooClose,
 
     // Cutting and bone edits (cut/)
     CutNeedsRiggedPart,
@@ -77,6 +84,10 @@ enum class MessageId {
     BoneNotConnected,
     ConnectBoneAlreadyConnected,
     ConnectBoneHasNoParent,
+    CutPartNotSolid,
+    CutPieceBoneTooShort,
+    SplitBoneTooShort,
+    DeleteLeavesShortBone,
 
     // Posing and keys (pose/)
     IkTargetNotFinite,
@@ -93,10 +104,15 @@ enum class MessageId {
     ClipHasNoKeys,
     ClipPlayedWithoutKeys,
     KeyPoseInvalid,
+    KeyTimeNotFinite,
+    KeyTimeNegative,
+    KeyTimeTooLate,
+    ClipFrameRateInvalid,
 
     // Weight painting and clean-ups (part/WeightPaint, part/WeightCleanup)
     PaintNoSuchBone,
     PaintBoneLocked,
+    PaintLockedNoSuchBone,
     PaintBrushInvalid,
     PaintViewDirectionInvalid,
     PaintMirrorAsymmetric,
@@ -121,6 +137,22 @@ enum class MessageId {
     DecimationTooFewFaces,
     DecimationNotManifold,
 
+    // Importing files (model/ImportReader, io/SceneImport)
+    ImportNoSuchFile,
+    ImportNotAFile,
+    ImportReaderMissing,
+    ImportReaderNotStarted,
+    ImportTimedOut,
+    ImportReaderCrashed,
+    ImportOutOfMemory,
+    ImportReaderFailed,
+    ImportBadData,
+    ImportPartUnusable,
+    ImportUnreadable,
+    ImportUnknownFormat,
+    ImportIncomplete,
+    ImportNoTriangleMesh,
+
     // Rigging an imported mesh (autorig/)
     AutoRigPartIsRigged,
     AutoRigNoSurface,
@@ -131,6 +163,7 @@ enum class MessageId {
     AutoRigNotManifold,
     AutoRigSkeletonFailed,
     AutoRigCancelled,
+    AutoRigBoneTooShort,
     AutoRigRepairWelded,
     AutoRigRepairDegenerate,
     AutoRigRepairDuplicateFaces,
@@ -153,14 +186,19 @@ const char* messageTemplate(MessageId id);
 
 // `text` with %1 .. %9 replaced by `args` in one pass, so an argument that
 // itself holds "%2" stays as it is; a missing argument leaves its marker.
+// The result has the shape of every message (base/MessageText.h: one line,
+// quoted names elided), whatever the arguments hold.
 std::string fillMessage(std::string_view text, const std::vector<std::string>& args);
 
 // The English text of `message`.
 std::string englishText(const Message& message);
 
+// A number for a message: three significant digits ("0.000215", "1.5e+06").
+std::string shortNumber(double value);
+
 // Message arguments are text: integers are written in full, strings as they
-// are. Other numbers are formatted by the caller (see SurfaceLimits'
-// shortNumber), so the engine decides their precision.
+// are. Other numbers are formatted by the caller, so the engine decides
+// their precision; most use shortNumber.
 inline std::string messageArgument(std::string text) {
     return text;
 }

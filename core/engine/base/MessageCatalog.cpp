@@ -5,6 +5,10 @@
 // a template is a compiler warning (an error with warnings as errors).
 #include "base/Message.h"
 
+#include "base/MessageText.h"
+
+#include <sstream>
+
 #define RIGMESH_TRANSLATABLE(context, text) text
 
 namespace rigmesh {
@@ -114,6 +118,18 @@ const char* messageTemplate(MessageId id) {
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
                 "least-squares smoothing failed: the surface system has no finite solution");
+        case MessageId::SurfaceSelfIntersecting:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The surface would intersect itself (%1 crossing face pairs) near (%2, "
+                "%3): the outline is too thin or turns too sharply there. Widen it there "
+                "or use a smaller edge length.");
+        case MessageId::PartHasNoSketch:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "\"%1\" cannot be rebuilt: it was not drawn as one sketch (it comes from a "
+                "merge, a cut, a bone edit or an import), so there is no stroke to build "
+                "it from.");
 
         case MessageId::MergeNeedsRiggedParts:
             return RIGMESH_TRANSLATABLE(
@@ -156,6 +172,33 @@ const char* messageTemplate(MessageId id) {
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
                 "The local skin weights could not be solved; use the global re-computation.");
+        case MessageId::MergeTargetNotSolid:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The target part cannot be merged: %1 Merging needs closed, consistently "
+                "oriented surfaces.");
+        case MessageId::MergeDraggedNotSolid:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The dragged part cannot be merged: %1 Merging needs closed, consistently "
+                "oriented surfaces.");
+        case MessageId::MergeTargetIntersectsItself:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The target part's surface intersects itself (%1 crossing face pairs), so "
+                "the parts cannot be merged. Rebuild it with a larger edge length or "
+                "smoothing first.");
+        case MessageId::MergeDraggedIntersectsItself:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The dragged part's surface intersects itself (%1 crossing face pairs), "
+                "so the parts cannot be merged. Rebuild it with a larger edge length or "
+                "smoothing first.");
+        case MessageId::MergeJointsTooClose:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The joints to connect are %1 apart, less than the shortest bone allowed "
+                "(%2); snap them instead.");
 
         case MessageId::CutNeedsRiggedPart:
             return RIGMESH_TRANSLATABLE(
@@ -232,6 +275,26 @@ const char* messageTemplate(MessageId id) {
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
                 "Bone %1 starts at the skeleton's root: it has no parent to connect to.");
+        case MessageId::CutPartNotSolid:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The part cannot be cut: %1 Cutting needs a closed, consistently oriented "
+                "surface.");
+        case MessageId::CutPieceBoneTooShort:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The cut would leave a piece without a bone: its only one would be %1 long, "
+                "shorter than the shortest bone allowed (%2). Cut farther from the joint.");
+        case MessageId::SplitBoneTooShort:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Splitting there would leave a bone %1 long, shorter than the shortest "
+                "bone allowed (%2); split nearer the bone's middle.");
+        case MessageId::DeleteLeavesShortBone:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Deleting the bone would leave bone %1 only %2 long, shorter than the "
+                "shortest bone allowed (%3); delete a neighbouring bone instead.");
 
         case MessageId::IkTargetNotFinite:
             return RIGMESH_TRANSLATABLE("EngineMessage", "The IK target is not a finite point.");
@@ -267,12 +330,27 @@ const char* messageTemplate(MessageId id) {
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
                 "A key's pose must have finite, non-zero rotations and a finite translation.");
+        case MessageId::KeyTimeNotFinite:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "A key time must be a finite number of seconds.");
+        case MessageId::KeyTimeNegative:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "A key at %1 s is out of range: keys lie at 0 s or later.");
+        case MessageId::KeyTimeTooLate:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage", "A key at %1 s is out of range: keys lie from 0 s to %2 s.");
+        case MessageId::ClipFrameRateInvalid:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "A clip's frame rate must be a positive number of frames per second.");
 
         case MessageId::PaintNoSuchBone:
             return RIGMESH_TRANSLATABLE("EngineMessage", "The part has no bone %1 to paint.");
         case MessageId::PaintBoneLocked:
             return RIGMESH_TRANSLATABLE("EngineMessage",
                                         "Bone %1 is locked; unlock it to paint it.");
+        case MessageId::PaintLockedNoSuchBone:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "The part has no bone %1 to lock.");
         case MessageId::PaintBrushInvalid:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
@@ -284,8 +362,8 @@ const char* messageTemplate(MessageId id) {
         case MessageId::PaintMirrorAsymmetric:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
-                "This part is not mirror symmetric any more (merged or cut), so X-mirror cannot "
-                "paint it.");
+                "This part has no left-right mirror plane (its two sides differ by more than 2% "
+                "of its size), so X-mirror cannot paint it.");
         case MessageId::CleanThresholdOutOfRange:
             return RIGMESH_TRANSLATABLE("EngineMessage",
                                         "The clean threshold must be at least 0 and below 1.");
@@ -340,6 +418,57 @@ const char* messageTemplate(MessageId id) {
             return RIGMESH_TRANSLATABLE("EngineMessage",
                                         "the surface is not manifold, so it cannot be decimated");
 
+        case MessageId::ImportNoSuchFile:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Cannot import \"%1\": there is no such file.");
+        case MessageId::ImportNotAFile:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "Cannot import \"%1\": it is not a file.");
+        case MessageId::ImportReaderMissing:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Cannot import \"%1\": the program that reads imports (rigmesh) is not "
+                "installed.");
+        case MessageId::ImportReaderNotStarted:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Cannot import \"%1\": the import reader could not be started (%2).");
+        case MessageId::ImportTimedOut:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Cannot import \"%1\": reading it took longer than %2 s, so it was stopped "
+                "(the file is probably broken).");
+        case MessageId::ImportReaderCrashed:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Cannot import \"%1\": the importer crashed on it (%2); the file is "
+                "probably broken.");
+        case MessageId::ImportOutOfMemory:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Cannot import \"%1\": reading it needed more than %2 of memory, so it was "
+                "stopped.");
+        case MessageId::ImportReaderFailed:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage", "Cannot import \"%1\": the importer failed (exit status %2).");
+        case MessageId::ImportBadData:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage", "Cannot import \"%1\": the importer returned bad data (%2).");
+        case MessageId::ImportPartUnusable:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Cannot import \"%1\": its part \"%2\" is not usable: %3");
+        case MessageId::ImportUnreadable:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "Cannot import \"%1\": %2");
+        case MessageId::ImportUnknownFormat:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Cannot import \"%1\": it is damaged or not in a format the importer knows.");
+        case MessageId::ImportIncomplete:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Cannot import \"%1\": the file is incomplete.");
+        case MessageId::ImportNoTriangleMesh:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Cannot import \"%1\": it holds no triangle mesh.");
+
         case MessageId::AutoRigPartIsRigged:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
@@ -382,6 +511,11 @@ const char* messageTemplate(MessageId id) {
                                         "No skeleton could be found in the mesh: %1");
         case MessageId::AutoRigCancelled:
             return RIGMESH_TRANSLATABLE("EngineMessage", "Rigging was cancelled.");
+        case MessageId::AutoRigBoneTooShort:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "The mesh is too small for a bone: its only bone would be %1 long, "
+                "shorter than the shortest bone allowed (%2).");
         case MessageId::AutoRigRepairWelded:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage", "joined %1 vertices that sat at the same position (split seams)");
@@ -417,11 +551,18 @@ std::string fillMessage(std::string_view text, const std::vector<std::string>& a
             out += text[i];
         }
     }
-    return out;
+    return messageText(out);
 }
 
 std::string englishText(const Message& message) {
     return fillMessage(messageTemplate(message.id), message.args);
+}
+
+std::string shortNumber(double value) {
+    std::ostringstream text;
+    text.precision(3);
+    text << value;
+    return text.str();
 }
 
 }  // namespace rigmesh

@@ -10,6 +10,7 @@
 #include "part/BoneAnnotations.h"
 #include "part/BoneWeights.h"
 #include "rig/LocalBoneHeat.h"
+#include "rig/ShortBones.h"
 
 namespace rigmesh {
 
@@ -90,6 +91,13 @@ BoneEditResult splitBoneAt(const Part& part, BoneId bone, const Vec3& at) {
     const double t = closestSegmentParameter(at, segment);
     if (t < kEndFraction || t > 1.0 - kEndFraction)
         throw Error(MessageId::SplitTooCloseToJoint);
+    // Both halves at least the shortest bone (rig/ShortBones.h), however
+    // short the bone already is.
+    const double length = (segment.tail - segment.head).norm();
+    const double minimum = minimumBoneLength(part.mesh);
+    const double shorterHalf = std::min(t, 1.0 - t) * length;
+    if (shorterHalf < minimum)
+        throw Error(MessageId::SplitBoneTooShort, shortNumber(shorterHalf), shortNumber(minimum));
     const Vec3 point = segment.head + t * (segment.tail - segment.head);
     Skeleton skeleton = part.skeleton;
     const JointId middle = skeleton.splitBone(bone, point);
@@ -131,6 +139,13 @@ BoneEditResult deleteBone(const Part& part, BoneId bone) {
     Skeleton skeleton = part.skeleton;
     skeleton.collapseBone(
         bone, 0.5 * (part.skeleton.joint(b.head).position + part.skeleton.joint(b.tail).position));
+    // The neighbours now reach the midpoint: none may end up shorter than
+    // the shortest bone (rig/ShortBones.h).
+    const double minimum = minimumBoneLength(part.mesh);
+    for (BoneId id : neighbours)
+        if (skeleton.hasBone(id) && skeleton.boneLength(id) < minimum)
+            throw Error(MessageId::DeleteLeavesShortBone, id, shortNumber(skeleton.boneLength(id)),
+                        shortNumber(minimum));
 
     // The collapsed piece (paper 3.3: between the cuts through the far joints
     // of the neighbouring bones): every vertex led by the bone or a

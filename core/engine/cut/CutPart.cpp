@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "autorig/JointsInside.h"
 #include "base/Error.h"
 #include "base/ParallelFor.h"
 #include "base/Stopwatch.h"
@@ -14,9 +15,11 @@
 #include "geometry/ConstrainedTriangulation.h"
 #include "mesh/Fairing.h"
 #include "mesh/MeshAdjacency.h"
+#include "mesh/MeshChecks.h"
 #include "part/BoneAnnotations.h"
 #include "part/BoneConnection.h"
 #include "part/BoneWeights.h"
+#include "rig/ShortBones.h"
 #include "surface/PatchLattice.h"
 
 namespace rigmesh {
@@ -62,34 +65,89 @@ std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const Cut
     return added;
 }
 
-// The skeleton with every bone that crosses the plane split at the crossing.
-// `tailHalf` maps a split bone to its new half beyond the crossing.
-Skeleton splitCrossingBones(const Skeleton& skeleton, const CutSurface& surface,
-                            std::map<BoneId, BoneId>& tailHalf) {
-    Skeleton split = skeleton;
+// Which piece each joint of the part lies in: the piece whose closed
+// (patched) surface winds around it most (the generalized winding number).
+// A swept cut ends where the stroke was drawn, so which side of the cut
+// surface's extension a joint is on says nothing about its piece: the torso
+// beside an arm cut off is on both sides of the arm cut's extension. A
+// joint that neither piece or both pieces wind around (a tip joint just
+// outside the surface; a joint on the cut's patch, which both patched
+// pieces may claim) goes by its side of the cut; `pieces` are sorted by
+// side.
+std::map<JointId, int> jointPieces(const Skeleton& skeleton, const std::array<TriMesh, 2>& meshes,
+                                   const CutSurface& surface) {
+    std::map<JointId, int> pieceOf;
+    for (const Joint& joint : skeleton.joints()) {
+        const double w0 = windingNumber(meshes[0], joint.position);
+        const double w1 = windingNumber(meshes[1], joint.position);
+        if ((w0 >= 0.5) == (w1 >= 0.5))
+            pieceOf[joint.id] = surface.side(joint.position) < 0.0 ? 0 : 1;
+        else
+            pieceOf[joint.id] = w0 >= w1 ? 0 : 1;
+    }
+    return pieceOf;
+}
+
+// The skeleton with every bone whose joints lie in different pieces split
+// where it crosses the cut surface, and each joint's piece (-1: both, a new
+// joint at a crossing or a joint on the cut). `tailHalf` maps a split bone
+// to its new half on its tail's side. A crossing within `minimum` of one of
+// the bone's joints snaps to that joint (rig/ShortBones.h): the bone is not
+// split, the joint belongs to both pieces, and `snapped` keeps, per side of
+// the cut surface at the joint (a piece's MeshPiece::side), the shortest
+// bone a split would have left there: a tip joint may lie outside both
+// patched pieces, so its piece cannot tell.
+struct SplitSkeleton {
+    Skeleton skeleton;
+    std::map<BoneId, BoneId> tailHalf;
+    std::map<int, double> snapped;  // side (-1, 1) -> shortest bone not made
+};
+
+SplitSkeleton splitCrossingBones(const Skeleton& skeleton, const CutSurface& surface,
+                                 std::map<JointId, int>& pieceOf, double minimum) {
+    SplitSkeleton out{skeleton, {}, {}};
+    auto snap = [&](JointId joint, double length) {
+        const int side = surface.side(skeleton.joint(joint).position) < 0.0 ? -1 : 1;
+        auto [at, inserted] = out.snapped.emplace(side, length);
+        if (!inserted)
+            at->second = std::min(at->second, length);
+        pieceOf[joint] = -1;
+    };
     for (const Bone& bone : skeleton.bones()) {
+        if (pieceOf[bone.head] == pieceOf[bone.tail] || pieceOf[bone.head] < 0 ||
+            pieceOf[bone.tail] < 0)
+            continue;
         const Vec3 head = skeleton.joint(bone.head).position;
         const Vec3 tail = skeleton.joint(bone.tail).position;
         const double a = surface.side(head);
         const double b = surface.side(tail);
-        if ((a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0)) {
-            const JointId middle = split.splitBone(bone.id, surface.crossing(head, tail));
-            for (BoneId id : split.bonesAt(middle))
+        // Where the bone meets the cut; a bone whose ends read on one side
+        // (it passes the cut's end) is split at its middle.
+        const Vec3 at = (a < 0.0) != (b < 0.0) ? surface.crossing(head, tail) : 0.5 * (head + tail);
+        const double toHead = (at - head).norm();
+        const double toTail = (at - tail).norm();
+        if (std::min(toHead, toTail) < minimum) {
+            if (toHead <= toTail)
+                snap(bone.head, toHead);
+            else
+                snap(bone.tail, toTail);
+        } else {
+            const JointId middle = out.skeleton.splitBone(bone.id, at);
+            pieceOf[middle] = -1;
+            for (BoneId id : out.skeleton.bonesAt(middle))
                 if (id != bone.id)
-                    tailHalf[bone.id] = id;
+                    out.tailHalf[bone.id] = id;
         }
     }
-    return split;
+    return out;
 }
 
-// The joints on `side` of the plane and those on it (a split's new joints
-// belong to both pieces).
-Skeleton skeletonOnSide(const Skeleton& split, const CutSurface& surface, int side,
-                        double tolerance) {
+// The joints of piece `k` and those shared by both pieces.
+Skeleton skeletonOfPiece(const Skeleton& split, const std::map<JointId, int>& pieceOf, int k) {
     Skeleton piece = split;
     for (const Joint& joint : split.joints()) {
-        const double d = surface.side(joint.position);
-        if (side * d < -tolerance)
+        const int owner = pieceOf.at(joint.id);
+        if (owner >= 0 && owner != k)
             piece.removeJoint(joint.id);
     }
     return piece;
@@ -99,8 +157,9 @@ Skeleton skeletonOnSide(const Skeleton& split, const CutSurface& surface, int si
 // its limbs together (a star cut near its centre: the arms on one side meet
 // only at the centre joint on the other). Each stray component is joined by
 // a bone from its joint nearest to the main component, so each piece keeps
-// one tree (paper 3.1).
-void joinComponents(Skeleton& skeleton) {
+// one tree (paper 3.1); joints closer than `minimum` become one instead
+// (rig/ShortBones.h).
+void joinComponents(Skeleton& skeleton, double minimum) {
     while (true) {
         std::map<JointId, int> component;
         int count = 0;
@@ -136,7 +195,7 @@ void joinComponents(Skeleton& skeleton) {
                         best = d;
                     }
                 }
-        if (best == 0.0)
+        if (best < minimum || best == 0.0)
             skeleton.mergeJoints(from, to);
         else
             skeleton.addBone(from, to);
@@ -151,6 +210,9 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
         throw Error(MessageId::CutNeedsRiggedPart);
     // Each piece's skeleton is rebuilt as one connected tree.
     requireConnectedSkeleton(part);
+    // The split and the patches rely on a closed, oriented surface.
+    if (const std::vector<std::string> problems = part.validateSolid(); !problems.empty())
+        throw Error(MessageId::CutPartNotSolid, problems.front());
     if (request.stroke.empty() && (!(request.normal.norm() > 0.0) || !request.normal.allFinite() ||
                                    !request.point.allFinite()))
         throw Error(MessageId::CutNeedsPlane);
@@ -171,36 +233,53 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
         throw Error(MessageId::CutPiecesOnOneSide);
 
     const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(part.mesh);
-    std::map<BoneId, BoneId> tailHalf;
-    const Skeleton split = splitCrossingBones(part.skeleton, surface, tailHalf);
     const WeightsById& weights = part.weights.perVertex;
 
     CutResult result;
-    // The two pieces are independent: one thread each (the first error is
-    // rethrown here).
+    // The holes become patches; a smooth cut fairs their interior. The two
+    // pieces are independent: one thread each (the first error is rethrown
+    // here).
+    std::array<TriMesh, 2> meshes;
+    parallelFor(2, 2, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            meshes[k] = std::move(pieces[k].mesh);
+            std::vector<int>& patch = result.patches[k];
+            for (const std::vector<int>& hole : pieces[k].holes) {
+                const std::vector<int> added = fillHole(meshes[k], hole, surface, edge);
+                patch.insert(patch.end(), added.begin(), added.end());
+            }
+            if (request.style == CutStyle::Smooth)
+                fairPositions(meshes[k], patch);
+        }
+    });
+
+    std::map<JointId, int> pieceOf = jointPieces(part.skeleton, meshes, surface);
+    const double minimum = minimumBoneLength(part.mesh);
+    const SplitSkeleton split = splitCrossingBones(part.skeleton, surface, pieceOf, minimum);
+    const std::map<BoneId, BoneId>& tailHalf = split.tailHalf;
+
     parallelFor(2, 2, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             MeshPiece& piece = pieces[k];
             Part& out = result.pieces[k];
             out.name = part.name;
-            out.skeleton = skeletonOnSide(split, surface, piece.side, 1e-9 * edge);
-            if (out.skeleton.boneCount() == 0)
+            out.skeleton = skeletonOfPiece(split.skeleton, pieceOf, k);
+            if (out.skeleton.boneCount() == 0) {
+                // Its only bone would have been the bit of a bone beyond a
+                // snapped crossing: say how short.
+                const auto snapped = split.snapped.find(piece.side);
+                if (snapped != split.snapped.end())
+                    throw Error(MessageId::CutPieceBoneTooShort, shortNumber(snapped->second),
+                                shortNumber(minimum));
                 throw Error(MessageId::CutPieceWithoutBone);
-            joinComponents(out.skeleton);
+            }
+            joinComponents(out.skeleton, minimum);
             if (!out.skeleton.validate().empty())
                 throw Error(MessageId::CutPieceNotOneTree);
             out.skeleton.setRoot(chooseCentralRoot(out.skeleton));
             out.skeleton.reorient();
-
-            // The holes become patches; a smooth cut fairs their interior.
-            out.mesh = std::move(piece.mesh);
-            std::vector<int>& patch = result.patches[k];
-            for (const std::vector<int>& hole : piece.holes) {
-                const std::vector<int> added = fillHole(out.mesh, hole, surface, edge);
-                patch.insert(patch.end(), added.begin(), added.end());
-            }
-            if (request.style == CutStyle::Smooth)
-                fairPositions(out.mesh, patch);
+            out.mesh = std::move(meshes[k]);
+            const std::vector<int>& patch = result.patches[k];
 
             // Weights: the bones this piece kept (a split bone's far half stands
             // in for it), renormalised; the patch filled by least squares.
@@ -260,6 +339,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
             const std::vector<std::string> problems = out.validateSolid();
             if (!problems.empty())
                 throw Error(MessageId::CutInvalidPiece, problems.front());
+            result.volumes[k] = analyseMesh(out.mesh, false).volume;
         }
     });
     result.milliseconds = millisecondsSince(start);

@@ -34,8 +34,9 @@ CutSurface CutSurface::swept(std::vector<Vec3> stroke, const Vec3& direction) {
         const Vec3 off = p - stroke.front();
         deviation = std::max(deviation, (off - along * along.dot(off)).norm());
     }
-    if (stroke.size() == 2 || deviation <= 0.01 * chord.norm())
-        return plane(stroke.front(), chord.cross(d));
+    // A straight stroke sweeps one strip between its ends.
+    if (deviation <= 0.01 * chord.norm())
+        stroke = {stroke.front(), stroke.back()};
     CutSurface s;
     s.direction_ = d;
     s.stroke_ = std::move(stroke);
@@ -112,10 +113,7 @@ Vec3 CutSurface::fromPatch(const Vec2& q) const {
 
 TriMesh CutSurface::strip(const Eigen::AlignedBox3d& box) const {
     const double reach = 2.0 * box.diagonal().norm() + 1.0;
-    std::vector<Vec3> path = stroke_;
-    // The ends go on past the part along their segments.
-    path.front() -= reach * (path[1] - path[0]).normalized();
-    path.back() += reach * (path.back() - path[path.size() - 2]).normalized();
+    const std::vector<Vec3>& path = stroke_;
     const double centre = direction_.dot(box.center() - stroke_.front());
     TriMesh mesh;
     for (const Vec3& p : path) {

@@ -1,7 +1,9 @@
 // The surface a cut follows (paper 3.1): the surface an open stroke sweeps
-// in the view direction. For a straight stroke it is a plane; a curved
-// stroke sweeps a ruled surface, one flat strip per stroke segment. Sides,
-// crossings and the 2D frame its hole patches are triangulated in.
+// in the view direction, only as far as the stroke was drawn (as Blender's
+// knife cuts only where it is drawn), or a whole plane. A straight stroke
+// sweeps one flat strip, a curved one a ruled surface of one strip per
+// stroke segment. Sides, crossings and the 2D frame its hole patches are
+// triangulated in.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -15,8 +17,9 @@ namespace rigmesh {
 class CutSurface {
   public:
     static CutSurface plane(const Vec3& point, const Vec3& normal);
-    // `stroke` (at least two points) is swept along `direction`; a stroke
-    // that is straight within 1% of its length gives a plane.
+    // `stroke` (at least two points) is swept along `direction`, between its
+    // end points only; a stroke that is straight within 1% of its length
+    // sweeps one flat strip between its ends.
     static CutSurface swept(std::vector<Vec3> stroke, const Vec3& direction);
 
     bool isPlane() const { return stroke_.empty(); }
@@ -24,7 +27,9 @@ class CutSurface {
     const Vec3& planeNormal() const { return normal_; }
 
     // Signed: > 0 on the side the normal (or, swept, the strips' normals
-    // stroke direction x sweep direction) points to.
+    // stroke direction x sweep direction) points to. Beyond a swept
+    // stroke's ends the side is that of its end segments' lines, so it is
+    // only meaningful near the drawn stroke.
     double side(const Vec3& p) const;
     // The point where the segment a-b (on opposite sides) crosses.
     Vec3 crossing(const Vec3& a, const Vec3& b) const;
@@ -32,8 +37,9 @@ class CutSurface {
     // along the sweep; or plane coordinates) and back.
     Vec2 toPatch(const Vec3& p) const;
     Vec3 fromPatch(const Vec2& q) const;
-    // The swept strip as a triangle mesh reaching past `box` on every side
-    // (for CGAL's split).
+    // The swept strip as a triangle mesh reaching past `box` in the sweep
+    // direction and ending at the stroke's ends (for CGAL's split): only the
+    // surface where the stroke was drawn cuts.
     TriMesh strip(const Eigen::AlignedBox3d& box) const;
 
   private:

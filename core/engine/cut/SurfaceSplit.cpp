@@ -68,6 +68,32 @@ class EdgeCrossings {
     std::vector<Crossing> crossings_;
 };
 
+// The side of the cut surface a piece lies on, judged by the vertices next
+// to its holes: a swept surface ends where the stroke was drawn, and beyond
+// its ends side() extends the end segments, so only near the cut is the
+// side the piece's own (a vertex far away, on a limb the extension would
+// cross, may read the other way).
+int sideNearHoles(const MeshPiece& piece, const CutSurface& cut) {
+    std::vector<char> onHole(piece.mesh.vertices.size(), 0);
+    for (const std::vector<int>& loop : piece.holes)
+        for (int v : loop)
+            onHole[v] = 1;
+    double sum = 0.0, farthest = 0.0;
+    for (const auto& face : piece.mesh.faces) {
+        const bool touches = onHole[face[0]] || onHole[face[1]] || onHole[face[2]];
+        for (int v : face) {
+            const double d = cut.side(piece.mesh.vertices[v]);
+            if (touches && !onHole[v])
+                sum += d;
+            if (std::abs(d) > std::abs(farthest))
+                farthest = d;
+        }
+    }
+    if (sum == 0.0)
+        sum = farthest;  // no vertex off the holes beside them: a sliver
+    return sum >= 0.0 ? 1 : -1;
+}
+
 }  // namespace
 
 std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut) {
@@ -92,7 +118,6 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut
         MeshPiece piece;
         std::vector<int> index(
             component.number_of_vertices() + component.number_of_removed_vertices(), -1);
-        double farthest = 0.0;
         for (VertexIndex v : component.vertices()) {
             const Vec3 p = toVec(component.point(v));
             index[v.idx()] = piece.mesh.vertexCount();
@@ -105,11 +130,7 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut
             } else {
                 piece.sources.push_back(SourceTriangles({&mesh}).sourceOf(p));
             }
-            const double d = cut.side(p);
-            if (std::abs(d) > std::abs(farthest))
-                farthest = d;
         }
-        piece.side = farthest >= 0.0 ? 1 : -1;
         for (FaceIndex f : component.faces()) {
             std::array<int, 3> face{};
             int corner = 0;
@@ -133,6 +154,7 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut
             } while (g != h);
             piece.holes.push_back(std::move(loop));
         }
+        piece.side = sideNearHoles(piece, cut);
         pieces.push_back(std::move(piece));
     }
     return pieces;

@@ -18,7 +18,9 @@ struct MeshPiece {
     // The holes the cut left, each a loop of vertex indices in the order of
     // the mesh's border (a patch filling it runs the same way).
     std::vector<std::vector<int>> holes;
-    int side = 0;  // +1: on the cut surface's positive side, -1: the other
+    // +1: on the cut surface's positive side, -1: the other, as the
+    // vertices beside its holes lie.
+    int side = 0;
 };
 
 // Throws Error when the input is not a closed manifold surface.

@@ -8,16 +8,27 @@
 namespace rigmesh {
 namespace {
 
+// The key before `ticks` and how far towards the next one it lies. A binary
+// search (the import samples every key time, so a scan made it quadratic:
+// 48,000 key times took 26 s); defined for keys out of order too, which a
+// broken file may hold.
 template <typename Key>
 std::pair<std::size_t, double> bracket(const Key* keys, unsigned count, double ticks) {
     if (count <= 1 || ticks <= keys[0].mTime)
         return {0, 0.0};
-    for (unsigned k = 1; k < count; ++k)
-        if (ticks <= keys[k].mTime) {
-            const double span = keys[k].mTime - keys[k - 1].mTime;
-            return {k - 1, span > 0 ? (ticks - keys[k - 1].mTime) / span : 1.0};
-        }
-    return {count - 1, 0.0};
+    // The first k >= 1 with ticks <= keys[k].mTime, or count.
+    unsigned low = 1, high = count;
+    while (low < high) {
+        const unsigned middle = low + (high - low) / 2;
+        if (keys[middle].mTime < ticks)
+            low = middle + 1;
+        else
+            high = middle;
+    }
+    if (low == count)
+        return {count - 1, 0.0};
+    const double span = keys[low].mTime - keys[low - 1].mTime;
+    return {low - 1, span > 0 ? (ticks - keys[low - 1].mTime) / span : 1.0};
 }
 
 Vec3 sampleVector(const aiVectorKey* keys, unsigned count, const Vec3& fallback, double ticks) {

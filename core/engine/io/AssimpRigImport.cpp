@@ -375,6 +375,9 @@ std::optional<Clip> importClip(const aiAnimation& animation, const AssimpNodeTre
     const double perSecond = animation.mTicksPerSecond > 0 ? animation.mTicksPerSecond : 1.0;
     Clip clip(clipRate(ticks, perSecond));
     clip.interpolation = Interpolation::Linear;
+    // Keys lie at 0 s or later (Clip.h): a clip that starts before 0 s is
+    // moved as a whole to start there.
+    const double start = std::min(0.0, *ticks.begin());
 
     const std::vector<BoneId> hierarchy = skeleton.bonesInHierarchyOrder();
     for (double t : ticks) {
@@ -407,7 +410,7 @@ std::optional<Clip> importClip(const aiAnimation& animation, const AssimpNodeTre
                 pose.setRotation(bone.tail, (world[*parent].conjugate() * rotation).normalized());
             }
         }
-        clip.setKey(t / perSecond, pose);
+        clip.setKey((t - start) / perSecond, pose);
     }
     return clip;
 }

@@ -32,12 +32,17 @@ std::string rigToJson(const Part& part, const std::string& meshFile) {
     checkRigIsFinite(part);
     const Skeleton& skeleton = part.skeleton;
     nlohmann::json rig;
+    rig["about"] =
+        "head, tail, parent, root, weights and failed_bones name joints and bones by their "
+        "position in joints and bones (from 0); id, head_id, tail_id, parent_id and root_id "
+        "are the stable ids documents and recipes use";
     rig["joints"] = nlohmann::json::array();
     for (const Joint& joint : skeleton.joints())
         rig["joints"].push_back(
             {{"id", joint.id},
              {"position", {joint.position.x(), joint.position.y(), joint.position.z()}}});
     rig["root"] = skeleton.indexOfJoint(skeleton.root());
+    rig["root_id"] = skeleton.root();
     rig["bones"] = nlohmann::json::array();
     for (const Bone& bone : skeleton.bones()) {
         auto parent = skeleton.parentBone(bone.id);
@@ -45,6 +50,9 @@ std::string rigToJson(const Part& part, const std::string& meshFile) {
                                 {"head", skeleton.indexOfJoint(bone.head)},
                                 {"tail", skeleton.indexOfJoint(bone.tail)},
                                 {"parent", parent ? skeleton.indexOfBone(*parent) : -1},
+                                {"head_id", bone.head},
+                                {"tail_id", bone.tail},
+                                {"parent_id", parent ? nlohmann::json(*parent) : nlohmann::json()},
                                 {"length", skeleton.boneLength(bone.id)}});
     }
     if (!meshFile.empty())

@@ -17,9 +17,11 @@
 #include "io/AssimpJoinVertices.h"
 #include "io/AssimpSceneBuilder.h"
 #include "io/BoneTipHints.h"
+#include "io/ColladaSkinsAndClips.h"
 #include "io/ExportFormat.h"
 #include "io/FbxSentinels.h"
 #include "io/FiniteScene.h"
+#include "io/GltfAnimations.h"
 #include "io/GltfBuffers.h"
 #include "io/GltfSceneRoots.h"
 #include "io/GltfSkins.h"
@@ -55,6 +57,35 @@ unsigned preprocessing(ExportFormat format) {
                ? aiProcess_JoinIdenticalVertices
                : 0u;
 }
+
+// While alive, the scene has no animations for Assimp to export (when
+// `detach`); they come back, to be freed with the scene, however this ends.
+class DetachedAnimations {
+  public:
+    DetachedAnimations(aiScene& scene, bool detach)
+        : scene_(scene), list_(scene.mAnimations), count_(scene.mNumAnimations), detach_(detach) {
+        if (detach_) {
+            scene_.mAnimations = nullptr;
+            scene_.mNumAnimations = 0;
+        }
+    }
+    ~DetachedAnimations() {
+        scene_.mAnimations = list_;
+        scene_.mNumAnimations = count_;
+    }
+    DetachedAnimations(const DetachedAnimations&) = delete;
+    DetachedAnimations& operator=(const DetachedAnimations&) = delete;
+    std::vector<const aiAnimation*> animations() const {
+        return detach_ ? std::vector<const aiAnimation*>(list_, list_ + count_)
+                       : std::vector<const aiAnimation*>();
+    }
+
+  private:
+    aiScene& scene_;
+    aiAnimation** list_;
+    unsigned count_;
+    bool detach_;
+};
 
 // The files Assimp produced in memory: the main file and its companions by
 // extension ("bin" for .gltf).
@@ -204,18 +235,30 @@ StagedExport stageScene(const std::vector<ExportPart>& parts, const Clip* clip,
         return staged;
     }
 
-    ExportedFiles files = exportToMemory(scene, format, path);
+    // glTF animations are written by us (GltfAnimations.h), in linear time.
+    const bool gltf = format == ExportFormat::Glb || format == ExportFormat::Gltf;
+    std::vector<const aiAnimation*> animations;
+    ExportedFiles files;
+    {
+        const DetachedAnimations detached(scene, gltf);
+        animations = detached.animations();
+        files = exportToMemory(scene, format, path);
+    }
     switch (format) {
         case ExportFormat::Glb: {
             GlbChunks glb = splitGlb(zeroUnreferencedGlbBytes(std::move(files.main)));
+            glb.json = withGltfAnimations(glb.json, glb.bin, animations);
             glb.json = gltfPostPasses(glb.json, glb.bin, rigs);
             staged.files_.emplace_back(target, joinGlb(glb));
             break;
         }
-        case ExportFormat::Gltf:
-            files.main = gltfPostPasses(files.main, files.companions["bin"], rigs);
+        case ExportFormat::Gltf: {
+            std::string& bin = files.companions["bin"];
+            files.main = withGltfAnimations(files.main, bin, animations);
+            files.main = gltfPostPasses(files.main, bin, rigs);
             stageGltf(files, target, staged.files_, staged.undoOnFailure_, staged.obsolete_);
             break;
+        }
         case ExportFormat::Fbx:
             if (assimpNeedsFbxSentinelFix()) {
                 const std::vector<std::uint8_t> fixed = addFbxSentinels(
@@ -226,7 +269,8 @@ StagedExport stageScene(const std::vector<ExportPart>& parts, const Clip* clip,
             staged.files_.emplace_back(target, files.main);
             break;
         case ExportFormat::Collada:
-            staged.files_.emplace_back(target, withColladaBoneTips(files.main, rigs));
+            staged.files_.emplace_back(
+                target, withColladaSkinRootsAndClips(withColladaBoneTips(files.main, rigs)));
             break;
         case ExportFormat::Obj:
             break;  // staged above

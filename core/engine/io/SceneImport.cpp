@@ -15,6 +15,7 @@
 #include <set>
 
 #include "base/Error.h"
+#include "base/MessageText.h"
 #include "io/AssimpBoneHints.h"
 #include "io/AssimpConversions.h"
 #include "io/AssimpNodeTree.h"
@@ -24,10 +25,27 @@
 namespace rigmesh {
 namespace {
 
+// Assimp's reason for refusing a file, when it is a short sentence; a long
+// one quotes the file's own data (a whole float array) or the library's
+// internals, and says nothing more than "it cannot be read".
+constexpr std::size_t kMaxReaderReason = 120;
+
+// Messages name the file, not the folders it is in.
+std::string fileName(const std::string& path) {
+    return std::filesystem::path(path).filename().string();
+}
+
+Error unreadable(const std::string& path, const std::string& reason) {
+    const std::string line = oneLine(reason, std::string::npos);
+    if (line.empty() || line.size() > kMaxReaderReason)
+        return Error(MessageId::ImportUnknownFormat, fileName(path));
+    return Error(MessageId::ImportUnreadable, fileName(path), line);
+}
+
 const aiScene* readScene(Assimp::Importer& importer, const std::string& path) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error))
-        throw Error("cannot import " + path + ": no such file");
+        throw Error(MessageId::ImportNoSuchFile, fileName(path));
     // FBX pivots as extra `$AssimpFbx$` nodes would split bones from their nodes.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
     // COLLADA nodes by their names (Blender's "Lower"), not their ids
@@ -39,12 +57,12 @@ const aiScene* readScene(Assimp::Importer& importer, const std::string& path) {
             importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                         aiProcess_SortByPType | aiProcess_ValidateDataStructure);
     } catch (const std::exception& exception) {
-        throw Error("cannot import " + path + ": " + exception.what());
+        throw unreadable(path, exception.what());
     }
     if (scene == nullptr)
-        throw Error("cannot import " + path + ": " + importer.GetErrorString());
+        throw unreadable(path, importer.GetErrorString());
     if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mRootNode == nullptr)
-        throw Error("cannot import " + path + ": the file is incomplete");
+        throw Error(MessageId::ImportIncomplete, fileName(path));
     return scene;
 }
 
@@ -144,7 +162,7 @@ ImportedScene importScene(const std::string& path) {
                 instances.push_back({m, n});
         }
     if (instances.empty())
-        throw Error("cannot import " + path + ": it holds no triangle mesh");
+        throw Error(MessageId::ImportNoTriangleMesh, fileName(path));
 
     std::set<std::string> weightedAnywhere;
     for (unsigned m = 0; m < scene.mNumMeshes; ++m)
@@ -197,6 +215,7 @@ ImportedScene importScene(const std::string& path) {
             why = importRig(scene, group, tree, weightedAnywhere, hints, imported, bones);
         else
             imported.part.mesh = worldMesh(first, group.front().global);
+        imported.part.surfaceFromFile = true;  // as the file has it: maybe open
         if (why.empty()) {
             keepBoneNames(imported);
             for (unsigned a = 0; a < scene.mNumAnimations; ++a)

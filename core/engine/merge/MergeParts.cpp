@@ -9,11 +9,13 @@
 #include "merge/MeshUnion.h"
 #include "merge/SeamSmoothing.h"
 #include "mesh/MeshAdjacency.h"
+#include "mesh/MeshSelfIntersections.h"
 #include "part/BoneAnnotations.h"
 #include "part/BoneConnection.h"
 #include "part/CarryAcross.h"
 #include "rig/BoneSegments.h"
 #include "rig/LocalBoneHeat.h"
+#include "rig/ShortBones.h"
 
 namespace rigmesh {
 
@@ -132,6 +134,16 @@ std::vector<BoneId> pruneBones(Skeleton& skeleton, WeightsById& weights,
     return pruned;
 }
 
+// The union needs closed, oriented surfaces that do not cross themselves
+// anywhere (CGAL's corefinement only notices a self-intersection near the
+// other surface): each input is checked first and refused by name.
+void checkMergeInput(const Part& part, MessageId notSolid, MessageId intersectsItself) {
+    if (const std::vector<std::string> problems = part.validateSolid(); !problems.empty())
+        throw Error(notSolid, problems.front());
+    if (const int pairs = countSelfIntersectingFacePairs(part.mesh); pairs > 0)
+        throw Error(intersectsItself, pairs);
+}
+
 }  // namespace
 
 std::vector<double> weightDifferences(const WeightsById& a, const WeightsById& b) {
@@ -157,8 +169,12 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
     // The joined skeleton is one connected tree (SkeletonJoin).
     requireConnectedSkeleton(target);
     requireConnectedSkeleton(dragged);
+    checkMergeInput(target, MessageId::MergeTargetNotSolid, MessageId::MergeTargetIntersectsItself);
+    checkMergeInput(dragged, MessageId::MergeDraggedNotSolid,
+                    MessageId::MergeDraggedIntersectsItself);
     MergeResult result;
-    SkeletonJoin join = joinSkeletons(target.skeleton, dragged.skeleton, request.join);
+    SkeletonJoin join = joinSkeletons(target.skeleton, dragged.skeleton, request.join,
+                                      minimumBoneLength(target.mesh));
     result.draggedTranslation = join.draggedTranslation;
     TriMesh draggedMesh = dragged.mesh;
     for (Vec3& p : draggedMesh.vertices)

@@ -1,5 +1,7 @@
 #include "merge/SkeletonJoin.h"
 
+#include <algorithm>
+
 #include "base/Error.h"
 #include "rig/BoneSegment.h"
 
@@ -14,7 +16,7 @@ constexpr double kSplitEndFraction = 0.05;
 }  // namespace
 
 SkeletonJoin joinSkeletons(const Skeleton& target, const Skeleton& dragged,
-                           const SkeletonJoinRequest& request) {
+                           const SkeletonJoinRequest& request, double minimumBone) {
     if (!dragged.hasJoint(request.draggedJoint))
         throw Error(MessageId::MergeNoDraggedJoint, request.draggedJoint);
     SkeletonJoin join;
@@ -35,9 +37,12 @@ SkeletonJoin joinSkeletons(const Skeleton& target, const Skeleton& dragged,
             const BoneSegment segment{target.joint(bone.head).position,
                                       target.joint(bone.tail).position};
             const double t = closestSegmentParameter(request.splitPoint, segment);
-            if (t < kSplitEndFraction) {
+            const double length = (segment.tail - segment.head).norm();
+            const double snap =
+                length > 0.0 ? std::max(kSplitEndFraction, minimumBone / length) : 1.0;
+            if (t < snap && t <= 0.5) {
                 join.meetingJoint = bone.head;
-            } else if (t > 1.0 - kSplitEndFraction) {
+            } else if (t > 1.0 - snap) {
                 join.meetingJoint = bone.tail;
             } else {
                 const JointId oldTail = bone.tail;
@@ -65,8 +70,12 @@ SkeletonJoin joinSkeletons(const Skeleton& target, const Skeleton& dragged,
             merged.addBone(join.draggedJoints.at(bone.head), join.draggedJoints.at(bone.tail));
     if (request.mode == MergeMode::Connect) {
         const JointId from = join.draggedJoints.at(request.draggedJoint);
-        if ((merged.joint(from).position - meetingPoint).norm() == 0.0)
+        const double apart = (merged.joint(from).position - meetingPoint).norm();
+        if (apart == 0.0)
             throw Error(MessageId::MergeJointsCoincide);
+        if (apart < minimumBone)
+            throw Error(MessageId::MergeJointsTooClose, shortNumber(apart),
+                        shortNumber(minimumBone));
 
         join.connectingBone = merged.addBone(join.meetingJoint, from);
     }

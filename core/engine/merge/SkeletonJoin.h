@@ -34,8 +34,11 @@ struct SkeletonJoin {
     std::optional<BoneId> connectingBone;      // connect: the new bone
 };
 
-// Throws Error with a message for the user on unknown joints or bones.
+// Throws Error with a message for the user on unknown joints or bones, or
+// joints to connect closer than `minimumBone` (rig/ShortBones.h). A split
+// point within 5% of the bone or `minimumBone` of one of its joints snaps to
+// that joint, so no bone shorter than that is made.
 SkeletonJoin joinSkeletons(const Skeleton& target, const Skeleton& dragged,
-                           const SkeletonJoinRequest& request);
+                           const SkeletonJoinRequest& request, double minimumBone = 0.0);
 
 }  // namespace rigmesh

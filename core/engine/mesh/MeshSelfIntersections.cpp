@@ -165,7 +165,7 @@ bool facesIntersect(const TriMesh& mesh, const std::vector<Point>& points,
 }
 
 // The same test as PMP::self_intersections, run on the soup itself.
-int countOnSoup(const TriMesh& mesh) {
+std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh) {
     using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
     const std::vector<Point> points = toPoints(mesh);
     std::vector<Box> boxes;
@@ -175,19 +175,24 @@ int countOnSoup(const TriMesh& mesh) {
         if (!CGAL::collinear(points[a], points[b], points[c]))
             boxes.emplace_back(points[a].bbox() + points[b].bbox() + points[c].bbox(), i);
     }
-    int count = 0;
+    std::vector<std::array<int, 2>> pairs;
     const auto callback = [&](const Box& x, const Box& y) {
         if (facesIntersect(mesh, points, mesh.faces[x.info()], mesh.faces[y.info()]))
-            ++count;
+            pairs.push_back({std::min(x.info(), y.info()), std::max(x.info(), y.info())});
     };
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), callback);
-    return count;
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
 }
 
 }  // namespace
 
 int countSelfIntersectingFacePairs(const TriMesh& mesh) {
-    return countOnSoup(mesh);
+    return static_cast<int>(pairsOnSoup(mesh).size());
+}
+
+std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh) {
+    return pairsOnSoup(mesh);
 }
 
 int countSelfIntersectingFacePairsWithSurfaceMesh(const TriMesh& mesh) {

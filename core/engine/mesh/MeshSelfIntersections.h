@@ -2,6 +2,9 @@
 // interface so that only MeshSelfIntersections.cpp pays CGAL's compile time.
 #pragma once
 
+#include <array>
+#include <vector>
+
 #include "mesh/TriMesh.h"
 
 namespace rigmesh {
@@ -14,6 +17,10 @@ namespace rigmesh {
 // Faces whose corners are collinear are skipped, as CGAL does (they are
 // degenerate faces). Indices must be in range and coordinates finite.
 int countSelfIntersectingFacePairs(const TriMesh& mesh);
+
+// The same pairs, each as two face indices (smaller first), sorted: where
+// they are, for a message that says so.
+std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh);
 
 // The same count from PMP::self_intersections itself on a CGAL::Surface_mesh
 // (after orienting the soup), or -1 when the soup is not an orientable

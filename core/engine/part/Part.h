@@ -70,6 +70,12 @@ struct Part {
     // rebuild from the sketch would recompute them, so the studio asks first.
     // Merges and cuts keep it (they re-skin only near the seam).
     bool weightsPainted = false;
+    // True for a surface read from another program's file (an import, as
+    // it was): it may be open or non-manifold, which merge and cut refuse.
+    // Every surface made here (sketch, merge, cut, auto-rig) is closed,
+    // manifold and consistently oriented, and a document's reader checks it
+    // (validateSolid) on every rigged part whose surface is not from a file.
+    bool surfaceFromFile = false;
 
     // Bones as segments in the order of skeleton.bones().
     std::vector<BoneSegment> boneSegments() const;

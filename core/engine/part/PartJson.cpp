@@ -124,6 +124,7 @@ json partToJson(const Part& part) {
                               {"faceCount", piece.faceCount}});
         out["meshPieces"] = std::move(pieces);
     }
+    out["surfaceFromFile"] = part.surfaceFromFile;
     return out;
 }
 
@@ -352,6 +353,11 @@ Part partFromJson(const json& object) {
     if (!part->meshPieces.empty())
         if (const std::vector<std::string> problems = part->validate(); !problems.empty())
             fail(problems.front());
+    // Parts written before it was stored: only a sketch's surface (it keeps
+    // its outline) is known to have been made here.
+    part->surfaceFromFile = object.contains("surfaceFromFile")
+                                ? boolean(field(object, "surfaceFromFile"), "surfaceFromFile")
+                                : part->outline.empty();
     return stored;
 }
 

@@ -52,6 +52,36 @@ bool setWeightKeepingLocks(WeightList& list, BoneId bone, double target,
     return true;
 }
 
+bool setWeightHandingOn(WeightList& list, BoneId bone, double target, BoneId receiver,
+                        const LockedBones& locked) {
+    if (setWeightKeepingLocks(list, bone, target, locked))
+        return true;
+    double lockedSum = 0.0;
+    for (const auto& [b, w] : list) {
+        if (b == bone)
+            continue;
+        if (!locked.contains(b) && w > 0.0)
+            return false;  // another unlocked bone was there: not a one-bone region
+        lockedSum += locked.contains(b) ? w : 0.0;
+    }
+    target = std::clamp(target, 0.0, std::max(0.0, 1.0 - lockedSum));
+    const double rest = 1.0 - lockedSum - target;
+    if (rest <= kDroppedWeight || receiver == bone || locked.contains(receiver))
+        return false;
+    WeightList out;
+    out.reserve(list.size() + 2);
+    for (const auto& entry : list)
+        if (entry.first != bone && entry.first != receiver &&
+            (entry.second > kDroppedWeight || locked.contains(entry.first)))
+            out.push_back(entry);
+    if (target > kDroppedWeight)
+        out.emplace_back(bone, target);
+    out.emplace_back(receiver, rest);
+    std::sort(out.begin(), out.end());
+    list = std::move(out);
+    return true;
+}
+
 bool normaliseKeepingLocks(WeightList& list, const LockedBones& locked) {
     double lockedSum = 0.0, freeSum = 0.0;
     for (const auto& [b, w] : list)

@@ -42,6 +42,14 @@ class LockedBones {
 // unlocked bone to hand the rest to or to take it from.
 bool setWeightKeepingLocks(WeightList& list, BoneId bone, double target, const LockedBones& locked);
 
+// As setWeightKeepingLocks, but where no other unlocked bone weighs the
+// vertex (a region `bone` alone leads) the weight `bone` gives up goes to
+// `receiver` (an unlocked bone other than `bone`), as Blender's
+// auto-normalise hands it on. False, with `list` unchanged, if nothing
+// changes: no weight to give up, or no room left by the locked bones.
+bool setWeightHandingOn(WeightList& list, BoneId bone, double target, BoneId receiver,
+                        const LockedBones& locked);
+
 // Rescales the unlocked entries so the list sums to 1, dropping those below
 // kDroppedWeight and keeping the locked ones bit for bit; the result is
 // sorted by bone. False, with `list` unchanged, if the unlocked entries sum

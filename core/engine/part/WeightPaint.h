@@ -2,19 +2,26 @@
 // Maya's Paint Skin Weights do: a dab raises (Add), lowers (Subtract), sets
 // (Replace) or evens out (Smooth) one bone's weight within a radius, with a
 // chosen falloff; the vertex's other unlocked bones take up the difference
-// so its weights keep summing to 1 (auto-normalise); locked bones never
-// change, and a vertex whose other bones are all locked is skipped, never
-// divided by zero. X-mirror paints the reflection through the sketch plane
-// too (Part::mirror). "Front faces only" leaves out vertices whose normal
+// so its weights keep summing to 1 (auto-normalise). Where no other unlocked
+// bone weighs the vertex (a region one bone leads), the weight given up goes
+// to the parent bone, else the nearest unlocked bone, as Blender's
+// auto-normalise does; locked bones never change, and a vertex whose other
+// bones are all locked is skipped, never divided by zero. X-mirror paints
+// the reflection through the part's left-right mirror plane too
+// (rig/MirrorSymmetry), on the bone's mirror image (the left arm's bone
+// for the right arm's). "Front faces only" leaves out vertices whose normal
 // turns away from the viewer, so a brush never paints through a limb onto
 // its far side (Blender's option of the same name).
 #pragma once
 
 #include <optional>
 #include <set>
+#include <unordered_map>
 #include <vector>
 
 #include "part/Part.h"
+#include "part/WeightLists.h"
+#include "rig/MirrorSymmetry.h"
 
 namespace rigmesh {
 
@@ -43,9 +50,12 @@ struct WeightDab {
 struct DabResult {
     // The vertices whose weights changed, ascending.
     std::vector<int> changed;
-    // Vertices left as they were: every other bone locked, or no other bone
-    // to hand the difference to (subtracting from a vertex with one bone).
+    // Vertex visits left as they were because every other bone of the part
+    // is locked (nothing can take up the difference).
     int skippedLocked = 0;
+    // Vertex visits left as they were because the part has one bone only
+    // (its weight is 1 everywhere).
+    int skippedOnlyBone = 0;
 };
 
 // The brush's strength at distance d (in radii, 0..1) from its centre.
@@ -62,16 +72,30 @@ class WeightPainter {
 
     // Paints one dab into `part` (its weights only). Throws Error for an
     // unknown or locked bone, a radius or strength out of range, a mirror
-    // request on a part without a mirror map, or a part of another mesh.
+    // request on a part without a left-right mirror plane, or a part of
+    // another mesh.
     DabResult paint(Part& part, const WeightDab& dab);
 
   private:
     const std::vector<std::vector<int>>& neighbours();
     const std::vector<Vec3>& normals();
+    // The part's left-right symmetry, found at the first mirrored dab.
+    const PartSymmetry& symmetry(const Part& part);
+    // The vertices within the dab's radius of `centre` (facing
+    // `towardsViewer`, if given) and the brush's strength there, added to
+    // `influence` (the larger strength where both have a vertex).
+    std::unordered_map<int, double> gather(const WeightDab& dab, const Vec3& centre,
+                                           const std::optional<Vec3>& towardsViewer,
+                                           std::unordered_map<int, double> influence);
+    void paintBone(Part& part, const WeightDab& dab, BoneId bone,
+                   const std::unordered_map<int, double>& influence, const LockedBones& locked,
+                   DabResult& result);
 
     const TriMesh& mesh_;
     std::vector<std::vector<int>> neighbours_;
     std::vector<Vec3> normals_;
+    bool symmetrySearched_ = false;
+    std::optional<PartSymmetry> symmetry_;
 };
 
 // One dab on its own (builds what it needs each call).

@@ -8,6 +8,7 @@
 
 #include "base/Stopwatch.h"
 #include "rig/BoneSegments.h"
+#include "rig/SkeletonSymmetry.h"
 
 namespace rigmesh {
 namespace {
@@ -121,6 +122,14 @@ SketchToPartResult sketchToPart(const std::vector<Vec2>& stroke, const std::stri
     auto start = std::chrono::steady_clock::now();
     result.skeleton =
         buildSkeleton(result.surface.decomposition, result.surface.cylinders, options.skeleton);
+    // A symmetric outline gets mirrored joints (rig/SkeletonSymmetry): the
+    // mirror is the outline's own, a plane containing the sketch plane's
+    // normal; joints own their cross sections (2.3), so none are added.
+    SymmetrizeOptions symmetry;
+    symmetry.search.containing = Vec3::UnitZ();
+    symmetry.matchJointCounts = false;
+    symmetrizeSkeleton(result.skeleton.skeleton, outlinePoints(result.surface.polygon.points),
+                       symmetry);
     result.skeletonMilliseconds = millisecondsSince(start);
 
     Part& part = result.part;

@@ -3,23 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 
 #include <Eigen/Geometry>
 
 #include "base/Error.h"
 #include "mesh/MeshChecks.h"
+#include "mesh/MeshSelfIntersections.h"
 
 namespace rigmesh {
 namespace {
-
-std::string shortNumber(double value) {
-    std::ostringstream text;
-    text.precision(3);
-    text << value;
-    return text.str();
-}
 
 Eigen::AlignedBox2d boxOf(const std::vector<Vec2>& points) {
     Eigen::AlignedBox2d box;
@@ -106,6 +99,16 @@ void checkBuiltMesh(const TriMesh& mesh) {
     const int degenerate = countDegenerateFaces(mesh);
     if (degenerate > 0)
         throw Error(MessageId::SurfaceDegenerateFaces, degenerate);
+    // A surface crossing itself cannot be merged or cut and its own export
+    // would be refused by `rigmesh rig`: refused here, where the sketch is.
+    const std::vector<std::array<int, 2>> crossing = selfIntersectingFacePairs(mesh);
+    if (!crossing.empty()) {
+        const auto& face = mesh.faces[static_cast<std::size_t>(crossing.front()[0])];
+        const Vec3 near =
+            (mesh.vertices[face[0]] + mesh.vertices[face[1]] + mesh.vertices[face[2]]) / 3.0;
+        throw Error(MessageId::SurfaceSelfIntersecting, crossing.size(), shortNumber(near.x()),
+                    shortNumber(near.y()));
+    }
 }
 
 }  // namespace rigmesh

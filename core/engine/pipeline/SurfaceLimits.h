@@ -31,7 +31,9 @@ void checkOutlineScale(const LocalFrame& frame, const CleanPolygon& localOutline
 void checkEdgeLengthBudget(const LocalFrame& frame, const CleanPolygon& localOutline,
                            double edgeLength);
 
-// Refuses a built mesh with a non-finite coordinate or a degenerate face.
+// Refuses a built mesh with a non-finite coordinate, a degenerate face or
+// faces that cross each other (the surface intersects itself: a needle too
+// thin for its edge length), saying where.
 void checkBuiltMesh(const TriMesh& mesh);
 
 }  // namespace rigmesh

@@ -14,20 +14,25 @@ namespace rigmesh {
 
 namespace {
 
-void checkTime(double time, const char* what) {
+void checkTime(double time) {
     if (!std::isfinite(time))
-        throw Error(std::string("The ") + what + " time is not a finite number of seconds.");
+        throw Error(MessageId::KeyTimeNotFinite);
 }
 
-// Where a key may go: a finite time within the longest clip.
-void checkKeyTime(double time, const char* what) {
-    checkTime(time, what);
-    if (std::abs(time) > Clip::kLongestKeyTime) {
-        char text[96];
-        std::snprintf(text, sizeof text, " time %g s is out of range: keys lie within +-%g s.",
-                      time, Clip::kLongestKeyTime);
-        throw Error(std::string("The ") + what + text);
-    }
+std::string seconds(double time) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", time);
+    return text;
+}
+
+// Where a key may go: a finite time from 0 to the longest clip. Nothing
+// plays before 0 s, and glTF refuses animation times below zero.
+void checkKeyTime(double time) {
+    checkTime(time);
+    if (time < 0.0)
+        throw Error(MessageId::KeyTimeNegative, seconds(time));
+    if (time > Clip::kLongestKeyTime)
+        throw Error(MessageId::KeyTimeTooLate, seconds(time), seconds(Clip::kLongestKeyTime));
 }
 
 Eigen::Quaterniond unitRotation(const Pose& pose, JointId joint) {
@@ -53,7 +58,7 @@ Clip::Clip(double framesPerSecond) : framesPerSecond_(24.0) {
 
 void Clip::setFramesPerSecond(double framesPerSecond) {
     if (!std::isfinite(framesPerSecond) || !(framesPerSecond > 0))
-        throw Error("A clip's frame rate must be a positive number of frames per second.");
+        throw Error(MessageId::ClipFrameRateInvalid);
     framesPerSecond_ = framesPerSecond;
 }
 
@@ -74,7 +79,7 @@ std::map<double, Pose>::const_iterator Clip::find(double time) const {
 }
 
 void Clip::setKey(double time, const Pose& pose) {
-    checkKeyTime(time, "key");
+    checkKeyTime(time);
     if (!pose.isFinite())
         throw Error(MessageId::KeyPoseInvalid);
     const auto existing = find(time);
@@ -84,7 +89,7 @@ void Clip::setKey(double time, const Pose& pose) {
 }
 
 void Clip::insertExactKey(double time, const Pose& pose) {
-    checkKeyTime(time, "key");
+    checkKeyTime(time);
     if (!pose.isFinite())
         throw Error(MessageId::KeyPoseInvalid);
     if (!keys_.emplace(time, pose).second)
@@ -97,8 +102,8 @@ void Clip::eraseExactKey(double time) {
 }
 
 void Clip::moveKey(double from, double to) {
-    checkTime(from, "key");
-    checkKeyTime(to, "target");
+    checkTime(from);
+    checkKeyTime(to);
     const auto it = find(from);
     if (it == keys_.end())
         throw Error(MessageId::NoKeyToMove, std::to_string(from));
@@ -108,7 +113,7 @@ void Clip::moveKey(double from, double to) {
 }
 
 void Clip::removeKey(double time) {
-    checkTime(time, "key");
+    checkTime(time);
     const auto it = find(time);
     if (it == keys_.end())
         throw Error(MessageId::NoKeyToDelete, std::to_string(time));
@@ -124,7 +129,7 @@ const Pose& Clip::key(double time) const {
 }
 
 double Clip::keyTime(double time) const {
-    checkTime(time, "key");
+    checkTime(time);
     const auto it = find(time);
     if (it == keys_.end())
         throw Error(MessageId::NoKeyAt, std::to_string(time));
@@ -164,7 +169,7 @@ Pose Clip::evaluate(double time) const {
     if (keys_.empty())
         throw Error(MessageId::ClipPlayedWithoutKeys);
 
-    checkTime(time, "playback");
+    checkTime(time);
     const double t = wrap(time);
     const auto exact = keys_.find(t);
     if (exact != keys_.end())

@@ -48,14 +48,15 @@ class Clip {
     Interpolation interpolation = Interpolation::Linear;
     PlaybackMode mode = PlaybackMode::Hold;
 
-    // Key times lie within +-kLongestKeyTime seconds (11.6 days): far beyond any
-    // animation, and small enough that time * frame rate and the exported
-    // frame counts stay exact in integers and doubles.
+    // Key times lie from 0 to kLongestKeyTime seconds (11.6 days): nothing
+    // plays before 0 s (glTF refuses negative animation times), the end is
+    // far beyond any animation, and small enough that time * frame rate and
+    // the exported frame counts stay exact in integers and doubles.
     static constexpr double kLongestKeyTime = 1e6;
 
     // Sets the key at `time`: replaces the key within half a frame of it (the
     // nearest; it takes the new time), or inserts a new one. Throws Error on
-    // a time that is not finite or beyond kLongestKeyTime, or a pose that is
+    // a time that is not finite, below 0 or beyond kLongestKeyTime, or a pose that is
     // not finite.
     void setKey(double time, const Pose& pose);
     // Moves the key at `from` to `to`, replacing any other key at `to`.

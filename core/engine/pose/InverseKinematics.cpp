@@ -205,15 +205,18 @@ IkResult dragJoint(const PoseHierarchy& h, const Pose& pose, JointId joint, cons
         return result;
     }
 
-    // Walk up to the base: the root, the nearest pinned joint or, with limb
-    // reach, the nearest junction. The base stays in place; the bones below
-    // it turn, each about its head, and carry only their own subtrees, so
-    // the base's other branches never move. An attached chain's root is
-    // crossed by turning the bone it hangs from (its tail is no pivot),
-    // unless that bone cannot turn alone: a root chain (no bone), a pinned
-    // tail, or with limb reach a tail where other bones or chains leave.
+    // Walk up to the base: the root, the nearest joint with a pin at or below
+    // it or, with limb reach, the nearest junction. The base stays in place;
+    // the bones below it turn, each about its head, and carry only their own
+    // subtrees, so the base's other branches never move. A bone above a
+    // joint with a pin in its subtree would carry the pin along, so the chain
+    // never reaches past one: pins hold in world space at any reach. An
+    // attached chain's root is crossed by turning the bone it hangs from (its
+    // tail is no pivot), unless that bone cannot turn alone: a root chain (no
+    // bone), a tail with a pin at or below it or, with limb reach, a tail
+    // where other bones or chains leave.
     auto stopsAt = [&](int at) {
-        return isPinned[at] || (options.stopAtJunctions && h.children(at).size() > 1);
+        return pinsBelow[at] > 0 || (options.stopAtJunctions && h.children(at).size() > 1);
     };
     std::vector<int> joints{dragged};
     std::vector<int> keys;  // per segment, walking up: the joint its rotation is keyed by

@@ -34,8 +34,9 @@
 // siblings move only where the chain passes through their parent, and the
 // root's own rotation and translation stay.
 //
-// Pinned joints keep their positions: the chain stops at a pinned ancestor
-// (a pin elsewhere never blocks, since only the chain's subtree moves). A
+// Pinned joints keep their world positions exactly, at any reach: the chain
+// stops at the nearest ancestor that is pinned or has a pin in another
+// branch below it (turning the bone above it would carry that pin). A
 // pinned dragged joint, or one with a pinned joint below it, does not move.
 // Dragging the root with nothing pinned moves the whole skeleton (root
 // translation).

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "base/Error.h"
+#include "base/JsonRead.h"
 
 namespace rigmesh {
 
@@ -103,10 +104,12 @@ Sketch parseSketchJson(const std::string& text, const std::string& sourceName) {
     try {
         document = nlohmann::json::parse(quoteNonFiniteTokens(text));
     } catch (const nlohmann::json::parse_error& error) {
-        throw Error("Sketch \"" + sourceName + "\" is not valid JSON: " + error.what());
+        throw Error("Sketch \"" + sourceName +
+                    "\" is not valid JSON: " + jsonread::parseErrorReason(error));
     } catch (const nlohmann::json::exception& error) {
         // E.g. out_of_range 406: a number like 1e999 that no double can hold.
-        throw Error("Sketch \"" + sourceName + "\" has a number out of range: " + error.what());
+        throw Error("Sketch \"" + sourceName +
+                    "\" has a number out of range: " + jsonread::parseErrorReason(error));
     }
     if (!document.is_object()) {
         throw Error("Sketch \"" + sourceName +

@@ -12,6 +12,7 @@
 
 #include "base/Error.h"
 #include "geometry/ConstrainedTriangulation.h"
+#include "surface/FoldRelaxation.h"
 #include "surface/LeastSquaresMesh.h"
 #include "surface/PatchLattice.h"
 #include "surface/PatchRims.h"
@@ -331,6 +332,10 @@ void smoothSurface(SketchSurface& surface, const Decomposition& decomposition,
         weights[v] = std::max(weights[v], rims[v]);
     surface.mesh.vertices = leastSquaresMesh(surface.mesh, weights, options.maxAnchorWeight);
     symmetrize(surface);
+    // LSM bounds no angle between neighbouring faces: the folds it leaves
+    // where the surface turns sharply in little room are spread over their
+    // neighbourhood (FoldRelaxation.h).
+    relaxFolds(surface);
 }
 
 }  // namespace rigmesh

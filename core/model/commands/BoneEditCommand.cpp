@@ -1,5 +1,7 @@
 #include "model/commands/BoneEditCommand.h"
 
+#include "model/CountText.h"
+
 #include <QCoreApplication>
 
 #include <nlohmann/json.hpp>
@@ -74,11 +76,11 @@ BoneEditCommand::BoneEditCommand(Document& document, PartId part, BoneId bone, K
 QString BoneEditCommand::summary() const {
     if (kind_ == Kind::Connect)
         return text();  // nothing is solved again
-    return tr("%1 in %2 ms: %3 vertices and %4 bones re-skinned")
+    return tr("%1 in %2 ms: %3 vertices and %4 re-skinned")
         .arg(text())
         .arg(result_.milliseconds, 0, 'f', 0)
         .arg(result_.reskinned.size())
-        .arg(result_.bonesInvolved);
+        .arg(countText(result_.bonesInvolved, tr("1 bone"), tr("%1 bones")));
 }
 
 void BoneEditCommand::redo() {

@@ -47,17 +47,21 @@ CutPartCommand::CutPartCommand(Document& document, PartId part, const CutSpec& s
     request.edgeLength = original_.options.targetEdgeLength;
     CutResult cut = cutPart(*original_.part, request);
     milliseconds_ = cut.milliseconds;
+    // The larger piece stays the part (its id, name, place in the list and
+    // the selection); the other is new, "<name> cut". Names given (the
+    // recipe's) go by the engine's order: behind the cut, then in front.
+    const int kept = cut.larger();
     for (int k = 0; k < 2; ++k) {
         const QString name = !spec.names[k].isEmpty() ? spec.names[k]
-                             : k == 0                 ? original_.name
-                                                      : tr("%1 2").arg(original_.name);
+                             : k == kept              ? original_.name
+                                                      : tr("%1 cut").arg(original_.name);
+        spec_.names[k] = name;
         cut.pieces[k].name = name.toStdString();
-        pieces_[k] = editedNode(original_, std::make_shared<const Part>(std::move(cut.pieces[k])));
-        pieces_[k].name = name;
+        PartNode& node = pieces_[k == kept ? 0 : 1];
+        node = editedNode(original_, std::make_shared<const Part>(std::move(cut.pieces[k])));
+        node.name = name;
     }
     pieces_[1].id = document.allocatePartId();
-    spec_.names[0] = pieces_[0].name;
-    spec_.names[1] = pieces_[1].name;
     setText(tr("Cut %1").arg(original_.name));
 }
 

@@ -1,9 +1,10 @@
-// Cut a part in two by a plane (paper 3.1) as one undoable step: the engine
-// cut (cut/CutPart.h) runs in create(), before anything is pushed, so a
-// refused cut throws rigmesh::Error and changes nothing. Redo replaces the
-// part by the piece behind the plane (same id) and inserts the piece in
-// front after it (a new id); undo restores the part exactly. Both pieces
-// keep the pose, pins and keys of the joints they still have.
+// Cut a part in two by a plane or a stroke (paper 3.1) as one undoable step:
+// the engine cut (cut/CutPart.h) runs in create(), before anything is
+// pushed, so a refused cut throws rigmesh::Error and changes nothing. Redo
+// replaces the part by the larger piece (same id, name and selection, as an
+// arm cut off leaves the body the body) and inserts the other after it (a new
+// id, "<name> cut"); undo restores the part exactly. Both pieces keep the
+// pose, pins and keys of the joints they still have.
 #pragma once
 
 #include <QCoreApplication>
@@ -27,7 +28,9 @@ struct CutSpec {
     Vec3 viewDirection = -Vec3::UnitZ();
     Vec3 viewUp = Vec3::UnitY();
     CutStyle style = CutStyle::Smooth;
-    QString names[2];  // empty: the part's name, and "<name> 2"
+    // The pieces' names, behind the cut first (CutResult's order); empty:
+    // the part's name for the larger piece, "<name> cut" for the other.
+    QString names[2];
 };
 
 class CutPartCommand : public QUndoCommand, public RecipeStepSource {

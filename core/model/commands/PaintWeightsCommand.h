@@ -29,8 +29,10 @@ class PaintWeightsCommand : public SkinningEditCommand {
         return create(document, part, std::vector<WeightDab>{dab});
     }
 
-    // Vertex visits left as they were: nothing unlocked to take up the change.
+    // Vertex visits left as they were because every other bone is locked.
     int skippedVertices() const { return skipped_; }
+    // Vertex visits left as they were because the part has only one bone.
+    int skippedOnlyBone() const { return skippedOnlyBone_; }
 
   private:
     PaintWeightsCommand(Document& document, PartId part)
@@ -41,6 +43,7 @@ class PaintWeightsCommand : public SkinningEditCommand {
     nlohmann::json step(const std::vector<WeightDab>& dabs) const;
 
     int skipped_ = 0;
+    int skippedOnlyBone_ = 0;
 };
 
 // The recipe's names of brush modes and falloffs ("add", "smooth", ...), and

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/Error.h"
 #include "model/recipe/RecipeJson.h"
 
 #include "model/PartBuilder.h"
@@ -12,6 +13,9 @@ namespace rigmesh::model {
 std::unique_ptr<RebuildPartCommand> RebuildPartCommand::create(Document& document, PartId id,
                                                                const BuildOptions& options) {
     const PartNode& node = document.part(id);
+    // Merges, cuts, bone edits and imports leave a part without a stroke.
+    if (node.stroke.empty())
+        throw Error(MessageId::PartHasNoSketch, node.name.toStdString());
     return fromBuilt(document, id, buildPart(node.stroke, node.name, options), options);
 }
 

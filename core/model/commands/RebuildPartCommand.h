@@ -19,7 +19,8 @@ namespace rigmesh::model {
 class RebuildPartCommand : public QUndoCommand, public RecipeStepSource {
     Q_DECLARE_TR_FUNCTIONS(RebuildPartCommand)
   public:
-    // Throws rigmesh::Error on an unknown id or when the build fails.
+    // Throws rigmesh::Error on an unknown id, a part without a stroke (merged,
+    // cut, bone-edited or imported) or when the build fails.
     static std::unique_ptr<RebuildPartCommand> create(Document& document, PartId id,
                                                       const BuildOptions& options);
 

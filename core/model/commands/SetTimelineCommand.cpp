@@ -4,13 +4,14 @@
 
 namespace rigmesh::model {
 
-rigmesh::Clip retimedClip(const rigmesh::Clip& clip, double fromRate, double toRate) {
+rigmesh::Clip retimedClip(const rigmesh::Clip& clip, double toRate) {
+    const double fromRate = clip.framesPerSecond();
     rigmesh::Clip out(toRate);
     out.name = clip.name;
     out.interpolation = clip.interpolation;
     out.mode = clip.mode;
     for (const auto& [time, pose] : clip.keys())
-        out.insertExactKey(time * fromRate / toRate, pose);
+        out.insertExactKey(fromRate == toRate ? time : time * fromRate / toRate, pose);
     return out;
 }
 
@@ -18,12 +19,12 @@ SetTimelineCommand::SetTimelineCommand(Document& document, const TimelineSetting
                                        QUndoCommand* parent)
     : QUndoCommand(parent), document_(document), before_(document.timeline()), after_(settings) {
     checkTimelineSettings(settings);
-    const double from = before_.framesPerSecond, to = after_.framesPerSecond;
-    if (from != to) {
+    const double to = after_.framesPerSecond;
+    if (before_.framesPerSecond != to) {
         for (const PartNode& node : document.parts()) {
-            Clips after{retimedClip(node.clip, from, to), {}};
+            Clips after{retimedClip(node.clip, to), {}};
             for (const rigmesh::Clip& other : node.otherClips)
-                after.others.push_back(retimedClip(other, from, to));
+                after.others.push_back(retimedClip(other, to));
             clipsBefore_[node.id] = {node.clip, node.otherClips};
             clipsAfter_[node.id] = std::move(after);
         }

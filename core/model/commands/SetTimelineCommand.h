@@ -1,7 +1,10 @@
 // Set the timeline's frame range and rate. A new rate keeps every
-// key of every clip on its frame, as Blender does (the key times in seconds
-// scale by old rate / new rate), and becomes every clip's frame rate (its
-// half-frame tolerance and the frames an export samples).
+// key of every clip on its frame, as Blender does: on the frame of the
+// clip's own rate, so the key times in seconds scale by the clip's rate /
+// new rate (a clip imported at 30 fps into a 24 fps timeline keeps its key
+// on frame 30 when the timeline goes to 30 fps). The new rate becomes every
+// clip's frame rate (its half-frame tolerance and the frames an export
+// samples).
 #pragma once
 
 #include <QCoreApplication>
@@ -39,8 +42,9 @@ class SetTimelineCommand : public QUndoCommand, public RecipeStepSource {
     std::map<PartId, Clips> clipsBefore_, clipsAfter_;
 };
 
-// `clip` with every key moved from frame f at `fromRate` to f at `toRate`,
-// and `toRate` as its frame rate. Throws rigmesh::Error on a key out of range.
-rigmesh::Clip retimedClip(const rigmesh::Clip& clip, double fromRate, double toRate);
+// `clip` with every key moved from frame f at the clip's own rate to f at
+// `toRate`, and `toRate` as its frame rate. Throws rigmesh::Error on a key
+// out of range.
+rigmesh::Clip retimedClip(const rigmesh::Clip& clip, double toRate);
 
 }  // namespace rigmesh::model

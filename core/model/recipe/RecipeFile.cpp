@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "base/Error.h"
+#include "base/JsonRead.h"
 
 namespace rigmesh::model {
 
@@ -37,10 +38,11 @@ nlohmann::json parseRecipe(const std::string& text, const std::string& sourceNam
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& error) {
-        throw Error(sourceName + " is not valid JSON: " + error.what());
+        throw Error(sourceName + " is not valid JSON: " + jsonread::parseErrorReason(error));
     } catch (const nlohmann::json::exception& error) {
         // E.g. out_of_range 406: a number like 1e999 that no double can hold.
-        throw Error(sourceName + " has a number out of range: " + error.what());
+        throw Error(sourceName +
+                    " has a number out of range: " + jsonread::parseErrorReason(error));
     }
 }
 

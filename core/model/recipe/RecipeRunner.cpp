@@ -4,6 +4,7 @@
 #include <chrono>
 #include <utility>
 
+#include "base/JsonRead.h"
 #include "base/Stopwatch.h"
 #include "model/recipe/RecipeFile.h"
 #include "model/recipe/RecipeStepCommands.h"
@@ -74,6 +75,8 @@ RecipeStepReport RecipeRunner::apply(const nlohmann::json& step, int number,
         made.command.release();
     } catch (const RecipeError&) {
         throw;
+    } catch (const nlohmann::json::exception& error) {
+        throw RecipeError(number, command, jsonread::parseErrorReason(error));
     } catch (const std::exception& error) {
         throw RecipeError(number, command, error.what());
     }

@@ -71,7 +71,10 @@ StepCommand paintWeights(const Context& c) {
     detail << command->changedVertices() << " vertices changed";
     if (command->skippedVertices() > 0)
         detail << ", " << command->skippedVertices()
-               << " left as they were (no unlocked bone to take up the difference)";
+               << " left as they were (every other bone there is locked)";
+    if (command->skippedOnlyBone() > 0)
+        detail << ", " << command->skippedOnlyBone()
+               << " left as they were (the part has one bone only)";
     return {std::move(command), id, detail.str()};
 }
 

@@ -2,12 +2,25 @@
 // limit, missing program) and what it wrote to standard error.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <thread>
 
 #include "base/ChildProcess.h"
 
 namespace rigmesh {
 namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
 
 ChildOutcome shell(const std::string& script, ChildLimits limits = {}) {
     return runChildProcess("/bin/sh", {"-c", script}, limits);
@@ -64,6 +77,120 @@ TEST(ChildProcess, AddressSpaceLimitStopsARunawayAllocation) {
         runChildProcess("/bin/dd", {"if=/dev/zero", "of=/dev/null", "bs=1G", "count=1"}, {});
     ASSERT_EQ(free.end, ChildOutcome::End::Exited);
     EXPECT_EQ(free.exitCode, 0) << free.standardError;
+}
+
+TEST(ChildProcess, ResultComesBackThroughDescriptorThree) {
+    ChildLimits limits;
+    limits.maxResultBytes = 64;
+    const ChildOutcome outcome = shell("printf 'parts' > /dev/fd/3; echo 'to stdout'", limits);
+    ASSERT_EQ(outcome.end, ChildOutcome::End::Exited);
+    EXPECT_EQ(outcome.exitCode, 0) << outcome.standardError;
+    EXPECT_EQ(outcome.result, "parts");
+    EXPECT_FALSE(outcome.resultTooLarge);
+
+    limits.maxResultBytes = 4;
+    const ChildOutcome large = shell("printf 'too many' >&3", limits);
+    EXPECT_TRUE(large.resultTooLarge);
+    EXPECT_TRUE(large.result.empty());
+}
+
+TEST(ChildProcess, WithoutAResultDescriptorThreeIsClosed) {
+    const ChildOutcome outcome = shell("printf 'x' >&3 && exit 0 || exit 7");
+    ASSERT_EQ(outcome.end, ChildOutcome::End::Exited);
+    EXPECT_EQ(outcome.exitCode, 7);
+}
+
+// A process of this test runs `script` through runChildProcess (with TMPDIR
+// a fresh folder) and is then ended by `signal`. The script gets a file
+// name as $0 and writes `pidCount` pids there, one per line; those still
+// running 2 s later are survivors, and so is any file left in TMPDIR.
+struct Stopped {
+    std::vector<pid_t> survivors;
+    std::vector<std::string> leftFiles;
+};
+
+bool running(pid_t pid) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+    const std::size_t close = text.rfind(')');
+    // A zombie has ended; only its parent (init here) has not reaped it yet.
+    return close != std::string::npos && close + 2 < text.size() && text[close + 2] != 'Z';
+}
+
+Stopped stopParentDuring(const std::string& script, std::size_t pidCount, int signal) {
+    const fs::path folder =
+        fs::temp_directory_path() / ("rigmesh_child_test_" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    const fs::path temporary = folder / "tmp";
+    fs::create_directories(temporary);
+    const fs::path pids = folder / "pids";
+    const pid_t parent = fork();
+    if (parent == 0) {
+        setenv("TMPDIR", temporary.c_str(), 1);
+        // As a program started from a terminal (a background job of a
+        // script would ignore SIGINT).
+        std::signal(SIGINT, SIG_DFL);
+        std::signal(SIGTERM, SIG_DFL);
+        ChildLimits limits;
+        limits.seconds = 60;
+        limits.maxResultBytes = 1024;
+        runChildProcess("/bin/sh", {"-c", script, pids.string()}, limits);
+        _exit(0);
+    }
+    // The script writes its pids once it runs.
+    std::vector<pid_t> started;
+    for (const auto until = Clock::now() + std::chrono::seconds(10);
+         started.size() < pidCount && Clock::now() < until;) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        started.clear();
+        std::ifstream in(pids);
+        for (pid_t pid; in >> pid;)
+            started.push_back(pid);
+    }
+    EXPECT_EQ(started.size(), pidCount) << "the script did not start";
+    kill(parent, signal);
+    int status = 0;
+    waitpid(parent, &status, 0);
+    Stopped stopped;
+    const auto deadline = Clock::now() + std::chrono::seconds(2);
+    do {
+        stopped.survivors.clear();
+        for (pid_t pid : started)
+            if (running(pid))
+                stopped.survivors.push_back(pid);
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    } while (!stopped.survivors.empty() && Clock::now() < deadline);
+    for (pid_t pid : stopped.survivors)
+        kill(pid, SIGKILL);  // leave the machine clean whatever the verdict
+    for (const fs::directory_entry& entry : fs::directory_iterator(temporary))
+        stopped.leftFiles.push_back(entry.path().filename().string());
+    fs::remove_all(folder);
+    return stopped;
+}
+
+TEST(ChildProcess, ChildDiesWhenItsParentIsKilled) {
+    // SIGKILL cannot be forwarded: the child goes by PR_SET_PDEATHSIG.
+    const Stopped stopped =
+        stopParentDuring("echo $$ > \"$0.tmp\"; mv \"$0.tmp\" \"$0\"; exec sleep 60", 1, SIGKILL);
+    EXPECT_TRUE(stopped.survivors.empty()) << stopped.survivors.size() << " still running";
+    EXPECT_TRUE(stopped.leftFiles.empty()) << stopped.leftFiles.front();
+}
+
+TEST(ChildProcess, StopSignalsReachTheChildsWholeGroup) {
+    // SIGTERM and SIGINT go on to the child's process group, so what the
+    // child started goes too. (A shell starts its background commands with
+    // SIGINT ignored; env --default-signal gives the grandchild the default
+    // action back, as a program the child starts directly has.)
+    for (int signal : {SIGTERM, SIGINT}) {
+        const Stopped stopped = stopParentDuring(
+            "env --default-signal sleep 60 & echo $! > \"$0.tmp\"; echo $$ >> \"$0.tmp\"; mv "
+            "\"$0.tmp\" \"$0\"; "
+            "exec sleep 60",
+            2, signal);
+        EXPECT_TRUE(stopped.survivors.empty())
+            << strsignal(signal) << ": " << stopped.survivors.size() << " still running";
+        EXPECT_TRUE(stopped.leftFiles.empty()) << stopped.leftFiles.front();
+    }
 }
 
 TEST(ChildProcess, LastLineStartingWithFindsTheLastMatch) {

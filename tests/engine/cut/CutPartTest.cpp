@@ -227,5 +227,46 @@ TEST(CurvedCut, ABentStrokeCutsAlongTheSurfaceItSweeps) {
     }
 }
 
+// Paper 3.1 with Blender's knife: only the surface where the stroke was
+// drawn cuts. A short stroke across the biped's upper arm, whose line
+// extended would also cross the hip, takes the arm off: two pieces, the
+// larger the body with the legs, the arm's bones on the smaller one.
+TEST(CutNearTheStroke, AStrokeAcrossTheUpperArmTakesTheArmOff) {
+    const Part& biped = testsupport::sharedSketchPart("biped");
+    CutRequest request;
+    request.sweep = Vec3::UnitZ();
+    request.stroke = {Vec3(0.9, 0.65, 0.0), Vec3(1.15, 1.55, 0.0)};
+    // The line through the stroke meets the hip further down: as a plane
+    // this cut makes three pieces and is refused.
+    CutRequest plane;
+    plane.point = request.stroke.front();
+    plane.normal = (request.stroke.back() - request.stroke.front()).cross(Vec3::UnitZ());
+    try {
+        cutPart(biped, plane);
+        ADD_FAILURE() << "the plane through the stroke crosses the biped once only";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.message().id, MessageId::CutCrossesTwice);
+    }
+
+    const CutResult cut = cutPart(biped, request);
+    const int body = cut.larger();
+    const Part& arm = cut.pieces[1 - body];
+    EXPECT_GT(cut.volumes[body], 5.0 * cut.volumes[1 - body]);
+    for (int k = 0; k < 2; ++k) {
+        EXPECT_TRUE(analyseMesh(cut.pieces[k].mesh, true).isWatertightGenus0());
+        EXPECT_TRUE(cut.pieces[k].validateSolid().empty());
+    }
+    // The arm piece lies right of the stroke, the body keeps the rest.
+    for (const Vec3& v : arm.mesh.vertices)
+        EXPECT_GT(v.x(), 0.75);
+    const Eigen::AlignedBox3d bodyBox = boxOf(cut.pieces[body].mesh);
+    EXPECT_LT(bodyBox.min().y(), -2.0);  // the legs
+    EXPECT_GT(bodyBox.max().y(), 2.9);   // the head
+    EXPECT_LT(bodyBox.max().x(), 1.2);   // not the hand
+    // The volumes add up: nothing else was cut.
+    EXPECT_NEAR((cut.volumes[0] + cut.volumes[1]) / analyseMesh(biped.mesh, false).volume, 1.0,
+                0.02);
+}
+
 }  // namespace
 }  // namespace rigmesh

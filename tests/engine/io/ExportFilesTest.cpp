@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 
@@ -16,6 +17,7 @@
 #include "io/GltfBuffers.h"
 #include "io/RigJson.h"
 #include "io/SceneExport.h"
+#include "part/BoneWeights.h"
 #include "pose/Clip.h"
 
 namespace rigmesh {
@@ -134,6 +136,51 @@ TEST(RigJson, NonFiniteWeightsOrJointsAreRefused) {
     EXPECT_FALSE(rigToJson(part).empty());
     part.weights.perVertex[5].front().second = std::numeric_limits<double>::infinity();
     EXPECT_THROW(rigToJson(part), Error);
+}
+
+// The --rig file names joints and bones by their position in its lists (as
+// glTF's skins do) and says so; the stable ids are written beside them, so
+// a reader can tell them apart once ids skip numbers (a deleted bone).
+TEST(RigJson, PositionsAndIdsAreBothWrittenAndTellApart) {
+    Part part = iotest::sharedPart("y_branch");
+    // Ids no longer equal positions: bone 0 and joint 0 go.
+    Skeleton& skeleton = part.skeleton;
+    const Bone first = skeleton.bones().front();
+    const JointId leaf = skeleton.degree(first.head) == 1 ? first.head : first.tail;
+    ASSERT_EQ(skeleton.degree(leaf), 1) << "the first bone ends at a leaf";
+    skeleton.removeJoint(leaf);
+    skeleton.setRoot(chooseCentralRoot(skeleton));
+    skeleton.reorient();
+    for (auto& list : part.weights.perVertex) {
+        std::erase_if(list, [&](const auto& entry) { return entry.first == first.id; });
+        if (list.empty())
+            list.emplace_back(skeleton.bones().front().id, 1.0);
+        normaliseWeights(list);
+    }
+    const nlohmann::json rig = nlohmann::json::parse(rigToJson(part));
+    EXPECT_NE(rig["about"].get<std::string>().find("position"), std::string::npos);
+    const auto& joints = rig["joints"];
+    EXPECT_EQ(rig["root_id"], skeleton.root());
+    EXPECT_EQ(joints[rig["root"].get<int>()]["id"], skeleton.root());
+    ASSERT_EQ(rig["bones"].size(), static_cast<std::size_t>(skeleton.boneCount()));
+    for (std::size_t b = 0; b < rig["bones"].size(); ++b) {
+        const auto& bone = rig["bones"][b];
+        const Bone& expected = skeleton.bones()[b];
+        EXPECT_EQ(bone["id"], expected.id);
+        EXPECT_EQ(bone["head_id"], expected.head);
+        EXPECT_EQ(bone["tail_id"], expected.tail);
+        EXPECT_EQ(joints[bone["head"].get<int>()]["id"], expected.head);
+        EXPECT_EQ(joints[bone["tail"].get<int>()]["id"], expected.tail);
+        const auto parent = skeleton.parentBone(expected.id);
+        if (parent) {
+            EXPECT_EQ(bone["parent_id"], *parent);
+            EXPECT_EQ(rig["bones"][bone["parent"].get<int>()]["id"], *parent);
+        } else {
+            EXPECT_TRUE(bone["parent_id"].is_null());
+            EXPECT_EQ(bone["parent"], -1);
+        }
+    }
+    EXPECT_NE(rig["bones"][0]["id"], 0) << "the ids skip the deleted bone's";
 }
 
 }  // namespace

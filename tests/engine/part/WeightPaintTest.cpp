@@ -1,6 +1,8 @@
 // Weight painting: a dab changes weights only inside its
 // radius, keeps every sum at 1, leaves locked bones alone, skips vertices
-// it cannot change, and with X-mirror keeps the part mirror symmetric.
+// it cannot change (saying why), hands what Subtract takes from a region
+// one bone leads to the parent bone (Blender's auto-normalise), and with
+// X-mirror paints the bone's mirror image on the other side.
 #include <gtest/gtest.h>
 
 #include "PartWeightOf.h"
@@ -69,15 +71,80 @@ TEST(WeightPaint, LockedBonesStayAndVerticesWithOnlyLockedBonesAreSkipped) {
     EXPECT_THROW(paintWeights(p.part, locked), Error);
 }
 
-TEST(WeightPaint, XMirrorKeepsTheWeightsSymmetric) {
-    Painted p = addDab(BrushMode::Subtract);
-    p.dab.mirror = true;
-    paintWeights(p.part, p.dab);
-    EXPECT_TRUE(p.part.validate().empty());
-    for (int v = 0; v < p.part.mesh.vertexCount(); ++v)
-        ASSERT_NEAR(weightOf(p.part, v, p.dab.bone), weightOf(p.part, p.part.mirror[v], p.dab.bone),
-                    1e-12)
-            << v;
+// Blender's X-mirror: a dab on the biped's right hand with X-mirror on
+// paints the left hand's bone at the reflected place as much: the hand's
+// bone gains weight on the right, its image as much on the left (within
+// the hand-drawn outline's own asymmetry), nothing between.
+TEST(WeightPaint, XMirrorPaintsTheMirrorBoneOnTheOtherSide) {
+    Part part = testsupport::sharedSketchPart("biped");
+    const Part before = part;
+    const std::optional<PartSymmetry> symmetry = findPartSymmetry(part);
+    ASSERT_TRUE(symmetry.has_value());
+    EXPECT_GT(std::abs(symmetry->plane.normal.x()), 0.99) << "left and right of the sketch";
+    // The right hand's joint and bone, and the image bone.
+    JointId hand = part.skeleton.joints().front().id;
+    for (const Joint& joint : part.skeleton.joints())
+        if (joint.position.x() > part.skeleton.joint(hand).position.x())
+            hand = joint.id;
+    WeightDab dab;
+    dab.bone = *boneForJoint(part.skeleton, hand);
+    const BoneId image = symmetry->imageOf(dab.bone);
+    ASSERT_NE(image, dab.bone);
+    dab.mode = BrushMode::Subtract;
+    dab.centre = part.skeleton.joint(hand).position;
+    dab.radius = 0.5;
+    dab.strength = 0.6;
+    dab.mirror = true;
+    const DabResult result = paintWeights(part, dab);
+    EXPECT_TRUE(part.validate().empty());
+    double right = 0.0, left = 0.0;
+    for (int v : result.changed) {
+        const Vec3& p = part.mesh.vertices[v];
+        const bool near = (p - dab.centre).norm() < dab.radius;
+        const bool mirrored = (p - symmetry->plane.reflect(dab.centre)).norm() < dab.radius;
+        EXPECT_TRUE(near || mirrored) << v;
+        right += weightOf(before, v, dab.bone) - weightOf(part, v, dab.bone);
+        left += weightOf(before, v, image) - weightOf(part, v, image);
+    }
+    EXPECT_GT(right, 1.0);
+    EXPECT_NEAR(left / right, 1.0, 0.25);
+}
+
+// Subtract where one bone alone leads (the weight is 1) gives the weight to
+// the parent bone, as Blender's auto-normalise does, and says nothing was
+// locked; a part of one bone is left as it is and says so.
+TEST(WeightPaint, SubtractOnAOneBoneRegionHandsTheWeightToTheParentBone) {
+    Part part = testsupport::sharedSketchPart("biped");
+    // A vertex the hand's bone alone leads: at its tip.
+    int tip = -1;
+    for (int v = 0; v < part.mesh.vertexCount(); ++v)
+        if (part.weights.perVertex[v].size() == 1 &&
+            (tip < 0 || part.mesh.vertices[v].x() > part.mesh.vertices[tip].x()))
+            tip = v;
+    ASSERT_GE(tip, 0);
+    WeightDab dab;
+    dab.bone = part.weights.perVertex[tip].front().first;
+    const std::optional<BoneId> parent = part.skeleton.parentBone(dab.bone);
+    ASSERT_TRUE(parent.has_value());
+    dab.mode = BrushMode::Subtract;
+    dab.centre = part.mesh.vertices[tip];
+    dab.radius = 0.2;
+    dab.strength = 0.5;
+    const DabResult result = paintWeights(part, dab);
+    EXPECT_EQ(result.skippedLocked, 0);
+    EXPECT_EQ(result.skippedOnlyBone, 0);
+    EXPECT_TRUE(part.validate().empty());
+    EXPECT_NEAR(weightOf(part, tip, dab.bone), 0.5, 1e-12);
+    EXPECT_NEAR(weightOf(part, tip, *parent), 0.5, 1e-12);
+
+    Part tube = testsupport::sharedSketchPart("tube");
+    ASSERT_EQ(tube.skeleton.boneCount(), 1);
+    dab.bone = tube.skeleton.bones().front().id;
+    dab.centre = tube.mesh.vertices.front();
+    const DabResult one = paintWeights(tube, dab);
+    EXPECT_TRUE(one.changed.empty());
+    EXPECT_GT(one.skippedOnlyBone, 0);
+    EXPECT_EQ(one.skippedLocked, 0);
 }
 
 TEST(WeightPaint, SmoothEvensOutABoneAndReplaceMovesTowardsTheValue) {

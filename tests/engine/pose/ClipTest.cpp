@@ -238,5 +238,26 @@ TEST(Clip, KeysBeyondTheLongestKeyTimeAreRefused) {
     EXPECT_EQ(clip.keyTimes(), (std::vector<double>{Clip::kLongestKeyTime}));
 }
 
+// Keys at -1 s, or keys moved below 0 s, reached glTF files as animation
+// input times below zero (the validator's ACCESSOR_ANIMATION_INPUT_NEGATIVE).
+TEST(Clip, KeysBeforeZeroAreRefused) {
+    Clip clip;
+    for (double time : {-1.0, -1e-9, -Clip::kLongestKeyTime}) {
+        try {
+            clip.setKey(time, Pose{});
+            ADD_FAILURE() << "a key at " << time << " s was accepted";
+        } catch (const Error& error) {
+            EXPECT_EQ(error.message().id, MessageId::KeyTimeNegative) << error.what();
+        }
+        EXPECT_THROW(clip.insertExactKey(time, Pose{}), Error);
+    }
+    clip.setKey(0.0, Pose{});
+    clip.setKey(0.25, Pose{});
+    EXPECT_THROW(clip.moveKey(0.0, -0.25), Error);
+    EXPECT_EQ(clip.keyTimes(), (std::vector<double>{0.0, 0.25})) << "nothing moved";
+    // Playing before the first key is still fine: it holds or wraps.
+    EXPECT_NO_THROW(clip.evaluate(-3.0));
+}
+
 }  // namespace
 }  // namespace rigmesh::posetest

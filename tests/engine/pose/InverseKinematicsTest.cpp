@@ -106,6 +106,48 @@ TEST_P(InverseKinematicsOnParts, PinnedJointsDoNotMove) {
     }
 }
 
+// Whole-body reach (Alt + drag) runs to the root, through junctions whose
+// other branches hold pins: a pinned shoulder stays where it is while the
+// other hand is dragged, exactly (the chain stops at the junction below it).
+TEST_P(InverseKinematicsOnParts, PinsInOtherBranchesHoldUnderWholeBodyReach) {
+    const Part& part = sharedPart(GetParam());
+    const Skeleton& skeleton = part.skeleton;
+    const double size = boundingBoxDiagonal(restPositions(skeleton));
+    const PoseHierarchy h(skeleton);
+    const JointId dragged = deepestJoint(skeleton);
+    // Every joint off the dragged joint's way to the root is pinned in turn
+    // (leaves, shoulders, hips).
+    std::vector<bool> onWay(h.jointCount(), false);
+    for (int j = h.indexOf(dragged); j >= 0; j = h.parent(j))
+        onWay[j] = true;
+    IkOptions wholeBody;
+    wholeBody.stopAtJunctions = false;
+    std::mt19937 rng(11);
+    int checked = 0;
+    for (int p = 0; p < h.jointCount(); ++p) {
+        if (onWay[p])
+            continue;
+        const std::vector<JointId> pinned{h.jointId(p)};
+        const int index = skeleton.indexOfJoint(h.jointId(p));
+        Pose pose = randomPose(skeleton, rng, 0.3);
+        const Vec3 before = forwardKinematics(skeleton, pose).jointPositions[index];
+        const Vec3 start = jointPosition(skeleton, pose, dragged);
+        for (int k = 0; k < 5; ++k) {
+            pose = dragJoint(skeleton, pose, dragged, start + 0.2 * size * Vec3::Random(), pinned,
+                             wholeBody)
+                       .pose;
+            EXPECT_LT((forwardKinematics(skeleton, pose).jointPositions[index] - before).norm(),
+                      kPinnedRelative * size)
+                << GetParam() << " pinned joint " << h.jointId(p);
+            expectBoneLengthsKept(skeleton, pose);
+        }
+        ++checked;
+    }
+    if (GetParam() != "tube") {
+        EXPECT_GT(checked, 0);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(SharedSketches, InverseKinematicsOnParts,
                          ::testing::Values("tube", "y_branch", "biped"),
                          testsupport::sketchTestName);

@@ -56,6 +56,9 @@ class SilhouetteGrid {
                          mesh.vertices[f[2]].head<2>());
     }
 
+    bool filled(int i, int j) const { return filled_[j * resolution_ + i]; }
+    int resolution() const { return resolution_; }
+
     int filledCount() const {
         return static_cast<int>(std::count(filled_.begin(), filled_.end(), true));
     }

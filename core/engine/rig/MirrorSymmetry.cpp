@@ -1,0 +1,354 @@
+#include "rig/MirrorSymmetry.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+#include "mesh/MeshAdjacency.h"
+#include "part/Part.h"
+
+namespace rigmesh {
+
+Eigen::Quaterniond MirrorPlane::reflectRotation(const Eigen::Quaterniond& q) const {
+    // (w, v) -> (w, -M v): the axis reflected and the angle reversed.
+    const Vec3 v = -reflectDirection(q.vec());
+    return Eigen::Quaterniond(q.w(), v.x(), v.y(), v.z());
+}
+
+namespace {
+
+// The search reflects a sample of at most this many vertices.
+constexpr int kSampleCount = 3000;
+// Refinement rounds per candidate (pairs, then the plane refitted).
+constexpr int kRefinements = 6;
+
+// The vertices in a uniform grid, for nearest-vertex queries.
+class VertexGrid {
+  public:
+    VertexGrid(const std::vector<Vec3>& points, double cell) : points_(points), cell_(cell) {
+        for (int i = 0; i < static_cast<int>(points.size()); ++i)
+            cells_[keyOf(cellOf(points[i]))].push_back(i);
+    }
+
+    // The nearest point's index (-1 for none).
+    int nearest(const Vec3& p) const {
+        const Eigen::Vector3i centre = cellOf(p);
+        int best = -1;
+        double bestDistance = std::numeric_limits<double>::infinity();
+        // Shells of cells around p until the next shell is farther than the
+        // best point found.
+        for (int ring = 0; ring < 64; ++ring) {
+            if (best >= 0 && (ring - 1) * cell_ > std::sqrt(bestDistance))
+                break;
+            for (int x = -ring; x <= ring; ++x)
+                for (int y = -ring; y <= ring; ++y)
+                    for (int z = -ring; z <= ring; ++z) {
+                        if (std::max({std::abs(x), std::abs(y), std::abs(z)}) != ring)
+                            continue;
+                        auto found = cells_.find(keyOf(centre + Eigen::Vector3i(x, y, z)));
+                        if (found == cells_.end())
+                            continue;
+                        for (int i : found->second) {
+                            const double d = (points_[i] - p).squaredNorm();
+                            if (d < bestDistance) {
+                                bestDistance = d;
+                                best = i;
+                            }
+                        }
+                    }
+        }
+        return best;
+    }
+
+  private:
+    Eigen::Vector3i cellOf(const Vec3& p) const {
+        return Eigen::Vector3i(static_cast<int>(std::floor(p.x() / cell_)),
+                               static_cast<int>(std::floor(p.y() / cell_)),
+                               static_cast<int>(std::floor(p.z() / cell_)));
+    }
+    static std::int64_t keyOf(const Eigen::Vector3i& c) {
+        return (static_cast<std::int64_t>(c.x()) * 73856093) ^
+               (static_cast<std::int64_t>(c.y()) * 19349663) ^
+               (static_cast<std::int64_t>(c.z()) * 83492791);
+    }
+
+    const std::vector<Vec3>& points_;
+    double cell_;
+    std::unordered_map<std::int64_t, std::vector<int>> cells_;
+};
+
+// The closest point of triangle abc to p (Ericson, Real-Time Collision
+// Detection, 5.1.5).
+Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+    if (d1 <= 0 && d2 <= 0)
+        return a;
+    const Vec3 bp = p - b;
+    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+    if (d3 >= 0 && d4 <= d3)
+        return b;
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0)
+        return a + d1 / (d1 - d3) * ab;
+    const Vec3 cp = p - c;
+    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+    if (d6 >= 0 && d5 <= d6)
+        return c;
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0)
+        return a + d2 / (d2 - d6) * ac;
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+        return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+    const double denominator = 1.0 / (va + vb + vc);
+    return a + ab * (vb * denominator) + ac * (vc * denominator);
+}
+
+// Distances to the surface: to the faces around the nearest vertex (or to
+// the vertex when there are no faces).
+class SurfaceDistance {
+  public:
+    SurfaceDistance(const TriMesh& mesh, double cell)
+        : mesh_(mesh), grid_(mesh.vertices, cell), faces_(mesh.vertices.size()) {
+        for (int f = 0; f < mesh.faceCount(); ++f)
+            for (int v : mesh.faces[f])
+                faces_[v].push_back(f);
+    }
+    // The nearest vertex and the distance to the surface there.
+    std::pair<int, double> operator()(const Vec3& p) const {
+        const int v = grid_.nearest(p);
+        if (v < 0)
+            return {-1, std::numeric_limits<double>::infinity()};
+        double best = (mesh_.vertices[v] - p).norm();
+        for (int f : faces_[v]) {
+            const auto& face = mesh_.faces[f];
+            best = std::min(best,
+                            (closestOnTriangle(p, mesh_.vertices[face[0]], mesh_.vertices[face[1]],
+                                               mesh_.vertices[face[2]]) -
+                             p)
+                                .norm());
+        }
+        return {v, best};
+    }
+
+  private:
+    const TriMesh& mesh_;
+    VertexGrid grid_;
+    std::vector<std::vector<int>> faces_;
+};
+
+// The grid's cell: about an edge (a tenth of the diagonal without faces).
+double cellFor(const TriMesh& mesh, double diagonal) {
+    const double edge = mesh.faceCount() > 0 ? meanEdgeLength(mesh) : 0.1 * diagonal;
+    return std::max(edge, 1e-9 * diagonal + 1e-300);
+}
+
+double diagonalOf(const std::vector<Vec3>& points) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& p : points)
+        box.extend(p);
+    return box.isEmpty() ? 0.0 : box.diagonal().norm();
+}
+
+// Every k-th vertex, at most kSampleCount of them.
+std::vector<int> sampleOf(const TriMesh& mesh) {
+    const int n = mesh.vertexCount();
+    const int stride = std::max(1, n / kSampleCount);
+    std::vector<int> sample;
+    for (int v = 0; v < n; v += stride)
+        sample.push_back(v);
+    return sample;
+}
+
+double meanError(const TriMesh& mesh, const SurfaceDistance& distance,
+                 const std::vector<int>& sample, const MirrorPlane& plane, double diagonal) {
+    double sum = 0.0;
+    for (int v : sample)
+        sum += distance(plane.reflect(mesh.vertices[v])).second;
+    return sample.empty() || diagonal <= 0.0 ? 0.0 : sum / sample.size() / diagonal;
+}
+
+Vec3 keepContaining(Vec3 normal, const std::optional<Vec3>& axis) {
+    if (axis) {
+        const Vec3 a = axis->normalized();
+        normal -= a * a.dot(normal);
+    }
+    return normal;
+}
+
+// ICP on the reflection: each sampled vertex paired with the vertex nearest
+// its reflection; the new normal is the main direction of the pairs'
+// differences, the new point their midpoints' mean.
+MirrorPlane refine(const TriMesh& mesh, const SurfaceDistance& distance,
+                   const std::vector<int>& sample, MirrorPlane plane,
+                   const std::optional<Vec3>& containing) {
+    for (int round = 0; round < kRefinements; ++round) {
+        Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+        Vec3 midpoints = Vec3::Zero();
+        int count = 0;
+        for (int v : sample) {
+            const Vec3& p = mesh.vertices[v];
+            const int partner = distance(plane.reflect(p)).first;
+            if (partner < 0)
+                continue;
+            const Vec3& q = mesh.vertices[partner];
+            const Vec3 d = keepContaining(p - q, containing);
+            scatter += d * d.transpose();
+            midpoints += 0.5 * (p + q);
+            ++count;
+        }
+        if (count == 0)
+            break;
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+        Vec3 normal = keepContaining(eigen.eigenvectors().col(2), containing);
+        if (!(normal.norm() > 0.0))
+            break;
+        normal.normalize();
+        if (normal.dot(plane.normal) < 0.0)
+            normal = -normal;
+        plane.normal = normal;
+        plane.point = midpoints / count;
+    }
+    return plane;
+}
+
+}  // namespace
+
+double mirrorError(const TriMesh& mesh, const MirrorPlane& plane) {
+    const double diagonal = diagonalOf(mesh.vertices);
+    const SurfaceDistance distance(mesh, cellFor(mesh, diagonal));
+    std::vector<int> all(mesh.vertexCount());
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+        all[v] = v;
+    return meanError(mesh, distance, all, plane, diagonal);
+}
+
+std::optional<MirrorFit> findMirrorPlane(const TriMesh& mesh, const MirrorSearch& search) {
+    if (mesh.vertexCount() < 4)
+        return std::nullopt;
+    const double diagonal = diagonalOf(mesh.vertices);
+    if (!(diagonal > 0.0))
+        return std::nullopt;
+    Vec3 centroid = Vec3::Zero();
+    for (const Vec3& p : mesh.vertices)
+        centroid += p;
+    centroid /= mesh.vertexCount();
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for (const Vec3& p : mesh.vertices)
+        covariance += (p - centroid) * (p - centroid).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> pca(covariance);
+
+    const SurfaceDistance distance(mesh, cellFor(mesh, diagonal));
+    const std::vector<int> sample = sampleOf(mesh);
+    std::vector<Vec3> candidates;
+    for (int k = 0; k < 3; ++k) {
+        candidates.push_back(pca.eigenvectors().col(k));
+        candidates.push_back(Vec3::Unit(k));
+    }
+    std::optional<MirrorFit> best;
+    for (Vec3 normal : candidates) {
+        normal = keepContaining(normal, search.containing);
+        if (normal.norm() < 0.5)
+            continue;  // (nearly) the contained axis itself
+        MirrorPlane plane{centroid, normal.normalized()};
+        plane = refine(mesh, distance, sample, plane, search.containing);
+        const double error = meanError(mesh, distance, sample, plane, diagonal);
+        if (error <= search.tolerance && (!best || error < best->error))
+            best = MirrorFit{plane, error};
+    }
+    return best;
+}
+
+double mirrorJointTolerance(const Skeleton& skeleton, const MirrorFit& fit, double diagonal) {
+    double meanBone = 0.0;
+    for (const Bone& bone : skeleton.bones())
+        meanBone += skeleton.boneLength(bone.id);
+    meanBone /= std::max(1, skeleton.boneCount());
+    return std::max(0.25 * meanBone, 4.0 * fit.error * diagonal);
+}
+
+std::map<JointId, JointId> mirrorJoints(const Skeleton& skeleton, const MirrorPlane& plane,
+                                        double tolerance) {
+    auto nearestTo = [&](const Vec3& p) {
+        JointId best = kNoJoint;
+        double bestDistance = std::numeric_limits<double>::infinity();
+        for (const Joint& joint : skeleton.joints()) {
+            const double d = (joint.position - p).norm();
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = joint.id;
+            }
+        }
+        return std::pair{best, bestDistance};
+    };
+    std::map<JointId, JointId> images;
+    for (const Joint& joint : skeleton.joints()) {
+        const auto [image, d] = nearestTo(plane.reflect(joint.position));
+        if (image == kNoJoint || d > tolerance)
+            continue;
+        const JointId back = nearestTo(plane.reflect(skeleton.joint(image).position)).first;
+        if (back == joint.id)
+            images[joint.id] = image;
+    }
+    return images;
+}
+
+std::map<BoneId, BoneId> mirrorBones(const Skeleton& skeleton,
+                                     const std::map<JointId, JointId>& joints) {
+    std::map<std::pair<JointId, JointId>, BoneId> byJoints;
+    for (const Bone& bone : skeleton.bones()) {
+        byJoints[{bone.head, bone.tail}] = bone.id;
+        byJoints[{bone.tail, bone.head}] = bone.id;
+    }
+    std::map<BoneId, BoneId> images;
+    for (const Bone& bone : skeleton.bones()) {
+        auto head = joints.find(bone.head), tail = joints.find(bone.tail);
+        BoneId image = bone.id;
+        if (head != joints.end() && tail != joints.end()) {
+            auto found = byJoints.find({head->second, tail->second});
+            if (found != byJoints.end())
+                image = found->second;
+        }
+        images[bone.id] = image;
+    }
+    return images;
+}
+
+TriMesh outlinePoints(const std::vector<Vec2>& outline) {
+    TriMesh points;
+    for (const Vec2& p : outline)
+        points.vertices.emplace_back(p.x(), p.y(), 0.0);
+    return points;
+}
+
+std::optional<PartSymmetry> findPartSymmetry(const Part& part) {
+    std::optional<MirrorFit> fit;
+    if (!part.outline.empty()) {
+        // A sketched part: the mirror of its outline (left and right of the
+        // sketch). Its surface is also mirrored through the sketch plane
+        // z = 0 (Part::mirror), but that is front and back, never what
+        // X-mirror means: an outline without a mirror has none.
+        MirrorSearch search;
+        search.containing = Vec3::UnitZ();
+        fit = findMirrorPlane(outlinePoints(part.outline), search);
+    } else {
+        fit = findMirrorPlane(part.mesh);
+    }
+    if (!fit)
+        return std::nullopt;
+    PartSymmetry symmetry;
+    symmetry.plane = fit->plane;
+    symmetry.joints =
+        mirrorJoints(part.skeleton, symmetry.plane,
+                     mirrorJointTolerance(part.skeleton, *fit, diagonalOf(part.mesh.vertices)));
+    symmetry.bones = mirrorBones(part.skeleton, symmetry.joints);
+    return symmetry;
+}
+
+}  // namespace rigmesh

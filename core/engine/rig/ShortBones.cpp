@@ -1,0 +1,45 @@
+#include "rig/ShortBones.h"
+
+#include "mesh/MeshAdjacency.h"
+
+namespace rigmesh {
+
+double minimumBoneLength(const TriMesh& mesh) {
+    return mesh.faceCount() > 0 ? 0.5 * meanEdgeLength(mesh) : 0.0;
+}
+
+std::optional<ShortestBone> shortestBone(const Skeleton& skeleton) {
+    std::optional<ShortestBone> shortest;
+    for (const Bone& bone : skeleton.bones()) {
+        const double length = skeleton.boneLength(bone.id);
+        if (!shortest || length < shortest->length)
+            shortest = ShortestBone{bone.id, length};
+    }
+    return shortest;
+}
+
+int collapseShortBones(Skeleton& skeleton, double minimum) {
+    int collapsed = 0;
+    while (skeleton.boneCount() > 1) {
+        const std::optional<ShortestBone> shortest = shortestBone(skeleton);
+        if (!shortest || shortest->length >= minimum)
+            break;
+        const Bone bone = skeleton.bone(shortest->bone);
+        const Vec3 head = skeleton.joint(bone.head).position;
+        const Vec3 tail = skeleton.joint(bone.tail).position;
+        // collapseBone keeps the head's id at the given place: the end that
+        // stays is the one with other bones (both: the middle).
+        const bool headIsLeaf = skeleton.degree(bone.head) == 1;
+        const bool tailIsLeaf = skeleton.degree(bone.tail) == 1;
+        const Vec3 place = tailIsLeaf ? head : headIsLeaf ? tail : 0.5 * (head + tail);
+        skeleton.collapseBone(bone.id, place);
+        ++collapsed;
+    }
+    if (collapsed > 0) {
+        skeleton.setRoot(chooseCentralRoot(skeleton));
+        skeleton.reorient();
+    }
+    return collapsed;
+}
+
+}  // namespace rigmesh

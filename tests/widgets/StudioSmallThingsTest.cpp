@@ -1,0 +1,250 @@
+// The small things an artist stumbles on: a self-crossing stroke is shown,
+// not told in coordinates; the timeline scrolls its rows; the Properties
+// panel shows the current document's edge length; recovered documents keep
+// their names and dates speak the studio's language; "1 bone"; the dark
+// theme's icons and Lock boxes show; the window has a minimum size; an undo
+// replaces the undone step's message; the pinned vertex goes with the weight
+// views; tooltips name the keys; the example's weights are a fresh solve.
+#include <gtest/gtest.h>
+
+#include <QAction>
+#include <QDateTime>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QScrollBar>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QUndoStack>
+
+#include "ExampleDocument.h"
+#include "StudioFixture.h"
+#include "merge/MergeParts.h"
+#include "model/Autosave.h"
+#include "model/DocumentFile.h"
+#include "panels/PropertiesPanel.h"
+#include "part/BoneWeights.h"
+#include "preferences/Theme.h"
+#include "preferences/Translations.h"
+#include "rig/LocalBoneHeat.h"
+#include "timeline/TimelineDock.h"
+#include "timeline/TimelineView.h"
+
+namespace rigmesh {
+namespace {
+
+using test::drag;
+
+// A closed ellipse outline in document units: a part of one bone.
+std::vector<Vec2> ellipse() {
+    std::vector<Vec2> points;
+    for (int i = 0; i < 64; ++i) {
+        const double t = 2.0 * M_PI * i / 64.0;
+        points.emplace_back(1.5 * std::cos(t), 0.6 * std::sin(t));
+    }
+    return points;
+}
+
+class StudioSmallThings : public test::StudioFixture {
+  protected:
+    QString status() const { return window->statusBar()->currentMessage(); }
+};
+
+TEST_F(StudioSmallThings, ASelfCrossingStrokeIsMarkedNotToldInCoordinates) {
+    window->activateTool<widgets::SketchTool>();
+    const QPointF c(viewport()->width() / 2.0, viewport()->height() / 2.0);
+    // A figure eight.
+    std::vector<QPointF> eight;
+    for (int i = 0; i <= 120; ++i) {
+        const double t = 2.0 * M_PI * i / 120.0;
+        eight.emplace_back(c.x() + 200.0 * std::sin(t), c.y() + 120.0 * std::sin(2.0 * t));
+    }
+    drag(viewport(), eight);
+    EXPECT_EQ(document()->partCount(), 0);
+    EXPECT_TRUE(status().contains(QStringLiteral("red cross"))) << status().toStdString();
+    EXPECT_FALSE(status().contains(QLatin1Char('('))) << status().toStdString();
+    ASSERT_TRUE(viewport()->problemMark().has_value());
+    // The mark is where the stroke crosses itself: the eight's middle.
+    const QVector3D mark =
+        viewport()->camera().project(*viewport()->problemMark(), QSizeF(viewport()->size()));
+    EXPECT_LT(QLineF(QPointF(mark.x(), mark.y()), c).length(), 25.0);
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_self_crossing.png"));
+    // A new stroke takes the mark away.
+    drag(viewport(), test::ellipseStroke(c, 150, 80));
+    EXPECT_FALSE(viewport()->problemMark().has_value());
+}
+
+TEST_F(StudioSmallThings, TheTimelineScrollsRowsThatDoNotFit) {
+    const model::PartId biped = addExampleBiped();
+    auto* view = window->findChild<widgets::TimelineView*>(QStringLiteral("timelineView"));
+    ASSERT_NE(view, nullptr);
+    auto* bar = view->findChild<QScrollBar*>(QStringLiteral("timelineRowsScrollBar"));
+    ASSERT_NE(bar, nullptr);
+    view->setExpanded(biped, true);  // a row per joint
+    QTest::qWait(20);
+    ASSERT_GT(document()->part(biped).part->skeleton.jointCount() * 20, view->height());
+    EXPECT_TRUE(bar->isVisible()) << "more rows than fit";
+    bar->setValue(bar->maximum());
+    EXPECT_GT(bar->maximum(), 0);
+    view->setExpanded(biped, false);
+    QTest::qWait(20);
+    EXPECT_FALSE(bar->isVisible()) << "one row fits";
+}
+
+TEST_F(StudioSmallThings, PropertiesShowTheCurrentDocumentsEdgeLength) {
+    const model::PartId biped = addExampleBiped();
+    document()->setSelection({biped, kNoJoint});
+    auto* edge = window->propertiesPanel()->findChild<QDoubleSpinBox*>();
+    ASSERT_NE(edge, nullptr);
+    const double bipedEdge = edge->value();
+    EXPECT_GT(bipedEdge, 0.0);
+    window->newDocument();  // empty: nothing selected
+    QTest::qWait(20);
+    EXPECT_EQ(edge->value(), 0.0) << "not the other document's";
+}
+
+TEST_F(StudioSmallThings, RecoveredDocumentsKeepTheirNamesAndDatesSpeakTheLanguage) {
+    QTemporaryDir folder;
+    model::Document document;
+    document.setUntitledName(QStringLiteral("Untitled 7"));
+    model::Autosave autosave(&document, folder.path());
+    document.undoStack()->push(
+        model::CreatePartCommand::create(document, ellipse(), "blob").release());
+    ASSERT_TRUE(autosave.writeNow());
+    const QList<model::RecoveryFile> files = model::Autosave::recoveryFiles(folder.path());
+    ASSERT_EQ(files.size(), 1);
+    EXPECT_EQ(files.front().name, QStringLiteral("Untitled 7"));
+    const QString english = widgets::FilesController::recoveryQuestion(files.front());
+    EXPECT_TRUE(english.contains(QStringLiteral("\"Untitled 7\""))) << english.toStdString();
+    widgets::setTranslationsDirectory(QStringLiteral(RIGMESH_QM_DIR));
+    ASSERT_TRUE(widgets::installTranslations(QStringLiteral("de")));
+    const QString german = widgets::FilesController::recoveryQuestion(files.front());
+    widgets::installTranslations(QStringLiteral("en"));
+    EXPECT_TRUE(german.contains(
+        QLocale(QLocale::German).toString(files.front().lastModified, QLocale::LongFormat)))
+        << german.toStdString();
+}
+
+TEST_F(StudioSmallThings, OneBoneIsOneBone) {
+    // The shared tube sketch is a part of one bone.
+    document()->undoStack()->push(
+        model::CreatePartCommand::create(
+            *document(), readSketchFile(std::string(RIGMESH_SHARED_SKETCHES) + "/tube.json").points,
+            "tube")
+            .release());
+    const model::PartNode& node = document()->parts().front();
+    ASSERT_EQ(node.part->skeleton.boneCount(), 1);
+    document()->setSelection({node.id, kNoJoint});
+    QString figures;
+    for (QLabel* label : window->propertiesPanel()->findChildren<QLabel*>())
+        figures += label->text();
+    EXPECT_TRUE(figures.contains(QStringLiteral("1 bone"))) << figures.toStdString();
+    EXPECT_FALSE(figures.contains(QStringLiteral("1 bones"))) << figures.toStdString();
+}
+
+// Mean lightness of an icon's opaque pixels.
+double lightness(const QIcon& icon) {
+    const QImage image = icon.pixmap(24, 24).toImage().convertToFormat(QImage::Format_ARGB32);
+    double sum = 0.0;
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = QColor::fromRgba(image.pixel(x, y));
+            if (c.alpha() > 200) {
+                sum += c.lightness();
+                ++count;
+            }
+        }
+    return count > 0 ? sum / count : 0.0;
+}
+
+TEST_F(StudioSmallThings, TheDarkThemesIconsAndLockBoxesStandOut) {
+    for (const char* name : {"sketch", "pose", "select", "cut"}) {
+        const QString path = QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name));
+        // Light lines on the dark palette; the light theme's icon as drawn.
+        EXPECT_GT(lightness(widgets::themedIcon(path, widgets::Theme::Dark)), 130.0) << name;
+        EXPECT_EQ(widgets::themedIcon(path, widgets::Theme::Light).pixmap(24, 24).toImage(),
+                  QIcon(path).pixmap(24, 24).toImage())
+            << name;
+    }
+    widgets::StudioPreferences dark = window->preferences();
+    dark.theme = widgets::Theme::Dark;
+    window->applyPreferences(dark);
+    EXPECT_TRUE(window->styleSheet().contains(QStringLiteral("indicator")));
+    const model::PartId biped = addExampleBiped();
+    document()->setSelection({biped, kNoJoint});
+    for (auto* dock : window->findChildren<QDockWidget*>())
+        if (dock->objectName() == QStringLiteral("weightsDock"))
+            dock->raise();
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_dark_theme.png"));
+    widgets::StudioPreferences light = dark;
+    light.theme = widgets::Theme::Light;
+    window->applyPreferences(light);
+    EXPECT_TRUE(window->styleSheet().isEmpty());
+}
+
+TEST_F(StudioSmallThings, TheWindowKeepsRoomForTheViewAndTheDocks) {
+    EXPECT_GE(window->minimumSize().width(), 900);
+    EXPECT_GE(window->minimumSize().height(), 600);
+    window->resize(520, 360);
+    QTest::qWait(50);
+    EXPECT_GE(window->width(), 900);
+    // No dock lies over the view.
+    const QRect view(viewport()->mapTo(window.get(), QPoint(0, 0)), viewport()->size());
+    for (auto* dock : window->findChildren<QDockWidget*>()) {
+        if (dock->isVisible() && !dock->isFloating()) {
+            EXPECT_FALSE(
+                QRect(dock->mapTo(window.get(), QPoint(0, 0)), dock->size()).intersects(view))
+                << dock->objectName().toStdString();
+        }
+    }
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_minimum_size.png"));
+}
+
+TEST_F(StudioSmallThings, AnUndoReplacesTheUndoneStepsMessage) {
+    const model::PartId biped = addExampleBiped();
+    document()->setSelection({biped, kNoJoint});
+    window->showStatus(QStringLiteral("Cut biped in 20 ms"));
+    document()->undoStack()->undo();
+    EXPECT_TRUE(status().startsWith(QStringLiteral("Undone: "))) << status().toStdString();
+    document()->undoStack()->redo();
+    EXPECT_TRUE(status().startsWith(QStringLiteral("Redone: "))) << status().toStdString();
+}
+
+TEST_F(StudioSmallThings, ThePinnedVertexGoesWithTheWeightView) {
+    const model::PartId biped = addExampleBiped();
+    viewport()->setWeightView(widgets::WeightView::DominantBone);
+    viewport()->setInspectedVertex(widgets::Viewport::SurfaceHit{biped, 10});
+    EXPECT_TRUE(viewport()->inspectedVertex().has_value());
+    viewport()->setWeightView(widgets::WeightView::Off);
+    EXPECT_FALSE(viewport()->inspectedVertex().has_value());
+}
+
+TEST_F(StudioSmallThings, ToolTipsNameTheKeys) {
+    for (const widgets::ToolRegistry::Entry& entry : window->tools()->entries()) {
+        const QString key = entry.action->shortcut().toString(QKeySequence::NativeText);
+        EXPECT_TRUE(entry.action->toolTip().endsWith(QStringLiteral("(%1)").arg(key)))
+            << entry.action->toolTip().toStdString();
+    }
+}
+
+// The example is the first thing a newcomer inspects: Difference from Global
+// Weights shows nothing on it.
+TEST_F(StudioSmallThings, TheExamplesWeightsAreAFreshSolve) {
+    const std::unique_ptr<model::Document> example = studio::makeExampleDocument();
+    ASSERT_EQ(example->partCount(), 1);
+    EXPECT_FALSE(example->isModified());
+    EXPECT_EQ(example->undoStack()->count(), 0);
+    const Part& part = *example->parts().front().part;
+    EXPECT_FALSE(part.weightsPainted);
+    const WeightsById fresh = recomputeWeightsGlobally(part.mesh, part.skeleton);
+    double worst = 0.0;
+    for (double d : weightDifferences(part.weights.perVertex, fresh))
+        worst = std::max(worst, d);
+    EXPECT_LT(worst, 1e-9);
+}
+
+}  // namespace
+}  // namespace rigmesh
