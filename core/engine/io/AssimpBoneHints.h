@@ -40,7 +40,7 @@ struct MeshBones {
 MeshBones meshBones(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
                     const AssimpNodeTree& tree, const std::set<std::string>& weightedAnywhere);
 
-// Our exporter's leaf tail (BoneTipHints.h) in the node's own frame, which
+// Our exporter's bone tail (BoneTipHints.h) in the node's own frame, which
 // Assimp reads into the node's metadata: from glTF extras as a nested list,
 // from an FBX user property as a vector.
 std::optional<Vec3> tailMetadata(const aiNode& node);

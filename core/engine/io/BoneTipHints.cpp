@@ -119,12 +119,11 @@ void forEachBlenderJointTechnique(const std::string& dae, Visit&& visit) {
 
 }  // namespace
 
-std::string withFbxLeafTails(const std::string& fbx, const std::vector<ExportRig>& rigs) {
+std::string withFbxBoneTails(const std::string& fbx, const std::vector<ExportRig>& rigs) {
     std::map<std::string, Vec3> tails;
     for (const ExportRig& rig : rigs)
         for (const ExportBoneNode& node : rig.nodes)
-            if (node.tailUnmarked)
-                tails.emplace(node.name, node.localTail());
+            tails.emplace(node.name, node.localTail());
     const std::vector<std::uint8_t> out = withFbxModelVectors(
         std::vector<std::uint8_t>(fbx.begin(), fbx.end()), kTailMetadataKey, tails);
     return std::string(out.begin(), out.end());
@@ -163,7 +162,7 @@ std::map<std::string, bool> readColladaBoneConnections(const std::string& dae) {
     return connected;
 }
 
-std::string withGltfLeafTails(const std::string& gltfJson, const std::vector<ExportRig>& rigs) {
+std::string withGltfBoneTails(const std::string& gltfJson, const std::vector<ExportRig>& rigs) {
     nlohmann::json gltf = nlohmann::json::parse(gltfJson, nullptr, false);
     if (gltf.is_discarded() || !gltf.is_object())
         throw Error("cannot export: the glTF exporter wrote invalid JSON");
@@ -171,7 +170,7 @@ std::string withGltfLeafTails(const std::string& gltfJson, const std::vector<Exp
     if (gltf.contains("nodes") && gltf["nodes"].is_array())
         for (nlohmann::json& node : gltf["nodes"]) {
             const auto bone = bones.find(node.value("name", std::string()));
-            if (bone == bones.end() || !bone->second->tailUnmarked)
+            if (bone == bones.end())
                 continue;
             const Vec3 tail = bone->second->localTail();
             node["extras"][kTailMetadataKey] = {tail.x(), tail.y(), tail.z()};

@@ -83,8 +83,11 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
         }
         const BoneId id = skeleton.bones()[b].id;
         const auto kept = part.boneNames.find(id);
-        node.name = kept != part.boneNames.end() ? sanitizedName(kept->second)
-                                                 : partName + "_bone" + std::to_string(id);
+        // A kept name goes out as it is ("Bone.001", "Bip01 L Thigh"): glTF,
+        // FBX and COLLADA (as Assimp writes and reads them) carry any name,
+        // and an importer matching bones by name needs it unchanged.
+        node.name =
+            kept != part.boneNames.end() ? kept->second : partName + "_bone" + std::to_string(id);
         node.head = place(hierarchy.restPosition(frame));
         node.tail = place(hierarchy.restPosition(end));
         std::vector<int> chains;  // attached chain roots hanging from this bone
@@ -94,7 +97,6 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
         node.leaf = bonesFrom[end].empty() &&
                     std::none_of(chains.begin(), chains.end(),
                                  [&](int chain) { return !bonesFrom[chain].empty(); });
-        node.tailUnmarked = bonesFrom[end].empty();
         if (const auto keptFrame = part.boneFrames.find(id); keptFrame != part.boneFrames.end()) {
             node.restFrame = (rig.placementRotation * keptFrame->second).normalized();
         } else {

@@ -62,9 +62,6 @@ struct ExportBoneNode {
     Vec3 restTranslation;
     Eigen::Quaterniond restRotation = Eigen::Quaterniond::Identity();
     bool leaf = false;  // no child bone
-    // No bone starts at its tail (a leaf, or a bone with disconnected
-    // children only): importers cannot place its tail from a child.
-    bool tailUnmarked = false;
 
     // The inverse bind matrix: world (placed) to this node's rest frame.
     Eigen::Affine3d inverseBind() const;
@@ -99,7 +96,7 @@ struct ExportRig {
 enum class BoneAxes { PlusY, GltfRootLeavesMinusZ };
 
 // The placement must be rigid (rotation and translation); scale goes into
-// unitScale. A bone's node is named after it (Part::boneNames, sanitized),
+// unitScale. A bone's node is named after it (Part::boneNames, unchanged),
 // else `<partName>_bone<id>`; names may repeat other parts' or nodes' (the
 // scene builder makes them unique). Throws Error on a skeleton with no root.
 ExportRig makeExportRig(const Part& part, const std::string& partName,

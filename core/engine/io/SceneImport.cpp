@@ -48,6 +48,10 @@ const aiScene* readScene(Assimp::Importer& importer, const std::string& path) {
         throw Error(MessageId::ImportNoSuchFile, fileName(path));
     // FBX pivots as extra `$AssimpFbx$` nodes would split bones from their nodes.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
+    // Every FBX animation curve, also one that holds the rest pose: by
+    // default Assimp drops such curves, and with them a one-key clip (a
+    // Half-Life or SMD reference pose) whole.
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_OPTIMIZE_EMPTY_ANIMATION_CURVES, false);
     // COLLADA nodes by their names (Blender's "Lower"), not their ids
     // ("Rig_Lower"): the names a rigger gave the bones.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_USE_COLLADA_NAMES, true);
