@@ -5,6 +5,7 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "base/Error.h"
@@ -383,6 +384,11 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
         for (const auto& [partClip, rig] : members)
             animated.push_back({partClip, &rigs[rig]});
         animations.push_back(makeAnimation(animated, name));
+        // Assimp 5.2.5's FBX exporter writes the stack's LocalStop as the
+        // duration cut to whole seconds, and FBX readers drop the keys after
+        // it (docs/EXCHANGE.md rule 20): a whole number of seconds keeps them.
+        if (format == ExportFormat::Fbx)
+            animations.back()->mDuration = std::ceil(animations.back()->mDuration);
     }
     if (!armatureChildren.empty()) {
         aiNode* armature = new aiNode("Armature");
