@@ -146,6 +146,14 @@ std::optional<Vec3> tailMetadata(const aiNode& node) {
     return std::nullopt;
 }
 
+std::optional<std::string> nameMetadata(const aiNode& node) {
+    aiString name;
+    if (node.mMetaData == nullptr || !node.mMetaData->Get(kNameMetadataKey, name) ||
+        name.length == 0)
+        return std::nullopt;
+    return std::string(name.C_Str());
+}
+
 std::string meshName(const aiMesh& mesh, const aiNode& node) {
     for (const aiString* name : {&node.mName, &mesh.mName}) {
         std::string text = name->C_Str();

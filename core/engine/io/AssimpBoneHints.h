@@ -45,6 +45,10 @@ MeshBones meshBones(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
 // from an FBX user property as a vector.
 std::optional<Vec3> tailMetadata(const aiNode& node);
 
+// The bone's own name our exporter wrote beside a node it had to name
+// otherwise (BoneTipHints.h: kNameMetadataKey), if any.
+std::optional<std::string> nameMetadata(const aiNode& node);
+
 // The rotation of the space Blender's COLLADA tips are in: the armature, the
 // nearest ancestor of `node` that is no bone.
 template <typename BoneNodes>

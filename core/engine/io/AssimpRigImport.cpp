@@ -329,7 +329,13 @@ std::string importRig(const aiScene& scene, const std::vector<SkinnedMesh>& grou
         tailJoint[b] = part.skeleton.addJoint(tails.tails[b]);
         // Bone ids follow the bone index (ids from 0, in this order).
         part.skeleton.addBone(head, tailJoint[b]);
-        imported.boneNames.push_back(bones[b].name);
+        // The node's name, or the bone's own that our exporter kept beside it.
+        std::optional<std::string> ownName =
+            bones[b].node >= 0 ? nameMetadata(tree.node(bones[b].node)) : std::nullopt;
+        if (const auto kept = hints.colladaNames.find(bones[b].name);
+            kept != hints.colladaNames.end())
+            ownName = kept->second;
+        imported.boneNames.push_back(ownName ? *ownName : bones[b].name);
         const Eigen::Quaterniond frame(bindAxes(bones[b].bind));
         if (bindAxes(bones[b].bind).determinant() > 0 && frame.coeffs().allFinite())
             part.boneFrames.emplace(static_cast<BoneId>(b), frame.normalized());
@@ -353,18 +359,20 @@ std::optional<Clip> importClip(const aiAnimation& animation, const AssimpNodeTre
                                const ImportedPart& imported, const ImportedBones& bones) {
     const Skeleton& skeleton = imported.part.skeleton;
     // The nodes that move the part: its bones' and their ancestors.
-    std::set<std::string> moving;
-    for (int node : bones.nodes)
+    std::set<std::string> moving, boneNodes;
+    for (int node : bones.nodes) {
+        if (node >= 0)
+            boneNodes.insert(tree.node(node).mName.C_Str());
         for (int up = node; up >= 0; up = tree.parent(up))
             moving.insert(tree.node(up).mName.C_Str());
+    }
     std::set<double> ticks;
     bool movesBones = false;
     for (unsigned c = 0; c < animation.mNumChannels; ++c) {
         const aiNodeAnim& channel = *animation.mChannels[c];
         if (!moving.contains(channel.mNodeName.C_Str()))
             continue;
-        movesBones = movesBones || std::find(imported.boneNames.begin(), imported.boneNames.end(),
-                                             channel.mNodeName.C_Str()) != imported.boneNames.end();
+        movesBones = movesBones || boneNodes.contains(channel.mNodeName.C_Str());
         for (unsigned k = 0; k < channel.mNumRotationKeys; ++k)
             ticks.insert(channel.mRotationKeys[k].mTime);
         for (unsigned k = 0; k < channel.mNumPositionKeys; ++k)

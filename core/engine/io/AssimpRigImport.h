@@ -28,6 +28,8 @@ struct SkinnedMesh {
 struct RigHints {
     std::map<std::string, Vec3> colladaTips;
     std::map<std::string, bool> colladaConnections;
+    // Our exporter's bone names where a joint had to be named otherwise.
+    std::map<std::string, std::string> colladaNames;
     // The nodes the file's animations move (by name).
     std::set<std::string> animatedNodes;
 };

@@ -74,7 +74,7 @@ struct AnimationGroups {
     }
 };
 
-// Notes item 2: every node name unique. Kept bone names (an import's) may
+// docs/EXCHANGE.md rule 2: every node name unique. Kept bone names (an import's) may
 // meet a part's or another part's bone's: `_2`, `_3`, ... appended; an end
 // bone's name (`<bone>_end`) is taken too.
 void makeBoneNamesUnique(ExportRig& rig, std::set<std::string>& used) {
@@ -82,6 +82,8 @@ void makeBoneNamesUnique(ExportRig& rig, std::set<std::string>& used) {
         std::string name = node.name;
         for (int n = 2; used.contains(name) || used.contains(name + "_end"); ++n)
             name = node.name + "_" + std::to_string(n);
+        if (name != node.name)
+            node.renamedFrom = node.name;
         node.name = name;
         used.insert(name);
         used.insert(name + "_end");

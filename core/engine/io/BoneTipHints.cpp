@@ -56,6 +56,12 @@ void addTips(tinyxml2::XMLElement& parent,
         addParameter(*technique, "tip_x", "float", number(tip.x()));
         addParameter(*technique, "tip_y", "float", number(tip.y()));
         addParameter(*technique, "tip_z", "float", number(tip.z()));
+        if (!bone->second->renamedFrom.empty()) {  // our own profile: Blender ignores it
+            tinyxml2::XMLElement* ours =
+                node->LastChildElement("extra")->InsertNewChildElement("technique");
+            ours->SetAttribute("profile", "rigmesh");
+            addParameter(*ours, kNameMetadataKey, "string", bone->second->renamedFrom);
+        }
     }
 }
 
@@ -80,13 +86,14 @@ std::string withColladaBoneTips(const std::string& dae, const std::vector<Export
 
 namespace {
 
-// Calls visit(joint name, technique) for every `<technique profile="blender">`
+// Calls visit(joint name, technique) for every `<technique profile="...">`
 // of every node below `parent`.
 template <typename Visit>
-void forEachBlenderTechnique(const tinyxml2::XMLElement& parent, Visit&& visit) {
+void forEachBlenderTechnique(const tinyxml2::XMLElement& parent, const std::string& wanted,
+                             Visit&& visit) {
     for (const tinyxml2::XMLElement* node = parent.FirstChildElement("node"); node != nullptr;
          node = node->NextSiblingElement("node")) {
-        forEachBlenderTechnique(*node, visit);
+        forEachBlenderTechnique(*node, wanted, visit);
         const char* name = node->Attribute("name");
         if (name == nullptr)
             continue;
@@ -95,7 +102,7 @@ void forEachBlenderTechnique(const tinyxml2::XMLElement& parent, Visit&& visit) 
             for (const tinyxml2::XMLElement* technique = extra->FirstChildElement("technique");
                  technique != nullptr; technique = technique->NextSiblingElement("technique")) {
                 const char* profile = technique->Attribute("profile");
-                if (profile != nullptr && std::string(profile) == "blender")
+                if (profile != nullptr && std::string(profile) == wanted)
                     visit(std::string(name), *technique);
             }
     }
@@ -104,7 +111,8 @@ void forEachBlenderTechnique(const tinyxml2::XMLElement& parent, Visit&& visit) 
 // The same for every visual scene of a COLLADA text (nothing for text that
 // is not XML).
 template <typename Visit>
-void forEachBlenderJointTechnique(const std::string& dae, Visit&& visit) {
+void forEachBlenderJointTechnique(const std::string& dae, Visit&& visit,
+                                  const std::string& profile = "blender") {
     tinyxml2::XMLDocument document;
     if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
         document.RootElement() == nullptr)
@@ -114,18 +122,24 @@ void forEachBlenderJointTechnique(const std::string& dae, Visit&& visit) {
     for (const tinyxml2::XMLElement* scene =
              scenes != nullptr ? scenes->FirstChildElement("visual_scene") : nullptr;
          scene != nullptr; scene = scene->NextSiblingElement("visual_scene"))
-        forEachBlenderTechnique(*scene, visit);
+        forEachBlenderTechnique(*scene, profile, visit);
 }
 
 }  // namespace
 
 std::string withFbxBoneTails(const std::string& fbx, const std::vector<ExportRig>& rigs) {
     std::map<std::string, Vec3> tails;
+    std::map<std::string, std::string> names;
     for (const ExportRig& rig : rigs)
-        for (const ExportBoneNode& node : rig.nodes)
+        for (const ExportBoneNode& node : rig.nodes) {
             tails.emplace(node.name, node.localTail());
-    const std::vector<std::uint8_t> out = withFbxModelVectors(
+            if (!node.renamedFrom.empty())
+                names.emplace(node.name, node.renamedFrom);
+        }
+    std::vector<std::uint8_t> out = withFbxModelVectors(
         std::vector<std::uint8_t>(fbx.begin(), fbx.end()), kTailMetadataKey, tails);
+    if (!names.empty())
+        out = withFbxModelStrings(out, kNameMetadataKey, names);
     return std::string(out.begin(), out.end());
 }
 
@@ -162,6 +176,19 @@ std::map<std::string, bool> readColladaBoneConnections(const std::string& dae) {
     return connected;
 }
 
+std::map<std::string, std::string> readColladaBoneNames(const std::string& dae) {
+    std::map<std::string, std::string> names;
+    forEachBlenderJointTechnique(
+        dae,
+        [&](const std::string& name, const tinyxml2::XMLElement& technique) {
+            const tinyxml2::XMLElement* value = technique.FirstChildElement(kNameMetadataKey);
+            if (value != nullptr && value->GetText() != nullptr)
+                names[name] = value->GetText();
+        },
+        "rigmesh");
+    return names;
+}
+
 std::string withGltfBoneTails(const std::string& gltfJson, const std::vector<ExportRig>& rigs) {
     nlohmann::json gltf = nlohmann::json::parse(gltfJson, nullptr, false);
     if (gltf.is_discarded() || !gltf.is_object())
@@ -174,6 +201,8 @@ std::string withGltfBoneTails(const std::string& gltfJson, const std::vector<Exp
                 continue;
             const Vec3 tail = bone->second->localTail();
             node["extras"][kTailMetadataKey] = {tail.x(), tail.y(), tail.z()};
+            if (!bone->second->renamedFrom.empty())
+                node["extras"][kNameMetadataKey] = bone->second->renamedFrom;
         }
     return gltf.dump();
 }

@@ -28,17 +28,23 @@ namespace rigmesh {
 // Throws Error on text that is not XML.
 std::string withColladaBoneTips(const std::string& dae, const std::vector<ExportRig>& rigs);
 
-// The glTF JSON with `extras.rigmesh_tail` on every bone's node of
-// `rigs`. Throws Error on JSON that is not glTF.
+// The glTF JSON with `extras.rigmesh_tail` (and `rigmesh_name` where the
+// node is named otherwise than its bone) on every bone's node of `rigs`. Throws Error on JSON that
+// is not glTF.
 std::string withGltfBoneTails(const std::string& gltfJson, const std::vector<ExportRig>& rigs);
 
 // The binary FBX with a user property `rigmesh_tail` (a Vector: the tail in
-// the node's own frame) on every bone's Model. Throws Error on bytes
+// the node's own frame) on every bone's Model, and `rigmesh_name` (a
+// KString) where the Model is named otherwise than its bone. Throws Error on bytes
 // that are not a binary FBX.
 std::string withFbxBoneTails(const std::string& fbx, const std::vector<ExportRig>& rigs);
 
 // The metadata key our importer reads (glTF extras, FBX user property).
 inline constexpr const char* kTailMetadataKey = "rigmesh_tail";
+// Beside the tail, on a bone whose node had to be named otherwise to stay
+// unique in the file (ExportBoneNode::renamedFrom): the bone's own name,
+// which our importer gives the bone back.
+inline constexpr const char* kNameMetadataKey = "rigmesh_name";
 
 // Per joint name: Blender's tip (tail minus head, in the armature's space)
 // from a COLLADA file's `<technique profile="blender">` extras, as our
@@ -47,5 +53,8 @@ std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae);
 // Per joint name: Blender's "Connected" flag from the same extras (`connect`,
 // which Blender's COLLADA importer honours and we write from the skeleton).
 std::map<std::string, bool> readColladaBoneConnections(const std::string& dae);
+// Per joint name: the bone's own name our exporter wrote where the joint had
+// to be named otherwise (`<technique profile="rigmesh">`, kNameMetadataKey).
+std::map<std::string, std::string> readColladaBoneNames(const std::string& dae);
 
 }  // namespace rigmesh

@@ -41,6 +41,10 @@ namespace rigmesh {
 
 struct ExportBoneNode {
     std::string name;
+    // The bone's own name when `name` had to differ from it to stay unique
+    // in the file (AssimpSceneBuilder: makeBoneNamesUnique), else empty;
+    // written beside the node for importers to map back (BoneTipHints.h).
+    std::string renamedFrom;
     int bone = -1;      // index in skeleton.bones()
     int parent = -1;    // index in ExportRig::nodes, -1 = the Armature node
     JointId headJoint;  // the joint nearer the root, about which the node turns

@@ -242,7 +242,20 @@ void putDouble(std::vector<std::uint8_t>& out, double value) {
     putLittleEndian(out, bits, 8);
 }
 
-// A Properties70 entry: P: "name", "Vector", "", "A+U", x, y, z.
+// A Properties70 entry `P` of `count` properties already encoded.
+FbxRecord propertyRecord(std::uint64_t count, const std::vector<std::uint8_t>& properties,
+                         bool wide) {
+    FbxRecord record;
+    record.name = "P";
+    putLittleEndian(record.body, count, wide ? 8 : 4);
+    putLittleEndian(record.body, properties.size(), wide ? 8 : 4);
+    record.body.push_back(1);
+    record.body.push_back('P');
+    record.body.insert(record.body.end(), properties.begin(), properties.end());
+    return record;
+}
+
+// P: "name", "Vector", "", "A+U", x, y, z.
 FbxRecord vectorProperty(const std::string& name, const Vec3& value, bool wide) {
     std::vector<std::uint8_t> properties;
     putString(properties, name);
@@ -251,14 +264,18 @@ FbxRecord vectorProperty(const std::string& name, const Vec3& value, bool wide) 
     putString(properties, "A+U");
     for (int k = 0; k < 3; ++k)
         putDouble(properties, value[k]);
-    FbxRecord record;
-    record.name = "P";
-    putLittleEndian(record.body, 7, wide ? 8 : 4);
-    putLittleEndian(record.body, properties.size(), wide ? 8 : 4);
-    record.body.push_back(1);
-    record.body.push_back('P');
-    record.body.insert(record.body.end(), properties.begin(), properties.end());
-    return record;
+    return propertyRecord(7, properties, wide);
+}
+
+// P: "name", "KString", "", "U", "value".
+FbxRecord stringProperty(const std::string& name, const std::string& value, bool wide) {
+    std::vector<std::uint8_t> properties;
+    putString(properties, name);
+    putString(properties, "KString");
+    putString(properties, "");
+    putString(properties, "U");
+    putString(properties, value);
+    return propertyRecord(5, properties, wide);
 }
 
 // A Model record's name: its second property, "<name>\0\1Model".
@@ -280,15 +297,12 @@ std::string modelName(const FbxRecord& model, bool wide) {
     return full.substr(0, full.find('\0'));
 }
 
-}  // namespace
-
-std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file) {
-    return writeFbx(file, parseFbx(file));
-}
-
-std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& file,
-                                              const std::string& property,
-                                              const std::map<std::string, Vec3>& values) {
+// The file with make(value) appended to the Properties70 of each Model
+// named in `values`.
+template <typename Value, typename Make>
+std::vector<std::uint8_t> withModelProperties(const std::vector<std::uint8_t>& file,
+                                              const std::map<std::string, Value>& values,
+                                              Make make) {
     FbxFile fbx = parseFbx(file);
     for (FbxRecord& objects : fbx.top) {
         if (objects.name != "Objects")
@@ -314,11 +328,33 @@ std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& f
                 model.nested = true;
                 table = model.children.begin();
             }
-            table->children.push_back(vectorProperty(property, value->second, fbx.wide));
+            table->children.push_back(make(value->second, fbx.wide));
             table->nested = true;
         }
     }
     return writeFbx(file, fbx);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file) {
+    return writeFbx(file, parseFbx(file));
+}
+
+std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& file,
+                                              const std::string& property,
+                                              const std::map<std::string, Vec3>& values) {
+    return withModelProperties(file, values, [&](const Vec3& value, bool wide) {
+        return vectorProperty(property, value, wide);
+    });
+}
+
+std::vector<std::uint8_t> withFbxModelStrings(const std::vector<std::uint8_t>& file,
+                                              const std::string& property,
+                                              const std::map<std::string, std::string>& values) {
+    return withModelProperties(file, values, [&](const std::string& value, bool wide) {
+        return stringProperty(property, value, wide);
+    });
 }
 
 }  // namespace rigmesh

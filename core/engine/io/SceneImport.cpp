@@ -185,6 +185,7 @@ ImportedScene importScene(const std::string& path) {
         const std::string text = readText(path);
         hints.colladaTips = readColladaBoneTips(text);
         hints.colladaConnections = readColladaBoneConnections(text);
+        hints.colladaNames = readColladaBoneNames(text);
     }
 
     // Skinned meshes by the skeleton they share, each other mesh alone, in
