@@ -568,6 +568,8 @@
     <message>
         <source>Bone %1 starts at the skeleton&apos;s root: it has no parent to connect to.</source>
         <translation>Knochen %1 beginnt an der Wurzel des Skeletts: Er hat keinen Elternknochen, mit dem er verbunden werden könnte.</translation>
+    </message>
+    <message>
         <source>The surface would intersect itself (%1 crossing face pairs) near (%2, %3): the outline is too thin or turns too sharply there. Widen it there or use a smaller edge length.</source>
         <translation>Die Oberfläche würde sich selbst schneiden (%1 sich kreuzende Flächenpaare) bei (%2, %3): der Umriss ist dort zu dünn oder knickt zu scharf. Verbreitern Sie ihn dort oder verwenden Sie eine kleinere Kantenlänge.</translation>
     </message>

@@ -568,6 +568,8 @@
     <message>
         <source>Bone %1 starts at the skeleton&apos;s root: it has no parent to connect to.</source>
         <translation>El hueso %1 empieza en la raíz del esqueleto: no tiene padre al que conectarse.</translation>
+    </message>
+    <message>
         <source>The surface would intersect itself (%1 crossing face pairs) near (%2, %3): the outline is too thin or turns too sharply there. Widen it there or use a smaller edge length.</source>
         <translation>La superficie se intersecaría a sí misma (%1 pares de caras que se cruzan) cerca de (%2, %3): el contorno es demasiado fino o gira demasiado bruscamente ahí. Ensánchelo ahí o use una longitud de arista menor.</translation>
     </message>
