@@ -219,6 +219,10 @@ PartNode readNode(const json& object) {
     node.options.targetEdgeLength =
         number(field(options, "targetEdgeLength"), "target edge length");
     node.options.smoothing = boolean(field(options, "smoothing"), "smoothing");
+    // Parts saved before symmetric outlines got mirrored joints rebuild as
+    // they were made.
+    node.options.mirrorJoints =
+        options.contains("mirrorJoints") && boolean(options.at("mirrorJoints"), "mirror joints");
     try {
         checkBuildOptions(node.stroke, node.options);
     } catch (const Error& e) {

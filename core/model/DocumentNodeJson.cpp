@@ -45,7 +45,8 @@ json documentNodeJson(const PartNode& node) {
         {"stroke", jsonwrite::flatVec2s(node.stroke)},
         {"options",
          {{"targetEdgeLength", node.options.targetEdgeLength},
-          {"smoothing", node.options.smoothing}}},
+          {"smoothing", node.options.smoothing},
+          {"mirrorJoints", node.options.mirrorJoints}}},
     };
     if (node.part)
         out["part"] = partToJson(*node.part);

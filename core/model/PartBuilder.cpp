@@ -16,6 +16,7 @@ SketchToPartOptions engineOptions(const BuildOptions& options) {
     SketchToPartOptions engine;
     engine.surface.surface.targetEdgeLength = options.targetEdgeLength;
     engine.surface.surface.smooth = options.smoothing;
+    engine.mirrorJoints = options.mirrorJoints;
     return engine;
 }
 

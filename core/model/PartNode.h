@@ -26,6 +26,10 @@ inline constexpr PartId kNoPart = 0;
 struct BuildOptions {
     double targetEdgeLength = 0.0;  // 0 = automatic (the cleaned outline's spacing)
     bool smoothing = true;          // Least-Squares Meshes smoothing of the surface
+    // A symmetric outline's joints mirrored (rig/SkeletonSymmetry). Off for
+    // parts of recipes and documents made before it existed, so that they
+    // replay and rebuild to the skeleton they were made with.
+    bool mirrorJoints = true;
 
     friend bool operator==(const BuildOptions&, const BuildOptions&) = default;
 };

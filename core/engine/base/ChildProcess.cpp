@@ -11,6 +11,8 @@ extern char** environ;
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -198,6 +200,13 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
             close(3);
         const rlimit noCore{0, 0};
         setrlimit(RLIMIT_CORE, &noCore);
+        if (limits.seconds > 0) {
+            // The soft limit's SIGXCPU ends the child (it does not catch it);
+            // the hard one a second later kills it if it does.
+            const rlim_t cpu = static_cast<rlim_t>(std::ceil(std::min(limits.seconds, 1e7)));
+            const rlimit processor{cpu, cpu + 1};
+            setrlimit(RLIMIT_CPU, &processor);
+        }
         if (limitAddressSpace) {
             const rlimit space{limits.addressSpaceBytes, limits.addressSpaceBytes};
             setrlimit(RLIMIT_AS, &space);
@@ -226,9 +235,10 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
     bool ended = false;
     auto pause = std::chrono::microseconds(500);
     const auto deadline =
-        start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                    std::chrono::duration<double>(limits.seconds > 0 ? std::min(limits.seconds, 1e7)
-                                                                     : 0.0));
+        start +
+        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+            std::chrono::duration<double>(
+                limits.seconds > 0 ? kWallClockFactor * std::min(limits.seconds, 1e7) : 0.0));
     while (!ended) {
         const int result = waitInterrupted(pid, &status, WNOHANG);
         if (result == pid) {
@@ -270,6 +280,8 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
     } else if (ended && WIFEXITED(status)) {
         outcome.end = ChildOutcome::End::Exited;
         outcome.exitCode = WEXITSTATUS(status);
+    } else if (ended && WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU) {
+        outcome.end = ChildOutcome::End::TimedOut;  // its processor time ran out
     } else if (ended && WIFSIGNALED(status)) {
         outcome.end = ChildOutcome::End::Signalled;
         outcome.signal = WTERMSIG(status);

@@ -23,8 +23,14 @@
 
 namespace rigmesh {
 
+inline constexpr double kWallClockFactor = 4.0;
+
 struct ChildLimits {
-    double seconds = 60.0;              // wall clock; the child is killed after it
+    // The child's own processor time (RLIMIT_CPU, whole seconds), so that a
+    // machine busy with other work does not cut a reading short; a child
+    // that waits instead of computing is killed after kWallClockFactor times
+    // as long on the wall clock.
+    double seconds = 60.0;
     std::size_t addressSpaceBytes = 0;  // RLIMIT_AS; 0 = no limit
     std::size_t maxErrorBytes = 64 * 1024;
     // > 0: the child's descriptor 3 is an unnamed temporary file (the child
@@ -37,7 +43,7 @@ struct ChildOutcome {
     enum class End {
         Exited,         // exitCode is valid
         Signalled,      // crashed or was killed by a signal other than ours
-        TimedOut,       // still running after ChildLimits::seconds: killed
+        TimedOut,       // over ChildLimits::seconds of processor time, or of its wall-clock bound
         FailedToStart,  // fork or exec failed (errorText says why)
     };
     End end = End::FailedToStart;

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "base/Error.h"
+#include "io/ColladaXml.h"
 #include "io/FbxSentinels.h"
 
 namespace rigmesh {
@@ -28,12 +29,6 @@ void addParameter(tinyxml2::XMLElement& technique, const char* name, const char*
     parameter->SetText(value.c_str());
 }
 
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", value);
-    return text;
-}
-
 void addTips(tinyxml2::XMLElement& parent,
              const std::map<std::string, const ExportBoneNode*>& bones) {
     for (tinyxml2::XMLElement* node = parent.FirstChildElement("node"); node != nullptr;
@@ -52,10 +47,10 @@ void addTips(tinyxml2::XMLElement& parent,
         technique->SetAttribute("profile", "blender");
         addParameter(*technique, "connect", "bool", bone->second->connected ? "1" : "0");
         addParameter(*technique, "layer", "string", "0");
-        addParameter(*technique, "roll", "float", number(bone->second->roll()));
-        addParameter(*technique, "tip_x", "float", number(tip.x()));
-        addParameter(*technique, "tip_y", "float", number(tip.y()));
-        addParameter(*technique, "tip_z", "float", number(tip.z()));
+        addParameter(*technique, "roll", "float", colladaNumber(bone->second->roll()));
+        addParameter(*technique, "tip_x", "float", colladaNumber(tip.x()));
+        addParameter(*technique, "tip_y", "float", colladaNumber(tip.y()));
+        addParameter(*technique, "tip_z", "float", colladaNumber(tip.z()));
         if (!bone->second->renamedFrom.empty()) {  // our own profile: Blender ignores it
             tinyxml2::XMLElement* ours =
                 node->LastChildElement("extra")->InsertNewChildElement("technique");
@@ -68,20 +63,14 @@ void addTips(tinyxml2::XMLElement& parent,
 }  // namespace
 
 std::string withColladaBoneTips(const std::string& dae, const std::vector<ExportRig>& rigs) {
-    tinyxml2::XMLDocument document;
-    if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
-        document.RootElement() == nullptr)
-        throw Error("cannot export: the COLLADA exporter wrote invalid XML");
     const auto bones = bonesByName(rigs);
-    tinyxml2::XMLElement* scenes =
-        document.RootElement()->FirstChildElement("library_visual_scenes");
-    for (tinyxml2::XMLElement* scene = scenes != nullptr ? scenes->FirstChildElement("visual_scene")
-                                                         : nullptr;
-         scene != nullptr; scene = scene->NextSiblingElement("visual_scene"))
-        addTips(*scene, bones);
-    tinyxml2::XMLPrinter printer;
-    document.Print(&printer);
-    return std::string(printer.CStr(), static_cast<std::size_t>(printer.CStrSize() - 1));
+    return editColladaXml(dae, [&](tinyxml2::XMLElement& root) {
+        tinyxml2::XMLElement* scenes = root.FirstChildElement("library_visual_scenes");
+        for (tinyxml2::XMLElement* scene =
+                 scenes != nullptr ? scenes->FirstChildElement("visual_scene") : nullptr;
+             scene != nullptr; scene = scene->NextSiblingElement("visual_scene"))
+            addTips(*scene, bones);
+    });
 }
 
 namespace {

@@ -3,14 +3,14 @@
 #include <tinyxml2.h>
 
 #include <algorithm>
-#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <set>
 #include <sstream>
 #include <vector>
 
-#include "base/Error.h"
+#include "io/ColladaXml.h"
 
 namespace rigmesh {
 namespace {
@@ -176,12 +176,6 @@ std::pair<double, double> keyTimeRange(const XMLElement& animation) {
     return first <= last ? std::make_pair(first, last) : std::make_pair(0.0, 0.0);
 }
 
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", value);
-    return text;
-}
-
 // Every id inside an <animation> (its sources, arrays, samplers), and the
 // `#id` references to them there, prefixed with the animation's id.
 void prefixIds(XMLElement& element, const std::string& prefix,
@@ -239,8 +233,8 @@ void addAnimationClips(XMLElement& root) {
         XMLElement* clip = clips->InsertNewChildElement("animation_clip");
         clip->SetAttribute("id", (id + "-clip").c_str());
         clip->SetAttribute("name", (name.empty() ? id : name).c_str());
-        clip->SetAttribute("start", number(start).c_str());
-        clip->SetAttribute("end", number(end).c_str());
+        clip->SetAttribute("start", colladaNumber(start).c_str());
+        clip->SetAttribute("end", colladaNumber(end).c_str());
         clip->InsertNewChildElement("instance_animation")->SetAttribute("url", ("#" + id).c_str());
     }
     if (clips->NoChildren())
@@ -252,16 +246,11 @@ void addAnimationClips(XMLElement& root) {
 }  // namespace
 
 std::string withColladaSkinRootsAndClips(const std::string& dae) {
-    tinyxml2::XMLDocument document;
-    if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
-        document.RootElement() == nullptr)
-        throw Error("cannot export: the COLLADA exporter wrote invalid XML");
-    nameSkinSkeletons(*document.RootElement());
-    makeAnimationIdsUnique(*document.RootElement());
-    addAnimationClips(*document.RootElement());
-    tinyxml2::XMLPrinter printer;
-    document.Print(&printer);
-    return std::string(printer.CStr(), static_cast<std::size_t>(printer.CStrSize() - 1));
+    return editColladaXml(dae, [](XMLElement& root) {
+        nameSkinSkeletons(root);
+        makeAnimationIdsUnique(root);
+        addAnimationClips(root);
+    });
 }
 
 }  // namespace rigmesh

@@ -13,6 +13,45 @@
 namespace rigmesh {
 namespace {
 
+// A bone split to match its mirror image (rig/SkeletonSymmetry) hands the
+// cross sections beyond its new joint to the new bone (2.3: each bone owns
+// the sections between its joints). The new joint sits at the bone's
+// middle, so it takes the section halfway along the axis between the
+// bone's end sections.
+void recordSplit(PartSkeleton& rig, const std::vector<CylinderSections>& cylinders,
+                 const BoneSplit& split) {
+    const Skeleton& skeleton = rig.skeleton;
+    for (std::size_t c = 0; c < rig.cylinderBones.size(); ++c) {
+        std::vector<BoneId>& bones = rig.cylinderBones[c];
+        std::vector<int>& joints = rig.jointSections[c];
+        const auto at = std::find(bones.begin(), bones.end(), split.bone);
+        if (at == bones.end())
+            continue;
+        const std::size_t m = static_cast<std::size_t>(at - bones.begin());
+        const CylinderSections& cylinder = cylinders[c];
+        const int last = static_cast<int>(cylinder.sections.size()) - 1;
+        const int from = std::clamp(joints[m], 0, last), to = std::clamp(joints[m + 1], 0, last);
+        int middle = (from + to) / 2;
+        if (static_cast<int>(cylinder.axisPosition.size()) > to) {
+            const double halfway = 0.5 * (cylinder.axisPosition[from] + cylinder.axisPosition[to]);
+            for (int s = from; s <= to; ++s)
+                if (std::abs(cylinder.axisPosition[s] - halfway) <
+                    std::abs(cylinder.axisPosition[middle] - halfway))
+                    middle = s;
+        }
+        // The kept bone now runs from its head to the new joint: it keeps
+        // the half at its head's end of the range.
+        const Vec3 head = skeleton.joint(skeleton.bone(split.bone).head).position;
+        const Vec2 head2(head.x(), head.y());
+        const bool keptAtStart = (head2 - cylinder.sections[from].centre()).norm() <=
+                                 (head2 - cylinder.sections[to].centre()).norm();
+        bones.insert(bones.begin() + static_cast<std::ptrdiff_t>(keptAtStart ? m + 1 : m),
+                     split.added);
+        joints.insert(joints.begin() + static_cast<std::ptrdiff_t>(m + 1), middle);
+        return;
+    }
+}
+
 void addUnique(std::vector<BoneId>& bones, BoneId id) {
     if (std::find(bones.begin(), bones.end(), id) == bones.end())
         bones.push_back(id);
@@ -124,12 +163,16 @@ SketchToPartResult sketchToPart(const std::vector<Vec2>& stroke, const std::stri
         buildSkeleton(result.surface.decomposition, result.surface.cylinders, options.skeleton);
     // A symmetric outline gets mirrored joints (rig/SkeletonSymmetry): the
     // mirror is the outline's own, a plane containing the sketch plane's
-    // normal; joints own their cross sections (2.3), so none are added.
-    SymmetrizeOptions symmetry;
-    symmetry.search.containing = Vec3::UnitZ();
-    symmetry.matchJointCounts = false;
-    symmetrizeSkeleton(result.skeleton.skeleton, outlinePoints(result.surface.polygon.points),
-                       symmetry);
+    // normal. A limb with fewer joints than its image gets as many, its
+    // bones split and their cross sections shared out (recordSplit).
+    if (options.mirrorJoints) {
+        SymmetrizeOptions symmetry;
+        symmetry.search.containing = Vec3::UnitZ();
+        const SymmetrizeReport report = symmetrizeSkeleton(
+            result.skeleton.skeleton, outlinePoints(result.surface.polygon.points), symmetry);
+        for (const BoneSplit& split : report.splits)
+            recordSplit(result.skeleton, result.surface.cylinders, split);
+    }
     result.skeletonMilliseconds = millisecondsSince(start);
 
     Part& part = result.part;

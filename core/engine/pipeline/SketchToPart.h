@@ -14,6 +14,8 @@ struct SketchToPartOptions {
     SketchToSurfaceOptions surface;
     SkeletonOptions skeleton;
     BoneHeatOptions weights;
+    // A symmetric outline gets mirrored joints (rig/SkeletonSymmetry).
+    bool mirrorJoints = true;
 };
 
 struct SketchToPartResult {

@@ -120,21 +120,29 @@ class SurfaceDistance {
             for (int v : mesh.faces[f])
                 faces_[v].push_back(f);
     }
-    // The nearest vertex and the distance to the surface there.
-    std::pair<int, double> operator()(const Vec3& p) const {
-        const int v = grid_.nearest(p);
-        if (v < 0)
-            return {-1, std::numeric_limits<double>::infinity()};
-        double best = (mesh_.vertices[v] - p).norm();
-        for (int f : faces_[v]) {
+    struct Closest {
+        int vertex = -1;  // the nearest vertex
+        double distance = std::numeric_limits<double>::infinity();
+        Vec3 point = Vec3::Zero();  // the closest point of the faces around it
+    };
+    // The nearest vertex, and the closest point of the surface there.
+    Closest operator()(const Vec3& p) const {
+        Closest closest;
+        closest.vertex = grid_.nearest(p);
+        if (closest.vertex < 0)
+            return closest;
+        closest.point = mesh_.vertices[closest.vertex];
+        closest.distance = (closest.point - p).norm();
+        for (int f : faces_[closest.vertex]) {
             const auto& face = mesh_.faces[f];
-            best = std::min(best,
-                            (closestOnTriangle(p, mesh_.vertices[face[0]], mesh_.vertices[face[1]],
-                                               mesh_.vertices[face[2]]) -
-                             p)
-                                .norm());
+            const Vec3 q = closestOnTriangle(p, mesh_.vertices[face[0]], mesh_.vertices[face[1]],
+                                             mesh_.vertices[face[2]]);
+            if ((q - p).norm() < closest.distance) {
+                closest.distance = (q - p).norm();
+                closest.point = q;
+            }
         }
-        return {v, best};
+        return closest;
     }
 
   private:
@@ -170,7 +178,7 @@ double meanError(const TriMesh& mesh, const SurfaceDistance& distance,
                  const std::vector<int>& sample, const MirrorPlane& plane, double diagonal) {
     double sum = 0.0;
     for (int v : sample)
-        sum += distance(plane.reflect(mesh.vertices[v])).second;
+        sum += distance(plane.reflect(mesh.vertices[v])).distance;
     return sample.empty() || diagonal <= 0.0 ? 0.0 : sum / sample.size() / diagonal;
 }
 
@@ -182,9 +190,9 @@ Vec3 keepContaining(Vec3 normal, const std::optional<Vec3>& axis) {
     return normal;
 }
 
-// ICP on the reflection: each sampled vertex paired with the vertex nearest
-// its reflection; the new normal is the main direction of the pairs'
-// differences, the new point their midpoints' mean.
+// ICP on the reflection: each sampled vertex paired with the surface point
+// closest to its reflection; the new normal is the main direction of the
+// pairs' differences, the new point their midpoints' mean.
 MirrorPlane refine(const TriMesh& mesh, const SurfaceDistance& distance,
                    const std::vector<int>& sample, MirrorPlane plane,
                    const std::optional<Vec3>& containing) {
@@ -194,10 +202,13 @@ MirrorPlane refine(const TriMesh& mesh, const SurfaceDistance& distance,
         int count = 0;
         for (int v : sample) {
             const Vec3& p = mesh.vertices[v];
-            const int partner = distance(plane.reflect(p)).first;
-            if (partner < 0)
+            // The partner is the surface point closest to p's reflection:
+            // the nearest vertex would tilt the plane wherever the two
+            // sides are sampled differently.
+            const auto closest = distance(plane.reflect(p));
+            if (closest.vertex < 0)
                 continue;
-            const Vec3& q = mesh.vertices[partner];
+            const Vec3& q = closest.point;
             const Vec3 d = keepContaining(p - q, containing);
             scatter += d * d.transpose();
             midpoints += 0.5 * (p + q);
@@ -324,6 +335,13 @@ TriMesh outlinePoints(const std::vector<Vec2>& outline) {
     TriMesh points;
     for (const Vec2& p : outline)
         points.vertices.emplace_back(p.x(), p.y(), 0.0);
+    // Each segment as a degenerate triangle (a, b, b): distances are then to
+    // the closed polyline, not to its points, whose spacing differs from
+    // side to side.
+    const int n = static_cast<int>(outline.size());
+    if (n >= 3)
+        for (int i = 0; i < n; ++i)
+            points.faces.push_back({i, (i + 1) % n, (i + 1) % n});
     return points;
 }
 

@@ -72,8 +72,8 @@ std::map<JointId, JointId> mirrorJoints(const Skeleton& skeleton, const MirrorPl
 std::map<BoneId, BoneId> mirrorBones(const Skeleton& skeleton,
                                      const std::map<JointId, JointId>& joints);
 
-// The points of a sketch's outline (z = 0), as a mesh without faces to look
-// for the outline's own mirror in.
+// The points of a sketch's outline (z = 0), its segments as degenerate
+// triangles, as a mesh to look for the outline's own mirror in.
 TriMesh outlinePoints(const std::vector<Vec2>& outline);
 
 // A part's left-right symmetry: its plane, the joints' and bones' images.

@@ -127,7 +127,8 @@ std::vector<JointId> interiorOf(const Branch& branch, bool reversed) {
 }
 
 // Splits the longest bones of `branch` until it has `count` inner joints.
-int splitToCount(Skeleton& skeleton, const Branch& branch, int count) {
+int splitToCount(Skeleton& skeleton, const Branch& branch, int count,
+                 std::vector<BoneSplit>& splits) {
     std::vector<BoneId> bones;
     for (std::size_t k = 0; k + 1 < branch.size(); ++k)
         bones.push_back(boneBetween(skeleton, branch[k], branch[k + 1]));
@@ -137,12 +138,14 @@ int splitToCount(Skeleton& skeleton, const Branch& branch, int count) {
             return skeleton.boneLength(x) < skeleton.boneLength(y);
         });
         const Bone& bone = skeleton.bone(*longest);
+        const BoneId split = bone.id;
         const JointId middle = skeleton.splitBone(
-            bone.id,
-            0.5 * (skeleton.joint(bone.head).position + skeleton.joint(bone.tail).position));
+            split, 0.5 * (skeleton.joint(bone.head).position + skeleton.joint(bone.tail).position));
         for (BoneId b : skeleton.bonesAt(middle))
-            if (std::find(bones.begin(), bones.end(), b) == bones.end())
+            if (std::find(bones.begin(), bones.end(), b) == bones.end()) {
                 bones.push_back(b);
+                splits.push_back({split, b, middle});
+            }
         ++added;
     }
     return added;
@@ -176,9 +179,9 @@ SymmetrizeReport symmetrizeSkeleton(Skeleton& skeleton, const TriMesh& mesh,
             const int mine = static_cast<int>(branches[i].size()) - 2;
             const int theirs = static_cast<int>(branches[j].size()) - 2;
             if (mine < theirs)
-                report.jointsAdded += splitToCount(skeleton, branches[i], theirs);
+                report.jointsAdded += splitToCount(skeleton, branches[i], theirs, report.splits);
             else if (theirs < mine)
-                report.jointsAdded += splitToCount(skeleton, branches[j], mine);
+                report.jointsAdded += splitToCount(skeleton, branches[j], mine, report.splits);
         }
         if (report.jointsAdded > 0)
             branches = branchesOf(skeleton, nodeSet);  // new joints are never nodes

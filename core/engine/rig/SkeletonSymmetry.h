@@ -11,6 +11,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "mesh/TriMesh.h"
 #include "rig/MirrorSymmetry.h"
@@ -20,10 +21,17 @@ namespace rigmesh {
 
 struct SymmetrizeOptions {
     MirrorSearch search;
-    // Split bones of a branch whose image has more joints (a rig made from
-    // a curve skeleton); off, such branches keep their joints where they are
-    // (a sketch's joints own its cross sections, 2.3).
+    // Split bones of a branch whose image has more joints; off, such
+    // branches keep their joints where they are (and stay unmirrored).
     bool matchJointCounts = true;
+};
+
+// A bone split to match its branch's image (Skeleton::splitBone): `bone`
+// now ends at `middle`, `added` runs from there to the old tail.
+struct BoneSplit {
+    BoneId bone;
+    BoneId added;
+    JointId middle;
 };
 
 struct SymmetrizeReport {
@@ -31,6 +39,7 @@ struct SymmetrizeReport {
     int pairedJoints = 0;             // joints moved with an image (each pair counts 2)
     int jointsOnPlane = 0;            // joints their own image, moved onto the plane
     int jointsAdded = 0;              // by splits matching a branch to its image
+    std::vector<BoneSplit> splits;    // those splits, in order
 };
 
 SymmetrizeReport symmetrizeSkeleton(Skeleton& skeleton, const TriMesh& mesh,

@@ -1,6 +1,7 @@
-// Recipe files: JSON text, {"format": "rigmesh-recipe", "version": 2,
+// Recipe files: JSON text, {"format": "rigmesh-recipe", "version": 3,
 // "steps": [...]} (see RecipeRunner.h for the steps). Version 2 (per-bone
-// pose rotations) reads version 1 recipes too.
+// pose rotations) reads version 1 recipes too; version 3 mirrors the joints
+// of symmetric sketches, which older recipes replay without.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -14,7 +15,7 @@ namespace rigmesh::model {
 
 namespace RecipeFile {
 inline constexpr const char* kFormatName = "rigmesh-recipe";
-inline constexpr int kFormatVersion = 2;
+inline constexpr int kFormatVersion = 3;
 static_assert(recipe::StepOptions{}.formatVersion == kFormatVersion,
               "steps run as the current version by default");
 }  // namespace RecipeFile

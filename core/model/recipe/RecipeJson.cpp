@@ -43,7 +43,9 @@ json placementJson(const Placement& placement) {
 }
 
 json optionsJson(const BuildOptions& options) {
-    return {{"edgeLength", options.targetEdgeLength}, {"smoothing", options.smoothing}};
+    return {{"edgeLength", options.targetEdgeLength},
+            {"smoothing", options.smoothing},
+            {"mirrorJoints", options.mirrorJoints}};
 }
 
 json pointsJson(const std::vector<Vec2>& points) {
@@ -107,7 +109,7 @@ Placement readPlacement(const json& value, const Placement& base) {
 }
 
 BuildOptions readOptions(const json& value, const BuildOptions& base) {
-    checkFields(value, {"edgeLength", "smoothing"}, "\"options\"");
+    checkFields(value, {"edgeLength", "smoothing", "mirrorJoints"}, "\"options\"");
     BuildOptions out = base;
     if (value.contains("edgeLength")) {
         out.targetEdgeLength = readNumber(value["edgeLength"], "\"edgeLength\"");
@@ -116,6 +118,8 @@ BuildOptions readOptions(const json& value, const BuildOptions& base) {
     }
     if (value.contains("smoothing"))
         out.smoothing = readBool(value["smoothing"], "\"smoothing\"");
+    if (value.contains("mirrorJoints"))
+        out.mirrorJoints = readBool(value["mirrorJoints"], "\"mirrorJoints\"");
     return out;
 }
 

@@ -1,7 +1,7 @@
 // Recipes: a document's making as a list of steps, replayed headless with the
 // very command classes of the studio's undo stack.
 //
-//   {"format": "rigmesh-recipe", "version": 2,
+//   {"format": "rigmesh-recipe", "version": 3,
 //    "steps": [ {"command": "...", ...}, ... ]}
 //
 // Steps ("part" is a part's name, which must be unique, or its index from 0;
@@ -11,7 +11,9 @@
 //                 or "points": [[x, y], ...]; optional "name" (default: the
 //                 sketch's name, or "Part <id>"), "placement":
 //                 {"translation": [x, y, z], "rotation": [w, x, y, z]},
-//                 "options": {"edgeLength": L (0 = automatic), "smoothing": bool}
+//                 "options": {"edgeLength": L (0 = automatic), "smoothing": bool,
+//                 "mirrorJoints": bool (default true; false in recipes of
+//                 version 1 and 2, made before it existed)}
 //   delete        "part"
 //   rename        "part", "name"
 //   move          "part", "placement" (the fields given replace the current ones)

@@ -61,8 +61,12 @@ StepCommand sketch(const Context& c) {
     }
     if (c.has("name"))
         name = QString::fromStdString(readText(c.step["name"], "\"name\""));
+    // Recipes of version 1 and 2 were made before symmetric outlines got
+    // mirrored joints: they replay to the skeleton they were made with.
+    BuildOptions defaults;
+    defaults.mirrorJoints = c.options.formatVersion >= 3;
     const BuildOptions options =
-        c.has("options") ? readOptions(c.step["options"], {}) : BuildOptions{};
+        c.has("options") ? readOptions(c.step["options"], defaults) : defaults;
     const Placement placement =
         c.has("placement") ? readPlacement(c.step["placement"], {}) : Placement{};
     auto command =

@@ -26,7 +26,7 @@ struct StepOptions {
     bool compareGlobalReskin = false;  // merges also time the global re-skin
     // The recipe's format version (RecipeFile::kFormatVersion by default): "pose" rotations of
     // version 1 turn every bone leaving their joint and are converted.
-    int formatVersion = 2;
+    int formatVersion = 3;
 };
 
 // The command for `step` (an object whose "command" is `name`) on the

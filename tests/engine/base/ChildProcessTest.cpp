@@ -55,6 +55,18 @@ TEST(ChildProcess, HangIsKilledAtTheTimeLimit) {
     EXPECT_LT(outcome.seconds, 10.0);
 }
 
+// The limit is the child's processor time: a busy loop is stopped once it
+// has computed that long, however busy the machine is, and well before the
+// wall-clock bound a waiting child gets.
+TEST(ChildProcess, BusyLoopIsStoppedByItsProcessorTime) {
+    ChildLimits limits;
+    limits.seconds = 1.0;
+    const ChildOutcome outcome = shell("while :; do :; done", limits);
+    EXPECT_EQ(outcome.end, ChildOutcome::End::TimedOut);
+    EXPECT_GE(outcome.seconds, 1.0);
+    EXPECT_LT(outcome.seconds, kWallClockFactor * limits.seconds + 1.0);
+}
+
 TEST(ChildProcess, MissingProgramFailsToStartWithTheReason) {
     const ChildOutcome outcome = runChildProcess("/nonexistent/rigmesh", {}, {});
     ASSERT_EQ(outcome.end, ChildOutcome::End::FailedToStart);

@@ -33,7 +33,7 @@ for f in "$sketches_dir"/*.json; do
     # Mesh, bones and our weights; and the same part as a document (it has
     # the vertex origins the leak figure needs).
     "$rigmesh" build "$f" -o "$out/$name.obj" --rig "$out/$name.rig.json" > "$out/$name.build.log" 2>&1
-    printf '{"format":"rigmesh-recipe","version":2,"steps":[{"command":"sketch","stroke":"%s","name":"%s"}]}\n' \
+    printf '{"format":"rigmesh-recipe","version":3,"steps":[{"command":"sketch","stroke":"%s","name":"%s"}]}\n' \
         "$f" "$name" > "$out/$name.recipe.json"
     "$rigmesh" run "$out/$name.recipe.json" -o "$out/$name.rigmesh" > "$out/$name.run.log" 2>&1
     blender -b --factory-startup --python "$here/blender_autoweights.py" -- \
