@@ -23,6 +23,10 @@
         <source>%1 bones</source>
         <translation>%1 huesos</translation>
     </message>
+    <message>
+        <source>Connect Bone %1 of %2</source>
+        <translation>Conectar el hueso %1 de %2</translation>
+    </message>
 </context>
 <context>
     <name>ClipListCommand</name>
@@ -552,6 +556,18 @@
     <message>
         <source>filled %1 small holes with %2 new vertices</source>
         <translation>se rellenaron %1 agujeros pequeños con %2 vértices nuevos</translation>
+    </message>
+    <message>
+        <source>Bone %1 is not connected to its parent; connect it first (Edit &gt; Connect Bone).</source>
+        <translation>El hueso %1 no está conectado a su padre; conéctelo primero (Editar &gt; Conectar hueso).</translation>
+    </message>
+    <message>
+        <source>Bone %1 is already connected to its parent.</source>
+        <translation>El hueso %1 ya está conectado a su padre.</translation>
+    </message>
+    <message>
+        <source>Bone %1 starts at the skeleton&apos;s root: it has no parent to connect to.</source>
+        <translation>El hueso %1 empieza en la raíz del esqueleto: no tiene padre al que conectarse.</translation>
     </message>
     <message>
         <source>The surface would intersect itself (%1 crossing face pairs) near (%2, %3): the outline is too thin or turns too sharply there. Widen it there or use a smaller edge length.</source>
@@ -1849,6 +1865,14 @@
         <source>Give the selected part without a skeleton (an imported mesh) a skeleton from its shape and skin weights</source>
         <translation>Dar a la pieza seleccionada sin esqueleto (una malla importada) un esqueleto a partir de su forma y pesos de piel</translation>
     </message>
+    <message>
+        <source>Co&amp;nnect Bone</source>
+        <translation>Co&amp;nectar hueso</translation>
+    </message>
+    <message>
+        <source>Move the selected bone&apos;s head onto its parent&apos;s tail, as Blender&apos;s Connected does (cut and merge need connected bones)</source>
+        <translation>Mover la cabeza del hueso seleccionado a la cola de su padre, como «Conectado» de Blender (cortar y unir necesitan huesos conectados)</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::MergeTool</name>
@@ -2404,6 +2428,18 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
         <source>Not Now</source>
         <translation>Ahora no</translation>
     </message>
+    <message>
+        <source>Select the joint of the bone to connect first</source>
+        <translation>Seleccione primero la articulación del hueso que quiere conectar</translation>
+    </message>
+    <message>
+        <source>The selected joint ends no bone</source>
+        <translation>En la articulación seleccionada no termina ningún hueso</translation>
+    </message>
+    <message>
+        <source>Bone not connected: %1</source>
+        <translation>Hueso no conectado: %1</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::SelectTool</name>
@@ -2776,6 +2812,10 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
     <message>
         <source>Point at a bone: K splits it there, Shift+K deletes it</source>
         <translation>Apunte a un hueso: K lo divide ahí, Mayús+K lo elimina</translation>
+    </message>
+    <message>
+        <source>Connect Bone</source>
+        <translation>Conectar hueso</translation>
     </message>
 </context>
 <context>
