@@ -12,6 +12,7 @@ packages=(
     libcgal-dev libgmp-dev libmpfr-dev libboost-dev
     libeigen3-dev libsuitesparse-dev
     nlohmann-json3-dev libtinyxml2-dev libassimp-dev
+    assimp-testmodels assimp-utils
     qt6-base-dev libqt6opengl6-dev libgl-dev libgl1-mesa-dri libqt6svg6
     qt6-tools-dev qt6-l10n-tools qt6-translations-l10n
     xvfb xauth

@@ -23,6 +23,10 @@
         <source>%1 bones</source>
         <translation>%1 Knochen</translation>
     </message>
+    <message>
+        <source>Connect Bone %1 of %2</source>
+        <translation>Knochen %1 von %2 verbinden</translation>
+    </message>
 </context>
 <context>
     <name>ClipListCommand</name>
@@ -584,6 +588,18 @@
     <message>
         <source>%1 pieces of the proxy lie apart from the body and follow its nearest bones</source>
         <translation>%1 Stücke der Hülle liegen abseits des Körpers und folgen seinen nächsten Knochen</translation>
+    </message>
+    <message>
+        <source>Bone %1 is not connected to its parent; connect it first (Edit &gt; Connect Bone).</source>
+        <translation>Knochen %1 ist nicht mit seinem Elternknochen verbunden; verbinden Sie ihn zuerst (Bearbeiten &gt; Knochen verbinden).</translation>
+    </message>
+    <message>
+        <source>Bone %1 is already connected to its parent.</source>
+        <translation>Knochen %1 ist bereits mit seinem Elternknochen verbunden.</translation>
+    </message>
+    <message>
+        <source>Bone %1 starts at the skeleton&apos;s root: it has no parent to connect to.</source>
+        <translation>Knochen %1 beginnt an der Wurzel des Skeletts: Er hat keinen Elternknochen, mit dem er verbunden werden könnte.</translation>
     </message>
     <message>
         <source>The surface would intersect itself (%1 crossing face pairs) near (%2, %3): the outline is too thin or turns too sharply there. Widen it there or use a smaller edge length.</source>
@@ -1891,6 +1907,14 @@
         <source>Give the selected part without a skeleton (an imported mesh) a skeleton from its shape and skin weights</source>
         <translation>Dem ausgewählten Teil ohne Skelett (einem importierten Netz) ein Skelett aus seiner Form und Skin-Gewichte geben</translation>
     </message>
+    <message>
+        <source>Co&amp;nnect Bone</source>
+        <translation>Knochen &amp;verbinden</translation>
+    </message>
+    <message>
+        <source>Move the selected bone&apos;s head onto its parent&apos;s tail, as Blender&apos;s Connected does (cut and merge need connected bones)</source>
+        <translation>Den Kopf des gewählten Knochens auf das Ende seines Elternknochens setzen, wie Blenders „Verbunden“ (Schneiden und Zusammenfügen brauchen verbundene Knochen)</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::MergeTool</name>
@@ -2446,6 +2470,18 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
         <source>Auto-Rig gives the imported meshes one skeleton from their shape and skin weights, so the figure can be posed, animated and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
         <translation>Automatisches Riggen gibt den importierten Netzen ein Skelett aus ihrer Form und Skin-Gewichte, sodass sich die Figur wie ein skizziertes Teil posieren, animieren und bemalen lässt. Sie können das auch später mit Werkzeuge &gt; Teil automatisch riggen tun.</translation>
     </message>
+    <message>
+        <source>Select the joint of the bone to connect first</source>
+        <translation>Wählen Sie zuerst das Gelenk des zu verbindenden Knochens</translation>
+    </message>
+    <message>
+        <source>The selected joint ends no bone</source>
+        <translation>Am gewählten Gelenk endet kein Knochen</translation>
+    </message>
+    <message>
+        <source>Bone not connected: %1</source>
+        <translation>Knochen nicht verbunden: %1</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::SelectTool</name>
@@ -2818,6 +2854,10 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
     <message>
         <source>Point at a bone: K splits it there, Shift+K deletes it</source>
         <translation>Zeigen Sie auf einen Knochen: K teilt ihn dort, Umschalt+K löscht ihn</translation>
+    </message>
+    <message>
+        <source>Connect Bone</source>
+        <translation>Knochen verbinden</translation>
     </message>
 </context>
 <context>

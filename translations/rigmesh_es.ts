@@ -23,6 +23,10 @@
         <source>%1 bones</source>
         <translation>%1 huesos</translation>
     </message>
+    <message>
+        <source>Connect Bone %1 of %2</source>
+        <translation>Conectar el hueso %1 de %2</translation>
+    </message>
 </context>
 <context>
     <name>ClipListCommand</name>
@@ -584,6 +588,18 @@
     <message>
         <source>%1 pieces of the proxy lie apart from the body and follow its nearest bones</source>
         <translation>%1 trozos de la envoltura quedan apartados del cuerpo y siguen sus huesos más cercanos</translation>
+    </message>
+    <message>
+        <source>Bone %1 is not connected to its parent; connect it first (Edit &gt; Connect Bone).</source>
+        <translation>El hueso %1 no está conectado a su padre; conéctelo primero (Editar &gt; Conectar hueso).</translation>
+    </message>
+    <message>
+        <source>Bone %1 is already connected to its parent.</source>
+        <translation>El hueso %1 ya está conectado a su padre.</translation>
+    </message>
+    <message>
+        <source>Bone %1 starts at the skeleton&apos;s root: it has no parent to connect to.</source>
+        <translation>El hueso %1 empieza en la raíz del esqueleto: no tiene padre al que conectarse.</translation>
     </message>
     <message>
         <source>The surface would intersect itself (%1 crossing face pairs) near (%2, %3): the outline is too thin or turns too sharply there. Widen it there or use a smaller edge length.</source>
@@ -1891,6 +1907,14 @@
         <source>Give the selected part without a skeleton (an imported mesh) a skeleton from its shape and skin weights</source>
         <translation>Dar a la pieza seleccionada sin esqueleto (una malla importada) un esqueleto a partir de su forma y pesos de piel</translation>
     </message>
+    <message>
+        <source>Co&amp;nnect Bone</source>
+        <translation>Co&amp;nectar hueso</translation>
+    </message>
+    <message>
+        <source>Move the selected bone&apos;s head onto its parent&apos;s tail, as Blender&apos;s Connected does (cut and merge need connected bones)</source>
+        <translation>Mover la cabeza del hueso seleccionado a la cola de su padre, como «Conectado» de Blender (cortar y unir necesitan huesos conectados)</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::MergeTool</name>
@@ -2446,6 +2470,18 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
         <source>Auto-Rig gives the imported meshes one skeleton from their shape and skin weights, so the figure can be posed, animated and painted like a sketched part. You can also do it later with Tools &gt; Auto-Rig Part.</source>
         <translation>El rig automático da a las mallas importadas un esqueleto a partir de su forma y pesos de piel, para que la figura se pueda posar, animar y pintar como una pieza dibujada. También puedes hacerlo más tarde con Herramientas &gt; Rig automático de la pieza.</translation>
     </message>
+    <message>
+        <source>Select the joint of the bone to connect first</source>
+        <translation>Seleccione primero la articulación del hueso que quiere conectar</translation>
+    </message>
+    <message>
+        <source>The selected joint ends no bone</source>
+        <translation>En la articulación seleccionada no termina ningún hueso</translation>
+    </message>
+    <message>
+        <source>Bone not connected: %1</source>
+        <translation>Hueso no conectado: %1</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::SelectTool</name>
@@ -2818,6 +2854,10 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
     <message>
         <source>Point at a bone: K splits it there, Shift+K deletes it</source>
         <translation>Apunte a un hueso: K lo divide ahí, Mayús+K lo elimina</translation>
+    </message>
+    <message>
+        <source>Connect Bone</source>
+        <translation>Conectar hueso</translation>
     </message>
 </context>
 <context>

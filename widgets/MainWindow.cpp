@@ -199,6 +199,9 @@ void MainWindow::createActions() {
     edit->addSeparator();
     add(edit, tr("&Delete Part"), QKeySequence::Delete, &MainWindow::deleteSelection,
         QStyle::SP_TrashIcon);
+    add(edit, tr("Co&nnect Bone"), QKeySequence(), [this] { rig_->connectSelectedBone(); })
+        ->setToolTip(tr("Move the selected bone's head onto its parent's tail, as Blender's "
+                        "Connected does (cut and merge need connected bones)"));
     pose_->addMirrorAction(edit);
     edit->addSeparator();
     add(edit, tr("&Preferences..."), QKeySequence::Preferences, &MainWindow::openPreferences)

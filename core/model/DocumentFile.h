@@ -1,5 +1,5 @@
 // The native document file (.rigmesh): CBOR (RFC 8949) of one map
-//   {"format": "rigmesh-studio-document", "version": 4, "nextPartId": n,
+//   {"format": "rigmesh-studio-document", "version": 5, "nextPartId": n,
 //    "timeline": {startFrame, endFrame, framesPerSecond, currentFrame},
 //    "parts": [ {id, name, visible, placement, stroke, options, part: {...},
 //                pose: {rotations: [[joint, w, x, y, z], ...], rootTranslation},
@@ -11,7 +11,8 @@
 //                otherClips: [clip, ...]} ]}
 // where part holds everything of the engine Part: name, outline, mesh
 // (vertices, faces), origins, mirror, skeleton (joints with ids, bones with
-// ids, root), skin weights and the known closest bones (bones by id since
+// ids, root, and since version 5 the attachments of disconnected bones'
+// chains: {joints, bones}), skin weights and the known closest bones (bones by id since
 // version 2; version 1 named them by position in the bone list, and reading
 // converts them: part/PartJson.h). pose and pinned are
 // optional when reading (a part without them loads in its rest pose, unpinned);
@@ -35,7 +36,8 @@
 // array sizes) before building the document: a corrupt, truncated or newer
 // file throws DocumentFileError with a message for the user and opens
 // nothing. Every number must be finite; skin weights non-negative, summing to
-// 1 per weighted vertex (every vertex of a rigged part); skeletons trees;
+// 1 per weighted vertex (every vertex of a rigged part); skeletons trees of
+// chains (Skeleton::validate);
 // placement rotations unit; edge lengths 0 or within checkBuildOptions()'s
 // bounds. Sizes: every list is made from its own bytes (nesting is capped at
 // 32 levels), and what is derived from single numbers is bounded (key times
@@ -65,8 +67,12 @@ inline constexpr const char* kFormatName = "rigmesh-studio-document";
 // to older files);
 // 4: skin weights, failed bones and known closest bones keyed by bone id
 // (older files name them by position in the bone list; part/PartJson.h
-// converts them on reading).
-inline constexpr int kFormatVersion = 4;
+// converts them on reading);
+// 5: imported rigs kept whole: disconnected bones (skeleton "attachments"),
+// the bones' rest frames ("boneFrames") and a shared skeleton's meshes
+// ("meshPieces"), each written only when present, so older files read as
+// they are (DocumentMigration.h).
+inline constexpr int kFormatVersion = 5;
 inline constexpr const char* kSuffix = "rigmesh";
 
 QByteArray toBytes(const DocumentContents& contents);

@@ -8,6 +8,11 @@
 //     "otherClips" []. The rate is the first part's clip rate (24 without
 //     one, kept within the timeline's limits), the range runs from frame 0
 //     to the last key's frame (at least 48), the current frame is 0.
+//   4 -> 5 (imported rigs kept whole): nothing to add. Version 5 may hold
+//     skeletons with disconnected bones, bone frames and mesh pieces, all
+//     optional keys that an older file lacks: its skeletons are connected
+//     trees, which read unchanged. The number says an older studio cannot
+//     read what a version 5 file may hold.
 #pragma once
 
 #include <cstdint>

@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <set>
 
 #include "base/ChildProcess.h"
 #include "base/Error.h"
 #include "model/DocumentFile.h"
+#include "model/PartClips.h"
 
 namespace rigmesh::model {
 namespace {
@@ -86,8 +88,20 @@ std::vector<PartNode> partNodesFromScene(ImportedScene scene, const QString& pat
         if (node.name.isEmpty() || (node.name.startsWith(u'<') && node.name.endsWith(u'>')))
             node.name = QFileInfo(path).completeBaseName();
         node.pose = restPoseOf(node);
-        if (scene.parts[i].clip)
-            node.clip = *scene.parts[i].clip;
+        // Every animation a named clip: the file's first one active.
+        std::set<std::string> names;
+        std::vector<Clip> others;
+        for (Clip& clip : scene.parts[i].clips) {
+            // An unnamed clip stays unnamed ("Action") unless that is taken.
+            const std::string name = usableClipName(clip.name, names);
+            clip.name = clip.name.empty() && name == kDefaultClipName ? std::string() : name;
+            names.insert(name);
+            if (names.size() == 1)
+                node.clip = std::move(clip);
+            else
+                others.push_back(std::move(clip));
+        }
+        node.otherClips = sortedByName(std::move(others));
         nodes.push_back(std::move(node));
     }
     return nodes;

@@ -3,6 +3,8 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 #include <set>
 
 #include "base/Error.h"
@@ -52,6 +54,47 @@ void checkClipNamesUnique(const rigmesh::Clip& active, const std::vector<rigmesh
     for (const rigmesh::Clip& clip : others)
         if (!names.insert(clipName(clip)).second)
             throw Error("The part has two clips named \"" + clipName(clip) + "\".");
+}
+
+namespace {
+
+// `text` cut to at most `bytes` bytes without splitting a UTF-8 character.
+std::string utf8Prefix(const std::string& text, std::size_t bytes) {
+    if (text.size() <= bytes)
+        return text;
+    std::size_t end = bytes;
+    while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80)
+        --end;
+    return text.substr(0, end);
+}
+
+std::string trimmed(std::string text) {
+    while (!text.empty() && text.back() == ' ')
+        text.pop_back();
+    const std::size_t first = text.find_first_not_of(' ');
+    return first == std::string::npos ? std::string() : text.substr(first);
+}
+
+}  // namespace
+
+std::string usableClipName(const std::string& wanted, const std::set<std::string>& taken) {
+    std::string name = wanted;
+    for (char& c : name)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+            c = ' ';
+    name = trimmed(utf8Prefix(trimmed(name), kMaxClipNameLength));
+    if (name.empty())
+        name = kDefaultClipName;
+    if (!taken.contains(name))
+        return name;
+    for (int n = 1;; ++n) {
+        char suffix[16];
+        std::snprintf(suffix, sizeof suffix, ".%03d", n);
+        const std::string candidate =
+            trimmed(utf8Prefix(name, kMaxClipNameLength - std::strlen(suffix))) + suffix;
+        if (!taken.contains(candidate))
+            return candidate;
+    }
 }
 
 std::vector<rigmesh::Clip> sortedByName(std::vector<rigmesh::Clip> others) {

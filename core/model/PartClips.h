@@ -5,6 +5,7 @@
 // (part, name) in commands and recipes.
 #pragma once
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,12 @@ const rigmesh::Clip* findClip(const PartNode& node, const std::string& name);
 void checkClipName(const std::string& name);
 // Throws rigmesh::Error when two of the clips share a name.
 void checkClipNamesUnique(const rigmesh::Clip& active, const std::vector<rigmesh::Clip>& others);
+// A name checkClipName takes, made from `wanted` (an imported animation's):
+// control characters become spaces, surrounding spaces go, at most
+// kMaxClipNameLength bytes (whole UTF-8 characters), kDefaultClipName when
+// nothing is left; then unique among `taken` with Blender's ".001", ".002",
+// ... suffixes.
+std::string usableClipName(const std::string& wanted, const std::set<std::string>& taken);
 // `others` sorted by name (the order PartNode::otherClips keeps).
 std::vector<rigmesh::Clip> sortedByName(std::vector<rigmesh::Clip> others);
 

@@ -60,6 +60,10 @@ void addJointSubtree(SceneNode& parent, PartId part, const Skeleton& skeleton, J
         parent.childCount(), std::make_unique<SceneNode>(SceneNode::Kind::Joint, part, joint));
     for (BoneId bone : skeleton.childrenOf(joint))
         addJointSubtree(*node, part, skeleton, skeleton.bone(bone).tail, placed);
+    // Chains hanging from the bone that ends here (disconnected bones).
+    for (const auto& [chain, bone] : skeleton.attachments())
+        if (skeleton.hasBone(bone) && skeleton.bone(bone).tail == joint)
+            addJointSubtree(*node, part, skeleton, chain, placed);
 }
 
 }  // namespace

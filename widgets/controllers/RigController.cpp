@@ -10,7 +10,9 @@
 #include "jobs/JobRunner.h"
 #include "model/Document.h"
 #include "model/ErrorText.h"
+#include "model/commands/BoneEditCommand.h"
 #include "model/commands/RigPartCommand.h"
+#include "part/BoneConnection.h"
 
 namespace rigmesh::widgets {
 
@@ -31,6 +33,33 @@ void RigController::rigSelectedPart() {
         return;
     }
     rigParts(document, {node.id});
+}
+
+void RigController::connectSelectedBone() {
+    model::Document* document = host_.currentDocument();
+    const model::Selection selection = document ? document->selection() : model::Selection{};
+    if (!document || !document->contains(selection.part) || selection.joint == kNoJoint) {
+        host_.showStatus(tr("Select the joint of the bone to connect first"), 4000);
+        return;
+    }
+    const Skeleton& skeleton = document->part(selection.part).part->skeleton;
+    // The joint stands for the bone ending at it, or (a chain's root) for
+    // the first bone leaving it; that bone's head is what moves.
+    std::optional<BoneId> bone = boneForJoint(skeleton, selection.joint);
+    if (skeleton.isAttached(selection.joint) && !skeleton.childrenOf(selection.joint).empty())
+        bone = skeleton.childrenOf(selection.joint).front();
+    if (!bone) {
+        host_.showStatus(tr("The selected joint ends no bone"), 4000);
+        return;
+    }
+    try {
+        auto command = model::BoneEditCommand::connect(*document, selection.part, *bone);
+        const QString text = command->text();
+        document->undoStack()->push(command.release());
+        host_.showStatus(text, 6000);
+    } catch (const Error& error) {
+        host_.showStatus(tr("Bone not connected: %1").arg(model::errorText(error)), 8000);
+    }
 }
 
 void RigController::rigParts(model::Document* document, std::vector<model::PartId> ids) {

@@ -2,7 +2,9 @@
 // background job with a filling progress bar and Cancel that stops the
 // skeleton's flow at its next step; the result arrives as one undoable
 // command (model/commands/RigPartCommand). After an import of meshes without
-// a rig the studio offers to rig them at once, as one figure.
+// a rig the studio offers to rig them at once, as one figure. Edit > Connect
+// Bone connects the selected joint's disconnected bone to its parent
+// (part/BoneConnection.h), one undoable BoneEditCommand.
 #pragma once
 
 #include <QObject>
@@ -25,6 +27,8 @@ class RigController : public QObject {
 
     // Tools > Auto-Rig Part on the selected part.
     void rigSelectedPart();
+    // Edit > Connect Bone on the selected joint's bone.
+    void connectSelectedBone();
     // Rigs the parts together as one figure (an import's body, eyes and
     // clothes): one background job and one undo step.
     void rigParts(model::Document* document, std::vector<model::PartId> ids);

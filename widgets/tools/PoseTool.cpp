@@ -23,10 +23,11 @@ constexpr double kRingRadiusPixels = 44.0;
 constexpr double kRingBandPixels = 6.0;
 
 // The joint a bone ending at `joint` turns about: its parent, or the root
-// itself (whose rotation turns the whole part).
+// itself (whose rotation turns the whole part), or an attached chain's root
+// itself (its rotation turns its chain, pose/Pose.h).
 JointId turnPivot(const Skeleton& skeleton, JointId joint) {
     const JointId parent = poseParent(skeleton, joint);
-    return parent == kNoJoint ? joint : parent;
+    return parent == kNoJoint || skeleton.isAttached(joint) ? joint : parent;
 }
 
 }  // namespace
@@ -72,6 +73,8 @@ void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
         // FK: the bone ending at the joint turns about its head.
         drag.forward = true;
         drag.pivot = poseParent(node.part->skeleton, hit->joint);
+        if (node.part->skeleton.isAttached(hit->joint))
+            drag.pivot = hit->joint;  // a chain's root turns its chain about itself
         if (drag.pivot == kNoJoint) {
             emit status(
                 tr("The root joint ends no bone: drag its ring to turn the whole part, or drag "
@@ -243,11 +246,13 @@ void PoseTool::rotateWithFk(Viewport& viewport, const QPointF& pixel) {
     Pose pose = drag_->startPose;
     const Skeleton& skeleton = node.part->skeleton;
     // The parent bone's world rotation: the transform of the bone ending at
-    // the pivot, unchanged by the turn (it moves only the bone's subtree).
+    // the joint's parent in the pose (the pivot, or for an attached chain's
+    // root the bone it hangs from), unchanged by the turn (it moves only the
+    // bone's subtree); none for the root.
+    const JointId frame = poseParent(skeleton, drag_->joint);
     const Eigen::Quaterniond parentWorld =
-        drag_->pivot == drag_->joint
-            ? Eigen::Quaterniond::Identity()
-            : posed.jointTransforms[skeleton.indexOfJoint(drag_->pivot)].rotation;
+        frame == kNoJoint ? Eigen::Quaterniond::Identity()
+                          : posed.jointTransforms[skeleton.indexOfJoint(frame)].rotation;
     pose.setRotation(drag_->joint, (parentWorld.conjugate() * partTurn * parentWorld *
                                     drag_->startPose.rotation(drag_->joint))
                                        .normalized());

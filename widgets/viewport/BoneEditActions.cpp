@@ -83,18 +83,28 @@ bool deleteBoneUnder(Viewport& viewport, const QPointF& pixel) {
 }
 
 bool showBoneMenu(Viewport& viewport, const QPointF& pixel, const QPoint& globalPosition) {
-    if (!boneUnder(viewport, pixel))
+    const std::optional<BoneUnder> under = boneUnder(viewport, pixel);
+    if (!under)
         return false;
     QMenu menu(&viewport);
     QAction* split = menu.addAction(Viewport::tr("Split Bone Here"));
     split->setShortcut(QKeySequence(Qt::Key_K));
     QAction* remove = menu.addAction(Viewport::tr("Delete Bone"));
     remove->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_K));
+    // A disconnected bone (Skeleton.h) can be connected to its parent.
+    const Skeleton& skeleton = viewport.document()->part(under->part).part->skeleton;
+    QAction* connectBone = nullptr;
+    if (skeleton.isAttached(skeleton.bone(under->bone).head))
+        connectBone = menu.addAction(Viewport::tr("Connect Bone"));
     QAction* chosen = menu.exec(globalPosition);
     if (chosen == split)
         splitBoneUnder(viewport, pixel);
     else if (chosen == remove)
         deleteBoneUnder(viewport, pixel);
+    else if (chosen != nullptr && chosen == connectBone)
+        pushEdit(viewport, [&](model::Document& document) {
+            return model::BoneEditCommand::connect(document, under->part, under->bone);
+        });
     return true;
 }
 

@@ -373,6 +373,21 @@ RenderScene Viewport::gatherScene() const {
             scene.lines.add(toQt(node.placement.toWorld(posedJoint(bone.head))), colour);
             scene.lines.add(toQt(node.placement.toWorld(posedJoint(bone.tail))), colour);
         }
+        // A disconnected bone's head and its parent's tail: a dashed line, as
+        // Blender draws the relationship (Skeleton.h: attached chains).
+        for (const auto& [joint, parent] : skeleton.attachments()) {
+            if (parent == kNoBone || !skeleton.hasBone(parent))
+                continue;
+            const Vec3 from = node.placement.toWorld(posedJoint(joint));
+            const Vec3 to = node.placement.toWorld(posedJoint(skeleton.bone(parent).tail));
+            constexpr int kDashes = 8;
+            for (int k = 0; k < kDashes; ++k) {
+                const double a = static_cast<double>(2 * k) / (2 * kDashes - 1);
+                const double b = static_cast<double>(2 * k + 1) / (2 * kDashes - 1);
+                scene.lines.add(toQt(Vec3(from + a * (to - from))), QVector3D(0.5f, 0.5f, 0.5f));
+                scene.lines.add(toQt(Vec3(from + b * (to - from))), QVector3D(0.5f, 0.5f, 0.5f));
+            }
+        }
         for (const Joint& joint : skeleton.joints()) {
             const bool selected = node.id == selection.part && joint.id == selection.joint;
             const bool pinned = node.pinnedJoints.count(joint.id) > 0;

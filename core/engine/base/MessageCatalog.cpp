@@ -264,6 +264,17 @@ const char* messageTemplate(MessageId id) {
         case MessageId::DeleteOnlyBone:
             return RIGMESH_TRANSLATABLE("EngineMessage",
                                         "A part keeps at least one bone; this is its only one.");
+        case MessageId::BoneNotConnected:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Bone %1 is not connected to its parent; connect it first (Edit > Connect Bone).");
+        case MessageId::ConnectBoneAlreadyConnected:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Bone %1 is already connected to its parent.");
+        case MessageId::ConnectBoneHasNoParent:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Bone %1 starts at the skeleton's root: it has no parent to connect to.");
         case MessageId::CutPartNotSolid:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",

@@ -37,6 +37,19 @@ BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& we
     result.part.boneNames.clear();
     result.part.lockedBones.clear();
     carryBoneAnnotations(part, result.part);
+    // A kept frame holds while its bone points the same way (a split's first
+    // half); a bone that turned (next to a deleted one) loses it.
+    std::erase_if(result.part.boneFrames, [&](const auto& entry) {
+        const Skeleton& before = part.skeleton;
+        const Skeleton& after = result.part.skeleton;
+        if (!after.hasBone(entry.first))
+            return true;
+        auto direction = [](const Skeleton& s, BoneId id) {
+            return Vec3(s.joint(s.bone(id).tail).position - s.joint(s.bone(id).head).position)
+                .normalized();
+        };
+        return direction(before, entry.first).dot(direction(after, entry.first)) < 1.0 - 1e-12;
+    });
     result.reskinned = local.failedTest;
     result.reskinned.insert(result.reskinned.end(), local.transition.begin(),
                             local.transition.end());

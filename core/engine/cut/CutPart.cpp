@@ -17,6 +17,7 @@
 #include "mesh/MeshAdjacency.h"
 #include "mesh/MeshChecks.h"
 #include "part/BoneAnnotations.h"
+#include "part/BoneConnection.h"
 #include "part/BoneWeights.h"
 #include "rig/ShortBones.h"
 #include "surface/PatchLattice.h"
@@ -207,6 +208,8 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
     const auto start = std::chrono::steady_clock::now();
     if (part.skeleton.boneCount() == 0)
         throw Error(MessageId::CutNeedsRiggedPart);
+    // Each piece's skeleton is rebuilt as one connected tree.
+    requireConnectedSkeleton(part);
     // The split and the patches rely on a closed, oriented surface.
     if (const std::vector<std::string> problems = part.validateSolid(); !problems.empty())
         throw Error(MessageId::CutPartNotSolid, problems.front());

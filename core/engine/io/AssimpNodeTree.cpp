@@ -1,6 +1,7 @@
 #include "io/AssimpNodeTree.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "io/AssimpConversions.h"
 
@@ -44,10 +45,52 @@ AssimpNodeTree::AssimpNodeTree(const aiScene& scene, double scale) {
     scale_ = Eigen::Affine3d(Eigen::Scaling(scale));
     if (scene.mRootNode == nullptr)
         return;
-    std::vector<std::pair<const aiNode*, int>> stack = {{scene.mRootNode, -1}};
+    // Every node by the children lists, and the parent each names itself.
+    std::vector<const aiNode*> all;
+    std::unordered_map<const aiNode*, const aiNode*> listedUnder;
+    std::vector<const aiNode*> stack = {scene.mRootNode};
+    listedUnder[scene.mRootNode] = nullptr;
     while (!stack.empty()) {
-        const auto [node, parent] = stack.back();
+        const aiNode* node = stack.back();
         stack.pop_back();
+        all.push_back(node);
+        for (unsigned c = node->mNumChildren; c-- > 0;)
+            if (listedUnder.emplace(node->mChildren[c], node).second)
+                stack.push_back(node->mChildren[c]);
+    }
+    // Assimp 5.2.5's Half-Life MDL reader lists every bone under one node
+    // but sets each bone's mParent to its real parent bone: mParent wins
+    // when it is another node of the scene and no loop follows from it.
+    std::unordered_map<const aiNode*, const aiNode*> parentOf;
+    for (const aiNode* node : all) {
+        const aiNode* named = node->mParent;
+        parentOf[node] = named != nullptr && named != node && listedUnder.contains(named)
+                             ? named
+                             : listedUnder.at(node);
+    }
+    // A node whose parents do not lead to the root (a loop) keeps its list's.
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (const aiNode* node : all) {
+            std::size_t steps = 0;
+            const aiNode* up = parentOf.at(node);
+            while (up != nullptr && steps++ <= all.size())
+                up = parentOf.at(up);
+            if (up != nullptr && parentOf.at(node) != listedUnder.at(node)) {
+                parentOf[node] = listedUnder.at(node);
+                changed = true;
+            }
+        }
+    }
+    std::unordered_map<const aiNode*, std::vector<const aiNode*>> children;
+    for (const aiNode* node : all)  // in list order
+        if (parentOf.at(node) != nullptr)
+            children[parentOf.at(node)].push_back(node);
+    // Parent first, children in their list order.
+    std::vector<std::pair<const aiNode*, int>> order = {{scene.mRootNode, -1}};
+    while (!order.empty()) {
+        const auto [node, parent] = order.back();
+        order.pop_back();
         const int index = static_cast<int>(nodes_.size());
         nodes_.push_back(node);
         parents_.push_back(parent);
@@ -55,8 +98,10 @@ AssimpNodeTree::AssimpNodeTree(const aiScene& scene, double scale) {
         rest_.push_back(parent < 0 ? scale_ * local
                                    : rest_[static_cast<std::size_t>(parent)] * local);
         byName_.emplace(node->mName.C_Str(), index);
-        for (unsigned c = node->mNumChildren; c-- > 0;)
-            stack.emplace_back(node->mChildren[c], index);
+        const auto list = children.find(node);
+        if (list != children.end())
+            for (auto it = list->second.rbegin(); it != list->second.rend(); ++it)
+                order.emplace_back(*it, index);
     }
 }
 

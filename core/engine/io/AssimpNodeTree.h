@@ -1,5 +1,8 @@
 // An aiScene's node hierarchy flattened parent first, with rest and animated
-// global transforms. Internal to io/: included only from
+// global transforms. A node's parent is the one its
+// mParent names when that leads to the root (Assimp 5.2.5's Half-Life MDL
+// reader lists every bone under one node and names the real parent bone
+// only there), else the node whose children list holds it. Internal to io/: included only from
 // .cpp files (it includes Assimp).
 #pragma once
 

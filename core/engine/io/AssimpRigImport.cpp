@@ -2,24 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <set>
 
+#include "io/AssimpBoneHints.h"
 #include "io/AssimpConversions.h"
-#include "io/BoneTipHints.h"
+#include "io/BoneTails.h"
 
 namespace rigmesh {
 namespace {
-
-// Per aiBone index: its node index in the tree (-1 if none).
-std::vector<int> boneNodes(const aiMesh& mesh, const AssimpNodeTree& tree) {
-    std::vector<int> nodes;
-    for (unsigned b = 0; b < mesh.mNumBones; ++b)
-        nodes.push_back(tree.find(mesh.mBones[b]->mName.C_Str()));
-    return nodes;
-}
 
 // World bind transform of a bone: meshGlobal * inverse(offset).
 Eigen::Affine3d bindGlobal(const aiBone& bone, const Eigen::Affine3d& meshGlobal) {
@@ -28,260 +21,333 @@ Eigen::Affine3d bindGlobal(const aiBone& bone, const Eigen::Affine3d& meshGlobal
     return Eigen::Affine3d(bind);
 }
 
-double meshSize(const Part& part) {
-    if (part.mesh.vertices.empty())
+double diagonal(const std::vector<Vec3>& points) {
+    if (points.empty())
         return 1.0;
-    Vec3 lo = part.mesh.vertices[0], hi = lo;
-    for (const Vec3& v : part.mesh.vertices) {
+    Vec3 lo = points[0], hi = lo;
+    for (const Vec3& v : points) {
         lo = lo.cwiseMin(v);
         hi = hi.cwiseMax(v);
     }
     return std::max((hi - lo).norm(), 1e-9);
 }
 
-// Assimp 5.2.5's glTF exporter writes one skin for all meshes, so every
-// mesh reads back with every part's bones: keep the bone trees (each root
-// bone with its descendants) that weight this mesh, and the trees that weight
-// no mesh but start at the same joint as a kept one (a part's root bones).
-void keepOwnBones(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal, const AssimpNodeTree& tree,
-                  const std::set<std::string>& weightedAnywhere,
-                  std::map<int, unsigned>& boneOfNode) {
-    auto rootOf = [&](int node) {
-        int root = node;
-        for (int up = tree.parent(node); up >= 0; up = tree.parent(up))
-            if (boneOfNode.contains(up))
-                root = up;
-        return root;
-    };
-    std::map<int, bool> here, anywhere;  // per root bone node
-    for (const auto& [node, b] : boneOfNode) {
-        const int root = rootOf(node);
-        bool weighted = false;
-        for (unsigned w = 0; w < mesh.mBones[b]->mNumWeights && !weighted; ++w)
-            weighted = mesh.mBones[b]->mWeights[w].mWeight > 0;
-        here[root] = here[root] || weighted;
-        anywhere[root] = anywhere[root] || weightedAnywhere.contains(tree.node(node).mName.C_Str());
-    }
-    auto headOf = [&](int root) -> Vec3 {
-        return bindGlobal(*mesh.mBones[boneOfNode.at(root)], meshGlobal).translation();
-    };
-    std::set<int> keptRoots;
-    for (const auto& [root, weighted] : here)
-        if (weighted)
-            keptRoots.insert(root);
-    if (keptRoots.empty())
-        return;
-    for (const auto& [root, weighted] : here)
-        if (!weighted && !anywhere[root])
-            for (int kept : std::set<int>(keptRoots))
-                if ((headOf(root) - headOf(kept)).norm() <=
-                    1e-9 * std::max(1.0, headOf(kept).norm()))
-                    keptRoots.insert(root);
-    std::map<int, unsigned> kept;
-    for (const auto& [node, b] : boneOfNode)
-        if (keptRoots.contains(rootOf(node)))
-            kept.emplace(node, b);
-    boneOfNode = std::move(kept);
+// Every bone the group's meshes name, by node (nodeless ones by name), with
+// its world bind transform; then the nodes between two of them (Blender
+// makes those bones too), their binds carried up from a bone below through
+// the nodes' rest transforms.
+struct CollectedBones {
+    std::map<int, Eigen::Affine3d> byNode;
+    std::map<std::string, Eigen::Affine3d> nodeless;
+    std::map<int, Vec3> endBoneHeads;  // per bone node: its end bone's head
+};
+
+// The ancestors of `bones` that the file animates, up to the first one it
+// does not. Neither the scene root nor its children: a child of the root
+// is the armature object (Blender's FBX keys its armature, and its
+// importer makes no bone of it), while a game format's unweighted root
+// bones hang lower (Half-Life's under <MDL_bones>).
+std::set<int> animatedAncestors(const std::set<int>& bones, const AssimpNodeTree& tree,
+                                const std::set<std::string>& animated) {
+    std::set<int> out;
+    for (int node : bones)
+        for (int up = tree.parent(node); up > 0 && tree.parent(up) > 0 && !bones.contains(up) &&
+                                         animated.contains(tree.node(up).mName.C_Str());
+             up = tree.parent(up))
+            out.insert(up);
+    return out;
 }
 
-// A number of a node's metadata (any numeric type), or nothing.
-std::optional<double> metadataNumber(const aiMetadata& metadata, unsigned i) {
-    const aiMetadataEntry& entry = metadata.mValues[i];
-    if (entry.mData == nullptr)
-        return std::nullopt;
-    switch (entry.mType) {
-        case AI_FLOAT:
-            return *static_cast<const float*>(entry.mData);
-        case AI_DOUBLE:
-            return *static_cast<const double*>(entry.mData);
-        case AI_INT32:
-            return *static_cast<const std::int32_t*>(entry.mData);
-        case AI_UINT64:
-            return static_cast<double>(*static_cast<const std::uint64_t*>(entry.mData));
-        default:
-            return std::nullopt;
+CollectedBones collectBones(const aiScene& scene, const std::vector<SkinnedMesh>& group,
+                            const AssimpNodeTree& tree,
+                            const std::set<std::string>& weightedAnywhere, const RigHints& hints) {
+    CollectedBones out;
+    for (const SkinnedMesh& item : group) {
+        const aiMesh& mesh = *scene.mMeshes[item.mesh];
+        const MeshBones bones = meshBones(mesh, item.global, tree, weightedAnywhere);
+        for (const auto& [node, b] : bones.boneOfNode)
+            out.byNode.emplace(node, bindGlobal(*mesh.mBones[b], item.global));
+        for (const auto& [node, b] : bones.endOfParent)
+            out.endBoneHeads.emplace(node, bindGlobal(*mesh.mBones[b], item.global).translation());
+        for (unsigned b : bones.nodeless)
+            out.nodeless.emplace(mesh.mBones[b]->mName.C_Str(),
+                                 bindGlobal(*mesh.mBones[b], item.global));
     }
-}
-
-// Our exporter's leaf tail (BoneTipHints.h) in the node's own frame, which
-// Assimp reads into the node's metadata: from glTF extras as a nested list,
-// from an FBX user property as a vector.
-std::optional<Vec3> tailMetadata(const aiNode& node) {
-    if (node.mMetaData == nullptr)
-        return std::nullopt;
-    for (unsigned i = 0; i < node.mMetaData->mNumProperties; ++i) {
-        const aiMetadataEntry& entry = node.mMetaData->mValues[i];
-        if (std::string(node.mMetaData->mKeys[i].C_Str()) != kTailMetadataKey ||
-            entry.mData == nullptr)
+    // Animated ancestors (groupBySkeleton) and nodes between bones, nearest
+    // the bone below first.
+    std::set<int> named;
+    for (const auto& [node, bind] : out.byNode)
+        named.insert(node);
+    const std::set<int> ancestors = animatedAncestors(named, tree, hints.animatedNodes);
+    std::map<int, Eigen::Affine3d> between;
+    for (const auto& [node, bind] : out.byNode) {
+        std::vector<int> path;
+        int up = tree.parent(node);
+        while (up >= 0 && !out.byNode.contains(up)) {
+            path.push_back(up);
+            if (ancestors.contains(up) && !ancestors.contains(tree.parent(up)) &&
+                !out.byNode.contains(tree.parent(up)))
+                break;  // the topmost animated ancestor
+            up = tree.parent(up);
+        }
+        if (up < 0 || path.empty() || (!out.byNode.contains(up) && !ancestors.contains(up)))
             continue;
-        if (entry.mType == AI_AIVECTOR3D) {
-            const Vec3 tail = fromAi(*static_cast<const aiVector3D*>(entry.mData));
-            return tail.allFinite() ? std::optional<Vec3>(tail) : std::nullopt;
-        }
-        if (entry.mType != AI_AIMETADATA)
-            return std::nullopt;
-        const auto& list = *static_cast<const aiMetadata*>(entry.mData);
-        if (list.mNumProperties != 3)
-            return std::nullopt;
-        Vec3 tail;
-        for (unsigned k = 0; k < 3; ++k) {
-            const std::optional<double> value = metadataNumber(list, k);
-            if (!value || !std::isfinite(*value))
-                return std::nullopt;
-            tail[k] = *value;
-        }
-        return tail;
+        const Eigen::Affine3d toRest = bind * tree.restGlobal(node).inverse();
+        for (int helper : path)
+            between.emplace(helper, toRest * tree.restGlobal(helper));
     }
+    out.byNode.insert(between.begin(), between.end());
+    return out;
+}
+
+// Rotation (scale taken out) of a bind transform, and whether it is proper.
+Eigen::Matrix3d bindAxes(const Eigen::Affine3d& bind) {
+    return bind.rotation();
+}
+
+struct PartBone {
+    int node = -1;
+    std::string name;
+    Eigen::Affine3d bind;
+    int parent = -1;
+};
+
+std::vector<PartBone> orderedBones(const CollectedBones& collected, const AssimpNodeTree& tree) {
+    std::vector<PartBone> bones;
+    std::map<int, int> indexOfNode;
+    for (const auto& [node, bind] : collected.byNode) {  // tree order: parents first
+        PartBone bone{node, tree.node(node).mName.C_Str(), bind, -1};
+        for (int up = tree.parent(node); up >= 0; up = tree.parent(up))
+            if (const auto it = indexOfNode.find(up); it != indexOfNode.end()) {
+                bone.parent = it->second;
+                break;
+            }
+        indexOfNode[node] = static_cast<int>(bones.size());
+        bones.push_back(bone);
+    }
+    for (const auto& [name, bind] : collected.nodeless)
+        bones.push_back({-1, name, bind, -1});
+    return bones;
+}
+
+// The tail a file states for a bone (TailBone::statedTail): its end bone's
+// head, a `<bone>_end` node (our exports before leaf bones), our tail
+// metadata, or Blender's COLLADA tip.
+std::optional<Vec3> statedTail(const PartBone& bone, const CollectedBones& collected,
+                               const AssimpNodeTree& tree, const RigHints& hints) {
+    if (bone.node < 0)
+        return std::nullopt;
+    if (const auto end = collected.endBoneHeads.find(bone.node);
+        end != collected.endBoneHeads.end())
+        return end->second;
+    if (const int tip = tree.find(bone.name + "_end"); tip >= 0 && !collected.byNode.contains(tip))
+        return tree.restGlobal(tip).translation();
+    if (const std::optional<Vec3> local = tailMetadata(tree.node(bone.node)))
+        return bone.bind * *local;
+    if (const auto tip = hints.colladaTips.find(bone.name); tip != hints.colladaTips.end())
+        return Vec3(bone.bind.translation() +
+                    armatureRotation(bone.node, tree, collected.byNode) * tip->second);
     return std::nullopt;
-}
-
-bool hasWeight(const aiBone& bone) {
-    for (unsigned w = 0; w < bone.mNumWeights; ++w)
-        if (bone.mWeights[w].mWeight > 0)
-            return true;
-    return false;
-}
-
-// End bones (our leafBones, Blender's FBX "Add Leaf Bones"): a bone named
-// `<parent>_end` whose node is a child of its parent bone's node, with no
-// weights and no bone below it. It only marks its parent's tail: taken out
-// of `boneOfNode`, returned per parent node.
-std::map<int, unsigned> takeEndBones(const aiMesh& mesh, const AssimpNodeTree& tree,
-                                     std::map<int, unsigned>& boneOfNode) {
-    std::set<int> hasBoneChild;
-    for (const auto& [node, b] : boneOfNode)
-        for (int up = tree.parent(node); up >= 0; up = tree.parent(up))
-            if (boneOfNode.contains(up))
-                hasBoneChild.insert(up);
-    std::map<int, unsigned> endOfParent;
-    for (const auto& [node, b] : boneOfNode) {
-        const int parent = tree.parent(node);
-        if (parent < 0 || !boneOfNode.contains(parent) || hasBoneChild.contains(node) ||
-            hasWeight(*mesh.mBones[b]))
-            continue;
-        if (std::string(tree.node(node).mName.C_Str()) ==
-            std::string(tree.node(parent).mName.C_Str()) + "_end")
-            endOfParent[parent] = b;
-    }
-    for (const auto& [parent, b] : endOfParent)
-        boneOfNode.erase(tree.find(mesh.mBones[b]->mName.C_Str()));
-    return endOfParent;
-}
-
-// The rotation of the space Blender's COLLADA tips are in: the armature, the
-// nearest ancestor of `node` that is no bone.
-Eigen::Matrix3d armatureRotation(int node, const AssimpNodeTree& tree,
-                                 const std::map<int, unsigned>& boneOfNode) {
-    int up = tree.parent(node);
-    while (up >= 0 && boneOfNode.contains(up))
-        up = tree.parent(up);
-    return up < 0 ? Eigen::Matrix3d::Identity() : Eigen::Matrix3d(tree.restGlobal(up).linear());
 }
 
 }  // namespace
 
-std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
-                      const AssimpNodeTree& tree, const std::set<std::string>& weightedAnywhere,
-                      const std::map<std::string, Vec3>& colladaTips, ImportedPart& imported) {
-    Part& part = imported.part;
-    const std::vector<int> nodes = boneNodes(mesh, tree);
-    for (unsigned b = 0; b < mesh.mNumBones; ++b)
-        if (nodes[b] < 0)
-            return std::string("bone '") + mesh.mBones[b]->mName.C_Str() + "' has no node";
-    std::map<int, unsigned> boneOfNode;
-    for (unsigned b = 0; b < mesh.mNumBones; ++b)
-        boneOfNode[nodes[b]] = b;
-    const std::map<int, unsigned> endBones = takeEndBones(mesh, tree, boneOfNode);
-    keepOwnBones(mesh, meshGlobal, tree, weightedAnywhere, boneOfNode);
-    // Parent bone: nearest ancestor node that is a bone. Tree order is parent
-    // first, so sorting by node index gives a parent-first bone order.
-    std::vector<std::pair<int, unsigned>> order(boneOfNode.begin(), boneOfNode.end());
-    std::map<unsigned, int> parentBone;
-    std::map<unsigned, std::vector<unsigned>> childBones;
-    for (const auto& [node, b] : order) {
-        int up = tree.parent(node);
-        while (up >= 0 && !boneOfNode.contains(up))
-            up = tree.parent(up);
-        parentBone[b] = up < 0 ? -1 : static_cast<int>(boneOfNode[up]);
-        if (up >= 0)
-            childBones[boneOfNode[up]].push_back(b);
+TriMesh worldMesh(const aiMesh& mesh, const Eigen::Affine3d& global) {
+    TriMesh out;
+    out.vertices.reserve(mesh.mNumVertices);
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v)
+        out.vertices.push_back(global * fromAi(mesh.mVertices[v]));
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        const aiFace& face = mesh.mFaces[f];
+        if (face.mNumIndices == 3 && face.mIndices[0] != face.mIndices[1] &&
+            face.mIndices[1] != face.mIndices[2] && face.mIndices[0] != face.mIndices[2])
+            out.faces.push_back({static_cast<int>(face.mIndices[0]),
+                                 static_cast<int>(face.mIndices[1]),
+                                 static_cast<int>(face.mIndices[2])});
     }
-    auto head = [&](unsigned b) -> Vec3 {
-        return bindGlobal(*mesh.mBones[b], meshGlobal).translation();
-    };
-    // Tails, most trusted first (SceneImport.h).
-    auto tail = [&](unsigned b) -> Vec3 {
-        if (!childBones[b].empty())
-            return head(childBones[b].front());
-        const int node = nodes[b];
-        const std::string name = tree.node(node).mName.C_Str();
-        if (const auto end = endBones.find(node); end != endBones.end())
-            return head(end->second);
-        if (const int tip = tree.find(name + "_end"); tip >= 0)  // older exports: a tip node
-            return tree.restGlobal(tip).translation();
-        const Eigen::Affine3d bind = bindGlobal(*mesh.mBones[b], meshGlobal);
-        if (const std::optional<Vec3> local = tailMetadata(tree.node(node)))
-            return bind * *local;
-        if (const auto tip = colladaTips.find(name); tip != colladaTips.end())
-            return head(b) + armatureRotation(node, tree, boneOfNode) * tip->second;
-        // Blender's guess: along the bone node's +Y, as long as its parent.
-        const double length = parentBone[b] >= 0
-                                  ? (head(b) - head(static_cast<unsigned>(parentBone[b]))).norm()
-                                  : 0.1 * meshSize(part);
-        const Vec3 axis = bind.linear() * Vec3::UnitY();
-        return head(b) + length * (axis.norm() > 0 ? Vec3(axis.normalized()) : Vec3::UnitY());
-    };
+    return out;
+}
 
-    // Joints at the same place are one. Files store 32-bit floats and a
-    // head comes from inverting a rotated bind matrix: 1e-5 of the size.
-    const double tolerance = 1e-5 * meshSize(part);
-    std::vector<std::pair<Vec3, JointId>> joints;
-    auto jointAt = [&](const Vec3& p) {
-        for (const auto& [q, id] : joints)
-            if ((p - q).norm() <= tolerance)
-                return id;
-        const JointId id = part.skeleton.addJoint(p);
-        joints.emplace_back(p, id);
-        return id;
-    };
-    std::map<unsigned, BoneId> boneOfAiBone;
-    for (const auto& [node, b] : order) {
-        const JointId h = jointAt(head(b));
-        const JointId t = jointAt(tail(b));
-        if (h == t)
-            return std::string("bone '") + mesh.mBones[b]->mName.C_Str() + "' has no length";
-        boneOfAiBone[b] = part.skeleton.addBone(h, t);
-        imported.boneNames.push_back(mesh.mBones[b]->mName.C_Str());
+std::vector<std::vector<SkinnedMesh>> groupBySkeleton(const aiScene& scene,
+                                                      const AssimpNodeTree& tree,
+                                                      const std::vector<SkinnedMesh>& meshes,
+                                                      const std::set<std::string>& weightedAnywhere,
+                                                      const RigHints& hints) {
+    std::vector<std::set<int>> nodesOf;
+    std::set<int> allBones;
+    for (const SkinnedMesh& item : meshes) {
+        std::set<int> nodes;
+        for (const auto& [node, b] :
+             meshBones(*scene.mMeshes[item.mesh], item.global, tree, weightedAnywhere).boneOfNode)
+            nodes.insert(node);
+        allBones.insert(nodes.begin(), nodes.end());
+        nodesOf.push_back(std::move(nodes));
     }
-    if (!order.empty())
-        part.skeleton.setRoot(jointAt(head(order.front().second)));
-
-    part.weights.perVertex.assign(mesh.mNumVertices, {});
-    for (const auto& [node, b] : boneOfNode)
-        for (unsigned w = 0; w < mesh.mBones[b]->mNumWeights; ++w) {
-            const aiVertexWeight& weight = mesh.mBones[b]->mWeights[w];
-            if (weight.mVertexId < mesh.mNumVertices && weight.mWeight > 0)
-                part.weights.perVertex[weight.mVertexId].emplace_back(boneOfAiBone[b],
-                                                                      weight.mWeight);
+    const std::set<int> ancestors = animatedAncestors(allBones, tree, hints.animatedNodes);
+    allBones.insert(ancestors.begin(), ancestors.end());
+    auto topOf = [&](int node) {
+        int top = node;
+        for (int up = tree.parent(node); up >= 0; up = tree.parent(up))
+            if (allBones.contains(up))
+                top = up;
+        return top;
+    };
+    std::vector<std::size_t> groupOf(meshes.size());
+    std::iota(groupOf.begin(), groupOf.end(), 0);
+    std::map<int, std::size_t> meshOfTop;
+    for (std::size_t m = 0; m < meshes.size(); ++m)
+        for (int node : nodesOf[m]) {
+            const auto [it, added] = meshOfTop.emplace(topOf(node), m);
+            if (!added) {  // the later group joins the earlier one
+                const std::size_t from = groupOf[m], to = groupOf[it->second];
+                for (std::size_t& g : groupOf)
+                    if (g == from)
+                        g = to;
+            }
         }
+    std::vector<std::vector<SkinnedMesh>> groups;
+    std::map<std::size_t, std::size_t> indexOfGroup;
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        const auto [it, added] = indexOfGroup.emplace(groupOf[m], groups.size());
+        if (added)
+            groups.emplace_back();
+        groups[it->second].push_back(meshes[m]);
+    }
+    return groups;
+}
+
+std::string importRig(const aiScene& scene, const std::vector<SkinnedMesh>& group,
+                      const AssimpNodeTree& tree, const std::set<std::string>& weightedAnywhere,
+                      const RigHints& hints, ImportedPart& imported, ImportedBones& result) {
+    Part& part = imported.part;
+    // The meshes, one after the other.
+    std::vector<int> firstVertex;
+    for (const SkinnedMesh& item : group) {
+        const aiMesh& mesh = *scene.mMeshes[item.mesh];
+        const TriMesh piece = worldMesh(mesh, item.global);
+        firstVertex.push_back(part.mesh.vertexCount());
+        for (const auto& face : piece.faces)
+            part.mesh.faces.push_back({face[0] + firstVertex.back(), face[1] + firstVertex.back(),
+                                       face[2] + firstVertex.back()});
+        part.mesh.vertices.insert(part.mesh.vertices.end(), piece.vertices.begin(),
+                                  piece.vertices.end());
+        if (group.size() > 1)
+            part.meshPieces.push_back(
+                {meshName(mesh, tree.node(item.node)), piece.vertexCount(), piece.faceCount()});
+    }
+
+    const CollectedBones collected = collectBones(scene, group, tree, weightedAnywhere, hints);
+    const std::vector<PartBone> bones = orderedBones(collected, tree);
+    if (bones.empty())
+        return "it has no bones";
+    std::map<std::string, int> indexOfName;
+    for (std::size_t b = 0; b < bones.size(); ++b)
+        indexOfName.emplace(bones[b].name, static_cast<int>(b));
+
+    // Weights by bone index, per vertex of the whole mesh.
+    std::vector<std::vector<std::pair<int, double>>> weights(part.mesh.vertices.size());
+    for (std::size_t m = 0; m < group.size(); ++m) {
+        const aiMesh& mesh = *scene.mMeshes[group[m].mesh];
+        const MeshBones own = meshBones(mesh, group[m].global, tree, weightedAnywhere);
+        std::vector<unsigned> used = own.nodeless;
+        for (const auto& [node, b] : own.boneOfNode)
+            used.push_back(b);
+        for (unsigned b : used) {
+            const int bone = indexOfName.at(mesh.mBones[b]->mName.C_Str());
+            for (unsigned w = 0; w < mesh.mBones[b]->mNumWeights; ++w) {
+                const aiVertexWeight& weight = mesh.mBones[b]->mWeights[w];
+                if (weight.mVertexId < mesh.mNumVertices && weight.mWeight > 0)
+                    weights[static_cast<std::size_t>(firstVertex[m]) + weight.mVertexId]
+                        .emplace_back(bone, weight.mWeight);
+            }
+        }
+    }
+    std::vector<int> dominant(weights.size(), -1);
     bool unweighted = false;
-    for (auto& list : part.weights.perVertex) {
+    for (std::size_t v = 0; v < weights.size(); ++v) {
+        auto& list = weights[v];
         std::sort(list.begin(), list.end());
         // A file may weight one vertex twice by the same bone: one entry each.
-        std::vector<std::pair<BoneId, double>> merged;
+        std::vector<std::pair<int, double>> merged;
         for (const auto& entry : list)
             if (!merged.empty() && merged.back().first == entry.first)
                 merged.back().second += entry.second;
             else
                 merged.push_back(entry);
         list = std::move(merged);
-        double sum = 0;
-        for (const auto& [bone, w] : list)
+        double sum = 0, best = 0;
+        for (const auto& [bone, w] : list) {
             sum += w;
+            if (w > best) {
+                best = w;
+                dominant[v] = bone;
+            }
+        }
         unweighted = unweighted || list.empty();
         for (auto& entry : list)
             entry.second /= sum;
     }
+
+    // Tails and connections (BoneTails.h).
+    std::vector<TailBone> tailBones;
+    for (const PartBone& bone : bones) {
+        TailBone t;
+        t.head = bone.bind.translation();
+        t.axes = bindAxes(bone.bind);
+        t.parent = bone.parent;
+        t.statedTail = statedTail(bone, collected, tree, hints);
+        if (const auto flag = hints.colladaConnections.find(bone.name);
+            flag != hints.colladaConnections.end() && bone.parent >= 0)
+            t.connectFlag = flag->second;
+        tailBones.push_back(t);
+    }
+    const double size = diagonal(part.mesh.vertices);
+    const BoneTailsResult tails = guessBoneTails(tailBones, part.mesh.vertices, dominant, size);
+
+    // Joints: a connected bone's head is its parent's tail joint; the heads of
+    // a parent's disconnected children at one place share a joint attached
+    // to it; root bones at the first one's head share the root, others at
+    // one place share a joint of a further root chain.
+    const double tolerance = 1e-5 * size;
+    std::vector<JointId> tailJoint(bones.size(), kNoJoint);
+    std::map<int, std::vector<std::pair<Vec3, JointId>>> chainHeads;  // per parent (-1: roots)
+    auto chainHead = [&](int parent, const Vec3& at) {
+        auto& heads = chainHeads[parent];
+        for (const auto& [p, joint] : heads)
+            if ((p - at).norm() <= tolerance)
+                return joint;
+        const JointId joint = part.skeleton.addJoint(at);
+        if (!(parent < 0 && heads.empty()))  // the first root head is the root
+            part.skeleton.attach(joint, parent < 0 ? kNoBone : static_cast<BoneId>(parent));
+        heads.emplace_back(at, joint);
+        return joint;
+    };
+    for (std::size_t b = 0; b < bones.size(); ++b) {
+        const int parent = bones[b].parent;
+        const JointId head = parent >= 0 && tails.connected[b]
+                                 ? tailJoint[static_cast<std::size_t>(parent)]
+                                 : chainHead(parent, tailBones[b].head);
+        tailJoint[b] = part.skeleton.addJoint(tails.tails[b]);
+        // Bone ids follow the bone index (ids from 0, in this order).
+        part.skeleton.addBone(head, tailJoint[b]);
+        // The node's name, or the bone's own that our exporter kept beside it.
+        std::optional<std::string> ownName =
+            bones[b].node >= 0 ? nameMetadata(tree.node(bones[b].node)) : std::nullopt;
+        if (const auto kept = hints.colladaNames.find(bones[b].name);
+            kept != hints.colladaNames.end())
+            ownName = kept->second;
+        imported.boneNames.push_back(ownName ? *ownName : bones[b].name);
+        const Eigen::Quaterniond frame(bindAxes(bones[b].bind));
+        if (bindAxes(bones[b].bind).determinant() > 0 && frame.coeffs().allFinite())
+            part.boneFrames.emplace(static_cast<BoneId>(b), frame.normalized());
+        result.nodes.push_back(bones[b].node);
+        result.binds.push_back(bones[b].bind);
+    }
+
+    part.weights.perVertex.assign(weights.size(), {});
+    for (std::size_t v = 0; v < weights.size(); ++v)
+        for (const auto& [bone, w] : weights[v])
+            part.weights.perVertex[v].emplace_back(static_cast<BoneId>(bone), w);
     const std::vector<std::string> problems = part.skeleton.validate();
     if (!problems.empty())
         return "its skeleton is not usable: " + problems.front();
@@ -290,70 +356,67 @@ std::string importRig(const aiMesh& mesh, const Eigen::Affine3d& meshGlobal,
     return {};
 }
 
-std::optional<Clip> importClip(const aiAnimation& animation, const aiMesh& mesh,
-                               const Eigen::Affine3d& meshGlobal, const AssimpNodeTree& tree,
-                               const ImportedPart& imported) {
-    const Part& part = imported.part;
-    std::set<std::string> names(imported.boneNames.begin(), imported.boneNames.end());
+std::optional<Clip> importClip(const aiAnimation& animation, const AssimpNodeTree& tree,
+                               const ImportedPart& imported, const ImportedBones& bones) {
+    const Skeleton& skeleton = imported.part.skeleton;
+    // The nodes that move the part: its bones' and their ancestors.
+    std::set<std::string> moving, boneNodes;
+    for (int node : bones.nodes) {
+        if (node >= 0)
+            boneNodes.insert(tree.node(node).mName.C_Str());
+        for (int up = node; up >= 0; up = tree.parent(up))
+            moving.insert(tree.node(up).mName.C_Str());
+    }
     std::set<double> ticks;
+    bool movesBones = false;
     for (unsigned c = 0; c < animation.mNumChannels; ++c) {
         const aiNodeAnim& channel = *animation.mChannels[c];
-        if (!names.contains(channel.mNodeName.C_Str()))
+        if (!moving.contains(channel.mNodeName.C_Str()))
             continue;
+        movesBones = movesBones || boneNodes.contains(channel.mNodeName.C_Str());
         for (unsigned k = 0; k < channel.mNumRotationKeys; ++k)
             ticks.insert(channel.mRotationKeys[k].mTime);
         for (unsigned k = 0; k < channel.mNumPositionKeys; ++k)
             ticks.insert(channel.mPositionKeys[k].mTime);
     }
-    if (ticks.empty())
+    if (ticks.empty() || !movesBones)
         return std::nullopt;
     const double perSecond = animation.mTicksPerSecond > 0 ? animation.mTicksPerSecond : 1.0;
-    double fps = 24.0, previous = -1e300;
-    for (double t : ticks) {
-        while ((t - previous) / perSecond < 1.0 / fps && fps < 1e6)
-            fps *= 2;
-        previous = t;
-    }
-    Clip clip(fps);
+    Clip clip(clipRate(ticks, perSecond));
     clip.interpolation = Interpolation::Linear;
     // Keys lie at 0 s or later (Clip.h): a clip that starts before 0 s is
     // moved as a whole to start there.
     const double start = std::min(0.0, *ticks.begin());
 
-    const Skeleton& skeleton = part.skeleton;
-    std::map<std::string, unsigned> aiBoneByName;
-    for (unsigned b = 0; b < mesh.mNumBones; ++b)
-        aiBoneByName[mesh.mBones[b]->mName.C_Str()] = b;
     const std::vector<BoneId> hierarchy = skeleton.bonesInHierarchyOrder();
     for (double t : ticks) {
         const std::vector<Eigen::Affine3d> globals = tree.animatedGlobals(animation, t);
         // Per bone (Pose.h: keyed by its tail joint), its world rotation
         // (rest -> posed) relative to its parent bone's; root bones turn
         // about the root, which the first of them places.
-        std::map<JointId, Eigen::Quaterniond> world;
+        std::map<BoneId, Eigen::Quaterniond> world;
         Pose pose;
         bool rootPlaced = false;
         for (BoneId id : hierarchy) {
             const Bone& bone = skeleton.bone(id);
-            const int index = skeleton.indexOfBone(id);
-            const unsigned b = aiBoneByName[imported.boneNames[static_cast<std::size_t>(index)]];
-            const int node = tree.find(imported.boneNames[static_cast<std::size_t>(index)]);
-            const Eigen::Affine3d skin = globals[static_cast<std::size_t>(node)] *
-                                         fromAi(mesh.mBones[b]->mOffsetMatrix) *
-                                         meshGlobal.inverse();
+            const auto index = static_cast<std::size_t>(skeleton.indexOfBone(id));
+            const int node = bones.nodes[index];
+            const Eigen::Affine3d skin =
+                node >= 0 ? Eigen::Affine3d(globals[static_cast<std::size_t>(node)] *
+                                            bones.binds[index].inverse())
+                          : Eigen::Affine3d::Identity();
             const Eigen::Quaterniond rotation = Eigen::Quaterniond(skin.rotation()).normalized();
-            world[bone.tail] = rotation;
+            world[id] = rotation;
             const std::optional<BoneId> parent = skeleton.parentBone(id);
             if (!parent) {
                 pose.setRotation(bone.tail, rotation);
-                if (!rootPlaced) {
+                if (!rootPlaced && bone.head == skeleton.root()) {
                     const Vec3 h = skeleton.joint(bone.head).position;
                     pose.rootTranslation = skin.translation() - h + rotation * h;
                     rootPlaced = true;
                 }
             } else {
-                const Eigen::Quaterniond up = world[skeleton.bone(*parent).tail];
-                pose.setRotation(bone.tail, (up.conjugate() * rotation).normalized());
+                pose.setRotation(bone.tail, (world[*parent].conjugate() * rotation).normalized());
             }
         }
         clip.setKey((t - start) / perSecond, pose);

@@ -5,6 +5,7 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "base/Error.h"
@@ -73,7 +74,7 @@ struct AnimationGroups {
     }
 };
 
-// Notes item 2: every node name unique. Kept bone names (an import's) may
+// docs/EXCHANGE.md rule 2: every node name unique. Kept bone names (an import's) may
 // meet a part's or another part's bone's: `_2`, `_3`, ... appended; an end
 // bone's name (`<bone>_end`) is taken too.
 void makeBoneNamesUnique(ExportRig& rig, std::set<std::string>& used) {
@@ -81,6 +82,8 @@ void makeBoneNamesUnique(ExportRig& rig, std::set<std::string>& used) {
         std::string name = node.name;
         for (int n = 2; used.contains(name) || used.contains(name + "_end"); ++n)
             name = node.name + "_" + std::to_string(n);
+        if (name != node.name)
+            node.renamedFrom = node.name;
         node.name = name;
         used.insert(name);
         used.insert(name + "_end");
@@ -231,6 +234,42 @@ aiMaterial* makeMaterial() {
     return material;
 }
 
+// The meshes a part is written as: its pieces (a shared skeleton's meshes,
+// Part::meshPieces), each with its own vertices, faces and weights, or the
+// whole part. Named after each piece (made unique), else `name`.
+struct PieceMesh {
+    Part part;  // the piece's surface and weights (the rig stays the part's)
+    std::string name;
+};
+
+std::vector<PieceMesh> piecesOf(const Part& part, const std::string& name,
+                                std::set<std::string>& used) {
+    if (part.meshPieces.size() < 2)
+        return {};
+    std::vector<PieceMesh> pieces;
+    int firstVertex = 0, firstFace = 0;
+    for (const PartMeshPiece& piece : part.meshPieces) {
+        PieceMesh out;
+        out.part.name = part.name;
+        out.part.skeleton = part.skeleton;
+        out.name = uniqueName(sanitizedName(piece.name.empty() ? name : piece.name), used);
+        out.part.mesh.vertices.assign(part.mesh.vertices.begin() + firstVertex,
+                                      part.mesh.vertices.begin() + firstVertex + piece.vertexCount);
+        for (int f = firstFace; f < firstFace + piece.faceCount; ++f)
+            out.part.mesh.faces.push_back({part.mesh.faces[f][0] - firstVertex,
+                                           part.mesh.faces[f][1] - firstVertex,
+                                           part.mesh.faces[f][2] - firstVertex});
+        if (!part.weights.perVertex.empty())
+            out.part.weights.perVertex.assign(
+                part.weights.perVertex.begin() + firstVertex,
+                part.weights.perVertex.begin() + firstVertex + piece.vertexCount);
+        firstVertex += piece.vertexCount;
+        firstFace += piece.faceCount;
+        pieces.push_back(std::move(out));
+    }
+    return pieces;
+}
+
 void checkPart(const ExportPart& item, bool rigged) {
     if (item.part == nullptr)
         throw Error("cannot export: a part is missing");
@@ -271,31 +310,60 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
     scene.mRootNode = new aiNode("RootNode");
     std::vector<aiNode*> rootChildren, armatureChildren;
     std::vector<aiAnimation*> animations;
-    scene.mNumMeshes = static_cast<unsigned>(parts.size());
-    scene.mMeshes = new aiMesh*[parts.size()];
     std::vector<ExportRig> rigs;
     AnimationGroups animationGroups;
+    // One mesh node per piece of a part (one for a part without pieces). The
+    // scene owns every mesh from the start (null until made), so none leaks
+    // when a later step throws.
+    std::vector<std::vector<PieceMesh>> piecesOfPart;
+    std::size_t meshCount = 0;
     for (std::size_t i = 0; i < parts.size(); ++i) {
-        aiMesh* mesh = makeMesh(parts[i], names[i], format, options);
-        scene.mMeshes[i] = mesh;
-        aiNode* meshNode = new aiNode(names[i]);
-        meshNode->mNumMeshes = 1;
-        meshNode->mMeshes = new unsigned[1]{static_cast<unsigned>(i)};
-        rootChildren.push_back(meshNode);
-        if (!rigged)
+        piecesOfPart.push_back(piecesOf(*parts[i].part, names[i], usedNames));
+        meshCount += std::max<std::size_t>(1, piecesOfPart.back().size());
+    }
+    scene.mNumMeshes = static_cast<unsigned>(meshCount);
+    scene.mMeshes = new aiMesh* [meshCount] {};
+    unsigned nextMesh = 0;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const std::vector<PieceMesh>& pieces = piecesOfPart[i];
+        std::vector<ExportPart> items;
+        std::vector<std::string> meshNames;
+        for (const PieceMesh& piece : pieces) {
+            items.push_back(parts[i]);
+            items.back().part = &piece.part;
+            meshNames.push_back(piece.name);
+        }
+        if (pieces.empty()) {
+            items.push_back(parts[i]);
+            meshNames.push_back(names[i]);
+        }
+        std::vector<aiNode*> meshNodes;
+        const unsigned firstMesh = nextMesh;
+        for (std::size_t k = 0; k < items.size(); ++k) {
+            scene.mMeshes[nextMesh] = makeMesh(items[k], meshNames[k], format, options);
+            aiNode* meshNode = new aiNode(meshNames[k]);
+            meshNode->mNumMeshes = 1;
+            meshNode->mMeshes = new unsigned[1]{nextMesh++};
+            meshNodes.push_back(meshNode);
+        }
+        if (!rigged) {
+            rootChildren.insert(rootChildren.end(), meshNodes.begin(), meshNodes.end());
             continue;
+        }
         const bool gltf = format == ExportFormat::Glb || format == ExportFormat::Gltf;
         rigs.push_back(makeExportRig(*parts[i].part, names[i], parts[i].placement,
                                      options.unitScale,
                                      gltf ? BoneAxes::GltfRootLeavesMinusZ : BoneAxes::PlusY));
         makeBoneNamesUnique(rigs.back(), usedNames);
-        addBones(mesh, *parts[i].part, rigs.back(), influences, options.leafBones);
+        for (std::size_t k = 0; k < items.size(); ++k)
+            addBones(scene.mMeshes[firstMesh + k], *items[k].part, rigs.back(), influences,
+                     options.leafBones);
         std::vector<aiNode*> bones = boneNodes(rigs.back(), options.leafBones);
+        if (format == ExportFormat::Fbx)  // the mesh nodes go into their armature
+            bones.insert(bones.begin(), meshNodes.begin(), meshNodes.end());
+        else
+            rootChildren.insert(rootChildren.end(), meshNodes.begin(), meshNodes.end());
         if (format != ExportFormat::Collada) {
-            if (format == ExportFormat::Fbx) {  // the mesh node goes into its armature
-                rootChildren.pop_back();
-                bones.insert(bones.begin(), meshNode);
-            }
             aiNode* armature = new aiNode(uniqueName(names[i] + "_armature", usedNames));
             setChildren(armature, bones);
             rootChildren.push_back(armature);
@@ -318,6 +386,11 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
         for (const auto& [partClip, rig] : members)
             animated.push_back({partClip, &rigs[rig]});
         animations.push_back(makeAnimation(animated, name));
+        // Assimp 5.2.5's FBX exporter writes the stack's LocalStop as the
+        // duration cut to whole seconds, and FBX readers drop the keys after
+        // it (docs/EXCHANGE.md rule 20): a whole number of seconds keeps them.
+        if (format == ExportFormat::Fbx)
+            animations.back()->mDuration = std::ceil(animations.back()->mDuration);
     }
     if (!armatureChildren.empty()) {
         aiNode* armature = new aiNode("Armature");

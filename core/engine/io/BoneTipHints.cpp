@@ -45,12 +45,18 @@ void addTips(tinyxml2::XMLElement& parent,
         tinyxml2::XMLElement* technique =
             node->InsertNewChildElement("extra")->InsertNewChildElement("technique");
         technique->SetAttribute("profile", "blender");
-        addParameter(*technique, "connect", "bool", "0");
+        addParameter(*technique, "connect", "bool", bone->second->connected ? "1" : "0");
         addParameter(*technique, "layer", "string", "0");
-        addParameter(*technique, "roll", "float", "0");
+        addParameter(*technique, "roll", "float", colladaNumber(bone->second->roll()));
         addParameter(*technique, "tip_x", "float", colladaNumber(tip.x()));
         addParameter(*technique, "tip_y", "float", colladaNumber(tip.y()));
         addParameter(*technique, "tip_z", "float", colladaNumber(tip.z()));
+        if (!bone->second->renamedFrom.empty()) {  // our own profile: Blender ignores it
+            tinyxml2::XMLElement* ours =
+                node->LastChildElement("extra")->InsertNewChildElement("technique");
+            ours->SetAttribute("profile", "rigmesh");
+            addParameter(*ours, kNameMetadataKey, "string", bone->second->renamedFrom);
+        }
     }
 }
 
@@ -69,10 +75,14 @@ std::string withColladaBoneTips(const std::string& dae, const std::vector<Export
 
 namespace {
 
-void collectTips(const tinyxml2::XMLElement& parent, std::map<std::string, Vec3>& tips) {
+// Calls visit(joint name, technique) for every `<technique profile="...">`
+// of every node below `parent`.
+template <typename Visit>
+void forEachBlenderTechnique(const tinyxml2::XMLElement& parent, const std::string& wanted,
+                             Visit&& visit) {
     for (const tinyxml2::XMLElement* node = parent.FirstChildElement("node"); node != nullptr;
          node = node->NextSiblingElement("node")) {
-        collectTips(*node, tips);
+        forEachBlenderTechnique(*node, wanted, visit);
         const char* name = node->Attribute("name");
         if (name == nullptr)
             continue;
@@ -81,54 +91,94 @@ void collectTips(const tinyxml2::XMLElement& parent, std::map<std::string, Vec3>
             for (const tinyxml2::XMLElement* technique = extra->FirstChildElement("technique");
                  technique != nullptr; technique = technique->NextSiblingElement("technique")) {
                 const char* profile = technique->Attribute("profile");
-                if (profile == nullptr || std::string(profile) != "blender")
-                    continue;
-                Vec3 tip;
-                bool complete = true;
-                const char* axes[] = {"tip_x", "tip_y", "tip_z"};
-                for (int k = 0; k < 3; ++k) {
-                    const tinyxml2::XMLElement* value = technique->FirstChildElement(axes[k]);
-                    double number = 0;
-                    complete = complete && value != nullptr &&
-                               value->QueryDoubleText(&number) == tinyxml2::XML_SUCCESS &&
-                               std::isfinite(number);
-                    tip[k] = number;
-                }
-                if (complete)
-                    tips[name] = tip;
+                if (profile != nullptr && std::string(profile) == wanted)
+                    visit(std::string(name), *technique);
             }
     }
 }
 
-}  // namespace
-
-std::string withFbxLeafTails(const std::string& fbx, const std::vector<ExportRig>& rigs) {
-    std::map<std::string, Vec3> tails;
-    for (const ExportRig& rig : rigs)
-        for (const ExportBoneNode& node : rig.nodes)
-            if (node.leaf)
-                tails.emplace(node.name, node.localTail());
-    const std::vector<std::uint8_t> out = withFbxModelVectors(
-        std::vector<std::uint8_t>(fbx.begin(), fbx.end()), kTailMetadataKey, tails);
-    return std::string(out.begin(), out.end());
-}
-
-std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae) {
-    std::map<std::string, Vec3> tips;
+// The same for every visual scene of a COLLADA text (nothing for text that
+// is not XML).
+template <typename Visit>
+void forEachBlenderJointTechnique(const std::string& dae, Visit&& visit,
+                                  const std::string& profile = "blender") {
     tinyxml2::XMLDocument document;
     if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
         document.RootElement() == nullptr)
-        return tips;
+        return;
     const tinyxml2::XMLElement* scenes =
         document.RootElement()->FirstChildElement("library_visual_scenes");
     for (const tinyxml2::XMLElement* scene =
              scenes != nullptr ? scenes->FirstChildElement("visual_scene") : nullptr;
          scene != nullptr; scene = scene->NextSiblingElement("visual_scene"))
-        collectTips(*scene, tips);
+        forEachBlenderTechnique(*scene, profile, visit);
+}
+
+}  // namespace
+
+std::string withFbxBoneTails(const std::string& fbx, const std::vector<ExportRig>& rigs) {
+    std::map<std::string, Vec3> tails;
+    std::map<std::string, std::string> names;
+    for (const ExportRig& rig : rigs)
+        for (const ExportBoneNode& node : rig.nodes) {
+            tails.emplace(node.name, node.localTail());
+            if (!node.renamedFrom.empty())
+                names.emplace(node.name, node.renamedFrom);
+        }
+    std::vector<std::uint8_t> out = withFbxModelVectors(
+        std::vector<std::uint8_t>(fbx.begin(), fbx.end()), kTailMetadataKey, tails);
+    if (!names.empty())
+        out = withFbxModelStrings(out, kNameMetadataKey, names);
+    return std::string(out.begin(), out.end());
+}
+
+std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae) {
+    std::map<std::string, Vec3> tips;
+    forEachBlenderJointTechnique(
+        dae, [&](const std::string& name, const tinyxml2::XMLElement& technique) {
+            Vec3 tip;
+            bool complete = true;
+            const char* axes[] = {"tip_x", "tip_y", "tip_z"};
+            for (int k = 0; k < 3; ++k) {
+                const tinyxml2::XMLElement* value = technique.FirstChildElement(axes[k]);
+                double number = 0;
+                complete = complete && value != nullptr &&
+                           value->QueryDoubleText(&number) == tinyxml2::XML_SUCCESS &&
+                           std::isfinite(number);
+                tip[k] = number;
+            }
+            if (complete)
+                tips[name] = tip;
+        });
     return tips;
 }
 
-std::string withGltfLeafTails(const std::string& gltfJson, const std::vector<ExportRig>& rigs) {
+std::map<std::string, bool> readColladaBoneConnections(const std::string& dae) {
+    std::map<std::string, bool> connected;
+    forEachBlenderJointTechnique(
+        dae, [&](const std::string& name, const tinyxml2::XMLElement& technique) {
+            const tinyxml2::XMLElement* value = technique.FirstChildElement("connect");
+            int flag = 0;
+            if (value != nullptr && value->QueryIntText(&flag) == tinyxml2::XML_SUCCESS)
+                connected[name] = flag != 0;
+        });
+    return connected;
+}
+
+std::map<std::string, std::string> readColladaBoneNames(const std::string& dae) {
+    std::map<std::string, std::string> names;
+    forEachBlenderJointTechnique(
+        dae,
+        [&](const std::string& name, const tinyxml2::XMLElement& technique) {
+            const tinyxml2::XMLElement* value = technique.FirstChildElement(kNameMetadataKey);
+            if (value != nullptr && value->GetText() != nullptr)
+                names[name] = value->GetText();
+        },
+        "rigmesh");
+    return names;
+}
+
+std::string withGltfBoneTails(const std::string& gltfJson, const std::vector<ExportRig>& rigs) {
     nlohmann::json gltf = nlohmann::json::parse(gltfJson, nullptr, false);
     if (gltf.is_discarded() || !gltf.is_object())
         throw Error("cannot export: the glTF exporter wrote invalid JSON");
@@ -136,10 +186,12 @@ std::string withGltfLeafTails(const std::string& gltfJson, const std::vector<Exp
     if (gltf.contains("nodes") && gltf["nodes"].is_array())
         for (nlohmann::json& node : gltf["nodes"]) {
             const auto bone = bones.find(node.value("name", std::string()));
-            if (bone == bones.end() || !bone->second->leaf)
+            if (bone == bones.end())
                 continue;
             const Vec3 tail = bone->second->localTail();
             node["extras"][kTailMetadataKey] = {tail.x(), tail.y(), tail.z()};
+            if (!bone->second->renamedFrom.empty())
+                node["extras"][kNameMetadataKey] = bone->second->renamedFrom;
         }
     return gltf.dump();
 }

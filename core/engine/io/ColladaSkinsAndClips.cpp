@@ -176,6 +176,48 @@ std::pair<double, double> keyTimeRange(const XMLElement& animation) {
     return first <= last ? std::make_pair(first, last) : std::make_pair(0.0, 0.0);
 }
 
+// Every id inside an <animation> (its sources, arrays, samplers), and the
+// `#id` references to them there, prefixed with the animation's id.
+void prefixIds(XMLElement& element, const std::string& prefix,
+               std::map<std::string, std::string>& renamed) {
+    if (const char* id = element.Attribute("id")) {
+        renamed["#" + std::string(id)] = "#" + prefix + id;
+        element.SetAttribute("id", (prefix + id).c_str());
+    }
+    for (XMLElement* child = element.FirstChildElement(); child != nullptr;
+         child = child->NextSiblingElement())
+        prefixIds(*child, prefix, renamed);
+}
+
+void renameReferences(XMLElement& element, const std::map<std::string, std::string>& renamed) {
+    if (const char* source = element.Attribute("source"))
+        if (const auto found = renamed.find(source); found != renamed.end())
+            element.SetAttribute("source", found->second.c_str());
+    for (XMLElement* child = element.FirstChildElement(); child != nullptr;
+         child = child->NextSiblingElement())
+        renameReferences(*child, renamed);
+}
+
+// Assimp 5.2.5 names an animation's sources after the node alone
+// ("Pelvis_matrix-input"), so a file with several animations repeats every
+// id, and readers (Assimp's own) take one animation's keys for all of them.
+void makeAnimationIdsUnique(XMLElement& root) {
+    XMLElement* animations = root.FirstChildElement("library_animations");
+    if (animations == nullptr)
+        return;
+    for (XMLElement* animation = animations->FirstChildElement("animation"); animation != nullptr;
+         animation = animation->NextSiblingElement("animation")) {
+        const std::string id = attribute(*animation, "id");
+        if (id.empty())
+            continue;
+        std::map<std::string, std::string> renamed;
+        for (XMLElement* child = animation->FirstChildElement(); child != nullptr;
+             child = child->NextSiblingElement())
+            prefixIds(*child, id + "-", renamed);
+        renameReferences(*animation, renamed);
+    }
+}
+
 void addAnimationClips(XMLElement& root) {
     XMLElement* animations = root.FirstChildElement("library_animations");
     if (animations == nullptr || root.FirstChildElement("library_animation_clips") != nullptr)
@@ -206,6 +248,7 @@ void addAnimationClips(XMLElement& root) {
 std::string withColladaSkinRootsAndClips(const std::string& dae) {
     return editColladaXml(dae, [](XMLElement& root) {
         nameSkinSkeletons(root);
+        makeAnimationIdsUnique(root);
         addAnimationClips(root);
     });
 }

@@ -16,6 +16,11 @@
 //   animation called "default"; Assimp writes one `<animation>` per clip and
 //   no clips. So each top-level `<animation>` gets an `<animation_clip>` of
 //   its name, from its first key time to its last.
+// - Animation ids. Assimp names each animation's sources and samplers after
+//   the node alone ("Pelvis_matrix-input"), so with several animations every
+//   id repeats and a reader (Assimp's own, measured) takes one animation's
+//   keys for all of them: a 30-key clip came back with the 1 key of another.
+//   The ids inside each `<animation>` get its id as a prefix.
 //
 // Blender 3.4.1 reads the same files as before (tests/external: its dae
 // checks pass on files with both).
@@ -26,7 +31,8 @@
 namespace rigmesh {
 
 // The COLLADA text with every skin's `<skeleton>` elements replaced by its
-// root joints and one `<animation_clip>` per top-level `<animation>`.
+// root joints, the ids inside each top-level `<animation>` prefixed with its
+// id, and one `<animation_clip>` per top-level `<animation>`.
 // Throws Error on text that is not XML.
 std::string withColladaSkinRootsAndClips(const std::string& dae);
 

@@ -1,6 +1,8 @@
 #include "io/ExportRig.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <deque>
 
 #include "base/Error.h"
@@ -45,17 +47,27 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
     rig.nodeOfBone.assign(skeleton.boneCount(), -1);
     auto place = [&](const Vec3& x) -> Vec3 { return unitScale * (placement * x); };
 
-    // The bones whose frame joint is each joint, then breadth first from the root.
+    // The bones whose frame joint is each joint, then breadth first from the
+    // root, a chain's bones after the bone it hangs from.
     std::vector<std::vector<int>> bonesFrom(hierarchy.jointCount());
     for (int b = 0; b < hierarchy.boneCount(); ++b)
         if (hierarchy.reachable(hierarchy.boneHeadJoint(b)) &&
             hierarchy.boneRotationJoint(b) == hierarchy.boneTailJoint(b))
             bonesFrom[hierarchy.boneHeadJoint(b)].push_back(b);
-    std::deque<std::pair<int, int>> queue;  // (bone, parent node)
+    struct Queued {
+        int bone, parent;
+        std::vector<JointId> turnedBy;
+    };
+    std::deque<Queued> queue;
+    const JointId root = hierarchy.jointId(hierarchy.root());
     for (int b : bonesFrom[hierarchy.root()])
-        queue.emplace_back(b, -1);
+        queue.push_back({b, -1, {root}});
+    for (int chain : hierarchy.children(hierarchy.root()))
+        if (hierarchy.attached(chain))
+            for (int b : bonesFrom[chain])
+                queue.push_back({b, -1, {root, hierarchy.jointId(chain)}});
     while (!queue.empty()) {
-        const auto [b, parent] = queue.front();
+        const auto [b, parent, turnedBy] = queue.front();
         queue.pop_front();
         const int frame = hierarchy.boneHeadJoint(b), end = hierarchy.boneTailJoint(b);
         ExportBoneNode node;
@@ -63,16 +75,35 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
         node.parent = parent;
         node.headJoint = hierarchy.jointId(frame);
         node.tailJoint = hierarchy.jointId(end);
+        node.turnedBy = turnedBy;
+        node.connected = parent >= 0 && !hierarchy.attached(frame);
+        if (parent < 0) {
+            node.rootJoint = root;
+            node.rootPosition = place(hierarchy.restPosition(hierarchy.root()));
+        }
         const BoneId id = skeleton.bones()[b].id;
         const auto kept = part.boneNames.find(id);
-        node.name = kept != part.boneNames.end() ? sanitizedName(kept->second)
-                                                 : partName + "_bone" + std::to_string(id);
+        // A kept name goes out as it is ("Bone.001", "Bip01 L Thigh"): glTF,
+        // FBX and COLLADA (as Assimp writes and reads them) carry any name,
+        // and an importer matching bones by name needs it unchanged.
+        node.name =
+            kept != part.boneNames.end() ? kept->second : partName + "_bone" + std::to_string(id);
         node.head = place(hierarchy.restPosition(frame));
         node.tail = place(hierarchy.restPosition(end));
-        node.leaf = bonesFrom[end].empty();
-        const bool minusZ = axes == BoneAxes::GltfRootLeavesMinusZ && parent < 0 && node.leaf;
-        node.restFrame =
-            boneFrame(minusZ ? Vec3(-Vec3::UnitZ()) : Vec3(Vec3::UnitY()), node.tail - node.head);
+        std::vector<int> chains;  // attached chain roots hanging from this bone
+        for (int child : hierarchy.children(end))
+            if (hierarchy.attached(child))
+                chains.push_back(child);
+        node.leaf = bonesFrom[end].empty() &&
+                    std::none_of(chains.begin(), chains.end(),
+                                 [&](int chain) { return !bonesFrom[chain].empty(); });
+        if (const auto keptFrame = part.boneFrames.find(id); keptFrame != part.boneFrames.end()) {
+            node.restFrame = (rig.placementRotation * keptFrame->second).normalized();
+        } else {
+            const bool minusZ = axes == BoneAxes::GltfRootLeavesMinusZ && parent < 0 && node.leaf;
+            node.restFrame = boneFrame(minusZ ? Vec3(-Vec3::UnitZ()) : Vec3(Vec3::UnitY()),
+                                       node.tail - node.head);
+        }
         if (parent < 0) {
             node.restTranslation = node.head;
             node.restRotation = node.restFrame;
@@ -85,7 +116,10 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
         rig.nodeOfBone[b] = index;
         rig.nodes.push_back(node);
         for (int child : bonesFrom[end])
-            queue.emplace_back(child, index);
+            queue.push_back({child, index, {}});
+        for (int chain : chains)
+            for (int child : bonesFrom[chain])
+                queue.push_back({child, index, {hierarchy.jointId(chain)}});
     }
     return rig;
 }
@@ -101,20 +135,35 @@ Vec3 ExportRig::localTranslation(int node, const Pose& pose) const {
     const ExportBoneNode& n = nodes[node];
     if (n.parent >= 0)
         return n.restTranslation;
-    return n.restTranslation + unitScale * (placementRotation * pose.rootTranslation);
+    // Under the Armature: where the root's transform takes the head.
+    const Eigen::Quaterniond rootTurn =
+        placementRotation * pose.rotation(n.rootJoint).normalized() * placementRotation.conjugate();
+    return n.restTranslation + unitScale * (placementRotation * pose.rootTranslation) +
+           (rootTurn * (n.head - n.rootPosition) - (n.head - n.rootPosition));
 }
 
 Eigen::Quaterniond ExportRig::localRotation(int node, const Pose& pose) const {
     const ExportBoneNode& n = nodes[static_cast<std::size_t>(node)];
-    // The bone's own rotation; a root bone's follows the whole skeleton's.
-    const Eigen::Quaterniond own = pose.rotation(n.tailJoint).normalized();
-    const Eigen::Quaterniond q =
-        n.parent < 0 ? (pose.rotation(n.headJoint).normalized() * own).normalized() : own;
+    // The bone's own rotation after the root's (under the Armature) and its
+    // chain root's (a disconnected bone).
+    Eigen::Quaterniond q = pose.rotation(n.tailJoint).normalized();
+    for (auto joint = n.turnedBy.rbegin(); joint != n.turnedBy.rend(); ++joint)
+        q = (pose.rotation(*joint).normalized() * q).normalized();
     const Eigen::Quaterniond axisAligned = placementRotation * q * placementRotation.conjugate();
     const Eigen::Quaterniond parentFrame =
         n.parent < 0 ? Eigen::Quaterniond::Identity()
                      : nodes[static_cast<std::size_t>(n.parent)].restFrame;
     return (parentFrame.conjugate() * axisAligned * n.restFrame).normalized();
+}
+
+double ExportBoneNode::roll() const {
+    const Vec3 along = tail - head;
+    if (!(along.norm() > 0))
+        return 0.0;
+    const Eigen::Quaterniond plain = boneFrame(Vec3::UnitY(), along);
+    const Vec3 axis = along.normalized();
+    const Vec3 from = plain * Vec3::UnitX(), to = restFrame * Vec3::UnitX();
+    return std::atan2(axis.dot(from.cross(to)), from.dot(to));
 }
 
 }  // namespace rigmesh

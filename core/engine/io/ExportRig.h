@@ -7,7 +7,14 @@
 // Bone frames: at rest a bone node's +Y axis runs from its
 // head to its tail, Blender's bone convention, which its glTF, FBX and
 // COLLADA importers read to place each tail. The frame is the shortest
-// rotation taking +Y onto the bone (no roll). Optionally (`leafTips`) a leaf
+// rotation taking +Y onto the bone (no roll), or the bone's frame kept from
+// an imported file (Part::boneFrames), so that importers guess from it what
+// they guessed from the file.
+//
+// Disconnected bones (Skeleton.h): a bone leaving an attached chain's root
+// is a child of the node of the bone the chain hangs from, placed at its own
+// head (Blender's disconnected child); a root chain's bones hang from the
+// Armature node like root bones. Optionally (`leafTips`) a leaf
 // bone gets an end node `<bone>_end` at its tail, child of the bone node and
 // a joint without weights, like Blender's FBX "Add Leaf Bones": importers then
 // know the leaf's length too.
@@ -34,11 +41,24 @@ namespace rigmesh {
 
 struct ExportBoneNode {
     std::string name;
+    // The bone's own name when `name` had to differ from it to stay unique
+    // in the file (AssimpSceneBuilder: makeBoneNamesUnique), else empty;
+    // written beside the node for importers to map back (BoneTipHints.h).
+    std::string renamedFrom;
     int bone = -1;      // index in skeleton.bones()
     int parent = -1;    // index in ExportRig::nodes, -1 = the Armature node
     JointId headJoint;  // the joint nearer the root, about which the node turns
     JointId tailJoint;  // its pose rotation is the node's (Pose.h)
-    Vec3 head;          // placed and scaled
+    // Rotations applied before the node's own, outermost first (Pose.h): the
+    // root's for nodes under the Armature, a chain root's for its bones.
+    std::vector<JointId> turnedBy;
+    // For a node under the Armature: the pose's root joint and its placed
+    // rest position, about which the root's rotation turns the node's head.
+    JointId rootJoint = kNoJoint;
+    Vec3 rootPosition = Vec3::Zero();
+    // Its head is its parent bone's tail (Blender's "Connected").
+    bool connected = false;
+    Vec3 head;  // placed and scaled
     Vec3 tail;
     // Global rest orientation (placed): +Y (or -Z, BoneAxes) along head -> tail.
     Eigen::Quaterniond restFrame = Eigen::Quaterniond::Identity();
@@ -51,6 +71,10 @@ struct ExportBoneNode {
     Eigen::Affine3d inverseBind() const;
     // The tail in this node's rest frame.
     Vec3 localTail() const { return restFrame.conjugate() * (tail - head); }
+    // Blender's roll of this frame (radians): the angle about the bone from
+    // the frame without roll (+Y turned onto the bone by the shortest arc)
+    // to restFrame; 0 for a bone without length.
+    double roll() const;
 };
 
 struct ExportRig {
@@ -76,7 +100,7 @@ struct ExportRig {
 enum class BoneAxes { PlusY, GltfRootLeavesMinusZ };
 
 // The placement must be rigid (rotation and translation); scale goes into
-// unitScale. A bone's node is named after it (Part::boneNames, sanitized),
+// unitScale. A bone's node is named after it (Part::boneNames, unchanged),
 // else `<partName>_bone<id>`; names may repeat other parts' or nodes' (the
 // scene builder makes them unique). Throws Error on a skeleton with no root.
 ExportRig makeExportRig(const Part& part, const std::string& partName,

@@ -7,29 +7,13 @@
 #include <iterator>
 
 #include "base/Error.h"
+#include "io/FbxRecords.h"
 
 namespace rigmesh {
 namespace {
 
 constexpr char kMagic[] = "Kaydara FBX Binary  ";  // then '\0', 0x1a, 0x00
 constexpr std::size_t kHeaderSize = 27;            // magic, 2 bytes, uint32 version
-
-struct Record {
-    std::vector<std::uint8_t> body;  // property count .. properties (no end offset)
-    std::vector<Record> children;
-    std::string name;
-    bool noProperties = false;
-    bool nested = false;  // had a nested list (possibly only a null record)
-
-    // The FBX SDK's rule (as Blender's encode_bin.py writes it): a nested
-    // list, hence a null record, for a node with children, a node without
-    // properties, and always for AnimationStack and AnimationLayer (Assimp's
-    // reader drops the animation otherwise: "expected compound scope").
-    bool needsNullRecord() const {
-        return nested || !children.empty() || noProperties || name == "AnimationStack" ||
-               name == "AnimationLayer";
-    }
-};
 
 class Parser {
   public:
@@ -67,12 +51,12 @@ class Parser {
         return end > at && end <= limit && at + header + nameLength + propertiesLength <= end;
     }
 
-    Record read(std::size_t at) const {
+    FbxRecord read(std::size_t at) const {
         const std::size_t end = field(at);
         const std::size_t fs = fieldSize();
         const std::size_t nameLength = bytes_[at + 3 * fs];
         const std::size_t bodyEnd = at + 3 * fs + 1 + nameLength + field(at + 2 * fs);
-        Record record;
+        FbxRecord record;
         record.name.assign(
             bytes_.begin() + static_cast<std::ptrdiff_t>(at + 3 * fs + 1),
             bytes_.begin() + static_cast<std::ptrdiff_t>(at + 3 * fs + 1 + nameLength));
@@ -116,12 +100,12 @@ class Writer {
     }
     void putNull() { out.insert(out.end(), 3 * (wide_ ? 8u : 4u) + 1, 0); }
 
-    void write(const Record& record) {
+    void write(const FbxRecord& record) {
         const std::size_t start = out.size();
         put(0);
         out.insert(out.end(), record.body.begin(), record.body.end());
         if (record.needsNullRecord()) {
-            for (const Record& child : record.children)
+            for (const FbxRecord& child : record.children)
                 write(child);
             putNull();
         }
@@ -138,15 +122,6 @@ bool assimpNeedsFbxSentinelFix() {
     return aiGetVersionMajor() < 5 || (aiGetVersionMajor() == 5 && aiGetVersionMinor() < 3);
 }
 
-namespace {
-
-// The top-level records of a binary FBX, and where the footer starts.
-struct FbxFile {
-    bool wide = false;
-    std::vector<Record> top;
-    std::size_t footer = 0;
-};
-
 FbxFile parseFbx(const std::vector<std::uint8_t>& file) {
     if (file.size() < kHeaderSize || std::memcmp(file.data(), kMagic, sizeof kMagic - 1) != 0)
         Parser::fail("not a binary FBX file");
@@ -156,7 +131,7 @@ FbxFile parseFbx(const std::vector<std::uint8_t>& file) {
     const bool wide = version >= 7500;
     const Parser parser(file, wide);
 
-    std::vector<Record> top;
+    std::vector<FbxRecord> top;
     std::size_t cursor = kHeaderSize;
     while (cursor < file.size()) {
         if (parser.isNull(cursor)) {
@@ -176,13 +151,78 @@ FbxFile parseFbx(const std::vector<std::uint8_t>& file) {
 std::vector<std::uint8_t> writeFbx(const std::vector<std::uint8_t>& file, const FbxFile& fbx) {
     Writer writer(fbx.wide);
     writer.out.assign(file.begin(), file.begin() + kHeaderSize);
-    for (const Record& record : fbx.top)
+    for (const FbxRecord& record : fbx.top)
         writer.write(record);
     writer.putNull();
     writer.out.insert(writer.out.end(), file.begin() + static_cast<std::ptrdiff_t>(fbx.footer),
                       file.end());
     return std::move(writer.out);
 }
+
+std::vector<FbxProperty> fbxProperties(const FbxRecord& record, bool wide) {
+    const std::size_t fs = wide ? 8 : 4;
+    const std::vector<std::uint8_t>& body = record.body;
+    if (body.size() < 2 * fs + 1)
+        return {};
+    std::uint64_t count = 0;
+    for (std::size_t i = 0; i < fs; ++i)
+        count |= std::uint64_t(body[i]) << (8 * i);
+    std::size_t at = 2 * fs + 1 + record.name.size();
+    auto u32 = [&](std::size_t from) {
+        std::uint32_t value = 0;
+        for (std::size_t i = 0; i < 4; ++i)
+            value |= std::uint32_t(body[from + i]) << (8 * i);
+        return value;
+    };
+    std::vector<FbxProperty> out;
+    for (std::uint64_t p = 0; p < count; ++p) {
+        if (at >= body.size())
+            return {};
+        const char type = static_cast<char>(body[at]);
+        const std::size_t data = at + 1;
+        std::size_t size = 0;
+        switch (type) {
+            case 'C':
+                size = 1;
+                break;
+            case 'Y':
+                size = 2;
+                break;
+            case 'I':
+            case 'F':
+                size = 4;
+                break;
+            case 'D':
+            case 'L':
+                size = 8;
+                break;
+            case 'S':
+            case 'R':
+                if (data + 4 > body.size())
+                    return {};
+                size = 4 + std::size_t(u32(data));
+                break;
+            case 'f':
+            case 'd':
+            case 'l':
+            case 'i':
+            case 'b':
+                if (data + 12 > body.size())
+                    return {};
+                size = 12 + std::size_t(u32(data + 8));
+                break;
+            default:
+                return {};
+        }
+        if (data + size > body.size())
+            return {};
+        out.push_back({type, data});
+        at = data + size;
+    }
+    return out;
+}
+
+namespace {
 
 void putLittleEndian(std::vector<std::uint8_t>& out, std::uint64_t value, std::size_t bytes) {
     for (std::size_t i = 0; i < bytes; ++i)
@@ -202,18 +242,12 @@ void putDouble(std::vector<std::uint8_t>& out, double value) {
     putLittleEndian(out, bits, 8);
 }
 
-// A Properties70 entry: P: "name", "Vector", "", "A+U", x, y, z.
-Record vectorProperty(const std::string& name, const Vec3& value, bool wide) {
-    std::vector<std::uint8_t> properties;
-    putString(properties, name);
-    putString(properties, "Vector");
-    putString(properties, "");
-    putString(properties, "A+U");
-    for (int k = 0; k < 3; ++k)
-        putDouble(properties, value[k]);
-    Record record;
+// A Properties70 entry `P` of `count` properties already encoded.
+FbxRecord propertyRecord(std::uint64_t count, const std::vector<std::uint8_t>& properties,
+                         bool wide) {
+    FbxRecord record;
     record.name = "P";
-    putLittleEndian(record.body, 7, wide ? 8 : 4);
+    putLittleEndian(record.body, count, wide ? 8 : 4);
     putLittleEndian(record.body, properties.size(), wide ? 8 : 4);
     record.body.push_back(1);
     record.body.push_back('P');
@@ -221,8 +255,31 @@ Record vectorProperty(const std::string& name, const Vec3& value, bool wide) {
     return record;
 }
 
+// P: "name", "Vector", "", "A+U", x, y, z.
+FbxRecord vectorProperty(const std::string& name, const Vec3& value, bool wide) {
+    std::vector<std::uint8_t> properties;
+    putString(properties, name);
+    putString(properties, "Vector");
+    putString(properties, "");
+    putString(properties, "A+U");
+    for (int k = 0; k < 3; ++k)
+        putDouble(properties, value[k]);
+    return propertyRecord(7, properties, wide);
+}
+
+// P: "name", "KString", "", "U", "value".
+FbxRecord stringProperty(const std::string& name, const std::string& value, bool wide) {
+    std::vector<std::uint8_t> properties;
+    putString(properties, name);
+    putString(properties, "KString");
+    putString(properties, "");
+    putString(properties, "U");
+    putString(properties, value);
+    return propertyRecord(5, properties, wide);
+}
+
 // A Model record's name: its second property, "<name>\0\1Model".
-std::string modelName(const Record& model, bool wide) {
+std::string modelName(const FbxRecord& model, bool wide) {
     const std::size_t fs = wide ? 8 : 4;
     std::size_t at = 2 * fs + 1 + model.name.size();
     if (at + 9 > model.body.size() || model.body[at] != 'L')
@@ -240,29 +297,26 @@ std::string modelName(const Record& model, bool wide) {
     return full.substr(0, full.find('\0'));
 }
 
-}  // namespace
-
-std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file) {
-    return writeFbx(file, parseFbx(file));
-}
-
-std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& file,
-                                              const std::string& property,
-                                              const std::map<std::string, Vec3>& values) {
+// The file with make(value) appended to the Properties70 of each Model
+// named in `values`.
+template <typename Value, typename Make>
+std::vector<std::uint8_t> withModelProperties(const std::vector<std::uint8_t>& file,
+                                              const std::map<std::string, Value>& values,
+                                              Make make) {
     FbxFile fbx = parseFbx(file);
-    for (Record& objects : fbx.top) {
+    for (FbxRecord& objects : fbx.top) {
         if (objects.name != "Objects")
             continue;
-        for (Record& model : objects.children) {
+        for (FbxRecord& model : objects.children) {
             if (model.name != "Model")
                 continue;
             const auto value = values.find(modelName(model, fbx.wide));
             if (value == values.end())
                 continue;
             auto table = std::find_if(model.children.begin(), model.children.end(),
-                                      [](const Record& r) { return r.name == "Properties70"; });
+                                      [](const FbxRecord& r) { return r.name == "Properties70"; });
             if (table == model.children.end()) {
-                Record properties;
+                FbxRecord properties;
                 properties.name = "Properties70";
                 putLittleEndian(properties.body, 0, fbx.wide ? 8 : 4);
                 putLittleEndian(properties.body, 0, fbx.wide ? 8 : 4);
@@ -274,11 +328,33 @@ std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& f
                 model.nested = true;
                 table = model.children.begin();
             }
-            table->children.push_back(vectorProperty(property, value->second, fbx.wide));
+            table->children.push_back(make(value->second, fbx.wide));
             table->nested = true;
         }
     }
     return writeFbx(file, fbx);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file) {
+    return writeFbx(file, parseFbx(file));
+}
+
+std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& file,
+                                              const std::string& property,
+                                              const std::map<std::string, Vec3>& values) {
+    return withModelProperties(file, values, [&](const Vec3& value, bool wide) {
+        return vectorProperty(property, value, wide);
+    });
+}
+
+std::vector<std::uint8_t> withFbxModelStrings(const std::vector<std::uint8_t>& file,
+                                              const std::string& property,
+                                              const std::map<std::string, std::string>& values) {
+    return withModelProperties(file, values, [&](const std::string& value, bool wide) {
+        return stringProperty(property, value, wide);
+    });
 }
 
 }  // namespace rigmesh

@@ -39,5 +39,10 @@ std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file)
 std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& file,
                                               const std::string& property,
                                               const std::map<std::string, Vec3>& values);
+// The same with a user property of type KString (our bones' names where
+// the file's had to differ, BoneTipHints.h).
+std::vector<std::uint8_t> withFbxModelStrings(const std::vector<std::uint8_t>& file,
+                                              const std::string& property,
+                                              const std::map<std::string, std::string>& values);
 
 }  // namespace rigmesh

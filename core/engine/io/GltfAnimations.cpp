@@ -2,6 +2,7 @@
 
 #include <assimp/anim.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cstring>
 #include <limits>
@@ -90,6 +91,30 @@ std::vector<float> rotationsOf(const aiQuatKey* keys, unsigned count) {
     return values;
 }
 
+// A node an animation targets must not have a `matrix` (glTF 2.0, 5.25:
+// the validator's ANIMATION_CHANNEL_TARGET_NODE_MATRIX). Assimp writes
+// `matrix` when the scene it exports has no animation, as ours does while
+// we write them (SceneExport.cpp): the matrix becomes translation,
+// rotation and scale.
+void matrixToTrs(json& node) {
+    if (!node.contains("matrix") || !node["matrix"].is_array() || node["matrix"].size() != 16)
+        return;
+    Eigen::Matrix4d m;
+    for (int k = 0; k < 16; ++k)  // column-major
+        m(k % 4, k / 4) = node["matrix"][static_cast<std::size_t>(k)].get<double>();
+    Eigen::Matrix3d linear = m.topLeftCorner<3, 3>();
+    const Eigen::Vector3d scale(linear.col(0).norm(), linear.col(1).norm(), linear.col(2).norm());
+    for (int k = 0; k < 3; ++k)
+        if (scale[k] > 0)
+            linear.col(k) /= scale[k];
+    const Eigen::Quaterniond rotation = Eigen::Quaterniond(linear).normalized();
+    node.erase("matrix");
+    node["translation"] = {m(0, 3), m(1, 3), m(2, 3)};
+    node["rotation"] = {rotation.x(), rotation.y(), rotation.z(), rotation.w()};
+    if (!scale.isApprox(Eigen::Vector3d::Ones(), 1e-9))
+        node["scale"] = {scale.x(), scale.y(), scale.z()};
+}
+
 }  // namespace
 
 std::string withGltfAnimations(const std::string& gltfJson, std::string& bin,
@@ -119,6 +144,7 @@ std::string withGltfAnimations(const std::string& gltfJson, std::string& bin,
             if (node == nodeNamed.end())
                 throw Error(std::string("cannot export the animation: no node ") +
                             channel.mNodeName.C_Str());
+            matrixToTrs(gltf["nodes"][static_cast<std::size_t>(node->second)]);
             // The three paths share one input when their keys share times
             // (AssimpAnimationBuilder writes them so), else each has its own.
             const std::vector<float> rotationTimes =

@@ -19,6 +19,7 @@
 #include "io/BoneTipHints.h"
 #include "io/ColladaSkinsAndClips.h"
 #include "io/ExportFormat.h"
+#include "io/FbxRotationCurves.h"
 #include "io/FbxSentinels.h"
 #include "io/FiniteScene.h"
 #include "io/GltfAnimations.h"
@@ -170,12 +171,12 @@ void stageObj(const aiScene& scene, const fs::path& target, std::vector<StagedFi
 }
 
 // What Assimp's glTF needs after export: its root node lifted out, one skin
-// per armature, leaf tail hints (GltfSceneRoots.h, GltfSkins.h,
+// per armature, every bone's tail hint (GltfSceneRoots.h, GltfSkins.h,
 // BoneTipHints.h).
 std::string gltfPostPasses(const std::string& json, std::string& bin,
                            const std::vector<ExportRig>& rigs) {
     const std::string lifted = withRootChildrenAsSceneRoots(json);
-    return withGltfLeafTails(withOneSkinPerArmature(lifted, bin), rigs);
+    return withGltfBoneTails(withOneSkinPerArmature(lifted, bin), rigs);
 }
 
 // The parts at the options' detail level (held in `detailed`), or `parts`.
@@ -265,7 +266,12 @@ StagedExport stageScene(const std::vector<ExportPart>& parts, const Clip* clip,
                     std::vector<std::uint8_t>(files.main.begin(), files.main.end()));
                 files.main.assign(fixed.begin(), fixed.end());
             }
-            files.main = withFbxLeafTails(files.main, rigs);
+            {
+                const std::vector<std::uint8_t> continuous = withContinuousFbxRotations(
+                    std::vector<std::uint8_t>(files.main.begin(), files.main.end()));
+                files.main.assign(continuous.begin(), continuous.end());
+            }
+            files.main = withFbxBoneTails(files.main, rigs);
             staged.files_.emplace_back(target, files.main);
             break;
         case ExportFormat::Collada:

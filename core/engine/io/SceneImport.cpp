@@ -5,6 +5,7 @@
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -15,6 +16,7 @@
 
 #include "base/Error.h"
 #include "base/MessageText.h"
+#include "io/AssimpBoneHints.h"
 #include "io/AssimpConversions.h"
 #include "io/AssimpNodeTree.h"
 #include "io/AssimpRigImport.h"
@@ -46,6 +48,10 @@ const aiScene* readScene(Assimp::Importer& importer, const std::string& path) {
         throw Error(MessageId::ImportNoSuchFile, fileName(path));
     // FBX pivots as extra `$AssimpFbx$` nodes would split bones from their nodes.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
+    // Every FBX animation curve, also one that holds the rest pose: by
+    // default Assimp drops such curves, and with them a one-key clip (a
+    // Half-Life or SMD reference pose) whole.
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_OPTIMIZE_EMPTY_ANIMATION_CURVES, false);
     // COLLADA nodes by their names (Blender's "Lower"), not their ids
     // ("Rig_Lower"): the names a rigger gave the bones.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_USE_COLLADA_NAMES, true);
@@ -62,24 +68,6 @@ const aiScene* readScene(Assimp::Importer& importer, const std::string& path) {
     if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mRootNode == nullptr)
         throw Error(MessageId::ImportIncomplete, fileName(path));
     return scene;
-}
-
-// Triangles only (points and lines are left out, and so are triangles that
-// repeat a corner: they show nothing), vertices in world space.
-TriMesh worldMesh(const aiMesh& mesh, const Eigen::Affine3d& global) {
-    TriMesh out;
-    out.vertices.reserve(mesh.mNumVertices);
-    for (unsigned v = 0; v < mesh.mNumVertices; ++v)
-        out.vertices.push_back(global * fromAi(mesh.mVertices[v]));
-    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-        const aiFace& face = mesh.mFaces[f];
-        if (face.mNumIndices == 3 && face.mIndices[0] != face.mIndices[1] &&
-            face.mIndices[1] != face.mIndices[2] && face.mIndices[0] != face.mIndices[2])
-            out.faces.push_back({static_cast<int>(face.mIndices[0]),
-                                 static_cast<int>(face.mIndices[1]),
-                                 static_cast<int>(face.mIndices[2])});
-    }
-    return out;
 }
 
 bool isCollada(const std::string& path) {
@@ -114,18 +102,6 @@ double metresPerFileUnit(const aiScene& scene) {
             return centimetres / 100.0;
     }
     return 1.0;
-}
-
-// A part's name: its node's (the object a user named, e.g. Blender's
-// "Capsule"), else its mesh's (e.g. "Cylinder"), else "part".
-std::string partName(const aiMesh& mesh, const aiNode& node) {
-    for (const aiString* name : {&node.mName, &mesh.mName}) {
-        std::string text = name->C_Str();
-        // Assimp's COLLADA reader names nodes with no name after their mesh.
-        if (!text.empty() && text != "RootNode" && text.find("$Assimp") == std::string::npos)
-            return text;
-    }
-    return "part";
 }
 
 // The file's bone names on the part's bones, when they are distinct and
@@ -201,27 +177,63 @@ ImportedScene importScene(const std::string& path) {
                     break;
                 }
 
-    const std::map<std::string, Vec3> colladaTips =
-        isCollada(path) ? readColladaBoneTips(readText(path)) : std::map<std::string, Vec3>();
+    RigHints hints;
+    for (unsigned a = 0; a < scene.mNumAnimations; ++a)
+        for (unsigned c = 0; c < scene.mAnimations[a]->mNumChannels; ++c)
+            hints.animatedNodes.insert(scene.mAnimations[a]->mChannels[c]->mNodeName.C_Str());
+    if (isCollada(path)) {
+        const std::string text = readText(path);
+        hints.colladaTips = readColladaBoneTips(text);
+        hints.colladaConnections = readColladaBoneConnections(text);
+        hints.colladaNames = readColladaBoneNames(text);
+    }
 
-    ImportedScene result;
-    std::set<unsigned> claimed;  // animations given to a part
+    // Skinned meshes by the skeleton they share, each other mesh alone, in
+    // the order of each part's first mesh.
+    std::vector<SkinnedMesh> skinned;
+    std::vector<std::vector<SkinnedMesh>> parts;
     for (const MeshInstance& instance : instances) {
         const aiMesh& mesh = *scene.mMeshes[instance.mesh];
-        const Eigen::Affine3d global = meshToWorld(mesh, tree.restGlobal(instance.node), tree);
-        ImportedPart imported;
-        imported.part.name = partName(mesh, tree.node(instance.node));
-        imported.part.mesh = worldMesh(mesh, global);
-        imported.part.surfaceFromFile = true;  // as the file has it: maybe open
-        std::string why = "it has no skeleton";
+        const SkinnedMesh item{instance.mesh, instance.node,
+                               meshToWorld(mesh, tree.restGlobal(instance.node), tree)};
         if (mesh.mNumBones > 0)
-            why = importRig(mesh, global, tree, weightedAnywhere, colladaTips, imported);
+            skinned.push_back(item);
+        else
+            parts.push_back({item});
+    }
+    std::vector<std::vector<SkinnedMesh>> groups =
+        groupBySkeleton(scene, tree, skinned, weightedAnywhere, hints);
+    parts.insert(parts.end(), groups.begin(), groups.end());
+    std::stable_sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) {
+        return a.front().node < b.front().node ||
+               (a.front().node == b.front().node && a.front().mesh < b.front().mesh);
+    });
+
+    ImportedScene result;
+    for (const std::vector<SkinnedMesh>& group : parts) {
+        const aiMesh& first = *scene.mMeshes[group.front().mesh];
+        ImportedPart imported;
+        imported.part.name = meshName(first, tree.node(group.front().node));
+        ImportedBones bones;
+        std::string why = "it has no skeleton";
+        if (first.mNumBones > 0)
+            why = importRig(scene, group, tree, weightedAnywhere, hints, imported, bones);
+        else
+            imported.part.mesh = worldMesh(first, group.front().global);
+        imported.part.surfaceFromFile = true;  // as the file has it: maybe open
         if (why.empty()) {
             keepBoneNames(imported);
+            for (unsigned a = 0; a < scene.mNumAnimations; ++a)
+                if (std::optional<Clip> clip =
+                        importClip(*scene.mAnimations[a], tree, imported, bones)) {
+                    clip->name = actionName(scene.mAnimations[a]->mName.C_Str());
+                    imported.clips.push_back(std::move(*clip));
+                }
         } else {
             imported.needsRig = true;
             imported.part.skeleton = Skeleton();
             imported.part.weights = SkinWeightsById();
+            imported.part.boneFrames.clear();
             imported.boneNames.clear();
             result.needsRig = true;
             result.message += (result.message.empty() ? "" : "; ") + std::string("part '") +
@@ -229,18 +241,6 @@ ImportedScene importScene(const std::string& path) {
                               "); rig it with Tools > Auto-Rig Part or `rigmesh rig`";
         }
         result.parts.push_back(std::move(imported));
-        // Each animation goes to the first part whose bones it moves (a file
-        // of ours has one per animated part).
-        ImportedPart& part = result.parts.back();
-        for (unsigned a = 0; a < scene.mNumAnimations && !part.needsRig && !part.clip; ++a) {
-            if (claimed.contains(a))
-                continue;
-            part.clip = importClip(*scene.mAnimations[a], mesh, global, tree, part);
-            if (part.clip) {
-                part.clip->name = actionName(scene.mAnimations[a]->mName.C_Str());
-                claimed.insert(a);
-            }
-        }
     }
     return result;
 }

@@ -1,29 +1,41 @@
-// Importing meshes, skeletons, skin weights and a clip through Assimp:
-// whatever Assimp reads (.glb, .gltf, .fbx, .dae, .obj, .ply, ...).
-// Assimp stays inside the .cpp files.
+// Importing meshes, skeletons, skin weights and clips through Assimp:
+// whatever Assimp reads (.glb, .gltf, .fbx, .dae, .x, .mdl, .smd,
+// .md5mesh, .obj, .ply, ...). Assimp stays inside the .cpp files.
 //
-// Each mesh becomes a part (a mesh instanced on several nodes is taken once),
-// named after its node (else its mesh), its vertices in world space: a
-// skinned mesh where its bones' nodes and offset matrices put it (as glTF
-// and Blender do), another by its node's transform; in metres (an FBX's
-// UnitScaleFactor applied; Assimp applies COLLADA's unit; COLLADA nodes by
-// their names, not ids). Bone names are kept (Part::boneNames) when
-// distinct, and the animation's name (Blender's FBX `Rig|Wave` -> `Wave`)
-// as the clip's. vertices
-// shared again by Assimp's JoinIdenticalVertices (so their order may differ
-// from the exporter's). A skinned mesh gets a skeleton from the node
-// hierarchy of its bones: every bone node's head is a joint (joints at the
-// same place are one, within 1e-5 of the mesh's size), its tail is the head
-// of its first child bone, or of its end bone (`<bone>_end` without weights:
-// ours with leafBones, Blender's FBX "Add Leaf Bones"), or a `<bone>_end`
-// node anywhere (our older exports), or our tail hint (glTF
-// extras, FBX user property, BoneTipHints.h), or Blender's COLLADA tip
-// extra; else, as Blender guesses, along the bone node's +Y as long as its
-// parent (a tenth of the mesh's size for a lone bone). End bones are not
-// bones of the part. The bind pose comes from the bones'
-// offset (inverse bind) matrices. Each animation becomes the Clip of the first part whose
-// bones it moves (one per part). A mesh without bones imports with an empty skeleton and
-// needsRig = true: it can be posed once rigged (autorig/AutoRig).
+// Every rig a file holds comes in whole (ARCHITECTURE.md section 2e):
+// - The skinned meshes sharing one skeleton (AssimpRigImport.h:
+//   groupBySkeleton) become one part whose mesh is theirs one after the
+//   other, kept as Part::meshPieces when there are several (exported as
+//   separate meshes again); it is named after its first mesh's node (the
+//   object a user named), else its mesh. Every other mesh becomes an
+//   unrigged part of its own (a mesh instanced on several nodes is taken
+//   once), with needsRig.
+// - Vertices in world space: a skinned mesh where its bones' nodes and offset
+//   matrices put it (as glTF and Blender do), another by its node's
+//   transform; in metres (an FBX's UnitScaleFactor applied; Assimp applies
+//   COLLADA's unit; COLLADA nodes by their names, not ids); shared again by
+//   Assimp's JoinIdenticalVertices (so their order may differ from the
+//   exporter's).
+// - Bones: every bone the meshes name (by node; a bone naming no node is a
+//   root bone at its bind place that never moves), the nodes between two of
+//   them (as Blender makes them), bones weighting no vertex and bones outside
+//   the skin alike. End bones (`<bone>_end` without weights: ours with
+//   leafBones, Blender's FBX "Add Leaf Bones") only mark their parent's tail.
+//   The bind pose comes from the offset (inverse bind) matrices; each bone's
+//   bind axes are kept (Part::boneFrames). Tails and connections as
+//   BoneTails.h says (the file's connect flags and tails first, then the
+//   file's bone axis and children, then the weighted vertices). A connected
+//   bone's head is its parent's tail joint; disconnected children of one
+//   bone starting at one place share a joint attached to it; root bones at
+//   the first one's head share the root joint; other root bones start
+//   further root chains (Skeleton.h). Bone names are kept
+//   (Part::boneNames) when distinct.
+// - Every animation that moves a part's bones becomes one of its clips,
+//   named after the animation (Blender's FBX `Rig|Wave` -> `Wave`), keys at
+//   the file's key times (in seconds), the rate the first common one that
+//   puts them on frames (AssimpBoneHints.h: clipRate), linear.
+// A mesh without bones imports with an empty skeleton and needsRig = true:
+// it can be posed once rigged (autorig/AutoRig).
 #pragma once
 
 #include <optional>
@@ -40,8 +52,9 @@ struct ImportedPart {
     // Per bone index (part.skeleton.bones() order): the bone's node name.
     std::vector<std::string> boneNames;
     bool needsRig = false;  // no usable skeleton or weights
-    // The first animation of the file that moves this part's bones.
-    std::optional<Clip> clip;
+    // Every animation of the file that moves this part's bones, in the
+    // file's order, each named after its animation.
+    std::vector<Clip> clips;
 };
 
 struct ImportedScene {

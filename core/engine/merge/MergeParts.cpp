@@ -11,6 +11,7 @@
 #include "mesh/MeshAdjacency.h"
 #include "mesh/MeshSelfIntersections.h"
 #include "part/BoneAnnotations.h"
+#include "part/BoneConnection.h"
 #include "part/CarryAcross.h"
 #include "rig/BoneSegments.h"
 #include "rig/LocalBoneHeat.h"
@@ -165,6 +166,9 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
     const auto start = Clock::now();
     if (target.skeleton.boneCount() == 0 || dragged.skeleton.boneCount() == 0)
         throw Error(MessageId::MergeNeedsRiggedParts);
+    // The joined skeleton is one connected tree (SkeletonJoin).
+    requireConnectedSkeleton(target);
+    requireConnectedSkeleton(dragged);
     checkMergeInput(target, MessageId::MergeTargetNotSolid, MessageId::MergeTargetIntersectsItself);
     checkMergeInput(dragged, MessageId::MergeDraggedNotSolid,
                     MessageId::MergeDraggedIntersectsItself);

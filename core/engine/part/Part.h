@@ -9,12 +9,24 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "mesh/TriMesh.h"
 #include "part/BoneWeights.h"
 #include "rig/Skeleton.h"
 #include "surface/SketchSurface.h"
 
 namespace rigmesh {
+
+// One of the meshes an imported skeleton was shared by (several meshes bound
+// to one armature come in as one part: ARCHITECTURE.md section 2e): the
+// part's vertices and faces are the pieces' in order, each piece's faces
+// using its own vertices only.
+struct PartMeshPiece {
+    std::string name;
+    int vertexCount = 0;
+    int faceCount = 0;
+};
 
 struct Part {
     std::string name;
@@ -41,6 +53,15 @@ struct Part {
     // Bone names kept from an imported file: exported as
     // they are (made unique); a bone without one is `<part>_bone<id>`.
     std::map<BoneId, std::string> boneNames;
+    // Rest orientations kept from an imported file: the axes of each bone's
+    // node in the bind pose (Blender's bone axes and roll, or another
+    // program's), exported as they are so that importers guess the same
+    // tails, rolls and connections from them. A bone without one (sketched,
+    // or moved by an edit) is exported with +Y along the bone.
+    std::map<BoneId, Eigen::Quaterniond> boneFrames;
+    // The meshes of a shared skeleton (empty: one mesh), exported as
+    // separate meshes again. Any edit of the surface's topology clears it.
+    std::vector<PartMeshPiece> meshPieces;
     // Bones whose weights painting and the weight clean-ups keep as they are:
     // an editing aid saved with the part, like Blender's
     // vertex group locks. Every id is a bone of the skeleton.
@@ -66,7 +87,9 @@ struct Part {
     // unrigged import), and weights that name bones the skeleton has, are
     // finite, positive, sorted by bone id and sum to 1 for every vertex,
     // known closest bones and failed bones the skeleton has, bone names for
-    // existing bones, non-empty and distinct, locked bones that exist. Every
+    // existing bones, non-empty and distinct, locked bones that exist, bone
+    // frames of existing bones (finite unit quaternions), mesh pieces that
+    // cover the mesh and keep their faces to their vertices. Every
     // operation that changes a
     // part checks its result with it; so does every reader of untrusted data.
     std::vector<std::string> validate() const;

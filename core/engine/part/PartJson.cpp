@@ -78,16 +78,26 @@ json partToJson(const Part& part) {
         bones["tails"].push_back(b.tail);
     }
 
+    json skeleton = {
+        {"joints", std::move(joints)}, {"bones", std::move(bones)}, {"root", part.skeleton.root()}};
+    // Written only for disconnected bones (format version 5), so connected
+    // skeletons keep their bytes.
+    if (!part.skeleton.attachments().empty()) {
+        json attached = {{"joints", json::array()}, {"bones", json::array()}};
+        for (const auto& [joint, bone] : part.skeleton.attachments()) {
+            attached["joints"].push_back(joint);
+            attached["bones"].push_back(bone);
+        }
+        skeleton["attachments"] = std::move(attached);
+    }
+
     json out = {
         {"name", part.name},
         {"outline", jsonwrite::flatVec2s(part.outline)},
         {"mesh", std::move(mesh)},
         {"origins", std::move(origins)},
         {"mirror", part.mirror},
-        {"skeleton",
-         {{"joints", std::move(joints)},
-          {"bones", std::move(bones)},
-          {"root", part.skeleton.root()}}},
+        {"skeleton", std::move(skeleton)},
         {"weights",
          {{"byBoneId", pairs(part.weights.perVertex)},
           {"failedBoneIds", part.weights.failedBones},
@@ -100,6 +110,20 @@ json partToJson(const Part& part) {
         out["lockedBones"] = part.lockedBones;
     if (part.weightsPainted)
         out["weightsPainted"] = true;
+    if (!part.boneFrames.empty()) {  // [[bone id, w, x, y, z], ...] in bone id order
+        json frames = json::array();
+        for (const auto& [bone, q] : part.boneFrames)
+            frames.push_back(json::array({bone, q.w(), q.x(), q.y(), q.z()}));
+        out["boneFrames"] = std::move(frames);
+    }
+    if (!part.meshPieces.empty()) {
+        json pieces = json::array();
+        for (const PartMeshPiece& piece : part.meshPieces)
+            pieces.push_back({{"name", piece.name},
+                              {"vertexCount", piece.vertexCount},
+                              {"faceCount", piece.faceCount}});
+        out["meshPieces"] = std::move(pieces);
+    }
     out["surfaceFromFile"] = part.surfaceFromFile;
     return out;
 }
@@ -194,7 +218,23 @@ Skeleton readSkeleton(const json& object) {
     const auto root = integer<JointId>(field(object, "root"), "skeleton root");
     if (root != kNoJoint ? !known.contains(root) : !known.empty())
         fail("the skeleton root is not one of its joints");
-    Skeleton skeleton = Skeleton::restore(std::move(jointList), std::move(boneList), root);
+    std::map<JointId, BoneId> attachments;
+    if (object.contains("attachments")) {  // since format version 5
+        const json& attached = field(object, "attachments");
+        const json& attachedJoints = array(attached, "joints");
+        const json& parents = array(attached, "bones");
+        if (attachedJoints.size() != parents.size())
+            fail("attached joints and their bones differ in number");
+        for (std::size_t i = 0; i < attachedJoints.size(); ++i) {
+            const auto joint = integer<JointId>(attachedJoints[i], "attached joint");
+            const auto bone = integer<BoneId>(parents[i], "attachment bone");
+            if (!known.contains(joint) || (bone != kNoBone && !knownBones.contains(bone)) ||
+                !attachments.emplace(joint, bone).second)
+                fail("an attachment refers to a missing joint or bone, or twice to one joint");
+        }
+    }
+    Skeleton skeleton =
+        Skeleton::restore(std::move(jointList), std::move(boneList), root, std::move(attachments));
     if (skeleton.jointCount() > 0)
         if (const std::vector<std::string> problems = skeleton.validate(); !problems.empty())
             fail("the skeleton is not a tree: " + problems.front());
@@ -293,6 +333,26 @@ Part partFromJson(const json& object) {
         }
     if (object.contains("weightsPainted"))  // optional: older files lack it
         part->weightsPainted = boolean(field(object, "weightsPainted"), "weightsPainted");
+    if (object.contains("boneFrames"))  // since format version 5
+        for (const json& entry : array(object, "boneFrames")) {
+            if (!entry.is_array() || entry.size() != 5)
+                fail("a bone frame is not [bone id, w, x, y, z]");
+            const auto bone = integer<BoneId>(entry[0], "bone frame");
+            const Eigen::Quaterniond q(
+                number(entry[1], "bone frame"), number(entry[2], "bone frame"),
+                number(entry[3], "bone frame"), number(entry[4], "bone frame"));
+            if (!part->skeleton.hasBone(bone) || std::abs(q.squaredNorm() - 1.0) > 1e-6 ||
+                !part->boneFrames.emplace(bone, q).second)
+                fail("a bone frame is not a unit rotation of a bone, or names one twice");
+        }
+    if (object.contains("meshPieces"))  // since format version 5
+        for (const json& entry : array(object, "meshPieces"))
+            part->meshPieces.push_back({text(field(entry, "name"), "mesh piece name"),
+                                        integer<int>(field(entry, "vertexCount"), "mesh piece"),
+                                        integer<int>(field(entry, "faceCount"), "mesh piece")});
+    if (!part->meshPieces.empty())
+        if (const std::vector<std::string> problems = part->validate(); !problems.empty())
+            fail(problems.front());
     // Parts written before it was stored: only a sketch's surface (it keeps
     // its outline) is known to have been made here.
     part->surfaceFromFile = object.contains("surfaceFromFile")

@@ -82,6 +82,33 @@ void checkBoneLists(const std::vector<std::vector<std::pair<BoneId, double>>>& l
     }
 }
 
+// The pieces cover the vertices and faces in order, and each piece's faces
+// use its own vertices.
+void checkMeshPieces(const TriMesh& mesh, const std::vector<PartMeshPiece>& pieces,
+                     Problems& problems) {
+    if (pieces.empty())
+        return;
+    int firstVertex = 0, firstFace = 0;
+    for (const PartMeshPiece& piece : pieces) {
+        if (piece.vertexCount < 0 || piece.faceCount < 0 ||
+            piece.vertexCount > mesh.vertexCount() - firstVertex ||
+            piece.faceCount > mesh.faceCount() - firstFace) {
+            problems.add("The mesh pieces do not fit the mesh.");
+            return;
+        }
+        for (int f = firstFace; f < firstFace + piece.faceCount; ++f)
+            for (int corner : mesh.faces[f])
+                if (corner < firstVertex || corner >= firstVertex + piece.vertexCount) {
+                    problems.add("Mesh piece '" + piece.name + "' uses another piece's vertex.");
+                    return;
+                }
+        firstVertex += piece.vertexCount;
+        firstFace += piece.faceCount;
+    }
+    if (firstVertex != mesh.vertexCount() || firstFace != mesh.faceCount())
+        problems.add("The mesh pieces do not cover the mesh.");
+}
+
 }  // namespace
 
 std::vector<std::string> Part::validate() const {
@@ -139,6 +166,13 @@ std::vector<std::string> Part::validate() const {
                          " is locked but the skeleton has no such bone.");
             break;
         }
+    for (const auto& [bone, frame] : boneFrames)
+        if (!skeleton.hasBone(bone) || !frame.coeffs().allFinite() ||
+            std::abs(frame.squaredNorm() - 1.0) > 1e-6) {
+            problems.add("A bone frame is not a unit rotation or names a missing bone.");
+            break;
+        }
+    checkMeshPieces(mesh, meshPieces, problems);
     return problems.take();
 }
 

@@ -35,6 +35,12 @@ PosedSkeleton forwardKinematics(const PoseHierarchy& h, const Pose& pose) {
             world = RigidTransform::rotationAbout(checkedRotation(pose, h.jointId(j)),
                                                   h.restPosition(j));
             world.translation += pose.rootTranslation;
+        } else if (h.attached(j)) {
+            // An attached chain's root follows its parent bone's frame
+            // rigidly; its own rotation turns the chain about it.
+            world = posed.jointTransforms[h.parent(j)] *
+                    RigidTransform::rotationAbout(checkedRotation(pose, h.jointId(j)),
+                                                  h.restPosition(j));
         } else {
             // The bone from the parent to j turns about its head, the parent.
             const int parent = h.parent(j);

@@ -5,6 +5,11 @@
 // skeleton):
 //     F_root = translate(rootTranslation) * rotate(r_root about rest_root)
 //     F_j    = F_parent(j) * rotate(r_j about rest_parent(j))
+// and for the root j of an attached chain (Skeleton.h: a disconnected bone's
+// head, whose parent joint is the tail of the bone it hangs from)
+//     F_j    = F_parent(j) * rotate(r_j about rest_j),
+// so the chain's head moves with its parent bone's frame, as Blender moves a
+// disconnected child, and r_j turns the whole chain about its head.
 // F_j maps rest space to posed space for everything rigidly attached to the
 // bone ending at j: it is the bone's world frame times the inverse of its
 // rest frame (rest frames are translations to the rest positions, world

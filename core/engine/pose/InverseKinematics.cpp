@@ -42,15 +42,22 @@ Vec3 clampToCone(const Vec3& ref, const Vec3& desired, const Vec3& current, doub
     return Eigen::AngleAxisd(limit, axis.normalized()) * ref;
 }
 
-// The chain being solved: joints c_0 (base, fixed) .. c_n (dragged),
-// positions, and the rotations of its bones c_i -> c_{i+1} (Pose.h: keyed
-// by c_{i+1}).
+// The chain being solved: pivots c_0 (base, fixed) .. c_n (dragged),
+// positions, and the rotations of its segments c_i -> c_{i+1}. A segment is
+// a bone (Pose.h: its rotation keyed by c_{i+1}), or, where c_{i+1} is an
+// attached chain's root, the bone it hangs from together with the rigid
+// link to it (keyed by that bone's tail, which is no pivot): the chain
+// crosses a disconnected joint as its head follows its parent's frame.
 struct Chain {
     std::vector<int> joints;
-    std::vector<double> lengths;  // per bone c_i -> c_{i+1}
-    std::vector<Vec3> restDirs;   // unit, per bone
-    std::vector<double> limits;   // per bone: its cone limit (or > pi)
+    std::vector<double> lengths;  // per segment c_i -> c_{i+1}
+    std::vector<Vec3> restDirs;   // unit, per segment
+    std::vector<double> limits;   // per segment: its cone limit (or > pi)
     std::vector<Eigen::Quaterniond> local;
+    // Per segment: the rotation of the chain root it ends at (identity at a
+    // joint a bone ends at), turning the segments below it (FK's r_j about
+    // an attached joint).
+    std::vector<Eigen::Quaterniond> after;
     std::vector<Vec3> positions;
     Eigen::Quaterniond baseParentWorld;  // world rotation of the bone ending at c_0
     double totalLength = 0;
@@ -74,7 +81,7 @@ struct Chain {
             world = (Eigen::Quaterniond::FromTwoVectors(current, desired) * world).normalized();
             local[i] = (parentWorld.conjugate() * world).normalized();
             positions[i + 1] = positions[i] + lengths[i] * (world * restDirs[i]);
-            parentWorld = world;
+            parentWorld = world * after[i];
         }
     }
 
@@ -203,29 +210,54 @@ IkResult dragJoint(const PoseHierarchy& h, const Pose& pose, JointId joint, cons
     // the bones below it turn, each about its head, and carry only their own
     // subtrees, so the base's other branches never move. A bone above a
     // joint with a pin in its subtree would carry the pin along, so the chain
-    // never reaches past one: pins hold in world space at any reach.
+    // never reaches past one: pins hold in world space at any reach. An
+    // attached chain's root is crossed by turning the bone it hangs from (its
+    // tail is no pivot), unless that bone cannot turn alone: a root chain (no
+    // bone), a tail with a pin at or below it or, with limb reach, a tail
+    // where other bones or chains leave.
+    auto stopsAt = [&](int at) {
+        return pinsBelow[at] > 0 || (options.stopAtJunctions && h.children(at).size() > 1);
+    };
     std::vector<int> joints{dragged};
+    std::vector<int> keys;  // per segment, walking up: the joint its rotation is keyed by
     for (int current = dragged; h.parent(current) >= 0;) {
-        current = h.parent(current);
-        joints.push_back(current);
-        if (pinsBelow[current] > 0 || (options.stopAtJunctions && h.children(current).size() > 1))
+        int up = h.parent(current);
+        int key = current;
+        if (h.attached(current)) {
+            if (up == h.root() || stopsAt(up))
+                break;
+            key = up;
+            up = h.parent(up);
+        }
+        keys.push_back(key);
+        joints.push_back(up);
+        current = up;
+        if (stopsAt(current))
             break;
     }
     std::reverse(joints.begin(), joints.end());
+    std::reverse(keys.begin(), keys.end());
+    if (keys.empty())
+        return result;  // a root chain's root: no bone carries it
 
     Chain chain;
     chain.joints = joints;
-    const int bones = static_cast<int>(joints.size()) - 1;
+    const int bones = static_cast<int>(keys.size());
     for (int i = 0; i < bones; ++i) {
         const Vec3 rest = h.restPosition(joints[i + 1]) - h.restPosition(joints[i]);
         chain.lengths.push_back(rest.norm());
-        chain.restDirs.push_back(rest.normalized());
+        // A zero-length segment (a chain hanging at its parent bone's head)
+        // has no direction of its own; it never moves the next pivot.
+        chain.restDirs.push_back(rest.norm() > 0 ? Vec3(rest.normalized()) : Vec3::UnitY());
         chain.totalLength += chain.lengths.back();
-        const JointId key = h.jointId(joints[i + 1]);
+        const JointId key = h.jointId(keys[static_cast<std::size_t>(i)]);
         const auto limit = options.coneLimits.find(key);
         chain.limits.push_back(limit == options.coneLimits.end() ? 2 * M_PI : limit->second);
         // The rotation FK used (normalised; FK rejected zero and non-finite).
         chain.local.push_back(pose.rotation(key).normalized());
+        chain.after.push_back(h.attached(joints[i + 1])
+                                  ? pose.rotation(h.jointId(joints[i + 1])).normalized()
+                                  : Eigen::Quaterniond::Identity());
     }
     chain.baseParentWorld = posed.jointTransforms[joints[0]].rotation;
     for (int j : joints)
@@ -271,7 +303,7 @@ IkResult dragJoint(const PoseHierarchy& h, const Pose& pose, JointId joint, cons
             }
         }
         for (int i = 0; i < bones; ++i)
-            result.pose.setRotation(h.jointId(joints[i + 1]), chain.local[i]);
+            result.pose.setRotation(h.jointId(keys[static_cast<std::size_t>(i)]), chain.local[i]);
     }
 
     result.iterations = iterations;

@@ -9,7 +9,10 @@
 // joint), relative to the parent bone; it carries the bone and everything
 // below it, and nothing else: the bones leaving one junction turn
 // independently. The root joint's rotation turns the whole skeleton about
-// the root, and rootTranslation then moves it.
+// the root, and rootTranslation then moves it. The root of an attached chain
+// (Skeleton.h: the head of disconnected bones) ends no bone: its rotation
+// turns its chain about it, as the root's turns the skeleton; the bones
+// leaving it then turn relative to that.
 //
 // Frames: at rest every bone frame has the world axes, so identity
 // everywhere is the rest pose, and a bone's world rotation is its parent

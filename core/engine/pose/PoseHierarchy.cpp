@@ -34,22 +34,45 @@ PoseHierarchy::PoseHierarchy(const Skeleton& skeleton) {
         incident[head[i]].push_back({i, tail[i]});
         incident[tail[i]].push_back({i, head[i]});
     }
+    // Attached chain roots per bone they hang from; root chains apart.
+    std::vector<std::vector<int>> chainsOf(b);
+    std::vector<int> rootChains;
+    for (const auto& [joint, parent] : skeleton.attachments()) {
+        if (!skeleton.hasJoint(joint))
+            continue;
+        if (parent == kNoBone)
+            rootChains.push_back(skeleton.indexOfJoint(joint));
+        else if (skeleton.hasBone(parent))
+            chainsOf[skeleton.indexOfBone(parent)].push_back(skeleton.indexOfJoint(joint));
+    }
     root_ = skeleton.indexOfJoint(skeleton.root());
     parent_.assign(n, -1);
+    attached_.assign(n, false);
     children_.assign(n, {});
+    std::vector<int> incoming(n, -1);  // the bone each joint was reached by
     std::vector<bool> seen(n, false);
+    auto reach = [&](int joint, int parent, int bone) {
+        if (seen[joint])
+            return;
+        seen[joint] = true;
+        parent_[joint] = parent;
+        attached_[joint] = bone < 0;
+        incoming[joint] = bone;
+        children_[parent].push_back(joint);
+        order_.push_back(joint);
+    };
     seen[root_] = true;
     order_.push_back(root_);
+    for (int chain : rootChains)
+        reach(chain, root_, -1);
     for (std::size_t k = 0; k < order_.size(); ++k) {
         const int j = order_[k];
-        for (const auto& [bone, other] : incident[j]) {
-            if (!seen[other]) {
-                seen[other] = true;
-                parent_[other] = j;
-                children_[j].push_back(other);
-                order_.push_back(other);
-            }
-        }
+        // A chain hanging from the bone that ends here follows this joint.
+        if (incoming[j] >= 0)
+            for (int chain : chainsOf[incoming[j]])
+                reach(chain, j, -1);
+        for (const auto& [bone, other] : incident[j])
+            reach(other, j, bone);
     }
 
     // A bone's head is whichever end the search reached first; a bone with

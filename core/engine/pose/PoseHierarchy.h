@@ -5,6 +5,11 @@
 // the root, about which it turns), its tail, and the joint whose rotation
 // carries it (Pose.h: the tail). Dense indices follow skeleton.joints() and
 // skeleton.bones().
+//
+// The root joint of an attached chain (Skeleton.h: a disconnected bone's
+// head) has as parent the tail of the bone it hangs from, whose transform
+// it follows rigidly (no bone between them: attached(joint) is true); a
+// root chain's root hangs from the skeleton's root joint the same way.
 #pragma once
 
 #include <unordered_map>
@@ -26,6 +31,9 @@ class PoseHierarchy {
     const Vec3& restPosition(int joint) const { return restPositions_[joint]; }
     // -1 for the root and for joints the root cannot reach.
     int parent(int joint) const { return parent_[joint]; }
+    // True for an attached chain's root: it hangs rigidly from its parent
+    // joint's transform, without a bone between them.
+    bool attached(int joint) const { return attached_[joint]; }
     const std::vector<int>& children(int joint) const { return children_[joint]; }
     // Joints reachable from the root, each after its parent.
     const std::vector<int>& parentFirstOrder() const { return order_; }
@@ -46,6 +54,7 @@ class PoseHierarchy {
     std::vector<JointId> jointIds_;
     std::vector<Vec3> restPositions_;
     std::vector<int> parent_;
+    std::vector<bool> attached_;
     std::vector<std::vector<int>> children_;
     std::vector<int> order_;
     std::vector<int> boneHead_, boneTail_, boneRotation_;

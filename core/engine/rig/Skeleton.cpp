@@ -9,16 +9,12 @@
 
 #include <Eigen/Geometry>
 
-#include "base/DisjointSets.h"
 #include "base/Error.h"
+#include "rig/BoneSegment.h"
 
 namespace rigmesh {
 
 namespace {
-
-// A bone shorter than this fraction of the skeleton's bounding-box diagonal
-// counts as zero-length.
-constexpr double kZeroLengthRelative = 1e-9;
 
 std::string jointName(JointId id) {
     return "joint " + std::to_string(id);
@@ -29,11 +25,13 @@ std::string boneName(BoneId id) {
 
 }  // namespace
 
-Skeleton Skeleton::restore(std::vector<Joint> joints, std::vector<Bone> bones, JointId root) {
+Skeleton Skeleton::restore(std::vector<Joint> joints, std::vector<Bone> bones, JointId root,
+                           std::map<JointId, BoneId> attachments) {
     Skeleton s;
     s.joints_ = std::move(joints);
     s.bones_ = std::move(bones);
     s.root_ = root;
+    s.attachments_ = std::move(attachments);
     for (const Joint& j : s.joints_) {
         s.nextJointId_ = std::max(s.nextJointId_, j.id + 1);
     }
@@ -82,16 +80,27 @@ void Skeleton::setJointPosition(JointId id, const Vec3& position) {
     joints_[indexOfJoint(id)].position = position;
 }
 
+void Skeleton::reattach(BoneId gone, BoneId instead) {
+    for (auto& [joint, parent] : attachments_)
+        if (parent == gone)
+            parent = instead;
+}
+
 void Skeleton::removeBone(BoneId id) {
+    reattach(id, parentBone(id).value_or(kNoBone));
     bones_.erase(bones_.begin() + indexOfBone(id));
     rebuildIndex();
 }
 
 void Skeleton::removeJoint(JointId id) {
+    indexOfJoint(id);
+    for (BoneId bone : bonesAt(id))
+        removeBone(bone);
     joints_.erase(joints_.begin() + indexOfJoint(id));
-    std::erase_if(bones_, [id](const Bone& b) { return b.head == id || b.tail == id; });
+    attachments_.erase(id);
     if (root_ == id) {
         root_ = joints_.empty() ? kNoJoint : joints_.front().id;
+        attachments_.erase(root_);
     }
     rebuildIndex();
 }
@@ -100,6 +109,8 @@ void Skeleton::collapseBone(BoneId id, const Vec3& mergedPosition) {
     const Bone collapsed = bone(id);
     const JointId keep = collapsed.head;
     const JointId gone = collapsed.tail;
+    reattach(id, parentBone(id).value_or(kNoBone));
+    attachments_.erase(gone);
     joints_[indexOfJoint(keep)].position = mergedPosition;
     for (Bone& b : bones_) {
         if (b.head == gone) {
@@ -119,10 +130,18 @@ void Skeleton::collapseBone(BoneId id, const Vec3& mergedPosition) {
 }
 
 JointId Skeleton::splitBone(BoneId id, const Vec3& position) {
+    const Vec3 head = joint(bone(id).head).position;
     const JointId oldTail = bone(id).tail;
+    const Vec3 tail = joint(oldTail).position;
     const JointId middle = addJoint(position);
     bones_[indexOfBone(id)].tail = middle;
-    addBone(middle, oldTail);
+    const BoneId second = addBone(middle, oldTail);
+    for (auto& [chain, parent] : attachments_) {
+        const Vec3& p = joint(chain).position;
+        if (parent == id &&
+            pointSegmentDistance(p, {position, tail}) < pointSegmentDistance(p, {head, position}))
+            parent = second;
+    }
     return middle;
 }
 
@@ -139,14 +158,39 @@ void Skeleton::mergeJoints(JointId keep, JointId gone) {
     }
     std::erase_if(bones_, [](const Bone& b) { return b.head == b.tail; });
     joints_.erase(joints_.begin() + indexOfJoint(gone));
-    if (root_ == gone)
+    attachments_.erase(gone);
+    if (root_ == gone) {
         root_ = keep;
+        attachments_.erase(keep);
+    }
     rebuildIndex();
 }
 
 void Skeleton::setRoot(JointId id) {
     indexOfJoint(id);
     root_ = id;
+    attachments_.erase(id);
+}
+
+void Skeleton::attach(JointId joint, BoneId parent) {
+    indexOfJoint(joint);
+    if (parent != kNoBone)
+        indexOfBone(parent);
+    if (joint == root_)
+        throw Error("The root " + jointName(joint) + " cannot hang from a bone.");
+    attachments_[joint] = parent;
+}
+
+void Skeleton::detach(JointId joint) {
+    attachments_.erase(joint);
+}
+
+std::vector<JointId> Skeleton::attachedTo(BoneId bone) const {
+    std::vector<JointId> chains;
+    for (const auto& [joint, parent] : attachments_)
+        if (parent == bone)
+            chains.push_back(joint);
+    return chains;
 }
 
 int Skeleton::indexOfJoint(JointId id) const {
@@ -165,82 +209,6 @@ int Skeleton::indexOfBone(BoneId id) const {
     return it->second;
 }
 
-namespace {
-
-// Breadth-first depth of every joint (by dense index) from the root; -1 when
-// unreachable. Also returns bone indices in the order they were first crossed.
-struct Traversal {
-    std::vector<int> depth;
-    std::vector<int> boneOrder;
-};
-
-Traversal traverseFromRoot(const Skeleton& s) {
-    Traversal t;
-    t.depth.assign(s.jointCount(), -1);
-    if (!s.hasJoint(s.root())) {
-        return t;
-    }
-    std::vector<std::vector<int>> incident(s.jointCount());
-    for (int b = 0; b < s.boneCount(); ++b) {
-        const Bone& bone = s.bones()[b];
-        if (s.hasJoint(bone.head) && s.hasJoint(bone.tail)) {
-            incident[s.indexOfJoint(bone.head)].push_back(b);
-            incident[s.indexOfJoint(bone.tail)].push_back(b);
-        }
-    }
-    std::vector<bool> crossed(s.boneCount(), false);
-    std::queue<int> queue;
-    const int start = s.indexOfJoint(s.root());
-    t.depth[start] = 0;
-    queue.push(start);
-    while (!queue.empty()) {
-        const int j = queue.front();
-        queue.pop();
-        for (int b : incident[j]) {
-            const Bone& bone = s.bones()[b];
-            const int a = s.indexOfJoint(bone.head);
-            const int other = a == j ? s.indexOfJoint(bone.tail) : a;
-            if (t.depth[other] < 0) {
-                t.depth[other] = t.depth[j] + 1;
-                queue.push(other);
-            }
-            if (!crossed[b]) {
-                crossed[b] = true;
-                t.boneOrder.push_back(b);
-            }
-        }
-    }
-    return t;
-}
-
-}  // namespace
-
-void Skeleton::reorient() {
-    const Traversal t = traverseFromRoot(*this);
-    for (Bone& b : bones_) {
-        if (!hasJoint(b.head) || !hasJoint(b.tail)) {
-            continue;
-        }
-        const int dh = t.depth[indexOfJoint(b.head)];
-        const int dt = t.depth[indexOfJoint(b.tail)];
-        if (dh >= 0 && dt >= 0 && dt < dh) {
-            std::swap(b.head, b.tail);
-        }
-    }
-}
-
-bool Skeleton::isOrientedFromRoot() const {
-    const Traversal t = traverseFromRoot(*this);
-    return std::all_of(bones_.begin(), bones_.end(), [&](const Bone& b) {
-        if (!hasJoint(b.head) || !hasJoint(b.tail)) {
-            return false;
-        }
-        const int dh = t.depth[indexOfJoint(b.head)];
-        const int dt = t.depth[indexOfJoint(b.tail)];
-        return dh >= 0 && dt == dh + 1;
-    });
-}
-
 std::optional<BoneId> Skeleton::parentBone(BoneId id) const {
     const JointId head = bone(id).head;
     for (const Bone& b : bones_) {
@@ -248,7 +216,16 @@ std::optional<BoneId> Skeleton::parentBone(BoneId id) const {
             return b.id;
         }
     }
+    if (const auto attached = attachments_.find(head);
+        attached != attachments_.end() && hasBone(attached->second))
+        return attached->second;
     return std::nullopt;
+}
+
+bool Skeleton::isConnected(BoneId id) const {
+    const JointId head = bone(id).head;
+    return std::any_of(bones_.begin(), bones_.end(),
+                       [&](const Bone& b) { return b.tail == head && b.id != id; });
 }
 
 std::vector<BoneId> Skeleton::childrenOf(JointId id) const {
@@ -280,76 +257,6 @@ int Skeleton::degree(JointId id) const {
 double Skeleton::boneLength(BoneId id) const {
     const Bone& b = bone(id);
     return (joint(b.tail).position - joint(b.head).position).norm();
-}
-
-std::vector<BoneId> Skeleton::bonesInHierarchyOrder() const {
-    std::vector<BoneId> order;
-    for (int b : traverseFromRoot(*this).boneOrder) {
-        order.push_back(bones_[b].id);
-    }
-    return order;
-}
-
-std::vector<std::string> Skeleton::validate() const {
-    std::vector<std::string> problems;
-    if (joints_.empty()) {
-        problems.push_back("The skeleton has no joints.");
-        return problems;
-    }
-
-    std::unordered_set<JointId> seenJoints;
-    Eigen::AlignedBox3d box;
-    for (const Joint& j : joints_) {
-        if (!seenJoints.insert(j.id).second) {
-            problems.push_back("Two joints share the id " + std::to_string(j.id) + ".");
-        }
-        if (!j.position.allFinite()) {
-            problems.push_back(jointName(j.id) + " has a non-finite position.");
-        } else {
-            box.extend(j.position);
-        }
-    }
-    std::unordered_set<BoneId> seenBones;
-    for (const Bone& b : bones_) {
-        if (!seenBones.insert(b.id).second) {
-            problems.push_back("Two bones share the id " + std::to_string(b.id) + ".");
-        }
-    }
-    if (!hasJoint(root_)) {
-        problems.push_back(root_ == kNoJoint
-                               ? "The skeleton has no root joint."
-                               : "The root is " + jointName(root_) + ", which does not exist.");
-    }
-
-    const double zeroLength = kZeroLengthRelative * (box.isEmpty() ? 0.0 : box.diagonal().norm());
-    DisjointSets sets(static_cast<std::size_t>(jointCount()));
-    int components = jointCount();
-    for (const Bone& b : bones_) {
-        const bool headOk = hasJoint(b.head);
-        const bool tailOk = hasJoint(b.tail);
-        if (!headOk || !tailOk) {
-            problems.push_back(boneName(b.id) + " refers to " +
-                               jointName(headOk ? b.tail : b.head) + ", which does not exist.");
-            continue;
-        }
-        if (b.head == b.tail) {
-            problems.push_back(boneName(b.id) + " connects " + jointName(b.head) + " to itself.");
-            continue;
-        }
-        if (boneLength(b.id) <= zeroLength) {
-            problems.push_back(boneName(b.id) + " has zero length.");
-        }
-        if (sets.unite(indexOfJoint(b.head), indexOfJoint(b.tail))) {
-            --components;
-        } else {
-            problems.push_back("The skeleton has a cycle: " + boneName(b.id) + " closes a loop.");
-        }
-    }
-    if (components > 1) {
-        problems.push_back("The skeleton is not connected: it has " + std::to_string(components) +
-                           " separate components.");
-    }
-    return problems;
 }
 
 JointId chooseCentralRoot(const Skeleton& s) {

@@ -5,13 +5,24 @@
 // indices (indexOfJoint/indexOfBone) are what solvers use; they follow the
 // stable order of joints() and bones() and do change on removal.
 //
+// Disconnected bones (Blender's bones without "Connected": a Rigify thigh off
+// the pelvis, a shoulder off the spine; ARCHITECTURE.md section 2e): the joint
+// graph may be a forest of connected chains. The root joint of every chain
+// but the root's own is *attached*: to a parent bone, whose frame its head
+// follows rigidly (posing it moves and turns the chain as Blender moves a
+// disconnected child), or to no bone (kNoBone), a further root chain that
+// follows the skeleton's root transform as Blender's root bones follow their
+// armature object. Sketched and auto-rigged skeletons have no attachments:
+// one connected tree, as before.
+//
 // Structural edits may leave the skeleton in any shape; validate() says what
-// keeps it from being a tree, and reorient() makes every bone point away from
-// the root once it is one.
+// keeps it from being a tree of chains, and reorient() makes every bone point
+// away from its chain's root once it is one.
 #pragma once
 
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -25,6 +36,8 @@ using JointId = std::uint32_t;
 using BoneId = std::uint32_t;
 
 inline constexpr JointId kNoJoint = std::numeric_limits<JointId>::max();
+// In attachments(): the chain hangs from no bone (a further root chain).
+inline constexpr BoneId kNoBone = std::numeric_limits<BoneId>::max();
 
 struct Joint {
     JointId id;
@@ -41,7 +54,8 @@ class Skeleton {
   public:
     // Rebuilds a skeleton from stored parts (file loading, undo) keeping their
     // ids. Nothing is checked here: call validate() on the result.
-    static Skeleton restore(std::vector<Joint> joints, std::vector<Bone> bones, JointId root);
+    static Skeleton restore(std::vector<Joint> joints, std::vector<Bone> bones, JointId root,
+                            std::map<JointId, BoneId> attachments = {});
 
     // The first joint added becomes the root until setRoot() says otherwise.
     JointId addJoint(const Vec3& position);
@@ -51,23 +65,45 @@ class Skeleton {
     void setJointPosition(JointId id, const Vec3& position);
 
     // Removes the bone only; its joints stay, possibly splitting the tree.
+    // Chains attached to it hang from its parent bone instead.
     void removeBone(BoneId id);
-    // Removes the joint and every bone touching it. If it was the root, the
-    // first remaining joint becomes the root.
+    // Removes the joint and every bone touching it (chains attached to those
+    // bones as removeBone says). If it was the root, the first remaining joint
+    // becomes the root.
     void removeJoint(JointId id);
     // Merges the bone's two joints into its head, moved to mergedPosition:
     // bones touching the tail are rewired to the head, the bone itself (and
     // any other bone between the same two joints) disappears. Used to remove
-    // short bones inside connecting regions (paper 2.3, Fig. 6 (b)).
+    // short bones inside connecting regions (paper 2.3, Fig. 6 (b)). Chains
+    // attached to it hang from its parent bone instead; the head keeps its
+    // own attachment.
     void collapseBone(BoneId id, const Vec3& mergedPosition);
 
     // Inserts a joint at `position` on the bone (paper 3.2 "split", 3.3): the
     // bone keeps its id and now ends at the new joint; a new bone runs from
-    // there to the old tail. Returns the new joint.
+    // there to the old tail. A chain attached to the bone stays with the half
+    // nearer its head. Returns the new joint.
     JointId splitBone(BoneId id, const Vec3& position);
     // Joint `gone` becomes `keep`: every bone touching it is rewired, it is
     // removed (paper 3.2 "snap": two skeletons joined at coincident joints).
+    // `keep` keeps its attachment; `gone`'s is dropped (its chain is now
+    // connected there).
     void mergeJoints(JointId keep, JointId gone);
+
+    // Disconnected bones: `joint`, the root joint of a chain, hangs from
+    // bone `parent` (kNoBone: from no bone, a further root chain). Throws
+    // Error for an unknown joint or bone, or the skeleton's root.
+    void attach(JointId joint, BoneId parent);
+    // The joint is no longer attached (its chain is loose until connected).
+    void detach(JointId joint);
+    // Attached joints and the bone each hangs from (kNoBone: none).
+    const std::map<JointId, BoneId>& attachments() const { return attachments_; }
+    bool isAttached(JointId joint) const { return attachments_.contains(joint); }
+    // True when no chain hangs from another: one connected tree (every
+    // sketched or auto-rigged skeleton).
+    bool isConnectedTree() const { return attachments_.empty(); }
+    // Chain roots attached to this bone.
+    std::vector<JointId> attachedTo(BoneId bone) const;
 
     void setRoot(JointId id);
     JointId root() const { return root_; }  // kNoJoint only when there are no joints
@@ -89,31 +125,42 @@ class Skeleton {
     int indexOfJoint(JointId id) const;
     int indexOfBone(BoneId id) const;
 
-    // The bone whose tail is this bone's head; none for bones at the root.
+    // The bone whose tail is this bone's head, or the bone its head is
+    // attached to; none for bones at the root or a root chain's root.
     std::optional<BoneId> parentBone(BoneId id) const;
+    // Whether the bone's head is its parent bone's tail (Blender's
+    // "Connected"); false for root bones.
+    bool isConnected(BoneId id) const;
     // The bones whose head is this joint (their tails are its child joints).
     std::vector<BoneId> childrenOf(JointId id) const;
     // Every bone touching this joint, whatever its direction.
     std::vector<BoneId> bonesAt(JointId id) const;
     int degree(JointId id) const;
     double boneLength(BoneId id) const;
-    // Bones reachable from the root, each after the bone leading to it
-    // (breadth first): the order forward kinematics needs.
+    // Bones reachable from the root, each after its parent bone (breadth
+    // first through bones, then the chains attached to each bone): the
+    // order forward kinematics needs.
     std::vector<BoneId> bonesInHierarchyOrder() const;
 
-    // Human-readable problems keeping this from being a valid tree: no
-    // joints, missing or duplicate ids, a bad root, non-finite positions,
-    // self-loops, zero-length bones (relative to the skeleton's size),
-    // cycles, more than one connected component. Empty means a valid tree.
+    // Human-readable problems keeping this from being a valid tree of
+    // chains: no joints, missing or duplicate ids, a bad root, non-finite
+    // positions, self-loops, zero-length bones (relative to the skeleton's
+    // size), cycles, a chain other than the root's hanging from nothing,
+    // bad attachments (unknown joint or bone, the root attached, two in one
+    // chain, a chain hanging from itself or chains hanging from each other
+    // in a loop). Empty means valid.
     std::vector<std::string> validate() const;
 
   private:
     void rebuildIndex();
+    // Chains attached to `gone` hang from `instead` (kNoBone: from none).
+    void reattach(BoneId gone, BoneId instead);
 
     std::vector<Joint> joints_;
     std::vector<Bone> bones_;
     std::unordered_map<JointId, int> jointIndex_;
     std::unordered_map<BoneId, int> boneIndex_;
+    std::map<JointId, BoneId> attachments_;
     JointId root_ = kNoJoint;
     JointId nextJointId_ = 0;
     BoneId nextBoneId_ = 0;

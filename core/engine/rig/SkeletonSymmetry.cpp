@@ -127,8 +127,8 @@ std::vector<JointId> interiorOf(const Branch& branch, bool reversed) {
 }
 
 // Splits the longest bones of `branch` until it has `count` inner joints.
-int splitToCount(Skeleton& skeleton, const Branch& branch, int count,
-                 std::vector<BoneSplit>& splits) {
+void splitToCount(Skeleton& skeleton, const Branch& branch, int count,
+                  std::vector<BoneSplit>& splits) {
     std::vector<BoneId> bones;
     for (std::size_t k = 0; k + 1 < branch.size(); ++k)
         bones.push_back(boneBetween(skeleton, branch[k], branch[k + 1]));
@@ -148,7 +148,6 @@ int splitToCount(Skeleton& skeleton, const Branch& branch, int count,
             }
         ++added;
     }
-    return added;
 }
 
 }  // namespace
@@ -179,11 +178,11 @@ SymmetrizeReport symmetrizeSkeleton(Skeleton& skeleton, const TriMesh& mesh,
             const int mine = static_cast<int>(branches[i].size()) - 2;
             const int theirs = static_cast<int>(branches[j].size()) - 2;
             if (mine < theirs)
-                report.jointsAdded += splitToCount(skeleton, branches[i], theirs, report.splits);
+                splitToCount(skeleton, branches[i], theirs, report.splits);
             else if (theirs < mine)
-                report.jointsAdded += splitToCount(skeleton, branches[j], mine, report.splits);
+                splitToCount(skeleton, branches[j], mine, report.splits);
         }
-        if (report.jointsAdded > 0)
+        if (report.jointsAdded() > 0)
             branches = branchesOf(skeleton, nodeSet);  // new joints are never nodes
     }
 

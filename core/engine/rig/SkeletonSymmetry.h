@@ -38,8 +38,9 @@ struct SymmetrizeReport {
     std::optional<MirrorFit> mirror;  // none: no plane, nothing changed
     int pairedJoints = 0;             // joints moved with an image (each pair counts 2)
     int jointsOnPlane = 0;            // joints their own image, moved onto the plane
-    int jointsAdded = 0;              // by splits matching a branch to its image
-    std::vector<BoneSplit> splits;    // those splits, in order
+    std::vector<BoneSplit> splits;    // bones split matching a branch to its image, in order
+    // One joint added per split.
+    int jointsAdded() const { return static_cast<int>(splits.size()); }
 };
 
 SymmetrizeReport symmetrizeSkeleton(Skeleton& skeleton, const TriMesh& mesh,

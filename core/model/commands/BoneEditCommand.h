@@ -1,6 +1,7 @@
-// Split or delete a bone (paper 3.3) as one undoable step. The engine edit
-// (cut/BoneEdits.h) runs in the factories, before anything is pushed, so a
-// refused edit throws rigmesh::Error and changes nothing. The part keeps its
+// Split or delete a bone (paper 3.3), or connect a disconnected one to its
+// parent (Edit > Connect Bone, part/BoneConnection.h), as one undoable step.
+// The engine edit (cut/BoneEdits.h) runs in the factories, before anything
+// is pushed, so a refused edit throws rigmesh::Error and changes nothing. The part keeps its
 // id, name and placement, loses its stroke (a rebuild would undo the edit)
 // and keeps the pose, pins and keys of its surviving joints; undo restores
 // it exactly.
@@ -23,6 +24,9 @@ class BoneEditCommand : public QUndoCommand, public RecipeStepSource {
     static std::unique_ptr<BoneEditCommand> split(Document& document, PartId part, BoneId bone,
                                                   const Vec3& at);
     static std::unique_ptr<BoneEditCommand> remove(Document& document, PartId part, BoneId bone);
+    // The bone's head moves onto its parent's tail (the pose and keys of
+    // the joint that goes are dropped).
+    static std::unique_ptr<BoneEditCommand> connect(Document& document, PartId part, BoneId bone);
 
     void redo() override;
     void undo() override;
@@ -32,14 +36,15 @@ class BoneEditCommand : public QUndoCommand, public RecipeStepSource {
     double milliseconds() const { return result_.milliseconds; }
 
   private:
-    BoneEditCommand(Document& document, PartId part, BoneId bone, const Vec3* at,
+    enum class Kind { Split, Delete, Connect };
+    BoneEditCommand(Document& document, PartId part, BoneId bone, Kind kind, const Vec3* at,
                     BoneEditResult result);
 
     Document& document_;
     PartId id_;
     int index_;
     BoneId bone_;
-    bool split_;
+    Kind kind_;
     Vec3 at_ = Vec3::Zero();  // document coordinates (split)
     PartNode before_, after_;
     BoneEditResult result_;

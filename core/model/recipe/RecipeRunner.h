@@ -64,6 +64,8 @@
 //                 point of it nearest to "at" (default: its middle) (3.3)
 //   delete_bone   "part" and "bone" or "at": the bone's joints merge at its
 //                 middle (3.3)
+//   connect_bone  "part" and "bone" or "at": a disconnected bone's head
+//                 moves onto its parent's tail (Edit > Connect Bone)
 //   paint_weights "part", "bone" (id), and either "center": [x, y, z]
 //                 (document coordinates) with "radius" (one dab) or "dabs":
 //                 [{"center", "radius"}, ...] (a stroke: one undo step);

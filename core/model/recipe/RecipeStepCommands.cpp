@@ -331,6 +331,13 @@ BoneId readBone(const Context& c, const PartNode& node) {
     return nearestBone(*node.part, node.placement.toLocal(at));
 }
 
+// "connect_bone": "part" and "bone" or "at" (part/BoneConnection.h).
+StepCommand connectBoneStep(const Context& c) {
+    const PartId id = c.part();
+    auto command = BoneEditCommand::connect(c.document, id, readBone(c, c.node(id)));
+    return {std::move(command), id, {}};
+}
+
 StepCommand boneEdit(const Context& c, bool split) {
     const PartId id = c.part();
     const PartNode& node = c.node(id);
@@ -362,6 +369,7 @@ const std::map<std::string, StepKind>& stepKinds() {
          {{"part", "bone", "at"}, [](const Context& c) { return boneEdit(c, true); }}},
         {"delete_bone",
          {{"part", "bone", "at"}, [](const Context& c) { return boneEdit(c, false); }}},
+        {"connect_bone", {{"part", "bone", "at"}, connectBoneStep}},
         {"delete",
          {{"part"},
           [](const Context& c) {

@@ -47,8 +47,8 @@ void expectCapsuleRig(const ImportedScene& scene, const std::string& what) {
     EXPECT_NEAR(top - bottom, 3.0, 1e-3) << what << ": the capsule's height";
     EXPECT_NEAR(bottom, 0.0, 1e-3) << what << ": the capsule stands on the origin";
 
-    ASSERT_TRUE(scene.parts[0].clip.has_value()) << what;
-    EXPECT_NEAR(scene.parts[0].clip->duration(), 23.0 / 24.0, 1e-3) << what;
+    ASSERT_FALSE(scene.parts[0].clips.empty()) << what;
+    EXPECT_NEAR(scene.parts[0].clips.front().duration(), 23.0 / 24.0, 1e-3) << what;
     // Middle bends 40 degrees half way (frame 12 of 1..24): its rotation is
     // keyed by the joint it ends at (pose/Pose.h).
     JointId middleTail = kNoJoint;
@@ -57,8 +57,8 @@ void expectCapsuleRig(const ImportedScene& scene, const std::string& what) {
             middleTail = bone.tail;
     // Blender's glTF and COLLADA exporters put frame 1 at 1/24 s, its FBX
     // exporter at 0 s: the file's times are kept.
-    const Pose bent =
-        scene.parts[0].clip->evaluate(scene.parts[0].clip->keyTimes().front() + 11.0 / 24.0);
+    const Pose bent = scene.parts[0].clips.front().evaluate(
+        scene.parts[0].clips.front().keyTimes().front() + 11.0 / 24.0);
     const double angle = 2 * std::acos(std::min(1.0, std::abs(bent.rotation(middleTail).w())));
     EXPECT_NEAR(angle * 180 / M_PI, 40.0, 0.5) << what;
 }
@@ -69,7 +69,7 @@ TEST_P(BlenderRig, KeepsBoneNamesSizeAndAction) {
     const ImportedScene scene = importScene(capsule(GetParam()));
     expectCapsuleRig(scene, GetParam());
     if (GetParam() != ".dae") {  // Blender's COLLADA exporter names animations after objects
-        EXPECT_EQ(scene.parts[0].clip->name, "Wave");
+        EXPECT_EQ(scene.parts[0].clips.front().name, "Wave");
     }
 }
 
@@ -79,13 +79,13 @@ TEST_P(BlenderRig, SurvivesOurExportAndImportInTheSameFormat) {
     const std::string path = (iotest::scratchFolder() / ("capsule" + GetParam())).string();
     ExportPart item;
     item.part = &scene.parts[0].part;
-    item.clip = scene.parts[0].clip ? &*scene.parts[0].clip : nullptr;
+    item.clip = scene.parts[0].clips.empty() ? nullptr : &scene.parts[0].clips.front();
     exportScene({item}, nullptr, path);
     const ImportedScene back = importScene(path);
     expectCapsuleRig(back, GetParam() + " exported again");
     // Assimp's COLLADA writer and reader do not keep an animation's name.
-    if (scene.parts[0].clip && back.parts[0].clip && GetParam() != ".dae") {
-        EXPECT_EQ(back.parts[0].clip->name, scene.parts[0].clip->name);
+    if (!scene.parts[0].clips.empty() && !back.parts[0].clips.empty() && GetParam() != ".dae") {
+        EXPECT_EQ(back.parts[0].clips.front().name, scene.parts[0].clips.front().name);
     }
 }
 

@@ -59,8 +59,8 @@ TEST(ClipImport, AClipStartingBeforeZeroIsMovedToStartAtZero) {
 
     const ImportedScene scene = importScene(path.string());
     ASSERT_EQ(scene.parts.size(), 1u);
-    ASSERT_TRUE(scene.parts[0].clip.has_value());
-    const std::vector<double> times = scene.parts[0].clip->keyTimes();
+    ASSERT_EQ(scene.parts[0].clips.size(), 1u);
+    const std::vector<double> times = scene.parts[0].clips.front().keyTimes();
     ASSERT_FALSE(times.empty());
     EXPECT_EQ(times.front(), 0.0);
     EXPECT_NEAR(times.back(), 1.0, 1e-5) << "the spacing is kept";

@@ -91,7 +91,7 @@ TEST(SceneImport, AStaticClosedMeshFromElsewhereNeedsARig) {
     EXPECT_TRUE(scene.needsRig);
     EXPECT_EQ(scene.parts[0].part.mesh.faceCount(), makeIcosphere(1, 2.0).faceCount());
     EXPECT_TRUE(scene.parts[0].part.weights.perVertex.empty());
-    EXPECT_FALSE(scene.parts[0].clip.has_value());
+    EXPECT_TRUE(scene.parts[0].clips.empty());
 }
 
 TEST(SceneImport, MissingBrokenAndUnsupportedFilesGiveClearErrors) {
@@ -168,14 +168,14 @@ TEST(SceneExport, EachPartIsItsOwnSkinnedMeshWithItsOwnClip) {
         // Unique names: the second tube's bones are tube_2_bone<id>.
         EXPECT_EQ(scene.parts[2].boneNames.at(0).rfind("tube_2_bone", 0), 0u);
         // Each animated part has its own clip, with its name; the third none.
-        ASSERT_TRUE(scene.parts[0].clip.has_value()) << extension;
-        ASSERT_TRUE(scene.parts[1].clip.has_value()) << extension;
-        EXPECT_FALSE(scene.parts[2].clip.has_value()) << extension;
-        EXPECT_EQ(scene.parts[0].clip->keyCount(), tubeClip.keyCount()) << extension;
-        EXPECT_EQ(scene.parts[1].clip->keyCount(), branchClip.keyCount()) << extension;
+        ASSERT_FALSE(scene.parts[0].clips.empty()) << extension;
+        ASSERT_FALSE(scene.parts[1].clips.empty()) << extension;
+        EXPECT_TRUE(scene.parts[2].clips.empty()) << extension;
+        EXPECT_EQ(scene.parts[0].clips.front().keyCount(), tubeClip.keyCount()) << extension;
+        EXPECT_EQ(scene.parts[1].clips.front().keyCount(), branchClip.keyCount()) << extension;
         if (std::string(extension) != ".dae") {  // Assimp's COLLADA pair drops names
-            EXPECT_EQ(scene.parts[0].clip->name, "tube_clip");
-            EXPECT_EQ(scene.parts[1].clip->name, "wave");
+            EXPECT_EQ(scene.parts[0].clips.front().name, "tube_clip");
+            EXPECT_EQ(scene.parts[1].clips.front().name, "wave");
         }
         // The placement is baked into the second part's joints.
         const Vec3 root = branch.skeleton.joint(branch.skeleton.root()).position;

@@ -153,8 +153,8 @@ TEST_P(RoundTrip, SameWeightsAfterTheFormatsCut) {
 }
 
 TEST_P(RoundTrip, SameClipKeysAndDeformation) {
-    ASSERT_TRUE(imported_.parts[0].clip.has_value());
-    const std::vector<double> times = imported_.parts[0].clip->keyTimes();
+    ASSERT_FALSE(imported_.parts[0].clips.empty());
+    const std::vector<double> times = imported_.parts[0].clips.front().keyTimes();
     ASSERT_EQ(times.size(), 3u);
     for (int k = 0; k < 3; ++k)
         EXPECT_NEAR(times[static_cast<std::size_t>(k)], 0.5 * k, 1e-4);
@@ -165,7 +165,7 @@ TEST_P(RoundTrip, SameClipKeysAndDeformation) {
         iotest::matchVertices(part_->mesh.vertices, back_->part.mesh.vertices);
     for (double t : times) {
         const Pose ours = clip_.evaluate(std::round(t * 2) / 2);
-        const Pose theirs = imported_.parts[0].clip->evaluate(t);
+        const Pose theirs = imported_.parts[0].clips.front().evaluate(t);
         const PosedSkeleton a = forwardKinematics(part_->skeleton, ours);
         const PosedSkeleton b = forwardKinematics(back_->part.skeleton, theirs);
         for (int bone = 0; bone < part_->skeleton.boneCount(); ++bone) {

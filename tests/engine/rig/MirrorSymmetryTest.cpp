@@ -134,7 +134,7 @@ TEST(SkeletonSymmetry, MirroredBranchesGetAsManyJointsAndMirroredPositions) {
     skeleton.addBone(rightElbow, rightTip);
     const SymmetrizeReport report = symmetrizeSkeleton(skeleton, shape);
     ASSERT_TRUE(report.mirror.has_value());
-    EXPECT_EQ(report.jointsAdded, 1);
+    EXPECT_EQ(report.jointsAdded(), 1);
     EXPECT_EQ(skeleton.boneCount(), 4);
     EXPECT_TRUE(skeleton.validate().empty());
     for (const Joint& joint : skeleton.joints()) {
