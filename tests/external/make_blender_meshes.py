@@ -5,7 +5,12 @@ rigged and writes it as plain OBJ, without a rig:
   like a starfish standing up), converted to a mesh and triangulated:
   closed, one piece, Blender's own vertex order and triangulation;
 - suzanne.obj: Blender's monkey, which is open and of several pieces (its
-  eyes): a mesh the rig must refuse by name.
+  eyes apart from the head);
+- primitives.obj: a figure joined (Ctrl J) from overlapping primitives
+  without a boolean: a torso, a head, two arms and two legs, each a closed
+  piece, crossing each other where they meet;
+- statue.obj: a metaball figure (trunk, head, two arms) standing on the
+  ground and cut open at the bottom, as a statue made to stand on a plinth.
 
 usage: blender -b --factory-startup --python-exit-code 1 \
            --python make_blender_meshes.py -- OUT_DIR
@@ -65,8 +70,64 @@ def suzanne(out_dir):
     export_obj(bpy.context.active_object, os.path.join(out_dir, "suzanne.obj"))
 
 
+def primitives(out_dir):
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    bpy.ops.mesh.primitive_uv_sphere_add(radius=0.5, location=(0, 0, 1.2), scale=(1, 0.7, 1.4))
+    bpy.ops.mesh.primitive_uv_sphere_add(radius=0.32, location=(0, 0, 2.1))
+    # (location, rotation about y, depth): arms out sideways, legs down.
+    for x, z, angle, depth in [(0.85, 1.55, 1.2, 1.1), (-0.85, 1.55, -1.2, 1.1),
+                               (0.25, 0.05, 0.1, 1.3), (-0.25, 0.05, -0.1, 1.3)]:
+        bpy.ops.mesh.primitive_cylinder_add(radius=0.13, depth=depth, location=(x, 0, z),
+                                            rotation=(0, angle, 0))
+    bpy.ops.object.select_all(action="SELECT")
+    bpy.context.view_layer.objects.active = bpy.context.selected_objects[0]
+    bpy.ops.object.join()
+    export_obj(bpy.context.active_object, os.path.join(out_dir, "primitives.obj"))
+
+
+def statue(out_dir):
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    import bmesh
+    import mathutils
+    data = bpy.data.metaballs.new("Statue")
+    data.resolution = 0.1
+    data.render_resolution = 0.1
+    # (centre, radius, capsule end or None): trunk, head, two arms.
+    trunk = data.elements.new(type="CAPSULE")
+    trunk.co = (0, 0, 0.9)
+    trunk.radius = 0.45
+    trunk.size_x = 0.6
+    trunk.rotation = mathutils.Vector((1, 0, 0)).rotation_difference(mathutils.Vector((0, 0, 1)))
+    head = data.elements.new()
+    head.co = (0, 0, 2.1)
+    head.radius = 0.45
+    for side in (1, -1):
+        arm = data.elements.new(type="CAPSULE")
+        arm.co = (side * 0.75, 0, 1.25)
+        arm.radius = 0.22
+        arm.size_x = 0.45
+        arm.rotation = mathutils.Vector((1, 0, 0)).rotation_difference(
+            mathutils.Vector((side, 0, -0.6)).normalized())
+    obj = bpy.data.objects.new("Statue", data)
+    bpy.context.scene.collection.objects.link(obj)
+    bpy.context.view_layer.objects.active = obj
+    obj.select_set(True)
+    bpy.ops.object.convert(target="MESH")
+    mesh = bpy.context.active_object
+    # Open at the bottom: the faces below the plinth's top are deleted.
+    b = bmesh.new()
+    b.from_mesh(mesh.data)
+    bmesh.ops.delete(b, geom=[f for f in b.faces if f.calc_center_median().z < 0.45],
+                     context="FACES")
+    b.to_mesh(mesh.data)
+    b.free()
+    export_obj(mesh, os.path.join(out_dir, "statue.obj"))
+
+
 if __name__ == "__main__":
     out = sys.argv[sys.argv.index("--") + 1]
     os.makedirs(out, exist_ok=True)
     figure(out)
     suzanne(out)
+    primitives(out)
+    statue(out)

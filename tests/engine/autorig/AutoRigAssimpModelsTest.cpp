@@ -1,9 +1,10 @@
 // Characters other tools made (Debian's assimp-testmodels, installed by
-// scripts/setup.sh): many pieces, open borders, crossing faces, faces that
-// repeat a corner. Each is rigged, not refused: all its meshes as one
-// figure, on a wrapped proxy where it needs one, keeping every original
-// vertex with weights summing to 1. The expected leaf count is the limbs a
-// person counts on the character (written beside each).
+// scripts/setup.sh, and meshes made in Blender, tests/data/autorig): many
+// pieces, open borders, crossing faces, faces that repeat a corner. Each is
+// rigged, not refused: all its meshes as one figure, on a wrapped proxy
+// where it needs one, keeping every original vertex with weights summing
+// to 1. The expected leaf count is the limbs a person counts on the
+// character (written beside each).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -17,10 +18,11 @@ namespace rigmesh {
 namespace {
 
 const std::string kModels = "/usr/share/assimp/models/";
+const std::string kBlenderMeshes = RIGMESH_TEST_DATA "/autorig/";
 
 struct Character {
-    std::string file;
-    int leaves;  // limbs a person counts
+    std::string file;  // under kModels, or a full path
+    int leaves;        // limbs a person counts
 };
 
 void PrintTo(const Character& character, std::ostream* out) {
@@ -38,7 +40,8 @@ const RiggedCharacter& rigged(const std::string& file) {
     if (found == cache.end()) {
         RiggedCharacter character;
         character.imported.name = "figure";
-        for (const ImportedPart& part : importScene(kModels + file).parts) {
+        const std::string path = file.starts_with('/') ? file : kModels + file;
+        for (const ImportedPart& part : importScene(path).parts) {
             const int offset = character.imported.mesh.vertexCount();
             for (const Vec3& v : part.part.mesh.vertices)
                 character.imported.mesh.vertices.push_back(v);
@@ -124,6 +127,15 @@ INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
                              Character{"BLEND/HUMAN.blend", 5},
                              // eight legs, the head's and the abdomen's ends
                              Character{"OBJ/spider.obj", 10}));
+
+INSTANTIATE_TEST_SUITE_P(MadeInBlender, AutoRigCharacter,
+                         ::testing::Values(
+                             // a head alone: two ears and the neck
+                             Character{kBlenderMeshes + "suzanne.obj", 3},
+                             // arms, legs, head
+                             Character{kBlenderMeshes + "primitives.obj", 5},
+                             // arms, head and the trunk down to the open base
+                             Character{kBlenderMeshes + "statue.obj", 4}));
 
 }  // namespace
 }  // namespace rigmesh

@@ -1,0 +1,26 @@
+#!/bin/bash
+# Rigs each character the auto-rig tests use (the assimp-testmodels
+# characters, the meshes made in Blender in tests/data/autorig) with
+# `rigmesh rig` and renders the result as Blender imports it
+# (scripts/dev/render_rig.py) into docs/images/autorig/NAME.png: the
+# baselines to look at after a change to autorig/.
+#
+# usage: scripts/dev/render_autorig_baselines.sh [RIGMESH] (default build/dev/app/rigmesh)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+rigmesh="${1:-$root/build/dev/app/rigmesh}"
+out="$root/docs/images/autorig"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$out"
+models=/usr/share/assimp/models
+for file in "$models/MD2/faerie.md2" "$models/MD2/sydney.md2" "$models/OBJ/WusonOBJ.obj" \
+            "$models/COB/dwarf.cob" "$models/BLEND/HUMAN.blend" "$models/OBJ/spider.obj" \
+            "$root/tests/data/autorig/suzanne.obj" "$root/tests/data/autorig/primitives.obj" \
+            "$root/tests/data/autorig/statue.obj"; do
+    name="$(basename "${file%.*}")"
+    "$rigmesh" rig "$file" -o "$work/$name.glb" --leaf-bones
+    blender -b --factory-startup --python-exit-code 1 \
+        --python "$root/scripts/dev/render_rig.py" -- "$work/$name.glb" "$out/$name.png" >/dev/null
+    echo "$out/$name.png"
+done
