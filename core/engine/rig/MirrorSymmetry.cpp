@@ -31,36 +31,49 @@ constexpr int kRefinements = 6;
 class VertexGrid {
   public:
     VertexGrid(const std::vector<Vec3>& points, double cell) : points_(points), cell_(cell) {
-        for (int i = 0; i < static_cast<int>(points.size()); ++i)
-            cells_[keyOf(cellOf(points[i]))].push_back(i);
+        for (int i = 0; i < static_cast<int>(points.size()); ++i) {
+            const Eigen::Vector3i c = cellOf(points[i]);
+            cells_[keyOf(c)].push_back(i);
+            lowest_ = i == 0 ? c : lowest_.cwiseMin(c);
+            highest_ = i == 0 ? c : highest_.cwiseMax(c);
+        }
     }
 
     // The nearest point's index (-1 for none).
     int nearest(const Vec3& p) const {
+        if (points_.empty())
+            return -1;
         const Eigen::Vector3i centre = cellOf(p);
+        // No occupied cell lies beyond the shell that reaches the grid's
+        // farthest corner.
+        const int reach =
+            (centre - lowest_).cwiseAbs().cwiseMax((highest_ - centre).cwiseAbs()).maxCoeff();
         int best = -1;
         double bestDistance = std::numeric_limits<double>::infinity();
+        const auto visit = [&](const Eigen::Vector3i& c) {
+            auto found = cells_.find(keyOf(c));
+            if (found == cells_.end())
+                return;
+            for (int i : found->second) {
+                const double d = (points_[i] - p).squaredNorm();
+                if (d < bestDistance) {
+                    bestDistance = d;
+                    best = i;
+                }
+            }
+        };
         // Shells of cells around p until the next shell is farther than the
-        // best point found.
-        for (int ring = 0; ring < 64; ++ring) {
+        // best point found; only a shell's own cells are visited (its two
+        // z faces whole, the rest of its ring at those two z only).
+        for (int ring = 0; ring < 64 && ring <= reach; ++ring) {
             if (best >= 0 && (ring - 1) * cell_ > std::sqrt(bestDistance))
                 break;
             for (int x = -ring; x <= ring; ++x)
-                for (int y = -ring; y <= ring; ++y)
-                    for (int z = -ring; z <= ring; ++z) {
-                        if (std::max({std::abs(x), std::abs(y), std::abs(z)}) != ring)
-                            continue;
-                        auto found = cells_.find(keyOf(centre + Eigen::Vector3i(x, y, z)));
-                        if (found == cells_.end())
-                            continue;
-                        for (int i : found->second) {
-                            const double d = (points_[i] - p).squaredNorm();
-                            if (d < bestDistance) {
-                                bestDistance = d;
-                                best = i;
-                            }
-                        }
-                    }
+                for (int y = -ring; y <= ring; ++y) {
+                    const bool edge = std::abs(x) == ring || std::abs(y) == ring;
+                    for (int z = -ring; z <= ring; z += edge || ring == 0 ? 1 : 2 * ring)
+                        visit(centre + Eigen::Vector3i(x, y, z));
+                }
         }
         return best;
     }
@@ -80,6 +93,8 @@ class VertexGrid {
     const std::vector<Vec3>& points_;
     double cell_;
     std::unordered_map<std::int64_t, std::vector<int>> cells_;
+    Eigen::Vector3i lowest_ = Eigen::Vector3i::Zero();
+    Eigen::Vector3i highest_ = Eigen::Vector3i::Zero();
 };
 
 // The closest point of triangle abc to p (Ericson, Real-Time Collision
