@@ -4,12 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
-#include <unordered_map>
 #include <vector>
 
-#include "mesh/MeshAdjacency.h"
 #include "part/Part.h"
 
 namespace rigmesh {
@@ -27,74 +24,87 @@ constexpr int kSampleCount = 3000;
 // Refinement rounds per candidate (pairs, then the plane refitted).
 constexpr int kRefinements = 6;
 
-// The vertices in a uniform grid, for nearest-vertex queries.
-class VertexGrid {
+// The vertices in a k-d tree (split at the median of the box's longest
+// side), for exact nearest-vertex queries. A reflection through a wrong
+// candidate plane lands far from the surface; a uniform grid searched in
+// shells of cells then visits every cell out to it (measured: 4.3 of 4.8 s
+// of an auto-rig on 4820 vertices), the tree only the subtrees whose box
+// is nearer than the best vertex found.
+class VertexTree {
   public:
-    VertexGrid(const std::vector<Vec3>& points, double cell) : points_(points), cell_(cell) {
-        for (int i = 0; i < static_cast<int>(points.size()); ++i) {
-            const Eigen::Vector3i c = cellOf(points[i]);
-            cells_[keyOf(c)].push_back(i);
-            lowest_ = i == 0 ? c : lowest_.cwiseMin(c);
-            highest_ = i == 0 ? c : highest_.cwiseMax(c);
-        }
+    explicit VertexTree(const std::vector<Vec3>& points) : points_(points) {
+        order_.resize(points.size());
+        for (int i = 0; i < static_cast<int>(points.size()); ++i)
+            order_[i] = i;
+        nodes_.reserve(2 * points.size() / kLeafSize + 2);
+        if (!points.empty())
+            build(0, static_cast<int>(points.size()));
     }
 
     // The nearest point's index (-1 for none).
     int nearest(const Vec3& p) const {
-        if (points_.empty())
-            return -1;
-        const Eigen::Vector3i centre = cellOf(p);
-        // No occupied cell lies beyond the shell that reaches the grid's
-        // farthest corner.
-        const int reach =
-            (centre - lowest_).cwiseAbs().cwiseMax((highest_ - centre).cwiseAbs()).maxCoeff();
         int best = -1;
         double bestDistance = std::numeric_limits<double>::infinity();
-        const auto visit = [&](const Eigen::Vector3i& c) {
-            auto found = cells_.find(keyOf(c));
-            if (found == cells_.end())
-                return;
-            for (int i : found->second) {
-                const double d = (points_[i] - p).squaredNorm();
-                if (d < bestDistance) {
-                    bestDistance = d;
-                    best = i;
-                }
-            }
-        };
-        // Shells of cells around p until the next shell is farther than the
-        // best point found; only a shell's own cells are visited (its two
-        // z faces whole, the rest of its ring at those two z only).
-        for (int ring = 0; ring < 64 && ring <= reach; ++ring) {
-            if (best >= 0 && (ring - 1) * cell_ > std::sqrt(bestDistance))
-                break;
-            for (int x = -ring; x <= ring; ++x)
-                for (int y = -ring; y <= ring; ++y) {
-                    const bool edge = std::abs(x) == ring || std::abs(y) == ring;
-                    for (int z = -ring; z <= ring; z += edge || ring == 0 ? 1 : 2 * ring)
-                        visit(centre + Eigen::Vector3i(x, y, z));
-                }
-        }
+        if (!nodes_.empty())
+            search(0, p, best, bestDistance);
         return best;
     }
 
   private:
-    Eigen::Vector3i cellOf(const Vec3& p) const {
-        return Eigen::Vector3i(static_cast<int>(std::floor(p.x() / cell_)),
-                               static_cast<int>(std::floor(p.y() / cell_)),
-                               static_cast<int>(std::floor(p.z() / cell_)));
+    static constexpr int kLeafSize = 8;
+    struct Node {
+        Eigen::AlignedBox3d box;
+        int begin = 0, end = 0;   // the points order_[begin, end)
+        int low = -1, high = -1;  // children (none for a leaf)
+    };
+
+    int build(int begin, int end) {
+        const int index = static_cast<int>(nodes_.size());
+        nodes_.push_back({});
+        Eigen::AlignedBox3d box;
+        for (int i = begin; i < end; ++i)
+            box.extend(points_[order_[i]]);
+        nodes_[index].box = box;
+        nodes_[index].begin = begin;
+        nodes_[index].end = end;
+        if (end - begin <= kLeafSize)
+            return index;
+        int axis = 0;
+        box.sizes().maxCoeff(&axis);
+        const int middle = begin + (end - begin) / 2;
+        std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
+                         [&](int a, int b) { return points_[a][axis] < points_[b][axis]; });
+        const int low = build(begin, middle);
+        const int high = build(middle, end);
+        nodes_[index].low = low;
+        nodes_[index].high = high;
+        return index;
     }
-    static std::int64_t keyOf(const Eigen::Vector3i& c) {
-        return (static_cast<std::int64_t>(c.x()) * 73856093) ^
-               (static_cast<std::int64_t>(c.y()) * 19349663) ^
-               (static_cast<std::int64_t>(c.z()) * 83492791);
+
+    void search(int index, const Vec3& p, int& best, double& bestDistance) const {
+        const Node& node = nodes_[index];
+        if (node.box.squaredExteriorDistance(p) >= bestDistance)
+            return;
+        if (node.low < 0) {
+            for (int i = node.begin; i < node.end; ++i) {
+                const double d = (points_[order_[i]] - p).squaredNorm();
+                if (d < bestDistance || (d == bestDistance && order_[i] < best)) {
+                    bestDistance = d;
+                    best = order_[i];
+                }
+            }
+            return;
+        }
+        // The nearer child first, so that the farther one is often skipped.
+        const bool lowFirst = nodes_[node.low].box.squaredExteriorDistance(p) <=
+                              nodes_[node.high].box.squaredExteriorDistance(p);
+        search(lowFirst ? node.low : node.high, p, best, bestDistance);
+        search(lowFirst ? node.high : node.low, p, best, bestDistance);
     }
 
     const std::vector<Vec3>& points_;
-    double cell_;
-    std::unordered_map<std::int64_t, std::vector<int>> cells_;
-    Eigen::Vector3i lowest_ = Eigen::Vector3i::Zero();
-    Eigen::Vector3i highest_ = Eigen::Vector3i::Zero();
+    std::vector<int> order_;
+    std::vector<Node> nodes_;
 };
 
 // The closest point of triangle abc to p (Ericson, Real-Time Collision
@@ -129,8 +139,8 @@ Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& 
 // the vertex when there are no faces).
 class SurfaceDistance {
   public:
-    SurfaceDistance(const TriMesh& mesh, double cell)
-        : mesh_(mesh), grid_(mesh.vertices, cell), faces_(mesh.vertices.size()) {
+    explicit SurfaceDistance(const TriMesh& mesh)
+        : mesh_(mesh), tree_(mesh.vertices), faces_(mesh.vertices.size()) {
         for (int f = 0; f < mesh.faceCount(); ++f)
             for (int v : mesh.faces[f])
                 faces_[v].push_back(f);
@@ -143,7 +153,7 @@ class SurfaceDistance {
     // The nearest vertex, and the closest point of the surface there.
     Closest operator()(const Vec3& p) const {
         Closest closest;
-        closest.vertex = grid_.nearest(p);
+        closest.vertex = tree_.nearest(p);
         if (closest.vertex < 0)
             return closest;
         closest.point = mesh_.vertices[closest.vertex];
@@ -162,15 +172,9 @@ class SurfaceDistance {
 
   private:
     const TriMesh& mesh_;
-    VertexGrid grid_;
+    VertexTree tree_;
     std::vector<std::vector<int>> faces_;
 };
-
-// The grid's cell: about an edge (a tenth of the diagonal without faces).
-double cellFor(const TriMesh& mesh, double diagonal) {
-    const double edge = mesh.faceCount() > 0 ? meanEdgeLength(mesh) : 0.1 * diagonal;
-    return std::max(edge, 1e-9 * diagonal + 1e-300);
-}
 
 double diagonalOf(const std::vector<Vec3>& points) {
     Eigen::AlignedBox3d box;
@@ -248,7 +252,7 @@ MirrorPlane refine(const TriMesh& mesh, const SurfaceDistance& distance,
 
 double mirrorError(const TriMesh& mesh, const MirrorPlane& plane) {
     const double diagonal = diagonalOf(mesh.vertices);
-    const SurfaceDistance distance(mesh, cellFor(mesh, diagonal));
+    const SurfaceDistance distance(mesh);
     std::vector<int> all(mesh.vertexCount());
     for (int v = 0; v < mesh.vertexCount(); ++v)
         all[v] = v;
@@ -270,7 +274,7 @@ std::optional<MirrorFit> findMirrorPlane(const TriMesh& mesh, const MirrorSearch
         covariance += (p - centroid) * (p - centroid).transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> pca(covariance);
 
-    const SurfaceDistance distance(mesh, cellFor(mesh, diagonal));
+    const SurfaceDistance distance(mesh);
     const std::vector<int> sample = sampleOf(mesh);
     std::vector<Vec3> candidates;
     for (int k = 0; k < 3; ++k) {
