@@ -100,17 +100,8 @@ TEST_P(AutoRigCharacter, LeafCountIsTheLimbsAPersonCounts) {
 
 TEST_P(AutoRigCharacter, EveryOriginalVertexHasPositiveWeightsSummingToOne) {
     const RiggedCharacter& character = rigged(GetParam().file);
-    const auto& weights = character.rigged.part.weights.perVertex;
-    ASSERT_EQ(weights.size(), character.imported.mesh.vertices.size());
-    for (const auto& list : weights) {
-        ASSERT_FALSE(list.empty());
-        double sum = 0.0;
-        for (const auto& [bone, weight] : list) {
-            EXPECT_GT(weight, 0.0);
-            sum += weight;
-        }
-        EXPECT_NEAR(sum, 1.0, 1e-9);
-    }
+    autorigtest::expectPositiveWeightsSummingToOne(character.rigged.part.weights.perVertex,
+                                                   character.imported.mesh.vertexCount());
 }
 
 INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,

@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 
+#include "AutoRigTestSupport.h"
 #include "MeshInside.h"
 #include "TestShapes.h"
 #include "autorig/AutoRig.h"
@@ -58,16 +59,8 @@ void expectRiggedAsGiven(const AutoRigResult& result, const TriMesh& given) {
     EXPECT_TRUE(analyseMesh(result.rigSurface).isClosed());
     for (const Joint& joint : result.part.skeleton.joints())
         EXPECT_GT(parttest::windingNumber(result.rigSurface, joint.position), 0.5);
-    ASSERT_EQ(result.part.weights.perVertex.size(), given.vertices.size());
-    for (const auto& list : result.part.weights.perVertex) {
-        ASSERT_FALSE(list.empty());
-        double sum = 0.0;
-        for (const auto& [bone, weight] : list) {
-            EXPECT_GT(weight, 0.0);
-            sum += weight;
-        }
-        EXPECT_NEAR(sum, 1.0, 1e-9);
-    }
+    autorigtest::expectPositiveWeightsSummingToOne(result.part.weights.perVertex,
+                                                   given.vertexCount());
 }
 
 TEST(AutoRigRepair, AClosedRodIsRiggedWithoutRepairsAlongItsLength) {

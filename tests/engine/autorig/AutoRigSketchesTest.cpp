@@ -27,16 +27,7 @@ TEST_P(AutoRigSketch, SkeletonIsATreeInsideTheSurface) {
 TEST_P(AutoRigSketch, RiggedPartIsValidClosedAndWeighted) {
     const Part& part = importedSketch(GetParam()).rigged.part;
     EXPECT_TRUE(part.validateSolid().empty());
-    ASSERT_EQ(part.weights.perVertex.size(), part.mesh.vertices.size());
-    for (const auto& list : part.weights.perVertex) {
-        ASSERT_FALSE(list.empty());
-        double sum = 0.0;
-        for (const auto& [bone, weight] : list) {
-            EXPECT_GT(weight, 0.0);
-            sum += weight;
-        }
-        EXPECT_NEAR(sum, 1.0, 1e-9);
-    }
+    autorigtest::expectPositiveWeightsSummingToOne(part.weights.perVertex, part.mesh.vertexCount());
 }
 
 TEST_P(AutoRigSketch, DominantBoneIsTheClosestVisibleBoneForAtLeast95Percent) {

@@ -2,6 +2,8 @@
 // without a rig, imported through Assimp, rigged; cached per test binary.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -84,6 +86,21 @@ inline int bonePointsOutside(const Part& part) {
             outside += parttest::windingNumber(part.mesh, p) < 0.5 ? 1 : 0;
         }
     return outside;
+}
+
+// One weight list per vertex, none empty, every weight positive, each
+// list summing to 1.
+inline void expectPositiveWeightsSummingToOne(const WeightsById& perVertex, int vertexCount) {
+    ASSERT_EQ(perVertex.size(), static_cast<std::size_t>(vertexCount));
+    for (const auto& list : perVertex) {
+        ASSERT_FALSE(list.empty());
+        double sum = 0.0;
+        for (const auto& [bone, weight] : list) {
+            EXPECT_GT(weight, 0.0);
+            sum += weight;
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-9);
+    }
 }
 
 }  // namespace rigmesh::autorigtest
