@@ -157,10 +157,13 @@ std::map<std::string, bool> readColladaBoneConnections(const std::string& dae) {
     std::map<std::string, bool> connected;
     forEachBlenderJointTechnique(
         dae, [&](const std::string& name, const tinyxml2::XMLElement& technique) {
+            // Blender's COLLADA exporter writes `connect` only for a connected
+            // bone: a joint with Blender's extra but without it is disconnected
+            // (Rigify's neck and finger roots lie on their parents' tails).
             const tinyxml2::XMLElement* value = technique.FirstChildElement("connect");
             int flag = 0;
-            if (value != nullptr && value->QueryIntText(&flag) == tinyxml2::XML_SUCCESS)
-                connected[name] = flag != 0;
+            connected[name] = value != nullptr &&
+                              value->QueryIntText(&flag) == tinyxml2::XML_SUCCESS && flag != 0;
         });
     return connected;
 }

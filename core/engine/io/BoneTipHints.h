@@ -52,6 +52,7 @@ inline constexpr const char* kNameMetadataKey = "rigmesh_name";
 std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae);
 // Per joint name: Blender's "Connected" flag from the same extras (`connect`,
 // which Blender's COLLADA importer honours and we write from the skeleton).
+// A joint with Blender's extra but no `connect` is not connected.
 std::map<std::string, bool> readColladaBoneConnections(const std::string& dae);
 // Per joint name: the bone's own name our exporter wrote where the joint had
 // to be named otherwise (`<technique profile="rigmesh">`, kNameMetadataKey).

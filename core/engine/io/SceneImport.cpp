@@ -21,6 +21,7 @@
 #include "io/AssimpNodeTree.h"
 #include "io/AssimpRigImport.h"
 #include "io/BoneTipHints.h"
+#include "io/ColladaActionNames.h"
 
 namespace rigmesh {
 namespace {
@@ -178,6 +179,7 @@ ImportedScene importScene(const std::string& path) {
                 }
 
     RigHints hints;
+    std::map<std::string, std::string> colladaActions;
     for (unsigned a = 0; a < scene.mNumAnimations; ++a)
         for (unsigned c = 0; c < scene.mAnimations[a]->mNumChannels; ++c)
             hints.animatedNodes.insert(scene.mAnimations[a]->mChannels[c]->mNodeName.C_Str());
@@ -186,6 +188,7 @@ ImportedScene importScene(const std::string& path) {
         hints.colladaTips = readColladaBoneTips(text);
         hints.colladaConnections = readColladaBoneConnections(text);
         hints.colladaNames = readColladaBoneNames(text);
+        colladaActions = readColladaActionNames(text);
     }
 
     // Skinned meshes by the skeleton they share, each other mesh alone, in
@@ -226,7 +229,10 @@ ImportedScene importScene(const std::string& path) {
             for (unsigned a = 0; a < scene.mNumAnimations; ++a)
                 if (std::optional<Clip> clip =
                         importClip(*scene.mAnimations[a], tree, imported, bones)) {
-                    clip->name = actionName(scene.mAnimations[a]->mName.C_Str());
+                    const std::string animation = scene.mAnimations[a]->mName.C_Str();
+                    const auto action = colladaActions.find(animation);
+                    clip->name =
+                        action != colladaActions.end() ? action->second : actionName(animation);
                     imported.clips.push_back(std::move(*clip));
                 }
         } else {
