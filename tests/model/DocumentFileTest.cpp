@@ -292,6 +292,29 @@ TEST(DocumentFile, AFaceCornerMovedOntoAnotherVertexIsRejectedNamingThePart) {
                    "repeats a vertex");
 }
 
+// Documents written before Part::surfaceFromFile was stored: a merged or cut
+// part (no outline) with a closed surface is held to the same checks as a
+// sketch's; only an open one is taken for an import.
+TEST(DocumentFile, AnOlderDocumentsClosedPartWithoutOutlineIsCheckedAsMadeHere) {
+    const auto older = [](bool open) {
+        return editedSample([open](auto& root) {
+            auto& part = root["parts"][1]["part"];
+            part.erase("surfaceFromFile");
+            part["outline"] = nlohmann::json::array();
+            if (open) {  // face 0 turned over: its edges are no longer shared properly
+                auto& faces = part["mesh"]["faces"];
+                std::swap(faces[1], faces[2]);
+            }
+        });
+    };
+    const DocumentContents closed = DocumentFile::fromBytes(older(false));
+    ASSERT_EQ(closed.parts.size(), 2u);
+    EXPECT_FALSE(closed.parts[1].part->surfaceFromFile);
+    const DocumentContents flipped = DocumentFile::fromBytes(older(true));
+    ASSERT_EQ(flipped.parts.size(), 2u);
+    EXPECT_TRUE(flipped.parts[1].part->surfaceFromFile);
+}
+
 TEST(DocumentFile, ACorruptFileNamesNoLibraryInternals) {
     const QByteArray bytes = bytesOf(*sampleDocument());
     for (const QByteArray& bad : {bytes.left(bytes.size() / 3), bytes + QByteArray("x"),

@@ -191,6 +191,37 @@ std::array<int, 2> bodySleeves(const ChordalAxis& axis, const AxisBranch& branch
     return {fromStart, static_cast<int>(branch.sleeves.size()) - fromEnd};
 }
 
+// The sleeves [lo, hi] of `branch` whose patch carries the pruned bump off
+// sleeve s: the sleeve's two chords meet at one point across the body, so
+// on a bump narrower than half the body (a short limb the chordal axis
+// prunes) its patch alone was a sliver between two body pieces and came
+// out as a horn with a fold around it, or, left to the body's sections, the
+// bump was cut off in a wall. The run takes in the body sleeves on either
+// side, one at a time, until its end chords stand `wanted` apart on the
+// bump's side, as a wide bump's do, staying within the body [first, end).
+std::array<int, 2> bumpRun(const ChordalAxis& axis, const AxisBranch& branch, int s, int first,
+                           int end, double wanted) {
+    // The chords' shared end is the apex across the body; the bump is on
+    // the other side (PolygonEdge is (left, right) along the branch).
+    const int side = branch.chords[s][0] == branch.chords[s + 1][0] ? 1 : 0;
+    int lo = s, hi = s;
+    auto span = [&] {
+        return (axis.cdt.points[branch.chords[lo][side]] -
+                axis.cdt.points[branch.chords[hi + 1][side]])
+            .norm();
+    };
+    while (span() < wanted) {
+        const bool before = lo > first, after = hi + 1 < end;
+        if (!before && !after)
+            break;
+        if (before)
+            --lo;
+        if (after && span() < wanted)
+            ++hi;
+    }
+    return {lo, hi};
+}
+
 // Splits branches where a body sleeve carries a pruned bump high enough to
 // see (BodyBumps.h): the sleeve becomes a node, so it and its bump form a
 // connecting region. Runs of such sleeves are `forcedMerge` pieces, as are
@@ -214,18 +245,52 @@ std::vector<AxisBranch> splitAtBodyBumps(const ChordalAxis& axis, std::vector<bo
     const double minimumHeight = options.bumpHeightFactor * *percentile;
     for (const AxisBranch& branch : axis.branches) {
         const auto [first, end] = bodySleeves(axis, branch, node, options);
-        std::vector<int> bumps;
+        std::vector<std::array<int, 2>> runs;
         for (int s = first; s < end; ++s) {
-            // A bump narrower than half the body there (a wart) is left to
-            // the body's cross sections: as a patch between two body pieces
-            // whose end chords meet at one point across the body, it came
-            // out as a horn with a fold around it.
             const PrunedBump bump = prunedBumpOf(axis, branch.sleeves[s]);
+            if (bump.height < minimumHeight)
+                continue;
             const double body =
                 0.5 * (axis.length(branch.chords[s]) + axis.length(branch.chords[s + 1]));
-            if (bump.height >= minimumHeight && bump.base >= 0.5 * body)
-                bumps.push_back(s);
+            runs.push_back(bumpRun(axis, branch, s, first, end, 0.5 * body));
         }
+        // A narrow bump's run that leaves no body piece between it and
+        // another bump's (they meet, or the piece between is short-yet-wide
+        // and merges, step 1) makes one patch of both: a row of short legs
+        // became one patch along the whole body, folded at every leg. Such
+        // bumps stay with the body's sections.
+        auto noBodyBetween = [&](const std::array<int, 2>& a, const std::array<int, 2>& b) {
+            if (b[0] <= a[1] + 1)
+                return true;
+            AxisBranch between;
+            between.startNode = branch.sleeves[a[1]];
+            between.endNode = branch.sleeves[b[0]];
+            between.chords.assign(branch.chords.begin() + a[1] + 1,
+                                  branch.chords.begin() + b[0] + 1);
+            return between.chords.size() < 3 ||
+                   branchAxisLength(axis, between) <
+                       options.mergeLengthFactor * meanChordLength(axis, between);
+        };
+        std::vector<bool> inRun(branch.sleeves.size(), false);
+        for (std::size_t r = 0; r < runs.size(); ++r) {
+            const auto [lo, hi] = runs[r];
+            const bool grown = hi > lo;
+            const bool crowded = std::any_of(runs.begin(), runs.end(), [&](const auto& other) {
+                if (&other == &runs[r])
+                    return false;
+                if (other[1] >= lo && other[0] <= hi)  // they overlap
+                    return true;
+                return other[0] > hi ? noBodyBetween(runs[r], other)
+                                     : noBodyBetween(other, runs[r]);
+            });
+            if (grown && crowded)
+                continue;
+            std::fill(inRun.begin() + lo, inRun.begin() + hi + 1, true);
+        }
+        std::vector<int> bumps;
+        for (int s = first; s < end; ++s)
+            if (inRun[s])
+                bumps.push_back(s);
         if (bumps.empty()) {
             branches.push_back(branch);
             forcedMerge.push_back(false);

@@ -353,11 +353,13 @@ Part partFromJson(const json& object) {
     if (!part->meshPieces.empty())
         if (const std::vector<std::string> problems = part->validate(); !problems.empty())
             fail(problems.front());
-    // Parts written before it was stored: only a sketch's surface (it keeps
-    // its outline) is known to have been made here.
+    // Parts written before the flag was stored: a sketch's surface (it keeps
+    // its outline) was made here; of the others (merges, cuts, imports) one
+    // that is closed, manifold and oriented is treated as made here, so the
+    // loader keeps checking it, and any other was an import, kept as it was.
     part->surfaceFromFile = object.contains("surfaceFromFile")
                                 ? boolean(field(object, "surfaceFromFile"), "surfaceFromFile")
-                                : part->outline.empty();
+                                : part->outline.empty() && !part->validateSolid().empty();
     return stored;
 }
 

@@ -2,14 +2,18 @@
 // (SurfaceFamilyTest.cpp, tests/support/CreatureOutlines.h): the outlines
 // that miss a figure today, each with the figures it reaches (rounded up to
 // a tenth; 0 where it meets the limit). These are failures of the surface,
-// not accepted results. 10 of the 200 miss a figure (142 before folds were
+// not accepted results. 11 of the 200 miss a figure (142 before folds were
 // relaxed, surface/FoldRelaxation.h): nine by a single fold above the
 // 35-degree limit between neighbouring faces that relaxing leaves (fingers
 // and tentacles with the narrowest gaps, two limbs meeting a body at a
-// sharp angle), and stubs 20, one of whose pruned stubs is shaved 3.5
-// spacings off the silhouette (limit 2). p99, IoU and the bulge hold on
-// all. The test holds each listed outline to its recorded figures (none may
-// get worse) and every other outline to the limits.
+// sharp angle), and stubs 22 and 35 by a wall (SurfaceWall.h): a pleat of
+// a few steep faces about 4 spacings inside the outline, at 0.6 of the
+// surface's height, in a cap that took in a big round lobe whole (Teddy's
+// circle test), near where the limb meets the lobe; fold relaxation keeps
+// every edge there below 35 degrees but not the step. p99, IoU, the
+// silhouette and the bulge hold on all. The test
+// holds each listed outline to its recorded figures (none may get worse)
+// and every other outline to the limits.
 #pragma once
 
 #include <array>
@@ -24,22 +28,24 @@ struct KnownDefect {
     double p99;     // degrees between neighbouring face normals, 99th percentile
     double max;     // degrees, largest
     double shaved;  // outline spacings of the outline left outside the silhouette
+    double wall;    // outline spacings inside the outline of a steep face (SurfaceWall.h)
 };
 
 using testsupport::CreatureClass;
 
 // clang-format off
 inline constexpr KnownDefect kKnownDefects[] = {
-    {CreatureClass::Stubs, 20, 0.0, 0.0, 3.5},
-    {CreatureClass::Fingers, 7, 0.0, 71.2, 0.0},
-    {CreatureClass::Fingers, 12, 0.0, 44.9, 0.0},
-    {CreatureClass::Fingers, 22, 0.0, 86.4, 0.0},
-    {CreatureClass::Fingers, 36, 0.0, 37.8, 0.0},
-    {CreatureClass::Tentacles, 8, 0.0, 58.5, 0.0},
-    {CreatureClass::Tentacles, 25, 0.0, 35.3, 0.0},
-    {CreatureClass::Tentacles, 35, 0.0, 55.4, 0.0},
-    {CreatureClass::Angles, 14, 0.0, 37.8, 0.0},
-    {CreatureClass::Angles, 21, 0.0, 38.4, 0.0},
+    {CreatureClass::Stubs, 22, 0.0, 0.0, 0.0, 4.1},
+    {CreatureClass::Stubs, 35, 0.0, 0.0, 0.0, 3.9},
+    {CreatureClass::Fingers, 7, 0.0, 71.2, 0.0, 0.0},
+    {CreatureClass::Fingers, 12, 0.0, 44.9, 0.0, 0.0},
+    {CreatureClass::Fingers, 22, 0.0, 86.4, 0.0, 0.0},
+    {CreatureClass::Fingers, 36, 0.0, 37.8, 0.0, 0.0},
+    {CreatureClass::Tentacles, 8, 0.0, 58.5, 0.0, 0.0},
+    {CreatureClass::Tentacles, 25, 0.0, 35.3, 0.0, 0.0},
+    {CreatureClass::Tentacles, 35, 0.0, 55.4, 0.0, 0.0},
+    {CreatureClass::Angles, 14, 0.0, 37.8, 0.0, 0.0},
+    {CreatureClass::Angles, 21, 0.0, 38.4, 0.0, 0.0},
 };
 // clang-format on
 

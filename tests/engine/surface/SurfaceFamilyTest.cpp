@@ -6,7 +6,10 @@
 // edge, a front view whose silhouette covers the cleaned outline (IoU >=
 // 0.95) and strays from it by at most two outline spacings anywhere (so a
 // short limb the rig prunes is rounded into the body, not shaved to a
-// wall), and a short limb the skeleton keeps has a bone reaching into it.
+// wall), no steep face stands more than two spacings inside the outline
+// (SurfaceWall.h: a stub cut off or stepped down to a low patch leaves one
+// though the silhouette may hold), and a short limb the skeleton keeps has
+// a bone reaching into it.
 //
 // Every class is one test (CTest runs them in parallel), all 40 outlines
 // of it. An outline missing a figure fails the test unless it is listed in
@@ -33,6 +36,7 @@
 #include "OutlineDeviation.h"
 #include "SurfaceFamilyKnownDefects.h"
 #include "SurfaceTestSupport.h"
+#include "SurfaceWall.h"
 #include "mesh/MeshWriter.h"
 #include "mesh/SurfaceQuality.h"
 #include "rig/SkeletonFromRegions.h"
@@ -53,6 +57,7 @@ struct Figures {
     NormalAngles angles;
     double iou = 0;
     double shaved = 0, bulged = 0;  // outline spacings
+    double wall = 0;                // outline spacings
     int cylinders = 0;
     int stubsWithBones = 0;
     std::string error;  // the pipeline's refusal, if any
@@ -170,6 +175,7 @@ Figures measure(const CreatureOutline& outline, const std::string& name) {
         surfacetest::outlineDeviation(mesh, result.polygon.points, spacing);
     f.shaved = deviation.shaved / spacing;
     f.bulged = deviation.bulged / spacing;
+    f.wall = surfacetest::deepestWall(mesh, result.polygon.points).depth / spacing;
     f.cylinders = static_cast<int>(result.cylinders.size());
     if (std::getenv("RIGMESH_FAMILY_VERBOSE"))
         describeWorstEdges(result, 6);
@@ -191,7 +197,7 @@ Figures measure(const CreatureOutline& outline, const std::string& name) {
 // The figures an outline may reach: the limits, or for an outline listed
 // in SurfaceFamilyKnownDefects.h its recorded (worse) figures.
 struct Allowed {
-    double p99 = kP99Limit, max = kMaxLimit, shaved = kDeviationLimit;
+    double p99 = kP99Limit, max = kMaxLimit, shaved = kDeviationLimit, wall = kDeviationLimit;
 };
 
 Allowed allowedFor(CreatureClass shapeClass, int seed, bool* known) {
@@ -203,6 +209,7 @@ Allowed allowedFor(CreatureClass shapeClass, int seed, bool* known) {
             allowed.p99 = std::max(allowed.p99, d.p99);
             allowed.max = std::max(allowed.max, d.max);
             allowed.shaved = std::max(allowed.shaved, d.shaved);
+            allowed.wall = std::max(allowed.wall, d.wall);
         }
     return allowed;
 }
@@ -222,6 +229,8 @@ std::string failures(const Figures& f, const Allowed& allowed) {
         out << " shaved " << f.shaved;
     if (f.bulged > kDeviationLimit)
         out << " bulged " << f.bulged;
+    if (f.wall > allowed.wall)
+        out << " wall " << f.wall;
     return out.str();
 }
 
@@ -239,7 +248,7 @@ void checkClass(CreatureClass shapeClass) {
         double value;
         int seed;
     };
-    Worst p99{0, -1}, max{0, -1}, iou{1, -1}, shaved{0, -1}, bulged{0, -1};
+    Worst p99{0, -1}, max{0, -1}, iou{1, -1}, shaved{0, -1}, bulged{0, -1}, wall{0, -1};
     int stubs = 0, stubsWithBones = 0, missing = 0, knownCount = 0;
     std::vector<std::string> failed, fixed;
     std::string record;
@@ -247,9 +256,10 @@ void checkClass(CreatureClass shapeClass) {
         const CreatureOutline outline = testsupport::creatureOutline(shapeClass, seed);
         const std::string name = className + "_" + std::to_string(seed);
         const Figures f = measure(outline, name);
-        std::printf("%-12s %-6s cyl %2d p99 %5.1f max %5.1f IoU %.4f shaved %4.2f bulged %4.2f",
-                    name.c_str(), testsupport::strokeMannerName(outline.manner).c_str(),
-                    f.cylinders, f.angles.p99, f.angles.max, f.iou, f.shaved, f.bulged);
+        std::printf(
+            "%-12s %-6s cyl %2d p99 %5.1f max %5.1f IoU %.4f shaved %4.2f bulged %4.2f wall %4.2f",
+            name.c_str(), testsupport::strokeMannerName(outline.manner).c_str(), f.cylinders,
+            f.angles.p99, f.angles.max, f.iou, f.shaved, f.bulged, f.wall);
         if (!outline.stubs.empty())
             std::printf(" stubs %zu with bones %d", outline.stubs.size(), f.stubsWithBones);
         std::printf("\n");
@@ -262,11 +272,13 @@ void checkClass(CreatureClass shapeClass) {
         if (!meetsLimits) {
             ++missing;
             char line[160];
-            std::snprintf(line, sizeof line, "    {CreatureClass::%s, %d, %.1f, %.1f, %.1f},\n",
+            std::snprintf(line, sizeof line,
+                          "    {CreatureClass::%s, %d, %.1f, %.1f, %.1f, %.1f},\n",
                           testsupport::creatureClassTypeName(shapeClass).c_str(), seed,
                           f.angles.p99 > kP99Limit ? recorded(f.angles.p99) : 0.0,
                           f.angles.max > kMaxLimit ? recorded(f.angles.max) : 0.0,
-                          f.shaved > kDeviationLimit ? recorded(f.shaved) : 0.0);
+                          f.shaved > kDeviationLimit ? recorded(f.shaved) : 0.0,
+                          f.wall > kDeviationLimit ? recorded(f.wall) : 0.0);
             record += line;
         }
         const std::string failure = failures(f, allowed);
@@ -285,14 +297,15 @@ void checkClass(CreatureClass shapeClass) {
         worse(iou, f.iou, false);
         worse(shaved, f.shaved, true);
         worse(bulged, f.bulged, true);
+        worse(wall, f.wall, true);
     }
     std::printf(
         "%s worst: p99 %.1f (seed %d) max %.1f (seed %d) IoU %.4f (seed %d) shaved %.2f "
-        "(seed %d) bulged %.2f (seed %d); stubs with bones %d of %d; %d of %d miss a figure "
-        "(%d listed as known defects)\n",
+        "(seed %d) bulged %.2f (seed %d) wall %.2f (seed %d); stubs with bones %d of %d; %d of %d "
+        "miss a figure (%d listed as known defects)\n",
         className.c_str(), p99.value, p99.seed, max.value, max.seed, iou.value, iou.seed,
-        shaved.value, shaved.seed, bulged.value, bulged.seed, stubsWithBones, stubs, missing,
-        kFamilySize, knownCount);
+        shaved.value, shaved.seed, bulged.value, bulged.seed, wall.value, wall.seed, stubsWithBones,
+        stubs, missing, kFamilySize, knownCount);
     if (std::getenv("RIGMESH_FAMILY_RECORD"))
         std::printf("known defects of %s, as recorded now:\n%s", className.c_str(), record.c_str());
     for (const std::string& name : fixed)

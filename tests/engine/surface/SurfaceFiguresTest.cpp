@@ -32,9 +32,11 @@ constexpr double kIoULimit = 0.95;
 constexpr int kRingLimit = 12;
 
 // Measured 2026-11-25. caterpillar: its seven narrow bumps (0.36 wide on a
-// body 1.4 across) are left to the body's sections, so they are shaved (IoU
-// 0.945); as patches they came out as horns with folds of up to 122 degrees
-// around them. (The biped's crotch, 78 degrees on a 90-degree concave
+// body 1.4 across) stand too close together for a body piece between their
+// patches (axis/Decomposition.cpp: bumpRun), so they are left to the body's
+// sections and shaved (IoU 0.945); as one-sleeve patches they came out as
+// horns with folds of up to 122 degrees around them, as one patch along the
+// body with folds of 47. (The biped's crotch, 78 degrees on a 90-degree concave
 // corner, and the quadruped's, 55, meet every target since the surface is
 // built on the outline with concave corners rounded, each point moving at
 // most one spacing: 32.0 and 30.7.)
