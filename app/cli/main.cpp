@@ -32,7 +32,8 @@ commands:
       glTF keeps at most 4). Each bone node's +Y axis runs along its bone, as
       Blender expects; --leaf-bones adds an end bone `<bone>_end` at each leaf
       bone's tail (like Blender's "Add Leaf Bones"), so that every importer
-      also knows the leaves' lengths. --subdivide N (0-4) refines the written
+      also knows the leaves' lengths; it points back along its leaf, so that
+      Blender shows it inside the limb. --subdivide N (0-4) refines the written
       surface by N rounds of Loop subdivision, --decimate FACES coarsens it
       to at most FACES triangles (quadric error, every kept vertex an
       original one); skin weights are carried, the rig is unchanged, and

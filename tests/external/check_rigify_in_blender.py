@@ -156,13 +156,31 @@ def main(arguments):
               f"{sum(b['connected'] for b in mine.values())} connected; {len(connected)} differ: "
               f"{connected[:5]}")
     worst, where = 0.0, None
+    worst_end, where_end, end_bones = 0.0, None, 0
     for name in common:
-        for end in ("head", "tail"):
+        leaf = mine[name]["parent"]
+        if name.endswith("_end") and leaf == name[:-len("_end")] and theirs[name]["parent"] == leaf:
+            # An end bone (FBX "Add Leaf Bones"): Blender's importer gives it
+            # its leaf's length along its own axis. Blender's own end bones
+            # point on, out of the limb; ours point back along the leaf and
+            # end on its head, inside (io/ExportRig.h endBoneOf). Heads (the
+            # leaf's tail) must agree with Blender's file.
+            end_bones += 1
+            error = (mine[name]["tail"] - mine[leaf]["head"]).length / size
+            if error > worst_end:
+                worst_end, where_end = error, name
+            ends = ("head",)
+        else:
+            ends = ("head", "tail")
+        for end in ends:
             error = (theirs[name][end] - mine[name][end]).length / size
             if error > worst:
                 worst, where = error, f"{name} {end}"
     check("heads and tails", worst <= BONE_TOLERANCE, f"largest difference {worst:.3g} of the size "
-          f"({where})")
+          f"({where}; end bones: heads only)")
+    check("end bones back along their leaves", worst_end <= BONE_TOLERANCE,
+          f"{end_bones} end bones, tail farthest from its leaf's head by {worst_end:.3g} of the size "
+          f"({where_end or '-'})")
     check("action", my_action is not None and their_action is not None,
           f"ours {my_action}, Blender's {their_action}")
     check("keyed frames", my_keys[:1] == their_keys[:1] and my_keys[-1:] == their_keys[-1:],

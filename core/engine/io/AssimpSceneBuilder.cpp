@@ -90,9 +90,10 @@ void makeBoneNamesUnique(ExportRig& rig, std::set<std::string>& used) {
     }
 }
 
-aiNode* newNode(const std::string& name, const Vec3& translation) {
+aiNode* newNode(const std::string& name, const Vec3& translation,
+                const Eigen::Quaterniond& rotation) {
     auto* node = new aiNode(name);
-    node->mTransformation = translationMatrix(translation);
+    node->mTransformation = rigidMatrix(translation, rotation);
     return node;
 }
 
@@ -107,29 +108,22 @@ void setChildren(aiNode* parent, const std::vector<aiNode*>& children) {
     }
 }
 
-// The end bone of a leaf (ExportOptions::leafBones): `<bone>_end`, a child
-// of the leaf's node at its tail, on the leaf's +Y axis.
-std::string endBoneName(const ExportBoneNode& leaf) {
-    return leaf.name + "_end";
-}
-
 // One node per bone at its head, its +Y along the bone, parented by the bone
 // hierarchy, nodes in the bind pose
 // (docs/EXCHANGE.md rule 6); with `leafBones`, an end node under each leaf.
 std::vector<aiNode*> boneNodes(const ExportRig& rig, bool leafBones) {
     std::vector<aiNode*> nodes;
     std::vector<std::vector<aiNode*>> children(rig.nodes.size());
-    for (const ExportBoneNode& n : rig.nodes) {
-        auto* node = new aiNode(n.name);
-        node->mTransformation = rigidMatrix(n.restTranslation, n.restRotation);
-        nodes.push_back(node);
-    }
+    for (const ExportBoneNode& n : rig.nodes)
+        nodes.push_back(newNode(n.name, n.restTranslation, n.restRotation));
     std::vector<aiNode*> roots;
     for (std::size_t i = 0; i < rig.nodes.size(); ++i) {
         const int parent = rig.nodes[i].parent;
         (parent < 0 ? roots : children[static_cast<std::size_t>(parent)]).push_back(nodes[i]);
-        if (leafBones && rig.nodes[i].leaf)
-            children[i].push_back(newNode(endBoneName(rig.nodes[i]), rig.nodes[i].localTail()));
+        if (leafBones && rig.nodes[i].leaf) {  // at the leaf's tail, pointing back (ExportRig.h)
+            const ExportBoneNode end = endBoneOf(rig.nodes[i]);
+            children[i].push_back(newNode(end.name, end.restTranslation, end.restRotation));
+        }
     }
     for (std::size_t i = 0; i < nodes.size(); ++i)
         setChildren(nodes[i], children[i]);
@@ -178,11 +172,10 @@ void addBones(aiMesh* mesh, const Part& part, const ExportRig& rig, int maxInflu
         }
         bones.push_back(bone);
         if (leafBones && node.leaf) {
+            const ExportBoneNode endNode = endBoneOf(node);
             auto* end = new aiBone;
-            end->mName = aiString(endBoneName(node));
-            Eigen::Affine3d bind = node.inverseBind().inverse(Eigen::Isometry);
-            bind.translate(node.localTail());
-            end->mOffsetMatrix = toAi(bind.inverse(Eigen::Isometry));
+            end->mName = aiString(endNode.name);
+            end->mOffsetMatrix = toAi(endNode.inverseBind());
             bones.push_back(end);
         }
     }

@@ -63,7 +63,18 @@ void addTips(tinyxml2::XMLElement& parent,
 }  // namespace
 
 std::string withColladaBoneTips(const std::string& dae, const std::vector<ExportRig>& rigs) {
-    const auto bones = bonesByName(rigs);
+    auto bones = bonesByName(rigs);
+    // End bones (ExportOptions::leafBones) get the tip their glTF and FBX
+    // nodes give Blender: back along the leaf (ExportRig.h endBoneOf). A
+    // joint named so is always the end bone: the scene builder keeps every
+    // `<bone>_end` name free for it.
+    std::vector<ExportBoneNode> ends;
+    for (const ExportRig& rig : rigs)
+        for (const ExportBoneNode& node : rig.nodes)
+            if (node.leaf)
+                ends.push_back(endBoneOf(node));
+    for (const ExportBoneNode& end : ends)
+        bones.emplace(end.name, &end);
     return editColladaXml(dae, [&](tinyxml2::XMLElement& root) {
         tinyxml2::XMLElement* scenes = root.FirstChildElement("library_visual_scenes");
         for (tinyxml2::XMLElement* scene =

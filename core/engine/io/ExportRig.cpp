@@ -156,6 +156,30 @@ Eigen::Quaterniond ExportRig::localRotation(int node, const Pose& pose) const {
     return (parentFrame.conjugate() * axisAligned * n.restFrame).normalized();
 }
 
+ExportBoneNode endBoneOf(const ExportBoneNode& leaf) {
+    ExportBoneNode end;
+    end.name = leaf.name + "_end";
+    end.headJoint = end.tailJoint = leaf.tailJoint;
+    end.connected = true;  // its head is the leaf's tail
+    end.head = leaf.tail;
+    end.tail = leaf.head;
+    end.leaf = true;
+    // Half a turn about an axis across both the frame's +Y and the leaf (in
+    // the leaf's frame): both then run backwards, the bone axis Blender's FBX
+    // and COLLADA importers read (+Y) and the direction its glTF importer
+    // snaps to the nearest frame axis (BoneAxes). Generated frames have the
+    // leaf on +Y or -Z: the turn is about +X, and the end keeps the leaf's X
+    // axis (its roll).
+    const Vec3 along = leaf.localTail();
+    Vec3 across = along.cross(Vec3::UnitY());
+    across = across.norm() > 1e-9 * along.norm() && across.norm() > 0 ? across.normalized()
+                                                                      : Vec3(Vec3::UnitX());
+    end.restTranslation = along;
+    end.restRotation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI, across));
+    end.restFrame = (leaf.restFrame * end.restRotation).normalized();
+    return end;
+}
+
 double ExportBoneNode::roll() const {
     const Vec3 along = tail - head;
     if (!(along.norm() > 0))

@@ -14,10 +14,10 @@
 // Disconnected bones (Skeleton.h): a bone leaving an attached chain's root
 // is a child of the node of the bone the chain hangs from, placed at its own
 // head (Blender's disconnected child); a root chain's bones hang from the
-// Armature node like root bones. Optionally (`leafTips`) a leaf
+// Armature node like root bones. Optionally (ExportOptions::leafBones) a leaf
 // bone gets an end node `<bone>_end` at its tail, child of the bone node and
 // a joint without weights, like Blender's FBX "Add Leaf Bones": importers then
-// know the leaf's length too.
+// know the leaf's length too (endBoneOf).
 //
 // Positions are baked: a point x of the part becomes unitScale * placement(x).
 // Our bone frames (Pose.h) are the world axes at rest and every bone turns
@@ -89,6 +89,17 @@ struct ExportRig {
     Vec3 localTranslation(int node, const Pose& pose) const;
     Eigen::Quaterniond localRotation(int node, const Pose& pose) const;
 };
+
+// The end bone `<leaf>_end` of a leaf bone node: a joint without weights
+// whose head is the leaf's tail and whose frame is the leaf's turned half a
+// turn about an axis across the bone, so that its bone axis runs back along
+// the leaf (tail = the leaf's head). Blender's glTF and FBX importers give
+// an end bone its parent's length along its own axis (docs/EXCHANGE.md,
+// "Leaf bones in Blender"): pointing on out of the limb, as Blender's own
+// end bones do, it would end a leaf's length outside the surface; pointing
+// back it lies inside, along the leaf, and the leaf keeps its length.
+// `parent` and `bone` stay -1: the node is not one of the rig's bones.
+ExportBoneNode endBoneOf(const ExportBoneNode& leaf);
 
 // Which local axis of a bone node runs along the bone. Blender's glTF
 // importer (3.4, default "Temperance" bone heuristic) points a bone at its

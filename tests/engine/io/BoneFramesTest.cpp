@@ -3,7 +3,7 @@
 // parent bone, ExportRig.h), the skinned mesh is a glTF scene root with no
 // helper `RootNode`, and every bone's tail survives our own round trip:
 // through the leaf tail hints (BoneTipHints.h) by default, through end bones
-// with leafBones.
+// with leafBones, which point back along their leaves.
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -99,6 +99,39 @@ TEST_P(BoneFrames, LeafBonesAreEndBonesThatImportBackAsTails) {
             1e-4 * size)
             << name;
     }
+}
+
+// Blender gives an end bone its leaf's length along the end node's own bone
+// axis (ExportRig.h endBoneOf): the end node sits on the leaf's tail and its
+// axis (the leaf's: +Y, or -Z for a glTF root leaf) runs back to the leaf's
+// head, so the end bone lies inside the limb.
+TEST_P(BoneFrames, EndBonesSitOnTheLeafTailAndPointBackAlongTheLeaf) {
+    const auto& [extension, sketch] = GetParam();
+    const Part& part = iotest::sharedPart(sketch);
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(exportTo(sketch, extension, true), 0);
+    ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+    const bool gltf = extension == ".glb" || extension == ".gltf";
+    const double size = iotest::meshSize(part.mesh);
+    int ends = 0;
+    for (const Bone& bone : part.skeleton.bones()) {
+        if (!part.skeleton.childrenOf(bone.tail).empty())
+            continue;
+        const std::string name = sketch + "_bone" + std::to_string(bone.id) + "_end";
+        const aiNode* node = scene->mRootNode->FindNode(name.c_str());
+        ASSERT_NE(node, nullptr) << name;
+        ++ends;
+        const Vec3 head = part.skeleton.joint(bone.head).position;
+        const Vec3 tail = part.skeleton.joint(bone.tail).position;
+        const Eigen::Affine3d global = globalOf(node);
+        EXPECT_LE((global.translation() - tail).norm(), 1e-5 * size) << name;
+        const bool rootLeaf = !part.skeleton.parentBone(bone.id);
+        const Vec3 axis = gltf && rootLeaf ? Vec3(-Vec3::UnitZ()) : Vec3(Vec3::UnitY());
+        const Vec3 got = (global.linear() * axis).normalized();
+        EXPECT_LT(std::acos(std::clamp(got.dot((head - tail).normalized()), -1.0, 1.0)), 1e-5)
+            << name;
+    }
+    EXPECT_GT(ends, 0);
 }
 
 std::string paramName(const testing::TestParamInfo<Param>& info) {
