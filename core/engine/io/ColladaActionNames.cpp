@@ -7,15 +7,6 @@
 namespace rigmesh {
 namespace {
 
-bool startsWith(const std::string& text, const std::string& prefix) {
-    return text.size() >= prefix.size() && text.compare(0, prefix.size(), prefix) == 0;
-}
-
-bool endsWith(const std::string& text, const std::string& suffix) {
-    return text.size() >= suffix.size() &&
-           text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 // The action in one channel animation's id: `id` is OBJECT_ACTION_JOINT_
 // pose_matrix and its channel targets OBJECT_JOINT/transform.
 std::optional<std::string> actionOfChannel(const tinyxml2::XMLElement& animation,
@@ -30,12 +21,12 @@ std::optional<std::string> actionOfChannel(const tinyxml2::XMLElement& animation
     target = target.substr(0, target.find('/'));
     const std::string objectPrefix = object + "_";
     const std::string suffix = "_pose_matrix";
-    if (!startsWith(target, objectPrefix) || !startsWith(id, objectPrefix) || !endsWith(id, suffix))
+    if (!target.starts_with(objectPrefix) || !id.starts_with(objectPrefix) || !id.ends_with(suffix))
         return std::nullopt;
     const std::string joint = target.substr(objectPrefix.size());
     const std::string middle =
         id.substr(objectPrefix.size(), id.size() - objectPrefix.size() - suffix.size());
-    if (!endsWith(middle, "_" + joint) || middle.size() <= joint.size() + 1)
+    if (!middle.ends_with("_" + joint) || middle.size() <= joint.size() + 1)
         return std::nullopt;
     return middle.substr(0, middle.size() - joint.size() - 1);
 }
