@@ -154,8 +154,8 @@
         <translation>Der Strich hat nur %1 verschiedene Punkte; eine Silhouette braucht mindestens 3 Punkte, die eine Fläche umschließen. Zeichnen Sie einen geschlossenen Umriss.</translation>
     </message>
     <message>
-        <source>The stroke has %1 points but only %2 distinct positions; the other %3 repeat the same positions, which is too little to describe a silhouette. Draw the outline as one continuous stroke.</source>
-        <translation>Der Strich hat %1 Punkte, aber nur %2 verschiedene Positionen; die übrigen %3 wiederholen dieselben Positionen, zu wenig für eine Silhouette. Zeichnen Sie den Umriss in einem durchgehenden Strich.</translation>
+        <source>The stroke has %1 points but only %2 distinct positions; the other %3 repeat them, which is too little to describe a silhouette. Draw the outline as one continuous stroke.</source>
+        <translation>Der Strich hat %1 Punkte, aber nur %2 verschiedene Positionen; die übrigen %3 wiederholen sie, zu wenig für eine Silhouette. Zeichnen Sie den Umriss in einem durchgehenden Strich.</translation>
     </message>
     <message>
         <source>The stroke is too long for its size: at the requested spacing its outline would need more than %1 points. Draw a simpler outline or use a larger spacing.</source>
@@ -207,11 +207,11 @@
     </message>
     <message>
         <source>the sketch lies too far from the origin for its size: near %1 doubles are %2 apart, more than a millionth of its edges (%3); move it within %4 of the origin</source>
-        <translation>die Skizze liegt für ihre Größe zu weit vom Ursprung entfernt: bei %1 liegen Gleitkommazahlen %2 auseinander, mehr als ein Millionstel ihrer Kanten (%3); rücken Sie sie auf höchstens %4 an den Ursprung heran</translation>
+        <translation>die Skizze liegt für ihre Größe zu weit vom Ursprung: bei %1 liegen Gleitkommazahlen %2 auseinander, mehr als ein Millionstel ihrer Kanten (%3); rücken Sie sie auf %4 heran</translation>
     </message>
     <message>
         <source>the edge length %1 is too small for this sketch: it would give about %2 vertices, more than the %3 allowed; use 0 (automatic: %4) or an edge length of at least %5</source>
-        <translation>die Kantenlänge %1 ist für diese Skizze zu klein: sie ergäbe etwa %2 Vertices, mehr als die erlaubten %3; verwenden Sie 0 (automatisch: %4) oder eine Kantenlänge von mindestens %5</translation>
+        <translation>die Kantenlänge %1 ist für diese Skizze zu klein: sie ergäbe etwa %2 Vertices, mehr als die erlaubten %3; nehmen Sie 0 (automatisch: %4) oder mindestens %5</translation>
     </message>
     <message>
         <source>the surface has a vertex with a non-finite coordinate; the sketch&apos;s numbers are beyond what double precision can build</source>
@@ -263,7 +263,7 @@
     </message>
     <message>
         <source>The merged surface would not be a manifold (the parts touch at a point or along a line). Move the dragged part so that it overlaps the other one, then merge again.</source>
-        <translation>Die zusammengeführte Oberfläche wäre nicht mannigfaltig (die Teile berühren sich in einem Punkt oder entlang einer Linie). Verschieben Sie das gezogene Teil, bis es das andere überlappt, und führen Sie dann erneut zusammen.</translation>
+        <translation>Die zusammengeführte Oberfläche wäre nicht mannigfaltig (die Teile berühren sich in einem Punkt oder einer Linie). Schieben Sie das gezogene Teil in das andere und führen Sie erneut zusammen.</translation>
     </message>
     <message>
         <source>The parts do not touch. Drag one part so that it overlaps the other, then merge.</source>
@@ -475,7 +475,7 @@
     </message>
     <message>
         <source>cannot export the clip: the times %1 s and %2 s are too close for 32-bit precision this far from 0 s; move the keys nearer to 0 s or further apart</source>
-        <translation>der Clip kann nicht exportiert werden: die Zeiten %1 s und %2 s liegen so weit von 0 s zu nah beieinander für 32-Bit-Genauigkeit; rücken Sie die Schlüsselbilder näher an 0 s oder weiter auseinander</translation>
+        <translation>der Clip kann nicht exportiert werden: die Zeiten %1 s und %2 s liegen so weit von 0 s zu nah beieinander für 32-Bit-Genauigkeit; rücken Sie die Schlüssel näher an 0 s oder auseinander</translation>
     </message>
     <message>
         <source>subdivision levels must be from 0 to 4, not %1</source>
@@ -567,7 +567,7 @@
     </message>
     <message>
         <source>The mesh has %1 faces: rigging it would need more than the %2 MiB of memory allowed. Decimate it in your modelling tool (in Blender: the Decimate modifier) and import it again.</source>
-        <translation>Das Netz hat %1 Flächen: es zu riggen bräuchte mehr als die erlaubten %2 MiB Speicher. Dezimieren Sie es in Ihrem Modellierprogramm (in Blender: der Modifikator Decimate) und importieren Sie es erneut.</translation>
+        <translation>Das Netz hat %1 Flächen: es zu riggen bräuchte mehr als die erlaubten %2 MiB Speicher. Dezimieren Sie es (in Blender: der Modifikator Decimate) und importieren Sie es erneut.</translation>
     </message>
     <message>
         <source>the skeleton and weights were computed on a closed proxy of %1 vertices wrapped around the mesh&apos;s %2 pieces; the mesh itself is kept as it was</source>
@@ -603,7 +603,7 @@
     </message>
     <message>
         <source>The surface would intersect itself (%1 crossing face pairs) near (%2, %3): the outline is too thin or turns too sharply there. Widen it there or use a smaller edge length.</source>
-        <translation>Die Oberfläche würde sich selbst schneiden (%1 sich kreuzende Flächenpaare) bei (%2, %3): der Umriss ist dort zu dünn oder knickt zu scharf. Verbreitern Sie ihn dort oder verwenden Sie eine kleinere Kantenlänge.</translation>
+        <translation>Die Oberfläche würde sich selbst schneiden (%1 kreuzende Flächenpaare) bei (%2, %3): der Umriss ist dort zu dünn oder zu spitz. Verbreitern Sie ihn oder nehmen Sie kleinere Kanten.</translation>
     </message>
     <message>
         <source>&quot;%1&quot; cannot be rebuilt: it was not drawn as one sketch (it comes from a merge, a cut, a bone edit or an import), so there is no stroke to build it from.</source>
@@ -619,11 +619,11 @@
     </message>
     <message>
         <source>The target part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
-        <translation>Die Oberfläche des Zielteils schneidet sich selbst (%1 sich kreuzende Flächenpaare), daher lassen sich die Teile nicht zusammenführen. Bauen Sie es zuerst mit größerer Kantenlänge oder Glättung neu.</translation>
+        <translation>Die Oberfläche des Zielteils schneidet sich selbst (%1 kreuzende Flächenpaare), daher lassen sich die Teile nicht zusammenführen. Bauen Sie es mit größerer Kantenlänge oder Glättung neu.</translation>
     </message>
     <message>
         <source>The dragged part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
-        <translation>Die Oberfläche des gezogenen Teils schneidet sich selbst (%1 sich kreuzende Flächenpaare), daher lassen sich die Teile nicht zusammenführen. Bauen Sie es zuerst mit größerer Kantenlänge oder Glättung neu.</translation>
+        <translation>Die Oberfläche des gezogenen Teils schneidet sich selbst (%1 kreuzende Flächenpaare), daher lassen sich die Teile nicht zusammenführen. Bauen Sie es mit größerer Kantenlänge oder Glättung neu.</translation>
     </message>
     <message>
         <source>The joints to connect are %1 apart, less than the shortest bone allowed (%2); snap them instead.</source>

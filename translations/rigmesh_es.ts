@@ -154,8 +154,8 @@
         <translation>El trazo tiene solo %1 puntos distintos; una silueta necesita al menos 3 puntos que encierren un área. Dibuje un contorno cerrado.</translation>
     </message>
     <message>
-        <source>The stroke has %1 points but only %2 distinct positions; the other %3 repeat the same positions, which is too little to describe a silhouette. Draw the outline as one continuous stroke.</source>
-        <translation>El trazo tiene %1 puntos pero solo %2 posiciones distintas; los otros %3 repiten las mismas posiciones, demasiado poco para describir una silueta. Dibuje el contorno en un solo trazo continuo.</translation>
+        <source>The stroke has %1 points but only %2 distinct positions; the other %3 repeat them, which is too little to describe a silhouette. Draw the outline as one continuous stroke.</source>
+        <translation>El trazo tiene %1 puntos pero solo %2 posiciones distintas; los otros %3 las repiten, demasiado poco para describir una silueta. Dibuje el contorno en un solo trazo continuo.</translation>
     </message>
     <message>
         <source>The stroke is too long for its size: at the requested spacing its outline would need more than %1 points. Draw a simpler outline or use a larger spacing.</source>
@@ -207,11 +207,11 @@
     </message>
     <message>
         <source>the sketch lies too far from the origin for its size: near %1 doubles are %2 apart, more than a millionth of its edges (%3); move it within %4 of the origin</source>
-        <translation>el boceto está demasiado lejos del origen para su tamaño: cerca de %1 los números de coma flotante distan %2, más de una millonésima de sus aristas (%3); acérquelo a menos de %4 del origen</translation>
+        <translation>el boceto está muy lejos del origen para su tamaño: cerca de %1 los números flotantes distan %2, más de una millonésima de sus aristas (%3); acérquelo a menos de %4 del origen</translation>
     </message>
     <message>
         <source>the edge length %1 is too small for this sketch: it would give about %2 vertices, more than the %3 allowed; use 0 (automatic: %4) or an edge length of at least %5</source>
-        <translation>la longitud de arista %1 es demasiado pequeña para este boceto: daría unos %2 vértices, más de los %3 permitidos; use 0 (automática: %4) o una longitud de arista de al menos %5</translation>
+        <translation>la longitud de arista %1 es demasiado pequeña para este boceto: daría unos %2 vértices, más de los %3 permitidos; use 0 (automática: %4) o al menos %5</translation>
     </message>
     <message>
         <source>the surface has a vertex with a non-finite coordinate; the sketch&apos;s numbers are beyond what double precision can build</source>
@@ -603,7 +603,7 @@
     </message>
     <message>
         <source>The surface would intersect itself (%1 crossing face pairs) near (%2, %3): the outline is too thin or turns too sharply there. Widen it there or use a smaller edge length.</source>
-        <translation>La superficie se intersecaría a sí misma (%1 pares de caras que se cruzan) cerca de (%2, %3): el contorno es demasiado fino o gira demasiado bruscamente ahí. Ensánchelo ahí o use una longitud de arista menor.</translation>
+        <translation>La superficie se intersecaría a sí misma (%1 pares de caras cruzadas) en (%2, %3): el contorno es demasiado fino o gira muy bruscamente ahí. Ensánchelo o use aristas más cortas.</translation>
     </message>
     <message>
         <source>&quot;%1&quot; cannot be rebuilt: it was not drawn as one sketch (it comes from a merge, a cut, a bone edit or an import), so there is no stroke to build it from.</source>
@@ -619,11 +619,11 @@
     </message>
     <message>
         <source>The target part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
-        <translation>La superficie de la pieza de destino se interseca a sí misma (%1 pares de caras que se cruzan), así que las piezas no se pueden fusionar. Reconstrúyala antes con una longitud de arista mayor o con suavizado.</translation>
+        <translation>La superficie de la pieza de destino se interseca a sí misma (%1 pares de caras cruzadas), así que las piezas no se pueden fusionar. Reconstrúyala antes con aristas más largas o suavizado.</translation>
     </message>
     <message>
         <source>The dragged part&apos;s surface intersects itself (%1 crossing face pairs), so the parts cannot be merged. Rebuild it with a larger edge length or smoothing first.</source>
-        <translation>La superficie de la pieza arrastrada se interseca a sí misma (%1 pares de caras que se cruzan), así que las piezas no se pueden fusionar. Reconstrúyala antes con una longitud de arista mayor o con suavizado.</translation>
+        <translation>La superficie de la pieza arrastrada se interseca a sí misma (%1 pares de caras cruzadas), así que las piezas no se pueden fusionar. Reconstrúyala antes con aristas más largas o suavizado.</translation>
     </message>
     <message>
         <source>The joints to connect are %1 apart, less than the shortest bone allowed (%2); snap them instead.</source>

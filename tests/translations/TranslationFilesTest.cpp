@@ -2,7 +2,7 @@
 // and current: lupdate, run again over the sources into a scratch copy,
 // finds nothing new, vanished or obsolete, and every entry is finished;
 // each translation keeps the markers of its source; every engine message
-// is there.
+// is there and fits on its line.
 #include <gtest/gtest.h>
 
 #include <QDir>
@@ -14,6 +14,7 @@
 #include <QXmlStreamReader>
 
 #include "base/Message.h"
+#include "base/MessageText.h"
 
 namespace {
 
@@ -131,6 +132,23 @@ TEST_P(TranslationFile, EveryEngineMessageHasATranslation) {
          i < static_cast<int>(rigmesh::MessageId::Count); ++i) {
         const char* text = rigmesh::messageTemplate(static_cast<rigmesh::MessageId>(i));
         EXPECT_TRUE(engine.contains(QString::fromUtf8(text))) << text;
+    }
+}
+
+TEST_P(TranslationFile, EveryEngineMessageFitsOnItsLineTranslated) {
+    // The rule MessageText.EveryTemplateFitsOnItsLine holds the English
+    // templates to, for each translation: room for every marker's argument
+    // as a short number, so that only long names elide a translated message
+    // (base/MessageText.h).
+    for (const TsMessage& m : readTs(tsPath(QString::fromLatin1(GetParam())))) {
+        if (m.context != QLatin1String("EngineMessage"))
+            continue;
+        for (const QString& translation : m.translations) {
+            const long room = 6 * static_cast<long>(markers(translation).size());
+            EXPECT_LE(static_cast<long>(translation.toUcs4().size()) + room,
+                      static_cast<long>(rigmesh::kMaxMessageCharacters))
+                << describe(m) << " -> \"" << translation.toStdString() << "\"";
+        }
     }
 }
 

@@ -38,8 +38,8 @@ const char* messageTemplate(MessageId id) {
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
                 "The stroke has %1 points but only %2 distinct positions; the other %3 repeat "
-                "the same positions, which is too little to describe a silhouette. Draw the "
-                "outline as one continuous stroke.");
+                "them, which is too little to describe a silhouette. Draw the outline as one "
+                "continuous stroke.");
         case MessageId::StrokeTooLong:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",

@@ -12,7 +12,7 @@
 
 namespace rigmesh {
 
-inline constexpr std::size_t kMaxMessageCharacters = 240;
+inline constexpr std::size_t kMaxMessageCharacters = 200;
 inline constexpr std::size_t kMaxQuotedCharacters = 60;
 
 // `text` as one line: line breaks, tabs and other control characters become
