@@ -25,6 +25,16 @@ double pathLength(const std::vector<QPointF>& pixels) {
     return length;
 }
 
+// A stroke long and wide enough on screen to be sketched (else a click or
+// a flick, refused on release).
+bool bigEnough(const std::vector<QPointF>& pixels) {
+    QRectF extent(pixels.front(), QSizeF(0, 0));
+    for (const QPointF& p : pixels)
+        extent |= QRectF(p, QSizeF(0.001, 0.001));
+    return pathLength(pixels) >= kMinimumLengthPixels &&
+           std::max(extent.width(), extent.height()) >= kMinimumExtentPixels;
+}
+
 std::vector<QPointF> filledIn(const std::vector<QPointF>& pixels) {
     std::vector<QPointF> dense;
     for (std::size_t i = 0; i + 1 < pixels.size(); ++i) {
@@ -62,47 +72,60 @@ void SketchTool::move(Viewport& viewport, QMouseEvent* event) {
     for (const QPointF& p : pixels_)
         overlay.push_back(viewport.sketchPlanePoint(p));
     viewport.setStrokeOverlay(std::move(overlay));
+    if (bigEnough(pixels_)) {
+        const model::Placement plane = viewport.sketchPlacement();
+        emit strokeChanged(planeStroke(viewport, plane), plane);
+    }
 }
 
 void SketchTool::release(Viewport& viewport, QMouseEvent* event) {
     if (!drawing_)
         return;
     drawing_ = false;
-    pixels_.push_back(event->position());
+    // A release where the last move was adds nothing: the stroke is the one
+    // the last move previewed.
+    if (event->position() != pixels_.back())
+        pixels_.push_back(event->position());
     viewport.setStrokeOverlay({});
-    const double length = pathLength(pixels_);
-    if (length < kClickPixels) {
+    if (pathLength(pixels_) < kClickPixels) {
         pixels_.clear();  // a click: nothing to sketch, nothing to say
+        emit strokeAbandoned();
         return;
     }
-    QRectF extent(pixels_.front(), QSizeF(0, 0));
-    for (const QPointF& p : pixels_)
-        extent |= QRectF(p, QSizeF(0.001, 0.001));
-    if (length < kMinimumLengthPixels ||
-        std::max(extent.width(), extent.height()) < kMinimumExtentPixels) {
+    if (!bigEnough(pixels_)) {
         pixels_.clear();
+        emit strokeAbandoned();
         emit status(tr("That stroke is too short: drag to draw a closed outline"), 5000);
         return;
     }
-    pixels_ = filledIn(pixels_);
-    // Into the sketch plane's own 2D frame (x = camera right, y = camera up).
     const model::Placement plane = viewport.sketchPlacement();
-    const Eigen::Quaterniond toPlane = plane.rotation.conjugate();
-    std::vector<Vec2> stroke;
-    stroke.reserve(pixels_.size());
-    for (const QPointF& pixel : pixels_) {
-        const QVector3D world = viewport.sketchPlanePoint(pixel);
-        const Vec3 local = toPlane * (toEigen(world) - plane.translation);
-        stroke.emplace_back(local.x(), local.y());
-    }
+    const std::vector<Vec2> stroke = planeStroke(viewport, plane);
     pixels_.clear();
     emit strokeFinished(stroke, plane);
 }
 
+std::vector<Vec2> SketchTool::planeStroke(const Viewport& viewport,
+                                          const model::Placement& plane) const {
+    // Into the sketch plane's own 2D frame (x = camera right, y = camera up).
+    const Eigen::Quaterniond toPlane = plane.rotation.conjugate();
+    std::vector<Vec2> stroke;
+    const std::vector<QPointF> dense = filledIn(pixels_);
+    stroke.reserve(dense.size());
+    for (const QPointF& pixel : dense) {
+        const QVector3D world = viewport.sketchPlanePoint(pixel);
+        const Vec3 local = toPlane * (toEigen(world) - plane.translation);
+        stroke.emplace_back(local.x(), local.y());
+    }
+    return stroke;
+}
+
 void SketchTool::cancel(Viewport& viewport) {
+    const bool wasDrawing = drawing_;
     drawing_ = false;
     pixels_.clear();
     viewport.setStrokeOverlay({});
+    if (wasDrawing)
+        emit strokeAbandoned();
 }
 
 }  // namespace rigmesh::widgets
