@@ -59,8 +59,9 @@ QString SketchTool::hint() const {
 
 void SketchTool::press(Viewport& viewport, QMouseEvent* event) {
     drawing_ = true;
+    plane_ = viewport.sketchPlacement();
     pixels_ = {event->position()};
-    viewport.setStrokeOverlay({viewport.sketchPlanePoint(event->position())});
+    viewport.setStrokeOverlay({onPlane(viewport, event->position())});
 }
 
 void SketchTool::move(Viewport& viewport, QMouseEvent* event) {
@@ -70,12 +71,10 @@ void SketchTool::move(Viewport& viewport, QMouseEvent* event) {
     std::vector<QVector3D> overlay;
     overlay.reserve(pixels_.size());
     for (const QPointF& p : pixels_)
-        overlay.push_back(viewport.sketchPlanePoint(p));
+        overlay.push_back(onPlane(viewport, p));
     viewport.setStrokeOverlay(std::move(overlay));
-    if (bigEnough(pixels_)) {
-        const model::Placement plane = viewport.sketchPlacement();
-        emit strokeChanged(planeStroke(viewport, plane), plane);
-    }
+    if (bigEnough(pixels_))
+        emit strokeChanged(planeStroke(viewport), plane_);
 }
 
 void SketchTool::release(Viewport& viewport, QMouseEvent* event) {
@@ -98,22 +97,23 @@ void SketchTool::release(Viewport& viewport, QMouseEvent* event) {
         emit status(tr("That stroke is too short: drag to draw a closed outline"), 5000);
         return;
     }
-    const model::Placement plane = viewport.sketchPlacement();
-    const std::vector<Vec2> stroke = planeStroke(viewport, plane);
+    const std::vector<Vec2> stroke = planeStroke(viewport);
     pixels_.clear();
-    emit strokeFinished(stroke, plane);
+    emit strokeFinished(stroke, plane_);
 }
 
-std::vector<Vec2> SketchTool::planeStroke(const Viewport& viewport,
-                                          const model::Placement& plane) const {
+QVector3D SketchTool::onPlane(const Viewport& viewport, const QPointF& pixel) const {
+    return viewport.viewPlanePoint(pixel, toQt(plane_.translation));
+}
+
+std::vector<Vec2> SketchTool::planeStroke(const Viewport& viewport) const {
     // Into the sketch plane's own 2D frame (x = camera right, y = camera up).
-    const Eigen::Quaterniond toPlane = plane.rotation.conjugate();
+    const Eigen::Quaterniond toPlane = plane_.rotation.conjugate();
     std::vector<Vec2> stroke;
     const std::vector<QPointF> dense = filledIn(pixels_);
     stroke.reserve(dense.size());
     for (const QPointF& pixel : dense) {
-        const QVector3D world = viewport.sketchPlanePoint(pixel);
-        const Vec3 local = toPlane * (toEigen(world) - plane.translation);
+        const Vec3 local = toPlane * (toEigen(onPlane(viewport, pixel)) - plane_.translation);
         stroke.emplace_back(local.x(), local.y());
     }
     return stroke;

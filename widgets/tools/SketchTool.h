@@ -37,9 +37,14 @@ class SketchTool : public ViewportTool {
   private:
     // The stroke drawn so far in the sketch plane's 2D frame, as a release
     // hands it on.
-    std::vector<Vec2> planeStroke(const Viewport& viewport, const model::Placement& plane) const;
+    std::vector<Vec2> planeStroke(const Viewport& viewport) const;
+    // Where a pixel lies on the sketch plane.
+    QVector3D onPlane(const Viewport& viewport, const QPointF& pixel) const;
 
     std::vector<QPointF> pixels_;
+    // The plane the stroke is drawn on, taken at the press: the part it
+    // previews must not move the plane (its origin is the scene's centre).
+    model::Placement plane_;
     bool drawing_ = false;
 };
 
