@@ -472,8 +472,9 @@ void MainWindow::showStatus(const QString& message, int timeoutMs) {
 }
 
 // Select first (Blender's default), the Sketch tool active: a new user
-// draws at once. Every tool reports through its status signal; a finished
-// stroke becomes a part of the current document only.
+// draws at once. Every tool reports through its status signal; a stroke
+// being drawn is previewed in, and a finished one becomes a part of, the
+// current document only.
 void MainWindow::createTools(QMenu* menu, QToolBar* toolbar) {
     // Our own icons (resources/icons, drawn by Qt's SVG icon engine,
     // libqt6svg6) say what each tool does.
@@ -499,6 +500,15 @@ void MainWindow::createTools(QMenu* menu, QToolBar* toolbar) {
                 if (DocumentView* view = currentView())
                     view->createPartFromStroke(stroke, plane);
             });
+    connect(sketch, &SketchTool::strokeChanged, this,
+            [this](const auto& stroke, const auto& plane) {
+                if (DocumentView* view = currentView())
+                    view->previewStroke(stroke, plane);
+            });
+    connect(sketch, &SketchTool::strokeAbandoned, this, [this] {
+        if (DocumentView* view = currentView())
+            view->dropStrokePreview();
+    });
 }
 
 // One activation path for every tool: its action checked, the current

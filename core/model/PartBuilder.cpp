@@ -64,9 +64,9 @@ BuiltPart buildPartAtDocumentLength(double documentLength, const std::vector<Vec
     return {std::move(part), used};
 }
 
-double documentEdgeLength(const Document& document) {
+double documentEdgeLength(const Document& document, PartId ignored) {
     for (const PartNode& node : document.parts())
-        if (!node.stroke.empty())
+        if (!node.stroke.empty() && node.id != ignored)
             return node.options.targetEdgeLength;
     return 0.0;
 }

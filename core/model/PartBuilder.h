@@ -45,7 +45,8 @@ BuiltPart buildPartAtDocumentLength(double documentLength, const std::vector<Vec
 
 // The edge length the document's sketched parts share: the first sketched
 // part's; 0 if there is none or it was built with the automatic length by an
-// older version.
-double documentEdgeLength(const Document& document);
+// older version. A part being previewed (`ignored`) does not count: it is
+// not yet one of them.
+double documentEdgeLength(const Document& document, PartId ignored = kNoPart);
 
 }  // namespace rigmesh::model

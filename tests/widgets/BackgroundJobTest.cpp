@@ -9,7 +9,6 @@
 #include <QPushButton>
 #include <QTimer>
 #include <cstdio>
-#include <ctime>
 
 #include "StudioFixture.h"
 #include "jobs/JobRunner.h"
@@ -20,13 +19,6 @@
 
 namespace rigmesh {
 namespace {
-
-// CPU time the calling thread has used, in milliseconds.
-double guiThreadCpuMs() {
-    timespec now{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return now.tv_sec * 1e3 + now.tv_nsec / 1e6;
-}
 
 class BackgroundJobs : public test::StudioFixture {
   protected:
@@ -66,7 +58,7 @@ TEST_F(BackgroundJobs, AFineRebuildNeverStallsTheWindowAndIsOneUndoStep) {
     QElapsedTimer clock;
     clock.start();
     qint64 last = 0, longest = 0;
-    double lastCpu = guiThreadCpuMs(), longestCpu = 0.0;
+    double lastCpu = test::threadCpuMilliseconds(), longestCpu = 0.0;
     bool progressShown = false, documentChanged = false;
     QTimer tick;
     QObject::connect(&tick, &QTimer::timeout, [&] {
@@ -75,7 +67,7 @@ TEST_F(BackgroundJobs, AFineRebuildNeverStallsTheWindowAndIsOneUndoStep) {
         if (!window->jobs()->busy())
             return;
         const qint64 now = clock.elapsed();
-        const double cpu = guiThreadCpuMs();
+        const double cpu = test::threadCpuMilliseconds();
         longest = std::max(longest, now - last);
         longestCpu = std::max(longestCpu, cpu - lastCpu);
         last = now;

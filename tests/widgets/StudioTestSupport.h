@@ -6,6 +6,7 @@
 #include <QMouseEvent>
 #include <QTest>
 #include <cmath>
+#include <ctime>
 #include <vector>
 
 #include "jobs/JobRunner.h"
@@ -17,6 +18,14 @@ inline void sendMouse(QWidget* widget, QEvent::Type type, const QPointF& at, Qt:
                       Qt::MouseButtons buttons, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
     QMouseEvent event(type, at, widget->mapToGlobal(at), button, buttons, modifiers);
     QApplication::sendEvent(widget, &event);
+}
+
+// CPU time the calling thread has used, in milliseconds: the GUI thread's
+// own work, which other programs on the same cores do not lengthen.
+inline double threadCpuMilliseconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return now.tv_sec * 1e3 + now.tv_nsec / 1e6;
 }
 
 // Runs the event loop while `busy` says so (at most `timeoutMs`).

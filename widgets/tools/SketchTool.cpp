@@ -25,6 +25,16 @@ double pathLength(const std::vector<QPointF>& pixels) {
     return length;
 }
 
+// A stroke long and wide enough on screen to be sketched (else a click or
+// a flick, refused on release).
+bool bigEnough(const std::vector<QPointF>& pixels) {
+    QRectF extent(pixels.front(), QSizeF(0, 0));
+    for (const QPointF& p : pixels)
+        extent |= QRectF(p, QSizeF(0.001, 0.001));
+    return pathLength(pixels) >= kMinimumLengthPixels &&
+           std::max(extent.width(), extent.height()) >= kMinimumExtentPixels;
+}
+
 std::vector<QPointF> filledIn(const std::vector<QPointF>& pixels) {
     std::vector<QPointF> dense;
     for (std::size_t i = 0; i + 1 < pixels.size(); ++i) {
@@ -49,8 +59,9 @@ QString SketchTool::hint() const {
 
 void SketchTool::press(Viewport& viewport, QMouseEvent* event) {
     drawing_ = true;
+    plane_ = viewport.sketchPlacement();
     pixels_ = {event->position()};
-    viewport.setStrokeOverlay({viewport.sketchPlanePoint(event->position())});
+    viewport.setStrokeOverlay({onPlane(viewport, event->position())});
 }
 
 void SketchTool::move(Viewport& viewport, QMouseEvent* event) {
@@ -60,49 +71,61 @@ void SketchTool::move(Viewport& viewport, QMouseEvent* event) {
     std::vector<QVector3D> overlay;
     overlay.reserve(pixels_.size());
     for (const QPointF& p : pixels_)
-        overlay.push_back(viewport.sketchPlanePoint(p));
+        overlay.push_back(onPlane(viewport, p));
     viewport.setStrokeOverlay(std::move(overlay));
+    if (bigEnough(pixels_))
+        emit strokeChanged(planeStroke(viewport), plane_);
 }
 
 void SketchTool::release(Viewport& viewport, QMouseEvent* event) {
     if (!drawing_)
         return;
     drawing_ = false;
-    pixels_.push_back(event->position());
+    // A release where the last move was adds nothing: the stroke is the one
+    // the last move previewed.
+    if (event->position() != pixels_.back())
+        pixels_.push_back(event->position());
     viewport.setStrokeOverlay({});
-    const double length = pathLength(pixels_);
-    if (length < kClickPixels) {
+    if (pathLength(pixels_) < kClickPixels) {
         pixels_.clear();  // a click: nothing to sketch, nothing to say
+        emit strokeAbandoned();
         return;
     }
-    QRectF extent(pixels_.front(), QSizeF(0, 0));
-    for (const QPointF& p : pixels_)
-        extent |= QRectF(p, QSizeF(0.001, 0.001));
-    if (length < kMinimumLengthPixels ||
-        std::max(extent.width(), extent.height()) < kMinimumExtentPixels) {
+    if (!bigEnough(pixels_)) {
         pixels_.clear();
+        emit strokeAbandoned();
         emit status(tr("That stroke is too short: drag to draw a closed outline"), 5000);
         return;
     }
-    pixels_ = filledIn(pixels_);
+    const std::vector<Vec2> stroke = planeStroke(viewport);
+    pixels_.clear();
+    emit strokeFinished(stroke, plane_);
+}
+
+QVector3D SketchTool::onPlane(const Viewport& viewport, const QPointF& pixel) const {
+    return viewport.viewPlanePoint(pixel, toQt(plane_.translation));
+}
+
+std::vector<Vec2> SketchTool::planeStroke(const Viewport& viewport) const {
     // Into the sketch plane's own 2D frame (x = camera right, y = camera up).
-    const model::Placement plane = viewport.sketchPlacement();
-    const Eigen::Quaterniond toPlane = plane.rotation.conjugate();
+    const Eigen::Quaterniond toPlane = plane_.rotation.conjugate();
     std::vector<Vec2> stroke;
-    stroke.reserve(pixels_.size());
-    for (const QPointF& pixel : pixels_) {
-        const QVector3D world = viewport.sketchPlanePoint(pixel);
-        const Vec3 local = toPlane * (toEigen(world) - plane.translation);
+    const std::vector<QPointF> dense = filledIn(pixels_);
+    stroke.reserve(dense.size());
+    for (const QPointF& pixel : dense) {
+        const Vec3 local = toPlane * (toEigen(onPlane(viewport, pixel)) - plane_.translation);
         stroke.emplace_back(local.x(), local.y());
     }
-    pixels_.clear();
-    emit strokeFinished(stroke, plane);
+    return stroke;
 }
 
 void SketchTool::cancel(Viewport& viewport) {
+    const bool wasDrawing = drawing_;
     drawing_ = false;
     pixels_.clear();
     viewport.setStrokeOverlay({});
+    if (wasDrawing)
+        emit strokeAbandoned();
 }
 
 }  // namespace rigmesh::widgets

@@ -167,4 +167,19 @@ Polyline2 closeStroke(const Polyline2& stroke) {
     return trimNearMisses(stroke);
 }
 
+bool returnsToStart(const Polyline2& stroke) {
+    Polyline2 distinct;
+    for (const Vec2& p : stroke) {
+        if (distinct.empty() || p != distinct.back()) {
+            distinct.push_back(p);
+        }
+    }
+    if (distinct.size() < 4) {
+        return false;
+    }
+    const Polyline2 closed = closeStroke(distinct);
+    const double gap = (closed.back() - closed.front()).norm();
+    return gap <= kNearMissDistance * boundingBoxDiagonal(distinct);
+}
+
 }  // namespace rigmesh

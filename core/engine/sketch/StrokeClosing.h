@@ -14,4 +14,12 @@ namespace rigmesh {
 // figure eight's crossing is left for the caller to reject.
 Polyline2 closeStroke(const Polyline2& stroke);
 
+// True when a stroke being drawn has come back to its start: its end crosses
+// its beginning, or the gap closeStroke leaves between its ends is within the
+// near-miss distance (a tenth of the stroke's bounding-box diagonal), the
+// tolerance closeStroke trims near misses with. Repeated consecutive points
+// are ignored. A live preview waits for this; a finished stroke is closed
+// with a straight segment whatever its gap.
+bool returnsToStart(const Polyline2& stroke);
+
 }  // namespace rigmesh

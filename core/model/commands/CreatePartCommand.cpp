@@ -24,15 +24,22 @@ std::unique_ptr<CreatePartCommand> CreatePartCommand::fromBuilt(Document& docume
                                                                 const QString& name,
                                                                 BuiltPart built,
                                                                 const Placement& placement) {
+    PartNode node = nodeFromBuilt(name.isEmpty() ? tr("Part %1").arg(document.nextPartId()) : name,
+                                  std::move(stroke), std::move(built), placement);
+    node.id = document.allocatePartId();
+    return std::unique_ptr<CreatePartCommand>(new CreatePartCommand(document, std::move(node)));
+}
+
+PartNode CreatePartCommand::nodeFromBuilt(const QString& name, std::vector<Vec2> stroke,
+                                          BuiltPart built, const Placement& placement) {
     PartNode node;
-    node.name = name.isEmpty() ? tr("Part %1").arg(document.nextPartId()) : name;
+    node.name = name;
     node.part = std::move(built.part);
     node.stroke = std::move(stroke);
     node.options = built.options;
     node.placement = placement;
     node.pose = restPoseOf(node);
-    node.id = document.allocatePartId();
-    return std::unique_ptr<CreatePartCommand>(new CreatePartCommand(document, std::move(node)));
+    return node;
 }
 
 CreatePartCommand::CreatePartCommand(Document& document, PartNode node)

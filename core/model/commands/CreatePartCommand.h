@@ -32,6 +32,12 @@ class CreatePartCommand : public QUndoCommand, public RecipeStepSource {
                                                         const QString& name, BuiltPart built,
                                                         const Placement& placement = {});
 
+    // The node such a command inserts, without its id: the built part at
+    // `placement` in its rest pose, named `name` (not empty). A sketch's live
+    // preview (model/preview/SketchPreview.h) shows the same node.
+    static PartNode nodeFromBuilt(const QString& name, std::vector<Vec2> stroke, BuiltPart built,
+                                  const Placement& placement);
+
     void redo() override;
     void undo() override;
     nlohmann::json recipeStep() const override;

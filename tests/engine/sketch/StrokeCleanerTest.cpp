@@ -12,6 +12,7 @@
 #include "base/Error.h"
 #include "sketch/Sketch.h"
 #include "sketch/StrokeCleaner.h"
+#include "sketch/StrokeClosing.h"
 
 namespace rigmesh {
 namespace {
@@ -114,6 +115,25 @@ TEST(StrokeCleaner, OvershootThatSlidesPastTheStartIsTrimmed) {
     ASSERT_NO_THROW(clean = cleanStroke(stroke));
     expectSimpleCounterClockwise(clean.points);
     EXPECT_NEAR(signedArea(clean.points), std::numbers::pi * 1.03 * 1.03, 0.05 * std::numbers::pi);
+}
+
+TEST(StrokeClosing, AStrokeReturnsToItsStartOnlyWhenItsEndsMeetWithinATenthOfItsSize) {
+    // Of a unit circle (diagonal 2.83, so a tolerance of 0.28): half of it
+    // (a gap of 2), 80% (a gap of 1.2) and 96.5% (a gap of 0.22).
+    EXPECT_FALSE(returnsToStart(circleStroke(81, 0.5)));
+    EXPECT_FALSE(returnsToStart(circleStroke(161, 0.8)));
+    EXPECT_TRUE(returnsToStart(circleStroke(194, 0.97)));
+    // Overshoots that cross or slide past the start are closed loops.
+    EXPECT_TRUE(returnsToStart(circleStroke(230, 1.15, 1.04, Vec2::Zero(), 0.0, -0.08 * 1.15)));
+    EXPECT_TRUE(returnsToStart(circleStroke(230, 1.15, 1.0, Vec2::Zero(), 0.0, 0.06 * 1.15)));
+    // Repeated points neither help nor hurt; three distinct points are no loop.
+    std::vector<Vec2> repeated;
+    for (const Vec2& p : circleStroke(194, 0.97)) {
+        repeated.push_back(p);
+        repeated.push_back(p);
+    }
+    EXPECT_TRUE(returnsToStart(repeated));
+    EXPECT_FALSE(returnsToStart({Vec2(0, 0), Vec2(1, 0), Vec2(1, 0), Vec2(0, 0.001)}));
 }
 
 TEST(StrokeCleaner, GapIsClosedWithAStraightSegment) {
