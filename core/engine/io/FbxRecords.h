@@ -50,4 +50,12 @@ struct FbxProperty {
 // The properties of `record` in order; empty when they do not parse.
 std::vector<FbxProperty> fbxProperties(const FbxRecord& record, bool wide);
 
+// Appends the `bytes` low bytes of `value`, least significant first (FBX
+// numbers are little-endian).
+inline void putFbxLittleEndian(std::vector<std::uint8_t>& out, std::uint64_t value,
+                               std::size_t bytes) {
+    for (std::size_t i = 0; i < bytes; ++i)
+        out.push_back(static_cast<std::uint8_t>(value >> (8 * i)));
+}
+
 }  // namespace rigmesh

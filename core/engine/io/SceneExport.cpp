@@ -21,6 +21,7 @@
 #include "io/ExportFormat.h"
 #include "io/FbxRotationCurves.h"
 #include "io/FbxSentinels.h"
+#include "io/FbxSkinningType.h"
 #include "io/FiniteScene.h"
 #include "io/GltfAnimations.h"
 #include "io/GltfBuffers.h"
@@ -272,6 +273,12 @@ StagedExport stageScene(const std::vector<ExportPart>& parts, const Clip* clip,
                 files.main.assign(continuous.begin(), continuous.end());
             }
             files.main = withFbxBoneTails(files.main, rigs);
+            {
+                const std::vector<std::uint8_t> typed = withFbxSkinningType(
+                    std::vector<std::uint8_t>(files.main.begin(), files.main.end()),
+                    options.skinning);
+                files.main.assign(typed.begin(), typed.end());
+            }
             staged.files_.emplace_back(target, files.main);
             break;
         case ExportFormat::Collada:
