@@ -108,6 +108,39 @@ TEST(CliExport, OptionsReachTheExport) {
         << bad.err;
 }
 
+TEST(CliExport, LinearBlendByDefaultDualQuaternionsWhenAsked) {
+    // The posed tube baked: linear blend unless --dual-quaternion, as the
+    // studio's view skins by default.
+    const fs::path plain = scratch("skinning_default.obj"), linear = scratch("skinning_lbs.obj"),
+                   dual = scratch("skinning_dqs.obj");
+    const std::string document = quoted(savedDocument());
+    ASSERT_EQ(runCli("export " + document + " -o " + quoted(plain) + " --current-pose").exitCode,
+              0);
+    ASSERT_EQ(
+        runCli("export " + document + " -o " + quoted(linear) + " --current-pose --linear-blend")
+            .exitCode,
+        0);
+    ASSERT_EQ(
+        runCli("export " + document + " -o " + quoted(dual) + " --current-pose --dual-quaternion")
+            .exitCode,
+        0);
+    EXPECT_EQ(readWholeFile(plain), readWholeFile(linear));
+    EXPECT_NE(readWholeFile(dual), readWholeFile(linear));
+
+    // An FBX's skin deformer records the skinning (SkinningType, for Maya).
+    const fs::path fbxLinear = scratch("skinning_lbs.fbx"), fbxDual = scratch("skinning_dqs.fbx");
+    ASSERT_EQ(runCli("export " + document + " -o " + quoted(fbxLinear)).exitCode, 0);
+    ASSERT_EQ(
+        runCli("export " + document + " -o " + quoted(fbxDual) + " --dual-quaternion").exitCode, 0);
+    EXPECT_EQ(readWholeFile(fbxLinear).find("DualQuaternion"), std::string::npos);
+    EXPECT_NE(readWholeFile(fbxDual).find("DualQuaternion"), std::string::npos);
+
+    const auto both = runCli("export " + document + " -o " + quoted(scratch("both.fbx")) +
+                             " --linear-blend --dual-quaternion");
+    EXPECT_EQ(both.exitCode, 1);
+    EXPECT_NE(both.err.find("rigmesh: choose one skinning"), std::string::npos) << both.err;
+}
+
 TEST(CliExport, DetailLevelsReachTheExportAndBadOnesAreRefused) {
     const fs::path plain = scratch("plain.glb"), finer = scratch("finer.glb");
     ASSERT_EQ(runCli("export " + quoted(savedDocument()) + " -o " + quoted(plain)).exitCode, 0);
