@@ -127,7 +127,7 @@ void forEachBlenderJointTechnique(const std::string& dae, Visit&& visit,
 
 }  // namespace
 
-std::string withFbxBoneTails(const std::string& fbx, const std::vector<ExportRig>& rigs) {
+void addFbxBoneTails(FbxFile& fbx, const std::vector<ExportRig>& rigs) {
     std::map<std::string, Vec3> tails;
     std::map<std::string, std::string> names;
     for (const ExportRig& rig : rigs)
@@ -136,11 +136,9 @@ std::string withFbxBoneTails(const std::string& fbx, const std::vector<ExportRig
             if (!node.renamedFrom.empty())
                 names.emplace(node.name, node.renamedFrom);
         }
-    std::vector<std::uint8_t> out = withFbxModelVectors(
-        std::vector<std::uint8_t>(fbx.begin(), fbx.end()), kTailMetadataKey, tails);
+    addFbxModelVectors(fbx, kTailMetadataKey, tails);
     if (!names.empty())
-        out = withFbxModelStrings(out, kNameMetadataKey, names);
-    return std::string(out.begin(), out.end());
+        addFbxModelStrings(fbx, kNameMetadataKey, names);
 }
 
 std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae) {

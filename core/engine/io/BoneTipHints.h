@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "io/ExportRig.h"
+#include "io/FbxRecords.h"
 
 namespace rigmesh {
 
@@ -33,11 +34,10 @@ std::string withColladaBoneTips(const std::string& dae, const std::vector<Export
 // is not glTF.
 std::string withGltfBoneTails(const std::string& gltfJson, const std::vector<ExportRig>& rigs);
 
-// The binary FBX with a user property `rigmesh_tail` (a Vector: the tail in
-// the node's own frame) on every bone's Model, and `rigmesh_name` (a
-// KString) where the Model is named otherwise than its bone. Throws Error on bytes
-// that are not a binary FBX.
-std::string withFbxBoneTails(const std::string& fbx, const std::vector<ExportRig>& rigs);
+// Adds to a binary FBX a user property `rigmesh_tail` (a Vector: the tail
+// in the node's own frame) on every bone's Model, and `rigmesh_name` (a
+// KString) where the Model is named otherwise than its bone.
+void addFbxBoneTails(FbxFile& fbx, const std::vector<ExportRig>& rigs);
 
 // The metadata key our importer reads (glTF extras, FBX user property).
 inline constexpr const char* kTailMetadataKey = "rigmesh_tail";

@@ -72,8 +72,7 @@ std::array<double, 3> nearestEquivalent(const std::array<double, 3>& angles,
 
 }  // namespace
 
-std::vector<std::uint8_t> withContinuousFbxRotations(const std::vector<std::uint8_t>& file) {
-    FbxFile fbx = parseFbx(file);
+void makeFbxRotationsContinuous(FbxFile& fbx) {
     // Curve node ids of rotations, curves by id, and which component of
     // which curve node each curve drives (Connections: C "OP" curve node "d|X").
     std::map<std::int64_t, std::array<std::int64_t, 3>> rotationNodes;
@@ -140,6 +139,11 @@ std::vector<std::uint8_t> withContinuousFbxRotations(const std::vector<std::uint
             }
         }
     }
+}
+
+std::vector<std::uint8_t> withContinuousFbxRotations(const std::vector<std::uint8_t>& file) {
+    FbxFile fbx = parseFbx(file);
+    makeFbxRotationsContinuous(fbx);
     return writeFbx(file, fbx);
 }
 

@@ -15,11 +15,14 @@
 #include <cstdint>
 #include <vector>
 
+#include "io/FbxRecords.h"
+
 namespace rigmesh {
 
-// Throws Error if the bytes are not a binary FBX. Curves other than the
-// X, Y, Z curves of a rotation ("R") curve node, and arrays stored
-// compressed, are left as they are.
+// Curves other than the X, Y, Z curves of a rotation ("R") curve node, and
+// arrays stored compressed, are left as they are.
+void makeFbxRotationsContinuous(FbxFile& fbx);
+// The same on a file's bytes; throws Error if they are not a binary FBX.
 std::vector<std::uint8_t> withContinuousFbxRotations(const std::vector<std::uint8_t>& file);
 
 }  // namespace rigmesh

@@ -292,13 +292,9 @@ std::string modelName(const FbxRecord& model, bool wide) {
     return full.substr(0, full.find('\0'));
 }
 
-// The file with make(value) appended to the Properties70 of each Model
-// named in `values`.
+// make(value) appended to the Properties70 of each Model named in `values`.
 template <typename Value, typename Make>
-std::vector<std::uint8_t> withModelProperties(const std::vector<std::uint8_t>& file,
-                                              const std::map<std::string, Value>& values,
-                                              Make make) {
-    FbxFile fbx = parseFbx(file);
+void addModelProperties(FbxFile& fbx, const std::map<std::string, Value>& values, Make make) {
     for (FbxRecord& objects : fbx.top) {
         if (objects.name != "Objects")
             continue;
@@ -327,7 +323,6 @@ std::vector<std::uint8_t> withModelProperties(const std::vector<std::uint8_t>& f
             table->nested = true;
         }
     }
-    return writeFbx(file, fbx);
 }
 
 }  // namespace
@@ -336,18 +331,16 @@ std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file)
     return writeFbx(file, parseFbx(file));
 }
 
-std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& file,
-                                              const std::string& property,
-                                              const std::map<std::string, Vec3>& values) {
-    return withModelProperties(file, values, [&](const Vec3& value, bool wide) {
+void addFbxModelVectors(FbxFile& fbx, const std::string& property,
+                        const std::map<std::string, Vec3>& values) {
+    addModelProperties(fbx, values, [&](const Vec3& value, bool wide) {
         return vectorProperty(property, value, wide);
     });
 }
 
-std::vector<std::uint8_t> withFbxModelStrings(const std::vector<std::uint8_t>& file,
-                                              const std::string& property,
-                                              const std::map<std::string, std::string>& values) {
-    return withModelProperties(file, values, [&](const std::string& value, bool wide) {
+void addFbxModelStrings(FbxFile& fbx, const std::string& property,
+                        const std::map<std::string, std::string>& values) {
+    addModelProperties(fbx, values, [&](const std::string& value, bool wide) {
         return stringProperty(property, value, wide);
     });
 }

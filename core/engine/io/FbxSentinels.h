@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "base/Types.h"
+#include "io/FbxRecords.h"
 
 namespace rigmesh {
 
@@ -32,17 +33,14 @@ bool assimpNeedsFbxSentinelFix();
 // Error if the bytes are not a binary FBX or a record is out of range.
 std::vector<std::uint8_t> addFbxSentinels(const std::vector<std::uint8_t>& file);
 
-// Returns the (sentinel-complete) file with a user property `property` of
-// type Vector added to the Properties70 of each Model named in `values`
-// (our leaf bones' tails, which Assimp's reader hands back as node
-// metadata and Blender shows as a custom property). Throws Error as above.
-std::vector<std::uint8_t> withFbxModelVectors(const std::vector<std::uint8_t>& file,
-                                              const std::string& property,
-                                              const std::map<std::string, Vec3>& values);
+// Adds a user property `property` of type Vector to the Properties70 of
+// each Model named in `values` (our leaf bones' tails, which Assimp's reader
+// hands back as node metadata and Blender shows as a custom property).
+void addFbxModelVectors(FbxFile& fbx, const std::string& property,
+                        const std::map<std::string, Vec3>& values);
 // The same with a user property of type KString (our bones' names where
 // the file's had to differ, BoneTipHints.h).
-std::vector<std::uint8_t> withFbxModelStrings(const std::vector<std::uint8_t>& file,
-                                              const std::string& property,
-                                              const std::map<std::string, std::string>& values);
+void addFbxModelStrings(FbxFile& fbx, const std::string& property,
+                        const std::map<std::string, std::string>& values);
 
 }  // namespace rigmesh

@@ -7,24 +7,13 @@
 namespace rigmesh {
 namespace {
 
-// The string property at `property` of `record` ('S': 4-byte length, bytes).
-std::string stringAt(const FbxRecord& record, const FbxProperty& property) {
-    if (property.type != 'S' || property.at + 4 > record.body.size())
-        return "";
-    std::uint32_t length = 0;
-    for (std::size_t i = 0; i < 4; ++i)
-        length |= std::uint32_t(record.body[property.at + i]) << (8 * i);
-    const auto from = record.body.begin() + static_cast<std::ptrdiff_t>(property.at + 4);
-    return std::string(from, from + length);
-}
-
 // A Deformer record whose class (third property) is "Skin"; Clusters are
 // Deformers too (class "Cluster").
 bool isSkin(const FbxRecord& record, bool wide) {
     if (record.name != "Deformer")
         return false;
     const std::vector<FbxProperty> properties = fbxProperties(record, wide);
-    return properties.size() >= 3 && stringAt(record, properties[2]) == "Skin";
+    return properties.size() >= 3 && fbxStringAt(record, properties[2]) == "Skin";
 }
 
 // A record `name: "value"` without children.
@@ -57,9 +46,7 @@ const char* fbxSkinningTypeName(SkinningMethod method) {
     return method == SkinningMethod::DualQuaternion ? "DualQuaternion" : "Linear";
 }
 
-std::vector<std::uint8_t> withFbxSkinningType(const std::vector<std::uint8_t>& file,
-                                              SkinningMethod method) {
-    FbxFile fbx = parseFbx(file);
+void setFbxSkinningType(FbxFile& fbx, SkinningMethod method) {
     const FbxRecord type = stringRecord("SkinningType", fbxSkinningTypeName(method), fbx.wide);
     forEachSkin(fbx, [&](FbxRecord& skin) {
         auto old = std::find_if(skin.children.begin(), skin.children.end(),
@@ -71,6 +58,12 @@ std::vector<std::uint8_t> withFbxSkinningType(const std::vector<std::uint8_t>& f
             skin.nested = true;
         }
     });
+}
+
+std::vector<std::uint8_t> withFbxSkinningType(const std::vector<std::uint8_t>& file,
+                                              SkinningMethod method) {
+    FbxFile fbx = parseFbx(file);
+    setFbxSkinningType(fbx, method);
     return writeFbx(file, fbx);
 }
 
@@ -84,7 +77,7 @@ std::vector<std::string> fbxSkinningTypes(const std::vector<std::uint8_t>& file)
         if (type != skin.children.end()) {
             const std::vector<FbxProperty> properties = fbxProperties(*type, fbx.wide);
             if (!properties.empty())
-                value = stringAt(*type, properties[0]);
+                value = fbxStringAt(*type, properties[0]);
         }
         types.push_back(value);
     });

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "io/FbxRecords.h"
 #include "pose/Skinning.h"
 
 namespace rigmesh {
@@ -19,9 +20,11 @@ namespace rigmesh {
 // The FBX name of a skinning method: "Linear" or "DualQuaternion".
 const char* fbxSkinningTypeName(SkinningMethod method);
 
-// Returns the (sentinel-complete) binary FBX with `SkinningType` set to
-// `method` on every Skin deformer (replacing the one there, else added).
-// Throws Error if the bytes are not a binary FBX.
+// Sets `SkinningType` to `method` on every Skin deformer of the parsed file
+// (replacing the one there, else adding it).
+void setFbxSkinningType(FbxFile& fbx, SkinningMethod method);
+// The same on a binary FBX's bytes (written back sentinel-complete). Throws
+// Error if the bytes are not a binary FBX.
 std::vector<std::uint8_t> withFbxSkinningType(const std::vector<std::uint8_t>& file,
                                               SkinningMethod method);
 

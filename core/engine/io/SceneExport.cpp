@@ -19,6 +19,7 @@
 #include "io/BoneTipHints.h"
 #include "io/ColladaSkinsAndClips.h"
 #include "io/ExportFormat.h"
+#include "io/FbxClusterOrder.h"
 #include "io/FbxRotationCurves.h"
 #include "io/FbxSentinels.h"
 #include "io/FbxSkinningType.h"
@@ -261,26 +262,19 @@ StagedExport stageScene(const std::vector<ExportPart>& parts, const Clip* clip,
             stageGltf(files, target, staged.files_, staged.undoOnFailure_, staged.obsolete_);
             break;
         }
-        case ExportFormat::Fbx:
-            if (assimpNeedsFbxSentinelFix()) {
-                const std::vector<std::uint8_t> fixed = addFbxSentinels(
-                    std::vector<std::uint8_t>(files.main.begin(), files.main.end()));
-                files.main.assign(fixed.begin(), fixed.end());
-            }
-            {
-                const std::vector<std::uint8_t> continuous = withContinuousFbxRotations(
-                    std::vector<std::uint8_t>(files.main.begin(), files.main.end()));
-                files.main.assign(continuous.begin(), continuous.end());
-            }
-            files.main = withFbxBoneTails(files.main, rigs);
-            {
-                const std::vector<std::uint8_t> typed = withFbxSkinningType(
-                    std::vector<std::uint8_t>(files.main.begin(), files.main.end()),
-                    options.skinning);
-                files.main.assign(typed.begin(), typed.end());
-            }
-            staged.files_.emplace_back(target, files.main);
+        case ExportFormat::Fbx: {
+            // One parse for every pass over Assimp's FBX; writing it back
+            // adds the null records Assimp < 5.3 leaves out (FbxSentinels.h).
+            const std::vector<std::uint8_t> bytes(files.main.begin(), files.main.end());
+            FbxFile fbx = parseFbx(bytes);
+            makeFbxRotationsContinuous(fbx);
+            listFbxClustersParentsFirst(fbx);
+            addFbxBoneTails(fbx, rigs);
+            setFbxSkinningType(fbx, options.skinning);
+            const std::vector<std::uint8_t> out = writeFbx(bytes, fbx);
+            staged.files_.emplace_back(target, std::string(out.begin(), out.end()));
             break;
+        }
         case ExportFormat::Collada:
             staged.files_.emplace_back(
                 target, withColladaSkinRootsAndClips(withColladaBoneTips(files.main, rigs)));

@@ -24,13 +24,11 @@ Per case and format it checks, and prints one line per check:
     glb set stands in for the others: every format is cut to the same
     default of four influences).
 
-Known defect, reported and not failed: Godot 3.2.3 imports FBX through its
-Assimp module, which gives a bone its parent only when the parent was added
-to the Skeleton before it, and adds our bones in name order
-(docs/EXCHANGE.md rule 15; measured: the biped's bone0 under bone3 loses
-its parent). Where an FBX skeleton shows exactly that and nothing else
-wrong, the pose check of that file is skipped with a note; it runs again as
-soon as the hierarchy comes in right.
+Godot 3.2.3 imports FBX through its Assimp module, which gives a bone its
+parent only when the parent was added to the Skeleton before it, in the
+order of the file's clusters (docs/EXCHANGE.md rule 15); our FBX lists them
+parents first (io/FbxClusterOrder.h), so every FBX bone must keep its parent
+here like any other format's.
 
 Exit codes: 0 all checks passed, 1 a check failed, 77 Godot cannot run here
 (the message says why; ctest reports the test as skipped).
@@ -190,7 +188,6 @@ class Checks:
     def __init__(self):
         self.failed = 0
         self.passed = 0
-        self.notes = 0
 
     def check(self, ok, what):
         print(("ok    " if ok else "FAIL  ") + what)
@@ -198,26 +195,6 @@ class Checks:
             self.passed += 1
         else:
             self.failed += 1
-
-    def note(self, what):
-        print("note  " + what)
-        self.notes += 1
-
-
-def lost_parents_by_name_order(bones, parents, reference):
-    """The FBX defect: every wrong parent is a lost one whose exported parent
-    sorts after the bone. None when some parent is wrong otherwise."""
-    lost = []
-    for bone, parent in zip(bones, parents):
-        want = reference.get(bone)
-        got = bones[parent] if parent >= 0 else None
-        if got == want:
-            continue
-        if got is None and want is not None and want > bone:
-            lost.append(bone)
-        else:
-            return None
-    return lost
 
 
 def check_file(checks, file, scene, reference, size):
@@ -233,18 +210,11 @@ def check_file(checks, file, scene, reference, size):
     parents = {}
     for skin in reference["skins"]:
         parents.update({bone_key(b): (bone_key(p) if p else None) for b, p in skin.items()})
-    pose_known_defect = None
     for skeleton in scene["skeletons"]:
         bones = [bone_key(b) for b in skeleton["bones"]]
         right = all(parents.get(b, "?") == (bones[p] if p >= 0 else None)
                     for b, p in zip(bones, skeleton["parents"]))
-        lost = None if right else lost_parents_by_name_order(bones, skeleton["parents"], parents)
-        if lost and file.endswith(".fbx"):
-            pose_known_defect = ("Godot 3.2.3's FBX importer dropped the parents of "
-                                 + ", ".join(lost) + " (their parents' names sort after theirs)")
-            checks.note(f"{file}: known Godot defect: {pose_known_defect}")
-        else:
-            checks.check(right, f"{file}: Skeleton {skeleton['path']}: every bone has its exported parent")
+        checks.check(right, f"{file}: Skeleton {skeleton['path']}: every bone has its exported parent")
     skinned = [m for m in scene["meshes"] if m["skeleton"] and m["weighted"]]
     checks.check(len(skinned) == reference["skinned_meshes"],
                  f"{file}: {len(skinned)} skinned meshes bound to a Skeleton, exported "
@@ -263,10 +233,7 @@ def check_file(checks, file, scene, reference, size):
                 f"posed within {pose_off / size:.2e} of the size {size:.3g} (limits "
                 f"{REST_TOLERANCE:g}, {POSE_TOLERANCE:g})")
         ok = rest_off <= REST_TOLERANCE * size and pose_off <= POSE_TOLERANCE * size
-        if pose_known_defect is not None:
-            checks.note(what + ("; passes" if ok else "; fails") + " (known defect above)")
-        else:
-            checks.check(ok, what)
+        checks.check(ok, what)
 
 
 def main(argv):
@@ -336,7 +303,7 @@ def main(argv):
             probe["expected_rest"] = asked["points"]
             probe["expected_posed"] = asked["posed"]
         check_file(checks, file, scene, references[case], expected[case]["model_size"])
-    print(f"run_godot: {checks.passed} passed, {checks.failed} failed, {checks.notes} notes")
+    print(f"run_godot: {checks.passed} passed, {checks.failed} failed")
     return 1 if checks.failed else 0
 
 
