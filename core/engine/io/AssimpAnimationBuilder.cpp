@@ -54,31 +54,36 @@ void appendChannels(const Clip& clip, const ExportRig& rig, aiAnimation& animati
                     std::size_t& next) {
     const std::vector<double> times = exportedKeyTimes(clip);
     checkDistinctAsFloats(times);
-    std::vector<Pose> poses;
-    for (double t : times)
-        poses.push_back(clip.evaluate(t));
     animation.mDuration = std::max(animation.mDuration, times.back());
     const unsigned count = static_cast<unsigned>(times.size());
-    for (std::size_t n = 0; n < rig.nodes.size(); ++n) {
-        // Notes item 5: position, rotation and scaling keys, same count and times.
+    // docs/EXCHANGE.md rule 5: position, rotation and scaling keys, same
+    // count and times.
+    std::vector<aiNodeAnim*> channels;
+    for (const ExportBoneNode& node : rig.nodes) {
         auto* channel = new aiNodeAnim;
         animation.mChannels[next++] = channel;
-        channel->mNodeName = aiString(rig.nodes[n].name);
+        channel->mNodeName = aiString(node.name);
         channel->mNumPositionKeys = channel->mNumRotationKeys = channel->mNumScalingKeys = count;
         channel->mPositionKeys = new aiVectorKey[count];
         channel->mRotationKeys = new aiQuatKey[count];
         channel->mScalingKeys = new aiVectorKey[count];
-        Eigen::Quaterniond previous = Eigen::Quaterniond::Identity();
-        for (unsigned k = 0; k < count; ++k) {
+        channels.push_back(channel);
+    }
+    // One pose at a time, written to every channel: a long clip's poses are
+    // never all held at once.
+    std::vector<Eigen::Quaterniond> previous(rig.nodes.size(), Eigen::Quaterniond::Identity());
+    for (unsigned k = 0; k < count; ++k) {
+        const Pose pose = clip.evaluate(times[k]);
+        for (std::size_t n = 0; n < channels.size(); ++n) {
             const int node = static_cast<int>(n);
-            Eigen::Quaterniond q = rig.localRotation(node, poses[k]);
-            if (q.dot(previous) < 0)  // same hemisphere as the key before: shortest slerp
+            Eigen::Quaterniond q = rig.localRotation(node, pose);
+            if (q.dot(previous[n]) < 0)  // same hemisphere as the key before: shortest slerp
                 q.coeffs() = -q.coeffs();
-            previous = q;
-            channel->mPositionKeys[k] =
-                aiVectorKey(times[k], toAi(rig.localTranslation(node, poses[k])));
-            channel->mRotationKeys[k] = aiQuatKey(times[k], toAi(q));
-            channel->mScalingKeys[k] = aiVectorKey(times[k], aiVector3D(1, 1, 1));
+            previous[n] = q;
+            channels[n]->mPositionKeys[k] =
+                aiVectorKey(times[k], toAi(rig.localTranslation(node, pose)));
+            channels[n]->mRotationKeys[k] = aiQuatKey(times[k], toAi(q));
+            channels[n]->mScalingKeys[k] = aiVectorKey(times[k], aiVector3D(1, 1, 1));
         }
     }
 }
@@ -123,6 +128,30 @@ aiAnimation* makeAnimation(const std::vector<AnimatedRig>& rigs, const std::stri
         throw;
     }
     return animation;
+}
+
+namespace {
+
+// Keeps the first of `count` keys when every value equals it.
+void keepOneIfConstant(aiVectorKey*& keys, unsigned& count) {
+    if (count < 2 || !std::all_of(keys + 1, keys + count, [&](const aiVectorKey& key) {
+            return key.mValue == keys[0].mValue;
+        }))
+        return;
+    auto* one = new aiVectorKey[1]{keys[0]};
+    delete[] keys;
+    keys = one;
+    count = 1;
+}
+
+}  // namespace
+
+void keepConstantChannelsAsOneKey(aiAnimation& animation) {
+    for (unsigned c = 0; c < animation.mNumChannels; ++c) {
+        aiNodeAnim& channel = *animation.mChannels[c];
+        keepOneIfConstant(channel.mPositionKeys, channel.mNumPositionKeys);
+        keepOneIfConstant(channel.mScalingKeys, channel.mNumScalingKeys);
+    }
 }
 
 }  // namespace rigmesh

@@ -36,4 +36,12 @@ struct AnimatedRig {
 // Throws Error on no rigs or a clip without keys.
 aiAnimation* makeAnimation(const std::vector<AnimatedRig>& rigs, const std::string& name);
 
+// Each channel's position and scaling keys cut to the first where all are
+// equal (a bone's fixed offset, unit scale): FBX keeps a curve per
+// component, so a smooth clip's constant curves were two thirds of the file.
+// For FBX only: it stores each curve with its own times (and Blender reads a
+// one-key curve as constant), while COLLADA needs the same times on every
+// channel (docs/EXCHANGE.md rule 5).
+void keepConstantChannelsAsOneKey(aiAnimation& animation);
+
 }  // namespace rigmesh

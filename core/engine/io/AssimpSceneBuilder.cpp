@@ -217,7 +217,7 @@ aiMesh* makeMesh(const ExportPart& item, const std::string& name, ExportFormat f
     return out;
 }
 
-// Notes item 3: at least one material, or fbx and collada segfault.
+// docs/EXCHANGE.md rule 3: at least one material, or fbx and collada segfault.
 aiMaterial* makeMaterial() {
     auto* material = new aiMaterial;
     const aiString name("rigmesh_material");
@@ -382,8 +382,10 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
         // Assimp 5.2.5's FBX exporter writes the stack's LocalStop as the
         // duration cut to whole seconds, and FBX readers drop the keys after
         // it (docs/EXCHANGE.md rule 20): a whole number of seconds keeps them.
-        if (format == ExportFormat::Fbx)
+        if (format == ExportFormat::Fbx) {
             animations.back()->mDuration = std::ceil(animations.back()->mDuration);
+            keepConstantChannelsAsOneKey(*animations.back());
+        }
     }
     if (!armatureChildren.empty()) {
         aiNode* armature = new aiNode("Armature");
@@ -401,7 +403,7 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
         std::copy(animations.begin(), animations.end(), scene.mAnimations);
     }
     if (format == ExportFormat::Fbx) {
-        // Notes item 10: FBX defaults to centimetres; 100 says metres.
+        // docs/EXCHANGE.md rule 10: FBX defaults to centimetres; 100 says metres.
         scene.mMetaData = aiMetadata::Alloc(1);
         scene.mMetaData->Set(0, "UnitScaleFactor", 100.0);
     }

@@ -150,6 +150,9 @@ FbxFile parseFbx(const std::vector<std::uint8_t>& file) {
 
 std::vector<std::uint8_t> writeFbx(const std::vector<std::uint8_t>& file, const FbxFile& fbx) {
     Writer writer(fbx.wide);
+    // Room for the file and the null records it may lack: one allocation,
+    // not a copy at each doubling of a file of many megabytes.
+    writer.out.reserve(file.size() + file.size() / 4 + 4096);
     writer.out.assign(file.begin(), file.begin() + kHeaderSize);
     for (const FbxRecord& record : fbx.top)
         writer.write(record);

@@ -52,7 +52,7 @@ const char* assimpFormatId(ExportFormat format) {
     return "";
 }
 
-// Notes item 8: FBX and COLLADA need JoinIdenticalVertices or the mesh
+// docs/EXCHANGE.md rule 8: FBX and COLLADA need JoinIdenticalVertices or the mesh
 // arrives open in Blender (glTF gets it from Assimp anyway). We do it
 // ourselves in linear time (AssimpJoinVertices.h).
 unsigned preprocessing(ExportFormat format) {

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
-#include <set>
 #include <string>
 
 #include "base/Error.h"
@@ -188,28 +187,35 @@ Pose Clip::evaluate(double time) const {
     const Pose& p2 = k2->second;
     const Pose& p3 = k3->second;
 
-    std::set<JointId> joints;
+    // The joints any of the four keys rotates, ascending (one sorted vector:
+    // exports evaluate a clip at every frame, docs/EXCHANGE.md rule 5).
+    std::vector<JointId> joints;
+    joints.reserve(p1.rotations.size() + p2.rotations.size());
     for (const Pose* p : {&p0, &p1, &p2, &p3}) {
         for (const auto& [joint, q] : p->rotations)
-            joints.insert(joint);
+            joints.push_back(joint);
     }
+    std::sort(joints.begin(), joints.end());
+    joints.erase(std::unique(joints.begin(), joints.end()), joints.end());
 
     Pose result;
     if (interpolation == Interpolation::Linear) {
         for (JointId joint : joints)
-            result.rotations.emplace(
-                joint, slerpShortest(unitRotation(p1, joint), unitRotation(p2, joint), u));
+            result.rotations.emplace_hint(
+                result.rotations.end(), joint,
+                slerpShortest(unitRotation(p1, joint), unitRotation(p2, joint), u));
         result.rootTranslation = (1 - u) * p1.rootTranslation + u * p2.rootTranslation;
         return result;
     }
+    std::vector<Eigen::Quaterniond> q(4);
     for (JointId joint : joints) {
         // Hemisphere continuity along the four keys before squad.
-        std::vector<Eigen::Quaterniond> q{unitRotation(p0, joint), unitRotation(p1, joint),
-                                          unitRotation(p2, joint), unitRotation(p3, joint)};
+        q = {unitRotation(p0, joint), unitRotation(p1, joint), unitRotation(p2, joint),
+             unitRotation(p3, joint)};
         alignHemispheres(q);
         const Eigen::Quaterniond s1 = squadControl(q[0], q[1], q[2]);
         const Eigen::Quaterniond s2 = squadControl(q[1], q[2], q[3]);
-        result.rotations.emplace(joint, squad(q[1], q[2], s1, s2, u));
+        result.rotations.emplace_hint(result.rotations.end(), joint, squad(q[1], q[2], s1, s2, u));
     }
     result.rootTranslation = catmullRom(p0.rootTranslation, p1.rootTranslation, p2.rootTranslation,
                                         p3.rootTranslation, u);
