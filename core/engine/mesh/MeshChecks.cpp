@@ -1,4 +1,5 @@
 #include "mesh/MeshChecks.h"
+#include "mesh/MeshTopologyCheck.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -222,6 +223,16 @@ MeshReport analyseMesh(const TriMesh& mesh, bool checkSelfIntersections) {
     analyseGeometry(mesh, report);
     report.selfIntersectingFacePairs =
         checkSelfIntersections ? countSelfIntersectingFacePairs(mesh) : -1;
+    return report;
+}
+
+MeshReport analyseMeshTopology(const TriMesh& mesh) {
+    validate(mesh);
+    MeshReport report;
+    report.vertices = mesh.vertexCount();
+    report.faces = mesh.faceCount();
+    analyseTopology(mesh, report);
+    report.selfIntersectingFacePairs = -1;
     return report;
 }
 

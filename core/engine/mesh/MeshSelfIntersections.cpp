@@ -164,9 +164,17 @@ bool facesIntersect(const TriMesh& mesh, const std::vector<Point>& points,
     return CGAL::do_intersect(tf, tg);
 }
 
-// The same test as PMP::self_intersections, run on the soup itself.
+// The same test as PMP::self_intersections, run on the soup itself, and
+// like it on pointers to the boxes with a cutoff of 2000 boxes: CGAL's
+// segment tree sorts and partitions what it is given, and a box with its
+// face index and id is 64 bytes against a pointer's 8 (sorting and swapping
+// boxes was two thirds of this test, and the test a third of a sketch's
+// part, in perf). The pairs are the same: the callback sees every pair of
+// overlapping boxes whatever the tree's shape.
 std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh) {
-    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
+    using Box =
+        CGAL::Box_intersection_d::Box_with_info_d<double, 3, int,
+                                                  CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
     const std::vector<Point> points = toPoints(mesh);
     std::vector<Box> boxes;
     boxes.reserve(mesh.faces.size());
@@ -175,12 +183,17 @@ std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh) {
         if (!CGAL::collinear(points[a], points[b], points[c]))
             boxes.emplace_back(points[a].bbox() + points[b].bbox() + points[c].bbox(), i);
     }
+    std::vector<const Box*> handles;
+    handles.reserve(boxes.size());
+    for (const Box& box : boxes)
+        handles.push_back(&box);
     std::vector<std::array<int, 2>> pairs;
-    const auto callback = [&](const Box& x, const Box& y) {
-        if (facesIntersect(mesh, points, mesh.faces[x.info()], mesh.faces[y.info()]))
-            pairs.push_back({std::min(x.info(), y.info()), std::max(x.info(), y.info())});
+    const auto callback = [&](const Box* x, const Box* y) {
+        if (facesIntersect(mesh, points, mesh.faces[x->info()], mesh.faces[y->info()]))
+            pairs.push_back({std::min(x->info(), y->info()), std::max(x->info(), y->info())});
     };
-    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), callback);
+    constexpr std::ptrdiff_t kCutoff = 2000;  // PMP::self_intersections' own
+    CGAL::box_self_intersection_d(handles.begin(), handles.end(), callback, kCutoff);
     std::sort(pairs.begin(), pairs.end());
     return pairs;
 }

@@ -3,7 +3,7 @@
 #include <set>
 #include <string>
 
-#include "mesh/MeshChecks.h"
+#include "mesh/MeshTopologyCheck.h"
 #include "part/Part.h"
 
 namespace rigmesh {
@@ -182,7 +182,9 @@ std::vector<std::string> Part::validateSolid() const {
         return problems;
     if (skeleton.boneCount() == 0)
         problems.push_back("The part has no skeleton.");
-    const MeshReport report = analyseMesh(mesh, false);
+    // Closed, manifold and oriented are topology: the angles, area and
+    // volume analyseMesh also measures are not needed here.
+    const MeshReport report = analyseMeshTopology(mesh);
     if (!report.isClosed())
         problems.push_back("The surface has " + std::to_string(report.boundaryEdges) +
                            " boundary edges.");

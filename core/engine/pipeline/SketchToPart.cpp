@@ -1,6 +1,7 @@
 #include "pipeline/SketchToPart.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <limits>
 #include <optional>
@@ -52,35 +53,57 @@ void recordSplit(PartSkeleton& rig, const std::vector<CylinderSections>& cylinde
     }
 }
 
-void addUnique(std::vector<BoneId>& bones, BoneId id) {
-    if (std::find(bones.begin(), bones.end(), id) == bones.end())
-        bones.push_back(id);
+// The skeleton's bones and joints by position, looked up once per part
+// rather than per vertex: ids, segments, the bones at each joint in the
+// order of skeleton.bones() (as Skeleton::bonesAt lists them). Every distance
+// below is taken to the same segment as before, so the lists are unchanged.
+struct BoneTables {
+    std::vector<BoneId> ids;
+    std::vector<BoneSegment> segments;
+    std::vector<std::array<int, 2>> ends;  // head and tail joint, by position
+    std::vector<std::vector<int>> bonesAtJoint;
+
+    explicit BoneTables(const Skeleton& skeleton) : segments(segmentsOf(skeleton)) {
+        bonesAtJoint.resize(skeleton.joints().size());
+        for (const Bone& bone : skeleton.bones()) {
+            const int b = static_cast<int>(ids.size());
+            ids.push_back(bone.id);
+            ends.push_back({skeleton.indexOfJoint(bone.head), skeleton.indexOfJoint(bone.tail)});
+            for (int joint : ends.back())
+                bonesAtJoint[joint].push_back(b);
+        }
+    }
+    int degree(int joint) const { return static_cast<int>(bonesAtJoint[joint].size()); }
+};
+
+void addUnique(std::vector<int>& bones, int bone) {
+    if (std::find(bones.begin(), bones.end(), bone) == bones.end())
+        bones.push_back(bone);
 }
 
 // A section's bone owns a vertex only between the planes through its end
 // joints normal to it: past the plane at a joint with one other
 // bone, that bone competes too (it is the closer one there, or ties at the
 // joint); past a branching joint's plane the vertex is left to the
-// visibility test (nullopt). Otherwise a limb bone could reach past its joint
-// into the next bone's territory.
-std::optional<std::vector<BoneId>> ownersWithinJointPlanes(const Skeleton& skeleton,
-                                                           const std::vector<BoneId>& sectionBones,
-                                                           const Vec3& p) {
-    std::vector<BoneId> owners;
-    for (BoneId id : sectionBones) {
-        addUnique(owners, id);
-        const Bone& bone = skeleton.bone(id);
-        const double t = closestSegmentParameter(p, segmentOf(skeleton, id));
-        for (const auto& [past, end] : {std::pair{t <= 0.0, bone.head}, {t >= 1.0, bone.tail}}) {
-            if (!past || skeleton.degree(end) < 2)
+// visibility test (false). Otherwise a limb bone could reach past its joint
+// into the next bone's territory. Bones are by position in skeleton.bones().
+bool ownersWithinJointPlanes(const BoneTables& tables, const std::vector<int>& sectionBones,
+                             const Vec3& p, std::vector<int>& owners) {
+    owners.clear();
+    for (int bone : sectionBones) {
+        addUnique(owners, bone);
+        const double t = closestSegmentParameter(p, tables.segments[bone]);
+        const auto [head, tail] = tables.ends[bone];
+        for (const auto& [past, end] : {std::pair{t <= 0.0, head}, {t >= 1.0, tail}}) {
+            if (!past || tables.degree(end) < 2)
                 continue;  // within the bone, or beyond a tip (the cap is its own)
-            if (skeleton.degree(end) > 2)
-                return std::nullopt;
-            for (BoneId other : skeleton.bonesAt(end))
+            if (tables.degree(end) > 2)
+                return false;
+            for (int other : tables.bonesAtJoint[end])
                 addUnique(owners, other);
         }
     }
-    return owners;
+    return true;
 }
 
 // The closest of `owners` and their neighbours, with every bone within the
@@ -88,23 +111,23 @@ std::optional<std::vector<BoneId>> ownersWithinJointPlanes(const Skeleton& skele
 // neighbouring bone (across the joint, or across a junction: up to two joints
 // away) may be closer than the owners: then the shortcut does not hold and
 // the vertex is left to the visibility test (empty list).
-std::vector<std::pair<int, double>> closestAmongNeighbours(const Skeleton& skeleton,
-                                                           const std::vector<BoneId>& owners,
+std::vector<std::pair<int, double>> closestAmongNeighbours(const BoneTables& tables,
+                                                           const std::vector<int>& owners,
                                                            const Vec3& p, double tieTolerance) {
-    auto distanceTo = [&](BoneId id) { return pointSegmentDistance(p, segmentOf(skeleton, id)); };
-    std::vector<std::pair<BoneId, double>> candidates;
+    auto distanceTo = [&](int bone) { return pointSegmentDistance(p, tables.segments[bone]); };
+    std::vector<std::pair<int, double>> candidates;
     double best = std::numeric_limits<double>::infinity();
-    for (BoneId id : owners) {
-        candidates.emplace_back(id, distanceTo(id));
+    for (int bone : owners) {
+        candidates.emplace_back(bone, distanceTo(bone));
         best = std::min(best, candidates.back().second);
     }
     const std::size_t ownerCount = candidates.size();
     double nearest = best;
     for (std::size_t o = 0; o < ownerCount; ++o)
-        for (JointId joint : {skeleton.bone(owners[o]).head, skeleton.bone(owners[o]).tail})
-            for (BoneId across : skeleton.bonesAt(joint))
-                for (JointId end : {skeleton.bone(across).head, skeleton.bone(across).tail})
-                    for (BoneId other : skeleton.bonesAt(end)) {
+        for (int joint : tables.ends[owners[o]])
+            for (int across : tables.bonesAtJoint[joint])
+                for (int end : tables.ends[across])
+                    for (int other : tables.bonesAtJoint[end]) {
                         if (std::any_of(candidates.begin(), candidates.end(),
                                         [&](const auto& c) { return c.first == other; }))
                             continue;
@@ -118,9 +141,9 @@ std::vector<std::pair<int, double>> closestAmongNeighbours(const Skeleton& skele
                         }
                     }
     std::vector<std::pair<int, double>> closest;
-    for (const auto& [id, d] : candidates)
+    for (const auto& [bone, d] : candidates)
         if (d <= nearest * (1 + tieTolerance))
-            closest.emplace_back(skeleton.indexOfBone(id), d);
+            closest.emplace_back(bone, d);
     return closest;
 }
 
@@ -130,7 +153,9 @@ ClosestBones closestBonesFromConstruction(const SketchSurface& surface,
                                           const std::vector<CylinderSections>& cylinders,
                                           const PartSkeleton& rig, double tieTolerance) {
     const Skeleton& skeleton = rig.skeleton;
+    const BoneTables tables(skeleton);
     ClosestBones closest(surface.mesh.vertices.size());
+    std::vector<int> sectionBones, owners;
     for (std::size_t v = 0; v < closest.size(); ++v) {
         const VertexOrigin& origin = surface.origins[v];
         if (origin.kind != RegionKind::Cylindrical)
@@ -141,14 +166,13 @@ ClosestBones closestBonesFromConstruction(const SketchSurface& surface,
             section = origin.axisPosition > 0 ? -2 : -1;  // which tip
         const int count = static_cast<int>(cylinder.sections.size());
         const Vec3& p = surface.mesh.vertices[v];
-        std::vector<BoneId> sectionBones;
+        sectionBones.clear();
         for (BoneId id : bonesOfSection(rig, origin.region, section, count))
             if (skeleton.hasBone(id))
-                sectionBones.push_back(id);
-        const auto owners = ownersWithinJointPlanes(skeleton, sectionBones, p);
-        if (!owners || owners->empty())
+                sectionBones.push_back(skeleton.indexOfBone(id));
+        if (!ownersWithinJointPlanes(tables, sectionBones, p, owners) || owners.empty())
             continue;
-        closest[v] = closestAmongNeighbours(skeleton, *owners, p, tieTolerance);
+        closest[v] = closestAmongNeighbours(tables, owners, p, tieTolerance);
     }
     return closest;
 }

@@ -1,0 +1,17 @@
+// The topology half of analyseMesh (mesh/MeshChecks.h) on its own: what a
+// closed-solid check needs (Part::validateSolid), without the geometry.
+#pragma once
+
+#include "mesh/MeshChecks.h"
+
+namespace rigmesh {
+
+// The topology alone (boundary, non-manifold and mis-oriented edges,
+// non-manifold vertices, components, Euler characteristic, genus), as
+// analyseMesh reports it, without the geometry (degenerate faces, angles,
+// area and volume are left 0) and without self-intersections (-1). The
+// angles take an atan2 per corner: a closed-solid check of a 6k-vertex part
+// costs a third of what analyseMesh does. Throws as analyseMesh does.
+MeshReport analyseMeshTopology(const TriMesh& mesh);
+
+}  // namespace rigmesh
