@@ -1537,6 +1537,14 @@
         <source>%1 (*.%2)</source>
         <translation>%1 (*.%2)</translation>
     </message>
+    <message>
+        <source>The file records dual quaternion skinning (Maya uses it); Blender skins it linearly unless Preserve Volume is on.</source>
+        <translation>Die Datei vermerkt Dual-Quaternion-Skinning (Maya nutzt es); Blender skinnt sie linear, solange „Volumen erhalten“ aus ist.</translation>
+    </message>
+    <message>
+        <source>The view bends with dual quaternions; this format is skinned linearly, so bent joints look different elsewhere.</source>
+        <translation>Die Ansicht biegt mit Dual-Quaternionen; dieses Format wird linear geskinnt, gebogene Gelenke sehen anderswo also anders aus.</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::FilesController</name>

@@ -1537,6 +1537,14 @@
         <source>%1 (*.%2)</source>
         <translation>%1 (*.%2)</translation>
     </message>
+    <message>
+        <source>The file records dual quaternion skinning (Maya uses it); Blender skins it linearly unless Preserve Volume is on.</source>
+        <translation>El archivo indica skinning con cuaterniones duales (Maya lo usa); Blender lo deforma por mezcla lineal salvo con «Preservar volumen».</translation>
+    </message>
+    <message>
+        <source>The view bends with dual quaternions; this format is skinned linearly, so bent joints look different elsewhere.</source>
+        <translation>La vista dobla con cuaterniones duales; este formato se deforma por mezcla lineal, así que las articulaciones dobladas se verán distintas en otros programas.</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::FilesController</name>

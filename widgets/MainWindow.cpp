@@ -231,7 +231,7 @@ void MainWindow::createActions() {
     });
     dqsAction_ = viewMenu_->addAction(tr("&Dual Quaternion Skinning"));
     dqsAction_->setCheckable(true);
-    dqsAction_->setChecked(true);
+    dqsAction_->setChecked(false);  // linear blend until the preferences say (applyPreferences)
     dqsAction_->setToolTip(tr("Off: linear blend skinning"));
     connect(dqsAction_, &QAction::toggled, this, [this](bool on) {
         if (auto* v = currentView())

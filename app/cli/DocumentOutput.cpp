@@ -29,8 +29,14 @@ ExportOptions exportOptions(const CommandLine& line) {
         options.maxInfluences = static_cast<int>(*influences);
     }
     options.leafBones = line.flag("--leaf-bones");
-    if (line.flag("--linear-blend"))
-        options.skinning = SkinningMethod::LinearBlend;
+    // The studio's view skinning by default: linear blend, as glTF viewers
+    // and Blender deform (docs/EXCHANGE.md, "Skinning in Blender").
+    options.skinning = SkinningMethod::LinearBlend;
+    if (line.flag("--dual-quaternion")) {
+        if (line.flag("--linear-blend"))
+            throw Error("choose one skinning: --linear-blend or --dual-quaternion");
+        options.skinning = SkinningMethod::DualQuaternion;
+    }
     if (auto levels = line.number("--subdivide")) {
         if (*levels < 0 || *levels > 4 || *levels != std::floor(*levels))
             throw Error("--subdivide must be a whole number from 0 to 4");

@@ -19,9 +19,10 @@ class Document;
 namespace rigmesh::cli {
 
 // --max-influences N (a whole number >= 0; 0 = all the format allows);
-// --leaf-bones (an end bone at each leaf's tail); --linear-blend (bake poses
-// with linear blend skinning, as Blender deforms by default); --subdivide N (Loop, 0..4)
-// and --decimate FACES (quadric, per part).
+// --leaf-bones (an end bone at each leaf's tail); --dual-quaternion (bake
+// poses with dual quaternion skinning and mark an FBX's skin so; the default,
+// --linear-blend, is linear blend skinning as glTF viewers and Blender
+// deform); --subdivide N (Loop, 0..4) and --decimate FACES (quadric, per part).
 ExportOptions exportOptions(const CommandLine& line);
 
 // True for a path ending in .rigmesh (any case).

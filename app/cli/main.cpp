@@ -71,7 +71,7 @@ commands:
       around is listed. Writes the document or an export as for run.
   export DOC.rigmesh -o OUT.glb|.gltf|.fbx|.dae|.obj [--max-influences N]
                [--current-pose | --pose-as-key] [--no-animation] [--hidden] [--leaf-bones]
-               [--subdivide N] [--decimate FACES] [--linear-blend]
+               [--subdivide N] [--decimate FACES] [--linear-blend | --dual-quaternion]
       Converts a saved document as the studio's File > Export does: every
       visible part (--hidden: every part) at its placement, each its own
       skinned mesh named after it, animated by its own clip
@@ -79,8 +79,10 @@ commands:
       is the rest mesh, or each part's current pose with --current-pose
       (rigged formats: as their rest shape); --pose-as-key keeps the rest
       shape and writes each part's current pose as a one-key animation.
-      Poses are baked with dual quaternion skinning, or with --linear-blend
-      as Blender deforms by default (its Armature's Preserve Volume off).
+      Poses are baked with linear blend skinning (--linear-blend, the
+      default), as glTF viewers and Blender deform (its Armature's Preserve
+      Volume off), or with --dual-quaternion, which an .fbx's skin also
+      records (SkinningType, which Maya reads).
       --max-influences, --leaf-bones, --subdivide and --decimate as for build. A bad document exits 1 with the reason.
   example
       Builds the embedded example sketch into a rigged part and prints its figures.

@@ -12,6 +12,8 @@
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
 
 #include "CliRunner.h"
 
@@ -106,6 +108,57 @@ TEST(CliExport, OptionsReachTheExport) {
     EXPECT_EQ(bad.exitCode, 1);
     EXPECT_NE(bad.err.find("rigmesh: --max-influences must be a whole number"), std::string::npos)
         << bad.err;
+}
+
+TEST(CliExport, LinearBlendByDefaultDualQuaternionsWhenAsked) {
+    // The biped's arm bent by a hand drag, baked: linear blend unless
+    // --dual-quaternion, as the studio's view skins by default.
+    const fs::path recipe = scratch("bend_recipe.json"), bent = scratch("bend.rigmesh");
+    writeFile(recipe, R"({"format": "rigmesh-recipe", "version": 2, "steps": [
+        {"command": "sketch", "stroke": ")" +
+                          std::string(RIGMESH_SHARED_SKETCHES) + R"(/biped.json", "name": "biped"},
+        {"command": "pose", "part": 0, "joint": 10, "target": [1.9, 1.6, 0.4]}]})");
+    fs::remove(bent);
+    const auto run = runCli("run " + quoted(recipe) + " -o " + quoted(bent));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const fs::path plain = scratch("skinning_default.obj"), linear = scratch("skinning_lbs.obj"),
+                   dual = scratch("skinning_dqs.obj");
+    const std::string document = quoted(bent);
+    ASSERT_EQ(runCli("export " + document + " -o " + quoted(plain) + " --current-pose").exitCode,
+              0);
+    ASSERT_EQ(
+        runCli("export " + document + " -o " + quoted(linear) + " --current-pose --linear-blend")
+            .exitCode,
+        0);
+    ASSERT_EQ(
+        runCli("export " + document + " -o " + quoted(dual) + " --current-pose --dual-quaternion")
+            .exitCode,
+        0);
+    // The vertex lines (each file names its own .mtl).
+    auto vertices = [](const fs::path& obj) {
+        std::istringstream in(readWholeFile(obj));
+        std::string all;
+        for (std::string line; std::getline(in, line);)
+            if (line.rfind("v ", 0) == 0)
+                all += line + "\n";
+        return all;
+    };
+    ASSERT_FALSE(vertices(linear).empty());
+    EXPECT_EQ(vertices(plain), vertices(linear));
+    EXPECT_NE(vertices(dual), vertices(linear));
+
+    // An FBX's skin deformer records the skinning (SkinningType, for Maya).
+    const fs::path fbxLinear = scratch("skinning_lbs.fbx"), fbxDual = scratch("skinning_dqs.fbx");
+    ASSERT_EQ(runCli("export " + document + " -o " + quoted(fbxLinear)).exitCode, 0);
+    ASSERT_EQ(
+        runCli("export " + document + " -o " + quoted(fbxDual) + " --dual-quaternion").exitCode, 0);
+    EXPECT_EQ(readWholeFile(fbxLinear).find("DualQuaternion"), std::string::npos);
+    EXPECT_NE(readWholeFile(fbxDual).find("DualQuaternion"), std::string::npos);
+
+    const auto both = runCli("export " + document + " -o " + quoted(scratch("both.fbx")) +
+                             " --linear-blend --dual-quaternion");
+    EXPECT_EQ(both.exitCode, 1);
+    EXPECT_NE(both.err.find("rigmesh: choose one skinning"), std::string::npos) << both.err;
 }
 
 TEST(CliExport, DetailLevelsReachTheExportAndBadOnesAreRefused) {

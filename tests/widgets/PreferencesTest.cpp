@@ -119,21 +119,34 @@ TEST_F(Preferences, DefaultEdgeLengthIsTheEdgeLengthOfNewSketches) {
     EXPECT_LT(second.part->mesh.vertexCount(), automaticVertices / 2);
 }
 
-TEST_F(Preferences, SkinningModeSetsTheViewAndTheViewMenu) {
-    ASSERT_TRUE(viewport()->dualQuaternionSkinning());
-    setInDialog([](PreferencesDialog& dialog) { dialog.skinningBox()->setCurrentIndex(1); });
-    EXPECT_FALSE(window->preferences().dualQuaternionSkinning);
+TEST_F(Preferences, TheViewSkinsLinearlyByDefaultAsExportedFilesAre) {
+    // glTF viewers and Blender skin an exported file linearly.
     EXPECT_FALSE(viewport()->dualQuaternionSkinning());
     QAction* dqs = menuAction(QStringLiteral("&View"), QStringLiteral("&Dual Quaternion Skinning"));
     ASSERT_NE(dqs, nullptr);
     EXPECT_FALSE(dqs->isChecked());
-    // A document opened afterwards starts with linear blend skinning too.
-    window->newDocument();
+    // Dual quaternions are one click away.
+    dqs->trigger();
+    EXPECT_TRUE(viewport()->dualQuaternionSkinning());
+    dqs->trigger();
     EXPECT_FALSE(viewport()->dualQuaternionSkinning());
+}
+
+TEST_F(Preferences, SkinningModeSetsTheViewAndTheViewMenu) {
+    ASSERT_FALSE(viewport()->dualQuaternionSkinning());
+    setInDialog([](PreferencesDialog& dialog) { dialog.skinningBox()->setCurrentIndex(0); });
+    EXPECT_TRUE(window->preferences().dualQuaternionSkinning);
+    EXPECT_TRUE(viewport()->dualQuaternionSkinning());
+    QAction* dqs = menuAction(QStringLiteral("&View"), QStringLiteral("&Dual Quaternion Skinning"));
+    ASSERT_NE(dqs, nullptr);
+    EXPECT_TRUE(dqs->isChecked());
+    // A document opened afterwards starts with dual quaternion skinning too.
+    window->newDocument();
+    EXPECT_TRUE(viewport()->dualQuaternionSkinning());
     // And the next start (a new window) as well.
     widgets::MainWindow next(recovery.path());
     next.newDocument();
-    EXPECT_FALSE(next.currentView()->viewport()->dualQuaternionSkinning());
+    EXPECT_TRUE(next.currentView()->viewport()->dualQuaternionSkinning());
 }
 
 TEST_F(Preferences, AutosaveIntervalReachesOpenAndNewDocuments) {

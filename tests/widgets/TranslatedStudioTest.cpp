@@ -123,7 +123,9 @@ TEST_P(TranslatedStudio, DialogsFitTheirTranslatedText) {
     EXPECT_NE(preferences.windowTitle(), QStringLiteral("Preferences"));
     expectNothingCutOff(preferences,
                         QStringLiteral(RIGMESH_TEST_OUTPUT "/preferences_%1.png").arg(code));
-    widgets::ExportDialog exporter(QStringLiteral("/tmp/biped.glb"), window.get());
+    // With the note on skinning shown (the view in dual quaternions).
+    widgets::ExportDialog exporter(QStringLiteral("/tmp/biped.glb"), SkinningMethod::DualQuaternion,
+                                   window.get());
     EXPECT_NE(exporter.windowTitle(), QStringLiteral("Export"));
     expectNothingCutOff(exporter, QStringLiteral(RIGMESH_TEST_OUTPUT "/export_%1.png").arg(code));
 }

@@ -124,14 +124,12 @@ void ExchangeController::exportDocument() {
                     ? QStringLiteral("untitled.glb")
                     : QFileInfo(suggested).path() + QLatin1Char('/') +
                           QFileInfo(suggested).completeBaseName() + QStringLiteral(".glb");
-    ExportDialog dialog(suggested, host_.dialogParent());
+    // The file's baked pose is the shape the view shows (View > Dual
+    // Quaternion Skinning), and an FBX records that skinning.
+    ExportDialog dialog(suggested, skinning_(), host_.dialogParent());
     if (dialog.exec() != QDialog::Accepted)
         return;
-    // The file's baked pose is the shape the view shows (View > Dual
-    // Quaternion Skinning).
-    ExportOptions options = dialog.options();
-    options.skinning = skinning_();
-    exportTo(dialog.path(), options);
+    exportTo(dialog.path(), dialog.options());
 }
 
 void ExchangeController::exportTo(const QString& path, const ExportOptions& options) {

@@ -23,8 +23,8 @@ class StudioHost;
 class ExchangeController : public QObject {
     Q_OBJECT
   public:
-    // `skinning` tells how the view bakes a pose (View > Dual Quaternion
-    // Skinning), which the export takes for posed shapes.
+    // `skinning` tells how the view skins a pose (View > Dual Quaternion
+    // Skinning), which the export takes for posed shapes and FBX records.
     ExchangeController(StudioHost& host, RigController& rig,
                        std::function<SkinningMethod()> skinning, QObject* parent);
 

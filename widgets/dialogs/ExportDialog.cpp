@@ -7,6 +7,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
@@ -30,7 +31,9 @@ constexpr Format kFormats[] = {
 
 }  // namespace
 
-ExportDialog::ExportDialog(const QString& suggestedPath, QWidget* parent) : QDialog(parent) {
+ExportDialog::ExportDialog(const QString& suggestedPath, SkinningMethod viewSkinning,
+                           QWidget* parent)
+    : QDialog(parent), viewSkinning_(viewSkinning) {
     setWindowTitle(tr("Export"));
     path_ = new QLineEdit(suggestedPath, this);
     auto* browse = new QPushButton(tr("Browse..."), this);
@@ -73,6 +76,8 @@ ExportDialog::ExportDialog(const QString& suggestedPath, QWidget* parent) : QDia
     decimate_->setToolTip(
         tr("At most this many triangles per part (quadric error); every kept "
            "vertex keeps its weights"));
+    skinningNote_ = new QLabel(this);
+    skinningNote_->setWordWrap(true);
     auto* form = new QFormLayout(this);
     form->addRow(tr("File"), pathRow);
     form->addRow(tr("Format"), format_);
@@ -82,6 +87,7 @@ ExportDialog::ExportDialog(const QString& suggestedPath, QWidget* parent) : QDia
     form->addRow(tr("Pose"), pose_);
     form->addRow(QString(), animation_);
     form->addRow(QString(), leafBones_);
+    form->addRow(skinningNote_);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
     form->addRow(buttons);
@@ -117,6 +123,18 @@ void ExportDialog::formatChanged() {
     animation_->setEnabled(!obj);
     influences_->setEnabled(!obj);
     leafBones_->setEnabled(!obj);
+    // An OBJ is the pose baked as the view skins it: nothing differs.
+    QString note;
+    if (viewSkinning_ == SkinningMethod::DualQuaternion && suffix == QLatin1String("fbx"))
+        note =
+            tr("The file records dual quaternion skinning (Maya uses it); Blender skins it "
+               "linearly unless Preserve Volume is on.");
+    else if (viewSkinning_ == SkinningMethod::DualQuaternion && !obj)
+        note =
+            tr("The view bends with dual quaternions; this format is skinned linearly, so "
+               "bent joints look different elsewhere.");
+    skinningNote_->setText(note);
+    skinningNote_->setVisible(!note.isEmpty());
 }
 
 QString ExportDialog::path() const {
@@ -132,6 +150,7 @@ ExportOptions ExportDialog::options() const {
     options.leafBones = leafBones_->isChecked();
     options.subdivisionLevels = subdivide_->value();
     options.decimateToFaces = decimate_->value();
+    options.skinning = viewSkinning_;
     return options;
 }
 

@@ -1,6 +1,11 @@
 // File > Export: choose where and as what (glTF binary or text, FBX,
 // COLLADA, OBJ) and the options the formats offer: influences per vertex,
 // the rest or the current pose (OBJ), and whether to write the animation.
+// The file gets the view's skinning (View > Dual Quaternion Skinning) where
+// the format can carry it: baked poses and FBX's skin deformers. One line
+// says when what the file's importers show differs from the view: glTF and
+// COLLADA are skinned linearly by every importer, and Blender skins an FBX
+// linearly whatever it records (docs/EXCHANGE.md, "Skinning in Blender").
 #pragma once
 
 #include <QDialog>
@@ -9,6 +14,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 class QLineEdit;
 class QSpinBox;
 
@@ -17,9 +23,13 @@ namespace rigmesh::widgets {
 class ExportDialog : public QDialog {
     Q_OBJECT
   public:
-    explicit ExportDialog(const QString& suggestedPath, QWidget* parent = nullptr);
+    // `viewSkinning`: how the studio's view deforms posed parts.
+    ExportDialog(const QString& suggestedPath, SkinningMethod viewSkinning,
+                 QWidget* parent = nullptr);
     QString path() const;
     ExportOptions options() const;
+    // The line on skinning; hidden when the file bends as the view does.
+    const QLabel* skinningNote() const { return skinningNote_; }
 
   private:
     void browse();
@@ -33,6 +43,8 @@ class ExportDialog : public QDialog {
     QCheckBox* leafBones_;
     QSpinBox* subdivide_;
     QSpinBox* decimate_;
+    QLabel* skinningNote_;
+    SkinningMethod viewSkinning_;
 };
 
 }  // namespace rigmesh::widgets

@@ -23,7 +23,8 @@ StudioPreferences StudioPreferences::load() {
     const double edge = settings.value(kEdgeLength, 0.0).toDouble(&ok);
     if (ok && std::isfinite(edge) && edge >= 0.0 && edge <= kMaxDefaultEdgeLength)
         p.defaultEdgeLength = edge;
-    p.dualQuaternionSkinning = settings.value(kSkinning).toString() != QLatin1String("linear");
+    p.dualQuaternionSkinning =
+        settings.value(kSkinning).toString() == QLatin1String("dualQuaternion");
     const int seconds = settings.value(kAutosave, p.autosaveSeconds).toInt(&ok);
     if (ok && seconds >= kMinAutosaveSeconds && seconds <= kMaxAutosaveSeconds)
         p.autosaveSeconds = seconds;

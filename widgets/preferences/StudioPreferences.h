@@ -17,8 +17,9 @@ struct StudioPreferences {
     QString language;
     // For new sketches: 0 = automatic (the document's, or the sketch's own).
     double defaultEdgeLength = 0.0;
-    // View > Dual Quaternion Skinning when the studio starts (off: linear blend).
-    bool dualQuaternionSkinning = true;
+    // View > Dual Quaternion Skinning when the studio starts. Off by default:
+    // linear blend, as glTF viewers and Blender skin exported files.
+    bool dualQuaternionSkinning = false;
     // Seconds from the last change to the recovery file.
     int autosaveSeconds = 3;
     MouseBindings mouseBindings = MouseBindings::Blender;

@@ -17,13 +17,6 @@ std::int64_t idAt(const FbxRecord& record, const FbxProperty& property) {
     return id;
 }
 
-std::string stringAt(const FbxRecord& record, const FbxProperty& property) {
-    std::uint32_t length = 0;
-    std::memcpy(&length, record.body.data() + property.at, sizeof length);
-    const auto* data = record.body.data() + property.at + 4;
-    return std::string(data, data + length);
-}
-
 // An object-to-object connection: C "OO", child id, parent id.
 struct Link {
     std::int64_t child = 0;
@@ -35,7 +28,7 @@ bool readLink(const FbxRecord& record, bool wide, Link& link) {
         return false;
     const std::vector<FbxProperty> properties = fbxProperties(record, wide);
     if (properties.size() < 3 || properties[0].type != 'S' || properties[1].type != 'L' ||
-        properties[2].type != 'L' || stringAt(record, properties[0]) != "OO")
+        properties[2].type != 'L' || fbxStringAt(record, properties[0]) != "OO")
         return false;
     link = {idAt(record, properties[1]), idAt(record, properties[2])};
     return true;
@@ -55,9 +48,9 @@ void listFbxClustersParentsFirst(FbxFile& fbx) {
             const std::int64_t id = idAt(object, properties[0]);
             if (object.name == "Model")
                 models.insert(id);
-            else if (object.name == "Deformer" && stringAt(object, properties[2]) == "Cluster")
+            else if (object.name == "Deformer" && fbxStringAt(object, properties[2]) == "Cluster")
                 clusters.insert(id);
-            else if (object.name == "Deformer" && stringAt(object, properties[2]) == "Skin")
+            else if (object.name == "Deformer" && fbxStringAt(object, properties[2]) == "Skin")
                 skins.insert(id);
         }
     }

@@ -50,4 +50,22 @@ struct FbxProperty {
 // The properties of `record` in order; empty when they do not parse.
 std::vector<FbxProperty> fbxProperties(const FbxRecord& record, bool wide);
 
+// The text of a string property ('S': a 4-byte length, then the bytes) of
+// `record`, as fbxProperties found it.
+inline std::string fbxStringAt(const FbxRecord& record, const FbxProperty& property) {
+    std::uint32_t length = 0;
+    for (std::size_t i = 0; i < 4; ++i)
+        length |= std::uint32_t(record.body[property.at + i]) << (8 * i);
+    const auto from = record.body.begin() + static_cast<std::ptrdiff_t>(property.at + 4);
+    return std::string(from, from + length);
+}
+
+// Appends the `bytes` low bytes of `value`, least significant first (FBX
+// numbers are little-endian).
+inline void putFbxLittleEndian(std::vector<std::uint8_t>& out, std::uint64_t value,
+                               std::size_t bytes) {
+    for (std::size_t i = 0; i < bytes; ++i)
+        out.push_back(static_cast<std::uint8_t>(value >> (8 * i)));
+}
+
 }  // namespace rigmesh

@@ -227,14 +227,9 @@ std::vector<FbxProperty> fbxProperties(const FbxRecord& record, bool wide) {
 
 namespace {
 
-void putLittleEndian(std::vector<std::uint8_t>& out, std::uint64_t value, std::size_t bytes) {
-    for (std::size_t i = 0; i < bytes; ++i)
-        out.push_back(static_cast<std::uint8_t>(value >> (8 * i)));
-}
-
 void putString(std::vector<std::uint8_t>& out, const std::string& text) {
     out.push_back('S');
-    putLittleEndian(out, text.size(), 4);
+    putFbxLittleEndian(out, text.size(), 4);
     out.insert(out.end(), text.begin(), text.end());
 }
 
@@ -242,7 +237,7 @@ void putDouble(std::vector<std::uint8_t>& out, double value) {
     out.push_back('D');
     std::uint64_t bits = 0;
     std::memcpy(&bits, &value, sizeof bits);
-    putLittleEndian(out, bits, 8);
+    putFbxLittleEndian(out, bits, 8);
 }
 
 // A Properties70 entry `P` of `count` properties already encoded.
@@ -250,8 +245,8 @@ FbxRecord propertyRecord(std::uint64_t count, const std::vector<std::uint8_t>& p
                          bool wide) {
     FbxRecord record;
     record.name = "P";
-    putLittleEndian(record.body, count, wide ? 8 : 4);
-    putLittleEndian(record.body, properties.size(), wide ? 8 : 4);
+    putFbxLittleEndian(record.body, count, wide ? 8 : 4);
+    putFbxLittleEndian(record.body, properties.size(), wide ? 8 : 4);
     record.body.push_back(1);
     record.body.push_back('P');
     record.body.insert(record.body.end(), properties.begin(), properties.end());
@@ -317,8 +312,8 @@ void addModelProperties(FbxFile& fbx, const std::map<std::string, Value>& values
             if (table == model.children.end()) {
                 FbxRecord properties;
                 properties.name = "Properties70";
-                putLittleEndian(properties.body, 0, fbx.wide ? 8 : 4);
-                putLittleEndian(properties.body, 0, fbx.wide ? 8 : 4);
+                putFbxLittleEndian(properties.body, 0, fbx.wide ? 8 : 4);
+                putFbxLittleEndian(properties.body, 0, fbx.wide ? 8 : 4);
                 properties.body.push_back(12);
                 properties.body.insert(properties.body.end(), properties.name.begin(),
                                        properties.name.end());

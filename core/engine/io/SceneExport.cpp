@@ -22,6 +22,7 @@
 #include "io/FbxClusterOrder.h"
 #include "io/FbxRotationCurves.h"
 #include "io/FbxSentinels.h"
+#include "io/FbxSkinningType.h"
 #include "io/FiniteScene.h"
 #include "io/GltfAnimations.h"
 #include "io/GltfBuffers.h"
@@ -269,6 +270,7 @@ StagedExport stageScene(const std::vector<ExportPart>& parts, const Clip* clip,
             makeFbxRotationsContinuous(fbx);
             listFbxClustersParentsFirst(fbx);
             addFbxBoneTails(fbx, rigs);
+            setFbxSkinningType(fbx, options.skinning);
             const std::vector<std::uint8_t> out = writeFbx(bytes, fbx);
             staged.files_.emplace_back(target, std::string(out.begin(), out.end()));
             break;

@@ -59,9 +59,13 @@ struct ExportOptions {
     // each part's current pose as an animation of a single key at 0 s
     // instead of making it the rest shape (model::exportDocument).
     bool poseAsKey = false;
-    // How a pose is baked into written vertices (OBJ's posed mesh, the
-    // current pose as the rest shape): the studio's view setting. Animated
-    // files are skinned by the importer (Blender: linear blend by default).
+    // The studio's view skinning (View > Dual Quaternion Skinning): how a
+    // pose is baked into written vertices (OBJ's posed mesh, the current
+    // pose as the rest shape), and the skinning type an FBX's skin deformers
+    // carry (io/FbxSkinningType.h; Maya reads it). glTF and COLLADA have no
+    // skinning type: their importers skin linearly (Blender by default too).
+    // The default is the engine's (pose/Skinning.h); the studio and the CLI
+    // pass their own (linear blend unless chosen otherwise).
     SkinningMethod skinning = SkinningMethod::DualQuaternion;
     bool animation = true;   // write the clip when there is one
     double unitScale = 1.0;  // multiplies every written coordinate
