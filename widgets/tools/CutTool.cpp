@@ -30,17 +30,17 @@ QString CutTool::hint() const {
 
 void CutTool::press(Viewport& viewport, QMouseEvent* event) {
     pixels_ = {event->position()};
-    viewport.setStrokeOverlay({viewport.sketchPlanePoint(event->position())});
+    planePoint_ = viewport.sketchPlanePoint(event->position());
+    overlay_ = {planePoint_};
+    viewport.setStrokeOverlay(overlay_);
 }
 
 void CutTool::move(Viewport& viewport, QMouseEvent* event) {
     if (pixels_.empty() || !(event->buttons() & Qt::LeftButton))
         return;
     pixels_.push_back(event->position());
-    std::vector<QVector3D> overlay;
-    for (const QPointF& p : pixels_)
-        overlay.push_back(viewport.sketchPlanePoint(p));
-    viewport.setStrokeOverlay(std::move(overlay));
+    overlay_.push_back(viewport.viewPlanePoint(event->position(), planePoint_));
+    viewport.setStrokeOverlay(overlay_);
 }
 
 void CutTool::release(Viewport& viewport, QMouseEvent* event) {
@@ -55,6 +55,7 @@ void CutTool::release(Viewport& viewport, QMouseEvent* event) {
     if (stroke.back() != pixels_.back())
         stroke.push_back(pixels_.back());
     pixels_.clear();
+    overlay_.clear();
     viewport.setStrokeOverlay({});
     const QPointF a = stroke.front();
     const QPointF b = stroke.back();
@@ -115,6 +116,7 @@ void CutTool::release(Viewport& viewport, QMouseEvent* event) {
 
 void CutTool::cancel(Viewport& viewport) {
     pixels_.clear();
+    overlay_.clear();
     viewport.setStrokeOverlay({});
 }
 

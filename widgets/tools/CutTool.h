@@ -9,6 +9,7 @@
 
 #include <QObject>
 #include <QPointF>
+#include <QVector3D>
 #include <vector>
 
 #include "viewport/ViewportTool.h"
@@ -28,6 +29,11 @@ class CutTool : public ViewportTool {
 
   private:
     std::vector<QPointF> pixels_;
+    // The drawn line on the view plane through the scene's centre, taken at
+    // the press: one point per move, not the whole line re-projected (each
+    // projection measures the whole scene, Viewport::sketchPlanePoint).
+    QVector3D planePoint_;
+    std::vector<QVector3D> overlay_;
 };
 
 }  // namespace rigmesh::widgets
