@@ -19,12 +19,6 @@ T readLittle(const std::vector<std::uint8_t>& bytes, std::size_t at) {
     return value;
 }
 
-std::string stringAt(const FbxRecord& record, const FbxProperty& property) {
-    const auto length = readLittle<std::uint32_t>(record.body, property.at);
-    const auto* data = record.body.data() + property.at + 4;
-    return std::string(data, data + length);
-}
-
 // A curve's values: where its KeyValueFloat array's floats are, and how many.
 struct CurveValues {
     FbxRecord* record = nullptr;  // the KeyValueFloat record
@@ -86,7 +80,7 @@ void makeFbxRotationsContinuous(FbxFile& fbx) {
                 continue;
             const auto id = readLittle<std::int64_t>(object.body, properties[0].at);
             if (object.name == "AnimationCurveNode" &&
-                stringAt(object, properties[1]).starts_with(std::string("R\0\1", 3)))
+                fbxStringAt(object, properties[1]).starts_with(std::string("R\0\1", 3)))
                 rotationNodes.emplace(id, std::array<std::int64_t, 3>{0, 0, 0});
             else if (object.name == "AnimationCurve")
                 curves.emplace(id, &object);
@@ -99,11 +93,11 @@ void makeFbxRotationsContinuous(FbxFile& fbx) {
             const std::vector<FbxProperty> properties = fbxProperties(link, fbx.wide);
             if (properties.size() != 4 || properties[0].type != 'S' || properties[1].type != 'L' ||
                 properties[2].type != 'L' || properties[3].type != 'S' ||
-                stringAt(link, properties[0]) != "OP")
+                fbxStringAt(link, properties[0]) != "OP")
                 continue;
             const auto node =
                 rotationNodes.find(readLittle<std::int64_t>(link.body, properties[2].at));
-            const std::string component = stringAt(link, properties[3]);
+            const std::string component = fbxStringAt(link, properties[3]);
             if (node == rotationNodes.end() || component.size() != 3 ||
                 component.substr(0, 2) != "d|" || component[2] < 'X' || component[2] > 'Z')
                 continue;
