@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "model/DocumentFile.h"
+#include "model/preview/LivePreviews.h"
 
 namespace rigmesh::model {
 
@@ -57,6 +58,13 @@ bool Autosave::writeNow() {
     timer_.stop();
     if (!document_ || !document_->isModified()) {
         discard();
+        return true;
+    }
+    // A gesture is under way (preview/LivePreviews.h): the document holds
+    // a state that is no undo step yet. Try again a delay later; its commit
+    // restarts the delay anyway (onIndexChanged).
+    if (hasLivePreview(*document_)) {
+        timer_.start();
         return true;
     }
     if (!QDir().mkpath(directory_)) {

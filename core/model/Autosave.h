@@ -43,8 +43,9 @@ class Autosave : public QObject {
     QString recoveryFilePath() const { return path_; }
     bool hasRecoveryFile() const;
 
-    // Writes now if the document is modified (else removes the file).
-    // Returns false and emits failed() if writing failed.
+    // Writes now if the document is modified (else removes the file); while
+    // a preview is shown (preview/LivePreviews.h) it writes a delay later
+    // instead. Returns false and emits failed() if writing failed.
     bool writeNow();
     // Removes the recovery file and stops the pending write.
     void discard();

@@ -8,6 +8,7 @@
 #include "ModelTestSupport.h"
 #include "model/Autosave.h"
 #include "model/commands/RenamePartCommand.h"
+#include "model/preview/PlacementPreview.h"
 
 namespace rigmesh::model::test {
 namespace {
@@ -80,6 +81,52 @@ TEST(Autosave, CleanCloseRemovesTheFileAndACrashLeavesIt) {
     ASSERT_EQ(files.size(), 1);
     auto restored = std::make_unique<Document>(DocumentFile::read(files[0].path));
     EXPECT_EQ(restored->parts()[0].name, QStringLiteral("Lost"));
+}
+
+// A drag shows its placement on the document before it is an undo step: a
+// recovery file written then would hold a half-done gesture. The write
+// waits until the preview ends, and then holds what the undo stack holds.
+TEST(Autosave, WaitsWhileAPreviewIsShownAndThenWritesTheCommittedState) {
+    QTemporaryDir dir;
+    Document document;
+    Autosave autosave(&document, dir.path());
+    autosave.setDelay(20);
+    const PartId id = addPart(document, testStrokes()[0], QStringLiteral("Draft"));
+    ASSERT_TRUE(autosave.writeNow());
+
+    document.undoStack()->push(new RenamePartCommand(document, id, QStringLiteral("Renamed")));
+    Placement dragged;
+    dragged.translation = Vec3(3.0, 0.0, 0.0);
+    {
+        PlacementPreview drag(document, id);
+        drag.preview(dragged);
+        EXPECT_TRUE(hasLivePreview(document));
+        QTest::qWait(200);  // ten delays: the write keeps waiting
+        const DocumentContents during = DocumentFile::read(autosave.recoveryFilePath());
+        EXPECT_EQ(during.parts[0].name, QStringLiteral("Draft"));
+        EXPECT_EQ(during.parts[0].placement, Placement());
+    }  // released without a commit: reverted
+    EXPECT_FALSE(hasLivePreview(document));
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            return DocumentFile::read(autosave.recoveryFilePath()).parts[0].name ==
+                   QStringLiteral("Renamed");
+        },
+        5000));
+    EXPECT_EQ(DocumentFile::read(autosave.recoveryFilePath()).parts[0].placement, Placement());
+
+    // A committed drag is written a delay after its undo step.
+    {
+        PlacementPreview drag(document, id);
+        drag.preview(dragged);
+        ASSERT_TRUE(drag.commit());
+        EXPECT_FALSE(hasLivePreview(document));
+    }
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            return DocumentFile::read(autosave.recoveryFilePath()).parts[0].placement == dragged;
+        },
+        5000));
 }
 
 TEST(Autosave, UnmodifiedDocumentWritesNothing) {

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "model/Document.h"
+#include "model/preview/LivePreviews.h"
 
 namespace rigmesh::model {
 
@@ -39,6 +40,10 @@ class PartPreview {
         put(state);
         current_ = state;
         previewing_ = true;
+        if (!counted_) {
+            notePreviewShown(*document_);
+            counted_ = true;
+        }
     }
     // Puts the original state back (nothing when not previewing).
     void revert() {
@@ -46,6 +51,7 @@ class PartPreview {
             put(original_);
         previewing_ = false;
         current_ = original_;
+        uncount();
     }
 
   protected:
@@ -60,6 +66,7 @@ class PartPreview {
     void committed() {
         previewing_ = false;
         original_ = current_;
+        uncount();
     }
 
     // Guarded: a preview may outlive its document (a background job's).
@@ -67,9 +74,17 @@ class PartPreview {
     PartId id_;
 
   private:
+    // The document no longer counts this preview as shown (LivePreviews.h).
+    void uncount() {
+        if (counted_ && document_)
+            notePreviewEnded(*document_);
+        counted_ = false;
+    }
+
     State original_;
     State current_;
     bool previewing_ = false;
+    bool counted_ = false;  // counted by the document as a live preview
 };
 
 }  // namespace rigmesh::model
