@@ -2,7 +2,7 @@
 default options and checks what a rigger sees of the armature:
 every bone's head on our head, its tail within 1 degree of our
 head-to-tail direction, and its length within 1% of ours; no stray empties;
-every vertex weighted (also after --subdivide and --decimate, item 4).
+every vertex weighted (also after --subdivide and --decimate).
 
 usage: blender -b --factory-startup --python-exit-code 1 \
            --python check_bone_frames_in_blender.py -- EXPORT RIG_JSON [--leaf-bones]
