@@ -12,7 +12,10 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTreeWidget>
+#include <iostream>
+#include <optional>
 
+#include "MirrorPaintSymmetry.h"
 #include "PartWeightOf.h"
 #include "StudioPoseFixture.h"
 #include "jobs/JobRunner.h"
@@ -156,6 +159,24 @@ TEST_F(WeightsStudio, MirroredStrokePaintsBothArmsAndLeavesLockedBonesAlone) {
     }
     EXPECT_GT(lockedInStroke, 0) << "the stroke reached the locked bone's vertices";
     EXPECT_GT(std::min(gainedLeft, gainedRight), 1.0) << "both arms painted";
+    // Left and right alike, vertex by vertex, wherever the lock does not
+    // hold the weight on one side only (the locked bone's image is not
+    // locked).
+    const std::optional<PartSymmetry> symmetry = findPartSymmetry(after);
+    ASSERT_TRUE(symmetry.has_value());
+    const BoneId lockedImage = symmetry->imageOf(locked);
+    const testsupport::MirrorMismatch mismatch = testsupport::mirrorMismatch(
+        rest, after, painted, symmetry->imageOf(painted), symmetry->plane, [&](int v, int pair) {
+            return testsupport::weightOf(rest, v, locked) == 0.0 &&
+                   testsupport::weightOf(rest, v, lockedImage) == 0.0 &&
+                   testsupport::weightOf(rest, pair, locked) == 0.0 &&
+                   testsupport::weightOf(rest, pair, lockedImage) == 0.0;
+        });
+    std::cout << "mirror mismatch over " << mismatch.compared << " vertices: largest "
+              << mismatch.largest << ", mean " << mismatch.mean << std::endl;
+    EXPECT_GT(mismatch.compared, 20);
+    EXPECT_LT(mismatch.largest, 1e-9);
+    EXPECT_LT(mismatch.mean, 1e-9);
     document()->undoStack()->undo();
     EXPECT_EQ(model::DocumentFile::toBytes(*document()), before);
 }
