@@ -125,6 +125,14 @@ TEST_F(StudioArtist, ALimbDroppedOverABlobsEdgeMergesWhereItWasDropped) {
         << "no joint of the blob is near the drop: its bone is split there";
     EXPECT_TRUE(status().startsWith(QStringLiteral("Split a bone of blob")))
         << status().toStdString();
+    // While the menu waits, the limb shows in front of the blob (it would
+    // hide inside it), with a copy where the split puts it.
+    const auto inFront = viewport()->tool()->partsInFront(*viewport());
+    ASSERT_EQ(inFront.size(), 1u);
+    EXPECT_EQ(inFront.front().part, limb);
+    EXPECT_TRUE(inFront.front().resultOffset.has_value());
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_merge_drop_menu.png"));
     QTest::keyClick(menu, Qt::Key_Return);
     test::waitForJobs();
     ASSERT_EQ(document()->partCount(), 1) << status().toStdString();
