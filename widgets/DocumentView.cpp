@@ -10,31 +10,11 @@
 #include "model/ErrorText.h"
 #include "model/PartBuilder.h"
 #include "model/preview/SketchPreview.h"
+#include "sketch/StrokeCrossingError.h"
 #include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
 
 namespace rigmesh::widgets {
-
-namespace {
-
-// The point a StrokeCrossesItselfNear error names ("(x, y)", in the
-// stroke's coordinates), if it is one.
-std::optional<Vec2> crossingOf(const Error& error) {
-    const Message& message = error.message();
-    if (message.id != MessageId::StrokeCrossesItselfNear || message.args.empty())
-        return std::nullopt;
-    QString text = QString::fromStdString(message.args.front());
-    text.remove(QLatin1Char('(')).remove(QLatin1Char(')'));
-    const QStringList xy = text.split(QLatin1Char(','));
-    bool okX = false, okY = false;
-    const double x = xy.value(0).trimmed().toDouble(&okX);
-    const double y = xy.value(1).trimmed().toDouble(&okY);
-    if (!okX || !okY)
-        return std::nullopt;
-    return Vec2(x, y);
-}
-
-}  // namespace
 
 DocumentView::DocumentView(std::unique_ptr<model::Document> document, QWidget* parent)
     : QWidget(parent), document_(std::move(document)) {
@@ -142,15 +122,14 @@ void DocumentView::createPartFromStroke(const std::vector<Vec2>& stroke,
                             ? *outcome->built
                             : model::buildPartAtDocumentLength(request.documentLength, stroke,
                                                                request.name, request.options);
-            } catch (const Error& error) {
+            } catch (const StrokeCrossingError& error) {
                 // Where a stroke crosses itself is shown, not told in
-                // coordinates (the engine's message names the point).
-                const std::optional<Vec2> at = crossingOf(error);
-                if (!at)
-                    throw;
+                // coordinates (the engine's message names the point for the
+                // command line).
+                const Vec2 at = error.crossing();
                 return [=, this]() {
                     dropPreview();
-                    viewport_->setProblemMark(toQt(plane.toWorld(Vec3(at->x(), at->y(), 0.0))));
+                    viewport_->setProblemMark(toQt(plane.toWorld(Vec3(at.x(), at.y(), 0.0))));
                     emit statusMessage(tr("Nothing created: the stroke crosses itself where "
                                           "the red cross is; draw a silhouette that does not "
                                           "cross itself"),

@@ -109,7 +109,8 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
     // An undo or redo says so in the status bar, in place of what the step
     // itself reported.
     new UndoStatus(
-        undoGroup_, [this](const QString& m) { showStatus(m, 4000); }, this);
+        undoGroup_, findChild<QAction*>(QStringLiteral("redoAction")), history_,
+        [this](const QString& m) { showStatus(m, 4000); }, this);
     // Below this the docks crowd the view and each other.
     setMinimumSize(900, 600);
     applyPreferences(StudioPreferences::load());
@@ -183,6 +184,7 @@ void MainWindow::createActions() {
     undo->setShortcut(QKeySequence::Undo);
     undo->setIcon(s->standardIcon(QStyle::SP_ArrowBack));
     QAction* redo = undoGroup_.createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("redoAction"));
     // Ctrl+Shift+Z everywhere, plus the platform's own redo key (Ctrl+Y on
     // some); a key listed twice would make the shortcut ambiguous.
     QList<QKeySequence> redoKeys{QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)};

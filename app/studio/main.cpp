@@ -3,6 +3,7 @@
 // autosaved before a crash.
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QElapsedTimer>
 #include <QMessageBox>
 #include <QSurfaceFormat>
 
@@ -13,6 +14,7 @@
 #include "MainWindow.h"
 #include "base/Error.h"
 #include "controllers/FilesController.h"
+#include "jobs/JobRunner.h"
 #include "model/ErrorText.h"
 #include "preferences/StudioPreferences.h"
 #include "preferences/Translations.h"
@@ -63,7 +65,8 @@ int main(int argc, char** argv) {
         window.files()->openFile(file);
     if (files.isEmpty()) {
         try {
-            window.addDocument(rigmesh::studio::makeExampleDocument());
+            // Built on the worker thread: the window shows at once.
+            rigmesh::studio::openExample(window);
         } catch (const rigmesh::Error& error) {
             QMessageBox::warning(&window,
                                  QCoreApplication::translate("rigmesh::studio", "RigMesh Studio"),
@@ -73,10 +76,18 @@ int main(int argc, char** argv) {
     }
     window.show();
     if (parser.isSet(screenshot)) {
-        QTimer::singleShot(1500, &window, [&] {
+        // After start-up and the example's build, whichever ends later.
+        auto* poll = new QTimer(&window);
+        QElapsedTimer started;
+        started.start();
+        QObject::connect(poll, &QTimer::timeout, &window, [&, poll, started] {
+            if (started.elapsed() < 1500 || rigmesh::widgets::JobRunner::anyBusy())
+                return;
+            poll->stop();
             window.grab().save(parser.value(screenshot));
             app.quit();
         });
+        poll->start(100);
     } else {
         QTimer::singleShot(0, &window, [&] { window.files()->offerRecovery(); });
     }

@@ -10,9 +10,11 @@
 #include <QMenu>
 #include <QStatusBar>
 #include <QUndoStack>
+#include <QWheelEvent>
 
 #include "StudioFixture.h"
 #include "model/DocumentFile.h"
+#include "viewport/ViewMath.h"
 
 namespace rigmesh {
 namespace {
@@ -42,6 +44,22 @@ class StudioArtist : public test::StudioFixture {
         for (int i = 0; i <= count; ++i)
             points.push_back(from + (to - from) * (static_cast<double>(i) / count));
         return points;
+    }
+    // The joint lowest in y.
+    static JointId lowestJoint(const Skeleton& skeleton) {
+        JointId lower = skeleton.joints().front().id;
+        for (const Joint& joint : skeleton.joints())
+            if (joint.position.y() < skeleton.joint(lower).position.y())
+                lower = joint.id;
+        return lower;
+    }
+    // Drags a part with the Merge tool from `grab` to `release`: the
+    // Snap / Split / Connect menu it opens (null if none).
+    QMenu* mergeMenuAfterDrag(const QPointF& grab, const QPointF& release) {
+        drag(viewport(), line(grab, release));
+        auto* tool = dynamic_cast<widgets::MergeTool*>(viewport()->tool());
+        QMenu* menu = tool ? tool->choices() : nullptr;
+        return menu && menu->activeAction() ? menu : nullptr;
     }
     static double maxX(const Part& part) {
         double x = -1e300;
@@ -95,26 +113,26 @@ TEST_F(StudioArtist, ALimbDroppedOverABlobsEdgeMergesWhereItWasDropped) {
     window->activateTool<widgets::MergeTool>();
     QTest::qWait(50);
     const Skeleton& skeleton = document()->part(limb).part->skeleton;
-    JointId lower = skeleton.joints().front().id;
-    for (const Joint& joint : skeleton.joints())
-        if (joint.position.y() < skeleton.joint(lower).position.y())
-            lower = joint.id;
-    const Vec3 end = skeleton.joint(lower).position;
+    const Vec3 end = skeleton.joint(lowestJoint(skeleton)).position;
     // Dragged down until that end is over the blob's upper edge.
     const Vec3 drop(end.x(), 0.92, 0.0);
     const QPointF grab = onScreen(Vec3(0.5, 2.3, 0.0));
     const QPointF release = grab + (onScreen(drop) - onScreen(end));
     const int steps = document()->undoStack()->count();
-    drag(viewport(), line(grab, release));
-    auto* tool = dynamic_cast<widgets::MergeTool*>(viewport()->tool());
-    ASSERT_NE(tool, nullptr);
-    QMenu* menu = tool->choices();
+    QMenu* menu = mergeMenuAfterDrag(grab, release);
     ASSERT_NE(menu, nullptr) << status().toStdString();
-    ASSERT_NE(menu->activeAction(), nullptr);
     EXPECT_EQ(menu->activeAction()->text(), QStringLiteral("S&plit the bone here"))
         << "no joint of the blob is near the drop: its bone is split there";
     EXPECT_TRUE(status().startsWith(QStringLiteral("Split a bone of blob")))
         << status().toStdString();
+    // While the menu waits, the limb shows in front of the blob (it would
+    // hide inside it), with a copy where the split puts it.
+    const auto inFront = viewport()->tool()->partsInFront(*viewport());
+    ASSERT_EQ(inFront.size(), 1u);
+    EXPECT_EQ(inFront.front().part, limb);
+    EXPECT_TRUE(inFront.front().resultOffset.has_value());
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_merge_drop_menu.png"));
     QTest::keyClick(menu, Qt::Key_Return);
     test::waitForJobs();
     ASSERT_EQ(document()->partCount(), 1) << status().toStdString();
@@ -133,6 +151,77 @@ TEST_F(StudioArtist, ALimbDroppedOverABlobsEdgeMergesWhereItWasDropped) {
     EXPECT_TRUE(limbAbove);
     QTest::qWait(50);
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_merge_at_drop.png"));
+}
+
+// In perspective a bone's far half looks shorter, so where it is split is
+// found in 3D: the point of the bone nearest the line of sight through the
+// dropped joint, not the same fraction of its length as on screen.
+TEST_F(StudioArtist, ASplitInPerspectiveIsWhereTheJointShowsOnTheBone) {
+    const model::PartId blob = addPart(ellipse(Vec2(0.0, 0.0), 2.0, 1.0), QStringLiteral("blob"));
+    const model::PartId limb = addPart(ellipse(Vec2(0.5, 2.3), 0.22, 0.9), QStringLiteral("limb"));
+    viewport()->frameAll();
+    viewport()->orbitBy(50.0, 15.0);  // the blob's bones now run away from the camera
+    ASSERT_FALSE(viewport()->camera().orthographic());
+    window->activateTool<widgets::MergeTool>();
+    QTest::qWait(50);
+    const QSizeF size(viewport()->size());
+    auto screen = [&](const Vec3& p) {
+        const QVector3D s = viewport()->camera().project(widgets::toQt(p), size);
+        return QPointF(s.x(), s.y());
+    };
+    // The blob's longest bone on screen, and a point at a third of it.
+    const Skeleton& blobSkeleton = document()->part(blob).part->skeleton;
+    const Bone* longest = nullptr;
+    for (const Bone& bone : blobSkeleton.bones())
+        if (!longest ||
+            QLineF(screen(blobSkeleton.joint(bone.head).position),
+                   screen(blobSkeleton.joint(bone.tail).position))
+                    .length() > QLineF(screen(blobSkeleton.joint(longest->head).position),
+                                       screen(blobSkeleton.joint(longest->tail).position))
+                                    .length())
+            longest = &bone;
+    ASSERT_NE(longest, nullptr);
+    const Vec3 head = blobSkeleton.joint(longest->head).position;
+    const Vec3 tail = blobSkeleton.joint(longest->tail).position;
+    const Skeleton& limbSkeleton = document()->part(limb).part->skeleton;
+    const JointId lower = lowestJoint(limbSkeleton);
+    const QPointF grab = screen(Vec3(0.5, 2.3, 0.0));
+    const QPointF release =
+        grab + (screen(head + 0.35 * (tail - head)) - screen(limbSkeleton.joint(lower).position));
+    QMenu* menu = mergeMenuAfterDrag(grab, release);
+    ASSERT_NE(menu, nullptr) << status().toStdString();
+    ASSERT_EQ(menu->activeAction()->text(), QStringLiteral("S&plit the bone here"))
+        << status().toStdString();
+    // Where the limb's end was dropped, and the line of sight through it.
+    const Vec3 dropped = widgets::toEigen(viewport()->jointWorldPosition(limb, lower));
+    const Vec3 sight = (dropped - widgets::toEigen(viewport()->camera().eye())).normalized();
+    // The bone's point nearest that line, by sampling the bone finely (the
+    // tool solves for it), and the point at the same fraction as on screen.
+    Vec3 nearest = head;
+    double nearestDistance = 1e300;
+    for (int i = 0; i <= 100000; ++i) {
+        const Vec3 p = head + (i / 100000.0) * (tail - head);
+        const double d = (p - dropped).cross(sight).norm();
+        if (d < nearestDistance) {
+            nearestDistance = d;
+            nearest = p;
+        }
+    }
+    const QPointF h = screen(head), ht = screen(tail) - screen(head);
+    const double onScreen =
+        QPointF::dotProduct(screen(dropped) - h, ht) / QPointF::dotProduct(ht, ht);
+    const Vec3 screenFraction = head + onScreen * (tail - head);
+    EXPECT_GT((screenFraction - nearest).norm(), 0.05) << "the two differ in this view";
+    QTest::keyClick(menu, Qt::Key_Return);
+    test::waitForJobs();
+    ASSERT_EQ(document()->partCount(), 1) << status().toStdString();
+    const model::PartNode& merged = document()->parts().front();
+    double closest = 1e300;
+    for (const Joint& joint : merged.part->skeleton.joints())
+        closest = std::min(closest, (merged.placement.toWorld(joint.position) - nearest).norm());
+    EXPECT_LT(closest, 1e-3) << "a joint where the limb's end showed on the bone";
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_merge_perspective_split.png"));
 }
 
 // Moving a part into another with the Select tool does not join them: it
@@ -228,6 +317,8 @@ TEST_F(StudioArtist, SketchingNeverMovesTheCameraAndTheGridKeepsItsSpacing) {
     const QVector3D target = camera.target();
     const double distance = camera.distance();
     const double spacing = viewport()->gridSpacing();
+    QTest::qWait(50);  // shown: the empty scene's floor is placed
+    const double floor = viewport()->floorHeight();
     window->activateTool<widgets::SketchTool>();
     const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
     drag(viewport(), test::ellipseStroke(centre + QPointF(-150, 0), 90, 60));
@@ -236,14 +327,32 @@ TEST_F(StudioArtist, SketchingNeverMovesTheCameraAndTheGridKeepsItsSpacing) {
     EXPECT_EQ(camera.target(), target);
     EXPECT_EQ(camera.distance(), distance);
     EXPECT_EQ(viewport()->gridSpacing(), spacing);
-    drag(viewport(), test::ellipseStroke(centre + QPointF(200, 40), 30, 120));
+    // A tall part whose lower end reaches below the floor on screen.
+    const QVector3D floorOnScreen = camera.project(
+        QVector3D(camera.target().x(), float(floor), 0.0f), QSizeF(viewport()->size()));
+    const double bottom = std::min<double>(floorOnScreen.y() + 40.0, viewport()->height() - 10.0);
+    drag(viewport(),
+         test::ellipseStroke(QPointF(centre.x() + 200, 0.5 * (bottom + centre.y() - 100)), 30,
+                             0.5 * (bottom - centre.y() + 100)));
     ASSERT_EQ(document()->partCount(), 2) << status().toStdString();
     QTest::qWait(50);
     EXPECT_EQ(camera.target(), target);
     EXPECT_EQ(viewport()->gridSpacing(), spacing);
+    // The second part reaches below the floor: the floor stays where it was.
+    const Eigen::AlignedBox3d second = model::worldBounds(document()->parts()[1]);
+    EXPECT_LT(second.min().y(), floor);
+    EXPECT_EQ(viewport()->floorHeight(), floor);
     viewport()->setFocus(Qt::OtherFocusReason);
     QTest::keyClick(viewport(), Qt::Key_Home);
     EXPECT_NE(camera.distance(), distance) << "Home frames the parts";
+    // Home puts the floor under the parts, and it stays as the view zooms.
+    const double framedFloor = viewport()->floorHeight();
+    EXPECT_LE(framedFloor, second.min().y() + 1e-9);
+    QWheelEvent wheel(QPointF(100, 100), viewport()->mapToGlobal(QPointF(100, 100)), QPoint(),
+                      QPoint(0, 120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(viewport(), &wheel);
+    EXPECT_NE(camera.distance(), distance);
+    EXPECT_EQ(viewport()->floorHeight(), framedFloor);
 }
 
 }  // namespace

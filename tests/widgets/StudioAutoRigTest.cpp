@@ -5,6 +5,9 @@
 #include <QPushButton>
 #include <QStatusBar>
 #include <QTimer>
+#include <cmath>
+#include <limits>
+#include <optional>
 
 #include "StudioFixture.h"
 #include "jobs/BusyBar.h"
@@ -12,6 +15,7 @@
 #include "jobs/JobStatus.h"
 #include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
+#include "rig/MirrorSymmetry.h"
 
 namespace rigmesh {
 namespace {
@@ -57,7 +61,59 @@ class StudioAutoRig : public test::StudioFixture {
         return offered;
     }
     const Part& onlyPart() const { return *document()->parts().front().part; }
+    // A five-pointed star, exactly symmetric about x = 0, as a plain OBJ.
+    QString starObj() {
+        std::vector<Vec2> corners;
+        for (int k = 0; k < 10; ++k) {
+            const double angle = M_PI / 2.0 + k * M_PI / 5.0;
+            const double radius = k % 2 == 0 ? 1.0 : 0.45;
+            corners.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+        }
+        std::vector<Vec2> outline;
+        for (int k = 0; k < 10; ++k)
+            for (int i = 0; i < 8; ++i)
+                outline.push_back(corners[k] + (i / 8.0) * (corners[(k + 1) % 10] - corners[k]));
+        model::Document source;
+        source.undoStack()->push(
+            model::CreatePartCommand::create(source, outline, "star").release());
+        const QString path = recovery.filePath(QStringLiteral("star.obj"));
+        model::exportDocument(source, path.toStdString(), ExportOptions{});
+        return path;
+    }
 };
+
+// Auto-rig finds a symmetric mesh's mirror plane and gives mirrored limbs
+// mirrored bones: every joint of the star's rig has its mirror image among
+// the joints, within 1% of the star's size.
+TEST_F(StudioAutoRig, ASymmetricMeshGetsAMirroredRig) {
+    ASSERT_TRUE(importAnswering(starObj(), QStringLiteral("Rig Now")));
+    test::waitForJobs();
+    ASSERT_EQ(document()->partCount(), 1);
+    const Part& part = onlyPart();
+    ASSERT_GE(part.skeleton.boneCount(), 5) << "a bone for each point at least";
+    const std::optional<PartSymmetry> symmetry = findPartSymmetry(part);
+    ASSERT_TRUE(symmetry.has_value());
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : part.mesh.vertices)
+        box.extend(v);
+    const double size = box.diagonal().norm();
+    for (const Joint& joint : part.skeleton.joints()) {
+        const Vec3 image = symmetry->plane.reflect(joint.position);
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const Joint& other : part.skeleton.joints())
+            nearest = std::min(nearest, (other.position - image).norm());
+        EXPECT_LT(nearest, 0.01 * size) << "joint " << joint.id;
+    }
+    // Each point's limb has as many bones as its mirror image's.
+    for (const auto& [bone, image] : symmetry->bones)
+        EXPECT_EQ(part.skeleton.degree(part.skeleton.bone(bone).tail),
+                  part.skeleton.degree(part.skeleton.bone(image).tail));
+    EXPECT_EQ(symmetry->joints.size(), static_cast<size_t>(part.skeleton.jointCount()))
+        << "every joint has its mirror image";
+    viewport()->frameAll();
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_autorigged_star.png"));
+}
 
 TEST_F(StudioAutoRig, AMeshImportedWithoutARigIsRiggedByRigNowAsOneUndoStep) {
     ASSERT_TRUE(importAnswering(bipedObj(0), QStringLiteral("Rig Now")));

@@ -12,16 +12,21 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QRegularExpression>
 #include <QScrollBar>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QUndoStack>
+#include <QUndoView>
 
+#include "DocumentView.h"
 #include "ExampleDocument.h"
 #include "StudioFixture.h"
+#include "jobs/JobRunner.h"
 #include "merge/MergeParts.h"
 #include "model/Autosave.h"
 #include "model/DocumentFile.h"
+#include "model/commands/RenamePartCommand.h"
 #include "panels/PropertiesPanel.h"
 #include "part/BoneWeights.h"
 #include "preferences/Theme.h"
@@ -29,6 +34,8 @@
 #include "rig/LocalBoneHeat.h"
 #include "timeline/TimelineDock.h"
 #include "timeline/TimelineView.h"
+#include "viewport/ViewMath.h"
+#include "viewport/Viewport.h"
 
 namespace rigmesh {
 namespace {
@@ -63,6 +70,8 @@ TEST_F(StudioSmallThings, ASelfCrossingStrokeIsMarkedNotToldInCoordinates) {
     EXPECT_EQ(document()->partCount(), 0);
     EXPECT_TRUE(status().contains(QStringLiteral("red cross"))) << status().toStdString();
     EXPECT_FALSE(status().contains(QLatin1Char('('))) << status().toStdString();
+    EXPECT_FALSE(status().contains(QRegularExpression(QStringLiteral("[0-9]"))))
+        << status().toStdString();
     ASSERT_TRUE(viewport()->problemMark().has_value());
     // The mark is where the stroke crosses itself: the eight's middle.
     const QVector3D mark =
@@ -209,7 +218,48 @@ TEST_F(StudioSmallThings, AnUndoReplacesTheUndoneStepsMessage) {
     window->showStatus(QStringLiteral("Cut biped in 20 ms"));
     document()->undoStack()->undo();
     EXPECT_TRUE(status().startsWith(QStringLiteral("Undone: "))) << status().toStdString();
-    document()->undoStack()->redo();
+    // Ctrl+Shift+Z, the Edit menu's Redo.
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    ASSERT_EQ(document()->undoStack()->index(), 1);
+    EXPECT_TRUE(status().startsWith(QStringLiteral("Redone: "))) << status().toStdString();
+}
+
+// A new step after an undo takes the place of the undone one: the stack's
+// index and count are as after a redo, but nothing was redone, and the new
+// step's own message stays.
+TEST_F(StudioSmallThings, ANewStepAfterAnUndoIsNotCalledARedo) {
+    const model::PartId biped = addExampleBiped();
+    document()->undoStack()->push(new model::RenamePartCommand(*document(), biped, "first"));
+    document()->undoStack()->undo();
+    ASSERT_EQ(document()->undoStack()->count(), 2);
+    ASSERT_EQ(document()->undoStack()->index(), 1);
+    document()->undoStack()->push(new model::RenamePartCommand(*document(), biped, "second"));
+    ASSERT_EQ(document()->undoStack()->count(), 2);
+    ASSERT_EQ(document()->undoStack()->index(), 2);
+    window->showStatus(QStringLiteral("Renamed"));
+    QCoreApplication::processEvents();
+    EXPECT_EQ(status(), QStringLiteral("Renamed"));
+    // Several steps to redo at once from the History dock: a redo.
+    document()->undoStack()->setIndex(0);
+    EXPECT_TRUE(status().startsWith(QStringLiteral("Undone: "))) << status().toStdString();
+    auto* history = window->findChild<QUndoView*>();
+    ASSERT_NE(history, nullptr);
+    for (auto* dock : window->findChildren<QDockWidget*>())
+        if (dock->objectName() == QStringLiteral("historyDock")) {
+            dock->show();
+            dock->raise();
+        }
+    QTest::qWait(20);
+    // Row 0 is the original state, row 2 the second step.
+    const QRect last = history->visualRect(history->model()->index(2, 0));
+    ASSERT_FALSE(last.isEmpty());
+    QTest::mouseClick(history->viewport(), Qt::LeftButton, {}, last.center());
+    EXPECT_EQ(document()->undoStack()->index(), 2);
+    EXPECT_TRUE(status().startsWith(QStringLiteral("Redone: "))) << status().toStdString();
+    // One step to redo, redone from the History dock.
+    document()->undoStack()->undo();
+    QTest::mouseClick(history->viewport(), Qt::LeftButton, {}, last.center());
+    EXPECT_EQ(document()->undoStack()->index(), 2);
     EXPECT_TRUE(status().startsWith(QStringLiteral("Redone: "))) << status().toStdString();
 }
 
@@ -244,6 +294,38 @@ TEST_F(StudioSmallThings, TheExamplesWeightsAreAFreshSolve) {
     for (double d : weightDifferences(part.weights.perVertex, fresh))
         worst = std::max(worst, d);
     EXPECT_LT(worst, 1e-9);
+}
+
+// The studio's start: the example's build and solve run on the worker
+// thread, so the window is there at once and the part arrives, framed, as
+// a clean document with no history whose weights are a fresh solve.
+TEST_F(StudioSmallThings, TheExampleIsBuiltWithoutBlockingTheWindow) {
+    const int before = static_cast<int>(window->views().size());
+    studio::openExample(*window);
+    ASSERT_EQ(static_cast<int>(window->views().size()), before + 1);
+    model::Document* example = window->currentView()->document();
+    EXPECT_EQ(example->partCount(), 0) << "the part comes from the worker";
+    EXPECT_TRUE(window->jobs()->busy());
+    test::waitForJobs();
+    ASSERT_EQ(example->partCount(), 1) << status().toStdString();
+    EXPECT_FALSE(example->isModified());
+    EXPECT_EQ(example->undoStack()->count(), 0);
+    const Part& part = *example->parts().front().part;
+    EXPECT_TRUE(part.validate().empty());
+    const WeightsById fresh = recomputeWeightsGlobally(part.mesh, part.skeleton);
+    double worst = 0.0;
+    for (double d : weightDifferences(part.weights.perVertex, fresh))
+        worst = std::max(worst, d);
+    EXPECT_LT(worst, 1e-9);
+    // Framed when it arrived: the whole part is in the view.
+    const widgets::Viewport& view = *window->currentView()->viewport();
+    for (int v = 0; v < part.mesh.vertexCount(); v += 97) {
+        const QVector3D s = view.camera().project(
+            widgets::toQt(example->parts().front().placement.toWorld(part.mesh.vertices[v])),
+            QSizeF(view.size()));
+        EXPECT_TRUE(QRectF(QPointF(0, 0), QSizeF(view.size())).contains(QPointF(s.x(), s.y())))
+            << v;
+    }
 }
 
 }  // namespace

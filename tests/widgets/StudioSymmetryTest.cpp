@@ -8,7 +8,9 @@
 #include <QCheckBox>
 #include <QStatusBar>
 #include <QUndoStack>
+#include <iostream>
 
+#include "MirrorPaintSymmetry.h"
 #include "PartWeightOf.h"
 #include "StudioPoseFixture.h"
 #include "model/DocumentFile.h"
@@ -91,7 +93,14 @@ TEST_F(StudioSymmetry, SubtractOnAOneBoneRegionMovesTheWeightToTheParentBone) {
 // X-mirror is left and right: a stroke on the right forearm with X-mirror
 // on paints the left forearm's bone on the left as much, and undoes exactly.
 TEST_F(StudioSymmetry, XMirrorPaintsTheOtherArmsBoneOnTheOtherSide) {
-    const model::PartId biped = addExampleBiped();
+    // The example biped made exactly symmetric.
+    addExampleBiped();
+    const std::vector<Vec2> outline = testsupport::symmetricOutline(part().outline);
+    document()->undoStack()->undo();
+    document()->undoStack()->push(
+        model::CreatePartCommand::create(*document(), outline, "biped").release());
+    const model::PartId biped = document()->parts().front().id;
+    viewport()->frameAll();
     const JointId hand = handOn(1.0);
     const BoneId bone = *boneForJoint(part().skeleton, hand);
     const std::optional<PartSymmetry> symmetry = findPartSymmetry(part());
@@ -100,7 +109,12 @@ TEST_F(StudioSymmetry, XMirrorPaintsTheOtherArmsBoneOnTheOtherSide) {
     ASSERT_NE(image, bone) << "the left hand's bone mirrors the right's";
     document()->setSelection({biped, hand});
     window->activateTool<widgets::PaintTool>();
-    paintTool()->mode = BrushMode::Subtract;
+    // Replace with a constant brush at full strength: every vertex it
+    // reaches gets the weight 0.25, whatever it had.
+    paintTool()->mode = BrushMode::Replace;
+    paintTool()->falloff = BrushFalloff::Constant;
+    paintTool()->strength = 1.0;
+    paintTool()->value = 0.25;
     window->findChild<QCheckBox*>(QStringLiteral("paintMirror"))->setChecked(true);
     QTest::qWait(20);
     const Part before = part();
@@ -108,15 +122,23 @@ TEST_F(StudioSymmetry, XMirrorPaintsTheOtherArmsBoneOnTheOtherSide) {
     const Vec3 tip = part().skeleton.joint(hand).position;
     drag(viewport(), strokeAlong(tip, tip.x() - 0.1, tip.x() - 0.6));
     ASSERT_TRUE(part().validate().empty()) << status().toStdString();
-    double right = 0.0, left = 0.0;
-    for (int v = 0; v < part().mesh.vertexCount(); ++v) {
-        const double x = part().mesh.vertices[v].x();
-        const double gone = weightOf(before, v, x > 0.0 ? bone : image) -
-                            weightOf(part(), v, x > 0.0 ? bone : image);
-        (x > 0.0 ? right : left) += gone;
-    }
-    EXPECT_GT(right, 1.0);
-    EXPECT_NEAR(left / right, 1.0, 0.25) << "as much on the left as on the right";
+    double right = 0.0;
+    for (int v = 0; v < part().mesh.vertexCount(); ++v)
+        right += weightOf(before, v, bone) - weightOf(part(), v, bone);
+    EXPECT_GT(right, 1.0) << "the stroke painted the right hand";
+    // Each vertex the stroke changed on the right has the hand bone's
+    // weight that the vertex mirroring it on the left has of its image.
+    const double edge = testsupport::meanEdgeLength(part().mesh);
+    const testsupport::MirrorMismatch mismatch =
+        testsupport::mirrorMismatch(before, part(), bone, image, symmetry->plane, 0.05 * edge);
+    std::cout << "mirror mismatch over " << mismatch.compared << " vertices: " << mismatch.unequal
+              << " unequal, largest " << mismatch.largest << std::endl;
+    EXPECT_GT(mismatch.compared, 10);
+    // Equal to 1e-9 but for a few pairs where one side was reached and the
+    // other not (the two sides' samplings differ by up to 5% of an edge
+    // there, and a constant brush's edge or the front-faces test falls
+    // between them): 2 of 15 and 2 of 36 when measured.
+    EXPECT_LE(5 * mismatch.unequal, mismatch.compared);
     QTest::qWait(50);
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_mirror_paint.png"));
     document()->undoStack()->undo();

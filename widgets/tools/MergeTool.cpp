@@ -31,6 +31,22 @@ bool rigged(const model::PartNode& node) {
     return node.part && node.part->skeleton.boneCount() > 0;
 }
 
+// The parameter (0..1) of the point of `bone` nearest the line through
+// `point` along `direction`: the closest points of two lines, the bone's
+// clamped to its ends. A bone along the line (all its points equally near)
+// answers `along`.
+double boneParameterNearestLine(const BoneSegment& bone, const Vec3& point, const Vec3& direction,
+                                double along) {
+    const Vec3 axis = bone.tail - bone.head;
+    const Vec3 d = direction.normalized();
+    const Vec3 w = bone.head - point;
+    const double a = axis.squaredNorm(), b = axis.dot(d);
+    const double denominator = a - b * b;  // |axis|^2 |d|^2 - (axis.d)^2, |d| = 1
+    if (!(denominator > 1e-12 * a))
+        return along;
+    return std::clamp((b * d.dot(w) - axis.dot(w)) / denominator, 0.0, 1.0);
+}
+
 void addCross(ColouredVertices& lines, const Vec3& at, double size, const QVector3D& colour) {
     for (int axis = 0; axis < 3; ++axis) {
         const Vec3 d = Vec3::Unit(axis) * size;
@@ -114,18 +130,28 @@ std::optional<MergeTool::Candidate> MergeTool::findCandidate(const Viewport& vie
         for (const Joint& from : dragged.part->skeleton.joints()) {
             const Vec3 a = dragged.placement.toWorld(from.position);
             const QPointF at = screen(a);
+            // The line of sight through the dragged joint: every point on it
+            // shows where the joint is on screen.
+            const Vec3 sight = viewport.camera().orthographic()
+                                   ? toEigen(viewport.camera().forward())
+                                   : Vec3(a - toEigen(viewport.camera().eye()));
             for (const Bone& bone : target.bones()) {
                 const Vec3 head = node.placement.toWorld(target.joint(bone.head).position);
                 const Vec3 tail = node.placement.toWorld(target.joint(bone.tail).position);
+                // The bone nearest on screen is the one dropped on.
                 const QPointF h = screen(head), t = screen(tail);
                 const QPointF ht = t - h;
                 const double length2 = QPointF::dotProduct(ht, ht);
-                const double u =
+                const double onScreen =
                     length2 > 0.0 ? std::clamp(QPointF::dotProduct(at - h, ht) / length2, 0.0, 1.0)
                                   : 0.0;
-                const double d = QLineF(at, h + u * ht).length();
+                const double d = QLineF(at, h + onScreen * ht).length();
                 if (best && d >= bestDistance)
                     continue;
+                // Where it is split: its point nearest the line of sight, in
+                // 3D (a parameter on screen is not one on the bone in
+                // perspective: the far half of a bone looks shorter).
+                const double u = boneParameterNearestLine({head, tail}, a, sight, onScreen);
                 bestDistance = d;
                 best = Candidate{};
                 best->target = id;

@@ -218,6 +218,12 @@ void Viewport::paintGL() {
         if (document_->partCount() > 0)
             frameAll();
     }
+    if (!floorHeight_) {
+        // An empty scene: a floor in the lower part of the view, seen from
+        // slightly above (not edge-on through the centre), while the sketch
+        // plane stays the front plane through the centre.
+        floorHeight_ = camera_.target().y() - 0.22 * camera_.distance();
+    }
     renderer_->render(
         gatherScene(), camera_,
         QSize(int(width() * devicePixelRatioF()), int(height() * devicePixelRatioF())));
@@ -263,8 +269,16 @@ double Viewport::gridSpacing() const {
                     std::floor(std::log10(std::max(camera_.halfHeightAtTarget(), 1e-30) / 2.0)));
 }
 
+double Viewport::floorHeight() const {
+    return floorHeight_.value_or(camera_.target().y() - 0.22 * camera_.distance());
+}
+
 void Viewport::frameAll() {
-    frameBox(sceneBox(false));
+    const Eigen::AlignedBox3d box = sceneBox(false);
+    frameBox(box);
+    // The floor goes under the parts framed, and stays there.
+    if (!box.isEmpty())
+        floorHeight_ = box.min().y();
 }
 
 void Viewport::frameSelected() {
@@ -282,7 +296,6 @@ RenderScene Viewport::gatherScene() const {
     scene.dualQuaternionSkinning = dualQuaternion_;
     scene.showGrid = gridVisible_;
     scene.weightView = weightView_;
-    const auto box = sceneBox(false);
     // The grid's spacing follows the zoom alone; its lines reach well past
     // the view.
     scene.gridSpacing = static_cast<float>(gridSpacing());
@@ -294,13 +307,10 @@ RenderScene Viewport::gatherScene() const {
         // An orthographic side view sees the floor edge-on: its grid is
         // the view's own plane through the target, as in Blender.
         scene.gridNormal = axis == AxisView::Front || axis == AxisView::Back ? 2 : 0;
-    } else if (box.isEmpty()) {
-        // An empty scene: a floor in the lower part of the view, seen from
-        // slightly above (not edge-on through the centre), while the sketch
-        // plane stays the front plane through the centre.
-        scene.gridCentre.setY(static_cast<float>(-0.22 * camera_.distance()));
     } else {
-        scene.gridCentre.setY(static_cast<float>(box.min().y()));
+        // The floor keeps its height as parts come (a lower part does not
+        // pull it down) and as the view zooms.
+        scene.gridCentre.setY(static_cast<float>(floorHeight()));
     }
     const auto selection = document_->selection();
     const std::vector<ViewportTool::PartInFront> inFront =

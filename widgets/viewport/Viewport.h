@@ -132,6 +132,10 @@ class Viewport : public QOpenGLWidget {
     // The ground grid's line spacing: a power of ten set by the camera's
     // distance alone, so new parts never change it.
     double gridSpacing() const;
+    // The floor grid's height (world y): set when the view is framed (first
+    // shown, Home) and kept as parts come, go and move and as the view
+    // zooms, as Blender's floor stays put.
+    double floorHeight() const;
 
   public slots:
     void frameAll();
@@ -182,6 +186,7 @@ class Viewport : public QOpenGLWidget {
     WeightView weightView_ = WeightView::Off;
     GlobalDifferences* globalDifferences_ = nullptr;
     bool framedOnce_ = false;
+    std::optional<double> floorHeight_;
     bool autoOrthographic_ = false;
     struct PosedCacheEntry {
         const Part* part = nullptr;

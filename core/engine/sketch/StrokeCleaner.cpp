@@ -10,6 +10,7 @@
 #include "sketch/PolygonGeometry.h"
 #include "sketch/SegmentCrossings.h"
 #include "sketch/StrokeClosing.h"
+#include "sketch/StrokeCrossingError.h"
 
 namespace rigmesh {
 
@@ -260,8 +261,8 @@ CleanPolygon cleanStroke(const std::vector<Vec2>& raw, const StrokeCleanOptions&
         sampling = sampleOutline(stroke, sampleCount(length, finer), options);
     }
     if (sampling.crossing) {
-        throw Error(MessageId::StrokeCrossesItselfNear,
-                    formatPoint(unit.fromUnit(*sampling.crossing), 1e-9 * unit.scale));
+        const Vec2 crossing = unit.fromUnit(*sampling.crossing);
+        throw StrokeCrossingError(crossing, formatPoint(crossing, 1e-9 * unit.scale));
     }
     const Polyline2& polygon = sampling.polygon;
     if (std::abs(signedArea(polygon)) < kMinRelativeArea * closedDiagonal * closedDiagonal) {
