@@ -33,3 +33,15 @@ def import_file(path):
     else:
         bpy.ops.wm.collada_import(filepath=path)
     return extension
+
+
+def world_vertices():
+    """Every mesh's vertices as the scene deforms them now, in Blender's world."""
+    import bpy
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    points = []
+    for obj in bpy.context.scene.objects:
+        if obj.type == "MESH":
+            evaluated = obj.evaluated_get(depsgraph)
+            points += [evaluated.matrix_world @ v.co for v in evaluated.data.vertices]
+    return points

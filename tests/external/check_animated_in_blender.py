@@ -25,16 +25,6 @@ from mathutils.kdtree import KDTree  # noqa: E402
 TOLERANCE = 0.01
 
 
-def world_vertices():
-    depsgraph = bpy.context.evaluated_depsgraph_get()
-    points = []
-    for obj in bpy.context.scene.objects:
-        if obj.type == "MESH":
-            evaluated = obj.evaluated_get(depsgraph)
-            points += [evaluated.matrix_world @ v.co for v in evaluated.data.vertices]
-    return points
-
-
 def main(arguments):
     if len(arguments) != 2:
         print(__doc__)
@@ -70,7 +60,7 @@ def main(arguments):
     hi = Vector([max(p[k] for p in rest) for k in range(3)])
     size = (hi - lo).length
     armature.data.pose_position = "REST"
-    theirs_rest = world_vertices()
+    theirs_rest = blender_files.world_vertices()
     armature.data.pose_position = "POSE"
     tree = KDTree(len(rest))
     for index, p in enumerate(rest):
@@ -95,7 +85,7 @@ def main(arguments):
     for time, posed in ours["posed"].items():
         frame = 24.0 * float(time)
         bpy.context.scene.frame_set(int(math.floor(frame)), subframe=frame - math.floor(frame))
-        seen = world_vertices()
+        seen = blender_files.world_vertices()
         worst = max((seen[v] - blender_files.to_blender(posed[index])).length
                     for v, (_, index, _) in enumerate(matched))
         check(f"posed at {float(time):.4g} s (frame {frame:.3g})", worst <= TOLERANCE * size,

@@ -1,7 +1,8 @@
 """Compares where the studio puts an imported body's vertices as its clip
 plays (posed_vertices) with where Blender put them in the scene it was
 exported from (make_rigify_rigs.py), at the same frames: linear blend
-skinning on both sides, every vertex within 1% of the body's size.
+skinning on both sides, every vertex within 1% of the body's size, and
+Blender's pose moving some vertex farther than that.
 
 usage: python3 compare_posed.py POSED_JSON RIG_JSON
 POSED_JSON holds times "+S" (S seconds after the clip's first key, Blender
@@ -63,6 +64,8 @@ def main(arguments):
           f"size, {unmatched} unmatched")
     if unmatched or worst_rest > 1e-4 * size:
         failures += 1
+    # The comparison says something only if Blender's pose moved the body.
+    moved = 0.0
     for frame in rig["checked_frames"]:
         time = "+%g" % ((frame - rig["frames"][0]) / rig["fps"])
         posed = ours["posed"].get(time)
@@ -71,6 +74,8 @@ def main(arguments):
             failures += 1
             continue
         expected = rig["posed"][str(frame)]
+        moved = max([moved] + [sum((p[k] - q[k]) ** 2 for k in range(3)) ** 0.5
+                               for p, q in zip(theirs_rest, expected)])
         worst = 0.0
         for v, (index, _) in enumerate(matched):
             if index is None:
@@ -81,6 +86,10 @@ def main(arguments):
         failures += 0 if ok else 1
         print(f"  [{'PASS' if ok else 'FAIL'}] frame {frame}: largest distance "
               f"{worst / size:.3g} of the size")
+    ok = moved > TOLERANCE * size
+    failures += 0 if ok else 1
+    print(f"  [{'PASS' if ok else 'FAIL'}] Blender's pose moves a vertex {moved / size:.3g} of "
+          f"the size (more than the tolerance)")
     return 1 if failures else 0
 
 

@@ -41,15 +41,6 @@ class Preferences : public StudioFixture {
         widgets::applyTheme(Theme::Light);
     }
 
-    QAction* menuAction(const QString& menu, const QString& text) const {
-        for (QAction* top : window->menuBar()->actions())
-            if (top->text() == menu)
-                for (QAction* action : top->menu()->actions())
-                    if (action->text() == text)
-                        return action;
-        return nullptr;
-    }
-
     // Edit > Preferences as a person uses it: the dialog opens, `choose`
     // sets its controls, OK closes it.
     void setInDialog(const std::function<void(PreferencesDialog&)>& choose) {

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <QAction>
+#include <QMenu>
+#include <QMenuBar>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <memory>
@@ -53,6 +56,17 @@ class StudioFixture : public testing::Test {
         const QVector3D s = viewport()->camera().project(
             QVector3D(float(p.x()), float(p.y()), float(p.z())), QSizeF(viewport()->size()));
         return {s.x(), s.y()};
+    }
+
+    // The menu bar's action `text` of the menu `menu` (as written, with its
+    // '&'), or null.
+    QAction* menuAction(const QString& menu, const QString& text) const {
+        for (QAction* top : window->menuBar()->actions())
+            if (top->text() == menu && top->menu())
+                for (QAction* action : top->menu()->actions())
+                    if (action->text() == text)
+                        return action;
+        return nullptr;
     }
 
     QTemporaryDir recovery;

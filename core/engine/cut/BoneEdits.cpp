@@ -55,7 +55,10 @@ BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& we
                             local.transition.end());
     std::sort(result.reskinned.begin(), result.reskinned.end());
     result.bonesInvolved = static_cast<int>(local.bones.size());
-    const std::vector<std::string> problems = result.part.validateSolid();
+    // A bone edit changes no face: an imported surface (Part::surfaceFromFile,
+    // possibly open) stays as it came, and only what validate() asks holds.
+    const std::vector<std::string> problems =
+        part.surfaceFromFile ? result.part.validate() : result.part.validateSolid();
     if (!problems.empty())
         throw Error(MessageId::BoneEditInvalidResult, problems.front());
     result.milliseconds = millisecondsSince(start);

@@ -60,15 +60,20 @@ BoneEditCommand::BoneEditCommand(Document& document, PartId part, BoneId bone, K
     if (at)
         at_ = *at;
     after_ = editedNode(before_, std::make_shared<const Part>(result_.part));
+    // An imported bone by the name its file gave it ("thigh.L"), others by id.
+    const auto named = before_.part->boneNames.find(bone);
+    const QString label = named != before_.part->boneNames.end()
+                              ? QString::fromStdString(named->second)
+                              : QString::number(bone);
     switch (kind_) {
         case Kind::Split:
-            setText(tr("Split Bone %1 of %2").arg(bone).arg(before_.name));
+            setText(tr("Split Bone %1 of %2").arg(label, before_.name));
             break;
         case Kind::Delete:
-            setText(tr("Delete Bone %1 of %2").arg(bone).arg(before_.name));
+            setText(tr("Delete Bone %1 of %2").arg(label, before_.name));
             break;
         case Kind::Connect:
-            setText(tr("Connect Bone %1 of %2").arg(bone).arg(before_.name));
+            setText(tr("Connect Bone %1 of %2").arg(label, before_.name));
             break;
     }
 }
