@@ -1272,6 +1272,14 @@
         <source>documents</source>
         <translation>Dokumente</translation>
     </message>
+    <message>
+        <source>Building the example</source>
+        <translation>Das Beispiel wird erstellt</translation>
+    </message>
+    <message>
+        <source>The example was not built: %1</source>
+        <translation>Das Beispiel wurde nicht erstellt: %1</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::BusyBar</name>

@@ -1272,6 +1272,14 @@
         <source>documents</source>
         <translation>documentos</translation>
     </message>
+    <message>
+        <source>Building the example</source>
+        <translation>Creando el ejemplo</translation>
+    </message>
+    <message>
+        <source>The example was not built: %1</source>
+        <translation>No se ha creado el ejemplo: %1</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::BusyBar</name>
