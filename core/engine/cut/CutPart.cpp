@@ -15,7 +15,7 @@
 #include "geometry/ConstrainedTriangulation.h"
 #include "mesh/Fairing.h"
 #include "mesh/MeshAdjacency.h"
-#include "mesh/MeshChecks.h"
+#include "mesh/MeshVolume.h"
 #include "part/BoneAnnotations.h"
 #include "part/BoneConnection.h"
 #include "part/BoneWeights.h"
@@ -76,10 +76,20 @@ std::vector<int> fillHole(TriMesh& mesh, const std::vector<int>& loop, const Cut
 // side.
 std::map<JointId, int> jointPieces(const Skeleton& skeleton, const std::array<TriMesh, 2>& meshes,
                                    const CutSurface& surface) {
+    // Each piece's winding numbers on its own thread (a sum over every face
+    // per joint: about a seventh of a cut, measured with perf).
+    const std::vector<Joint>& joints = skeleton.joints();
+    std::array<std::vector<double>, 2> winding;
+    parallelFor(2, 2, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k)
+            for (const Joint& joint : joints)
+                winding[k].push_back(windingNumber(meshes[k], joint.position));
+    });
     std::map<JointId, int> pieceOf;
-    for (const Joint& joint : skeleton.joints()) {
-        const double w0 = windingNumber(meshes[0], joint.position);
-        const double w1 = windingNumber(meshes[1], joint.position);
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+        const Joint& joint = joints[j];
+        const double w0 = winding[0][j];
+        const double w1 = winding[1][j];
         if ((w0 >= 0.5) == (w1 >= 0.5))
             pieceOf[joint.id] = surface.side(joint.position) < 0.0 ? 0 : 1;
         else
@@ -339,7 +349,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
             const std::vector<std::string> problems = out.validateSolid();
             if (!problems.empty())
                 throw Error(MessageId::CutInvalidPiece, problems.front());
-            result.volumes[k] = analyseMesh(out.mesh, false).volume;
+            result.volumes[k] = signedVolume(out.mesh);
         }
     });
     result.milliseconds = millisecondsSince(start);

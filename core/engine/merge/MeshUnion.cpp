@@ -7,7 +7,7 @@
 
 #include <algorithm>
 #include <cstring>
-#include <deque>
+#include <numeric>
 #include <tuple>
 #include <unordered_map>
 
@@ -22,94 +22,101 @@ using namespace cgal;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace params = CGAL::parameters;
 
-// Faces with a corner within `rings` edges of a constrained (loop) edge.
-std::vector<FaceIndex> facesNearLoop(const SurfaceMesh& mesh,
-                                     const SurfaceMesh::Property_map<EdgeIndex, bool>& onLoop,
-                                     int rings) {
-    std::vector<int> depth(mesh.number_of_vertices(), -1);
-    std::deque<VertexIndex> queue;
-    for (EdgeIndex e : mesh.edges())
-        if (onLoop[e])
-            for (int end = 0; end < 2; ++end) {
-                const VertexIndex v = mesh.vertex(e, end);
-                if (depth[v.idx()] < 0) {
-                    depth[v.idx()] = 0;
-                    queue.push_back(v);
-                }
-            }
-    while (!queue.empty()) {
-        const VertexIndex v = queue.front();
-        queue.pop_front();
-        if (depth[v.idx()] >= rings)
-            continue;
-        for (VertexIndex w : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
-            if (depth[w.idx()] < 0) {
-                depth[w.idx()] = depth[v.idx()] + 1;
-                queue.push_back(w);
-            }
-    }
-    std::vector<FaceIndex> faces;
-    for (FaceIndex f : mesh.faces())
-        for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-            if (depth[v.idx()] >= 0) {
-                faces.push_back(f);
-                break;
-            }
-    return faces;
+// Each vertex's distance in edges from the loop, up to `rings` (-1 beyond):
+// breadth first, one ring per sweep over the faces.
+std::vector<int> ringsFromLoop(const TriMesh& mesh, const std::vector<std::array<int, 2>>& loop,
+                               int rings) {
+    std::vector<int> depth(mesh.vertices.size(), -1);
+    for (const auto& [p, q] : loop)
+        depth[p] = depth[q] = 0;
+    for (int ring = 1; ring <= rings; ++ring)
+        for (const auto& face : mesh.faces) {
+            const bool touches = depth[face[0]] == ring - 1 || depth[face[1]] == ring - 1 ||
+                                 depth[face[2]] == ring - 1;
+            if (touches)
+                for (int v : face)
+                    if (depth[v] < 0)
+                        depth[v] = ring;
+        }
+    return depth;
+}
+
+bool hasCornerWithin(const std::array<int, 3>& face, const std::vector<int>& depth, int rings) {
+    return std::any_of(face.begin(), face.end(),
+                       [&](int v) { return depth[v] >= 0 && depth[v] <= rings; });
 }
 
 // The mesh in an order that depends only on its geometry and sources, not
 // on CGAL's internal order (its box intersection sorts by address): input
 // vertices by (mesh, index), new ones by position; faces by their corners,
 // each starting at its smallest. Recipe replays and undo then give the same
-// bytes.
-template <typename SourceOf>
-MeshUnionResult canonicalResult(const SurfaceMesh& mesh,
-                                const SurfaceMesh::Property_map<EdgeIndex, bool>& loopEdges,
-                                SourceOf&& sourceOf) {
-    struct Entry {
-        VertexIndex vertex;
-        Vec3 position;
-        VertexSource source;
+// bytes. Faces and loop edges index `positions`.
+MeshUnionResult canonicalOrder(const std::vector<Vec3>& positions, const VertexSources& sources,
+                               const std::vector<std::array<int, 3>>& faces,
+                               const std::vector<std::array<int, 2>>& loop) {
+    auto rank = [&](int v) {
+        const VertexSource& source = sources[v];
+        const Vec3& p = positions[v];
+        const bool copy = source.kind == VertexSource::Kind::Vertex;
+        return std::make_tuple(copy ? 0 : 1, copy ? source.mesh : 0, copy ? source.index : 0, p.x(),
+                               p.y(), p.z());
     };
-    std::vector<Entry> entries;
-    for (VertexIndex v : mesh.vertices()) {
-        const Vec3 p = toVec(mesh.point(v));
-        entries.push_back({v, p, sourceOf(p)});
-    }
-    auto rank = [](const Entry& e) {
-        const bool copy = e.source.kind == VertexSource::Kind::Vertex;
-        return std::make_tuple(copy ? 0 : 1, copy ? e.source.mesh : 0, copy ? e.source.index : 0,
-                               e.position.x(), e.position.y(), e.position.z());
-    };
-    std::sort(entries.begin(), entries.end(),
-              [&](const Entry& a, const Entry& b) { return rank(a) < rank(b); });
-    std::vector<int> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), -1);
+    std::vector<int> order(positions.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return rank(a) < rank(b); });
+    std::vector<int> index(positions.size(), -1);
     MeshUnionResult result;
-    for (const Entry& e : entries) {
-        index[e.vertex.idx()] = result.mesh.vertexCount();
-        result.mesh.vertices.push_back(e.position);
-        result.sources.push_back(e.source);
+    result.mesh.vertices.reserve(positions.size());
+    result.sources.reserve(positions.size());
+    for (int v : order) {
+        index[v] = result.mesh.vertexCount();
+        result.mesh.vertices.push_back(positions[v]);
+        result.sources.push_back(sources[v]);
     }
-    for (FaceIndex f : mesh.faces()) {
-        std::array<int, 3> face{};
-        int corner = 0;
-        for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-            face[corner++] = index[v.idx()];
+    result.mesh.faces.reserve(faces.size());
+    for (const auto& corners : faces) {
+        std::array<int, 3> face{index[corners[0]], index[corners[1]], index[corners[2]]};
         std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
         result.mesh.faces.push_back(face);
     }
     std::sort(result.mesh.faces.begin(), result.mesh.faces.end());
     result.onLoop.assign(result.mesh.vertices.size(), 0);
-    for (EdgeIndex e : mesh.edges())
-        if (loopEdges[e]) {
-            const int p = index[mesh.vertex(e, 0).idx()];
-            const int q = index[mesh.vertex(e, 1).idx()];
-            result.loop.push_back({std::min(p, q), std::max(p, q)});
-            result.onLoop[p] = result.onLoop[q] = 1;
-        }
+    for (const auto& [a, b] : loop) {
+        const int p = index[a], q = index[b];
+        result.loop.push_back({std::min(p, q), std::max(p, q)});
+        result.onLoop[p] = result.onLoop[q] = 1;
+    }
     std::sort(result.loop.begin(), result.loop.end());
     return result;
+}
+
+// canonicalOrder of a CGAL mesh whose vertices' sources `sourceOf` tells by
+// position.
+template <typename SourceOf>
+MeshUnionResult canonicalResult(const SurfaceMesh& mesh,
+                                const SurfaceMesh::Property_map<EdgeIndex, bool>& loopEdges,
+                                SourceOf&& sourceOf) {
+    std::vector<int> compact(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), -1);
+    std::vector<Vec3> positions;
+    VertexSources sources;
+    for (VertexIndex v : mesh.vertices()) {
+        compact[v.idx()] = static_cast<int>(positions.size());
+        positions.push_back(toVec(mesh.point(v)));
+        sources.push_back(sourceOf(positions.back()));
+    }
+    std::vector<std::array<int, 3>> faces;
+    for (FaceIndex f : mesh.faces()) {
+        std::array<int, 3> face{};
+        int corner = 0;
+        for (VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+            face[corner++] = compact[v.idx()];
+        faces.push_back(face);
+    }
+    std::vector<std::array<int, 2>> loop;
+    for (EdgeIndex e : mesh.edges())
+        if (loopEdges[e])
+            loop.push_back({compact[mesh.vertex(e, 0).idx()], compact[mesh.vertex(e, 1).idx()]});
+    return canonicalOrder(positions, sources, faces, loop);
 }
 
 }  // namespace
@@ -157,32 +164,108 @@ MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double 
 
     // Remesh the cut faces (paper 3.2.1 glues the meshes by splitting edges;
     // we also even them out) with the loop as a constraint, on the canonical
-    // mesh so the result does not depend on CGAL's internal order.
+    // mesh so the result does not depend on CGAL's internal order. CGAL is
+    // given only the faces within four rings of the loop, in the canonical
+    // order: the band (two rings) plus every face around each band vertex
+    // and one ring more, so each step of the remeshing (valences, collapse
+    // links, normals, the order of equal-length edges) reads what it reads
+    // in the whole mesh, and the result is the same; its tangential
+    // relaxation computes the normal of every vertex of the mesh it is given
+    // (CGAL 5.5), which on the whole part was most of the remeshing.
+    constexpr int kBandRings = 2;
+    constexpr int kSubmeshRings = kBandRings + 2;
+    const TriMesh& whole = result.mesh;
+    const std::vector<int> depth = ringsFromLoop(whole, result.loop, kSubmeshRings);
+    std::vector<char> inSubmesh(whole.faces.size(), 0);
+    std::vector<int> subVertex(whole.vertices.size(), -1);
+    for (std::size_t f = 0; f < whole.faces.size(); ++f)
+        if (hasCornerWithin(whole.faces[f], depth, kSubmeshRings)) {
+            inSubmesh[f] = 1;
+            for (int v : whole.faces[f])
+                subVertex[v] = 0;
+        }
     SurfaceMesh seam;
-    for (const Vec3& v : result.mesh.vertices)
-        seam.add_vertex(Point(v.x(), v.y(), v.z()));
-    for (const auto& [a0, b0, c0] : result.mesh.faces)
-        seam.add_face(VertexIndex(a0), VertexIndex(b0), VertexIndex(c0));
+    std::vector<int> wholeVertex;  // per submesh vertex
+    for (int v = 0; v < whole.vertexCount(); ++v)
+        if (subVertex[v] == 0) {
+            subVertex[v] = static_cast<int>(wholeVertex.size());
+            wholeVertex.push_back(v);
+            const Vec3& p = whole.vertices[v];
+            seam.add_vertex(Point(p.x(), p.y(), p.z()));
+        }
+    std::vector<FaceIndex> band;
+    for (std::size_t f = 0; f < whole.faces.size(); ++f) {
+        if (!inSubmesh[f])
+            continue;
+        const auto& [a0, b0, c0] = whole.faces[f];
+        const FaceIndex face = seam.add_face(VertexIndex(subVertex[a0]), VertexIndex(subVertex[b0]),
+                                             VertexIndex(subVertex[c0]));
+        if (face == SurfaceMesh::null_face())
+            throw Error(MessageId::MergeNotManifold);
+        if (hasCornerWithin(whole.faces[f], depth, kBandRings))
+            band.push_back(face);
+    }
     auto seamLoop = seam.add_property_map<EdgeIndex, bool>("e:loop", false).first;
     for (const auto& [p0, q0] : result.loop)
-        seamLoop[seam.edge(seam.halfedge(VertexIndex(p0), VertexIndex(q0)))] = true;
-    const std::vector<FaceIndex> band = facesNearLoop(seam, seamLoop, 2);
+        seamLoop[seam.edge(seam.halfedge(VertexIndex(subVertex[p0]), VertexIndex(subVertex[q0])))] =
+            true;
     PMP::isotropic_remeshing(
         band, seamEdgeLength, seam,
         params::number_of_iterations(3).edge_is_constrained_map(seamLoop).protect_constraints(
             false));
-    seam.collect_garbage();
+
+    // The whole mesh again: the faces outside the submesh and their vertices
+    // as they were, the submesh's as remeshed.
     std::unordered_map<PointKey, VertexSource, PointKeyHash> unionVertices;
-    for (int v = 0; v < result.mesh.vertexCount(); ++v)
-        unionVertices[keyOf(result.mesh.vertices[v])] = result.sources[v];
+    for (int v : wholeVertex)
+        unionVertices[keyOf(whole.vertices[v])] = result.sources[v];
+    std::vector<Vec3> positions;
+    VertexSources sources;
+    std::vector<int> outsideIndex(whole.vertices.size(), -1);
+    for (int v = 0; v < whole.vertexCount(); ++v)
+        if (subVertex[v] < 0) {
+            outsideIndex[v] = static_cast<int>(positions.size());
+            positions.push_back(whole.vertices[v]);
+            sources.push_back(result.sources[v]);
+        }
+    std::vector<int> seamIndex(seam.number_of_vertices() + seam.number_of_removed_vertices(), -1);
     int remeshed = 0;
-    MeshUnionResult remeshedResult = canonicalResult(seam, seamLoop, [&](const Vec3& p) {
-        auto found = unionVertices.find(keyOf(p));
-        if (found != unionVertices.end())
-            return found->second;
-        ++remeshed;
-        return sourceTriangles.sourceOf(p);
-    });
+    for (VertexIndex v : seam.vertices()) {
+        seamIndex[v.idx()] = static_cast<int>(positions.size());
+        positions.push_back(toVec(seam.point(v)));
+        auto found = unionVertices.find(keyOf(positions.back()));
+        if (found != unionVertices.end()) {
+            sources.push_back(found->second);
+        } else {
+            ++remeshed;
+            sources.push_back(sourceTriangles.sourceOf(positions.back()));
+        }
+    }
+    std::vector<std::array<int, 3>> faces;
+    faces.reserve(whole.faces.size() + seam.number_of_faces());
+    // A face outside may share a corner with the submesh's border, which the
+    // remeshing neither moves nor removes (it lies outside the band).
+    auto outputIndex = [&](int v) {
+        return subVertex[v] >= 0 ? seamIndex[subVertex[v]] : outsideIndex[v];
+    };
+    for (std::size_t f = 0; f < whole.faces.size(); ++f)
+        if (!inSubmesh[f]) {
+            const auto& [a0, b0, c0] = whole.faces[f];
+            faces.push_back({outputIndex(a0), outputIndex(b0), outputIndex(c0)});
+        }
+    for (FaceIndex f : seam.faces()) {
+        std::array<int, 3> face{};
+        int corner = 0;
+        for (VertexIndex v : CGAL::vertices_around_face(seam.halfedge(f), seam))
+            face[corner++] = seamIndex[v.idx()];
+        faces.push_back(face);
+    }
+    std::vector<std::array<int, 2>> loop;
+    for (EdgeIndex e : seam.edges())
+        if (seamLoop[e])
+            loop.push_back(
+                {seamIndex[seam.vertex(e, 0).idx()], seamIndex[seam.vertex(e, 1).idx()]});
+    MeshUnionResult remeshedResult = canonicalOrder(positions, sources, faces, loop);
     remeshedResult.remeshedVertices = remeshed;
     return remeshedResult;
 }

@@ -1,5 +1,6 @@
 #include "mesh/MeshChecks.h"
 #include "mesh/MeshTopologyCheck.h"
+#include "mesh/MeshVolume.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -50,10 +51,24 @@ void validate(const TriMesh& mesh) {
                             std::to_string(mesh.vertexCount()) + " vertices.");
 }
 
-// The edge uses of every face without a repeated vertex, grouped by edge.
+// The edge uses of every face without a repeated vertex, grouped by edge:
+// ordered by key, then face. A counting sort on the smaller vertex (the
+// key's upper half), then each vertex's few uses sorted by (larger vertex,
+// face): the same order as one comparison sort of all uses, in linear time
+// (the comparison sort was most of a topology check). Indices are in range
+// (validate() runs first).
 std::vector<EdgeUse> sortedEdgeUses(const TriMesh& mesh) {
-    std::vector<EdgeUse> uses;
-    uses.reserve(mesh.faces.size() * 3);
+    std::vector<int> start(mesh.vertices.size() + 1, 0);
+    for (const auto& face : mesh.faces) {
+        if (hasRepeatedIndex(face))
+            continue;
+        for (int k = 0; k < 3; ++k)
+            ++start[std::min(face[k], face[(k + 1) % 3]) + 1];
+    }
+    for (std::size_t v = 1; v < start.size(); ++v)
+        start[v] += start[v - 1];
+    std::vector<EdgeUse> uses(static_cast<std::size_t>(start.back()));
+    std::vector<int> next(start.begin(), start.end() - 1);
     for (int f = 0; f < mesh.faceCount(); ++f) {
         const auto& face = mesh.faces[f];
         if (hasRepeatedIndex(face))
@@ -63,12 +78,20 @@ std::vector<EdgeUse> sortedEdgeUses(const TriMesh& mesh) {
             const auto to = static_cast<std::uint64_t>(face[(k + 1) % 3]);
             const bool forward = from < to;
             const std::uint64_t key = forward ? (from << 32) | to : (to << 32) | from;
-            uses.push_back({key, f, k, forward});
+            uses[next[std::min(face[k], face[(k + 1) % 3])]++] = {key, f, k, forward};
         }
     }
-    std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) {
-        return a.key != b.key ? a.key < b.key : a.face < b.face;
-    });
+    // Faces were visited in order, so within a vertex's run the faces of each
+    // key already ascend: a stable sort by key alone gives (key, face). The
+    // runs are a vertex's few edges: insertion sort (stable, no allocation).
+    for (std::size_t v = 0; v + 1 < start.size(); ++v)
+        for (int i = start[v] + 1; i < start[v + 1]; ++i) {
+            const EdgeUse use = uses[i];
+            int j = i;
+            for (; j > start[v] && uses[j - 1].key > use.key; --j)
+                uses[j] = uses[j - 1];
+            uses[j] = use;
+        }
     return uses;
 }
 
@@ -164,12 +187,21 @@ double faceArea(const TriMesh& mesh, const std::array<int, 3>& face) {
     return 0.5 * (mesh.vertices[face[1]] - a).cross(mesh.vertices[face[2]] - a).norm();
 }
 
+// Cones to the box centre, not to the world origin: far from the origin
+// the cones' volumes would be huge and cancel to noise.
+Vec3 volumeApex(const Eigen::AlignedBox3d& box) {
+    return box.isEmpty() ? Vec3(Vec3::Zero()) : Vec3(box.center());
+}
+
+// Divergence theorem: each face adds the signed volume of its cone to the apex.
+double coneVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& apex) {
+    return (a - apex).dot((b - apex).cross(c - apex)) / 6;
+}
+
 void analyseGeometry(const TriMesh& mesh, MeshReport& report) {
     const Eigen::AlignedBox3d box = boundingBox(mesh);
     const double minArea = degenerateAreaBound(box);
-    // Cones to the box centre, not to the world origin: far from the origin
-    // the cones' volumes would be huge and cancel to noise.
-    const Vec3 apex = box.isEmpty() ? Vec3(Vec3::Zero()) : Vec3(box.center());
+    const Vec3 apex = volumeApex(box);
     double minAngle = 180, maxAngle = 0;
     bool anyAngle = false;
     for (const auto& face : mesh.faces) {
@@ -182,8 +214,7 @@ void analyseGeometry(const TriMesh& mesh, MeshReport& report) {
         const Vec3& c = mesh.vertices[face[2]];
         const double area = faceArea(mesh, face);
         report.area += area;
-        // Divergence theorem: each face adds the signed volume of its cone to the apex.
-        report.volume += (a - apex).dot((b - apex).cross(c - apex)) / 6;
+        report.volume += coneVolume(a, b, c, apex);
         if (area <= minArea) {
             ++report.degenerateFaces;
             continue;
@@ -234,6 +265,17 @@ MeshReport analyseMeshTopology(const TriMesh& mesh) {
     analyseTopology(mesh, report);
     report.selfIntersectingFacePairs = -1;
     return report;
+}
+
+double signedVolume(const TriMesh& mesh) {
+    validate(mesh);
+    const Vec3 apex = volumeApex(boundingBox(mesh));
+    double volume = 0;
+    for (const auto& face : mesh.faces)
+        if (!hasRepeatedIndex(face))
+            volume += coneVolume(mesh.vertices[face[0]], mesh.vertices[face[1]],
+                                 mesh.vertices[face[2]], apex);
+    return volume;
 }
 
 int countDegenerateFaces(const TriMesh& mesh) {
