@@ -2,7 +2,9 @@
 """Renders an OBJ mesh from three directions into one PNG, for a quick look.
 
 Flat-shaded painter's algorithm written as SVG and rasterised by ImageMagick:
-python3's standard library only. Usage: render_mesh.py MESH.obj OUT.png
+python3's standard library only. Usage: render_mesh.py MESH.obj OUT.png [X Y R]
+(with X Y R only the faces whose centre lies within R of (X, Y) in the sketch
+plane are drawn, for a close look at a fold).
 """
 import math
 import subprocess
@@ -31,8 +33,9 @@ def rotate(v, yaw, pitch):
 
 def view_svg(vertices, faces, yaw, pitch, ox, size, wire):
     rv = [rotate(v, yaw, pitch) for v in vertices]
-    xs = [v[0] for v in rv]
-    ys = [v[1] for v in rv]
+    used = sorted({i for f in faces for i in f})  # the drawn faces frame the view
+    xs = [rv[i][0] for i in used]
+    ys = [rv[i][1] for i in used]
     cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
     scale = 0.9 * size / max(max(xs) - min(xs), max(ys) - min(ys), 1e-12)
     polys = []
@@ -58,6 +61,15 @@ def view_svg(vertices, faces, yaw, pitch, ox, size, wire):
 
 def main():
     vertices, faces = read_obj(sys.argv[1])
+    if len(sys.argv) >= 6:
+        x, y, r = (float(a) for a in sys.argv[3:6])
+
+        def near(f):
+            cx = sum(vertices[i][0] for i in f) / 3
+            cy = sum(vertices[i][1] for i in f) / 3
+            return (cx - x) ** 2 + (cy - y) ** 2 <= r * r
+
+        faces = [f for f in faces if near(f)]
     size = 600
     views = [(0, 0), (math.pi / 2, 0), (0.6, -0.5)]
     body = "".join(view_svg(vertices, faces, yaw, pitch, i * size, size, True) for i, (yaw, pitch) in enumerate(views))

@@ -16,6 +16,7 @@
 #include "surface/LeastSquaresMesh.h"
 #include "surface/PatchLattice.h"
 #include "surface/PatchRims.h"
+#include "surface/SectionGaps.h"
 
 namespace rigmesh {
 namespace {
@@ -259,6 +260,9 @@ std::vector<double> anchorWeights(const SketchSurface& surface, const Decomposit
                                   const std::vector<CylinderSections>& cylinders,
                                   const SurfaceOptions& options) {
     std::vector<double> weights(surface.mesh.vertices.size(), 0.0);
+    std::vector<std::vector<SectionGap>> gaps;
+    for (const CylinderSections& c : cylinders)
+        gaps.push_back(sectionGaps(c, options.targetEdgeLength));
     for (std::size_t v = 0; v < weights.size(); ++v) {
         const VertexOrigin& origin = surface.origins[v];
         if (origin.kind != RegionKind::Cylindrical) {
@@ -286,6 +290,16 @@ std::vector<double> anchorWeights(const SketchSurface& surface, const Decomposit
         const bool inCap = origin.section < 0 || sections.sections[origin.section].inCap;
         if (inCap && !origin.onOutline)
             weights[v] = std::min(weights[v], options.capAnchorWeight);
+        // Across a gap left by dropped cap slices the strip is a step:
+        // free at the two sections bounding it, rising over the gap's
+        // length (SectionGaps.h). Its outline vertices stay held.
+        if (!origin.onOutline)
+            for (const SectionGap& gap : gaps[origin.region]) {
+                const double away =
+                    std::max(0.0, std::abs(origin.axisPosition - gap.axisPosition) - gap.halfWidth);
+                weights[v] = std::min(
+                    weights[v], options.maxAnchorWeight * std::clamp(away / gap.length, 0.0, 1.0));
+            }
     }
     return weights;
 }

@@ -7,10 +7,12 @@
 // 35-degree limit between neighbouring faces that relaxing leaves (fingers
 // and tentacles with the narrowest gaps, two limbs meeting a body at a
 // sharp angle), and stubs 22 and 35 by a wall (SurfaceWall.h): a pleat of
-// a few steep faces about 4 spacings inside the outline, at 0.6 of the
-// surface's height, in a cap that took in a big round lobe whole (Teddy's
-// circle test), near where the limb meets the lobe; fold relaxation keeps
-// every edge there below 35 degrees but not the step. p99, IoU, the
+// steep faces inside the outline in a cap that took in a big round lobe
+// whole (Teddy's circle test), where the cap's base chord is tilted
+// against the lobe and the slices that would cross it were dropped; the
+// strip across that gap fans from the small base ring to a tall slice.
+// Least-Squares Meshes now leaves that strip free (surface/SectionGaps.h):
+// 4.1 -> 2.2 and 3.9 -> 2.6 spacings, still above 2. p99, IoU, the
 // silhouette and the bulge hold on all. The test
 // holds each listed outline to its recorded figures (none may get worse)
 // and every other outline to the limits.
@@ -35,8 +37,8 @@ using testsupport::CreatureClass;
 
 // clang-format off
 inline constexpr KnownDefect kKnownDefects[] = {
-    {CreatureClass::Stubs, 22, 0.0, 0.0, 0.0, 4.1},
-    {CreatureClass::Stubs, 35, 0.0, 0.0, 0.0, 3.9},
+    {CreatureClass::Stubs, 22, 0.0, 0.0, 0.0, 2.2},
+    {CreatureClass::Stubs, 35, 0.0, 0.0, 0.0, 2.6},
     {CreatureClass::Fingers, 7, 0.0, 71.2, 0.0, 0.0},
     {CreatureClass::Fingers, 12, 0.0, 44.9, 0.0, 0.0},
     {CreatureClass::Fingers, 22, 0.0, 86.4, 0.0, 0.0},
