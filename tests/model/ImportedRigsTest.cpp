@@ -30,6 +30,34 @@ TEST(ImportedRigs, EveryAnimationIsANamedClipAndTheDocumentKeepsThemExactly) {
     EXPECT_EQ(DocumentFile::toBytes(DocumentFile::fromBytes(saved)), saved);
 }
 
+// Wuson_Walk's last key is at 3.6 s, past the default timeline's 2 s: the
+// import extends the timeline to the frame that shows it, in its own undo
+// step; a file whose keys fit leaves the timeline as it was.
+TEST(ImportedRigs, ATimelineShorterThanTheFilesAnimationsIsExtendedToTheirLastKey) {
+    Document document;
+    const TimelineSettings before = document.timeline();
+    ASSERT_EQ(before.endFrame, 48);
+    runSteps(document, {{{"command", "import"}, {"file", kWuson}}});
+    ASSERT_EQ(document.partCount(), 1);
+    double last = 0.0;
+    for (const Clip* clip : clipsOf(document.parts().front()))
+        last = std::max(last, clip->keyTimes().back());
+    EXPECT_NEAR(last, 3.6, 1e-9);
+    EXPECT_EQ(document.timeline().endFrame, 87);  // 3.6 s at 24 fps is frame 86.4
+    EXPECT_EQ(document.timeline().startFrame, before.startFrame);
+    EXPECT_EQ(document.timeline().framesPerSecond, before.framesPerSecond);
+    document.undoStack()->undo();
+    EXPECT_EQ(document.partCount(), 0);
+    EXPECT_EQ(document.timeline(), before);
+    document.undoStack()->redo();
+    EXPECT_EQ(document.timeline().endFrame, 87);
+
+    // Keys within the range: nothing to extend (man.mdl's clips end by 1 s).
+    Document fits;
+    runSteps(fits, {{{"command", "import"}, {"file", kMan}}});
+    EXPECT_EQ(fits.timeline(), before);
+}
+
 TEST(ImportedRigs, ADisconnectedRigPosesKeysAndLoadsExactly) {
     Document document;
     runSteps(document, {{{"command", "import"}, {"file", kMan}}});

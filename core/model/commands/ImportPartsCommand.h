@@ -3,7 +3,10 @@
 // the part it animates. A static mesh without a usable skeleton comes in as
 // an unrigged part: shown, moved, saved and exported as a mesh, posable once
 // rigged (RigPartCommand; unrigged() says how many need it).
-// The file is read in create(), before anything is pushed.
+// The file is read in create(), before anything is pushed. When the file's
+// animations run past the timeline's end, the timeline is extended to their
+// last key (as Blender's importers set the scene's frame range), in the
+// same undo step.
 #pragma once
 
 #include <QCoreApplication>
@@ -37,6 +40,8 @@ class ImportPartsCommand : public QUndoCommand, public RecipeStepSource {
     Document& document_;
     QString path_;
     std::vector<PartNode> nodes_;
+    TimelineSettings timelineBefore_;
+    TimelineSettings timelineAfter_;
 };
 
 }  // namespace rigmesh::model
