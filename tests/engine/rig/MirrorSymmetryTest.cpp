@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "SharedSketchPart.h"
+#include "SymmetricOutline.h"
 #include "pipeline/SketchToPart.h"
 #include "rig/MirrorSymmetry.h"
 #include "rig/SkeletonSymmetry.h"
@@ -28,28 +29,7 @@ double diagonalOf(const std::vector<Vec3>& points) {
 // (its last points run back over its first ones on the right leg), which
 // the sketch's closing trims but a plain reflection would keep as a fold.
 std::vector<Vec2> symmetricBiped() {
-    const std::vector<Vec2>& points = testsupport::sharedSketchPart("biped").outline;
-    Eigen::AlignedBox2d box;
-    for (const Vec2& p : points)
-        box.extend(p);
-    const double middle = box.center().x();
-    // The run of points right of the middle, from crossing to crossing.
-    const int n = static_cast<int>(points.size());
-    int start = 0;
-    for (int i = 0; i < n; ++i)
-        if (points[i].x() < middle && points[(i + 1) % n].x() >= middle)
-            start = (i + 1) % n;
-    std::vector<Vec2> right;
-    for (int k = 0; k < n; ++k) {
-        const Vec2& p = points[(start + k) % n];
-        if (p.x() < middle)
-            break;
-        right.push_back(p);
-    }
-    std::vector<Vec2> outline = right;
-    for (auto it = right.rbegin(); it != right.rend(); ++it)
-        outline.emplace_back(2.0 * middle - it->x(), it->y());
-    return outline;
+    return testsupport::symmetricOutline(testsupport::sharedSketchPart("biped").outline);
 }
 
 TEST(MirrorPlane, IsFoundForASymmetricShapeTurnedAndMovedAnywhere) {
