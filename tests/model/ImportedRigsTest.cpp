@@ -89,6 +89,62 @@ TEST(ImportedRigs, ADisconnectedRigPosesKeysAndLoadsExactly) {
     EXPECT_EQ(bytesOf(replay), saved);
 }
 
+// Weight paint on a rig made elsewhere (disconnected bones, an open
+// surface): a stroke on the vertices a bone leads is one undo step, every
+// vertex keeps non-negative weights summing to 1, the part stays valid, and
+// undo gives back the document byte for byte.
+TEST(ImportedRigs, PaintingAnImportedRigIsOneUndoStepKeepingWeightsNormalised) {
+    Document document;
+    runSteps(document, {{{"command", "import"}, {"file", kWuson}}});
+    ASSERT_EQ(document.partCount(), 1);
+    const PartNode& node = document.parts().front();
+    const Part& part = *node.part;
+    ASSERT_FALSE(part.skeleton.isConnectedTree());
+    // The bone with the most weight on one vertex, and that vertex's place.
+    BoneId bone = 0;
+    int at = -1;
+    double best = 0.0;
+    for (int v = 0; v < part.mesh.vertexCount(); ++v)
+        for (const auto& [id, w] : part.weights.perVertex[v])
+            if (w < 0.9 && w > best) {
+                best = w;
+                bone = id;
+                at = v;
+            }
+    ASSERT_GE(at, 0);
+    const Vec3 centre = node.placement.toWorld(part.mesh.vertices[at]);
+    Eigen::AlignedBox3d box;
+    for (const Vec3& p : part.mesh.vertices)
+        box.extend(p);
+    const QByteArray before = bytesOf(document);
+    const int steps = document.undoStack()->count();
+    runSteps(document, {{{"command", "paint_weights"},
+                         {"part", 0},
+                         {"bone", bone},
+                         {"mode", "add"},
+                         {"center", {centre.x(), centre.y(), centre.z()}},
+                         {"radius", 0.05 * box.diagonal().norm()},
+                         {"strength", 0.8}}});
+    EXPECT_EQ(document.undoStack()->count(), steps + 1);
+    const Part& painted = *document.parts().front().part;
+    EXPECT_TRUE(painted.validate().empty());
+    double weight = 0.0;
+    for (const auto& [id, w] : painted.weights.perVertex[at])
+        if (id == bone)
+            weight = w;
+    EXPECT_GT(weight, best) << "the stroke adds weight of the bone where it was painted";
+    for (const auto& influences : painted.weights.perVertex) {
+        double sum = 0.0;
+        for (const auto& [id, w] : influences) {
+            EXPECT_GE(w, 0.0);
+            sum += w;
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-9);
+    }
+    document.undoStack()->undo();
+    EXPECT_EQ(bytesOf(document), before);
+}
+
 TEST(ImportedRigs, ACutRefusesUntilTheBonesAreConnected) {
     Document document;
     runSteps(document, {{{"command", "import"}, {"file", kMan}}});
