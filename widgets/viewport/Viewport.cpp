@@ -218,12 +218,8 @@ void Viewport::paintGL() {
         if (document_->partCount() > 0)
             frameAll();
     }
-    if (!floorHeight_) {
-        // An empty scene: a floor in the lower part of the view, seen from
-        // slightly above (not edge-on through the centre), while the sketch
-        // plane stays the front plane through the centre.
-        floorHeight_ = camera_.target().y() - 0.22 * camera_.distance();
-    }
+    if (!floorHeight_)
+        floorHeight_ = floorHeight();  // an empty scene's floor, kept from now on
     renderer_->render(
         gatherScene(), camera_,
         QSize(int(width() * devicePixelRatioF()), int(height() * devicePixelRatioF())));
@@ -270,6 +266,9 @@ double Viewport::gridSpacing() const {
 }
 
 double Viewport::floorHeight() const {
+    // Before any framing (an empty scene): a floor in the lower part of the
+    // view, seen from slightly above (not edge-on through the centre), while
+    // the sketch plane stays the front plane through the centre.
     return floorHeight_.value_or(camera_.target().y() - 0.22 * camera_.distance());
 }
 
