@@ -1,9 +1,9 @@
 // Every refusal the engine and the model throw is an Error built from a
 // MessageId, so the studio can show it translated (docs/ARCHITECTURE.md,
-// "Translations"): a `throw Error(` whose arguments hold a string literal is
-// English only. The files below still build their messages from English
-// parts (recipe field descriptions, SVG scanner problems); their counts may
-// only go down, and a new literal anywhere else fails.
+// "Translations"): a `throw Error(` whose arguments hold a string literal,
+// an id's argument included, is English only. The files below still build their messages from
+// English parts (recipe field descriptions, SVG scanner problems); their counts may only go down,
+// and a new literal anywhere else fails.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -74,7 +74,10 @@ TEST(ErrorLiterals, TheScanSeesLiteralsAndNotIds) {
     EXPECT_EQ(literalThrows("throw Error(\"no\");"), 1);
     EXPECT_EQ(literalThrows("throw Error(std::string(\"a\") + b);"), 1);
     EXPECT_EQ(literalThrows("throw Error(MessageId::NoSuchPart);"), 0);
-    EXPECT_EQ(literalThrows("throw Error(MessageId::X, f(\")\"), g(1));\nthrow Error(\"y\");"), 1);
+    // An argument in English is English too.
+    EXPECT_EQ(literalThrows("throw Error(MessageId::X, \"the flow gave no curve.\");"), 1);
+    // A parenthesis in a literal does not end the arguments.
+    EXPECT_EQ(literalThrows("throw Error(MessageId::X, f(')'), g(1));\nthrow Error(\"y\");"), 1);
     EXPECT_EQ(literalThrows("throw std::logic_error(\"internal\");"), 0);
 }
 
