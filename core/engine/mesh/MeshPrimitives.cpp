@@ -7,8 +7,6 @@
 #include <string>
 #include <unordered_map>
 
-#include "base/Error.h"
-
 namespace rigmesh {
 
 namespace {

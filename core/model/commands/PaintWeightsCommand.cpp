@@ -5,8 +5,6 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "base/Error.h"
-
 namespace rigmesh::model {
 
 namespace {

@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 #include <stdexcept>
 
-#include "base/Error.h"
 #include "mesh/MeshPrimitives.h"
 
 namespace rigmesh {

@@ -2,7 +2,6 @@
 #include <stdexcept>
 
 #include "PoseTestSupport.h"
-#include "base/Error.h"
 #include "mesh/MeshPrimitives.h"
 #include "pose/Skinning.h"
 #include "pose/VertexNormals.h"
