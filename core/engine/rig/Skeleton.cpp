@@ -14,17 +14,6 @@
 
 namespace rigmesh {
 
-namespace {
-
-std::string jointName(JointId id) {
-    return "joint " + std::to_string(id);
-}
-std::string boneName(BoneId id) {
-    return "bone " + std::to_string(id);
-}
-
-}  // namespace
-
 Skeleton Skeleton::restore(std::vector<Joint> joints, std::vector<Bone> bones, JointId root,
                            std::map<JointId, BoneId> attachments) {
     Skeleton s;
