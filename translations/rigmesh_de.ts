@@ -729,6 +729,870 @@
         <source>This part has no left-right mirror plane (its two sides differ by more than 2% of its size), so X-mirror cannot paint it.</source>
         <translation>Dieses Teil hat keine Links-rechts-Spiegelebene (seine beiden Seiten weichen um mehr als 2 % seiner Größe voneinander ab), daher kann X-Spiegelung es nicht malen.</translation>
     </message>
+    <message>
+        <source>No part with id %1 in the document.</source>
+        <translation>Im Dokument gibt es kein Teil mit der Kennung %1.</translation>
+    </message>
+    <message>
+        <source>Part %1 has no joint %2.</source>
+        <translation>Teil %1 hat kein Gelenk %2.</translation>
+    </message>
+    <message>
+        <source>The pose of part %1 has a non-finite or zero rotation or translation.</source>
+        <translation>Die Pose von Teil %1 hat eine nicht endliche oder null Rotation oder Verschiebung.</translation>
+    </message>
+    <message>
+        <source>The key at %1 s of part %2 has a non-finite or zero rotation or translation.</source>
+        <translation>Das Schlüsselbild bei %1 s von Teil %2 hat eine nicht endliche oder null Rotation oder Verschiebung.</translation>
+    </message>
+    <message>
+        <source>The starting pose of part %1 has a non-finite or zero rotation or translation.</source>
+        <translation>Die Ausgangspose von Teil %1 hat eine nicht endliche oder null Rotation oder Verschiebung.</translation>
+    </message>
+    <message>
+        <source>The new pose of part %1 has a non-finite or zero rotation or translation.</source>
+        <translation>Die neue Pose von Teil %1 hat eine nicht endliche oder null Rotation oder Verschiebung.</translation>
+    </message>
+    <message>
+        <source>The starting pose names joint %1, which part %2 does not have.</source>
+        <translation>Die Ausgangspose nennt Gelenk %1, das Teil %2 nicht hat.</translation>
+    </message>
+    <message>
+        <source>The new pose names joint %1, which part %2 does not have.</source>
+        <translation>Die neue Pose nennt Gelenk %1, das Teil %2 nicht hat.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton to pose.</source>
+        <translation>Das Teil hat kein Skelett zum Posieren.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton to edit.</source>
+        <translation>Das Teil hat kein Skelett zum Bearbeiten.</translation>
+    </message>
+    <message>
+        <source>The part has no surface to cut.</source>
+        <translation>Das Teil hat keine Oberfläche zum Schneiden.</translation>
+    </message>
+    <message>
+        <source>The cut&apos;s view needs a direction and an up that is not along it.</source>
+        <translation>Die Ansicht des Schnitts braucht eine Richtung und ein Oben, das nicht entlang dieser Richtung liegt.</translation>
+    </message>
+    <message>
+        <source>A part cannot be merged into itself.</source>
+        <translation>Ein Teil lässt sich nicht mit sich selbst zusammenführen.</translation>
+    </message>
+    <message>
+        <source>%1 has no joint %2</source>
+        <translation>%1 hat kein Gelenk %2</translation>
+    </message>
+    <message>
+        <source>The parts to merge are no longer in the document.</source>
+        <translation>Die zusammenzuführenden Teile sind nicht mehr im Dokument.</translation>
+    </message>
+    <message>
+        <source>There is no such part.</source>
+        <translation>Dieses Teil gibt es nicht.</translation>
+    </message>
+    <message>
+        <source>The part is no longer in the document.</source>
+        <translation>Das Teil ist nicht mehr im Dokument.</translation>
+    </message>
+    <message>
+        <source>There is no part to rig.</source>
+        <translation>Es gibt kein Teil zum Riggen.</translation>
+    </message>
+    <message>
+        <source>The part changed while it was rigged; nothing was changed.</source>
+        <translation>Das Teil hat sich während des Riggens geändert; nichts wurde geändert.</translation>
+    </message>
+    <message>
+        <source>The parts to rig together must be given in document order, once each.</source>
+        <translation>Die gemeinsam zu riggenden Teile müssen in Dokumentreihenfolge und je einmal angegeben werden.</translation>
+    </message>
+    <message>
+        <source>There is no part to recompute the weights of.</source>
+        <translation>Es gibt kein Teil, dessen Gewichte neu berechnet werden könnten.</translation>
+    </message>
+    <message>
+        <source>The part changed while its weights were recomputed; nothing was changed.</source>
+        <translation>Das Teil hat sich während der Neuberechnung seiner Gewichte geändert; nichts wurde geändert.</translation>
+    </message>
+    <message>
+        <source>%1 holds no mesh to import</source>
+        <translation>%1 enthält kein Netz zum Importieren</translation>
+    </message>
+    <message>
+        <source>there are no parts to export</source>
+        <translation>es gibt keine Teile zum Exportieren</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not rigged yet: export it as OBJ, or hide it and export the visible parts</source>
+        <translation>„%1“ ist noch nicht geriggt: exportieren Sie es als OBJ oder blenden Sie es aus und exportieren Sie die sichtbaren Teile</translation>
+    </message>
+    <message>
+        <source>The history step &quot;%1&quot; cannot be written as a recipe step.</source>
+        <translation>Der Verlaufsschritt „%1“ lässt sich nicht als Rezeptschritt schreiben.</translation>
+    </message>
+    <message>
+        <source>lists and maps are nested more than %1 levels deep</source>
+        <translation>Listen und Maps sind mehr als %1 Ebenen tief verschachtelt</translation>
+    </message>
+    <message>
+        <source>The frame rate must be between %1 and %2 frames per second.</source>
+        <translation>Die Bildrate muss zwischen %1 und %2 Bildern pro Sekunde liegen.</translation>
+    </message>
+    <message>
+        <source>The frame range must lie within frames 0 to %1.</source>
+        <translation>Der Bildbereich muss zwischen den Bildern 0 und %1 liegen.</translation>
+    </message>
+    <message>
+        <source>The frame range must end after it starts.</source>
+        <translation>Der Bildbereich muss nach seinem Anfang enden.</translation>
+    </message>
+    <message>
+        <source>The frame range is longer than a clip can be.</source>
+        <translation>Der Bildbereich ist länger, als ein Clip sein kann.</translation>
+    </message>
+    <message>
+        <source>Frame %1 is outside frames 0 to %2.</source>
+        <translation>Bild %1 liegt außerhalb der Bilder 0 bis %2.</translation>
+    </message>
+    <message>
+        <source>A clip name must have 1 to %1 characters.</source>
+        <translation>Ein Clipname muss 1 bis %1 Zeichen haben.</translation>
+    </message>
+    <message>
+        <source>A clip name must not start or end with a space.</source>
+        <translation>Ein Clipname darf nicht mit einem Leerzeichen beginnen oder enden.</translation>
+    </message>
+    <message>
+        <source>A clip name must not hold control characters.</source>
+        <translation>Ein Clipname darf keine Steuerzeichen enthalten.</translation>
+    </message>
+    <message>
+        <source>The part has two clips named &quot;%1&quot;.</source>
+        <translation>Das Teil hat zwei Clips namens „%1“.</translation>
+    </message>
+    <message>
+        <source>%1 already has a clip named &quot;%2&quot;.</source>
+        <translation>%1 hat bereits einen Clip namens „%2“.</translation>
+    </message>
+    <message>
+        <source>%1 has no clip named &quot;%2&quot;.</source>
+        <translation>%1 hat keinen Clip namens „%2“.</translation>
+    </message>
+    <message>
+        <source>%1 has only this clip: a part keeps one clip (delete its keys instead).</source>
+        <translation>%1 hat nur diesen Clip: ein Teil behält einen Clip (löschen Sie stattdessen seine Schlüsselbilder).</translation>
+    </message>
+    <message>
+        <source>There are no keys to paste.</source>
+        <translation>Es gibt keine Schlüsselbilder zum Einfügen.</translation>
+    </message>
+    <message>
+        <source>There are no keys to move.</source>
+        <translation>Es gibt keine Schlüsselbilder zum Verschieben.</translation>
+    </message>
+    <message>
+        <source>The keys&apos; offset is not a finite number of seconds.</source>
+        <translation>Der Versatz der Schlüsselbilder ist keine endliche Anzahl von Sekunden.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton, so it has no weights to paint.</source>
+        <translation>Das Teil hat kein Skelett und damit keine Gewichte zum Malen.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton, so it has no weights to lock.</source>
+        <translation>Das Teil hat kein Skelett und damit keine Gewichte zum Sperren.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton, so it has no weights to clean up.</source>
+        <translation>Das Teil hat kein Skelett und damit keine Gewichte zum Bereinigen.</translation>
+    </message>
+    <message>
+        <source>Only a part with a skeleton has weights to recompute.</source>
+        <translation>Nur ein Teil mit Skelett hat Gewichte, die sich neu berechnen lassen.</translation>
+    </message>
+    <message>
+        <source>Check Rig needs at least one influence and a positive tolerance.</source>
+        <translation>Rig prüfen braucht mindestens einen Einfluss und eine positive Toleranz.</translation>
+    </message>
+    <message>
+        <source>A skin weight refers to bone %1, which the skeleton does not have.</source>
+        <translation>Ein Skin-Gewicht verweist auf Knochen %1, den das Skelett nicht hat.</translation>
+    </message>
+    <message>
+        <source>Skin weights need at least one bone.</source>
+        <translation>Skin-Gewichte brauchen mindestens einen Knochen.</translation>
+    </message>
+    <message>
+        <source>Skin weights need at least one bone with finite end points.</source>
+        <translation>Skin-Gewichte brauchen mindestens einen Knochen mit endlichen Endpunkten.</translation>
+    </message>
+    <message>
+        <source>The mesh has a vertex with a non-finite position.</source>
+        <translation>Das Netz hat einen Vertex mit nicht endlicher Position.</translation>
+    </message>
+    <message>
+        <source>The mesh has a triangle that refers to a missing vertex.</source>
+        <translation>Das Netz hat ein Dreieck, das auf einen fehlenden Vertex verweist.</translation>
+    </message>
+    <message>
+        <source>A bone cannot connect joint %1 to itself.</source>
+        <translation>Ein Knochen kann Gelenk %1 nicht mit sich selbst verbinden.</translation>
+    </message>
+    <message>
+        <source>Only existing joints can be merged.</source>
+        <translation>Nur vorhandene Gelenke lassen sich zusammenführen.</translation>
+    </message>
+    <message>
+        <source>The root joint %1 cannot hang from a bone.</source>
+        <translation>Das Wurzelgelenk %1 kann nicht an einem Knochen hängen.</translation>
+    </message>
+    <message>
+        <source>The skeleton has no bone %1.</source>
+        <translation>Das Skelett hat keinen Knochen %1.</translation>
+    </message>
+    <message>
+        <source>Cannot choose a root for a skeleton without joints.</source>
+        <translation>Für ein Skelett ohne Gelenke lässt sich keine Wurzel wählen.</translation>
+    </message>
+    <message>
+        <source>the skeleton of this shape is invalid: %1</source>
+        <translation>das Skelett dieser Form ist ungültig: %1</translation>
+    </message>
+    <message>
+        <source>subdividing &apos;%1&apos; failed: %2</source>
+        <translation>Unterteilen von „%1“ ist fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>decimating &apos;%1&apos; failed: %2</source>
+        <translation>Dezimieren von „%1“ ist fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>the pose demo needs a part with bones</source>
+        <translation>die Posen-Demo braucht ein Teil mit Knochen</translation>
+    </message>
+    <message>
+        <source>the outline has no elongated part to inflate: draw a longer shape</source>
+        <translation>die Umrisslinie hat keinen länglichen Teil zum Aufblasen: zeichnen Sie eine längere Form</translation>
+    </message>
+    <message>
+        <source>a patch boundary needs at least three points</source>
+        <translation>ein Flächenrand braucht mindestens drei Punkte</translation>
+    </message>
+    <message>
+        <source>the target edge length must be positive</source>
+        <translation>die Ziel-Kantenlänge muss positiv sein</translation>
+    </message>
+    <message>
+        <source>the edge length is too small for this patch: %1 lattice rows or columns</source>
+        <translation>die Kantenlänge ist für diese Fläche zu klein: %1 Gitterzeilen oder -spalten</translation>
+    </message>
+    <message>
+        <source>the edge length is too small for this patch: %1 lattice points</source>
+        <translation>die Kantenlänge ist für diese Fläche zu klein: %1 Gitterpunkte</translation>
+    </message>
+    <message>
+        <source>least-squares smoothing needs at least one anchored vertex</source>
+        <translation>die Glättung nach kleinsten Quadraten braucht mindestens einen verankerten Vertex</translation>
+    </message>
+    <message>
+        <source>The target edge length must be 0 (automatic) or a positive length.</source>
+        <translation>Die Ziel-Kantenlänge muss 0 (automatisch) oder eine positive Länge sein.</translation>
+    </message>
+    <message>
+        <source>Cannot open &apos;%1&apos;: the file does not exist or is not readable.</source>
+        <translation>„%1“ lässt sich nicht öffnen: die Datei existiert nicht oder ist nicht lesbar.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: reading the file failed.</source>
+        <translation>„%1“ lässt sich nicht lesen: das Lesen der Datei ist fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <source>Unsupported mesh file type &apos;%1&apos;: use .obj, .off or .ply.</source>
+        <translation>Nicht unterstützter Netz-Dateityp „%1“: verwenden Sie .obj, .off oder .ply.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: a vertex needs three coordinates.</source>
+        <translation>„%1“ lässt sich nicht lesen: Zeile %2: ein Vertex braucht drei Koordinaten.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: a face needs at least three vertices.</source>
+        <translation>„%1“ lässt sich nicht lesen: Zeile %2: eine Fläche braucht mindestens drei Vertices.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: face refers to vertex %3 but only %4 vertices are defined before it.</source>
+        <translation>„%1“ lässt sich nicht lesen: Zeile %2: die Fläche verweist auf Vertex %3, aber davor sind nur %4 Vertices definiert.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: &apos;%3&apos; is not a finite number.</source>
+        <translation>„%1“ lässt sich nicht lesen: Zeile %2: „%3“ ist keine endliche Zahl.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: &apos;%3&apos; is not an integer.</source>
+        <translation>„%1“ lässt sich nicht lesen: Zeile %2: „%3“ ist keine ganze Zahl.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: invalid count &apos;%3&apos;.</source>
+        <translation>„%1“ lässt sich nicht lesen: Zeile %2: ungültige Anzahl „%3“.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file ends early, while expecting the OFF header.</source>
+        <translation>„%1“ lässt sich nicht lesen: die Datei endet zu früh, statt des OFF-Kopfes.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file ends early, while expecting the vertex and face counts.</source>
+        <translation>„%1“ lässt sich nicht lesen: die Datei endet zu früh, statt der Vertex- und Flächenanzahl.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file ends early, while expecting vertex %2 of %3.</source>
+        <translation>„%1“ lässt sich nicht lesen: die Datei endet zu früh, statt Vertex %2 von %3.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file ends early, while expecting face %2 of %3.</source>
+        <translation>„%1“ lässt sich nicht lesen: die Datei endet zu früh, statt Fläche %2 von %3.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file does not start with &apos;OFF&apos;.</source>
+        <translation>„%1“ lässt sich nicht lesen: die Datei beginnt nicht mit „OFF“.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: expected the vertex and face counts.</source>
+        <translation>„%1“ lässt sich nicht lesen: Zeile %2: erwartet wurden die Vertex- und Flächenanzahl.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: a face needs a corner count of at least 3 and that many vertex indices.</source>
+        <translation>„%1“ lässt sich nicht lesen: Zeile %2: eine Fläche braucht eine Eckenzahl von mindestens 3 und so viele Vertex-Indizes.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: face refers to vertex %3 but there are %4 vertices.</source>
+        <translation>„%1“ lässt sich nicht lesen: Zeile %2: die Fläche verweist auf Vertex %3, es gibt aber %4 Vertices.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file does not start with &apos;ply&apos;.</source>
+        <translation>„%1“ lässt sich nicht lesen: die Datei beginnt nicht mit „ply“.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the header has no &apos;end_header&apos; line.</source>
+        <translation>„%1“ lässt sich nicht lesen: der Kopf hat keine Zeile „end_header“.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the header has no &apos;format&apos; line.</source>
+        <translation>„%1“ lässt sich nicht lesen: der Kopf hat keine Zeile „format“.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: unknown property type &apos;%3&apos;.</source>
+        <translation>„%1“ lässt sich nicht lesen: Kopfzeile %2: unbekannter Eigenschaftstyp „%3“.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: unknown format &apos;%3&apos;.</source>
+        <translation>„%1“ lässt sich nicht lesen: Kopfzeile %2: unbekanntes Format „%3“.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: &apos;%3&apos; is not an integer.</source>
+        <translation>„%1“ lässt sich nicht lesen: Kopfzeile %2: „%3“ ist keine ganze Zahl.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: invalid element count &apos;%3&apos;.</source>
+        <translation>„%1“ lässt sich nicht lesen: Kopfzeile %2: ungültige Elementanzahl „%3“.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: a list count must have an integer type.</source>
+        <translation>„%1“ lässt sich nicht lesen: Kopfzeile %2: eine Listenlänge muss einen ganzzahligen Typ haben.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: malformed property line.</source>
+        <translation>„%1“ lässt sich nicht lesen: Kopfzeile %2: fehlerhafte Eigenschaftszeile.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: unexpected &apos;%3&apos;.</source>
+        <translation>„%1“ lässt sich nicht lesen: Kopfzeile %2: unerwartetes „%3“.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file is truncated: it ends in %2 %3 of %4.</source>
+        <translation>„%1“ lässt sich nicht lesen: die Datei ist abgeschnitten: sie endet in %2 %3 von %4.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: %2 %3 of %4: &apos;%5&apos; is not a finite number.</source>
+        <translation>„%1“ lässt sich nicht lesen: %2 %3 von %4: „%5“ ist keine endliche Zahl.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: %2 %3 of %4: list length is %5, outside [0, %6).</source>
+        <translation>„%1“ lässt sich nicht lesen: %2 %3 von %4: die Listenlänge ist %5, außerhalb von [0, %6).</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: %2 %3 of %4: vertex index is %5, outside [0, %6).</source>
+        <translation>„%1“ lässt sich nicht lesen: %2 %3 von %4: der Vertex-Index ist %5, außerhalb von [0, %6).</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: %2 %3 of %4: a face needs at least three vertices.</source>
+        <translation>„%1“ lässt sich nicht lesen: %2 %3 von %4: eine Fläche braucht mindestens drei Vertices.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: %2 %3 of %4: a coordinate is not finite.</source>
+        <translation>„%1“ lässt sich nicht lesen: %2 %3 von %4: eine Koordinate ist nicht endlich.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the vertex element lacks an x, y or z property.</source>
+        <translation>„%1“ lässt sich nicht lesen: dem Vertex-Element fehlt eine Eigenschaft x, y oder z.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file has more than one vertex element.</source>
+        <translation>„%1“ lässt sich nicht lesen: die Datei hat mehr als ein Vertex-Element.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the face element lacks a &apos;vertex_indices&apos; list.</source>
+        <translation>„%1“ lässt sich nicht lesen: dem Flächen-Element fehlt eine Liste „vertex_indices“.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file is truncated: element &apos;%2&apos; declares %3 entries that do not fit.</source>
+        <translation>„%1“ lässt sich nicht lesen: die Datei ist abgeschnitten: Element „%2“ gibt %3 Einträge an, die nicht hineinpassen.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file has no vertex element.</source>
+        <translation>„%1“ lässt sich nicht lesen: die Datei hat kein Vertex-Element.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: face %2 refers to vertex %3 but there are %4 vertices.</source>
+        <translation>„%1“ lässt sich nicht lesen: Fläche %2 verweist auf Vertex %3, es gibt aber %4 Vertices.</translation>
+    </message>
+    <message>
+        <source>Cannot write the mesh: vertex %1 is not a finite point.</source>
+        <translation>Das Netz lässt sich nicht schreiben: Vertex %1 ist kein endlicher Punkt.</translation>
+    </message>
+    <message>
+        <source>Cannot write the mesh: face %1 refers to vertex %2 but there are only %3 vertices.</source>
+        <translation>Das Netz lässt sich nicht schreiben: Fläche %1 verweist auf Vertex %2, es gibt aber nur %3 Vertices.</translation>
+    </message>
+    <message>
+        <source>The mesh has a vertex with a non-finite coordinate.</source>
+        <translation>Das Netz hat einen Vertex mit nicht endlicher Koordinate.</translation>
+    </message>
+    <message>
+        <source>Face %1 refers to vertex %2 but the mesh has %3 vertices.</source>
+        <translation>Fläche %1 verweist auf Vertex %2, das Netz hat aber %3 Vertices.</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: point %2 has %3 as its %4 coordinate; every coordinate must be a number.</source>
+        <translation>Skizze „%1“: Punkt %2 hat %3 als %4-Koordinate; jede Koordinate muss eine Zahl sein.</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; is not valid JSON: %2</source>
+        <translation>Skizze „%1“ ist kein gültiges JSON: %2</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; has a number out of range: %2</source>
+        <translation>Skizze „%1“ hat eine Zahl außerhalb des Wertebereichs: %2</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; must be a JSON object with a &quot;points&quot; array of [x, y] pairs.</source>
+        <translation>Skizze „%1“ muss ein JSON-Objekt mit einem Array „points“ aus [x, y]-Paaren sein.</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; has no &quot;points&quot; array of [x, y] pairs.</source>
+        <translation>Skizze „%1“ hat kein Array „points“ aus [x, y]-Paaren.</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: point %2 is not an [x, y] pair of numbers.</source>
+        <translation>Skizze „%1“: Punkt %2 ist kein [x, y]-Zahlenpaar.</translation>
+    </message>
+    <message>
+        <source>Cannot read sketch &quot;%1&quot;: unknown file type &quot;%2&quot;; use a .json or .svg file.</source>
+        <translation>Skizze „%1“ lässt sich nicht lesen: unbekannter Dateityp „%2“; verwenden Sie eine .json- oder .svg-Datei.</translation>
+    </message>
+    <message>
+        <source>Cannot read sketch file &quot;%1&quot;: it does not exist or is not readable.</source>
+        <translation>Skizzendatei „%1“ lässt sich nicht lesen: sie existiert nicht oder ist nicht lesbar.</translation>
+    </message>
+    <message>
+        <source>Cannot read sketch file &quot;%1&quot;: reading it failed.</source>
+        <translation>Skizzendatei „%1“ lässt sich nicht lesen: das Lesen ist fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; is not valid SVG: %2</source>
+        <translation>Skizze „%1“ ist kein gültiges SVG: %2</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; is not an SVG document (no &lt;svg&gt; root element).</source>
+        <translation>Skizze „%1“ ist kein SVG-Dokument (kein Wurzelelement &lt;svg&gt;).</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; contains no path, polyline or polygon to use as the stroke.</source>
+        <translation>Skizze „%1“ enthält keinen Pfad, keine Polylinie und kein Polygon als Strich.</translation>
+    </message>
+    <message>
+        <source>cannot export: the glTF exporter wrote invalid JSON</source>
+        <translation>Export nicht möglich: der glTF-Exporter hat ungültiges JSON geschrieben</translation>
+    </message>
+    <message>
+        <source>cannot export: the glTF exporter wrote an unknown component type</source>
+        <translation>Export nicht möglich: der glTF-Exporter hat einen unbekannten Komponententyp geschrieben</translation>
+    </message>
+    <message>
+        <source>cannot export: a glTF accessor lies outside its buffer</source>
+        <translation>Export nicht möglich: ein glTF-Accessor liegt außerhalb seines Puffers</translation>
+    </message>
+    <message>
+        <source>cannot export: the glTF exporter wrote a buffer view out of range</source>
+        <translation>Export nicht möglich: der glTF-Exporter hat eine Pufferansicht außerhalb des Bereichs geschrieben</translation>
+    </message>
+    <message>
+        <source>cannot export: the glTF exporter wrote no buffer</source>
+        <translation>Export nicht möglich: der glTF-Exporter hat keinen Puffer geschrieben</translation>
+    </message>
+    <message>
+        <source>cannot export: the COLLADA exporter wrote invalid XML</source>
+        <translation>Export nicht möglich: der COLLADA-Exporter hat ungültiges XML geschrieben</translation>
+    </message>
+    <message>
+        <source>cannot export an animation of nothing</source>
+        <translation>eine Animation von nichts lässt sich nicht exportieren</translation>
+    </message>
+    <message>
+        <source>cannot export an animation without keys</source>
+        <translation>eine Animation ohne Schlüsselbilder lässt sich nicht exportieren</translation>
+    </message>
+    <message>
+        <source>cannot export the animation: no node %1</source>
+        <translation>die Animation lässt sich nicht exportieren: kein Knoten %1</translation>
+    </message>
+    <message>
+        <source>cannot export: the unit scale must be positive</source>
+        <translation>Export nicht möglich: der Einheitenmaßstab muss positiv sein</translation>
+    </message>
+    <message>
+        <source>cannot export %1: unknown format &apos;%2&apos;; use .glb, .gltf, .fbx, .dae or .obj</source>
+        <translation>%1 lässt sich nicht exportieren: unbekanntes Format „%2“; verwenden Sie .glb, .gltf, .fbx, .dae oder .obj</translation>
+    </message>
+    <message>
+        <source>part &apos;%1&apos; has no skeleton to export</source>
+        <translation>Teil „%1“ hat kein Skelett zum Exportieren</translation>
+    </message>
+    <message>
+        <source>cannot write the rig: vertex %1 is not at a finite position</source>
+        <translation>das Rig lässt sich nicht schreiben: Vertex %1 liegt nicht an einer endlichen Position</translation>
+    </message>
+    <message>
+        <source>cannot write the rig: joint %1 is not at a finite position</source>
+        <translation>das Rig lässt sich nicht schreiben: Gelenk %1 liegt nicht an einer endlichen Position</translation>
+    </message>
+    <message>
+        <source>cannot write the rig: a weight of vertex %1 is not finite</source>
+        <translation>das Rig lässt sich nicht schreiben: ein Gewicht von Vertex %1 ist nicht endlich</translation>
+    </message>
+    <message>
+        <source>there is no part at index %1 (the document has %2 part)</source>
+        <translation>es gibt kein Teil mit Index %1 (das Dokument hat %2 Teil)</translation>
+    </message>
+    <message>
+        <source>there is no part at index %1 (the document has %2 parts)</source>
+        <translation>es gibt kein Teil mit Index %1 (das Dokument hat %2 Teile)</translation>
+    </message>
+    <message>
+        <source>&quot;part&quot; must be a part&apos;s name or its index (from 0)</source>
+        <translation>„part“ muss der Name eines Teils oder sein Index (ab 0) sein</translation>
+    </message>
+    <message>
+        <source>there is no part &quot;%1&quot;</source>
+        <translation>es gibt kein Teil „%1“</translation>
+    </message>
+    <message>
+        <source>%1 parts are named &quot;%2&quot;; refer to the part by its index</source>
+        <translation>%1 Teile heißen „%2“; verweisen Sie auf das Teil über seinen Index</translation>
+    </message>
+    <message>
+        <source>part &quot;%1&quot; has no bone %2</source>
+        <translation>Teil „%1“ hat keinen Knochen %2</translation>
+    </message>
+    <message>
+        <source>part &quot;%1&quot; has no joint %2</source>
+        <translation>Teil „%1“ hat kein Gelenk %2</translation>
+    </message>
+    <message>
+        <source>part &quot;%1&quot; has no skeleton</source>
+        <translation>Teil „%1“ hat kein Skelett</translation>
+    </message>
+    <message>
+        <source>&quot;mode&quot; must be &quot;add&quot;, &quot;subtract&quot;, &quot;replace&quot; or &quot;smooth&quot;</source>
+        <translation>„mode“ muss „add“, „subtract“, „replace“ oder „smooth“ sein</translation>
+    </message>
+    <message>
+        <source>&quot;falloff&quot; must be &quot;smooth&quot;, &quot;linear&quot;, &quot;sharp&quot; or &quot;constant&quot;</source>
+        <translation>„falloff“ muss „smooth“, „linear“, „sharp“ oder „constant“ sein</translation>
+    </message>
+    <message>
+        <source>&quot;locked&quot; must be a list of bone ids</source>
+        <translation>„locked“ muss eine Liste von Knochen-IDs sein</translation>
+    </message>
+    <message>
+        <source>a dab needs &quot;center&quot; and &quot;radius&quot;</source>
+        <translation>ein Tupfer braucht „center“ und „radius“</translation>
+    </message>
+    <message>
+        <source>the step needs &quot;center&quot; and &quot;radius&quot;</source>
+        <translation>der Schritt braucht „center“ und „radius“</translation>
+    </message>
+    <message>
+        <source>the step needs either &quot;center&quot; and &quot;radius&quot; or &quot;dabs&quot;</source>
+        <translation>der Schritt braucht entweder „center“ und „radius“ oder „dabs“</translation>
+    </message>
+    <message>
+        <source>&quot;dabs&quot; must be a non-empty list of {&quot;center&quot;, &quot;radius&quot;}</source>
+        <translation>„dabs“ muss eine nicht leere Liste von {&quot;center&quot;, &quot;radius&quot;} sein</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be a whole number from %2 to %3</source>
+        <translation>„%1“ muss eine ganze Zahl von %2 bis %3 sein</translation>
+    </message>
+    <message>
+        <source>the step needs &quot;%1&quot;</source>
+        <translation>der Schritt braucht „%1“</translation>
+    </message>
+    <message>
+        <source>the step needs either &quot;stroke&quot; (a sketch file) or &quot;points&quot;, not both</source>
+        <translation>der Schritt braucht entweder „stroke“ (eine Skizzendatei) oder „points“, nicht beides</translation>
+    </message>
+    <message>
+        <source>the step needs either &quot;joint&quot; and &quot;target&quot; (an IK drag) or &quot;rotations&quot;</source>
+        <translation>der Schritt braucht entweder „joint“ und „target“ (ein IK-Ziehen) oder „rotations“</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; goes with &quot;rotations&quot;, not &quot;target&quot;</source>
+        <translation>„%1“ gehört zu „rotations“, nicht zu „target“</translation>
+    </message>
+    <message>
+        <source>&quot;reach&quot; must be &quot;limb&quot; or &quot;body&quot;</source>
+        <translation>„reach“ muss „limb“ oder „body“ sein</translation>
+    </message>
+    <message>
+        <source>&quot;reach&quot; goes with &quot;target&quot; (an IK drag), not &quot;rotations&quot;</source>
+        <translation>„reach“ gehört zu „target“ (ein IK-Ziehen), nicht zu „rotations“</translation>
+    </message>
+    <message>
+        <source>&quot;interpolation&quot; must be &quot;constant&quot;, &quot;linear&quot; or &quot;smooth&quot;</source>
+        <translation>„interpolation“ muss „constant“, „linear“ oder „smooth“ sein</translation>
+    </message>
+    <message>
+        <source>&quot;playback&quot; must be &quot;hold&quot;, &quot;loop&quot; or &quot;ping_pong&quot;</source>
+        <translation>„playback“ muss „hold“, „loop“ oder „ping_pong“ sein</translation>
+    </message>
+    <message>
+        <source>&quot;times&quot; must be a list of seconds</source>
+        <translation>„times“ muss eine Liste von Sekunden sein</translation>
+    </message>
+    <message>
+        <source>&quot;keys&quot; must be a list of keys</source>
+        <translation>„keys“ muss eine Liste von Schlüsselbildern sein</translation>
+    </message>
+    <message>
+        <source>each key needs &quot;time&quot; and &quot;rotations&quot;</source>
+        <translation>jedes Schlüsselbild braucht „time“ und „rotations“</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be a whole frame</source>
+        <translation>„%1“ muss ein ganzes Bild sein</translation>
+    </message>
+    <message>
+        <source>&quot;mode&quot; must be &quot;snap&quot;, &quot;split&quot; or &quot;connect&quot;</source>
+        <translation>„mode“ muss „snap“, „split“ oder „connect“ sein</translation>
+    </message>
+    <message>
+        <source>&quot;reskin&quot; must be &quot;local&quot; or &quot;global&quot;</source>
+        <translation>„reskin“ muss „local“ oder „global“ sein</translation>
+    </message>
+    <message>
+        <source>the step needs either &quot;plane&quot; or &quot;stroke&quot; with &quot;view&quot;</source>
+        <translation>der Schritt braucht entweder „plane“ oder „stroke“ mit „view“</translation>
+    </message>
+    <message>
+        <source>&quot;plane&quot; needs &quot;point&quot; and &quot;normal&quot;</source>
+        <translation>„plane“ braucht „point“ und „normal“</translation>
+    </message>
+    <message>
+        <source>&quot;view&quot; needs &quot;direction&quot; and &quot;up&quot;</source>
+        <translation>„view“ braucht „direction“ und „up“</translation>
+    </message>
+    <message>
+        <source>the cut needs a stroke of two points or more</source>
+        <translation>der Schnitt braucht einen Strich aus zwei oder mehr Punkten</translation>
+    </message>
+    <message>
+        <source>&quot;style&quot; must be &quot;smooth&quot; or &quot;sharp&quot;</source>
+        <translation>„style“ muss „smooth“ oder „sharp“ sein</translation>
+    </message>
+    <message>
+        <source>&quot;names&quot; must be two names</source>
+        <translation>„names“ muss aus zwei Namen bestehen</translation>
+    </message>
+    <message>
+        <source>&quot;parts&quot; must be a non-empty list of parts, without &quot;part&quot;</source>
+        <translation>„parts“ muss eine nicht leere Liste von Teilen sein, ohne „part“</translation>
+    </message>
+    <message>
+        <source>unknown command &quot;%1&quot;</source>
+        <translation>unbekannter Befehl „%1“</translation>
+    </message>
+    <message>
+        <source>unknown field &quot;%1&quot;</source>
+        <translation>unbekanntes Feld „%1“</translation>
+    </message>
+    <message>
+        <source>this is not a RigMesh recipe (it needs &quot;format&quot;: &quot;%1&quot;)</source>
+        <translation>dies ist kein RigMesh-Rezept (es braucht &quot;format&quot;: &quot;%1&quot;)</translation>
+    </message>
+    <message>
+        <source>the recipe has no valid &quot;version&quot;</source>
+        <translation>das Rezept hat keine gültige „version“</translation>
+    </message>
+    <message>
+        <source>the recipe is of version %1; this RigMesh Studio reads recipes of version %2 and older</source>
+        <translation>das Rezept hat Version %1; dieses RigMesh Studio liest Rezepte bis Version %2</translation>
+    </message>
+    <message>
+        <source>the recipe has no list of &quot;steps&quot;</source>
+        <translation>das Rezept hat keine Liste „steps“</translation>
+    </message>
+    <message>
+        <source>%1 is not valid JSON: %2</source>
+        <translation>%1 ist kein gültiges JSON: %2</translation>
+    </message>
+    <message>
+        <source>%1 has a number out of range: %2</source>
+        <translation>%1 hat eine Zahl außerhalb des Wertebereichs: %2</translation>
+    </message>
+    <message>
+        <source>cannot read the recipe %1</source>
+        <translation>das Rezept %1 lässt sich nicht lesen</translation>
+    </message>
+    <message>
+        <source>cannot write %1: the folder does not exist or is read-only</source>
+        <translation>%1 kann nicht geschrieben werden: der Ordner existiert nicht oder ist schreibgeschützt</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>&quot;edgeLength&quot; must be 0 (automatic) or a positive length</source>
+        <translation>„edgeLength“ muss 0 (automatisch) oder eine positive Länge sein</translation>
+    </message>
+    <message>
+        <source>&quot;points&quot; must be a list of [x, y] points</source>
+        <translation>„points“ muss eine Liste von [x, y]-Punkten sein</translation>
+    </message>
+    <message>
+        <source>&quot;rotations&quot; must be an object {&quot;&lt;joint id&gt;&quot;: [w, x, y, z], ...}</source>
+        <translation>„rotations“ muss ein Objekt {&quot;&lt;joint id&gt;&quot;: [w, x, y, z], ...} sein</translation>
+    </message>
+    <message>
+        <source>&quot;rotations&quot; names joint %1 twice</source>
+        <translation>„rotations“ nennt Gelenk %1 zweimal</translation>
+    </message>
+    <message>
+        <source>The surface of the part is not a manifold.</source>
+        <translation>Die Oberfläche des Teils ist keine Mannigfaltigkeit.</translation>
+    </message>
+    <message>
+        <source>The surface of the part has a hole, so it does not bound a volume.</source>
+        <translation>Die Oberfläche des Teils hat ein Loch und umschließt daher kein Volumen.</translation>
+    </message>
+    <message>
+        <source>The surface of the cut is not a manifold.</source>
+        <translation>Die Oberfläche des Schnitts ist keine Mannigfaltigkeit.</translation>
+    </message>
+    <message>
+        <source>The surface of the target part is not a manifold.</source>
+        <translation>Die Oberfläche des Zielteils ist keine Mannigfaltigkeit.</translation>
+    </message>
+    <message>
+        <source>The surface of the target part has a hole, so it does not bound a volume.</source>
+        <translation>Die Oberfläche des Zielteils hat ein Loch und umschließt daher kein Volumen.</translation>
+    </message>
+    <message>
+        <source>The surface of the dragged part is not a manifold.</source>
+        <translation>Die Oberfläche des gezogenen Teils ist keine Mannigfaltigkeit.</translation>
+    </message>
+    <message>
+        <source>The surface of the dragged part has a hole, so it does not bound a volume.</source>
+        <translation>Die Oberfläche des gezogenen Teils hat ein Loch und umschließt daher kein Volumen.</translation>
+    </message>
+    <message>
+        <source>The surface of the mesh is not a manifold.</source>
+        <translation>Die Oberfläche des Netzes ist keine Mannigfaltigkeit.</translation>
+    </message>
+    <message>
+        <source>The surface of the mesh has a hole, so it does not bound a volume.</source>
+        <translation>Die Oberfläche des Netzes hat ein Loch und umschließt daher kein Volumen.</translation>
+    </message>
+    <message>
+        <source>cannot repair the FBX file: not a binary FBX file</source>
+        <translation>die FBX-Datei lässt sich nicht reparieren: keine binäre FBX-Datei</translation>
+    </message>
+    <message>
+        <source>cannot repair the FBX file: no node records</source>
+        <translation>die FBX-Datei lässt sich nicht reparieren: keine Knoteneinträge</translation>
+    </message>
+    <message>
+        <source>cannot repair the FBX file: a record runs past the end of the file</source>
+        <translation>die FBX-Datei lässt sich nicht reparieren: ein Eintrag reicht über das Dateiende hinaus</translation>
+    </message>
+    <message>
+        <source>cannot repair the FBX file: a nested record is out of range</source>
+        <translation>die FBX-Datei lässt sich nicht reparieren: ein verschachtelter Eintrag liegt außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <source>cannot export: vertex %1 of mesh &apos;%2&apos; is not a finite number</source>
+        <translation>Export nicht möglich: Vertex %1 von Netz „%2“ ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>cannot export: the normal of vertex %1 of mesh &apos;%2&apos; is not a finite number</source>
+        <translation>Export nicht möglich: die Normale von Vertex %1 von Netz „%2“ ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>cannot export: the bind matrix of bone &apos;%1&apos; is not a finite number</source>
+        <translation>Export nicht möglich: die Bindungsmatrix von Knochen „%1“ ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>cannot export: a weight of bone &apos;%1&apos; is not a finite number</source>
+        <translation>Export nicht möglich: ein Gewicht von Knochen „%1“ ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>cannot export: the transform of node &apos;%1&apos; is not a finite number</source>
+        <translation>Export nicht möglich: die Transformation von Knoten „%1“ ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>cannot export: a key of &apos;%1&apos; is not a finite number</source>
+        <translation>Export nicht möglich: ein Schlüsselbild von „%1“ ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>cannot export: the animation&apos;s duration is not a finite number</source>
+        <translation>Export nicht möglich: die Dauer der Animation ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: the flow gave no curve.</source>
+        <translation>Im Netz ließ sich kein Skelett finden: der Fluss ergab keine Kurve.</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: the curve is too short for a bone.</source>
+        <translation>Im Netz ließ sich kein Skelett finden: die Kurve ist für einen Knochen zu kurz.</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: the flow contracted it to a point.</source>
+        <translation>Im Netz ließ sich kein Skelett finden: der Fluss hat es auf einen Punkt zusammengezogen.</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: the mesh has too few vertices.</source>
+        <translation>Im Netz ließ sich kein Skelett finden: das Netz hat zu wenige Vertices.</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: the mesh has no extent.</source>
+        <translation>Im Netz ließ sich kein Skelett finden: das Netz hat keine Ausdehnung.</translation>
+    </message>
+    <message>
+        <source>cannot write %1: the glTF exporter wrote no .bin</source>
+        <translation>%1 kann nicht geschrieben werden: der glTF-Exporter hat keine .bin geschrieben</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>
@@ -977,50 +1841,10 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::model::BoneEditCommand</name>
-    <message>
-        <source>The part has no skeleton to edit.</source>
-        <translation>Das Teil hat kein Skelett zum Bearbeiten.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::ClipListCommand</name>
-    <message>
-        <source>%1 already has a clip named &quot;%2&quot;.</source>
-        <translation>%1 hat bereits einen Clip namens „%2“.</translation>
-    </message>
-    <message>
-        <source>%1 has no clip named &quot;%2&quot;.</source>
-        <translation>%1 hat keinen Clip namens „%2“.</translation>
-    </message>
-    <message>
-        <source>%1 has only this clip: a part keeps one clip (delete its keys instead).</source>
-        <translation>%1 hat nur diesen Clip: ein Teil behält einen Clip (löschen Sie stattdessen seine Schlüsselbilder).</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::CutPartCommand</name>
-    <message>
-        <source>The part has no surface to cut.</source>
-        <translation>Das Teil hat keine Oberfläche zum Schneiden.</translation>
-    </message>
-</context>
-<context>
     <name>rigmesh::model::Document</name>
     <message>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::DocumentExport</name>
-    <message>
-        <source>there are no parts to export</source>
-        <translation>es gibt keine Teile zum Exportieren</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not rigged yet: export it as OBJ, or hide it and export the visible parts</source>
-        <translation>„%1“ ist noch nicht geriggt: exportieren Sie es als OBJ oder blenden Sie es aus und exportieren Sie die sichtbaren Teile</translation>
     </message>
 </context>
 <context>
@@ -1055,42 +1879,6 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::model::MergePartsCommand</name>
-    <message>
-        <source>A part cannot be merged into itself.</source>
-        <translation>Ein Teil lässt sich nicht mit sich selbst zusammenführen.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::MoveKeysCommand</name>
-    <message>
-        <source>There are no keys to move.</source>
-        <translation>Es gibt keine Schlüsselbilder zum Verschieben.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::PartBuilder</name>
-    <message>
-        <source>The target edge length must be 0 (automatic) or a positive length.</source>
-        <translation>Die Ziel-Kantenlänge muss 0 (automatisch) oder eine positive Länge sein.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::PartClips</name>
-    <message>
-        <source>A clip name must have 1 to %1 characters.</source>
-        <translation>Ein Clipname muss 1 bis %1 Zeichen haben.</translation>
-    </message>
-    <message>
-        <source>A clip name must not start or end with a space.</source>
-        <translation>Ein Clipname darf nicht mit einem Leerzeichen beginnen oder enden.</translation>
-    </message>
-    <message>
-        <source>A clip name must not hold control characters.</source>
-        <translation>Ein Clipname darf keine Steuerzeichen enthalten.</translation>
-    </message>
-</context>
-<context>
     <name>rigmesh::model::PartNode</name>
     <message>
         <source>Joint %1</source>
@@ -1098,24 +1886,10 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::model::PasteKeysCommand</name>
-    <message>
-        <source>There are no keys to paste.</source>
-        <translation>Es gibt keine Schlüsselbilder zum Einfügen.</translation>
-    </message>
-</context>
-<context>
     <name>rigmesh::model::PoseChange</name>
     <message>
         <source>%1 and key</source>
         <translation>%1 und Schlüsselbild setzen</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::PoseDrag</name>
-    <message>
-        <source>The part has no skeleton to pose.</source>
-        <translation>Das Teil hat kein Skelett zum Posieren.</translation>
     </message>
 </context>
 <context>
@@ -1174,51 +1948,6 @@
     <message>
         <source>%1 bones</source>
         <translation>%1 Knochen</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::SetBoneLockCommand</name>
-    <message>
-        <source>The part has no bone %1 to lock.</source>
-        <translation>Das Teil hat keinen Knochen %1 zum Sperren.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::SkinningEditCommand</name>
-    <message>
-        <source>The part has no skeleton, so it has no weights to paint.</source>
-        <translation>Das Teil hat kein Skelett und damit keine Gewichte zum Malen.</translation>
-    </message>
-    <message>
-        <source>The part has no skeleton, so it has no weights to lock.</source>
-        <translation>Das Teil hat kein Skelett und damit keine Gewichte zum Sperren.</translation>
-    </message>
-    <message>
-        <source>The part has no skeleton, so it has no weights to clean up.</source>
-        <translation>Das Teil hat kein Skelett und damit keine Gewichte zum Bereinigen.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::Timeline</name>
-    <message>
-        <source>The frame rate must be between %1 and %2 frames per second.</source>
-        <translation>Die Bildrate muss zwischen %1 und %2 Bildern pro Sekunde liegen.</translation>
-    </message>
-    <message>
-        <source>The frame range must lie within frames 0 to %1.</source>
-        <translation>Der Bildbereich muss zwischen den Bildern 0 und %1 liegen.</translation>
-    </message>
-    <message>
-        <source>The frame range must end after it starts.</source>
-        <translation>Der Bildbereich muss nach seinem Anfang enden.</translation>
-    </message>
-    <message>
-        <source>The frame range is longer than a clip can be.</source>
-        <translation>Der Bildbereich ist länger, als ein Clip sein kann.</translation>
-    </message>
-    <message>
-        <source>Frame %1 is outside frames 0 to %2.</source>
-        <translation>Bild %1 liegt außerhalb der Bilder 0 bis %2.</translation>
     </message>
 </context>
 <context>

@@ -729,6 +729,870 @@
         <source>This part has no left-right mirror plane (its two sides differ by more than 2% of its size), so X-mirror cannot paint it.</source>
         <translation>Esta pieza no tiene plano de simetría izquierda-derecha (sus dos lados difieren en más del 2 % de su tamaño), así que el espejo en X no puede pintarla.</translation>
     </message>
+    <message>
+        <source>No part with id %1 in the document.</source>
+        <translation>No hay ninguna pieza con el identificador %1 en el documento.</translation>
+    </message>
+    <message>
+        <source>Part %1 has no joint %2.</source>
+        <translation>La pieza %1 no tiene la articulación %2.</translation>
+    </message>
+    <message>
+        <source>The pose of part %1 has a non-finite or zero rotation or translation.</source>
+        <translation>La pose de la pieza %1 tiene una rotación o traslación no finita o nula.</translation>
+    </message>
+    <message>
+        <source>The key at %1 s of part %2 has a non-finite or zero rotation or translation.</source>
+        <translation>La clave en %1 s de la pieza %2 tiene una rotación o traslación no finita o nula.</translation>
+    </message>
+    <message>
+        <source>The starting pose of part %1 has a non-finite or zero rotation or translation.</source>
+        <translation>La pose inicial de la pieza %1 tiene una rotación o traslación no finita o nula.</translation>
+    </message>
+    <message>
+        <source>The new pose of part %1 has a non-finite or zero rotation or translation.</source>
+        <translation>La nueva pose de la pieza %1 tiene una rotación o traslación no finita o nula.</translation>
+    </message>
+    <message>
+        <source>The starting pose names joint %1, which part %2 does not have.</source>
+        <translation>La pose inicial nombra la articulación %1, que la pieza %2 no tiene.</translation>
+    </message>
+    <message>
+        <source>The new pose names joint %1, which part %2 does not have.</source>
+        <translation>La nueva pose nombra la articulación %1, que la pieza %2 no tiene.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton to pose.</source>
+        <translation>La pieza no tiene esqueleto que posar.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton to edit.</source>
+        <translation>La pieza no tiene esqueleto que editar.</translation>
+    </message>
+    <message>
+        <source>The part has no surface to cut.</source>
+        <translation>La pieza no tiene superficie que cortar.</translation>
+    </message>
+    <message>
+        <source>The cut&apos;s view needs a direction and an up that is not along it.</source>
+        <translation>La vista del corte necesita una dirección y un «arriba» que no vaya en esa dirección.</translation>
+    </message>
+    <message>
+        <source>A part cannot be merged into itself.</source>
+        <translation>Una pieza no se puede fusionar consigo misma.</translation>
+    </message>
+    <message>
+        <source>%1 has no joint %2</source>
+        <translation>%1 no tiene la articulación %2</translation>
+    </message>
+    <message>
+        <source>The parts to merge are no longer in the document.</source>
+        <translation>Las piezas que fusionar ya no están en el documento.</translation>
+    </message>
+    <message>
+        <source>There is no such part.</source>
+        <translation>No existe esa pieza.</translation>
+    </message>
+    <message>
+        <source>The part is no longer in the document.</source>
+        <translation>La pieza ya no está en el documento.</translation>
+    </message>
+    <message>
+        <source>There is no part to rig.</source>
+        <translation>No hay ninguna pieza a la que poner un rig.</translation>
+    </message>
+    <message>
+        <source>The part changed while it was rigged; nothing was changed.</source>
+        <translation>La pieza cambió mientras se le ponía el rig; no se ha cambiado nada.</translation>
+    </message>
+    <message>
+        <source>The parts to rig together must be given in document order, once each.</source>
+        <translation>Las piezas a las que poner un rig juntas deben darse en el orden del documento, una vez cada una.</translation>
+    </message>
+    <message>
+        <source>There is no part to recompute the weights of.</source>
+        <translation>No hay ninguna pieza cuyos pesos recalcular.</translation>
+    </message>
+    <message>
+        <source>The part changed while its weights were recomputed; nothing was changed.</source>
+        <translation>La pieza cambió mientras se recalculaban sus pesos; no se ha cambiado nada.</translation>
+    </message>
+    <message>
+        <source>%1 holds no mesh to import</source>
+        <translation>%1 no contiene ninguna malla que importar</translation>
+    </message>
+    <message>
+        <source>there are no parts to export</source>
+        <translation>no hay piezas que exportar</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not rigged yet: export it as OBJ, or hide it and export the visible parts</source>
+        <translation>«%1» todavía no tiene rig: expórtela como OBJ, u ocúltela y exporte las piezas visibles</translation>
+    </message>
+    <message>
+        <source>The history step &quot;%1&quot; cannot be written as a recipe step.</source>
+        <translation>El paso del historial «%1» no se puede escribir como paso de receta.</translation>
+    </message>
+    <message>
+        <source>lists and maps are nested more than %1 levels deep</source>
+        <translation>las listas y los mapas están anidados a más de %1 niveles de profundidad</translation>
+    </message>
+    <message>
+        <source>The frame rate must be between %1 and %2 frames per second.</source>
+        <translation>La velocidad de fotogramas debe estar entre %1 y %2 fotogramas por segundo.</translation>
+    </message>
+    <message>
+        <source>The frame range must lie within frames 0 to %1.</source>
+        <translation>El rango de fotogramas debe estar entre los fotogramas 0 y %1.</translation>
+    </message>
+    <message>
+        <source>The frame range must end after it starts.</source>
+        <translation>El rango de fotogramas debe terminar después de empezar.</translation>
+    </message>
+    <message>
+        <source>The frame range is longer than a clip can be.</source>
+        <translation>El rango de fotogramas es más largo de lo que puede ser un clip.</translation>
+    </message>
+    <message>
+        <source>Frame %1 is outside frames 0 to %2.</source>
+        <translation>El fotograma %1 está fuera de los fotogramas 0 a %2.</translation>
+    </message>
+    <message>
+        <source>A clip name must have 1 to %1 characters.</source>
+        <translation>Un nombre de clip debe tener de 1 a %1 caracteres.</translation>
+    </message>
+    <message>
+        <source>A clip name must not start or end with a space.</source>
+        <translation>Un nombre de clip no debe empezar ni terminar con un espacio.</translation>
+    </message>
+    <message>
+        <source>A clip name must not hold control characters.</source>
+        <translation>Un nombre de clip no debe contener caracteres de control.</translation>
+    </message>
+    <message>
+        <source>The part has two clips named &quot;%1&quot;.</source>
+        <translation>La pieza tiene dos clips llamados «%1».</translation>
+    </message>
+    <message>
+        <source>%1 already has a clip named &quot;%2&quot;.</source>
+        <translation>%1 ya tiene un clip llamado «%2».</translation>
+    </message>
+    <message>
+        <source>%1 has no clip named &quot;%2&quot;.</source>
+        <translation>%1 no tiene ningún clip llamado «%2».</translation>
+    </message>
+    <message>
+        <source>%1 has only this clip: a part keeps one clip (delete its keys instead).</source>
+        <translation>%1 solo tiene este clip: una pieza conserva un clip (elimine sus claves en su lugar).</translation>
+    </message>
+    <message>
+        <source>There are no keys to paste.</source>
+        <translation>No hay claves que pegar.</translation>
+    </message>
+    <message>
+        <source>There are no keys to move.</source>
+        <translation>No hay claves que mover.</translation>
+    </message>
+    <message>
+        <source>The keys&apos; offset is not a finite number of seconds.</source>
+        <translation>El desplazamiento de las claves no es un número finito de segundos.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton, so it has no weights to paint.</source>
+        <translation>La pieza no tiene esqueleto, así que no tiene pesos que pintar.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton, so it has no weights to lock.</source>
+        <translation>La pieza no tiene esqueleto, así que no tiene pesos que bloquear.</translation>
+    </message>
+    <message>
+        <source>The part has no skeleton, so it has no weights to clean up.</source>
+        <translation>La pieza no tiene esqueleto, así que no tiene pesos que limpiar.</translation>
+    </message>
+    <message>
+        <source>Only a part with a skeleton has weights to recompute.</source>
+        <translation>Solo una pieza con esqueleto tiene pesos que recalcular.</translation>
+    </message>
+    <message>
+        <source>Check Rig needs at least one influence and a positive tolerance.</source>
+        <translation>Comprobar rig necesita al menos una influencia y una tolerancia positiva.</translation>
+    </message>
+    <message>
+        <source>A skin weight refers to bone %1, which the skeleton does not have.</source>
+        <translation>Un peso de piel se refiere al hueso %1, que el esqueleto no tiene.</translation>
+    </message>
+    <message>
+        <source>Skin weights need at least one bone.</source>
+        <translation>Los pesos de piel necesitan al menos un hueso.</translation>
+    </message>
+    <message>
+        <source>Skin weights need at least one bone with finite end points.</source>
+        <translation>Los pesos de piel necesitan al menos un hueso con extremos finitos.</translation>
+    </message>
+    <message>
+        <source>The mesh has a vertex with a non-finite position.</source>
+        <translation>La malla tiene un vértice con una posición no finita.</translation>
+    </message>
+    <message>
+        <source>The mesh has a triangle that refers to a missing vertex.</source>
+        <translation>La malla tiene un triángulo que se refiere a un vértice que no existe.</translation>
+    </message>
+    <message>
+        <source>A bone cannot connect joint %1 to itself.</source>
+        <translation>Un hueso no puede unir la articulación %1 consigo misma.</translation>
+    </message>
+    <message>
+        <source>Only existing joints can be merged.</source>
+        <translation>Solo se pueden fusionar articulaciones existentes.</translation>
+    </message>
+    <message>
+        <source>The root joint %1 cannot hang from a bone.</source>
+        <translation>La articulación raíz %1 no puede colgar de un hueso.</translation>
+    </message>
+    <message>
+        <source>The skeleton has no bone %1.</source>
+        <translation>El esqueleto no tiene el hueso %1.</translation>
+    </message>
+    <message>
+        <source>Cannot choose a root for a skeleton without joints.</source>
+        <translation>No se puede elegir una raíz para un esqueleto sin articulaciones.</translation>
+    </message>
+    <message>
+        <source>the skeleton of this shape is invalid: %1</source>
+        <translation>el esqueleto de esta forma no es válido: %1</translation>
+    </message>
+    <message>
+        <source>subdividing &apos;%1&apos; failed: %2</source>
+        <translation>no se pudo subdividir «%1»: %2</translation>
+    </message>
+    <message>
+        <source>decimating &apos;%1&apos; failed: %2</source>
+        <translation>no se pudo diezmar «%1»: %2</translation>
+    </message>
+    <message>
+        <source>the pose demo needs a part with bones</source>
+        <translation>la demostración de poses necesita una pieza con huesos</translation>
+    </message>
+    <message>
+        <source>the outline has no elongated part to inflate: draw a longer shape</source>
+        <translation>el contorno no tiene ninguna parte alargada que inflar: dibuje una forma más larga</translation>
+    </message>
+    <message>
+        <source>a patch boundary needs at least three points</source>
+        <translation>el borde de un parche necesita al menos tres puntos</translation>
+    </message>
+    <message>
+        <source>the target edge length must be positive</source>
+        <translation>la longitud de arista objetivo debe ser positiva</translation>
+    </message>
+    <message>
+        <source>the edge length is too small for this patch: %1 lattice rows or columns</source>
+        <translation>la longitud de arista es demasiado pequeña para este parche: %1 filas o columnas de retícula</translation>
+    </message>
+    <message>
+        <source>the edge length is too small for this patch: %1 lattice points</source>
+        <translation>la longitud de arista es demasiado pequeña para este parche: %1 puntos de retícula</translation>
+    </message>
+    <message>
+        <source>least-squares smoothing needs at least one anchored vertex</source>
+        <translation>el suavizado por mínimos cuadrados necesita al menos un vértice anclado</translation>
+    </message>
+    <message>
+        <source>The target edge length must be 0 (automatic) or a positive length.</source>
+        <translation>La longitud de arista objetivo debe ser 0 (automática) o una longitud positiva.</translation>
+    </message>
+    <message>
+        <source>Cannot open &apos;%1&apos;: the file does not exist or is not readable.</source>
+        <translation>No se puede abrir «%1»: el archivo no existe o no se puede leer.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: reading the file failed.</source>
+        <translation>No se puede leer «%1»: la lectura del archivo falló.</translation>
+    </message>
+    <message>
+        <source>Unsupported mesh file type &apos;%1&apos;: use .obj, .off or .ply.</source>
+        <translation>Tipo de archivo de malla no admitido «%1»: use .obj, .off o .ply.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: a vertex needs three coordinates.</source>
+        <translation>No se puede leer «%1»: línea %2: un vértice necesita tres coordenadas.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: a face needs at least three vertices.</source>
+        <translation>No se puede leer «%1»: línea %2: una cara necesita al menos tres vértices.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: face refers to vertex %3 but only %4 vertices are defined before it.</source>
+        <translation>No se puede leer «%1»: línea %2: la cara se refiere al vértice %3, pero antes solo hay %4 vértices definidos.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: &apos;%3&apos; is not a finite number.</source>
+        <translation>No se puede leer «%1»: línea %2: «%3» no es un número finito.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: &apos;%3&apos; is not an integer.</source>
+        <translation>No se puede leer «%1»: línea %2: «%3» no es un número entero.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: invalid count &apos;%3&apos;.</source>
+        <translation>No se puede leer «%1»: línea %2: cantidad no válida «%3».</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file ends early, while expecting the OFF header.</source>
+        <translation>No se puede leer «%1»: el archivo termina antes de tiempo, cuando se esperaba la cabecera OFF.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file ends early, while expecting the vertex and face counts.</source>
+        <translation>No se puede leer «%1»: el archivo termina antes de tiempo, cuando se esperaba el número de vértices y caras.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file ends early, while expecting vertex %2 of %3.</source>
+        <translation>No se puede leer «%1»: el archivo termina antes de tiempo, cuando se esperaba el vértice %2 de %3.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file ends early, while expecting face %2 of %3.</source>
+        <translation>No se puede leer «%1»: el archivo termina antes de tiempo, cuando se esperaba la cara %2 de %3.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file does not start with &apos;OFF&apos;.</source>
+        <translation>No se puede leer «%1»: el archivo no empieza por «OFF».</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: expected the vertex and face counts.</source>
+        <translation>No se puede leer «%1»: línea %2: se esperaba el número de vértices y caras.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: a face needs a corner count of at least 3 and that many vertex indices.</source>
+        <translation>No se puede leer «%1»: línea %2: una cara necesita un número de esquinas de al menos 3 y ese número de índices de vértice.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: line %2: face refers to vertex %3 but there are %4 vertices.</source>
+        <translation>No se puede leer «%1»: línea %2: la cara se refiere al vértice %3, pero hay %4 vértices.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file does not start with &apos;ply&apos;.</source>
+        <translation>No se puede leer «%1»: el archivo no empieza por «ply».</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the header has no &apos;end_header&apos; line.</source>
+        <translation>No se puede leer «%1»: la cabecera no tiene la línea «end_header».</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the header has no &apos;format&apos; line.</source>
+        <translation>No se puede leer «%1»: la cabecera no tiene la línea «format».</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: unknown property type &apos;%3&apos;.</source>
+        <translation>No se puede leer «%1»: línea %2 de la cabecera: tipo de propiedad desconocido «%3».</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: unknown format &apos;%3&apos;.</source>
+        <translation>No se puede leer «%1»: línea %2 de la cabecera: formato desconocido «%3».</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: &apos;%3&apos; is not an integer.</source>
+        <translation>No se puede leer «%1»: línea %2 de la cabecera: «%3» no es un número entero.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: invalid element count &apos;%3&apos;.</source>
+        <translation>No se puede leer «%1»: línea %2 de la cabecera: número de elementos no válido «%3».</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: a list count must have an integer type.</source>
+        <translation>No se puede leer «%1»: línea %2 de la cabecera: la longitud de una lista debe tener un tipo entero.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: malformed property line.</source>
+        <translation>No se puede leer «%1»: línea %2 de la cabecera: línea de propiedad mal formada.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: header line %2: unexpected &apos;%3&apos;.</source>
+        <translation>No se puede leer «%1»: línea %2 de la cabecera: «%3» inesperado.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file is truncated: it ends in %2 %3 of %4.</source>
+        <translation>No se puede leer «%1»: el archivo está truncado: termina en %2 %3 de %4.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: %2 %3 of %4: &apos;%5&apos; is not a finite number.</source>
+        <translation>No se puede leer «%1»: %2 %3 de %4: «%5» no es un número finito.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: %2 %3 of %4: list length is %5, outside [0, %6).</source>
+        <translation>No se puede leer «%1»: %2 %3 de %4: la longitud de la lista es %5, fuera de [0, %6).</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: %2 %3 of %4: vertex index is %5, outside [0, %6).</source>
+        <translation>No se puede leer «%1»: %2 %3 de %4: el índice de vértice es %5, fuera de [0, %6).</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: %2 %3 of %4: a face needs at least three vertices.</source>
+        <translation>No se puede leer «%1»: %2 %3 de %4: una cara necesita al menos tres vértices.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: %2 %3 of %4: a coordinate is not finite.</source>
+        <translation>No se puede leer «%1»: %2 %3 de %4: una coordenada no es finita.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the vertex element lacks an x, y or z property.</source>
+        <translation>No se puede leer «%1»: al elemento de vértices le falta una propiedad x, y o z.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file has more than one vertex element.</source>
+        <translation>No se puede leer «%1»: el archivo tiene más de un elemento de vértices.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the face element lacks a &apos;vertex_indices&apos; list.</source>
+        <translation>No se puede leer «%1»: al elemento de caras le falta una lista «vertex_indices».</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file is truncated: element &apos;%2&apos; declares %3 entries that do not fit.</source>
+        <translation>No se puede leer «%1»: el archivo está truncado: el elemento «%2» declara %3 entradas que no caben.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: the file has no vertex element.</source>
+        <translation>No se puede leer «%1»: el archivo no tiene ningún elemento de vértices.</translation>
+    </message>
+    <message>
+        <source>Cannot read &apos;%1&apos;: face %2 refers to vertex %3 but there are %4 vertices.</source>
+        <translation>No se puede leer «%1»: la cara %2 se refiere al vértice %3, pero hay %4 vértices.</translation>
+    </message>
+    <message>
+        <source>Cannot write the mesh: vertex %1 is not a finite point.</source>
+        <translation>No se puede escribir la malla: el vértice %1 no es un punto finito.</translation>
+    </message>
+    <message>
+        <source>Cannot write the mesh: face %1 refers to vertex %2 but there are only %3 vertices.</source>
+        <translation>No se puede escribir la malla: la cara %1 se refiere al vértice %2, pero solo hay %3 vértices.</translation>
+    </message>
+    <message>
+        <source>The mesh has a vertex with a non-finite coordinate.</source>
+        <translation>La malla tiene un vértice con una coordenada no finita.</translation>
+    </message>
+    <message>
+        <source>Face %1 refers to vertex %2 but the mesh has %3 vertices.</source>
+        <translation>La cara %1 se refiere al vértice %2, pero la malla tiene %3 vértices.</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: point %2 has %3 as its %4 coordinate; every coordinate must be a number.</source>
+        <translation>Boceto «%1»: el punto %2 tiene %3 como coordenada %4; cada coordenada debe ser un número.</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; is not valid JSON: %2</source>
+        <translation>El boceto «%1» no es JSON válido: %2</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; has a number out of range: %2</source>
+        <translation>El boceto «%1» tiene un número fuera de rango: %2</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; must be a JSON object with a &quot;points&quot; array of [x, y] pairs.</source>
+        <translation>El boceto «%1» debe ser un objeto JSON con una matriz «points» de pares [x, y].</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; has no &quot;points&quot; array of [x, y] pairs.</source>
+        <translation>El boceto «%1» no tiene ninguna matriz «points» de pares [x, y].</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: point %2 is not an [x, y] pair of numbers.</source>
+        <translation>Boceto «%1»: el punto %2 no es un par de números [x, y].</translation>
+    </message>
+    <message>
+        <source>Cannot read sketch &quot;%1&quot;: unknown file type &quot;%2&quot;; use a .json or .svg file.</source>
+        <translation>No se puede leer el boceto «%1»: tipo de archivo desconocido «%2»; use un archivo .json o .svg.</translation>
+    </message>
+    <message>
+        <source>Cannot read sketch file &quot;%1&quot;: it does not exist or is not readable.</source>
+        <translation>No se puede leer el archivo de boceto «%1»: no existe o no se puede leer.</translation>
+    </message>
+    <message>
+        <source>Cannot read sketch file &quot;%1&quot;: reading it failed.</source>
+        <translation>No se puede leer el archivo de boceto «%1»: la lectura falló.</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; is not valid SVG: %2</source>
+        <translation>El boceto «%1» no es SVG válido: %2</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; is not an SVG document (no &lt;svg&gt; root element).</source>
+        <translation>El boceto «%1» no es un documento SVG (no hay elemento raíz &lt;svg&gt;).</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot; contains no path, polyline or polygon to use as the stroke.</source>
+        <translation>El boceto «%1» no contiene ninguna ruta, polilínea ni polígono que usar como trazo.</translation>
+    </message>
+    <message>
+        <source>cannot export: the glTF exporter wrote invalid JSON</source>
+        <translation>no se puede exportar: el exportador glTF escribió JSON no válido</translation>
+    </message>
+    <message>
+        <source>cannot export: the glTF exporter wrote an unknown component type</source>
+        <translation>no se puede exportar: el exportador glTF escribió un tipo de componente desconocido</translation>
+    </message>
+    <message>
+        <source>cannot export: a glTF accessor lies outside its buffer</source>
+        <translation>no se puede exportar: un accessor glTF queda fuera de su búfer</translation>
+    </message>
+    <message>
+        <source>cannot export: the glTF exporter wrote a buffer view out of range</source>
+        <translation>no se puede exportar: el exportador glTF escribió una vista de búfer fuera de rango</translation>
+    </message>
+    <message>
+        <source>cannot export: the glTF exporter wrote no buffer</source>
+        <translation>no se puede exportar: el exportador glTF no escribió ningún búfer</translation>
+    </message>
+    <message>
+        <source>cannot export: the COLLADA exporter wrote invalid XML</source>
+        <translation>no se puede exportar: el exportador COLLADA escribió XML no válido</translation>
+    </message>
+    <message>
+        <source>cannot export an animation of nothing</source>
+        <translation>no se puede exportar una animación de nada</translation>
+    </message>
+    <message>
+        <source>cannot export an animation without keys</source>
+        <translation>no se puede exportar una animación sin claves</translation>
+    </message>
+    <message>
+        <source>cannot export the animation: no node %1</source>
+        <translation>no se puede exportar la animación: no hay ningún nodo %1</translation>
+    </message>
+    <message>
+        <source>cannot export: the unit scale must be positive</source>
+        <translation>no se puede exportar: la escala de unidades debe ser positiva</translation>
+    </message>
+    <message>
+        <source>cannot export %1: unknown format &apos;%2&apos;; use .glb, .gltf, .fbx, .dae or .obj</source>
+        <translation>no se puede exportar %1: formato desconocido «%2»; use .glb, .gltf, .fbx, .dae o .obj</translation>
+    </message>
+    <message>
+        <source>part &apos;%1&apos; has no skeleton to export</source>
+        <translation>la pieza «%1» no tiene esqueleto que exportar</translation>
+    </message>
+    <message>
+        <source>cannot write the rig: vertex %1 is not at a finite position</source>
+        <translation>no se puede escribir el rig: el vértice %1 no está en una posición finita</translation>
+    </message>
+    <message>
+        <source>cannot write the rig: joint %1 is not at a finite position</source>
+        <translation>no se puede escribir el rig: la articulación %1 no está en una posición finita</translation>
+    </message>
+    <message>
+        <source>cannot write the rig: a weight of vertex %1 is not finite</source>
+        <translation>no se puede escribir el rig: un peso del vértice %1 no es finito</translation>
+    </message>
+    <message>
+        <source>there is no part at index %1 (the document has %2 part)</source>
+        <translation>no hay ninguna pieza en el índice %1 (el documento tiene %2 pieza)</translation>
+    </message>
+    <message>
+        <source>there is no part at index %1 (the document has %2 parts)</source>
+        <translation>no hay ninguna pieza en el índice %1 (el documento tiene %2 piezas)</translation>
+    </message>
+    <message>
+        <source>&quot;part&quot; must be a part&apos;s name or its index (from 0)</source>
+        <translation>«part» debe ser el nombre de una pieza o su índice (desde 0)</translation>
+    </message>
+    <message>
+        <source>there is no part &quot;%1&quot;</source>
+        <translation>no hay ninguna pieza «%1»</translation>
+    </message>
+    <message>
+        <source>%1 parts are named &quot;%2&quot;; refer to the part by its index</source>
+        <translation>%1 piezas se llaman «%2»; refiérase a la pieza por su índice</translation>
+    </message>
+    <message>
+        <source>part &quot;%1&quot; has no bone %2</source>
+        <translation>la pieza «%1» no tiene el hueso %2</translation>
+    </message>
+    <message>
+        <source>part &quot;%1&quot; has no joint %2</source>
+        <translation>la pieza «%1» no tiene la articulación %2</translation>
+    </message>
+    <message>
+        <source>part &quot;%1&quot; has no skeleton</source>
+        <translation>la pieza «%1» no tiene esqueleto</translation>
+    </message>
+    <message>
+        <source>&quot;mode&quot; must be &quot;add&quot;, &quot;subtract&quot;, &quot;replace&quot; or &quot;smooth&quot;</source>
+        <translation>«mode» debe ser «add», «subtract», «replace» o «smooth»</translation>
+    </message>
+    <message>
+        <source>&quot;falloff&quot; must be &quot;smooth&quot;, &quot;linear&quot;, &quot;sharp&quot; or &quot;constant&quot;</source>
+        <translation>«falloff» debe ser «smooth», «linear», «sharp» o «constant»</translation>
+    </message>
+    <message>
+        <source>&quot;locked&quot; must be a list of bone ids</source>
+        <translation>«locked» debe ser una lista de identificadores de hueso</translation>
+    </message>
+    <message>
+        <source>a dab needs &quot;center&quot; and &quot;radius&quot;</source>
+        <translation>un toque necesita «center» y «radius»</translation>
+    </message>
+    <message>
+        <source>the step needs &quot;center&quot; and &quot;radius&quot;</source>
+        <translation>el paso necesita «center» y «radius»</translation>
+    </message>
+    <message>
+        <source>the step needs either &quot;center&quot; and &quot;radius&quot; or &quot;dabs&quot;</source>
+        <translation>el paso necesita o bien «center» y «radius» o bien «dabs»</translation>
+    </message>
+    <message>
+        <source>&quot;dabs&quot; must be a non-empty list of {&quot;center&quot;, &quot;radius&quot;}</source>
+        <translation>«dabs» debe ser una lista no vacía de {&quot;center&quot;, &quot;radius&quot;}</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be a whole number from %2 to %3</source>
+        <translation>«%1» debe ser un número entero de %2 a %3</translation>
+    </message>
+    <message>
+        <source>the step needs &quot;%1&quot;</source>
+        <translation>el paso necesita «%1»</translation>
+    </message>
+    <message>
+        <source>the step needs either &quot;stroke&quot; (a sketch file) or &quot;points&quot;, not both</source>
+        <translation>el paso necesita o bien «stroke» (un archivo de boceto) o bien «points», no ambos</translation>
+    </message>
+    <message>
+        <source>the step needs either &quot;joint&quot; and &quot;target&quot; (an IK drag) or &quot;rotations&quot;</source>
+        <translation>el paso necesita o bien «joint» y «target» (un arrastre IK) o bien «rotations»</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; goes with &quot;rotations&quot;, not &quot;target&quot;</source>
+        <translation>«%1» va con «rotations», no con «target»</translation>
+    </message>
+    <message>
+        <source>&quot;reach&quot; must be &quot;limb&quot; or &quot;body&quot;</source>
+        <translation>«reach» debe ser «limb» o «body»</translation>
+    </message>
+    <message>
+        <source>&quot;reach&quot; goes with &quot;target&quot; (an IK drag), not &quot;rotations&quot;</source>
+        <translation>«reach» va con «target» (un arrastre IK), no con «rotations»</translation>
+    </message>
+    <message>
+        <source>&quot;interpolation&quot; must be &quot;constant&quot;, &quot;linear&quot; or &quot;smooth&quot;</source>
+        <translation>«interpolation» debe ser «constant», «linear» o «smooth»</translation>
+    </message>
+    <message>
+        <source>&quot;playback&quot; must be &quot;hold&quot;, &quot;loop&quot; or &quot;ping_pong&quot;</source>
+        <translation>«playback» debe ser «hold», «loop» o «ping_pong»</translation>
+    </message>
+    <message>
+        <source>&quot;times&quot; must be a list of seconds</source>
+        <translation>«times» debe ser una lista de segundos</translation>
+    </message>
+    <message>
+        <source>&quot;keys&quot; must be a list of keys</source>
+        <translation>«keys» debe ser una lista de claves</translation>
+    </message>
+    <message>
+        <source>each key needs &quot;time&quot; and &quot;rotations&quot;</source>
+        <translation>cada clave necesita «time» y «rotations»</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be a whole frame</source>
+        <translation>«%1» debe ser un fotograma entero</translation>
+    </message>
+    <message>
+        <source>&quot;mode&quot; must be &quot;snap&quot;, &quot;split&quot; or &quot;connect&quot;</source>
+        <translation>«mode» debe ser «snap», «split» o «connect»</translation>
+    </message>
+    <message>
+        <source>&quot;reskin&quot; must be &quot;local&quot; or &quot;global&quot;</source>
+        <translation>«reskin» debe ser «local» o «global»</translation>
+    </message>
+    <message>
+        <source>the step needs either &quot;plane&quot; or &quot;stroke&quot; with &quot;view&quot;</source>
+        <translation>el paso necesita o bien «plane» o bien «stroke» con «view»</translation>
+    </message>
+    <message>
+        <source>&quot;plane&quot; needs &quot;point&quot; and &quot;normal&quot;</source>
+        <translation>«plane» necesita «point» y «normal»</translation>
+    </message>
+    <message>
+        <source>&quot;view&quot; needs &quot;direction&quot; and &quot;up&quot;</source>
+        <translation>«view» necesita «direction» y «up»</translation>
+    </message>
+    <message>
+        <source>the cut needs a stroke of two points or more</source>
+        <translation>el corte necesita un trazo de dos puntos o más</translation>
+    </message>
+    <message>
+        <source>&quot;style&quot; must be &quot;smooth&quot; or &quot;sharp&quot;</source>
+        <translation>«style» debe ser «smooth» o «sharp»</translation>
+    </message>
+    <message>
+        <source>&quot;names&quot; must be two names</source>
+        <translation>«names» debe contener dos nombres</translation>
+    </message>
+    <message>
+        <source>&quot;parts&quot; must be a non-empty list of parts, without &quot;part&quot;</source>
+        <translation>«parts» debe ser una lista no vacía de piezas, sin «part»</translation>
+    </message>
+    <message>
+        <source>unknown command &quot;%1&quot;</source>
+        <translation>orden desconocida «%1»</translation>
+    </message>
+    <message>
+        <source>unknown field &quot;%1&quot;</source>
+        <translation>campo desconocido «%1»</translation>
+    </message>
+    <message>
+        <source>this is not a RigMesh recipe (it needs &quot;format&quot;: &quot;%1&quot;)</source>
+        <translation>esto no es una receta de RigMesh (necesita &quot;format&quot;: &quot;%1&quot;)</translation>
+    </message>
+    <message>
+        <source>the recipe has no valid &quot;version&quot;</source>
+        <translation>la receta no tiene una «version» válida</translation>
+    </message>
+    <message>
+        <source>the recipe is of version %1; this RigMesh Studio reads recipes of version %2 and older</source>
+        <translation>la receta es de la versión %1; este RigMesh Studio lee recetas de la versión %2 y anteriores</translation>
+    </message>
+    <message>
+        <source>the recipe has no list of &quot;steps&quot;</source>
+        <translation>la receta no tiene ninguna lista «steps»</translation>
+    </message>
+    <message>
+        <source>%1 is not valid JSON: %2</source>
+        <translation>%1 no es JSON válido: %2</translation>
+    </message>
+    <message>
+        <source>%1 has a number out of range: %2</source>
+        <translation>%1 tiene un número fuera de rango: %2</translation>
+    </message>
+    <message>
+        <source>cannot read the recipe %1</source>
+        <translation>no se puede leer la receta %1</translation>
+    </message>
+    <message>
+        <source>cannot write %1: the folder does not exist or is read-only</source>
+        <translation>no se puede escribir %1: la carpeta no existe o es de solo lectura</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>no se puede escribir %1</translation>
+    </message>
+    <message>
+        <source>&quot;edgeLength&quot; must be 0 (automatic) or a positive length</source>
+        <translation>«edgeLength» debe ser 0 (automática) o una longitud positiva</translation>
+    </message>
+    <message>
+        <source>&quot;points&quot; must be a list of [x, y] points</source>
+        <translation>«points» debe ser una lista de puntos [x, y]</translation>
+    </message>
+    <message>
+        <source>&quot;rotations&quot; must be an object {&quot;&lt;joint id&gt;&quot;: [w, x, y, z], ...}</source>
+        <translation>«rotations» debe ser un objeto {&quot;&lt;joint id&gt;&quot;: [w, x, y, z], ...}</translation>
+    </message>
+    <message>
+        <source>&quot;rotations&quot; names joint %1 twice</source>
+        <translation>«rotations» nombra la articulación %1 dos veces</translation>
+    </message>
+    <message>
+        <source>The surface of the part is not a manifold.</source>
+        <translation>La superficie de la pieza no es una variedad.</translation>
+    </message>
+    <message>
+        <source>The surface of the part has a hole, so it does not bound a volume.</source>
+        <translation>La superficie de la pieza tiene un agujero, así que no encierra un volumen.</translation>
+    </message>
+    <message>
+        <source>The surface of the cut is not a manifold.</source>
+        <translation>La superficie del corte no es una variedad.</translation>
+    </message>
+    <message>
+        <source>The surface of the target part is not a manifold.</source>
+        <translation>La superficie de la pieza de destino no es una variedad.</translation>
+    </message>
+    <message>
+        <source>The surface of the target part has a hole, so it does not bound a volume.</source>
+        <translation>La superficie de la pieza de destino tiene un agujero, así que no encierra un volumen.</translation>
+    </message>
+    <message>
+        <source>The surface of the dragged part is not a manifold.</source>
+        <translation>La superficie de la pieza arrastrada no es una variedad.</translation>
+    </message>
+    <message>
+        <source>The surface of the dragged part has a hole, so it does not bound a volume.</source>
+        <translation>La superficie de la pieza arrastrada tiene un agujero, así que no encierra un volumen.</translation>
+    </message>
+    <message>
+        <source>The surface of the mesh is not a manifold.</source>
+        <translation>La superficie de la malla no es una variedad.</translation>
+    </message>
+    <message>
+        <source>The surface of the mesh has a hole, so it does not bound a volume.</source>
+        <translation>La superficie de la malla tiene un agujero, así que no encierra un volumen.</translation>
+    </message>
+    <message>
+        <source>cannot repair the FBX file: not a binary FBX file</source>
+        <translation>no se puede reparar el archivo FBX: no es un archivo FBX binario</translation>
+    </message>
+    <message>
+        <source>cannot repair the FBX file: no node records</source>
+        <translation>no se puede reparar el archivo FBX: no hay registros de nodo</translation>
+    </message>
+    <message>
+        <source>cannot repair the FBX file: a record runs past the end of the file</source>
+        <translation>no se puede reparar el archivo FBX: un registro sobrepasa el final del archivo</translation>
+    </message>
+    <message>
+        <source>cannot repair the FBX file: a nested record is out of range</source>
+        <translation>no se puede reparar el archivo FBX: un registro anidado está fuera de rango</translation>
+    </message>
+    <message>
+        <source>cannot export: vertex %1 of mesh &apos;%2&apos; is not a finite number</source>
+        <translation>no se puede exportar: el vértice %1 de la malla «%2» no es un número finito</translation>
+    </message>
+    <message>
+        <source>cannot export: the normal of vertex %1 of mesh &apos;%2&apos; is not a finite number</source>
+        <translation>no se puede exportar: la normal del vértice %1 de la malla «%2» no es un número finito</translation>
+    </message>
+    <message>
+        <source>cannot export: the bind matrix of bone &apos;%1&apos; is not a finite number</source>
+        <translation>no se puede exportar: la matriz de enlace del hueso «%1» no es un número finito</translation>
+    </message>
+    <message>
+        <source>cannot export: a weight of bone &apos;%1&apos; is not a finite number</source>
+        <translation>no se puede exportar: un peso del hueso «%1» no es un número finito</translation>
+    </message>
+    <message>
+        <source>cannot export: the transform of node &apos;%1&apos; is not a finite number</source>
+        <translation>no se puede exportar: la transformación del nodo «%1» no es un número finito</translation>
+    </message>
+    <message>
+        <source>cannot export: a key of &apos;%1&apos; is not a finite number</source>
+        <translation>no se puede exportar: una clave de «%1» no es un número finito</translation>
+    </message>
+    <message>
+        <source>cannot export: the animation&apos;s duration is not a finite number</source>
+        <translation>no se puede exportar: la duración de la animación no es un número finito</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: the flow gave no curve.</source>
+        <translation>No se pudo encontrar ningún esqueleto en la malla: el flujo no dio ninguna curva.</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: the curve is too short for a bone.</source>
+        <translation>No se pudo encontrar ningún esqueleto en la malla: la curva es demasiado corta para un hueso.</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: the flow contracted it to a point.</source>
+        <translation>No se pudo encontrar ningún esqueleto en la malla: el flujo la contrajo a un punto.</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: the mesh has too few vertices.</source>
+        <translation>No se pudo encontrar ningún esqueleto en la malla: la malla tiene muy pocos vértices.</translation>
+    </message>
+    <message>
+        <source>No skeleton could be found in the mesh: the mesh has no extent.</source>
+        <translation>No se pudo encontrar ningún esqueleto en la malla: la malla no tiene extensión.</translation>
+    </message>
+    <message>
+        <source>cannot write %1: the glTF exporter wrote no .bin</source>
+        <translation>no se puede escribir %1: el exportador glTF no escribió ningún .bin</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>
@@ -977,50 +1841,10 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::model::BoneEditCommand</name>
-    <message>
-        <source>The part has no skeleton to edit.</source>
-        <translation>La pieza no tiene esqueleto que editar.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::ClipListCommand</name>
-    <message>
-        <source>%1 already has a clip named &quot;%2&quot;.</source>
-        <translation>%1 ya tiene un clip llamado «%2».</translation>
-    </message>
-    <message>
-        <source>%1 has no clip named &quot;%2&quot;.</source>
-        <translation>%1 no tiene ningún clip llamado «%2».</translation>
-    </message>
-    <message>
-        <source>%1 has only this clip: a part keeps one clip (delete its keys instead).</source>
-        <translation>%1 solo tiene este clip: una pieza conserva un clip (elimine sus claves en su lugar).</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::CutPartCommand</name>
-    <message>
-        <source>The part has no surface to cut.</source>
-        <translation>La pieza no tiene superficie que cortar.</translation>
-    </message>
-</context>
-<context>
     <name>rigmesh::model::Document</name>
     <message>
         <source>Untitled</source>
         <translation>Sin título</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::DocumentExport</name>
-    <message>
-        <source>there are no parts to export</source>
-        <translation>no hay piezas que exportar</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not rigged yet: export it as OBJ, or hide it and export the visible parts</source>
-        <translation>«%1» todavía no tiene rig: expórtela como OBJ, u ocúltela y exporte las piezas visibles</translation>
     </message>
 </context>
 <context>
@@ -1055,42 +1879,6 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::model::MergePartsCommand</name>
-    <message>
-        <source>A part cannot be merged into itself.</source>
-        <translation>Una pieza no se puede fusionar consigo misma.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::MoveKeysCommand</name>
-    <message>
-        <source>There are no keys to move.</source>
-        <translation>No hay claves que mover.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::PartBuilder</name>
-    <message>
-        <source>The target edge length must be 0 (automatic) or a positive length.</source>
-        <translation>La longitud de arista objetivo debe ser 0 (automática) o una longitud positiva.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::PartClips</name>
-    <message>
-        <source>A clip name must have 1 to %1 characters.</source>
-        <translation>Un nombre de clip debe tener de 1 a %1 caracteres.</translation>
-    </message>
-    <message>
-        <source>A clip name must not start or end with a space.</source>
-        <translation>Un nombre de clip no debe empezar ni terminar con un espacio.</translation>
-    </message>
-    <message>
-        <source>A clip name must not hold control characters.</source>
-        <translation>Un nombre de clip no debe contener caracteres de control.</translation>
-    </message>
-</context>
-<context>
     <name>rigmesh::model::PartNode</name>
     <message>
         <source>Joint %1</source>
@@ -1098,24 +1886,10 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::model::PasteKeysCommand</name>
-    <message>
-        <source>There are no keys to paste.</source>
-        <translation>No hay claves que pegar.</translation>
-    </message>
-</context>
-<context>
     <name>rigmesh::model::PoseChange</name>
     <message>
         <source>%1 and key</source>
         <translation>%1 e insertar clave</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::PoseDrag</name>
-    <message>
-        <source>The part has no skeleton to pose.</source>
-        <translation>La pieza no tiene esqueleto que posar.</translation>
     </message>
 </context>
 <context>
@@ -1174,51 +1948,6 @@
     <message>
         <source>%1 bones</source>
         <translation>%1 huesos</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::SetBoneLockCommand</name>
-    <message>
-        <source>The part has no bone %1 to lock.</source>
-        <translation>La pieza no tiene el hueso %1 para bloquear.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::SkinningEditCommand</name>
-    <message>
-        <source>The part has no skeleton, so it has no weights to paint.</source>
-        <translation>La pieza no tiene esqueleto, así que no tiene pesos que pintar.</translation>
-    </message>
-    <message>
-        <source>The part has no skeleton, so it has no weights to lock.</source>
-        <translation>La pieza no tiene esqueleto, así que no tiene pesos que bloquear.</translation>
-    </message>
-    <message>
-        <source>The part has no skeleton, so it has no weights to clean up.</source>
-        <translation>La pieza no tiene esqueleto, así que no tiene pesos que limpiar.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::model::Timeline</name>
-    <message>
-        <source>The frame rate must be between %1 and %2 frames per second.</source>
-        <translation>La velocidad de fotogramas debe estar entre %1 y %2 fotogramas por segundo.</translation>
-    </message>
-    <message>
-        <source>The frame range must lie within frames 0 to %1.</source>
-        <translation>El rango de fotogramas debe estar entre los fotogramas 0 y %1.</translation>
-    </message>
-    <message>
-        <source>The frame range must end after it starts.</source>
-        <translation>El rango de fotogramas debe terminar después de empezar.</translation>
-    </message>
-    <message>
-        <source>The frame range is longer than a clip can be.</source>
-        <translation>El rango de fotogramas es más largo de lo que puede ser un clip.</translation>
-    </message>
-    <message>
-        <source>Frame %1 is outside frames 0 to %2.</source>
-        <translation>El fotograma %1 está fuera de los fotogramas 0 a %2.</translation>
     </message>
 </context>
 <context>

@@ -46,8 +46,7 @@ json parseBoundedCbor(const std::uint8_t* begin, const std::uint8_t* end, int ma
     DepthLimitedParser parser(result, maxDepth);
     json::sax_parse(begin, end, &parser, json::input_format_t::cbor);
     if (parser.tooDeep())
-        throw Error("lists and maps are nested more than " + std::to_string(maxDepth) +
-                    " levels deep");
+        throw Error(MessageId::DocumentNestedTooDeep, maxDepth);
     return result;
 }
 

@@ -2,6 +2,7 @@
 
 #include <QFileInfo>
 #include <algorithm>
+#include <stdexcept>
 
 #include "base/Error.h"
 #include "model/PartClips.h"
@@ -17,14 +18,12 @@ const Skeleton* skeletonOf(const PartNode& node) {
 void checkJoint(const PartNode& node, JointId joint) {
     const Skeleton* skeleton = skeletonOf(node);
     if (!skeleton || !skeleton->hasJoint(joint))
-        throw Error("Part " + std::to_string(node.id) + " has no joint " + std::to_string(joint) +
-                    ".");
+        throw Error(MessageId::DocumentPartHasNoJoint, node.id, joint);
 }
 
 void checkPose(const PartNode& node, const rigmesh::Pose& pose) {
     if (!pose.isFinite())
-        throw Error("The pose of part " + std::to_string(node.id) +
-                    " has a non-finite or zero rotation or translation.");
+        throw Error(MessageId::DocumentPoseInvalid, node.id);
     for (const auto& entry : pose.rotations)
         checkJoint(node, entry.first);
 }
@@ -41,9 +40,7 @@ bool identicalClipLists(const std::vector<rigmesh::Clip>& a, const std::vector<r
 void checkClip(const PartNode& node, const rigmesh::Clip& clip) {
     for (const auto& [time, pose] : clip.keys()) {
         if (!pose.isFinite())
-            throw Error("The key at " + std::to_string(time) + " s of part " +
-                        std::to_string(node.id) +
-                        " has a non-finite or zero rotation or translation.");
+            throw Error(MessageId::DocumentKeyPoseInvalid, std::to_string(time), node.id);
         for (const auto& entry : pose.rotations)
             checkJoint(node, entry.first);
     }
@@ -80,7 +77,7 @@ const PartNode* Document::findPart(PartId id) const {
 const PartNode& Document::part(PartId id) const {
     if (const PartNode* node = findPart(id))
         return *node;
-    throw Error("No part with id " + std::to_string(id) + " in the document.");
+    throw Error(MessageId::DocumentNoSuchPart, id);
 }
 
 PartNode& Document::mutablePart(PartId id) {
@@ -134,7 +131,7 @@ void Document::releasePartId(PartId id) {
 
 void Document::insertPart(int index, PartNode node) {
     if (node.id == kNoPart || contains(node.id))
-        throw Error("Part id " + std::to_string(node.id) + " is already in use.");
+        throw std::logic_error("Part id " + std::to_string(node.id) + " is already in use.");
     index = std::clamp(index, 0, partCount());
     const PartId id = node.id;
     contents_.nextPartId = std::max(contents_.nextPartId, id + 1);
@@ -145,7 +142,7 @@ void Document::insertPart(int index, PartNode node) {
 PartNode Document::removePart(PartId id) {
     const int index = indexOf(id);
     if (index < 0)
-        throw Error("No part with id " + std::to_string(id) + " in the document.");
+        throw Error(MessageId::DocumentNoSuchPart, id);
     if (selection_.part == id)
         clearSelection();
     emit partAboutToBeRemoved(id, index);
@@ -158,8 +155,8 @@ PartNode Document::removePart(PartId id) {
 void Document::replaceNode(PartId id, PartNode node) {
     PartNode& old = mutablePart(id);
     if (node.id != id)
-        throw Error("Part " + std::to_string(id) + " cannot be replaced by part " +
-                    std::to_string(node.id) + ".");
+        throw std::logic_error("Part " + std::to_string(id) + " cannot be replaced by part " +
+                               std::to_string(node.id) + ".");
     checkPose(node, node.pose);
     checkPins(node, node.pinnedJoints);
     checkClip(node, node.clip);
@@ -258,7 +255,7 @@ void Document::replaceSkinning(PartId id, std::shared_ptr<const Part> part) {
     if (!part || !node.part || part->mesh.vertexCount() != node.part->mesh.vertexCount() ||
         part->skeleton.boneCount() != node.part->skeleton.boneCount() ||
         part->skeleton.jointCount() != node.part->skeleton.jointCount())
-        throw Error("Only the skin weights of a part can change this way.");
+        throw std::logic_error("Only the skin weights of a part can change this way.");
     if (node.part == part)
         return;
     node.part = std::move(part);

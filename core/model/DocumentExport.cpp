@@ -1,7 +1,5 @@
 #include "model/DocumentExport.h"
 
-#include <QCoreApplication>
-
 #include <Eigen/Geometry>
 
 #include <deque>
@@ -60,18 +58,11 @@ StagedDocumentExport stageParts(const std::vector<PartNode>& documentParts, cons
         if (node.part && (node.visible || !visibleOnly))
             nodes.push_back(&node);
     if (nodes.empty())
-        throw Error(QCoreApplication::translate("rigmesh::model::DocumentExport",
-                                                "there are no parts to export")
-                        .toStdString());
+        throw Error(MessageId::ExportNoParts);
     if (isRiggedFormat(exportFormatFromPath(path)))
         for (const PartNode* node : nodes)
             if (node->part->skeleton.jointCount() == 0)
-                throw Error(QCoreApplication::translate(
-                                "rigmesh::model::DocumentExport",
-                                "\"%1\" is not rigged yet: export it as OBJ, or hide it and "
-                                "export the visible parts")
-                                .arg(node->name)
-                                .toStdString());
+                throw Error(MessageId::ExportPartNotRigged, node->name.toStdString());
 
     // The current pose as the rest shape: OBJ poses its mesh itself; the
     // rigged formats get parts whose rest is that pose (their clips would be

@@ -1,7 +1,5 @@
 #include "model/PartBuilder.h"
 
-#include <QCoreApplication>
-
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
@@ -23,10 +21,7 @@ SketchToPartOptions engineOptions(const BuildOptions& options) {
 void checkBuildOptions(const std::vector<Vec2>&, const BuildOptions& options) {
     const double length = options.targetEdgeLength;
     if (!std::isfinite(length) || length < 0)
-        throw Error(QCoreApplication::translate(
-                        "rigmesh::model::PartBuilder",
-                        "The target edge length must be 0 (automatic) or a positive length.")
-                        .toStdString());
+        throw Error(MessageId::PartEdgeLengthNotPositive);
 }
 
 std::shared_ptr<const Part> buildPart(const std::vector<Vec2>& stroke, const QString& name,

@@ -1,7 +1,5 @@
 #include "model/PartClips.h"
 
-#include <QCoreApplication>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -34,26 +32,19 @@ const rigmesh::Clip* findClip(const PartNode& node, const std::string& name) {
 
 void checkClipName(const std::string& name) {
     if (name.empty() || name.size() > kMaxClipNameLength)
-        throw Error(QCoreApplication::translate("rigmesh::model::PartClips",
-                                                "A clip name must have 1 to %1 characters.")
-                        .arg(kMaxClipNameLength)
-                        .toStdString());
+        throw Error(MessageId::ClipNameLength, kMaxClipNameLength);
     if (name.front() == ' ' || name.back() == ' ')
-        throw Error(QCoreApplication::translate("rigmesh::model::PartClips",
-                                                "A clip name must not start or end with a space.")
-                        .toStdString());
+        throw Error(MessageId::ClipNameSpaces);
     if (std::any_of(name.begin(), name.end(),
                     [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
-        throw Error(QCoreApplication::translate("rigmesh::model::PartClips",
-                                                "A clip name must not hold control characters.")
-                        .toStdString());
+        throw Error(MessageId::ClipNameControlCharacters);
 }
 
 void checkClipNamesUnique(const rigmesh::Clip& active, const std::vector<rigmesh::Clip>& others) {
     std::set<std::string> names{clipName(active)};
     for (const rigmesh::Clip& clip : others)
         if (!names.insert(clipName(clip)).second)
-            throw Error("The part has two clips named \"" + clipName(clip) + "\".");
+            throw Error(MessageId::ClipNameTwice, clipName(clip));
 }
 
 namespace {

@@ -1,7 +1,5 @@
 #include "model/PoseDrag.h"
 
-#include <QCoreApplication>
-
 #include <vector>
 
 #include "base/Error.h"
@@ -17,9 +15,7 @@ IkOptions poseToolIkOptions(IkReach reach) {
 
 IkResult dragPartJoint(const PartNode& node, JointId joint, const Vec3& target, IkReach reach) {
     if (!node.part)
-        throw Error(QCoreApplication::translate("rigmesh::model::PoseDrag",
-                                                "The part has no skeleton to pose.")
-                        .toStdString());
+        throw Error(MessageId::PoseNoSkeleton);
     const std::vector<JointId> pinned(node.pinnedJoints.begin(), node.pinnedJoints.end());
     return dragJoint(node.part->skeleton, node.pose, joint, target, pinned,
                      poseToolIkOptions(reach));

@@ -1,7 +1,5 @@
 #include "model/Timeline.h"
 
-#include <QCoreApplication>
-
 #include <string>
 
 #include "base/Error.h"
@@ -12,34 +10,18 @@ namespace rigmesh::model {
 void checkTimelineSettings(const TimelineSettings& settings) {
     const double fps = settings.framesPerSecond;
     if (!std::isfinite(fps) || fps < kMinFrameRate || fps > kMaxFrameRate)
-        throw Error(QCoreApplication::translate(
-                        "rigmesh::model::Timeline",
-                        "The frame rate must be between %1 and %2 frames per second.")
-                        .arg(int(kMinFrameRate))
-                        .arg(int(kMaxFrameRate))
-                        .toStdString());
+        throw Error(MessageId::FrameRateOutOfRange, int(kMinFrameRate), int(kMaxFrameRate));
     if (settings.startFrame < 0 || settings.endFrame > kMaxFrame)
-        throw Error(QCoreApplication::translate("rigmesh::model::Timeline",
-                                                "The frame range must lie within frames 0 to %1.")
-                        .arg(kMaxFrame)
-                        .toStdString());
+        throw Error(MessageId::FrameRangeOutside, kMaxFrame);
     if (settings.startFrame >= settings.endFrame)
-        throw Error(QCoreApplication::translate("rigmesh::model::Timeline",
-                                                "The frame range must end after it starts.")
-                        .toStdString());
+        throw Error(MessageId::FrameRangeEmpty);
     if (settings.timeOfFrame(settings.endFrame) > rigmesh::Clip::kLongestKeyTime)
-        throw Error(QCoreApplication::translate("rigmesh::model::Timeline",
-                                                "The frame range is longer than a clip can be.")
-                        .toStdString());
+        throw Error(MessageId::FrameRangeTooLong);
 }
 
 void checkFrame(int frame) {
     if (frame < 0 || frame > kMaxFrame)
-        throw Error(QCoreApplication::translate("rigmesh::model::Timeline",
-                                                "Frame %1 is outside frames 0 to %2.")
-                        .arg(frame)
-                        .arg(kMaxFrame)
-                        .toStdString());
+        throw Error(MessageId::FrameOutside, frame, kMaxFrame);
 }
 
 }  // namespace rigmesh::model

@@ -19,6 +19,22 @@ namespace {
 
 std::atomic<int> busyRunners{0};
 
+// The text for the user of the exception `thrown`: an engine Error in the
+// user's language; a programming error (std::logic_error and the like) as
+// an internal error, so that a job reports it instead of ending the program.
+QString failureText(const std::exception_ptr& thrown) {
+    try {
+        std::rethrow_exception(thrown);
+    } catch (const Error& error) {
+        return model::errorText(error);
+    } catch (const std::bad_alloc&) {
+        return QCoreApplication::translate("rigmesh::widgets::JobRunner", "Out of memory.");
+    } catch (const std::exception& error) {
+        return QCoreApplication::translate("rigmesh::widgets::JobRunner", "Internal error: %1")
+            .arg(QString::fromUtf8(error.what()));
+    }
+}
+
 }  // namespace
 
 // What the worker and the GUI thread share: the work's outcome, written by
@@ -53,6 +69,11 @@ bool JobRunner::runOn(JobRunner* runner, const QString& title, Work work, Failed
     } catch (const Error& error) {
         if (failed)
             failed(model::errorText(error));
+        return true;
+    } catch (const std::exception&) {
+        if (!failed)
+            throw;
+        failed(failureText(std::current_exception()));
         return true;
     }
     if (apply)
@@ -99,15 +120,8 @@ bool JobRunner::run(const QString& title, Work work, Failed failed, Cancelled ca
         setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 5);
         try {
             job->apply = job->work();
-        } catch (const Error& error) {
-            job->error = model::errorText(error);
-        } catch (const std::bad_alloc&) {
-            job->error =
-                QCoreApplication::translate("rigmesh::widgets::JobRunner", "Out of memory.");
-        } catch (const std::exception& error) {
-            job->error =
-                QCoreApplication::translate("rigmesh::widgets::JobRunner", "Internal error: %1")
-                    .arg(QString::fromUtf8(error.what()));
+        } catch (const std::exception&) {
+            job->error = failureText(std::current_exception());
         }
         // Back on the GUI thread (qApp outlives every window).
         QMetaObject::invokeMethod(

@@ -145,7 +145,9 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
         result.part.skeleton = skeletonFromCurve(curve, surface.mainPiece, options.bones);
     } catch (const Error& error) {
         // A blob the flow contracts to a point: a chain along its main axis.
-        if (error.message().id != MessageId::AutoRigSkeletonFailed)
+        const MessageId id = error.message().id;
+        if (id != MessageId::AutoRigSkeletonFailed && id != MessageId::AutoRigFlowGaveNoCurve &&
+            id != MessageId::AutoRigCurveTooShort && id != MessageId::AutoRigFlowContracted)
             throw;
         result.part.skeleton = mainAxisChain(surface.mainPiece);
     }

@@ -14,7 +14,7 @@ namespace rigmesh {
 Skeleton mainAxisChain(const TriMesh& mesh) {
     const int n = mesh.vertexCount();
     if (n < 4)
-        throw Error(MessageId::AutoRigSkeletonFailed, "the mesh has too few vertices.");
+        throw Error(MessageId::AutoRigTooFewVertices);
     Vec3 centroid = Vec3::Zero();
     for (const Vec3& v : mesh.vertices)
         centroid += v;
@@ -35,7 +35,7 @@ Skeleton mainAxisChain(const TriMesh& mesh) {
     const double low = sorted[n / 20], high = sorted[n - 1 - n / 20];
     const double radius = radiusSum / n;
     if (!(high - low > 0.0))
-        throw Error(MessageId::AutoRigSkeletonFailed, "the mesh has no extent.");
+        throw Error(MessageId::AutoRigNoExtent);
     const int bones =
         std::clamp(static_cast<int>(std::lround((high - low) / (2.0 * radius))), 1, 4);
     Skeleton skeleton;

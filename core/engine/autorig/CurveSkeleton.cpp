@@ -32,7 +32,8 @@ std::size_t arenaBytes(const TriMesh& mesh) {
 }  // namespace
 
 CurveSkeleton extractCurveSkeleton(const TriMesh& mesh, const RigProgress& progress) {
-    const cgal::SurfaceMesh surface = cgal::toSurfaceMesh(mesh, "the mesh");
+    const cgal::SurfaceMesh surface =
+        cgal::toSurfaceMesh(mesh, MessageId::MeshSurfaceNotManifold, MessageId::MeshSurfaceHasHole);
     reportRigProgress(progress, 0.0);
     // Address space only; what the flow touches is committed as it goes.
     DeterministicArena arena(arenaBytes(mesh));
@@ -57,7 +58,7 @@ CurveSkeleton extractCurveSkeleton(const TriMesh& mesh, const RigProgress& progr
     Skeletonization::Skeleton graph;
     flow.convert_to_skeleton(graph);
     if (boost::num_vertices(graph) < 2)
-        throw Error(MessageId::AutoRigSkeletonFailed, "the flow contracted it to a point.");
+        throw Error(MessageId::AutoRigFlowContracted);
 
     CurveSkeleton result;
     for (auto v : CGAL::make_range(boost::vertices(graph))) {

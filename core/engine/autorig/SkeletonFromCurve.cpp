@@ -427,7 +427,7 @@ int leafCount(const Skeleton& skeleton) {
 Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
                            const CurveRigOptions& options) {
     if (curve.nodes.size() < 2 || curve.edges.empty())
-        throw Error(MessageId::AutoRigSkeletonFailed, "the flow gave no curve.");
+        throw Error(MessageId::AutoRigFlowGaveNoCurve);
     Graph graph = spanningTree(curve, mesh);
     Eigen::AlignedBox3d box;
     for (const Vec3& v : mesh.vertices)
@@ -463,7 +463,7 @@ Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
         }
     }
     if (skeleton.boneCount() == 0)
-        throw Error(MessageId::AutoRigSkeletonFailed, "the curve is too short for a bone.");
+        throw Error(MessageId::AutoRigCurveTooShort);
     // Half the local radius deep: a tip joint ends about where a sketched
     // part's sits, in the middle of its cap.
     pullJointsInside(skeleton, mesh, [&](JointId joint) { return 0.5 * radiusOf[joint]; });

@@ -1,3 +1,5 @@
+#include <stdexcept>
+
 #include "axis/ChordalAxis.h"
 
 #include "base/Error.h"
@@ -38,7 +40,7 @@ class AxisBuilder {
         for (int k = 0; k < 3; ++k)
             if (axis_.cdt.neighbors[from][k] == to)
                 return k;
-        throw Error("internal error: triangles are not adjacent");
+        throw std::logic_error("internal error: triangles are not adjacent");
     }
 
     int otherLiveNeighbor(int sleeve, int previous) const {

@@ -440,7 +440,7 @@ Decomposition decompose(ChordalAxis axis, const DecompositionOptions& options) {
         result.cylinders.push_back(std::move(cylinder));
     }
     if (result.cylinders.empty())
-        throw Error("the outline has no elongated part to inflate: draw a longer shape");
+        throw Error(MessageId::OutlineNotElongated);
     result.axis = std::move(axis);
     return result;
 }

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <exception>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <thread>
 #include <vector>
-
-#include "base/Error.h"
 
 namespace rigmesh {
 
@@ -18,8 +17,8 @@ int parallelWorkers(int count, int threads) {
 void parallelFor(int count, int threads,
                  const std::function<void(int begin, int end, int worker)>& task) {
     if (threads < 1)
-        throw Error("Parallel work needs at least one thread, not " + std::to_string(threads) +
-                    ".");
+        throw std::logic_error("Parallel work needs at least one thread, not " +
+                               std::to_string(threads) + ".");
     if (count <= 0)
         return;
     const int workers = parallelWorkers(count, threads);

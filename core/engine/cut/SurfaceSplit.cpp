@@ -97,12 +97,14 @@ int sideNearHoles(const MeshPiece& piece, const CutSurface& cut) {
 }  // namespace
 
 std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut) {
-    SurfaceMesh surface = toSurfaceMesh(mesh, "the part");
+    SurfaceMesh surface =
+        toSurfaceMesh(mesh, MessageId::PartSurfaceNotManifold, MessageId::PartSurfaceHasHole);
     if (cut.isPlane()) {
         const Vec3& n = cut.planeNormal();
         PMP::split(surface, Kernel::Plane_3(n.x(), n.y(), n.z(), -n.dot(cut.planePoint())));
     } else {
-        SurfaceMesh splitter = toSurfaceMesh(cut.strip(boundingBox(mesh)), "the cut", false);
+        SurfaceMesh splitter =
+            toSurfaceMesh(cut.strip(boundingBox(mesh)), MessageId::CutSurfaceNotManifold);
         PMP::split(surface, splitter);
     }
     std::vector<SurfaceMesh> components;

@@ -129,7 +129,7 @@ PatchTriangulation triangulatePatch(const std::vector<Vec2>& boundary,
                                     const std::vector<Vec2>& interiorPoints,
                                     const std::vector<bool>& isRimPoint) {
     if (boundary.size() < 3)
-        throw Error("a patch boundary needs at least three points");
+        throw Error(MessageId::PatchBoundaryTooShort);
     Cdt cdt;
     insertLoop(cdt, boundary);
     markDomains(cdt);

@@ -106,11 +106,11 @@ std::vector<double> exportedKeyTimes(const Clip& clip) {
 
 aiAnimation* makeAnimation(const std::vector<AnimatedRig>& rigs, const std::string& name) {
     if (rigs.empty())
-        throw Error("cannot export an animation of nothing");
+        throw Error(MessageId::ExportAnimationOfNothing);
     std::size_t channelCount = 0;
     for (const AnimatedRig& animated : rigs) {
         if (animated.clip->keyCount() == 0)
-            throw Error("cannot export an animation without keys");
+            throw Error(MessageId::ExportAnimationWithoutKeys);
         channelCount += animated.rig->nodes.size();
     }
     auto* animation = new aiAnimation;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 
 #include "base/Error.h"
 #include "io/AssimpAnimationBuilder.h"
@@ -265,7 +266,7 @@ std::vector<PieceMesh> piecesOf(const Part& part, const std::string& name,
 
 void checkPart(const ExportPart& item, bool rigged) {
     if (item.part == nullptr)
-        throw Error("cannot export: a part is missing");
+        throw std::logic_error("cannot export: a part is missing");
     const Part& part = *item.part;
     if (part.mesh.vertices.empty() || part.mesh.faces.empty())
         throw Error(MessageId::ExportPartWithoutSurface, part.name);
@@ -284,7 +285,7 @@ std::vector<ExportRig> buildAssimpScene(aiScene& scene, const std::vector<Export
     for (const ExportPart& item : parts)
         checkPart(item, rigged);
     if (!(options.unitScale > 0))
-        throw Error("cannot export: the unit scale must be positive");
+        throw Error(MessageId::ExportUnitScaleNotPositive);
     const std::vector<std::string> names = uniquePartNames(parts);
     std::set<std::string> usedNames(names.begin(), names.end());
     usedNames.insert({"RootNode", "Armature"});

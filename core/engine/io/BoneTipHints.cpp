@@ -193,7 +193,7 @@ std::map<std::string, std::string> readColladaBoneNames(const std::string& dae) 
 std::string withGltfBoneTails(const std::string& gltfJson, const std::vector<ExportRig>& rigs) {
     nlohmann::json gltf = nlohmann::json::parse(gltfJson, nullptr, false);
     if (gltf.is_discarded() || !gltf.is_object())
-        throw Error("cannot export: the glTF exporter wrote invalid JSON");
+        throw Error(MessageId::ExportGltfInvalidJson);
     const auto bones = bonesByName(rigs);
     if (gltf.contains("nodes") && gltf["nodes"].is_array())
         for (nlohmann::json& node : gltf["nodes"]) {

@@ -13,7 +13,7 @@ std::string editColladaXml(const std::string& dae,
     tinyxml2::XMLDocument document;
     if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
         document.RootElement() == nullptr)
-        throw Error("cannot export: the COLLADA exporter wrote invalid XML");
+        throw Error(MessageId::ExportColladaInvalidXml);
     edit(*document.RootElement());
     tinyxml2::XMLPrinter printer;
     document.Print(&printer);

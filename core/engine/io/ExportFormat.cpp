@@ -22,8 +22,7 @@ ExportFormat exportFormatFromPath(const std::string& path) {
         return ExportFormat::Collada;
     if (extension == ".obj")
         return ExportFormat::Obj;
-    throw Error("cannot export " + path + ": unknown format '" + extension +
-                "'; use .glb, .gltf, .fbx, .dae or .obj");
+    throw Error(MessageId::ExportUnknownFormat, path, extension);
 }
 
 bool isRiggedFormat(ExportFormat format) {

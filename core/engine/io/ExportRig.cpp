@@ -39,7 +39,7 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
                         const Eigen::Affine3d& placement, double unitScale, BoneAxes axes) {
     const Skeleton& skeleton = part.skeleton;
     if (skeleton.jointCount() == 0 || !skeleton.hasJoint(skeleton.root()))
-        throw Error("part '" + partName + "' has no skeleton to export");
+        throw Error(MessageId::ExportRigNoSkeleton, partName);
     const PoseHierarchy hierarchy(skeleton);
     ExportRig rig;
     rig.placementRotation = Eigen::Quaterniond(placement.rotation()).normalized();

@@ -22,7 +22,7 @@ class Parser {
     std::uint64_t field(std::size_t at) const {
         const std::size_t size = wide_ ? 8 : 4;
         if (at + size > bytes_.size())
-            fail("a record runs past the end of the file");
+            fail(MessageId::FbxRepairRecordPastEnd);
         std::uint64_t value = 0;
         for (std::size_t i = 0; i < size; ++i)
             value |= std::uint64_t(bytes_[at + i]) << (8 * i);
@@ -69,16 +69,14 @@ class Parser {
             if (isNull(cursor) && cursor + nullSize() == end)
                 break;  // the sentinel is already there
             if (!isRecord(cursor, end))
-                fail("a nested record is out of range");
+                fail(MessageId::FbxRepairNestedOutOfRange);
             record.children.push_back(read(cursor));
             cursor = field(cursor);
         }
         return record;
     }
 
-    [[noreturn]] static void fail(const std::string& why) {
-        throw Error("cannot repair the FBX file: " + why);
-    }
+    [[noreturn]] static void fail(MessageId why) { throw Error(why); }
 
   private:
     const std::vector<std::uint8_t>& bytes_;
@@ -124,7 +122,7 @@ bool assimpNeedsFbxSentinelFix() {
 
 FbxFile parseFbx(const std::vector<std::uint8_t>& file) {
     if (file.size() < kHeaderSize || std::memcmp(file.data(), kMagic, sizeof kMagic - 1) != 0)
-        Parser::fail("not a binary FBX file");
+        Parser::fail(MessageId::FbxRepairNotBinary);
     std::uint32_t version = 0;
     for (int i = 0; i < 4; ++i)
         version |= std::uint32_t(file[23 + i]) << (8 * i);
@@ -144,7 +142,7 @@ FbxFile parseFbx(const std::vector<std::uint8_t>& file) {
         cursor = parser.field(cursor);
     }
     if (top.empty())
-        Parser::fail("no node records");
+        Parser::fail(MessageId::FbxRepairNoRecords);
     return {wide, std::move(top), cursor};
 }
 

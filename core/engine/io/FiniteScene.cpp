@@ -26,49 +26,51 @@ bool finite(const aiMatrix4x4& m) {
     return true;
 }
 
-void require(bool ok, const std::string& what) {
+// Refuses with the message `id` and its arguments unless `ok`.
+template <class... Args>
+void require(bool ok, MessageId id, const Args&... args) {
     if (!ok)
-        throw Error("cannot export: " + what + " is not a finite number");
+        throw Error(id, args...);
 }
 
 void checkMesh(const aiMesh& mesh) {
-    const std::string name = "mesh '" + std::string(mesh.mName.C_Str()) + "'";
+    const std::string name = mesh.mName.C_Str();
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-        require(finite(mesh.mVertices[v]), "vertex " + std::to_string(v) + " of " + name);
+        require(finite(mesh.mVertices[v]), MessageId::ExportVertexNotFinite, v, name);
         if (mesh.mNormals != nullptr)
-            require(finite(mesh.mNormals[v]),
-                    "the normal of vertex " + std::to_string(v) + " of " + name);
+            require(finite(mesh.mNormals[v]), MessageId::ExportNormalNotFinite, v, name);
     }
     for (unsigned b = 0; b < mesh.mNumBones; ++b) {
         const aiBone& bone = *mesh.mBones[b];
-        const std::string boneName = "bone '" + std::string(bone.mName.C_Str()) + "'";
-        require(finite(bone.mOffsetMatrix), "the bind matrix of " + boneName);
+        const std::string boneName = bone.mName.C_Str();
+        require(finite(bone.mOffsetMatrix), MessageId::ExportBindMatrixNotFinite, boneName);
         for (unsigned w = 0; w < bone.mNumWeights; ++w)
-            require(std::isfinite(bone.mWeights[w].mWeight), "a weight of " + boneName);
+            require(std::isfinite(bone.mWeights[w].mWeight), MessageId::ExportBoneWeightNotFinite,
+                    boneName);
     }
 }
 
 void checkNode(const aiNode& node) {
-    require(finite(node.mTransformation),
-            "the transform of node '" + std::string(node.mName.C_Str()) + "'");
+    require(finite(node.mTransformation), MessageId::ExportNodeTransformNotFinite,
+            std::string(node.mName.C_Str()));
     for (unsigned c = 0; c < node.mNumChildren; ++c)
         checkNode(*node.mChildren[c]);
 }
 
 void checkChannel(const aiNodeAnim& channel) {
-    const std::string name = "a key of '" + std::string(channel.mNodeName.C_Str()) + "'";
+    const std::string name = channel.mNodeName.C_Str();
     for (unsigned k = 0; k < channel.mNumPositionKeys; ++k)
         require(std::isfinite(channel.mPositionKeys[k].mTime) &&
                     finite(channel.mPositionKeys[k].mValue),
-                name);
+                MessageId::ExportKeyNotFinite, name);
     for (unsigned k = 0; k < channel.mNumRotationKeys; ++k)
         require(std::isfinite(channel.mRotationKeys[k].mTime) &&
                     finite(channel.mRotationKeys[k].mValue),
-                name);
+                MessageId::ExportKeyNotFinite, name);
     for (unsigned k = 0; k < channel.mNumScalingKeys; ++k)
         require(
             std::isfinite(channel.mScalingKeys[k].mTime) && finite(channel.mScalingKeys[k].mValue),
-            name);
+            MessageId::ExportKeyNotFinite, name);
 }
 
 }  // namespace
@@ -80,7 +82,7 @@ void checkSceneIsFinite(const aiScene& scene) {
         checkNode(*scene.mRootNode);
     for (unsigned a = 0; a < scene.mNumAnimations; ++a) {
         const aiAnimation& animation = *scene.mAnimations[a];
-        require(std::isfinite(animation.mDuration), "the animation's duration");
+        require(std::isfinite(animation.mDuration), MessageId::ExportDurationNotFinite);
         for (unsigned c = 0; c < animation.mNumChannels; ++c)
             checkChannel(*animation.mChannels[c]);
     }

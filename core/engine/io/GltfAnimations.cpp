@@ -124,7 +124,7 @@ std::string withGltfAnimations(const std::string& gltfJson, std::string& bin,
     json gltf = json::parse(gltfJson, nullptr, false);
     if (gltf.is_discarded() || !gltf.is_object() || !gltf.contains("nodes") ||
         !gltf["nodes"].is_array())
-        throw Error("cannot export: the glTF exporter wrote invalid JSON");
+        throw Error(MessageId::ExportGltfInvalidJson);
     std::map<std::string, int> nodeNamed;
     for (std::size_t n = 0; n < gltf["nodes"].size(); ++n) {
         const json& node = gltf["nodes"][n];
@@ -142,8 +142,8 @@ std::string withGltfAnimations(const std::string& gltfJson, std::string& bin,
             const aiNodeAnim& channel = *animation->mChannels[c];
             const auto node = nodeNamed.find(channel.mNodeName.C_Str());
             if (node == nodeNamed.end())
-                throw Error(std::string("cannot export the animation: no node ") +
-                            channel.mNodeName.C_Str());
+                throw Error(MessageId::ExportAnimationNoNode,
+                            std::string(channel.mNodeName.C_Str()));
             matrixToTrs(gltf["nodes"][static_cast<std::size_t>(node->second)]);
             // The three paths share one input when their keys share times
             // (AssimpAnimationBuilder writes them so), else each has its own.

@@ -16,7 +16,7 @@ using nlohmann::json;
 json parseGltf(const std::string& text) {
     json gltf = json::parse(text, nullptr, false);
     if (gltf.is_discarded() || !gltf.is_object())
-        throw Error("cannot export: the glTF exporter wrote invalid JSON");
+        throw Error(MessageId::ExportGltfInvalidJson);
     return gltf;
 }
 
@@ -37,7 +37,7 @@ void zeroUncovered(const json& gltf, char* data, std::size_t size) {
             const std::size_t offset = view.value("byteOffset", std::size_t{0});
             const std::size_t length = view.value("byteLength", std::size_t{0});
             if (offset > size || length > size - offset)
-                throw Error("cannot export: the glTF exporter wrote a buffer view out of range");
+                throw Error(MessageId::ExportGltfBufferViewOutside);
             std::fill(covered.begin() + static_cast<std::ptrdiff_t>(offset),
                       covered.begin() + static_cast<std::ptrdiff_t>(offset + length), true);
         }
@@ -142,7 +142,7 @@ std::string zeroUnreferencedBinBytes(const std::string& gltfJson, std::string bi
 std::string withBufferUri(const std::string& gltfJson, const std::string& uri) {
     json gltf = parseGltf(gltfJson);
     if (!gltf.contains("buffers") || gltf["buffers"].empty())
-        throw Error("cannot export: the glTF exporter wrote no buffer");
+        throw Error(MessageId::ExportGltfNoBuffer);
     gltf["buffers"][0]["uri"] = uri;
     return gltf.dump(2) + "\n";
 }

@@ -46,7 +46,7 @@ bool refersTo(const json& gltf, int root) {
 std::string withRootChildrenAsSceneRoots(const std::string& gltfJson) {
     json gltf = json::parse(gltfJson, nullptr, false);
     if (gltf.is_discarded() || !gltf.is_object())
-        throw Error("cannot export: the glTF exporter wrote invalid JSON");
+        throw Error(MessageId::ExportGltfInvalidJson);
     if (!gltf.contains("scenes") || !gltf["scenes"].is_array() || gltf["scenes"].size() != 1 ||
         !gltf.contains("nodes") || !gltf["nodes"].is_array())
         return gltfJson;

@@ -30,7 +30,7 @@ std::size_t componentSize(int type) {
         case kFloat:
             return 4;
         default:
-            throw Error("cannot export: the glTF exporter wrote an unknown component type");
+            throw Error(MessageId::ExportGltfUnknownComponentType);
     }
 }
 
@@ -66,7 +66,7 @@ Elements elementsOf(const json& gltf, int accessor, std::size_t binSize) {
     e.count = a.at("count").get<std::size_t>();
     if (view.value("buffer", 0) != 0 || e.size == 0 ||
         (e.count > 0 && e.offset + (e.count - 1) * e.stride + e.size > binSize))
-        throw Error("cannot export: a glTF accessor lies outside its buffer");
+        throw Error(MessageId::ExportGltfAccessorOutside);
     return e;
 }
 
@@ -106,7 +106,7 @@ struct SkinnedPrimitive {
 std::string withOneSkinPerArmature(const std::string& gltfJson, std::string& bin) {
     json gltf = json::parse(gltfJson, nullptr, false);
     if (gltf.is_discarded() || !gltf.is_object())
-        throw Error("cannot export: the glTF exporter wrote invalid JSON");
+        throw Error(MessageId::ExportGltfInvalidJson);
     if (!gltf.contains("skins") || gltf["skins"].size() != 1 || !gltf.contains("nodes"))
         return gltfJson;
     const json& skin = gltf["skins"][0];

@@ -9,7 +9,7 @@ namespace rigmesh {
 Pose poseDemoBend(const Part& part) {
     const Skeleton& skeleton = part.skeleton;
     if (skeleton.boneCount() == 0)
-        throw Error("the pose demo needs a part with bones");
+        throw Error(MessageId::PoseDemoNeedsBones);
     const PoseHierarchy hierarchy(skeleton);
     const Vec3& root = hierarchy.restPosition(hierarchy.root());
     int end = -1;
@@ -19,7 +19,7 @@ Pose poseDemoBend(const Part& part) {
                             (hierarchy.restPosition(end) - root).norm()))
             end = j;
     if (end < 0 || hierarchy.parent(end) < 0)
-        throw Error("the pose demo needs a part with bones");
+        throw Error(MessageId::PoseDemoNeedsBones);
     double chain = 0;
     for (int j = end; hierarchy.parent(j) >= 0; j = hierarchy.parent(j))
         chain += (hierarchy.restPosition(j) - hierarchy.restPosition(hierarchy.parent(j))).norm();

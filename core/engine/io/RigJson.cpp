@@ -13,17 +13,14 @@ namespace {
 void checkRigIsFinite(const Part& part) {
     for (std::size_t v = 0; v < part.mesh.vertices.size(); ++v)
         if (!part.mesh.vertices[v].allFinite())
-            throw Error("cannot write the rig: vertex " + std::to_string(v) +
-                        " is not at a finite position");
+            throw Error(MessageId::RigJsonVertexNotFinite, v);
     for (const Joint& joint : part.skeleton.joints())
         if (!joint.position.allFinite())
-            throw Error("cannot write the rig: joint " + std::to_string(joint.id) +
-                        " is not at a finite position");
+            throw Error(MessageId::RigJsonJointNotFinite, joint.id);
     for (std::size_t v = 0; v < part.weights.perVertex.size(); ++v)
         for (const auto& [bone, weight] : part.weights.perVertex[v])
             if (!std::isfinite(weight))
-                throw Error("cannot write the rig: a weight of vertex " + std::to_string(v) +
-                            " is not finite");
+                throw Error(MessageId::RigJsonWeightNotFinite, v);
 }
 
 }  // namespace

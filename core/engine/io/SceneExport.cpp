@@ -143,7 +143,7 @@ void stageGltf(const ExportedFiles& files, const fs::path& target, std::vector<S
                std::vector<fs::path>& undoOnFailure, std::vector<fs::path>& obsolete) {
     const auto bin = files.companions.find("bin");
     if (bin == files.companions.end())
-        throw Error(MessageId::CannotWriteFile, target.string(), "the glTF exporter wrote no .bin");
+        throw Error(MessageId::ExportGltfNoBin, target.string());
     const std::string binBytes = zeroUnreferencedBinBytes(files.main, bin->second);
     const std::string binName = target.stem().string() + "." + fnv1aHex(binBytes) + ".bin";
     const std::string gltfText = withBufferUri(files.main, binName);

@@ -122,8 +122,10 @@ MeshUnionResult canonicalResult(const SurfaceMesh& mesh,
 }  // namespace
 
 MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double seamEdgeLength) {
-    SurfaceMesh a = toSurfaceMesh(first, "the target part");
-    SurfaceMesh b = toSurfaceMesh(second, "the dragged part");
+    SurfaceMesh a =
+        toSurfaceMesh(first, MessageId::TargetSurfaceNotManifold, MessageId::TargetSurfaceHasHole);
+    SurfaceMesh b = toSurfaceMesh(second, MessageId::DraggedSurfaceNotManifold,
+                                  MessageId::DraggedSurfaceHasHole);
     SurfaceMesh out;
     auto loopEdges = out.add_property_map<EdgeIndex, bool>("e:loop", false).first;
     bool ok = false;

@@ -37,7 +37,11 @@ inline Vec3 toVec(const Point& p) {
     return {p.x(), p.y(), p.z()};
 }
 
-inline SurfaceMesh toSurfaceMesh(const TriMesh& mesh, const char* which, bool closed = true) {
+// `notManifold` and, for a closed surface, `hasHole`: the messages naming
+// the surface when it is not one.
+inline SurfaceMesh toSurfaceMesh(const TriMesh& mesh, MessageId notManifold,
+                                 MessageId hasHole = MessageId::None) {
+    const bool closed = hasHole != MessageId::None;
     SurfaceMesh surface;
     surface.reserve(mesh.vertexCount(), mesh.faceCount() * 3 / 2, mesh.faceCount());
     for (const Vec3& v : mesh.vertices)
@@ -45,11 +49,10 @@ inline SurfaceMesh toSurfaceMesh(const TriMesh& mesh, const char* which, bool cl
     for (const auto& [a, b, c] : mesh.faces) {
         const FaceIndex f = surface.add_face(VertexIndex(a), VertexIndex(b), VertexIndex(c));
         if (f == SurfaceMesh::null_face())
-            throw Error(std::string("The surface of ") + which + " is not a manifold.");
+            throw Error(notManifold);
     }
     if (closed && !CGAL::is_closed(surface))
-        throw Error(std::string("The surface of ") + which +
-                    " has a hole, so it does not bound a volume.");
+        throw Error(hasHole);
     return surface;
 }
 

@@ -42,13 +42,11 @@ bool hasRepeatedIndex(const std::array<int, 3>& f) {
 void validate(const TriMesh& mesh) {
     for (const Vec3& v : mesh.vertices)
         if (!v.allFinite())
-            throw Error("The mesh has a vertex with a non-finite coordinate.");
+            throw Error(MessageId::MeshVertexNotFinite);
     for (int i = 0; i < mesh.faceCount(); ++i)
         for (const int index : mesh.faces[i])
             if (index < 0 || index >= mesh.vertexCount())
-                throw Error("Face " + std::to_string(i) + " refers to vertex " +
-                            std::to_string(index) + " but the mesh has " +
-                            std::to_string(mesh.vertexCount()) + " vertices.");
+                throw Error(MessageId::MeshFaceVertexMissing, i, index, mesh.vertexCount());
 }
 
 // The edge uses of every face without a repeated vertex, grouped by edge:

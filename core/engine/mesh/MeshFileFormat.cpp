@@ -18,8 +18,7 @@ MeshFileFormat meshFileFormatFromPath(const std::string& path) {
         return MeshFileFormat::Off;
     if (extension == ".ply")
         return MeshFileFormat::Ply;
-    throw Error("Unsupported mesh file type '" + (extension.empty() ? path : extension) +
-                "': use .obj, .off or .ply.");
+    throw Error(MessageId::MeshFileTypeUnsupported, extension.empty() ? path : extension);
 }
 
 }  // namespace rigmesh

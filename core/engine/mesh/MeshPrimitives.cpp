@@ -3,10 +3,9 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
-
-#include "base/Error.h"
 
 namespace rigmesh {
 
@@ -33,11 +32,11 @@ int midpoint(TriMesh& mesh, std::unordered_map<std::uint64_t, int>& cache, int a
 
 TriMesh makeIcosphere(int subdivisions, double radius) {
     if (subdivisions < 0 || subdivisions > kMaxIcosphereSubdivisions)
-        throw Error("Icosphere subdivisions must be between 0 and " +
-                    std::to_string(kMaxIcosphereSubdivisions) + ", got " +
-                    std::to_string(subdivisions) + ".");
+        throw std::logic_error("Icosphere subdivisions must be between 0 and " +
+                               std::to_string(kMaxIcosphereSubdivisions) + ", got " +
+                               std::to_string(subdivisions) + ".");
     if (!(radius > 0))
-        throw Error("Icosphere radius must be positive.");
+        throw std::logic_error("Icosphere radius must be positive.");
 
     // The icosahedron: vertices on three orthogonal golden rectangles.
     const double t = std::numbers::phi;
@@ -72,11 +71,11 @@ TriMesh makeIcosphere(int subdivisions, double radius) {
 
 TriMesh makeCylinderTube(int rings, int segments, double radius, double length) {
     if (rings < 2 || segments < 3)
-        throw Error("A cylinder needs at least 2 rings and 3 segments, got " +
-                    std::to_string(rings) + " rings and " + std::to_string(segments) +
-                    " segments.");
+        throw std::logic_error("A cylinder needs at least 2 rings and 3 segments, got " +
+                               std::to_string(rings) + " rings and " + std::to_string(segments) +
+                               " segments.");
     if (!(radius > 0) || !(length > 0))
-        throw Error("Cylinder radius and length must be positive.");
+        throw std::logic_error("Cylinder radius and length must be positive.");
 
     TriMesh mesh;
     mesh.vertices.reserve(static_cast<std::size_t>(rings) * segments + 2);

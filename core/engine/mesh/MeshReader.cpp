@@ -4,6 +4,7 @@
 #include <iterator>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "base/Error.h"
 #include "mesh/MeshFileFormat.h"
@@ -16,18 +17,16 @@ namespace rigmesh {
 namespace {
 
 using meshtext::LineReader;
-using meshtext::toDouble;
-using meshtext::toInteger;
 using meshtext::tokens;
 
 std::string loadFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw Error("Cannot open '" + path + "': the file does not exist or is not readable.");
+        throw Error(MessageId::MeshFileCannotOpen, path);
     std::ostringstream content;
     content << in.rdbuf();
     if (in.bad())
-        throw Error("Cannot read '" + path + "': reading the file failed.");
+        throw Error(MessageId::MeshFileReadFailed, path);
     return std::move(content).str();
 }
 
@@ -37,11 +36,27 @@ void addFan(TriMesh& mesh, const std::vector<int>& corners) {
         mesh.faces.push_back({corners[0], corners[i], corners[i + 1]});
 }
 
-std::string atLine(int line) {
-    return "line " + std::to_string(line);
-}
+// A line of an OBJ or OFF file, to read numbers from and to name in messages.
+struct TextLine {
+    const std::string& path;
+    int number = 0;
 
-TriMesh readObj(std::string_view text) {
+    double toDouble(std::string_view token) const {
+        if (const auto value = meshtext::toDouble(token))
+            return *value;
+        throw Error(MessageId::MeshLineNotANumber, path, number, std::string(token));
+    }
+    long long toInteger(std::string_view token) const {
+        if (const auto value = meshtext::toInteger(token))
+            return *value;
+        throw Error(MessageId::MeshLineNotAnInteger, path, number, std::string(token));
+    }
+    Vec3 toPoint(const std::vector<std::string_view>& parts, std::size_t first) const {
+        return {toDouble(parts[first]), toDouble(parts[first + 1]), toDouble(parts[first + 2])};
+    }
+};
+
+TriMesh readObj(std::string_view text, const std::string& path) {
     TriMesh mesh;
     LineReader lines(text);
     std::string_view line;
@@ -50,27 +65,25 @@ TriMesh readObj(std::string_view text) {
         const auto parts = tokens(line);
         if (parts.empty())
             continue;
-        const std::string where = atLine(lines.lineNumber());
+        const TextLine at{path, lines.lineNumber()};
         if (parts[0] == "v") {
             // "v x y z [w or colour]": extra values are ignored.
             if (parts.size() < 4)
-                throw Error(where + ": a vertex needs three coordinates.");
-            mesh.vertices.emplace_back(toDouble(parts[1], where), toDouble(parts[2], where),
-                                       toDouble(parts[3], where));
+                throw Error(MessageId::MeshLineVertexCoordinates, path, at.number);
+            mesh.vertices.push_back(at.toPoint(parts, 1));
         } else if (parts[0] == "f") {
             if (parts.size() < 4)
-                throw Error(where + ": a face needs at least three vertices.");
+                throw Error(MessageId::MeshLineFaceCorners, path, at.number);
             corners.clear();
             for (std::size_t i = 1; i < parts.size(); ++i) {
                 // "a", "a/t", "a//n" or "a/t/n": only the position index matters.
                 const std::string_view corner = parts[i].substr(0, parts[i].find('/'));
-                const long long index = toInteger(corner, where);
+                const long long index = at.toInteger(corner);
                 // Positive indices count from 1; negative ones back from the last vertex.
                 const long long resolved = index > 0 ? index - 1 : mesh.vertexCount() + index;
                 if (index == 0 || resolved < 0 || resolved >= mesh.vertexCount())
-                    throw Error(where + ": face refers to vertex " + std::string(corner) +
-                                " but only " + std::to_string(mesh.vertexCount()) +
-                                " vertices are defined before it.");
+                    throw Error(MessageId::ObjFaceVertexUndefined, path, at.number,
+                                std::string(corner), mesh.vertexCount());
                 corners.push_back(static_cast<int>(resolved));
             }
             addFan(mesh, corners);
@@ -80,8 +93,11 @@ TriMesh readObj(std::string_view text) {
     return mesh;
 }
 
-// The tokens of the next line that is neither blank nor a comment.
-std::vector<std::string_view> nextDataLine(LineReader& lines, const std::string& expected) {
+// The tokens of the next line that is neither blank nor a comment; at the
+// end of the file, the Error `endsEarly()` makes is thrown (made only then:
+// this runs once per vertex).
+template <class EndsEarly>
+std::vector<std::string_view> nextDataLine(LineReader& lines, const EndsEarly& endsEarly) {
     std::string_view line;
     while (lines.next(line)) {
         line = line.substr(0, line.find('#'));
@@ -89,59 +105,56 @@ std::vector<std::string_view> nextDataLine(LineReader& lines, const std::string&
         if (!parts.empty())
             return parts;
     }
-    throw Error("the file ends early, while expecting " + expected + ".");
+    throw endsEarly();
 }
 
-int toCount(std::string_view token, const std::string& where) {
-    const long long value = toInteger(token, where);
+int toCount(std::string_view token, const TextLine& at) {
+    const long long value = at.toInteger(token);
     if (value < 0 || value > std::numeric_limits<int>::max())
-        throw Error(where + ": invalid count '" + std::string(token) + "'.");
+        throw Error(MessageId::MeshLineInvalidCount, at.path, at.number, std::string(token));
     return static_cast<int>(value);
 }
 
-TriMesh readOff(std::string_view text) {
+TriMesh readOff(std::string_view text, const std::string& path) {
     LineReader lines(text);
-    auto header = nextDataLine(lines, "the OFF header");
+    auto header = nextDataLine(lines, [&] { return Error(MessageId::OffEndsBeforeHeader, path); });
     if (header[0] != "OFF")
-        throw Error("the file does not start with 'OFF'.");
+        throw Error(MessageId::OffNoHeader, path);
     // The counts may share the header line or follow on the next one.
     header.erase(header.begin());
     if (header.empty())
-        header = nextDataLine(lines, "the vertex and face counts");
-    const std::string countsWhere = atLine(lines.lineNumber());
+        header = nextDataLine(lines, [&] { return Error(MessageId::OffEndsBeforeCounts, path); });
+    const TextLine countsAt{path, lines.lineNumber()};
     if (header.size() < 2)
-        throw Error(countsWhere + ": expected the vertex and face counts.");
-    const int vertexCount = toCount(header[0], countsWhere);
-    const int faceCount = toCount(header[1], countsWhere);
+        throw Error(MessageId::OffNoCounts, path, countsAt.number);
+    const int vertexCount = toCount(header[0], countsAt);
+    const int faceCount = toCount(header[1], countsAt);
 
     TriMesh mesh;
     // Each vertex takes at least 6 bytes of text; never trust the count to reserve more.
     mesh.vertices.reserve(std::min<std::size_t>(vertexCount, text.size() / 6));
     for (int i = 0; i < vertexCount; ++i) {
         const auto parts = nextDataLine(
-            lines, "vertex " + std::to_string(i + 1) + " of " + std::to_string(vertexCount));
-        const std::string where = atLine(lines.lineNumber());
+            lines, [&] { return Error(MessageId::OffEndsBeforeVertex, path, i + 1, vertexCount); });
+        const TextLine at{path, lines.lineNumber()};
         if (parts.size() < 3)
-            throw Error(where + ": a vertex needs three coordinates.");
-        mesh.vertices.emplace_back(toDouble(parts[0], where), toDouble(parts[1], where),
-                                   toDouble(parts[2], where));
+            throw Error(MessageId::MeshLineVertexCoordinates, path, at.number);
+        mesh.vertices.push_back(at.toPoint(parts, 0));
     }
     std::vector<int> corners;
     for (int i = 0; i < faceCount; ++i) {
         const auto parts = nextDataLine(
-            lines, "face " + std::to_string(i + 1) + " of " + std::to_string(faceCount));
-        const std::string where = atLine(lines.lineNumber());
-        const long long n = toInteger(parts[0], where);
+            lines, [&] { return Error(MessageId::OffEndsBeforeFace, path, i + 1, faceCount); });
+        const TextLine at{path, lines.lineNumber()};
+        const long long n = at.toInteger(parts[0]);
         if (n < 3 || static_cast<long long>(parts.size()) < n + 1)
-            throw Error(where +
-                        ": a face needs a corner count of at least 3 and that many "
-                        "vertex indices.");
+            throw Error(MessageId::OffFaceCornerCount, path, at.number);
         corners.clear();
         for (long long k = 1; k <= n; ++k) {
-            const long long index = toInteger(parts[k], where);
+            const long long index = at.toInteger(parts[k]);
             if (index < 0 || index >= vertexCount)
-                throw Error(where + ": face refers to vertex " + std::to_string(index) +
-                            " but there are " + std::to_string(vertexCount) + " vertices.");
+                throw Error(MessageId::OffFaceVertexOutOfRange, path, at.number, index,
+                            vertexCount);
             corners.push_back(static_cast<int>(index));
         }
         addFan(mesh, corners);  // any colour after the indices is ignored
@@ -156,19 +169,15 @@ TriMesh readMesh(const std::string& path, std::vector<VertexColor>* vertexColors
     const std::string bytes = loadFile(path);
     if (vertexColors)
         vertexColors->clear();
-    try {
-        switch (format) {
-            case MeshFileFormat::Obj:
-                return readObj(bytes);
-            case MeshFileFormat::Off:
-                return readOff(bytes);
-            case MeshFileFormat::Ply:
-                return readPly(bytes, vertexColors);
-        }
-    } catch (const Error& error) {
-        throw Error("Cannot read '" + path + "': " + error.what());
+    switch (format) {
+        case MeshFileFormat::Obj:
+            return readObj(bytes, path);
+        case MeshFileFormat::Off:
+            return readOff(bytes, path);
+        case MeshFileFormat::Ply:
+            return readPly(bytes, path, vertexColors);
     }
-    throw Error("Cannot read '" + path + "': unknown format.");
+    throw std::logic_error("readMesh: a mesh file format without a reader");
 }
 
 }  // namespace rigmesh

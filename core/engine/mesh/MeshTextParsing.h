@@ -1,15 +1,14 @@
-// Small strict parsing helpers shared by the mesh file readers. Every failure
-// throws Error with a message saying what was expected.
+// Small strict parsing helpers shared by the mesh file readers, which throw
+// an Error saying where a token failed to parse.
 #pragma once
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "base/Error.h"
 
 namespace rigmesh::meshtext {
 
@@ -49,24 +48,25 @@ class LineReader {
     int number_ = 0;
 };
 
-// A finite double; a leading '+' is accepted, as C's strtod does.
-inline double toDouble(std::string_view token, const std::string& what) {
+// A finite double; a leading '+' is accepted, as C's strtod does. Nothing
+// for any other token: the reader says where it was, in its own message.
+inline std::optional<double> toDouble(std::string_view token) {
     if (!token.empty() && token.front() == '+')
         token.remove_prefix(1);
     double value = 0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     if (error != std::errc() || end != token.data() + token.size() || !std::isfinite(value))
-        throw Error(what + ": '" + std::string(token) + "' is not a finite number.");
+        return std::nullopt;
     return value;
 }
 
-inline long long toInteger(std::string_view token, const std::string& what) {
+inline std::optional<long long> toInteger(std::string_view token) {
     if (!token.empty() && token.front() == '+')
         token.remove_prefix(1);
     long long value = 0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     if (error != std::errc() || end != token.data() + token.size())
-        throw Error(what + ": '" + std::string(token) + "' is not an integer.");
+        return std::nullopt;
     return value;
 }
 

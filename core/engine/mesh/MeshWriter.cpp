@@ -4,6 +4,7 @@
 #include <bit>
 #include <charconv>
 #include <cstring>
+#include <stdexcept>
 
 #include "base/Error.h"
 #include "base/StagedFile.h"
@@ -112,18 +113,15 @@ std::string plyBytes(const TriMesh& mesh, const std::vector<VertexColor>& colors
 void validate(const TriMesh& mesh, const MeshWriteOptions& options) {
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
         if (!mesh.vertices[v].allFinite())
-            throw Error("Cannot write the mesh: vertex " + std::to_string(v) +
-                        " is not a finite point.");
+            throw Error(MessageId::MeshWriteVertexNotFinite, v);
     for (std::size_t f = 0; f < mesh.faces.size(); ++f)
         for (const int index : mesh.faces[f])
             if (index < 0 || index >= mesh.vertexCount())
-                throw Error("Cannot write the mesh: face " + std::to_string(f) +
-                            " refers to vertex " + std::to_string(index) + " but there are only " +
-                            std::to_string(mesh.vertexCount()) + " vertices.");
+                throw Error(MessageId::MeshWriteFaceMissingVertex, f, index, mesh.vertexCount());
     if (!options.vertexColors.empty() && options.vertexColors.size() != mesh.vertices.size())
-        throw Error("Cannot write the mesh: " + std::to_string(options.vertexColors.size()) +
-                    " vertex colours given for " + std::to_string(mesh.vertexCount()) +
-                    " vertices.");
+        throw std::logic_error(
+            "Cannot write the mesh: " + std::to_string(options.vertexColors.size()) +
+            " vertex colours given for " + std::to_string(mesh.vertexCount()) + " vertices.");
 }
 
 }  // namespace

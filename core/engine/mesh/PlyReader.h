@@ -1,6 +1,7 @@
 // Reading PLY (ASCII, binary little- and big-endian) into a TriMesh.
 #pragma once
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -10,7 +11,9 @@ namespace rigmesh {
 
 // Parses the bytes of a PLY file: vertex x/y/z (and red/green/blue into
 // `vertexColors` when given), face vertex_indices fan-triangulated; other
-// elements and properties are skipped. Throws Error describing the problem.
-TriMesh readPly(std::string_view bytes, std::vector<VertexColor>* vertexColors);
+// elements and properties are skipped. Throws Error describing the problem,
+// naming the file as `path`.
+TriMesh readPly(std::string_view bytes, const std::string& path,
+                std::vector<VertexColor>* vertexColors);
 
 }  // namespace rigmesh

@@ -40,8 +40,7 @@ SkinWeights weightsByIndex(const Skeleton& skeleton, const SkinWeightsById& weig
     auto indexOf = [&](BoneId bone) {
         const int at = index[bone];
         if (at < 0)
-            throw Error("A skin weight refers to bone " + std::to_string(bone) +
-                        ", which the skeleton does not have.");
+            throw Error(MessageId::WeightNamesMissingBone, bone);
         return at;
     };
     SkinWeights result;

@@ -5,6 +5,7 @@
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
 #include <map>
+#include <stdexcept>
 #include <string>
 
 #include "base/Error.h"
@@ -78,7 +79,7 @@ Part decimatedPart(const Part& part, int faces) {
         const Point& p = mesh.point(v);
         const auto source = original.find({p.x(), p.y(), p.z()});
         if (source == original.end())
-            throw Error("decimating '" + part.name + "' made a vertex of its own");
+            throw std::logic_error("decimating '" + part.name + "' made a vertex of its own");
         index[v] = out.mesh.vertexCount();
         out.mesh.vertices.push_back(part.mesh.vertices[static_cast<std::size_t>(source->second)]);
         if (!part.weights.perVertex.empty())
@@ -96,7 +97,7 @@ Part decimatedPart(const Part& part, int faces) {
     out.mirror.clear();
     out.knownClosestBones.clear();
     if (const auto problems = out.validate(); !problems.empty())
-        throw Error("decimating '" + part.name + "' failed: " + problems.front());
+        throw Error(MessageId::DecimationInvalidResult, part.name, problems.front());
     return out;
 }
 

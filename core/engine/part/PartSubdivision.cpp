@@ -151,7 +151,7 @@ Part subdividedPart(const Part& part, int levels) {
         out.knownClosestBones.clear();
     }
     if (const auto problems = out.validate(); !problems.empty())
-        throw Error("subdividing '" + part.name + "' failed: " + problems.front());
+        throw Error(MessageId::SubdivisionInvalidResult, part.name, problems.front());
     return out;
 }
 

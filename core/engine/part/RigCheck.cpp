@@ -9,7 +9,7 @@ namespace rigmesh {
 
 RigCheckReport checkRig(const Part& part, const RigCheckOptions& options) {
     if (options.maxInfluences < 1 || !(options.sumTolerance > 0.0))
-        throw Error("Check Rig needs at least one influence and a positive tolerance.");
+        throw Error(MessageId::RigCheckOptionsInvalid);
     RigCheckReport report;
     const int vertexCount = part.mesh.vertexCount();
     const auto& weights = part.weights.perVertex;

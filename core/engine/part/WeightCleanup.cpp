@@ -109,7 +109,7 @@ int smoothAllWeights(Part& part, const SmoothAllOptions& options, const std::set
 
 int recomputeWeights(Part& part, const std::set<BoneId>& locked) {
     if (part.skeleton.boneCount() == 0)
-        throw Error("Only a part with a skeleton has weights to recompute.");
+        throw Error(MessageId::RecomputeNeedsSkeleton);
     const LockedBones lockedBones(part.skeleton, locked);
     const WeightsById fresh = recomputeWeightsGlobally(part.mesh, part.skeleton);
     auto& weights = part.weights.perVertex;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "base/Error.h"
@@ -109,7 +110,7 @@ const PartSymmetry& WeightPainter::symmetry(const Part& part) {
 
 DabResult WeightPainter::paint(Part& part, const WeightDab& dab) {
     if (part.mesh.vertexCount() != mesh_.vertexCount())
-        throw Error("The weight painter was made for another mesh.");
+        throw std::logic_error("The weight painter was made for another mesh.");
     checkDab(part, dab);
     const LockedBones locked(part.skeleton, dab.locked);
     DabResult result;

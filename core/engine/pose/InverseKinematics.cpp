@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "base/Error.h"
 #include "pose/ForwardKinematics.h"
@@ -172,7 +173,7 @@ IkResult dragJoint(const PoseHierarchy& h, const Pose& pose, JointId joint, cons
 
     if (options.maxIterations < 0 || !(options.tolerance >= 0) ||
         !(options.softReach >= 0 && options.softReach < 1))
-        throw Error(
+        throw std::logic_error(
             "IK options need a non-negative iteration count and tolerance and a soft reach in "
             "[0, 1).");
     const int dragged = h.indexOf(joint);

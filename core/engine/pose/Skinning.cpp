@@ -1,9 +1,9 @@
 #include "pose/Skinning.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 
-#include "base/Error.h"
 #include "base/ParallelFor.h"
 #include "pose/ForwardKinematics.h"
 #include "pose/VertexNormals.h"
@@ -84,7 +84,7 @@ SkinningTransforms::SkinningTransforms(const Skeleton& skeleton,
                                        const std::vector<RigidTransform>& boneTransforms)
     : positions_(skeleton), slotsAreIds_(positions_.coversAllInArray()) {
     if (static_cast<int>(boneTransforms.size()) != skeleton.boneCount())
-        throw Error(
+        throw std::logic_error(
             "Skinning needs one transform per bone: " + std::to_string(boneTransforms.size()) +
             " for " + std::to_string(skeleton.boneCount()) + " bones.");
     const std::size_t slots = slotsAreIds_ ? positions_.arraySize() : boneTransforms.size();
@@ -114,18 +114,19 @@ SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
                              const SkinningTransforms& transforms, const SkinningOptions& options) {
     const int count = static_cast<int>(restPositions.size());
     if (static_cast<int>(weights.size()) != count)
-        throw Error("Skinning needs one weight list per vertex: " + std::to_string(weights.size()) +
-                    " lists for " + std::to_string(count) + " vertices.");
+        throw std::logic_error(
+            "Skinning needs one weight list per vertex: " + std::to_string(weights.size()) +
+            " lists for " + std::to_string(count) + " vertices.");
     const bool withNormals = !restNormals.empty();
     if (withNormals && static_cast<int>(restNormals.size()) != count)
-        throw Error("Skinning needs one rest normal per vertex or none.");
+        throw std::logic_error("Skinning needs one rest normal per vertex or none.");
     if (options.threads < 1)
-        throw Error("Skinning needs at least one thread.");
+        throw std::logic_error("Skinning needs at least one thread.");
     for (const auto& influences : weights) {
         for (const auto& [bone, weight] : influences) {
             if (!transforms.hasBone(bone))
-                throw Error("A skin weight refers to bone " + std::to_string(bone) +
-                            ", which the posed skeleton does not have.");
+                throw std::logic_error("A skin weight refers to bone " + std::to_string(bone) +
+                                       ", which the posed skeleton does not have.");
         }
     }
     // Ids far beyond the bone count: weights moved onto the slots once.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "base/Error.h"
 #include "base/ParallelFor.h"
@@ -55,35 +56,35 @@ class SolveWorkspace {
 void validateInput(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
                    const ClosestBones& closestBones, const BoneHeatOptions& options) {
     if (bones.empty()) {
-        throw Error("Skin weights need at least one bone.");
+        throw Error(MessageId::WeightsNeedBone);
     }
     if (std::none_of(bones.begin(), bones.end(), [](const auto& b) { return isFinite(b); })) {
-        throw Error("Skin weights need at least one bone with finite end points.");
+        throw Error(MessageId::WeightsNeedFiniteBone);
     }
     for (const Vec3& p : mesh.vertices) {
         if (!p.allFinite()) {
-            throw Error("The mesh has a vertex with a non-finite position.");
+            throw Error(MessageId::MeshVertexPositionNotFinite);
         }
     }
     for (const auto& face : mesh.faces) {
         for (int corner : face) {
             if (corner < 0 || corner >= mesh.vertexCount()) {
-                throw Error("The mesh has a triangle that refers to a missing vertex.");
+                throw Error(MessageId::MeshTriangleMissingVertex);
             }
         }
     }
     if (!closestBones.empty() && closestBones.size() != mesh.vertices.size()) {
-        throw Error("The closest bones must be given for every vertex or for none.");
+        throw std::logic_error("The closest bones must be given for every vertex or for none.");
     }
     if (!(options.heatConstant > 0.0) || !std::isfinite(options.heatConstant)) {
-        throw Error("The heat constant must be a positive number.");
+        throw std::logic_error("The heat constant must be a positive number.");
     }
     if (!(options.taperEnd >= 0.0) || !(options.taperStart >= options.taperEnd) ||
         !(options.taperStart < 1.0)) {
-        throw Error("The weight taper needs 0 <= end <= start < 1.");
+        throw std::logic_error("The weight taper needs 0 <= end <= start < 1.");
     }
     if (options.threads < 1) {
-        throw Error("The skin weight solver needs at least one thread.");
+        throw std::logic_error("The skin weight solver needs at least one thread.");
     }
 }
 
@@ -130,7 +131,7 @@ void BoneHeatSolver::Impl::findClosestBones(const TriMesh& mesh, const ClosestBo
         if (!given.empty()) {
             for (const auto& [bone, distance] : given[v]) {
                 if (bone < 0 || bone >= boneCount()) {
-                    throw Error("A closest bone refers to a bone that does not exist.");
+                    throw std::logic_error("A closest bone refers to a bone that does not exist.");
                 }
                 if (boneIsFinite[bone] && std::isfinite(distance) && distance >= 0.0) {
                     closest[v].emplace_back(bone, distance);
@@ -380,14 +381,14 @@ const Eigen::SparseMatrix<double>& BoneHeatSolver::systemMatrix() const {
 
 Eigen::VectorXd BoneHeatSolver::rightHandSide(int bone) const {
     if (bone < 0 || bone >= boneCount()) {
-        throw Error("There is no bone with this index.");
+        throw std::logic_error("There is no bone with this index.");
     }
     return impl_->rightHandSide(bone);
 }
 
 Eigen::VectorXd BoneHeatSolver::solveBone(int bone) const {
     if (bone < 0 || bone >= boneCount()) {
-        throw Error("There is no bone with this index.");
+        throw std::logic_error("There is no bone with this index.");
     }
     SolveWorkspace workspace;
     Eigen::VectorXd w(vertexCount());

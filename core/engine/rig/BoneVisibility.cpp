@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 
 #include "base/Error.h"
 
@@ -48,7 +49,7 @@ BoneVisibility::BoneVisibility(const TriMesh& mesh) : tree_(std::make_unique<Tre
     for (const auto& face : mesh.faces) {
         for (int corner : face) {
             if (corner < 0 || corner >= mesh.vertexCount()) {
-                throw Error("The mesh has a triangle that refers to a missing vertex.");
+                throw Error(MessageId::MeshTriangleMissingVertex);
             }
         }
         const Triangle triangle(toPoint(mesh.vertices[face[0]]), toPoint(mesh.vertices[face[1]]),
@@ -97,7 +98,7 @@ std::vector<std::vector<std::pair<int, double>>> closestVisibleBones(
     for (std::size_t t = 0; t < verticesToTest.size(); ++t) {
         const int v = verticesToTest[t];
         if (v < 0 || v >= mesh.vertexCount()) {
-            throw Error("A vertex to test for bone visibility is not in the mesh.");
+            throw std::logic_error("A vertex to test for bone visibility is not in the mesh.");
         }
         const Vec3& position = mesh.vertices[v];
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 #include <utility>
 
 #include "base/Error.h"
@@ -18,7 +19,8 @@ Vec2 perpendicular(const Vec2& v) {
 
 void checkThreshold(double threshold) {
     if (!std::isfinite(threshold) || threshold < 0.0) {
-        throw Error("The simplification threshold must be a finite length of at least zero.");
+        throw std::logic_error(
+            "The simplification threshold must be a finite length of at least zero.");
     }
 }
 

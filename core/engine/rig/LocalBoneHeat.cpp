@@ -98,7 +98,7 @@ LocalBoneHeatResult recomputeWeightsLocally(const TriMesh& mesh, const Skeleton&
                                             const std::vector<BoneId>& extraBones,
                                             const LocalBoneHeatOptions& options) {
     if (skeleton.boneCount() == 0)
-        throw Error("Skin weights need at least one bone.");
+        throw Error(MessageId::WeightsNeedBone);
     const int n = mesh.vertexCount();
     std::vector<BoneId> allIds;
     for (const Bone& bone : skeleton.bones())

@@ -14,17 +14,6 @@
 
 namespace rigmesh {
 
-namespace {
-
-std::string jointName(JointId id) {
-    return "joint " + std::to_string(id);
-}
-std::string boneName(BoneId id) {
-    return "bone " + std::to_string(id);
-}
-
-}  // namespace
-
 Skeleton Skeleton::restore(std::vector<Joint> joints, std::vector<Bone> bones, JointId root,
                            std::map<JointId, BoneId> attachments) {
     Skeleton s;
@@ -68,7 +57,7 @@ BoneId Skeleton::addBone(JointId head, JointId tail) {
     indexOfJoint(head);
     indexOfJoint(tail);
     if (head == tail) {
-        throw Error("A bone cannot connect " + jointName(head) + " to itself.");
+        throw Error(MessageId::BoneToItself, head);
     }
     const BoneId id = nextBoneId_++;
     boneIndex_.emplace(id, boneCount());
@@ -147,7 +136,7 @@ JointId Skeleton::splitBone(BoneId id, const Vec3& position) {
 
 void Skeleton::mergeJoints(JointId keep, JointId gone) {
     if (!hasJoint(keep) || !hasJoint(gone))
-        throw Error("Only existing joints can be merged.");
+        throw Error(MessageId::MergeMissingJoints);
     if (keep == gone)
         return;
     for (Bone& b : bones_) {
@@ -177,7 +166,7 @@ void Skeleton::attach(JointId joint, BoneId parent) {
     if (parent != kNoBone)
         indexOfBone(parent);
     if (joint == root_)
-        throw Error("The root " + jointName(joint) + " cannot hang from a bone.");
+        throw Error(MessageId::RootCannotHang, joint);
     attachments_[joint] = parent;
 }
 
@@ -196,7 +185,7 @@ std::vector<JointId> Skeleton::attachedTo(BoneId bone) const {
 int Skeleton::indexOfJoint(JointId id) const {
     const auto it = jointIndex_.find(id);
     if (it == jointIndex_.end()) {
-        throw Error("The skeleton has no " + jointName(id) + ".");
+        throw Error(MessageId::SkeletonHasNoJoint, id);
     }
     return it->second;
 }
@@ -204,7 +193,7 @@ int Skeleton::indexOfJoint(JointId id) const {
 int Skeleton::indexOfBone(BoneId id) const {
     const auto it = boneIndex_.find(id);
     if (it == boneIndex_.end()) {
-        throw Error("The skeleton has no " + boneName(id) + ".");
+        throw Error(MessageId::SkeletonHasNoBone, id);
     }
     return it->second;
 }
@@ -262,7 +251,7 @@ double Skeleton::boneLength(BoneId id) const {
 JointId chooseCentralRoot(const Skeleton& s) {
     const int n = s.jointCount();
     if (n == 0) {
-        throw Error("Cannot choose a root for a skeleton without joints.");
+        throw Error(MessageId::RootWithoutJoints);
     }
     std::vector<std::vector<std::pair<int, double>>> adjacent(n);
     for (const Bone& b : s.bones()) {

@@ -223,7 +223,7 @@ PartSkeleton buildSkeleton(const Decomposition& decomposition,
     skeleton.reorient();
     auto problems = skeleton.validate();
     if (!problems.empty())
-        throw Error("the skeleton of this shape is invalid: " + problems.front());
+        throw Error(MessageId::SkeletonInvalid, problems.front());
     return result;
 }
 

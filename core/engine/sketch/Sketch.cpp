@@ -87,14 +87,13 @@ double coordinate(const nlohmann::json& value, std::size_t pointIndex, const cha
     }
     // Only a primitive value is printed: dump() recurses once per level, and a
     // list nested 70,000 deep overflowed the stack (tests/data/fuzz).
-    std::string shown = value.is_array()    ? "a list"
-                        : value.is_object() ? "an object"
+    std::string shown = value.is_array()    ? "[...]"
+                        : value.is_object() ? "{...}"
                         : value.is_null()   ? "null"
                                             : value.dump();
     if (shown.size() > 40)
         shown = shown.substr(0, 37) + "...";
-    throw Error("Sketch \"" + sourceName + "\": point " + std::to_string(pointIndex) + " has " +
-                shown + " as its " + axis + " coordinate; every coordinate must be a number.");
+    throw Error(MessageId::SketchCoordinateNotNumber, sourceName, pointIndex, shown, axis);
 }
 
 }  // namespace
@@ -104,16 +103,14 @@ Sketch parseSketchJson(const std::string& text, const std::string& sourceName) {
     try {
         document = nlohmann::json::parse(quoteNonFiniteTokens(text));
     } catch (const nlohmann::json::parse_error& error) {
-        throw Error("Sketch \"" + sourceName +
-                    "\" is not valid JSON: " + jsonread::parseErrorReason(error));
+        throw Error(MessageId::SketchNotJson, sourceName, jsonread::parseErrorReason(error));
     } catch (const nlohmann::json::exception& error) {
         // E.g. out_of_range 406: a number like 1e999 that no double can hold.
-        throw Error("Sketch \"" + sourceName +
-                    "\" has a number out of range: " + jsonread::parseErrorReason(error));
+        throw Error(MessageId::SketchNumberOutOfRange, sourceName,
+                    jsonread::parseErrorReason(error));
     }
     if (!document.is_object()) {
-        throw Error("Sketch \"" + sourceName +
-                    "\" must be a JSON object with a \"points\" array of [x, y] pairs.");
+        throw Error(MessageId::SketchNotObject, sourceName);
     }
     Sketch sketch;
     const auto name = document.find("name");
@@ -121,14 +118,13 @@ Sketch parseSketchJson(const std::string& text, const std::string& sourceName) {
                                                                 : stemOf(sourceName);
     const auto points = document.find("points");
     if (points == document.end() || !points->is_array()) {
-        throw Error("Sketch \"" + sourceName + "\" has no \"points\" array of [x, y] pairs.");
+        throw Error(MessageId::SketchNoPoints, sourceName);
     }
     sketch.points.reserve(points->size());
     for (std::size_t i = 0; i < points->size(); ++i) {
         const nlohmann::json& point = (*points)[i];
         if (!point.is_array() || point.size() != 2) {
-            throw Error("Sketch \"" + sourceName + "\": point " + std::to_string(i) +
-                        " is not an [x, y] pair of numbers.");
+            throw Error(MessageId::SketchPointNotPair, sourceName, i);
         }
         sketch.points.emplace_back(coordinate(point[0], i, "x", sourceName),
                                    coordinate(point[1], i, "y", sourceName));
@@ -141,19 +137,17 @@ Sketch readSketchFile(const std::string& path) {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (extension != ".json" && extension != ".svg") {
-        throw Error("Cannot read sketch \"" + path + "\": unknown file type \"" + extension +
-                    "\"; use a .json or .svg file.");
+        throw Error(MessageId::SketchFileTypeUnknown, path, extension);
     }
     std::error_code ignored;
     std::ifstream file(path, std::ios::binary);
     if (!file.is_open() || std::filesystem::is_directory(path, ignored)) {
-        throw Error("Cannot read sketch file \"" + path +
-                    "\": it does not exist or is not readable.");
+        throw Error(MessageId::SketchFileUnreadable, path);
     }
     std::ostringstream contents;
     contents << file.rdbuf();
     if (file.bad()) {
-        throw Error("Cannot read sketch file \"" + path + "\": reading it failed.");
+        throw Error(MessageId::SketchFileReadFailed, path);
     }
     return extension == ".json" ? parseSketchJson(contents.str(), path)
                                 : parseSketchSvg(contents.str(), path);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "base/Error.h"
@@ -190,7 +191,7 @@ double unitSpacing(const StrokeCleanOptions& options, const Normalization& unit,
         return options.spacing / unit.scale;
     }
     if (!(options.relativeSpacing > 0.0) || !std::isfinite(options.relativeSpacing)) {
-        throw Error(
+        throw std::logic_error(
             "The stroke spacing must be positive: set a relative spacing above 0 or an "
             "absolute spacing.");
     }
@@ -209,7 +210,7 @@ std::size_t sampleCount(double length, double spacing) {
 
 CleanPolygon cleanStroke(const std::vector<Vec2>& raw, const StrokeCleanOptions& options) {
     if (options.smoothingIterations < 0) {
-        throw Error("The number of smoothing iterations cannot be negative.");
+        throw std::logic_error("The number of smoothing iterations cannot be negative.");
     }
     checkFinite(raw);
     if (raw.empty()) {

@@ -86,12 +86,11 @@ bool findOutline(const tinyxml2::XMLElement& element, const Affine2& parent, Pol
 Sketch parseSketchSvg(const std::string& text, const std::string& sourceName) {
     tinyxml2::XMLDocument document;
     if (document.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
-        throw Error("Sketch \"" + sourceName + "\" is not valid SVG: " + document.ErrorStr());
+        throw Error(MessageId::SketchNotSvg, sourceName, std::string(document.ErrorStr()));
     }
     const tinyxml2::XMLElement* root = document.RootElement();
     if (root == nullptr || localName(*root) != "svg") {
-        throw Error("Sketch \"" + sourceName +
-                    "\" is not an SVG document (no <svg> root element).");
+        throw Error(MessageId::SketchNoSvgRoot, sourceName);
     }
     Polyline2 outline;
     bool found = false;
@@ -101,8 +100,7 @@ Sketch parseSketchSvg(const std::string& text, const std::string& sourceName) {
         throw Error("Sketch \"" + sourceName + "\": " + error.what());
     }
     if (!found) {
-        throw Error("Sketch \"" + sourceName +
-                    "\" contains no path, polyline or polygon to use as the stroke.");
+        throw Error(MessageId::SketchSvgNoStroke, sourceName);
     }
     Sketch sketch;
     sketch.name = std::filesystem::path(sourceName).stem().string();

@@ -29,7 +29,7 @@ std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double
                                    double fixedWeight) {
     const int n = mesh.vertexCount();
     if (std::none_of(anchorWeights.begin(), anchorWeights.end(), [](double w) { return w > 0; }))
-        throw Error("least-squares smoothing needs at least one anchored vertex");
+        throw Error(MessageId::SmoothingNeedsAnchor);
 
     // Unknowns: the vertices not held exactly.
     std::vector<int> unknown(n, -1);

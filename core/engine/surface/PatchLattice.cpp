@@ -85,8 +85,7 @@ constexpr double kMaxLatticePoints = 5e7;
 int stepCount(double extent, double step) {
     const double count = std::ceil(extent / step);
     if (!(count <= kMaxLatticePoints))
-        throw Error("the edge length is too small for this patch: " + std::to_string(count) +
-                    " lattice rows or columns");
+        throw Error(MessageId::PatchTooManyRows, std::to_string(count));
     return static_cast<int>(count);
 }
 
@@ -101,8 +100,8 @@ std::vector<Vec2> latticeInside(const std::vector<Vec2>& boundary, double edgeLe
     const int rows = stepCount(box.sizes().y(), rowHeight);
     const int columns = stepCount(box.sizes().x(), h);
     if (!(double(rows + 1) * double(columns + 1) <= kMaxLatticePoints))
-        throw Error("the edge length is too small for this patch: " +
-                    std::to_string(double(rows + 1) * double(columns + 1)) + " lattice points");
+        throw Error(MessageId::PatchTooManyPoints,
+                    std::to_string(double(rows + 1) * double(columns + 1)));
     const SegmentGrid grid(boundary, box, h);
     std::vector<Vec2> points;
     for (int row = 0; row < rows; ++row) {

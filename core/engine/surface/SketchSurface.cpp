@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include <Eigen/Geometry>
+#include <stdexcept>
 
 #include "base/Error.h"
 #include "geometry/ConstrainedTriangulation.h"
@@ -77,7 +78,7 @@ class HalfSurfaceBuilder {
                 next[cdt.triangles[t][(k + 1) % 3]] = cdt.triangles[t][(k + 2) % 3];
             }
         if (next.empty())
-            throw Error("internal error: a connecting region without boundary");
+            throw std::logic_error("internal error: a connecting region without boundary");
 
         const VertexOrigin origin{RegionKind::Connecting, index, -1, 0.0, false};
         // The patch is as fine as the finest cylinder meeting it (resolution
@@ -112,7 +113,8 @@ class HalfSurfaceBuilder {
             }
             a = b;
             if (loop.size() > 4 * static_cast<std::size_t>(pointCount) + 4 * positions_.size())
-                throw Error("internal error: a connecting region's boundary does not close");
+                throw std::logic_error(
+                    "internal error: a connecting region's boundary does not close");
         } while (a != start);
         for (int v : loop)
             loop2d.push_back(positions_[v].head<2>());
@@ -325,7 +327,7 @@ SketchSurface buildSurface(const Decomposition& decomposition,
                            const std::vector<CylinderSections>& cylinders,
                            const SurfaceOptions& options) {
     if (!(options.targetEdgeLength > 0))
-        throw Error("the target edge length must be positive");
+        throw Error(MessageId::EdgeLengthMustBePositive);
     HalfSurfaceBuilder builder(decomposition, options);
     for (std::size_t c = 0; c < cylinders.size(); ++c)
         builder.addCylinder(static_cast<int>(c), cylinders[c]);

@@ -2,8 +2,6 @@
 
 #include "model/CountText.h"
 
-#include <QCoreApplication>
-
 #include <nlohmann/json.hpp>
 
 #include "base/Error.h"
@@ -17,9 +15,7 @@ namespace {
 const Part& riggedPart(const Document& document, PartId id) {
     const PartNode& node = document.part(id);
     if (!node.part || node.part->skeleton.boneCount() == 0)
-        throw Error(QCoreApplication::translate("rigmesh::model::BoneEditCommand",
-                                                "The part has no skeleton to edit.")
-                        .toStdString());
+        throw Error(MessageId::BoneEditNoSkeleton);
     return *node.part;
 }
 

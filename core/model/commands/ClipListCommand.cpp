@@ -1,7 +1,5 @@
 #include "model/commands/ClipListCommand.h"
 
-#include <QCoreApplication>
-
 #include <algorithm>
 
 #include "base/Error.h"
@@ -14,10 +12,7 @@ namespace {
 void checkNewName(const PartNode& node, const std::string& name) {
     checkClipName(name);
     if (findClip(node, name))
-        throw Error(QCoreApplication::translate("rigmesh::model::ClipListCommand",
-                                                "%1 already has a clip named \"%2\".")
-                        .arg(node.name, QString::fromStdString(name))
-                        .toStdString());
+        throw Error(MessageId::ClipNameTaken, node.name.toStdString(), name);
 }
 
 nlohmann::json step(const char* command, const Document& document, PartId id) {
@@ -41,10 +36,7 @@ rigmesh::Clip& ClipListCommand::clipNamed(Clips& clips, const PartNode& node,
     for (rigmesh::Clip& clip : clips.others)
         if (clipName(clip) == name)
             return clip;
-    throw Error(QCoreApplication::translate("rigmesh::model::ClipListCommand",
-                                            "%1 has no clip named \"%2\".")
-                    .arg(node.name, QString::fromStdString(name))
-                    .toStdString());
+    throw Error(MessageId::NoClipNamed, node.name.toStdString(), name);
 }
 
 std::unique_ptr<ClipListCommand> ClipListCommand::make(Document& document, PartId id, Clips after,
@@ -106,11 +98,7 @@ std::unique_ptr<ClipListCommand> ClipListCommand::remove(Document& document, Par
     Clips after = clipsOf(node);
     clipNamed(after, node, name);  // it exists
     if (after.others.empty())
-        throw Error(QCoreApplication::translate(
-                        "rigmesh::model::ClipListCommand",
-                        "%1 has only this clip: a part keeps one clip (delete its keys instead).")
-                        .arg(node.name)
-                        .toStdString());
+        throw Error(MessageId::DeleteOnlyClip, node.name.toStdString());
     if (clipName(after.active) == name) {
         after.active = std::move(after.others.front());  // others are sorted by name
         after.others.erase(after.others.begin());

@@ -1,7 +1,5 @@
 #include "model/commands/CutPartCommand.h"
 
-#include <QCoreApplication>
-
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
@@ -23,9 +21,7 @@ CutPartCommand::CutPartCommand(Document& document, PartId part, const CutSpec& s
       spec_(spec),
       original_(document.part(part)) {
     if (!original_.part)
-        throw Error(QCoreApplication::translate("rigmesh::model::CutPartCommand",
-                                                "The part has no surface to cut.")
-                        .toStdString());
+        throw Error(MessageId::CutNoSurface);
     // The plane or the swept stroke in the part's own frame.
     CutRequest request;
     const Placement& placement = original_.placement;
@@ -36,7 +32,7 @@ CutPartCommand::CutPartCommand(Document& document, PartId part, const CutSpec& s
         const Vec3 right = direction.cross(spec.viewUp).normalized();
         const Vec3 up = right.cross(direction);
         if (!right.allFinite() || !direction.allFinite())
-            throw Error("The cut's view needs a direction and an up that is not along it.");
+            throw Error(MessageId::CutViewInvalid);
         // The view plane through the part's centre.
         const Vec3 centre = placement.toWorld(boundingBox(original_.part->mesh).center());
         for (const Vec2& p : spec.viewStroke)

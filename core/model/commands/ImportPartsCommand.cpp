@@ -21,7 +21,7 @@ std::unique_ptr<ImportPartsCommand> ImportPartsCommand::fromRead(Document& docum
                                                                  const QString& path,
                                                                  std::vector<PartNode> nodes) {
     if (nodes.empty())
-        throw Error(QFileInfo(path).fileName().toStdString() + " holds no mesh to import");
+        throw Error(MessageId::ImportNoMesh, QFileInfo(path).fileName().toStdString());
     // Ids are taken last, once nothing can fail any more.
     for (PartNode& node : nodes)
         node.id = document.allocatePartId();

@@ -1,7 +1,5 @@
 #include "model/commands/MergePartsCommand.h"
 
-#include <QCoreApplication>
-
 #include <algorithm>
 
 #include <nlohmann/json.hpp>
@@ -54,7 +52,7 @@ JointId resolveJoint(const JointChoice& choice, const Part& part, const Placemen
                      const QString& partName) {
     if (const auto* id = std::get_if<JointId>(&choice)) {
         if (!part.skeleton.hasJoint(*id))
-            throw Error(partName.toStdString() + " has no joint " + std::to_string(*id));
+            throw Error(MessageId::NamedPartHasNoJoint, partName.toStdString(), *id);
         return *id;
     }
     return nearestJoint(part.skeleton, placement.toLocal(std::get<Vec3>(choice)));
@@ -65,9 +63,7 @@ JointId resolveJoint(const JointChoice& choice, const Part& part, const Placemen
 std::unique_ptr<MergePartsCommand> MergePartsCommand::create(Document& document, PartId dragged,
                                                              PartId target, const MergeSpec& spec) {
     if (dragged == target)
-        throw Error(QCoreApplication::translate("rigmesh::model::MergePartsCommand",
-                                                "A part cannot be merged into itself.")
-                        .toStdString());
+        throw Error(MessageId::MergeIntoItself);
     return fromComputed(document, dragged, target,
                         compute(document.part(dragged), document.part(target), spec));
 }
@@ -111,7 +107,7 @@ std::unique_ptr<MergePartsCommand> MergePartsCommand::fromComputed(Document& doc
                                                                    PartId dragged, PartId target,
                                                                    ComputedMerge computed) {
     if (dragged == target || !document.contains(dragged) || !document.contains(target))
-        throw Error("The parts to merge are no longer in the document.");
+        throw Error(MessageId::MergePartsGone);
     return std::unique_ptr<MergePartsCommand>(new MergePartsCommand(
         document, dragged, target, computed.resolved, std::move(computed.result)));
 }

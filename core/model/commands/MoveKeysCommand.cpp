@@ -1,7 +1,5 @@
 #include "model/commands/MoveKeysCommand.h"
 
-#include <QCoreApplication>
-
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -11,11 +9,9 @@ namespace rigmesh::model {
 
 ClipEdit movedKeysEdit(const rigmesh::Clip& clip, const std::vector<double>& times, double offset) {
     if (times.empty())
-        throw Error(QCoreApplication::translate("rigmesh::model::MoveKeysCommand",
-                                                "There are no keys to move.")
-                        .toStdString());
+        throw Error(MessageId::NoKeysToMove);
     if (!std::isfinite(offset))
-        throw Error("The keys' offset is not a finite number of seconds.");
+        throw Error(MessageId::KeyOffsetNotFinite);
     std::vector<double> around = times;
     for (const double time : times)
         around.push_back(time + offset);

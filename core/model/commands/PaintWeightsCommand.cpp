@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <nlohmann/json.hpp>
-
-#include "base/Error.h"
+#include <stdexcept>
 
 namespace rigmesh::model {
 
@@ -67,10 +66,10 @@ std::optional<BrushFalloff> brushFalloffNamed(const std::string& name) {
 std::unique_ptr<PaintWeightsCommand> PaintWeightsCommand::create(Document& document, PartId part,
                                                                  std::vector<WeightDab> dabs) {
     if (dabs.empty())
-        throw Error("A paint stroke needs at least one dab.");
+        throw std::logic_error("A paint stroke needs at least one dab.");
     if (!std::all_of(dabs.begin(), dabs.end(),
                      [&](const WeightDab& d) { return sameBrush(d, dabs.front()); }))
-        throw Error("The dabs of one stroke must share bone, brush and options.");
+        throw std::logic_error("The dabs of one stroke must share bone, brush and options.");
     std::unique_ptr<PaintWeightsCommand> command(new PaintWeightsCommand(document, part));
     const Placement& placement = document.part(part).placement;
     auto painted = command->editableCopy();

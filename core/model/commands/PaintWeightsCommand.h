@@ -36,10 +36,7 @@ class PaintWeightsCommand : public SkinningEditCommand {
 
   private:
     PaintWeightsCommand(Document& document, PartId part)
-        : SkinningEditCommand(
-              document, part,
-              QT_TRANSLATE_NOOP("rigmesh::model::SkinningEditCommand",
-                                "The part has no skeleton, so it has no weights to paint.")) {}
+        : SkinningEditCommand(document, part, MessageId::PaintNoSkeleton) {}
     nlohmann::json step(const std::vector<WeightDab>& dabs) const;
 
     int skipped_ = 0;

@@ -1,7 +1,5 @@
 #include "model/commands/PasteKeysCommand.h"
 
-#include <QCoreApplication>
-
 #include <nlohmann/json.hpp>
 
 #include "base/Error.h"
@@ -13,9 +11,7 @@ namespace {
 
 ClipEdit pasted(const PartNode& node, const std::map<double, rigmesh::Pose>& keys) {
     if (keys.empty())
-        throw Error(QCoreApplication::translate("rigmesh::model::PasteKeysCommand",
-                                                "There are no keys to paste.")
-                        .toStdString());
+        throw Error(MessageId::NoKeysToPaste);
     std::vector<double> times;
     for (const auto& [time, pose] : keys)
         times.push_back(time);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "base/Error.h"
 #include "model/ErrorText.h"
@@ -34,7 +35,7 @@ RigPartCommand::Rigged RigPartCommand::rigged(std::vector<Source> parts,
                                               const RigProgress& progress) {
     if (parts.empty() ||
         std::any_of(parts.begin(), parts.end(), [](const Source& s) { return !s.part; }))
-        throw Error("There is no part to rig.");
+        throw Error(MessageId::RigNoPart);
     for (const Source& source : parts)
         if (source.part->skeleton.jointCount() > 0)
             throw Error(MessageId::AutoRigPartIsRigged, source.part->name);
@@ -59,7 +60,7 @@ std::vector<RigPartCommand::Source> RigPartCommand::sourcesOf(const Document& do
     std::vector<Source> sources;
     for (const PartId id : ids) {
         if (!document.contains(id))
-            throw Error("There is no such part.");
+            throw Error(MessageId::NoSuchPart);
         sources.push_back({document.part(id).part, document.part(id).placement});
     }
     return sources;
@@ -69,19 +70,19 @@ std::unique_ptr<RigPartCommand> RigPartCommand::fromRigged(Document& document,
                                                            const std::vector<PartId>& ids,
                                                            const Rigged& result) {
     if (ids.empty() || ids.size() != result.from.size())
-        throw Error("The parts to rig do not match the rigged result.");
+        throw std::logic_error("The parts to rig do not match the rigged result.");
     for (std::size_t i = 0; i < ids.size(); ++i) {
         if (!document.contains(ids[i]))
-            throw Error("The part is no longer in the document.");
+            throw Error(MessageId::PartGone);
         const PartNode& node = document.part(ids[i]);
         // One part is rigged in its own frame, whatever its placement.
         if (node.part != result.from[i].part ||
             (ids.size() > 1 && !(node.placement == result.from[i].placement)))
-            throw Error("The part changed while it was rigged; nothing was changed.");
+            throw Error(MessageId::RigPartChanged);
     }
     for (std::size_t i = 1; i < ids.size(); ++i)
         if (document.indexOf(ids[i]) <= document.indexOf(ids[i - 1]))
-            throw Error("The parts to rig together must be given in document order, once each.");
+            throw Error(MessageId::RigPartsOutOfOrder);
     return std::unique_ptr<RigPartCommand>(new RigPartCommand(document, ids, result));
 }
 

@@ -1,7 +1,5 @@
 #include "model/commands/SetBoneLockCommand.h"
 
-#include <QCoreApplication>
-
 #include <nlohmann/json.hpp>
 
 #include "base/Error.h"
@@ -13,10 +11,7 @@ std::unique_ptr<SetBoneLockCommand> SetBoneLockCommand::create(Document& documen
                                                                BoneId bone, bool locked) {
     std::unique_ptr<SetBoneLockCommand> command(new SetBoneLockCommand(document, part));
     if (!command->before().skeleton.hasBone(bone))
-        throw Error(QCoreApplication::translate("rigmesh::model::SetBoneLockCommand",
-                                                "The part has no bone %1 to lock.")
-                        .arg(bone)
-                        .toStdString());
+        throw Error(MessageId::PaintLockedNoSuchBone, bone);
     auto after = command->editableCopy();
     if (locked)
         after->lockedBones.insert(bone);

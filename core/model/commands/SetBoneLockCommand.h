@@ -20,10 +20,7 @@ class SetBoneLockCommand : public SkinningEditCommand {
 
   private:
     SetBoneLockCommand(Document& document, PartId part)
-        : SkinningEditCommand(
-              document, part,
-              QT_TRANSLATE_NOOP("rigmesh::model::SkinningEditCommand",
-                                "The part has no skeleton, so it has no weights to lock.")) {}
+        : SkinningEditCommand(document, part, MessageId::LockNoSkeleton) {}
 };
 
 }  // namespace rigmesh::model

@@ -17,7 +17,7 @@ SetJointPinnedCommand::SetJointPinnedCommand(Document& document, PartId id, rigm
       old_(document.part(id).pinnedJoints) {
     const PartNode& node = document.part(id);
     if (!node.part || !node.part->skeleton.hasJoint(joint))
-        throw Error("Part " + std::to_string(id) + " has no joint " + std::to_string(joint) + ".");
+        throw Error(MessageId::DocumentPartHasNoJoint, id, joint);
     new_ = old_;
     if (pinned)
         new_.insert(joint);

@@ -10,15 +10,15 @@ namespace rigmesh::model {
 
 namespace {
 
-void checkPoseFits(const PartNode& node, const rigmesh::Pose& pose, const char* what) {
+// `starting`: the pose the command starts from, else the one it sets.
+void checkPoseFits(const PartNode& node, const rigmesh::Pose& pose, bool starting) {
     if (!pose.isFinite())
-        throw Error(std::string("The ") + what + " pose of part " + std::to_string(node.id) +
-                    " has a non-finite or zero rotation or translation.");
+        throw Error(starting ? MessageId::StartingPoseInvalid : MessageId::NewPoseInvalid, node.id);
     for (const auto& entry : pose.rotations) {
         if (!node.part || !node.part->skeleton.hasJoint(entry.first))
-            throw Error(std::string("The ") + what + " pose names joint " +
-                        std::to_string(entry.first) + ", which part " + std::to_string(node.id) +
-                        " does not have.");
+            throw Error(
+                starting ? MessageId::StartingPoseForeignJoint : MessageId::NewPoseForeignJoint,
+                entry.first, node.id);
     }
 }
 
@@ -43,10 +43,9 @@ SetPoseCommand::SetPoseCommand(Document& document, PartId id, const rigmesh::Pos
     const PartNode& node = document.part(id);
     if (draggedJoint != rigmesh::kNoJoint &&
         (!node.part || !node.part->skeleton.hasJoint(draggedJoint)))
-        throw Error("Part " + std::to_string(id) + " has no joint " + std::to_string(draggedJoint) +
-                    ".");
-    checkPoseFits(node, from_, "starting");
-    checkPoseFits(node, to_, "new");
+        throw Error(MessageId::DocumentPartHasNoJoint, id, draggedJoint);
+    checkPoseFits(node, from_, true);
+    checkPoseFits(node, to_, false);
     setText(tr("Pose %1").arg(draggedJoint == rigmesh::kNoJoint ? node.name
                                                                 : jointDisplayName(draggedJoint)));
     setObsolete(identicalPoses(from_, to_));

@@ -1,21 +1,19 @@
 #include "model/commands/SkinningEditCommand.h"
 
-#include <QCoreApplication>
 #include <string>
 
 #include "base/Error.h"
 
 namespace rigmesh::model {
 
-SkinningEditCommand::SkinningEditCommand(Document& document, PartId part, const char* noSkeleton)
+SkinningEditCommand::SkinningEditCommand(Document& document, PartId part, MessageId noSkeleton)
     : document_(document),
       id_(part),
       index_(document.indexOf(part)),
       name_(document.part(part).name),
       before_(document.part(part).part) {
     if (!before_ || before_->skeleton.boneCount() == 0)
-        throw Error(QCoreApplication::translate("rigmesh::model::SkinningEditCommand", noSkeleton)
-                        .toStdString());
+        throw Error(noSkeleton);
 }
 
 void SkinningEditCommand::setResult(std::shared_ptr<const Part> after, nlohmann::json step,

@@ -10,6 +10,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "base/Message.h"
 #include "model/Document.h"
 #include "model/recipe/RecipeStepSource.h"
 
@@ -25,9 +26,8 @@ class SkinningEditCommand : public QUndoCommand, public RecipeStepSource {
 
   protected:
     // Throws rigmesh::Error for an unknown part or one without a skeleton
-    // (`noSkeleton`: the message for a part without a skeleton, a
-    // QT_TRANSLATE_NOOP in the context rigmesh::model::SkinningEditCommand).
-    SkinningEditCommand(Document& document, PartId part, const char* noSkeleton);
+    // (`noSkeleton`: the message for a part without a skeleton).
+    SkinningEditCommand(Document& document, PartId part, MessageId noSkeleton);
     // A copy of the part as the command found it, to edit.
     std::shared_ptr<Part> editableCopy() const { return std::make_shared<Part>(*before_); }
     // The edited part, the step that replays it and the changed vertex count.

@@ -61,7 +61,7 @@ std::unique_ptr<WeightCleanupCommand> WeightCleanupCommand::smoothAll(
 WeightCleanupCommand::Recomputed WeightCleanupCommand::recomputed(
     std::shared_ptr<const Part> part) {
     if (!part)
-        throw Error("There is no part to recompute the weights of.");
+        throw Error(MessageId::RecomputeNoPart);
     auto after = std::make_shared<Part>(*part);
     Recomputed result;
     result.changed = recomputeWeights(*after, after->lockedBones);
@@ -74,10 +74,10 @@ WeightCleanupCommand::Recomputed WeightCleanupCommand::recomputed(
 std::unique_ptr<WeightCleanupCommand> WeightCleanupCommand::fromRecomputed(
     Document& document, PartId part, const Recomputed& result) {
     if (!document.contains(part))
-        throw Error("The part is no longer in the document.");
+        throw Error(MessageId::PartGone);
     std::unique_ptr<WeightCleanupCommand> command(new WeightCleanupCommand(document, part));
     if (&command->before() != result.from.get())
-        throw Error("The part changed while its weights were recomputed; nothing was changed.");
+        throw Error(MessageId::RecomputePartChanged);
     command->setResult(result.to,
                        {{"command", "recompute_weights"}, {"part", command->partIndex()}},
                        result.changed);
@@ -88,7 +88,7 @@ std::unique_ptr<WeightCleanupCommand> WeightCleanupCommand::fromRecomputed(
 std::unique_ptr<WeightCleanupCommand> WeightCleanupCommand::recompute(Document& document,
                                                                       PartId part) {
     if (!document.contains(part))
-        throw Error("There is no such part.");
+        throw Error(MessageId::NoSuchPart);
     return fromRecomputed(document, part, recomputed(document.part(part).part));
 }
 

@@ -41,10 +41,7 @@ class WeightCleanupCommand : public SkinningEditCommand {
 
   private:
     WeightCleanupCommand(Document& document, PartId part)
-        : SkinningEditCommand(
-              document, part,
-              QT_TRANSLATE_NOOP("rigmesh::model::SkinningEditCommand",
-                                "The part has no skeleton, so it has no weights to clean up.")) {}
+        : SkinningEditCommand(document, part, MessageId::CleanupNoSkeleton) {}
     // Runs `edit` on a copy and records the result with its recipe step.
     template <typename Edit>
     void apply(Edit&& edit, nlohmann::json step, const QString& text);

@@ -18,19 +18,17 @@ nlohmann::json emptyRecipe() {
 const nlohmann::json& recipeSteps(const nlohmann::json& recipe) {
     if (!recipe.is_object() || !recipe.contains("format") || !recipe["format"].is_string() ||
         recipe["format"].get<std::string>() != RecipeFile::kFormatName)
-        throw Error(std::string("this is not a RigMesh recipe (it needs \"format\": \"") +
-                    RecipeFile::kFormatName + "\")");
+        throw Error(MessageId::RecipeNotARecipe, RecipeFile::kFormatName);
     const auto version = recipe.find("version");
     if (version == recipe.end() || !version->is_number_integer() ||
         version->get<std::int64_t>() < 1)
-        throw Error("the recipe has no valid \"version\"");
+        throw Error(MessageId::RecipeNoVersion);
     if (version->get<std::int64_t>() > RecipeFile::kFormatVersion)
-        throw Error("the recipe is of version " + std::to_string(version->get<std::int64_t>()) +
-                    "; this RigMesh Studio reads recipes of version " +
-                    std::to_string(RecipeFile::kFormatVersion) + " and older");
+        throw Error(MessageId::RecipeVersionTooNew, version->get<std::int64_t>(),
+                    RecipeFile::kFormatVersion);
     const auto steps = recipe.find("steps");
     if (steps == recipe.end() || !steps->is_array())
-        throw Error("the recipe has no list of \"steps\"");
+        throw Error(MessageId::RecipeNoSteps);
     return *steps;
 }
 
@@ -38,18 +36,18 @@ nlohmann::json parseRecipe(const std::string& text, const std::string& sourceNam
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& error) {
-        throw Error(sourceName + " is not valid JSON: " + jsonread::parseErrorReason(error));
+        throw Error(MessageId::RecipeNotJson, sourceName, jsonread::parseErrorReason(error));
     } catch (const nlohmann::json::exception& error) {
         // E.g. out_of_range 406: a number like 1e999 that no double can hold.
-        throw Error(sourceName +
-                    " has a number out of range: " + jsonread::parseErrorReason(error));
+        throw Error(MessageId::RecipeNumberOutOfRange, sourceName,
+                    jsonread::parseErrorReason(error));
     }
 }
 
 nlohmann::json readRecipeFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw Error("cannot read the recipe " + path);
+        throw Error(MessageId::RecipeCannotRead, path);
     std::ostringstream text;
     text << in.rdbuf();
     return parseRecipe(text.str(), path);
@@ -60,16 +58,16 @@ void writeRecipeFile(const nlohmann::json& recipe, const std::string& path) {
     {
         std::ofstream out(temporary, std::ios::binary);
         if (!out)
-            throw Error("cannot write " + path + ": the folder does not exist or is read-only");
+            throw Error(MessageId::RecipeCannotWriteFolder, path);
         out << recipe.dump(2) << '\n';
         if (!out.flush())
-            throw Error("cannot write " + path);
+            throw Error(MessageId::RecipeCannotWrite, path);
     }
     std::error_code error;
     std::filesystem::rename(temporary, path, error);
     if (error) {
         std::filesystem::remove(temporary, error);
-        throw Error("cannot write " + path);
+        throw Error(MessageId::RecipeCannotWrite, path);
     }
 }
 

@@ -19,8 +19,7 @@ void appendSteps(const QUndoCommand& command, nlohmann::json& steps) {
         return;
     }
     if (command.childCount() == 0)
-        throw Error("The history step \"" + command.text().toStdString() +
-                    "\" cannot be written as a recipe step.");
+        throw Error(MessageId::HistoryStepNotRecipe, command.text().toStdString());
     for (int i = 0; i < command.childCount(); ++i)
         appendSteps(*command.child(i), steps);
 }

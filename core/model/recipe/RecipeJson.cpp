@@ -114,7 +114,7 @@ BuildOptions readOptions(const json& value, const BuildOptions& base) {
     if (value.contains("edgeLength")) {
         out.targetEdgeLength = readNumber(value["edgeLength"], "\"edgeLength\"");
         if (out.targetEdgeLength < 0)
-            throw Error("\"edgeLength\" must be 0 (automatic) or a positive length");
+            throw Error(MessageId::RecipeEdgeLength);
     }
     if (value.contains("smoothing"))
         out.smoothing = readBool(value["smoothing"], "\"smoothing\"");
@@ -125,7 +125,7 @@ BuildOptions readOptions(const json& value, const BuildOptions& base) {
 
 std::vector<Vec2> readPoints(const json& value) {
     if (!value.is_array())
-        throw Error("\"points\" must be a list of [x, y] points");
+        throw Error(MessageId::RecipePointsList);
     std::vector<Vec2> out;
     out.reserve(value.size());
     for (const json& point : value) {
@@ -138,12 +138,12 @@ std::vector<Vec2> readPoints(const json& value) {
 
 std::map<JointId, Eigen::Quaterniond> readRotations(const json& value) {
     if (!value.is_object())
-        throw Error("\"rotations\" must be an object {\"<joint id>\": [w, x, y, z], ...}");
+        throw Error(MessageId::RecipeRotationsObject);
     std::map<JointId, Eigen::Quaterniond> out;
     for (const auto& [key, rotation] : value.items()) {
         const JointId joint = readJointId(json(key), "the joint id \"" + key + "\"");
         if (!out.emplace(joint, readQuaternion(rotation, "the rotation of joint " + key)).second)
-            throw Error("\"rotations\" names joint " + key + " twice");
+            throw Error(MessageId::RecipeRotationsJointTwice, key);
     }
     return out;
 }

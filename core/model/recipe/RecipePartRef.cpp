@@ -13,13 +13,13 @@ PartId resolvePart(const Document& document, const nlohmann::json& reference) {
     if (reference.is_number_integer()) {
         const auto index = reference.get<std::int64_t>();
         if (index < 0 || index >= count)
-            throw Error("there is no part at index " + std::to_string(index) +
-                        " (the document has " + std::to_string(count) +
-                        (count == 1 ? " part)" : " parts)"));
+            throw Error(
+                count == 1 ? MessageId::RecipeNoPartAtIndexOfOne : MessageId::RecipeNoPartAtIndex,
+                index, count);
         return document.parts()[static_cast<std::size_t>(index)].id;
     }
     if (!reference.is_string())
-        throw Error("\"part\" must be a part's name or its index (from 0)");
+        throw Error(MessageId::RecipePartReference);
     const QString name = QString::fromStdString(reference.get<std::string>());
     PartId found = kNoPart;
     int matches = 0;
@@ -30,10 +30,9 @@ PartId resolvePart(const Document& document, const nlohmann::json& reference) {
         }
     }
     if (matches == 0)
-        throw Error("there is no part \"" + name.toStdString() + "\"");
+        throw Error(MessageId::RecipeNoPartNamed, name.toStdString());
     if (matches > 1)
-        throw Error(std::to_string(matches) + " parts are named \"" + name.toStdString() +
-                    "\"; refer to the part by its index");
+        throw Error(MessageId::RecipePartNameAmbiguous, matches, name.toStdString());
     return found;
 }
 

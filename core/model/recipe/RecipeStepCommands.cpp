@@ -46,7 +46,7 @@ using nlohmann::json;
 
 StepCommand sketch(const Context& c) {
     if (c.has("stroke") == c.has("points"))
-        throw Error("the step needs either \"stroke\" (a sketch file) or \"points\", not both");
+        throw Error(MessageId::RecipeStrokeOrPoints);
     std::vector<Vec2> points;
     QString name;
     if (c.has("stroke")) {
@@ -79,11 +79,11 @@ StepCommand pose(const Context& c) {
     const PartId id = c.part();
     const PartNode& node = c.node(id);
     if (c.has("target") == c.has("rotations"))
-        throw Error("the step needs either \"joint\" and \"target\" (an IK drag) or \"rotations\"");
+        throw Error(MessageId::RecipeTargetOrRotations);
     if (c.has("target")) {
         for (const char* key : {"rootTranslation", "complete"}) {
             if (c.has(key))
-                throw Error(std::string("\"") + key + "\" goes with \"rotations\", not \"target\"");
+                throw Error(MessageId::RecipeGoesWithRotations, key);
         }
         // "reach": "limb" (default, as the studio's drag) or "body" (Alt + drag).
         IkReach reach = IkReach::Limb;
@@ -91,7 +91,7 @@ StepCommand pose(const Context& c) {
             const std::string value =
                 c.step["reach"].is_string() ? c.step["reach"].get<std::string>() : "";
             if (value != "limb" && value != "body")
-                throw Error("\"reach\" must be \"limb\" or \"body\"");
+                throw Error(MessageId::RecipeReach);
             reach = value == "body" ? IkReach::Body : IkReach::Limb;
         }
         const JointId joint = c.joint(node);
@@ -104,7 +104,7 @@ StepCommand pose(const Context& c) {
                 detail.str()};
     }
     if (c.has("reach"))
-        throw Error("\"reach\" goes with \"target\" (an IK drag), not \"rotations\"");
+        throw Error(MessageId::RecipeReachGoesWithTarget);
     const bool complete = c.has("complete") && readBool(c.step["complete"], "\"complete\"");
     rigmesh::Pose pose = complete ? rigmesh::Pose{} : node.pose;
     const std::map<JointId, Eigen::Quaterniond> rotations = readRotations(c.step["rotations"]);
@@ -132,14 +132,14 @@ StepCommand clipSettings(const Context& c) {
         const auto named =
             interpolationFromName(readText(c.step["interpolation"], "\"interpolation\""));
         if (!named)
-            throw Error("\"interpolation\" must be \"constant\", \"linear\" or \"smooth\"");
+            throw Error(MessageId::RecipeInterpolation);
         interpolation = *named;
     }
     auto playback = clip.mode;
     if (c.has("playback")) {
         const auto named = playbackFromName(readText(c.step["playback"], "\"playback\""));
         if (!named)
-            throw Error("\"playback\" must be \"hold\", \"loop\" or \"ping_pong\"");
+            throw Error(MessageId::RecipePlayback);
         playback = *named;
     }
     return make<SetClipSettingsCommand>(id, c.document, id, fps, interpolation, playback);
@@ -150,7 +150,7 @@ StepCommand moveKeys(const Context& c) {
     const PartId id = c.part();
     const json& list = c.required("times");
     if (!list.is_array())
-        throw Error("\"times\" must be a list of seconds");
+        throw Error(MessageId::RecipeTimes);
     std::vector<double> times;
     for (const json& time : list)
         times.push_back(readNumber(time, "\"times\""));
@@ -162,11 +162,11 @@ StepCommand pasteKeys(const Context& c) {
     const PartId id = c.part();
     const json& list = c.required("keys");
     if (!list.is_array())
-        throw Error("\"keys\" must be a list of keys");
+        throw Error(MessageId::RecipeKeys);
     std::map<double, rigmesh::Pose> keys;
     for (const json& key : list) {
         if (!key.is_object() || !key.contains("time") || !key.contains("rotations"))
-            throw Error("each key needs \"time\" and \"rotations\"");
+            throw Error(MessageId::RecipeKeyFields);
         rigmesh::Pose pose;
         for (const auto& [joint, rotation] : readRotations(key["rotations"])) {
             Context::checkJoint(c.node(id), joint);
@@ -184,7 +184,7 @@ StepCommand timeline(const Context& c) {
     auto frame = [&](const char* key) {
         const double value = c.number(key);
         if (value != std::floor(value) || std::abs(value) > kMaxFrame)
-            throw Error(std::string("\"") + key + "\" must be a whole frame");
+            throw Error(MessageId::RecipeWholeFrame, key);
         return static_cast<int>(value);
     };
     if (c.has("start"))
@@ -253,7 +253,7 @@ StepCommand merge(const Context& c) {
     MergeSpec spec;
     const std::string mode = c.has("mode") ? readText(c.step["mode"], "\"mode\"") : "snap";
     if (mode != "snap" && mode != "split" && mode != "connect")
-        throw Error("\"mode\" must be \"snap\", \"split\" or \"connect\"");
+        throw Error(MessageId::RecipeMergeMode);
     spec.mode = mode == "snap"    ? MergeMode::Snap
                 : mode == "split" ? MergeMode::Split
                                   : MergeMode::Connect;
@@ -261,7 +261,7 @@ StepCommand merge(const Context& c) {
     spec.target = readJointChoice(c.required("target"), "\"target\"");
     const std::string reskin = c.has("reskin") ? readText(c.step["reskin"], "\"reskin\"") : "local";
     if (reskin != "local" && reskin != "global")
-        throw Error("\"reskin\" must be \"local\" or \"global\"");
+        throw Error(MessageId::RecipeReskin);
     spec.reskin = reskin == "local" ? Reskin::Local : Reskin::Global;
     spec.compareGlobal = c.options.compareGlobalReskin;
     auto command = MergePartsCommand::create(c.document, dragged, into, spec);
@@ -276,11 +276,11 @@ StepCommand merge(const Context& c) {
 // 3.1: a plane for a straight stroke).
 void readCutPlane(const Context& c, CutSpec& spec) {
     if (c.has("plane") == c.has("stroke"))
-        throw Error("the step needs either \"plane\" or \"stroke\" with \"view\"");
+        throw Error(MessageId::RecipePlaneOrStroke);
     if (c.has("plane")) {
         const json& plane = c.step["plane"];
         if (!plane.is_object() || !plane.contains("point") || !plane.contains("normal"))
-            throw Error("\"plane\" needs \"point\" and \"normal\"");
+            throw Error(MessageId::RecipePlaneFields);
         spec.point = readVec3(plane["point"], "\"plane\" \"point\"");
         spec.normal = readVec3(plane["normal"], "\"plane\" \"normal\"");
         return;
@@ -288,11 +288,11 @@ void readCutPlane(const Context& c, CutSpec& spec) {
     spec.viewStroke = readPoints(c.step["stroke"]);
     const json& view = c.required("view");
     if (!view.is_object() || !view.contains("direction") || !view.contains("up"))
-        throw Error("\"view\" needs \"direction\" and \"up\"");
+        throw Error(MessageId::RecipeViewFields);
     spec.viewDirection = readVec3(view["direction"], "\"view\" \"direction\"");
     spec.viewUp = readVec3(view["up"], "\"view\" \"up\"");
     if (spec.viewStroke.size() < 2)
-        throw Error("the cut needs a stroke of two points or more");
+        throw Error(MessageId::RecipeCutStrokeTooShort);
 }
 
 StepCommand cut(const Context& c) {
@@ -301,12 +301,12 @@ StepCommand cut(const Context& c) {
     readCutPlane(c, spec);
     const std::string style = c.has("style") ? readText(c.step["style"], "\"style\"") : "smooth";
     if (style != "smooth" && style != "sharp")
-        throw Error("\"style\" must be \"smooth\" or \"sharp\"");
+        throw Error(MessageId::RecipeJoinStyle);
     spec.style = style == "smooth" ? CutStyle::Smooth : CutStyle::Sharp;
     if (c.has("names")) {
         const json& names = c.step["names"];
         if (!names.is_array() || names.size() != 2)
-            throw Error("\"names\" must be two names");
+            throw Error(MessageId::RecipeTwoNames);
         for (int k = 0; k < 2; ++k)
             spec.names[k] = QString::fromStdString(readText(names[k], "\"names\""));
     }
@@ -320,11 +320,11 @@ StepCommand cut(const Context& c) {
 // "bone": an id, or "at": a point in document coordinates (the nearest bone).
 BoneId readBone(const Context& c, const PartNode& node) {
     if (!node.part || node.part->skeleton.boneCount() == 0)
-        throw Error(partLabel(node) + " has no skeleton");
+        throw Error(MessageId::RecipePartHasNoSkeleton, node.name.toStdString());
     if (c.has("bone")) {
         const BoneId bone = readJointId(c.step["bone"], "\"bone\"");
         if (!node.part->skeleton.hasBone(bone))
-            throw Error(partLabel(node) + " has no bone " + std::to_string(bone));
+            throw Error(MessageId::RecipePartHasNoBone, node.name.toStdString(), bone);
         return bone;
     }
     const Vec3 at = readVec3(c.required("at"), "\"at\"");
@@ -418,7 +418,7 @@ const std::map<std::string, StepKind>& stepKinds() {
               std::vector<PartId> ids;
               if (c.has("parts")) {
                   if (c.has("part") || !c.step["parts"].is_array() || c.step["parts"].empty())
-                      throw Error("\"parts\" must be a non-empty list of parts, without \"part\"");
+                      throw Error(MessageId::RecipePartsList);
                   for (const json& reference : c.step["parts"])
                       ids.push_back(resolvePart(c.document, reference));
               } else {
@@ -499,10 +499,10 @@ StepCommand commandForStep(Document& document, const std::string& name, const js
     const auto& kinds = stepKinds();
     const auto kind = kinds.find(name);
     if (kind == kinds.end())
-        throw Error("unknown command \"" + name + "\"");
+        throw Error(MessageId::RecipeUnknownCommand, name);
     for (const auto& [key, value] : step.items()) {
         if (key != "command" && key != "comment" && !kind->second.fields.contains(key))
-            throw Error("unknown field \"" + key + "\"");
+            throw Error(MessageId::RecipeUnknownField, key);
     }
     return kind->second.build(Context{document, step, baseDirectory, options});
 }

@@ -30,7 +30,7 @@ struct Context {
     bool has(const char* key) const { return step.contains(key); }
     const json& required(const char* key) const {
         if (!step.contains(key))
-            throw Error(std::string("the step needs \"") + key + "\"");
+            throw Error(MessageId::RecipeStepNeeds, key);
         return step[key];
     }
     PartId part() const { return resolvePart(document, required("part")); }
@@ -46,7 +46,7 @@ struct Context {
     }
     static void checkJoint(const PartNode& node, JointId joint) {
         if (!node.part || !node.part->skeleton.hasJoint(joint))
-            throw Error(partLabel(node) + " has no joint " + std::to_string(joint));
+            throw Error(MessageId::RecipePartHasNoJoint, node.name.toStdString(), joint);
     }
 };
 

@@ -14,7 +14,7 @@ namespace {
 BoneId boneOf(const Context& c, const PartNode& node) {
     const BoneId bone = readJointId(c.required("bone"), "\"bone\"");
     if (!node.part || !node.part->skeleton.hasBone(bone))
-        throw Error(partLabel(node) + " has no bone " + std::to_string(bone));
+        throw Error(MessageId::RecipePartHasNoBone, node.name.toStdString(), bone);
     return bone;
 }
 
@@ -26,13 +26,13 @@ StepCommand paintWeights(const Context& c) {
     if (c.has("mode")) {
         const auto mode = brushModeNamed(readText(c.step["mode"], "\"mode\""));
         if (!mode)
-            throw Error("\"mode\" must be \"add\", \"subtract\", \"replace\" or \"smooth\"");
+            throw Error(MessageId::RecipePaintMode);
         brush.mode = *mode;
     }
     if (c.has("falloff")) {
         const auto falloff = brushFalloffNamed(readText(c.step["falloff"], "\"falloff\""));
         if (!falloff)
-            throw Error("\"falloff\" must be \"smooth\", \"linear\", \"sharp\" or \"constant\"");
+            throw Error(MessageId::RecipeFalloff);
         brush.falloff = *falloff;
     }
     brush.strength = c.has("strength") ? c.number("strength") : 0.5;
@@ -43,28 +43,30 @@ StepCommand paintWeights(const Context& c) {
         brush.towardsViewer = readVec3(c.step["frontFacesOnly"], "\"frontFacesOnly\"");
     if (c.has("locked")) {
         if (!c.step["locked"].is_array())
-            throw Error("\"locked\" must be a list of bone ids");
+            throw Error(MessageId::RecipeLockedBones);
         for (const json& bone : c.step["locked"])
             brush.locked.insert(readJointId(bone, "\"locked\""));
     }
     std::vector<WeightDab> dabs;
-    auto addDab = [&](const json& at, const char* what) {
+    // `dabOfList`: `at` is one of "dabs", else the step itself.
+    auto addDab = [&](const json& at, bool dabOfList) {
         if (!at.is_object() || !at.contains("center") || !at.contains("radius"))
-            throw Error(std::string(what) + " needs \"center\" and \"radius\"");
+            throw Error(dabOfList ? MessageId::RecipeDabNeedsCenter
+                                  : MessageId::RecipeStepNeedsCenter);
         WeightDab dab = brush;
         dab.centre = readVec3(at["center"], "\"center\"");
         dab.radius = readNumber(at["radius"], "\"radius\"");
         dabs.push_back(std::move(dab));
     };
     if (c.has("dabs") == (c.has("center") || c.has("radius")))
-        throw Error("the step needs either \"center\" and \"radius\" or \"dabs\"");
+        throw Error(MessageId::RecipeDabsOrCenter);
     if (c.has("dabs")) {
         if (!c.step["dabs"].is_array() || c.step["dabs"].empty())
-            throw Error("\"dabs\" must be a non-empty list of {\"center\", \"radius\"}");
+            throw Error(MessageId::RecipeDabsList);
         for (const json& dab : c.step["dabs"])
-            addDab(dab, "a dab");
+            addDab(dab, true);
     } else {
-        addDab(c.step, "the step");
+        addDab(c.step, false);
     }
     auto command = PaintWeightsCommand::create(c.document, id, std::move(dabs));
     std::ostringstream detail;
@@ -82,8 +84,7 @@ StepCommand paintWeights(const Context& c) {
 int wholeNumber(const Context& c, const char* key, int low, int high) {
     const double value = c.number(key);
     if (!(value >= low && value <= high) || value != std::floor(value))
-        throw Error(std::string("\"") + key + "\" must be a whole number from " +
-                    std::to_string(low) + " to " + std::to_string(high));
+        throw Error(MessageId::RecipeWholeNumber, key, low, high);
     return static_cast<int>(value);
 }
 

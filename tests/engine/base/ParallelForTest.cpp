@@ -93,7 +93,7 @@ TEST(ParallelFor, CallerThreadExceptionIsRethrownAfterJoining) {
 }
 
 TEST(ParallelFor, RejectsFewerThanOneThread) {
-    EXPECT_THROW(parallelFor(10, 0, [](int, int, int) {}), Error);
+    EXPECT_THROW(parallelFor(10, 0, [](int, int, int) {}), std::logic_error);
 }
 
 }  // namespace

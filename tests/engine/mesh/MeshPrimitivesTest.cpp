@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
+#include <stdexcept>
 
-#include "base/Error.h"
 #include "mesh/MeshPrimitives.h"
 
 namespace rigmesh {
@@ -35,11 +35,11 @@ TEST(MeshPrimitives, CylinderTubeSpansItsLengthAlongZ) {
 }
 
 TEST(MeshPrimitives, InvalidParametersThrow) {
-    EXPECT_THROW(makeIcosphere(-1, 1.0), Error);
-    EXPECT_THROW(makeIcosphere(2, 0.0), Error);
-    EXPECT_THROW(makeCylinderTube(1, 8, 1.0, 1.0), Error);
-    EXPECT_THROW(makeCylinderTube(2, 2, 1.0, 1.0), Error);
-    EXPECT_THROW(makeCylinderTube(2, 8, 1.0, -1.0), Error);
+    EXPECT_THROW(makeIcosphere(-1, 1.0), std::logic_error);
+    EXPECT_THROW(makeIcosphere(2, 0.0), std::logic_error);
+    EXPECT_THROW(makeCylinderTube(1, 8, 1.0, 1.0), std::logic_error);
+    EXPECT_THROW(makeCylinderTube(2, 2, 1.0, 1.0), std::logic_error);
+    EXPECT_THROW(makeCylinderTube(2, 8, 1.0, -1.0), std::logic_error);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "PartWeightOf.h"
 #include "SharedSketchPart.h"
@@ -121,7 +122,7 @@ TEST(WeightPainter, ManyDabsEqualOneOffDabsBitForBit) {
     }
     EXPECT_EQ(cached.weights.perVertex, oneOff.weights.perVertex);
     Part other = testsupport::sharedSketchPart("biped");
-    EXPECT_THROW(painter.paint(other, dab), Error) << "a painter serves one mesh";
+    EXPECT_THROW(painter.paint(other, dab), std::logic_error) << "a painter serves one mesh";
 }
 
 // Every clean-up keeps a locked bone's weights bit for bit and sums at 1.

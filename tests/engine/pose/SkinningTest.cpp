@@ -1,7 +1,7 @@
 #include <random>
+#include <stdexcept>
 
 #include "PoseTestSupport.h"
-#include "base/Error.h"
 #include "mesh/MeshPrimitives.h"
 #include "pose/Skinning.h"
 #include "pose/VertexNormals.h"
@@ -207,26 +207,26 @@ TEST(Skinning, DualQuaternionBlendingIgnoresTheSignOfEachBonesQuaternion) {
         EXPECT_LT((plain.positions[v] - negated.positions[v]).norm(), 1e-12);
 }
 
-TEST(Skinning, MismatchedInputIsAnError) {
+TEST(Skinning, MismatchedInputIsAProgrammingError) {
     const Part& part = sharedPart("tube");
     const std::vector<RigidTransform> rest =
         forwardKinematics(part.skeleton, Pose{}).boneTransforms;
     const SkinningTransforms transforms(part.skeleton, rest);
     WeightsById tooFew = part.weights.perVertex;
     tooFew.pop_back();
-    EXPECT_THROW(skinVertices(part.mesh.vertices, {}, tooFew, transforms), Error);
+    EXPECT_THROW(skinVertices(part.mesh.vertices, {}, tooFew, transforms), std::logic_error);
     WeightsById badBone = part.weights.perVertex;
     badBone[0] = {{99, 1.0}};
-    EXPECT_THROW(skinVertices(part.mesh.vertices, {}, badBone, transforms), Error);
+    EXPECT_THROW(skinVertices(part.mesh.vertices, {}, badBone, transforms), std::logic_error);
     EXPECT_THROW(
         skinVertices(part.mesh.vertices, {Vec3::UnitX()}, part.weights.perVertex, transforms),
-        Error);
+        std::logic_error);
     EXPECT_THROW(skinVertices(part.mesh.vertices, {}, part.weights.perVertex, transforms,
                               {SkinningMethod::LinearBlend, 0}),
-                 Error);
+                 std::logic_error);
     std::vector<RigidTransform> oneShort = rest;
     oneShort.pop_back();
-    EXPECT_THROW(SkinningTransforms(part.skeleton, oneShort), Error);
+    EXPECT_THROW(SkinningTransforms(part.skeleton, oneShort), std::logic_error);
 }
 
 // Weights name bones by id: after a bone goes, the bones after it move up in

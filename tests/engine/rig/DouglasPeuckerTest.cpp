@@ -7,6 +7,7 @@
 #include <functional>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 
 #include "base/Error.h"
 
@@ -213,8 +214,8 @@ TEST(DouglasPeucker, ClosedAxisWithCoincidentEndsIsSplit) {
 
 TEST(DouglasPeucker, RejectsNegativeOrNonFiniteThreshold) {
     const auto axis = fig4Tube();
-    EXPECT_THROW(douglasPeucker(axis, -1.0), Error);
-    EXPECT_THROW(cylindricalDouglasPeucker(axis, std::nan("")), Error);
+    EXPECT_THROW(douglasPeucker(axis, -1.0), std::logic_error);
+    EXPECT_THROW(cylindricalDouglasPeucker(axis, std::nan("")), std::logic_error);
 }
 
 }  // namespace
