@@ -1,6 +1,7 @@
 // The studio's main window: documents in tabs, one undo stack each joined by
-// a QUndoGroup for the Edit menu, docks for the outliner, properties and undo
-// history, File/Edit/View/Tools/Help menus with standard shortcuts, a
+// a QUndoGroup for the Edit menu, docks for the outliner, properties, skin
+// weights, undo history, tool options and the timeline,
+// File/Edit/View/Tools/Animation/Help menus with standard shortcuts, a
 // toolbar, a status bar for hints and errors, and the window's layout kept
 // in QSettings. It assembles: the tools live in a registry
 // (tools/ToolRegistry), each feature in its controller (controllers/: files,

@@ -1,4 +1,4 @@
-// What the studio's feature controllers (files, exchange, rig, weights) need
+// What the studio's feature controllers (files, exchange, rig, weights, pose) need
 // of the window that assembles them, after Krita's KisViewManager, which its
 // managers reach the current view through: the current document and view,
 // the background jobs, a parent for dialogs, the status bar, and the tabs'

@@ -1,6 +1,8 @@
 // File > Export: choose where and as what (glTF binary or text, FBX,
 // COLLADA, OBJ) and the options the formats offer: influences per vertex,
-// the rest or the current pose (OBJ), and whether to write the animation.
+// subdivision and decimation, the pose (rest, the current pose as the rest
+// shape, or the current pose as one key), whether to write the animation,
+// and leaf bones.
 // The file gets the view's skinning (View > Dual Quaternion Skinning) where
 // the format can carry it: baked poses and FBX's skin deformers. One line
 // says when what the file's importers show differs from the view: glTF and

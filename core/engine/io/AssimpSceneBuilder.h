@@ -1,5 +1,5 @@
 // Builds the aiScene that SceneExport.h describes, following docs/EXCHANGE.md's rules
-// 1-7, 9 and 10. Internal to io/: the header only forward-declares Assimp.
+// 1-7, 9, 10, 12 and 20. Internal to io/: the header only forward-declares Assimp.
 #pragma once
 
 #include <vector>

@@ -2,7 +2,8 @@
 // (docs/EXCHANGE.md rules 2, 6, 7), independent of Assimp: one node per bone, placed at
 // the bone's head (its joint nearer the root) as Blender's bones are, and
 // parented by the bone hierarchy, so that bones sharing a joint are separate
-// nodes that rotate independently. Root bones hang from the `Armature` node.
+// nodes that rotate independently. Root bones hang from the part's armature
+// node (`<part>_armature`; in COLLADA the one `Armature`: AssimpSceneBuilder.cpp).
 //
 // Bone frames: at rest a bone node's +Y axis runs from its
 // head to its tail, Blender's bone convention, which its glTF, FBX and

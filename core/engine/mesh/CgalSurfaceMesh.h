@@ -1,7 +1,9 @@
 // CGAL's Surface_mesh at the engine's edge, for the few .cpp files that run
-// Polygon Mesh Processing on a TriMesh (merge/MeshUnion, cut/PlaneCut): the
-// conversion, exact-position lookup of unchanged vertices, and the closest
-// source triangle of a new vertex. Include only from .cpp files.
+// Polygon Mesh Processing or an AABB tree on a TriMesh (merge/MeshUnion,
+// cut/SurfaceSplit, and autorig's MeshRepair, CurveSkeleton, ProxyWrap,
+// WeightTransfer and SurfaceProbe): the conversion, exact-position lookup of
+// unchanged vertices, and the closest source triangle of a new vertex.
+// Include only from .cpp files.
 #pragma once
 
 #include <CGAL/AABB_traits.h>

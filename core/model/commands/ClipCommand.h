@@ -1,9 +1,9 @@
 // The base of the commands that edit a part's animation clip (KeyPose,
-// DeleteKey, MoveKey, SetClipSettings): each works out its edit up front (so
-// a bad edit throws before anything is pushed) and keeps only that edit, the
-// keys it takes out and puts in (ClipEdit.h): redo applies it, undo its
-// inverse, so undo gives back the old clip exactly, and n key commands cost
-// O(n log n) time and O(n) memory, not O(n^2).
+// DeleteKey, MoveKey, MoveKeys, PasteKeys, SetClipSettings): each works out
+// its edit up front (so a bad edit throws before anything is pushed) and
+// keeps only that edit, the keys it takes out and puts in (ClipEdit.h): redo
+// applies it, undo its inverse, so undo gives back the old clip exactly, and
+// n key commands cost O(n log n) time and O(n) memory, not O(n^2).
 #pragma once
 
 #include <QUndoCommand>

@@ -1,12 +1,12 @@
 // Imports the parts of a file (glTF, FBX, COLLADA, OBJ, or anything Assimp
-// reads) as new parts: mesh, skeleton, skin weights, and the file's clip on
-// the part it animates. A static mesh without a usable skeleton comes in as
-// an unrigged part: shown, moved, saved and exported as a mesh, posable once
-// rigged (RigPartCommand; unrigged() says how many need it).
-// The file is read in create(), before anything is pushed. When the file's
-// animations run past the timeline's end, the timeline is extended to their
-// last key (as Blender's importers set the scene's frame range), in the
-// same undo step.
+// reads) as new parts: mesh, skeleton, skin weights, and every clip of the
+// file on the part it animates (the first one active). A static mesh without
+// a usable skeleton comes in as an unrigged part: shown, moved, saved and
+// exported as a mesh, posable once rigged (RigPartCommand; unrigged() says
+// how many need it). The file is read in create() (or, by a background job,
+// before fromRead()), before anything is pushed. When the file's animations
+// run past the timeline's end, the timeline is extended to their last key
+// (as Blender's importers set the scene's frame range), in the same undo step.
 #pragma once
 
 #include <QCoreApplication>

@@ -7,7 +7,8 @@
 // know that a preview applied it. A preview destroyed uncommitted reverts.
 //
 // The kinds: PlacementPreview (Select and Merge drags), PosePreview (Pose
-// tool drags, typed rotations), SkinningPreview (weight paint strokes).
+// tool drags, typed rotations), SkinningPreview (weight paint strokes) and
+// SketchPreview (a part being sketched, not yet in the document).
 #pragma once
 
 #include <QPointer>
