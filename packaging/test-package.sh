@@ -59,7 +59,10 @@ for spoken in de_DE:Silhouette es_ES:silueta; do
     help="$(env QT_QPA_PLATFORM=offscreen HOME="$scratch/home" LANGUAGE="${locale%%_*}" \
         LC_ALL="$locale.UTF-8" "$root/usr/bin/rigmesh-studio" --help 2>&1)" || true
     echo "$help" | sed -n 2p
-    echo "$help" | grep -q "${spoken#*:}" || fail "rigmesh-studio --help does not speak $locale"
+    # A here-string, not a pipe: under pipefail an early-exiting grep -q can
+    # fail the pipeline; the whole help is printed when the word is missing.
+    grep -q "${spoken#*:}" <<<"$help" ||
+        { printf '%s\n' "$help"; fail "rigmesh-studio --help does not speak $locale"; }
 done
 
 echo "== desktop integration"

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 #include "SketchTestShapes.h"
@@ -194,13 +195,24 @@ TEST(StrokeCleaner, WithoutSmoothingTheSamplesLieOnTheInput) {
     }
 }
 
-TEST(StrokeCleaner, InvalidOptionsAreRejected) {
+// Options come from code, never from a user: bad ones are programming errors
+// (std::logic_error, docs/ARCHITECTURE.md's error rules), still named.
+std::string optionsError(const std::vector<Vec2>& points, const StrokeCleanOptions& options) {
+    try {
+        cleanStroke(points, options);
+    } catch (const std::logic_error& error) {
+        return error.what();
+    }
+    return "";
+}
+
+TEST(StrokeCleaner, InvalidOptionsAreRejectedAsProgrammingErrors) {
     StrokeCleanOptions zero;
     zero.relativeSpacing = 0.0;
-    EXPECT_NE(cleaningError(circleStroke(50, 1.0), zero).find("spacing"), std::string::npos);
+    EXPECT_NE(optionsError(circleStroke(50, 1.0), zero).find("spacing"), std::string::npos);
     StrokeCleanOptions negative;
     negative.smoothingIterations = -1;
-    EXPECT_NE(cleaningError(circleStroke(50, 1.0), negative).find("smoothing"), std::string::npos);
+    EXPECT_NE(optionsError(circleStroke(50, 1.0), negative).find("smoothing"), std::string::npos);
 }
 
 TEST(StrokeCleaner, NonFinitePointIsRejectedWithItsIndex) {
