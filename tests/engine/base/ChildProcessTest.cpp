@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -129,6 +130,13 @@ bool running(pid_t pid) {
     return close != std::string::npos && close + 2 < text.size() && text[close + 2] != 'Z';
 }
 
+// Whether the process runs the program `sleep` (its name in /proc).
+bool runsSleep(pid_t pid) {
+    std::ifstream comm("/proc/" + std::to_string(pid) + "/comm");
+    std::string name;
+    return std::getline(comm, name) && name == "sleep";
+}
+
 Stopped stopParentDuring(const std::string& script, std::size_t pidCount, int signal) {
     const fs::path folder =
         fs::temp_directory_path() / ("rigmesh_child_test_" + std::to_string(::getpid()));
@@ -160,6 +168,12 @@ Stopped stopParentDuring(const std::string& script, std::size_t pidCount, int si
             started.push_back(pid);
     }
     EXPECT_EQ(started.size(), pidCount) << "the script did not start";
+    // A pid is written as soon as its process is forked; wait until each one
+    // runs `sleep`, so that `env --default-signal` has already restored the
+    // default signal actions it is there for (under load it may not have).
+    for (const auto until = Clock::now() + std::chrono::seconds(10);
+         !std::all_of(started.begin(), started.end(), runsSleep) && Clock::now() < until;)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
     kill(parent, signal);
     int status = 0;
     waitpid(parent, &status, 0);
