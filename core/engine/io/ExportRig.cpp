@@ -145,10 +145,15 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
             // A frame kept from a file whose bones run along another axis
             // (DirectX's .x) is turned onto the bone by the shortest turn, which
             // keeps its roll: Blender's FBX importer lays every bone along its
-            // node's +Y. Frames Blender wrote (+Y along the bone) stay as read.
+            // node's +Y. Frames Blender wrote (+Y along the bone) stay as read,
+            // and so does every frame in glTF, whose importer in Blender points
+            // a bone at its children whatever its axes (and where our own
+            // glTF round trip of a turned MD5 frame moved a joint by 0.03% of
+            // the size: AssimpModelsRoundTrip).
             const Vec3 along = node.tail - node.head;
-            if (along.norm() > 0 && (node.restFrame * Vec3::UnitY()).dot(along.normalized()) <
-                                        std::cos(kKeptFrameOffBone))
+            if (axes == BoneAxes::PlusY && along.norm() > 0 &&
+                (node.restFrame * Vec3::UnitY()).dot(along.normalized()) <
+                    std::cos(kKeptFrameOffBone))
                 node.restFrame = (boneFrame(node.restFrame * Vec3::UnitY(), along) * node.restFrame)
                                      .normalized();
         } else {

@@ -9,9 +9,9 @@
 // COLLADA importers read to place each tail. The frame is the shortest
 // rotation taking +Y onto the bone (no roll), or the bone's frame kept from
 // an imported file (Part::boneFrames), so that importers guess from it what
-// they guessed from the file; a kept frame whose +Y runs elsewhere than
-// along the bone (a DirectX .x file's) is turned onto the bone, keeping its
-// roll.
+// they guessed from the file; in FBX and COLLADA (BoneAxes::PlusY) a kept
+// frame whose +Y runs elsewhere than along the bone (a DirectX .x file's) is
+// turned onto the bone, keeping its roll.
 //
 // Disconnected bones (Skeleton.h): a bone leaving an attached chain's root
 // is a child of the node of the bone the chain hangs from, placed at its own
