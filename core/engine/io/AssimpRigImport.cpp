@@ -130,23 +130,31 @@ std::vector<PartBone> orderedBones(const CollectedBones& collected, const Assimp
     return bones;
 }
 
-// The tail a file states for a bone (TailBone::statedTail): its end bone's
-// head, a `<bone>_end` node (our exports before leaf bones), our tail
-// metadata, or Blender's COLLADA tip.
+// The tail a file states for a bone (TailBone::statedTail): our exact tail
+// (glTF and FBX metadata, our COLLADA profile's tip), its end bone's head, a
+// `<bone>_end` node (our exports before leaf bones), or Blender's COLLADA
+// tip. Ours come first: where a tail lies on the surface, the end bone and
+// Blender's tip show it a little inside (ExportBoneNode::shownTail).
 std::optional<Vec3> statedTail(const PartBone& bone, const CollectedBones& collected,
                                const AssimpNodeTree& tree, const RigHints& hints) {
     if (bone.node < 0)
         return std::nullopt;
+    auto fromTip = [&](const Vec3& tip) {
+        return Vec3(bone.bind.translation() +
+                    armatureRotation(bone.node, tree, collected.byNode) * tip);
+    };
+    if (const std::optional<Vec3> local = tailMetadata(tree.node(bone.node)))
+        return bone.bind * *local;
+    if (const auto tip = hints.colladaExactTips.find(bone.name);
+        tip != hints.colladaExactTips.end())
+        return fromTip(tip->second);
     if (const auto end = collected.endBoneHeads.find(bone.node);
         end != collected.endBoneHeads.end())
         return end->second;
     if (const int tip = tree.find(bone.name + "_end"); tip >= 0 && !collected.byNode.contains(tip))
         return tree.restGlobal(tip).translation();
-    if (const std::optional<Vec3> local = tailMetadata(tree.node(bone.node)))
-        return bone.bind * *local;
     if (const auto tip = hints.colladaTips.find(bone.name); tip != hints.colladaTips.end())
-        return Vec3(bone.bind.translation() +
-                    armatureRotation(bone.node, tree, collected.byNode) * tip->second);
+        return fromTip(tip->second);
     return std::nullopt;
 }
 

@@ -27,6 +27,9 @@ struct SkinnedMesh {
 // `connect` flags by joint name (BoneTipHints.h), if any.
 struct RigHints {
     std::map<std::string, Vec3> colladaTips;
+    // Our exporter's exact tips where Blender's are shown inside the surface
+    // (ExportBoneNode::shownTail).
+    std::map<std::string, Vec3> colladaExactTips;
     std::map<std::string, bool> colladaConnections;
     // Our exporter's bone names where a joint had to be named otherwise.
     std::map<std::string, std::string> colladaNames;

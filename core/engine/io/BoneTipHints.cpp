@@ -41,7 +41,9 @@ void addTips(tinyxml2::XMLElement& parent,
         const auto bone = bones.find(name);
         if (bone == bones.end())
             continue;
-        const Vec3 tip = bone->second->tail - bone->second->head;
+        // Blender's tip is the shown tail (ExportBoneNode::shownTail); our own
+        // profile keeps the exact one where they differ.
+        const Vec3 tip = bone->second->shownTail - bone->second->head;
         tinyxml2::XMLElement* technique =
             node->InsertNewChildElement("extra")->InsertNewChildElement("technique");
         technique->SetAttribute("profile", "blender");
@@ -51,11 +53,20 @@ void addTips(tinyxml2::XMLElement& parent,
         addParameter(*technique, "tip_x", "float", colladaNumber(tip.x()));
         addParameter(*technique, "tip_y", "float", colladaNumber(tip.y()));
         addParameter(*technique, "tip_z", "float", colladaNumber(tip.z()));
-        if (!bone->second->renamedFrom.empty()) {  // our own profile: Blender ignores it
+        const bool renamed = !bone->second->renamedFrom.empty();
+        const bool shownElsewhere = bone->second->shownTail != bone->second->tail;
+        if (renamed || shownElsewhere) {  // our own profile: Blender ignores it
             tinyxml2::XMLElement* ours =
                 node->LastChildElement("extra")->InsertNewChildElement("technique");
             ours->SetAttribute("profile", "rigmesh");
-            addParameter(*ours, kNameMetadataKey, "string", bone->second->renamedFrom);
+            if (renamed)
+                addParameter(*ours, kNameMetadataKey, "string", bone->second->renamedFrom);
+            if (shownElsewhere) {
+                const Vec3 exact = bone->second->tail - bone->second->head;
+                addParameter(*ours, "tip_x", "float", colladaNumber(exact.x()));
+                addParameter(*ours, "tip_y", "float", colladaNumber(exact.y()));
+                addParameter(*ours, "tip_z", "float", colladaNumber(exact.z()));
+            }
         }
     }
 }
@@ -141,10 +152,12 @@ void addFbxBoneTails(FbxFile& fbx, const std::vector<ExportRig>& rigs) {
         addFbxModelStrings(fbx, kNameMetadataKey, names);
 }
 
-std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae) {
+std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae,
+                                                const std::string& profile) {
     std::map<std::string, Vec3> tips;
     forEachBlenderJointTechnique(
-        dae, [&](const std::string& name, const tinyxml2::XMLElement& technique) {
+        dae,
+        [&](const std::string& name, const tinyxml2::XMLElement& technique) {
             Vec3 tip;
             bool complete = true;
             const char* axes[] = {"tip_x", "tip_y", "tip_z"};
@@ -158,7 +171,8 @@ std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae) {
             }
             if (complete)
                 tips[name] = tip;
-        });
+        },
+        profile);
     return tips;
 }
 

@@ -48,8 +48,11 @@ inline constexpr const char* kNameMetadataKey = "rigmesh_name";
 
 // Per joint name: Blender's tip (tail minus head, in the armature's space)
 // from a COLLADA file's `<technique profile="blender">` extras, as our
-// exporter and Blender's write them. Empty for text that is not XML.
-std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae);
+// exporter and Blender's write them. Empty for text that is not XML. With
+// `profile` "rigmesh": our exporter's exact tip where Blender is shown
+// another (ExportBoneNode::shownTail).
+std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae,
+                                                const std::string& profile = "blender");
 // Per joint name: Blender's "Connected" flag from the same extras (`connect`,
 // which Blender's COLLADA importer honours and we write from the skeleton).
 // A joint with Blender's extra but no `connect` is not connected.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <deque>
 
+#include "autorig/SurfaceProbe.h"
 #include "base/Error.h"
 #include "pose/PoseHierarchy.h"
 
@@ -22,6 +23,46 @@ Eigen::Quaterniond boneFrame(const Vec3& axis, const Vec3& along) {
         return Eigen::Quaterniond(Eigen::AngleAxisd(M_PI, turn));
     }
     return Eigen::Quaterniond::FromTwoVectors(axis, direction).normalized();
+}
+
+// A kept frame whose +Y is farther than this (radians) off its bone is
+// turned onto it: one degree, far above the single precision of the frames
+// Blender writes along its bones.
+constexpr double kKeptFrameOffBone = M_PI / 180.0;
+
+// Leaf tails on the surface nearer than this (times the part's size) count
+// as on it: a plane cut's vertices lie within 1e-6 of the size of its plane
+// (CutPartTest), and ray-cast parity cannot tell a point there inside.
+constexpr double kOnSurface = 1e-6;
+// How far inside Blender is shown such a tail (times the part's size): ten
+// times the step check_tails_inside_in_blender.py takes past a hit, a
+// thousand times single precision, far below what a rigger sees.
+constexpr double kPullInside = 1e-4;
+
+// Shows Blender every leaf tail that lies on the part's surface (a cut's
+// new joint on the flat cap, docs/CUTTING.md) a little inside instead,
+// along the bone towards its head (at most a tenth of the bone). The model
+// keeps the joint on the cut, where both pieces' copies meet so that the
+// pieces snap back together (CutThenMerge in tests/engine/cut/CutPartTest.cpp).
+// `partTails`: per node, the tail in the part's own coordinates.
+void pullTailsOffSurface(ExportRig& rig, const Part& part, const std::vector<Vec3>& partTails) {
+    const bool anyLeaf = std::any_of(rig.nodes.begin(), rig.nodes.end(),
+                                     [](const ExportBoneNode& node) { return node.leaf; });
+    if (!anyLeaf || part.mesh.faces.empty())
+        return;
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : part.mesh.vertices)
+        box.extend(v);
+    const double size = box.diagonal().norm();
+    const SurfaceProbe surface(part.mesh);
+    for (std::size_t i = 0; i < rig.nodes.size(); ++i) {
+        ExportBoneNode& node = rig.nodes[i];
+        const Vec3 along = node.tail - node.head;
+        if (!node.leaf || !(along.norm() > 0) || surface.distance(partTails[i]) > kOnSurface * size)
+            continue;
+        const double pull = std::min(kPullInside * size * rig.unitScale, 0.1 * along.norm());
+        node.shownTail = node.tail - pull * along.normalized();
+    }
 }
 
 }  // namespace
@@ -59,6 +100,7 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
         std::vector<JointId> turnedBy;
     };
     std::deque<Queued> queue;
+    std::vector<Vec3> partTails;  // per node
     const JointId root = hierarchy.jointId(hierarchy.root());
     for (int b : bonesFrom[hierarchy.root()])
         queue.push_back({b, -1, {root}});
@@ -90,6 +132,7 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
             kept != part.boneNames.end() ? kept->second : partName + "_bone" + std::to_string(id);
         node.head = place(hierarchy.restPosition(frame));
         node.tail = place(hierarchy.restPosition(end));
+        node.shownTail = node.tail;
         std::vector<int> chains;  // attached chain roots hanging from this bone
         for (int child : hierarchy.children(end))
             if (hierarchy.attached(child))
@@ -99,6 +142,20 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
                                  [&](int chain) { return !bonesFrom[chain].empty(); });
         if (const auto keptFrame = part.boneFrames.find(id); keptFrame != part.boneFrames.end()) {
             node.restFrame = (rig.placementRotation * keptFrame->second).normalized();
+            // A frame kept from a file whose bones run along another axis
+            // (DirectX's .x) is turned onto the bone by the shortest turn, which
+            // keeps its roll: Blender's FBX importer lays every bone along its
+            // node's +Y. Frames Blender wrote (+Y along the bone) stay as read,
+            // and so does every frame in glTF, whose importer in Blender points
+            // a bone at its children whatever its axes (and where our own
+            // glTF round trip of a turned MD5 frame moved a joint by 0.03% of
+            // the size: AssimpModelsRoundTrip).
+            const Vec3 along = node.tail - node.head;
+            if (axes == BoneAxes::PlusY && along.norm() > 0 &&
+                (node.restFrame * Vec3::UnitY()).dot(along.normalized()) <
+                    std::cos(kKeptFrameOffBone))
+                node.restFrame = (boneFrame(node.restFrame * Vec3::UnitY(), along) * node.restFrame)
+                                     .normalized();
         } else {
             const bool minusZ = axes == BoneAxes::GltfRootLeavesMinusZ && parent < 0 && node.leaf;
             node.restFrame = boneFrame(minusZ ? Vec3(-Vec3::UnitZ()) : Vec3(Vec3::UnitY()),
@@ -115,12 +172,14 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
         const int index = static_cast<int>(rig.nodes.size());
         rig.nodeOfBone[b] = index;
         rig.nodes.push_back(node);
+        partTails.push_back(hierarchy.restPosition(end));
         for (int child : bonesFrom[end])
             queue.push_back({child, index, {}});
         for (int chain : chains)
             for (int child : bonesFrom[chain])
                 queue.push_back({child, index, {hierarchy.jointId(chain)}});
     }
+    pullTailsOffSurface(rig, part, partTails);
     return rig;
 }
 
@@ -161,8 +220,9 @@ ExportBoneNode endBoneOf(const ExportBoneNode& leaf) {
     end.name = leaf.name + "_end";
     end.headJoint = end.tailJoint = leaf.tailJoint;
     end.connected = true;  // its head is the leaf's tail
-    end.head = leaf.tail;
+    end.head = leaf.shownTail;
     end.tail = leaf.head;
+    end.shownTail = end.tail;
     end.leaf = true;
     // Half a turn about an axis across both the frame's +Y and the leaf (in
     // the leaf's frame): both then run backwards, the bone axis Blender's FBX
@@ -170,7 +230,7 @@ ExportBoneNode endBoneOf(const ExportBoneNode& leaf) {
     // snaps to the nearest frame axis (BoneAxes). Generated frames have the
     // leaf on +Y or -Z: the turn is about +X, and the end keeps the leaf's X
     // axis (its roll).
-    const Vec3 along = leaf.localTail();
+    const Vec3 along = leaf.restFrame.conjugate() * (leaf.shownTail - leaf.head);
     Vec3 across = along.cross(Vec3::UnitY());
     across = across.norm() > 1e-9 * along.norm() && across.norm() > 0 ? across.normalized()
                                                                       : Vec3(Vec3::UnitX());

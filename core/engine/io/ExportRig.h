@@ -10,7 +10,9 @@
 // COLLADA importers read to place each tail. The frame is the shortest
 // rotation taking +Y onto the bone (no roll), or the bone's frame kept from
 // an imported file (Part::boneFrames), so that importers guess from it what
-// they guessed from the file.
+// they guessed from the file; in FBX and COLLADA (BoneAxes::PlusY) a kept
+// frame whose +Y runs elsewhere than along the bone (a DirectX .x file's) is
+// turned onto the bone, keeping its roll.
 //
 // Disconnected bones (Skeleton.h): a bone leaving an attached chain's root
 // is a child of the node of the bone the chain hangs from, placed at its own
@@ -61,6 +63,11 @@ struct ExportBoneNode {
     bool connected = false;
     Vec3 head;  // placed and scaled
     Vec3 tail;
+    // Where Blender is told the tail lies (COLLADA's tip, an end bone's
+    // head): `tail`, except for a leaf bone whose tail lies on the part's
+    // surface, pulled off it into the part along the bone (pullTailsOffSurface).
+    // Our own tail hints (BoneTipHints.h) keep `tail`.
+    Vec3 shownTail;
     // Global rest orientation (placed): +Y (or -Z, BoneAxes) along head -> tail.
     Eigen::Quaterniond restFrame = Eigen::Quaterniond::Identity();
     // Local rest transform, relative to the parent node (or to the Armature).
@@ -92,7 +99,7 @@ struct ExportRig {
 };
 
 // The end bone `<leaf>_end` of a leaf bone node: a joint without weights
-// whose head is the leaf's tail and whose frame is the leaf's turned half a
+// whose head is the leaf's shown tail and whose frame is the leaf's turned half a
 // turn about an axis across the bone, so that its bone axis runs back along
 // the leaf (tail = the leaf's head). Blender's glTF and FBX importers give
 // an end bone its parent's length along its own axis (docs/EXCHANGE.md,

@@ -186,6 +186,7 @@ ImportedScene importScene(const std::string& path) {
     if (isCollada(path)) {
         const std::string text = readText(path);
         hints.colladaTips = readColladaBoneTips(text);
+        hints.colladaExactTips = readColladaBoneTips(text, "rigmesh");
         hints.colladaConnections = readColladaBoneConnections(text);
         hints.colladaNames = readColladaBoneNames(text);
         colladaActions = readColladaActionNames(text);
