@@ -143,5 +143,31 @@ TEST_F(RigPart, PartsFromOneFileAreRiggedAsOneFigureAndUndoGivesThemBack) {
     EXPECT_EQ(bytesOf(two), after);
 }
 
+// An open mesh (a statue open at the bottom, made in Blender) is rigged on a
+// wrapped proxy but keeps its own open surface; the document it is saved in
+// opens again with that part as it was (model/DocumentFile.cpp checks only
+// surfaces made here for being closed).
+TEST(RigPartOpenMesh, ADocumentWithARiggedOpenMeshOpensAgainUnchanged) {
+    QTemporaryDir folder;
+    ASSERT_TRUE(folder.isValid());
+    Document document;
+    auto import = ImportPartsCommand::create(
+        document, QStringLiteral(RIGMESH_TEST_DATA "/autorig/statue.obj"));
+    const PartId id = import->partIds().front();
+    document.undoStack()->push(import.release());
+    document.undoStack()->push(RigPartCommand::create(document, id).release());
+    const Part& rigged = *document.part(id).part;
+    ASSERT_GT(rigged.skeleton.boneCount(), 0);
+    ASSERT_FALSE(rigged.validateSolid().empty()) << "the statue should stay open";
+    EXPECT_TRUE(rigged.validate().empty());
+
+    const QString path = folder.filePath(QStringLiteral("statue.rigmesh"));
+    DocumentFile::save(document, path);
+    std::unique_ptr<Document> loaded;
+    ASSERT_NO_THROW(loaded = DocumentFile::load(path));
+    EXPECT_EQ(bytesOf(*loaded), bytesOf(document));
+    EXPECT_TRUE(loaded->part(id).part->surfaceFromFile);
+}
+
 }  // namespace
 }  // namespace rigmesh::model

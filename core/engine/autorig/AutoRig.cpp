@@ -135,6 +135,9 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     // The part keeps the mesh as given, but for faces that repeat a corner:
     // they show nothing and a part may not have them (Part::validate).
     result.part.mesh = part.mesh;
+    // The mesh is still the file's (maybe open): a document keeps checking
+    // only surfaces made here for being closed (model/DocumentFile.cpp).
+    result.part.surfaceFromFile = part.surfaceFromFile;
     const int repeating =
         static_cast<int>(std::erase_if(result.part.mesh.faces, [](const std::array<int, 3>& f) {
             return f[0] == f[1] || f[1] == f[2] || f[0] == f[2];
