@@ -136,16 +136,16 @@ class UpperHalf {
     std::vector<double> area_;
 };
 
-}  // namespace
-
-int relaxFolds(SketchSurface& surface, const FoldRelaxationOptions& options) {
+// One relaxation round: the vertices within `options.rings` edges of every
+// fold descend on the energy, each with its mirror image; with
+// `moveOutline`, the outline vertices there too, in the sketch plane and at
+// most `options.outlineShift` from where they were built. Returns how many
+// vertices moved; `moved` marks them.
+int relaxAroundFolds(SketchSurface& surface, UpperHalf& half, const FoldRelaxationOptions& options,
+                     bool moveOutline, std::vector<char>& moved) {
     auto& p = surface.mesh.vertices;
     const int n = static_cast<int>(p.size());
-    UpperHalf half(surface);
     const double foldCos = std::cos(options.foldDegrees * std::numbers::pi / 180.0);
-    // A surface with no fold above the limit is left as it is.
-    if (!(half.smallestCos() < std::cos(options.limitDegrees * std::numbers::pi / 180.0)))
-        return 0;
     // The folds' vertices, then `rings` edges around them.
     std::vector<char> inRegion(n, 0);
     std::vector<int> region;
@@ -171,22 +171,33 @@ int relaxFolds(SketchSurface& surface, const FoldRelaxationOptions& options) {
                         region.push_back(v);
                     }
     }
-    // The outline stays where it is drawn; the rest moves with its mirror image.
+    // Off the outline a vertex moves with its mirror image; on it, only
+    // when asked, and then within the sketch plane (its own mirror image).
     std::vector<int> moving;
-    for (int v : region)
-        if (!surface.origins[v].onOutline && surface.mirror[v] != v)
+    for (int v : region) {
+        const bool outline = surface.origins[v].onOutline || surface.mirror[v] == v;
+        if (!outline || moveOutline)
             moving.push_back(v);
+    }
     std::sort(moving.begin(), moving.end());
+    std::vector<Vec3> built(moving.size());
+    for (std::size_t m = 0; m < moving.size(); ++m)
+        built[m] = p[moving[m]];
     int movedCount = 0;
-    std::vector<char> moved(n, 0);
     for (int pass = 0; pass < options.passes; ++pass) {
         bool any = false;
-        for (int v : moving) {
-            const Vec3 g = half.gradientAt(v);
+        for (std::size_t m = 0; m < moving.size(); ++m) {
+            const int v = moving[m];
+            const bool outline = surface.mirror[v] == v;
+            Vec3 g = half.gradientAt(v);
+            if (outline)
+                g.z() = 0.0;
             if (!(g.norm() > 0) || !g.allFinite())
                 continue;
             // Steps of at most a tenth of the longest edge around v, halved
-            // until the energy drops; never through the sketch plane.
+            // until the energy drops; never through the sketch plane, and
+            // an outline vertex never farther than outlineShift from where
+            // it was built.
             double reach = 0;
             for (int i : half.facesOf(v))
                 for (int w : half.face(i))
@@ -197,7 +208,8 @@ int relaxFolds(SketchSurface& surface, const FoldRelaxationOptions& options) {
             bool accepted = false;
             for (int attempt = 0; attempt < 6 && !accepted; ++attempt, step *= 0.5) {
                 const Vec3 next = start - step * g;
-                if (!(next.z() > 0.25 * start.z()))
+                if (outline ? (next - built[m]).norm() > options.outlineShift
+                            : !(next.z() > 0.25 * start.z()))
                     continue;
                 p[v] = next;
                 for (int i : half.facesOf(v))
@@ -221,6 +233,28 @@ int relaxFolds(SketchSurface& surface, const FoldRelaxationOptions& options) {
             break;
     }
     return movedCount;
+}
+
+}  // namespace
+
+int relaxFolds(SketchSurface& surface, const FoldRelaxationOptions& options) {
+    UpperHalf half(surface);
+    const double limitCos = std::cos(options.limitDegrees * std::numbers::pi / 180.0);
+    // A surface with no fold above the limit is left as it is.
+    if (!(half.smallestCos() < limitCos))
+        return 0;
+    std::vector<char> moved(surface.mesh.vertices.size(), 0);
+    int count = relaxAroundFolds(surface, half, options, false, moved);
+    // A fold the first round leaves has an outline vertex at one end: where
+    // the outline turns too sharply for the faces meeting at that vertex (a
+    // slot's apex turning 150 degrees within a spacing, a hair-thin tip
+    // whose last ring ends beside the tip), which held, no interior vertex
+    // can spread. Moving the outline vertices there a little along the
+    // sketch plane rounds that corner just enough: a fillet where needed.
+    // A surface the first round brings within the limit keeps its outline.
+    if (options.outlineShift > 0 && half.smallestCos() < limitCos)
+        count += relaxAroundFolds(surface, half, options, true, moved);
+    return count;
 }
 
 }  // namespace rigmesh
