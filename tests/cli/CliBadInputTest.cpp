@@ -90,10 +90,10 @@ TEST(CliBadNumbers, SketchFarFromTheOriginIsRefusedInsteadOfHanging) {
 // A surface crossing itself used to print "mesh checks: FAILED", write the
 // mesh and exit 0.
 TEST(CliBadSketch, ASurfaceThatWouldCrossItselfExitsOneAndWritesNothing) {
-    const fs::path out = scratch("needle.obj");
+    const fs::path out = scratch("needle_crossing.obj");
     fs::remove(out);
     const auto result =
-        runCli("build '" RIGMESH_TEST_DATA "/sketches/needle.json' -o " + quoted(out));
+        runCli("build '" RIGMESH_TEST_DATA "/sketches/needle_crossing.json' -o " + quoted(out));
     EXPECT_EQ(result.exitCode, 1) << result.err;
     EXPECT_NE(result.err.find("intersect itself"), std::string::npos) << result.err;
     EXPECT_FALSE(fs::exists(out));

@@ -1,5 +1,7 @@
 #include "surface/FoldRelaxation.h"
 
+#include "surface/CrossSections.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -70,6 +72,16 @@ class UpperHalf {
     }
     int across(int i, int k) const { return across_[i][k]; }
 
+    // The outline's edges: those with no upper face across them.
+    std::vector<std::array<int, 2>> rimEdges() const {
+        std::vector<std::array<int, 2>> edges;
+        for (int i = 0; i < faceCount(); ++i)
+            for (int k = 0; k < 3; ++k)
+                if (across_[i][k] < 0)
+                    edges.push_back({faces_[i][(k + 1) % 3], faces_[i][(k + 2) % 3]});
+        return edges;
+    }
+
     // The cosine of the angle between the normals across edge k of face i.
     double cosAcross(int i, int k) const {
         const int j = across_[i][k];
@@ -136,18 +148,11 @@ class UpperHalf {
     std::vector<double> area_;
 };
 
-}  // namespace
-
-int relaxFolds(SketchSurface& surface, const FoldRelaxationOptions& options) {
-    auto& p = surface.mesh.vertices;
-    const int n = static_cast<int>(p.size());
-    UpperHalf half(surface);
-    const double foldCos = std::cos(options.foldDegrees * std::numbers::pi / 180.0);
-    // A surface with no fold above the limit is left as it is.
-    if (!(half.smallestCos() < std::cos(options.limitDegrees * std::numbers::pi / 180.0)))
-        return 0;
-    // The folds' vertices, then `rings` edges around them.
-    std::vector<char> inRegion(n, 0);
+// The vertices of every edge whose faces meet at more than `degrees`, then
+// `rings` edges around them, in the order found.
+std::vector<int> verticesAroundFolds(const UpperHalf& half, double degrees, int rings,
+                                     std::vector<char>& inRegion) {
+    const double foldCos = std::cos(degrees * std::numbers::pi / 180.0);
     std::vector<int> region;
     for (int i = 0; i < half.faceCount(); ++i)
         for (int k = 0; k < 3; ++k)
@@ -159,9 +164,7 @@ int relaxFolds(SketchSurface& surface, const FoldRelaxationOptions& options) {
                         region.push_back(v);
                     }
                 }
-    if (region.empty())
-        return 0;
-    for (int ring = 0; ring < options.rings; ++ring) {
+    for (int ring = 0; ring < rings && !region.empty(); ++ring) {
         const std::size_t size = region.size();
         for (std::size_t r = 0; r < size; ++r)
             for (int i : half.facesOf(region[r]))
@@ -171,22 +174,53 @@ int relaxFolds(SketchSurface& surface, const FoldRelaxationOptions& options) {
                         region.push_back(v);
                     }
     }
-    // The outline stays where it is drawn; the rest moves with its mirror image.
+    return region;
+}
+
+// One relaxation round: the vertices within `options.rings` edges of every
+// fold descend on the energy, each with its mirror image; with
+// `moveOutline`, the outline vertices within one edge of a fold above the
+// limit too, in the sketch plane and at most `options.outlineShift` from
+// where they were built. Returns how many vertices moved; `moved` marks
+// them.
+int relaxAroundFolds(SketchSurface& surface, UpperHalf& half, const FoldRelaxationOptions& options,
+                     bool moveOutline, std::vector<char>& moved) {
+    auto& p = surface.mesh.vertices;
+    const int n = static_cast<int>(p.size());
+    std::vector<char> inRegion(n, 0), nearLimit(n, 0);
+    const std::vector<int> region =
+        verticesAroundFolds(half, options.foldDegrees, options.rings, inRegion);
+    if (region.empty())
+        return 0;
+    if (moveOutline)
+        verticesAroundFolds(half, options.limitDegrees, 1, nearLimit);
+    // Off the outline a vertex moves with its mirror image; on it, only
+    // when asked, and then within the sketch plane (its own mirror image).
     std::vector<int> moving;
-    for (int v : region)
-        if (!surface.origins[v].onOutline && surface.mirror[v] != v)
+    for (int v : region) {
+        const bool outline = surface.origins[v].onOutline || surface.mirror[v] == v;
+        if (!outline || (moveOutline && nearLimit[v]))
             moving.push_back(v);
+    }
     std::sort(moving.begin(), moving.end());
+    std::vector<Vec3> built(moving.size());
+    for (std::size_t m = 0; m < moving.size(); ++m)
+        built[m] = p[moving[m]];
     int movedCount = 0;
-    std::vector<char> moved(n, 0);
     for (int pass = 0; pass < options.passes; ++pass) {
         bool any = false;
-        for (int v : moving) {
-            const Vec3 g = half.gradientAt(v);
+        for (std::size_t m = 0; m < moving.size(); ++m) {
+            const int v = moving[m];
+            const bool outline = surface.mirror[v] == v;
+            Vec3 g = half.gradientAt(v);
+            if (outline)
+                g.z() = 0.0;
             if (!(g.norm() > 0) || !g.allFinite())
                 continue;
             // Steps of at most a tenth of the longest edge around v, halved
-            // until the energy drops; never through the sketch plane.
+            // until the energy drops; never through the sketch plane, and
+            // an outline vertex never farther than outlineShift from where
+            // it was built.
             double reach = 0;
             for (int i : half.facesOf(v))
                 for (int w : half.face(i))
@@ -197,7 +231,8 @@ int relaxFolds(SketchSurface& surface, const FoldRelaxationOptions& options) {
             bool accepted = false;
             for (int attempt = 0; attempt < 6 && !accepted; ++attempt, step *= 0.5) {
                 const Vec3 next = start - step * g;
-                if (!(next.z() > 0.25 * start.z()))
+                if (outline ? (next - built[m]).norm() > options.outlineShift
+                            : !(next.z() > 0.25 * start.z()))
                     continue;
                 p[v] = next;
                 for (int i : half.facesOf(v))
@@ -221,6 +256,56 @@ int relaxFolds(SketchSurface& surface, const FoldRelaxationOptions& options) {
             break;
     }
     return movedCount;
+}
+
+// Whether an outline edge with a moved end crosses another outline edge in
+// the sketch plane.
+bool outlineCrossesItself(const std::vector<Vec3>& p, const std::vector<std::array<int, 2>>& rim,
+                          const std::vector<char>& moved) {
+    for (const auto& a : rim) {
+        if (!moved[a[0]] && !moved[a[1]])
+            continue;
+        for (const auto& b : rim) {
+            if (a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1])
+                continue;
+            if (segmentsIntersect(p[a[0]].head<2>(), p[a[1]].head<2>(), p[b[0]].head<2>(),
+                                  p[b[1]].head<2>()))
+                return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+int relaxFolds(SketchSurface& surface, const FoldRelaxationOptions& options) {
+    UpperHalf half(surface);
+    const double limitCos = std::cos(options.limitDegrees * std::numbers::pi / 180.0);
+    // A surface with no fold above the limit is left as it is.
+    if (!(half.smallestCos() < limitCos))
+        return 0;
+    std::vector<char> moved(surface.mesh.vertices.size(), 0);
+    int count = relaxAroundFolds(surface, half, options, false, moved);
+    // A fold the first round leaves has an outline vertex at one end: where
+    // the outline turns too sharply for the faces meeting at that vertex (a
+    // slot's apex turning 150 degrees within a spacing, a hair-thin tip
+    // whose last ring ends beside the tip), which held, no interior vertex
+    // can spread. Moving the outline vertices there a little along the
+    // sketch plane rounds that corner just enough: a fillet where needed.
+    // A surface the first round brings within the limit keeps its outline.
+    if (options.outlineShift > 0 && half.smallestCos() < limitCos) {
+        const std::vector<Vec3> before = surface.mesh.vertices;
+        std::vector<char> movedHere(moved.size(), 0);
+        relaxAroundFolds(surface, half, options, true, movedHere);
+        if (outlineCrossesItself(surface.mesh.vertices, half.rimEdges(), movedHere)) {
+            // Across a narrow slot the outline would cross itself: as before.
+            surface.mesh.vertices = before;
+        } else {
+            for (std::size_t v = 0; v < moved.size(); ++v)
+                count += movedHere[v] && !moved[v] ? 1 : 0;
+        }
+    }
+    return count;
 }
 
 }  // namespace rigmesh

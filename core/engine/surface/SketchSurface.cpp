@@ -341,6 +341,7 @@ SketchSurface buildSurface(const Decomposition& decomposition,
 
 void smoothSurface(SketchSurface& surface, const Decomposition& decomposition,
                    const std::vector<CylinderSections>& cylinders, const SurfaceOptions& options) {
+    constexpr double kOutlineShift = 0.5;  // target edge lengths
     std::vector<double> weights = anchorWeights(surface, decomposition, cylinders, options);
     const std::vector<double> rims =
         inflatePatchRims(surface, decomposition, cylinders, options.capAnchorWeight);
@@ -350,8 +351,11 @@ void smoothSurface(SketchSurface& surface, const Decomposition& decomposition,
     symmetrize(surface);
     // LSM bounds no angle between neighbouring faces: the folds it leaves
     // where the surface turns sharply in little room are spread over their
-    // neighbourhood (FoldRelaxation.h).
-    relaxFolds(surface);
+    // neighbourhood (FoldRelaxation.h); one left at an outline vertex, by
+    // moving the outline there within half an edge length in the plane.
+    FoldRelaxationOptions relaxation;
+    relaxation.outlineShift = kOutlineShift * options.targetEdgeLength;
+    relaxFolds(surface, relaxation);
 }
 
 }  // namespace rigmesh
