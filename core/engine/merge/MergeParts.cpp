@@ -1,10 +1,14 @@
 #include "merge/MergeParts.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <exception>
+#include <functional>
 #include <set>
 
 #include "base/Error.h"
+#include "base/ParallelFor.h"
 #include "base/Stopwatch.h"
 #include "merge/MeshUnion.h"
 #include "merge/SeamSmoothing.h"
@@ -136,12 +140,46 @@ std::vector<BoneId> pruneBones(Skeleton& skeleton, WeightsById& weights,
 
 // The union needs closed, oriented surfaces that do not cross themselves
 // anywhere (CGAL's corefinement only notices a self-intersection near the
-// other surface): each input is checked first and refused by name.
-void checkMergeInput(const Part& part, MessageId notSolid, MessageId intersectsItself) {
-    if (const std::vector<std::string> problems = part.validateSolid(); !problems.empty())
-        throw Error(notSolid, problems.front());
-    if (const int pairs = countSelfIntersectingFacePairs(part.mesh); pairs > 0)
-        throw Error(intersectsItself, pairs);
+// other surface): each input is checked and refused by name, the target
+// first, each for its topology before its self-intersections. The
+// self-intersection checks (a box intersection over each whole surface)
+// run on a second thread while `unionStep` runs on this one; a refusal of
+// an input is thrown before anything `unionStep` threw. Validation cannot
+// be skipped for parts made here: a merge's smoothed seam, a cut's faired
+// patch and an imported surface are not checked for self-intersections
+// when they are made.
+void checkInputsDuring(const Part& target, const Part& dragged,
+                       const std::function<void()>& unionStep) {
+    if (const std::vector<std::string> problems = target.validateSolid(); !problems.empty())
+        throw Error(MessageId::MergeTargetNotSolid, problems.front());
+    const std::vector<std::string> draggedProblems = dragged.validateSolid();
+    if (!draggedProblems.empty()) {
+        if (const int pairs = countSelfIntersectingFacePairs(target.mesh); pairs > 0)
+            throw Error(MessageId::MergeTargetIntersectsItself, pairs);
+        throw Error(MessageId::MergeDraggedNotSolid, draggedProblems.front());
+    }
+    std::array<int, 2> pairs{0, 0};
+    std::exception_ptr unionError;
+    parallelFor(2, 2, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            if (k == 1) {
+                pairs[0] = countSelfIntersectingFacePairs(target.mesh);
+                pairs[1] = countSelfIntersectingFacePairs(dragged.mesh);
+                continue;
+            }
+            try {
+                unionStep();
+            } catch (...) {
+                unionError = std::current_exception();
+            }
+        }
+    });
+    if (pairs[0] > 0)
+        throw Error(MessageId::MergeTargetIntersectsItself, pairs[0]);
+    if (pairs[1] > 0)
+        throw Error(MessageId::MergeDraggedIntersectsItself, pairs[1]);
+    if (unionError)
+        std::rethrow_exception(unionError);
 }
 
 }  // namespace
@@ -169,22 +207,26 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
     // The joined skeleton is one connected tree (SkeletonJoin).
     requireConnectedSkeleton(target);
     requireConnectedSkeleton(dragged);
-    checkMergeInput(target, MessageId::MergeTargetNotSolid, MessageId::MergeTargetIntersectsItself);
-    checkMergeInput(dragged, MessageId::MergeDraggedNotSolid,
-                    MessageId::MergeDraggedIntersectsItself);
     MergeResult result;
-    SkeletonJoin join = joinSkeletons(target.skeleton, dragged.skeleton, request.join,
-                                      minimumBoneLength(target.mesh));
-    result.draggedTranslation = join.draggedTranslation;
-    TriMesh draggedMesh = dragged.mesh;
-    for (Vec3& p : draggedMesh.vertices)
-        p += join.draggedTranslation;
-
-    // 3.2.1: the union and the seam remeshed at the part's edge length.
+    SkeletonJoin join;
+    TriMesh draggedMesh;
+    MeshUnionResult merged;
     auto stage = Clock::now();
-    const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(target.mesh);
-    MeshUnionResult merged = unionMeshes(target.mesh, draggedMesh, edge);
-    result.stats.unionMs = millisecondsSince(stage);
+    checkInputsDuring(target, dragged, [&] {
+        join = joinSkeletons(target.skeleton, dragged.skeleton, request.join,
+                             minimumBoneLength(target.mesh));
+        result.draggedTranslation = join.draggedTranslation;
+        draggedMesh = dragged.mesh;
+        for (Vec3& p : draggedMesh.vertices)
+            p += join.draggedTranslation;
+
+        // 3.2.1: the union and the seam remeshed at the part's edge length.
+        stage = Clock::now();
+        const double edge =
+            request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(target.mesh);
+        merged = unionMeshes(target.mesh, draggedMesh, edge);
+        result.stats.unionMs = millisecondsSince(stage);
+    });
 
     std::vector<CarrySource> inputs(2);
     inputs[0].mesh = &target.mesh;
