@@ -13,6 +13,7 @@
 
 #include "base/Error.h"
 #include "mesh/CgalSurfaceMesh.h"
+#include "mesh/MeshChecks.h"
 
 namespace rigmesh {
 
@@ -45,6 +46,46 @@ bool hasCornerWithin(const std::array<int, 3>& face, const std::vector<int>& dep
     return std::any_of(face.begin(), face.end(),
                        [&](int v) { return depth[v] >= 0 && depth[v] <= rings; });
 }
+
+// cgal::SourceTriangles over only the triangles whose boxes meet `region`
+// (each input's faces in their order), reporting the inputs' face indices.
+class NearbyTriangles {
+  public:
+    NearbyTriangles(const std::array<const TriMesh*, 2>& inputs, const Eigen::AlignedBox3d& region)
+        : nearby_(select(inputs, region, faces_)), triangles_({&nearby_[0], &nearby_[1]}) {}
+
+    VertexSource sourceOf(const Vec3& p) const {
+        VertexSource source = triangles_.sourceOf(p);
+        source.index = faces_[source.mesh][source.index];
+        return source;
+    }
+
+  private:
+    static std::array<TriMesh, 2> select(const std::array<const TriMesh*, 2>& inputs,
+                                         const Eigen::AlignedBox3d& region,
+                                         std::array<std::vector<int>, 2>& faces) {
+        std::array<TriMesh, 2> nearby;
+        for (int m = 0; m < 2; ++m) {
+            const TriMesh& mesh = *inputs[m];
+            nearby[m].vertices = mesh.vertices;
+            for (int f = 0; f < mesh.faceCount(); ++f) {
+                const auto& [a, b, c] = mesh.faces[f];
+                Eigen::AlignedBox3d box(mesh.vertices[a]);
+                box.extend(mesh.vertices[b]);
+                box.extend(mesh.vertices[c]);
+                if (region.intersects(box)) {
+                    nearby[m].faces.push_back(mesh.faces[f]);
+                    faces[m].push_back(f);
+                }
+            }
+        }
+        return nearby;
+    }
+
+    std::array<std::vector<int>, 2> faces_;  // nearby face -> input face
+    std::array<TriMesh, 2> nearby_;
+    SourceTriangles triangles_;
+};
 
 // The mesh in an order that depends only on its geometry and sources, not
 // on CGAL's internal order (its box intersection sorts by address): input
@@ -146,10 +187,11 @@ MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double 
         inputVertices[keyOf(second.vertices[v])] = VertexSource::vertex(1, v);
     for (int v = first.vertexCount() - 1; v >= 0; --v)
         inputVertices[keyOf(first.vertices[v])] = VertexSource::vertex(0, v);
-    const SourceTriangles sourceTriangles({&first, &second});
+    // New vertices are ordered by position alone: their triangles are found
+    // below, once the region they lie in is known.
     auto sourceOf = [&](const Vec3& p) {
         auto found = inputVertices.find(keyOf(p));
-        return found != inputVertices.end() ? found->second : sourceTriangles.sourceOf(p);
+        return found != inputVertices.end() ? found->second : VertexSource{};
     };
     MeshUnionResult result = canonicalResult(out, loopEdges, sourceOf);
     std::array<int, 2> keptFrom{0, 0};
@@ -161,8 +203,35 @@ MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double 
             throw Error(MessageId::MergePartsApart);
         throw Error(MessageId::MergePartInside);
     }
-    if (!(seamEdgeLength > 0.0))
+    // The closest input triangle of each new vertex: a loop vertex lies on
+    // both inputs, a remeshed one on the submesh below (CGAL projects it
+    // there), up to rounding; so only triangles whose boxes meet that
+    // region's (grown by far more than rounding) can be closest, and the
+    // search tree is built over those alone (over both whole parts it was a
+    // sixth of a merge).
+    auto sourcesWithin = [&](const std::vector<int>& vertices) {
+        Eigen::AlignedBox3d region;
+        for (int v : vertices)
+            region.extend(result.mesh.vertices[v]);
+        const Eigen::AlignedBox3d whole = boundingBox(first).merged(boundingBox(second));
+        const double margin = 1e-9 * whole.diagonal().norm();
+        region.min().array() -= margin;
+        region.max().array() += margin;
+        return NearbyTriangles({&first, &second}, region);
+    };
+    auto fillNewSources = [&](const NearbyTriangles& triangles) {
+        for (int v = 0; v < result.mesh.vertexCount(); ++v)
+            if (result.sources[v].kind == VertexSource::Kind::New)
+                result.sources[v] = triangles.sourceOf(result.mesh.vertices[v]);
+    };
+    if (!(seamEdgeLength > 0.0)) {
+        std::vector<int> onLoop;
+        for (int v = 0; v < result.mesh.vertexCount(); ++v)
+            if (result.onLoop[v])
+                onLoop.push_back(v);
+        fillNewSources(sourcesWithin(onLoop));
         return result;
+    }
 
     // Remesh the cut faces (paper 3.2.1 glues the meshes by splitting edges;
     // we also even them out) with the loop as a constraint, on the canonical
@@ -195,6 +264,8 @@ MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double 
             const Vec3& p = whole.vertices[v];
             seam.add_vertex(Point(p.x(), p.y(), p.z()));
         }
+    const NearbyTriangles sourceTriangles = sourcesWithin(wholeVertex);
+    fillNewSources(sourceTriangles);
     std::vector<FaceIndex> band;
     for (std::size_t f = 0; f < whole.faces.size(); ++f) {
         if (!inSubmesh[f])
