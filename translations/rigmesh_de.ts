@@ -1288,7 +1288,14 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::widgets</name>
+    <name>rigmesh::widgets::BusyBar</name>
+    <message>
+        <source>Working</source>
+        <translation>In Arbeit</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::CommandLineFiles</name>
     <message>
         <source>Cannot open %1</source>
         <translation>%1 kann nicht geöffnet werden</translation>
@@ -1300,13 +1307,6 @@
     <message>
         <source>%1 does not exist.</source>
         <translation>%1 existiert nicht.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::widgets::BusyBar</name>
-    <message>
-        <source>Working</source>
-        <translation>In Arbeit</translation>
     </message>
 </context>
 <context>

@@ -1288,7 +1288,14 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::widgets</name>
+    <name>rigmesh::widgets::BusyBar</name>
+    <message>
+        <source>Working</source>
+        <translation>Trabajando</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::CommandLineFiles</name>
     <message>
         <source>Cannot open %1</source>
         <translation>No se puede abrir %1</translation>
@@ -1300,13 +1307,6 @@
     <message>
         <source>%1 does not exist.</source>
         <translation>%1 no existe.</translation>
-    </message>
-</context>
-<context>
-    <name>rigmesh::widgets::BusyBar</name>
-    <message>
-        <source>Working</source>
-        <translation>Trabajando</translation>
     </message>
 </context>
 <context>

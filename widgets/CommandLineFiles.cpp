@@ -10,20 +10,21 @@
 #include "model/DocumentFile.h"
 
 namespace rigmesh::widgets {
-namespace {
-
-QString tr(const char* text) {
-    return QCoreApplication::translate("rigmesh::widgets::CommandLineFiles", text);
-}
-
-}  // namespace
 
 void openFromCommandLine(MainWindow& window, const QString& path) {
     const QFileInfo file(path);
     if (!file.isFile() || !file.isReadable()) {
-        QMessageBox::warning(&window, tr("Cannot open %1").arg(file.fileName()),
-                             file.exists() ? tr("%1 is not a file this user may read.").arg(path)
-                                           : tr("%1 does not exist.").arg(path));
+        // QCoreApplication::translate with its context written out: lupdate
+        // files a tr() of a free function under the namespace, a context no
+        // run-time lookup uses.
+        const QString title =
+            QCoreApplication::translate("rigmesh::widgets::CommandLineFiles", "Cannot open %1");
+        const QString reason =
+            file.exists() ? QCoreApplication::translate("rigmesh::widgets::CommandLineFiles",
+                                                        "%1 is not a file this user may read.")
+                          : QCoreApplication::translate("rigmesh::widgets::CommandLineFiles",
+                                                        "%1 does not exist.");
+        QMessageBox::warning(&window, title.arg(file.fileName()), reason.arg(path));
         return;
     }
     if (file.suffix().compare(QLatin1String(model::DocumentFile::kSuffix), Qt::CaseInsensitive) ==
