@@ -7,6 +7,7 @@
 // views; tooltips name the keys; the example's weights are a fresh solve.
 #include <gtest/gtest.h>
 
+#include <QAbstractButton>
 #include <QAction>
 #include <QDateTime>
 #include <QDockWidget>
@@ -366,8 +367,8 @@ TEST_F(StudioSmallThings, TheExampleIsBuiltWithoutBlockingTheWindow) {
 // languages.
 TEST_F(StudioSmallThings, CountsReadAsEnglishSaysThem) {
     auto rigged = [](int n) {
-        return QCoreApplication::translate("rigmesh::model::RigPartCommand",
-                                           "%1 rigged with %n bone(s)", nullptr, n)
+        return QCoreApplication::translate("RigPartCommand", "%1 rigged with %n bone(s)", nullptr,
+                                           n)
             .arg(QStringLiteral("biped"));
     };
     auto painted = [](int n) {
