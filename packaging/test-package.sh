@@ -35,7 +35,8 @@ for path in usr/bin/rigmesh usr/bin/rigmesh-studio \
             usr/share/man/man1/rigmesh.1.gz usr/share/man/man1/rigmesh-studio.1.gz \
             usr/share/doc/rigmesh-studio/copyright usr/share/doc/rigmesh-studio/changelog.gz \
             usr/share/rigmesh-studio/translations/rigmesh_de.qm \
-            usr/share/rigmesh-studio/translations/rigmesh_es.qm; do
+            usr/share/rigmesh-studio/translations/rigmesh_es.qm \
+            usr/share/rigmesh-studio/translations/rigmesh_en.qm; do
     [ -e "$root/$path" ] || fail "the package has no /$path"
 done
 if dpkg -c "$deb" | grep -E 'test_|bench_|render-icon|include/' ; then

@@ -110,13 +110,19 @@
             <numerusform>%n Schlüsselbilder</numerusform>
         </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <source>the rotations of joint(s) %1 (in the merged skeleton they would turn other bones)</source>
-        <translation>die Drehungen der Gelenke %1 (im zusammengeführten Skelett würden sie andere Knochen drehen)</translation>
+        <translation>
+            <numerusform>die Drehung des Gelenks %1 (im zusammengeführten Skelett würde sie andere Knochen drehen)</numerusform>
+            <numerusform>die Drehungen der Gelenke %1 (im zusammengeführten Skelett würden sie andere Knochen drehen)</numerusform>
+        </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <source>the pin(s) of joint(s) %1 (pruned)</source>
-        <translation>die Fixierungen der Gelenke %1 (entfernt)</translation>
+        <translation>
+            <numerusform>die Fixierung des Gelenks %1 (entfernt)</numerusform>
+            <numerusform>die Fixierungen der Gelenke %1 (entfernt)</numerusform>
+        </translation>
     </message>
     <message>
         <source>its root offset</source>
@@ -1982,10 +1988,6 @@
         <translation>Skizzieren Sie eine Silhouette und erhalten Sie ein geriggtes Teil.</translation>
     </message>
     <message>
-        <source>RigMesh documents to open</source>
-        <translation>Zu öffnende RigMesh-Dokumente</translation>
-    </message>
-    <message>
         <source>Save a picture of the window to FILE after start-up and quit.</source>
         <translation>Nach dem Start ein Bild des Fensters in DATEI speichern und beenden.</translation>
     </message>
@@ -1998,10 +2000,6 @@
         <translation>RigMesh Studio</translation>
     </message>
     <message>
-        <source>documents</source>
-        <translation>Dokumente</translation>
-    </message>
-    <message>
         <source>Building the example</source>
         <translation>Das Beispiel wird erstellt</translation>
     </message>
@@ -2009,12 +2007,35 @@
         <source>The example was not built: %1</source>
         <translation>Das Beispiel wurde nicht erstellt: %1</translation>
     </message>
+    <message>
+        <source>files</source>
+        <translation>Dateien</translation>
+    </message>
+    <message>
+        <source>RigMesh documents to open, or 3D files (glTF, FBX, OBJ, ...) to import</source>
+        <translation>Zu öffnende RigMesh-Dokumente oder zu importierende 3D-Dateien (glTF, FBX, OBJ, ...)</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::BusyBar</name>
     <message>
         <source>Working</source>
         <translation>In Arbeit</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::CommandLineFiles</name>
+    <message>
+        <source>Cannot open %1</source>
+        <translation>%1 kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>%1 is not a file this user may read.</source>
+        <translation>%1 ist keine Datei, die dieser Benutzer lesen darf.</translation>
+    </message>
+    <message>
+        <source>%1 does not exist.</source>
+        <translation>%1 existiert nicht.</translation>
     </message>
 </context>
 <context>
@@ -2881,6 +2902,13 @@
     <message>
         <source>Also paints the other side, about the part&apos;s left-right mirror plane, on the bone&apos;s mirror image (Blender&apos;s X-mirror)</source>
         <translation>Malt auch die andere Seite, an der Links-rechts-Spiegelebene des Teils, auf das Spiegelbild des Knochens (Blenders X-Spiegelung)</translation>
+    </message>
+    <message numerus="yes">
+        <source>; %n vertex visit(s) painted on one side only: no mirror partner there</source>
+        <translation>
+            <numerusform>; %n Vertex-Besuch nur auf einer Seite gemalt: dort kein Spiegelpartner</numerusform>
+            <numerusform>; %n Vertex-Besuche nur auf einer Seite gemalt: dort kein Spiegelpartner</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -110,13 +110,19 @@
             <numerusform>%n claves</numerusform>
         </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <source>the rotations of joint(s) %1 (in the merged skeleton they would turn other bones)</source>
-        <translation>las rotaciones de las articulaciones %1 (en el esqueleto fusionado girarían otros huesos)</translation>
+        <translation>
+            <numerusform>la rotación de la articulación %1 (en el esqueleto fusionado giraría otros huesos)</numerusform>
+            <numerusform>las rotaciones de las articulaciones %1 (en el esqueleto fusionado girarían otros huesos)</numerusform>
+        </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <source>the pin(s) of joint(s) %1 (pruned)</source>
-        <translation>las fijaciones de las articulaciones %1 (eliminadas)</translation>
+        <translation>
+            <numerusform>la fijación de la articulación %1 (eliminada)</numerusform>
+            <numerusform>las fijaciones de las articulaciones %1 (eliminadas)</numerusform>
+        </translation>
     </message>
     <message>
         <source>its root offset</source>
@@ -1982,10 +1988,6 @@
         <translation>Dibuje una silueta y obtenga una pieza con rig.</translation>
     </message>
     <message>
-        <source>RigMesh documents to open</source>
-        <translation>Documentos de RigMesh que abrir</translation>
-    </message>
-    <message>
         <source>Save a picture of the window to FILE after start-up and quit.</source>
         <translation>Guardar una imagen de la ventana en ARCHIVO tras el arranque y salir.</translation>
     </message>
@@ -1998,10 +2000,6 @@
         <translation>RigMesh Studio</translation>
     </message>
     <message>
-        <source>documents</source>
-        <translation>documentos</translation>
-    </message>
-    <message>
         <source>Building the example</source>
         <translation>Creando el ejemplo</translation>
     </message>
@@ -2009,12 +2007,35 @@
         <source>The example was not built: %1</source>
         <translation>No se ha creado el ejemplo: %1</translation>
     </message>
+    <message>
+        <source>files</source>
+        <translation>archivos</translation>
+    </message>
+    <message>
+        <source>RigMesh documents to open, or 3D files (glTF, FBX, OBJ, ...) to import</source>
+        <translation>Documentos de RigMesh que abrir, o archivos 3D (glTF, FBX, OBJ, ...) que importar</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::BusyBar</name>
     <message>
         <source>Working</source>
         <translation>Trabajando</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::CommandLineFiles</name>
+    <message>
+        <source>Cannot open %1</source>
+        <translation>No se puede abrir %1</translation>
+    </message>
+    <message>
+        <source>%1 is not a file this user may read.</source>
+        <translation>%1 no es un archivo que este usuario pueda leer.</translation>
+    </message>
+    <message>
+        <source>%1 does not exist.</source>
+        <translation>%1 no existe.</translation>
     </message>
 </context>
 <context>
@@ -2881,6 +2902,13 @@
     <message>
         <source>Also paints the other side, about the part&apos;s left-right mirror plane, on the bone&apos;s mirror image (Blender&apos;s X-mirror)</source>
         <translation>Pinta también el otro lado, respecto al plano de simetría izquierda-derecha de la pieza, en el hueso reflejado (el espejo en X de Blender)</translation>
+    </message>
+    <message numerus="yes">
+        <source>; %n vertex visit(s) painted on one side only: no mirror partner there</source>
+        <translation>
+            <numerusform>; %n visita a vértices pintada solo en un lado: allí no hay vértice simétrico</numerusform>
+            <numerusform>; %n visitas a vértices pintadas solo en un lado: allí no hay vértice simétrico</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -10,6 +10,7 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "CommandLineFiles.h"
 #include "ExampleDocument.h"
 #include "MainWindow.h"
 #include "base/Error.h"
@@ -42,8 +43,10 @@ int main(int argc, char** argv) {
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addPositionalArgument(
-        QCoreApplication::translate("rigmesh::studio", "documents"),
-        QCoreApplication::translate("rigmesh::studio", "RigMesh documents to open"));
+        QCoreApplication::translate("rigmesh::studio", "files"),
+        QCoreApplication::translate(
+            "rigmesh::studio",
+            "RigMesh documents to open, or 3D files (glTF, FBX, OBJ, ...) to import"));
     QCommandLineOption screenshot(
         QStringLiteral("screenshot"),
         QCoreApplication::translate(
@@ -62,7 +65,7 @@ int main(int argc, char** argv) {
     rigmesh::widgets::MainWindow window;
     const QStringList files = parser.positionalArguments();
     for (const QString& file : files)
-        window.files()->openFile(file);
+        rigmesh::widgets::openFromCommandLine(window, file);
     if (files.isEmpty()) {
         try {
             // Built on the worker thread: the window shows at once.

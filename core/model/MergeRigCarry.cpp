@@ -222,10 +222,13 @@ QString DraggedRigCarry::describe(const QString& draggedName) const {
         keptParts << tr("%n key(s)", nullptr, mergedKeys);
     if (!droppedRotations.empty())
         droppedParts << tr("the rotations of joint(s) %1 (in the merged skeleton they would turn "
-                           "other bones)")
+                           "other bones)",
+                           nullptr, static_cast<int>(droppedRotations.size()))
                             .arg(jointList(droppedRotations));
     if (!droppedPins.empty())
-        droppedParts << tr("the pin(s) of joint(s) %1 (pruned)").arg(jointList(droppedPins));
+        droppedParts << tr("the pin(s) of joint(s) %1 (pruned)", nullptr,
+                           static_cast<int>(droppedPins.size()))
+                            .arg(jointList(droppedPins));
     if (droppedRootOffset)
         droppedParts << tr("its root offset");
     if (keptParts.isEmpty() && droppedParts.isEmpty())

@@ -82,20 +82,29 @@ QStringList markers(const QString& text) {
 
 class TranslationFile : public testing::TestWithParam<const char*> {};
 
-TEST_P(TranslationFile, LupdateFindsEveryStringAlreadyTranslatedAndNothingObsolete) {
-    QTemporaryDir scratch;
-    ASSERT_TRUE(scratch.isValid());
-    const QString copy = scratch.filePath(QStringLiteral("copy.ts"));
-    ASSERT_TRUE(QFile::copy(tsPath(QString::fromLatin1(GetParam())), copy));
+// Runs lupdate over the sources (the options of update_translations, and
+// `extra`) into `copy`, a scratch copy of `ts`; its output in `output`.
+void lupdateInto(const QString& ts, const QString& copy, const QStringList& extra,
+                 QString& output) {
+    ASSERT_TRUE(QFile::copy(ts, copy));
     QStringList arguments =
         QString::fromLatin1(RIGMESH_LUPDATE_OPTIONS).split(QLatin1Char('|'), Qt::SkipEmptyParts);
-    arguments << QStringLiteral("@" RIGMESH_LUPDATE_INPUTS) << QStringLiteral("-ts") << copy;
+    arguments << extra << QStringLiteral("@" RIGMESH_LUPDATE_INPUTS) << QStringLiteral("-ts")
+              << copy;
     QProcess lupdate;
     lupdate.setProcessChannelMode(QProcess::MergedChannels);
     lupdate.start(QStringLiteral(RIGMESH_LUPDATE), arguments);
     ASSERT_TRUE(lupdate.waitForFinished(240000));
-    const QString output = QString::fromLocal8Bit(lupdate.readAll());
+    output = QString::fromLocal8Bit(lupdate.readAll());
     ASSERT_EQ(lupdate.exitCode(), 0) << output.toStdString();
+}
+
+TEST_P(TranslationFile, LupdateFindsEveryStringAlreadyTranslatedAndNothingObsolete) {
+    QTemporaryDir scratch;
+    ASSERT_TRUE(scratch.isValid());
+    const QString copy = scratch.filePath(QStringLiteral("copy.ts"));
+    QString output;
+    ASSERT_NO_FATAL_FAILURE(lupdateInto(tsPath(QString::fromLatin1(GetParam())), copy, {}, output));
 
     const std::vector<TsMessage> before = readTs(tsPath(QString::fromLatin1(GetParam())));
     const std::vector<TsMessage> after = readTs(copy);
@@ -159,6 +168,33 @@ TEST_P(TranslationFile, ContextsAreThoseTheStudioTranslatesIn) {
                                    QStringLiteral("rigmesh::widgets")};
     for (const TsMessage& m : readTs(tsPath(QString::fromLatin1(GetParam()))))
         EXPECT_FALSE(namespaces.contains(m.context)) << describe(m);
+}
+
+// English: the sources' numerus strings ("%n bone(s)") each have English's
+// two forms in rigmesh_en.ts (lupdate -pluralonly, run again over the
+// sources, finds nothing new or unfinished), without "(s)", keeping the
+// source's markers.
+TEST(EnglishPlurals, EveryNumerusStringHasItsEnglishFormsWithoutBrackets) {
+    QTemporaryDir scratch;
+    ASSERT_TRUE(scratch.isValid());
+    const QString copy = scratch.filePath(QStringLiteral("copy.ts"));
+    QString output;
+    ASSERT_NO_FATAL_FAILURE(
+        lupdateInto(QStringLiteral(RIGMESH_PLURALS_TS), copy,
+                    {QStringLiteral("-no-obsolete"), QStringLiteral("-pluralonly")}, output));
+    const std::vector<TsMessage> after = readTs(copy);
+    EXPECT_EQ(after.size(), readTs(QStringLiteral(RIGMESH_PLURALS_TS)).size())
+        << output.toStdString();
+    EXPECT_GT(after.size(), 20u);
+    static const QRegularExpression bracketed(QStringLiteral("\\((s|es)\\)"));
+    for (const TsMessage& m : after) {
+        EXPECT_TRUE(m.type.isEmpty()) << describe(m) << ": run the target update_translations";
+        ASSERT_EQ(m.translations.size(), 2) << describe(m);
+        for (const QString& form : m.translations) {
+            EXPECT_FALSE(form.contains(bracketed)) << describe(m) << " -> " << form.toStdString();
+            EXPECT_EQ(markers(form), markers(m.source)) << describe(m);
+        }
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Languages, TranslationFile, testing::Values("de", "es"),

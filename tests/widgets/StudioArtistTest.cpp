@@ -14,6 +14,7 @@
 
 #include "StudioFixture.h"
 #include "model/DocumentFile.h"
+#include "model/commands/KeyPoseCommand.h"
 #include "viewport/ViewMath.h"
 
 namespace rigmesh {
@@ -72,6 +73,9 @@ class StudioArtist : public test::StudioFixture {
 // Paper 3.1 as Blender's knife: only the loop near the drawn stroke cuts.
 TEST_F(StudioArtist, AStrokeAcrossTheUpperArmTakesTheArmOffTheBody) {
     const model::PartId biped = addExampleBiped();
+    // A key at 0.5 s: the body keeps its clip.
+    document()->undoStack()->push(new model::KeyPoseCommand(*document(), biped, 0.5));
+    ASSERT_EQ(document()->part(biped).clip.keyCount(), 1);
     document()->setSelection({biped, kNoJoint});
     window->activateTool<widgets::CutTool>();
     QTest::qWait(50);
@@ -92,6 +96,7 @@ TEST_F(StudioArtist, AStrokeAcrossTheUpperArmTakesTheArmOffTheBody) {
     EXPECT_EQ(body.name, QStringLiteral("biped"));
     EXPECT_EQ(arm.name, QStringLiteral("biped cut"));
     EXPECT_EQ(document()->selection().part, biped);
+    EXPECT_EQ(body.clip.keyCount(), 1) << "the body keeps its clip";
     EXPECT_LT(maxX(*body.part), 1.2) << "the hand went with the arm";
     EXPECT_NEAR(maxX(*arm.part), handX, 1e-9);
     for (const model::PartNode& node : document()->parts())

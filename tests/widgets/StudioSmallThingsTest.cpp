@@ -7,26 +7,36 @@
 // views; tooltips name the keys; the example's weights are a fresh solve.
 #include <gtest/gtest.h>
 
+#include <QAbstractButton>
 #include <QAction>
 #include <QDateTime>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QLabel>
+#include <QMessageBox>
 #include <QRegularExpression>
 #include <QScrollBar>
 #include <QStatusBar>
 #include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QTreeView>
 #include <QUndoStack>
 #include <QUndoView>
+#include <iostream>
 
+#include "CommandLineFiles.h"
 #include "DocumentView.h"
 #include "ExampleDocument.h"
 #include "StudioFixture.h"
 #include "jobs/JobRunner.h"
 #include "merge/MergeParts.h"
 #include "model/Autosave.h"
+#include "model/DocumentExport.h"
 #include "model/DocumentFile.h"
 #include "model/commands/RenamePartCommand.h"
+#include "panels/OutlinerPanel.h"
 #include "panels/PropertiesPanel.h"
 #include "part/BoneWeights.h"
 #include "preferences/Theme.h"
@@ -55,6 +65,23 @@ std::vector<Vec2> ellipse() {
 class StudioSmallThings : public test::StudioFixture {
   protected:
     QString status() const { return window->statusBar()->currentMessage(); }
+    // Near-white pixels in the check box at the start of the Outliner's
+    // selected row (its first 20 pixels, before the name).
+    int checkMarkPixels() const {
+        QTreeView* tree = window->outliner()->view();
+        const QModelIndex row = tree->currentIndex();
+        if (!row.isValid())
+            return -1;
+        const QRect cell = tree->visualRect(row.siblingAtColumn(0));
+        const QImage image =
+            tree->viewport()->grab(QRect(cell.left(), cell.top(), 20, cell.height())).toImage();
+        image.save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_outliner_selected_box.png"));
+        int light = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                light += QColor(image.pixel(x, y)).lightness() > 200;
+        return light;
+    }
 };
 
 TEST_F(StudioSmallThings, ASelfCrossingStrokeIsMarkedNotToldInCoordinates) {
@@ -188,10 +215,16 @@ TEST_F(StudioSmallThings, TheDarkThemesIconsAndLockBoxesStandOut) {
             dock->raise();
     QTest::qWait(50);
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_dark_theme.png"));
+    // The selected part's row in the Outliner: its visibility box shows
+    // checked, a light check mark on the highlight (a box filled with the
+    // highlight colour vanished into the row).
+    EXPECT_GT(checkMarkPixels(), 6) << "the visible part's box shows its check mark";
     widgets::StudioPreferences light = dark;
     light.theme = widgets::Theme::Light;
     window->applyPreferences(light);
     EXPECT_TRUE(window->styleSheet().isEmpty());
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_light_theme.png"));
 }
 
 TEST_F(StudioSmallThings, TheWindowKeepsRoomForTheViewAndTheDocks) {
@@ -326,6 +359,99 @@ TEST_F(StudioSmallThings, TheExampleIsBuiltWithoutBlockingTheWindow) {
         EXPECT_TRUE(QRectF(QPointF(0, 0), QSizeF(view.size())).contains(QPointF(s.x(), s.y())))
             << v;
     }
+}
+
+// Counted things read as English counts them: the sources' "%n bone(s)" in
+// English's own forms (translations/rigmesh_en.ts), "1 bone" and "10
+// bones"; Spanish keeps its own. English is listed once among the
+// languages.
+TEST_F(StudioSmallThings, CountsReadAsEnglishSaysThem) {
+    auto rigged = [](int n) {
+        return QCoreApplication::translate("RigPartCommand", "%1 rigged with %n bone(s)", nullptr,
+                                           n)
+            .arg(QStringLiteral("biped"));
+    };
+    auto painted = [](int n) {
+        return QCoreApplication::translate("rigmesh::widgets::PaintTool",
+                                           "Painted %n dab(s), %1 vertices changed", nullptr, n);
+    };
+    ASSERT_TRUE(widgets::installTranslations(QStringLiteral("en")));
+    EXPECT_EQ(rigged(1), QStringLiteral("biped rigged with 1 bone"));
+    EXPECT_EQ(rigged(10), QStringLiteral("biped rigged with 10 bones"));
+    EXPECT_EQ(painted(1), QStringLiteral("Painted 1 dab, %1 vertices changed"));
+    EXPECT_EQ(painted(3), QStringLiteral("Painted 3 dabs, %1 vertices changed"));
+    ASSERT_TRUE(widgets::installTranslations(QStringLiteral("es")));
+    EXPECT_EQ(rigged(1), QStringLiteral("biped riggeada con 1 hueso"));
+    EXPECT_EQ(rigged(10), QStringLiteral("biped riggeada con 10 huesos"));
+    widgets::installTranslations(QStringLiteral("en"));
+    int english = 0;
+    for (const widgets::StudioLanguage& language : widgets::studioLanguages())
+        english += language.code == QLatin1String("en");
+    EXPECT_EQ(english, 1);
+}
+
+// rigmesh-studio FILE.obj: a file that is not a document is imported into a
+// new document, one undo step as File > Import makes it; a missing file and
+// a file that is no 3D scene are refused with a message that names them,
+// and leave no part behind.
+TEST_F(StudioSmallThings, AFileNamedOnTheCommandLineIsImportedIntoANewDocument) {
+    QTemporaryDir scratch;
+    ASSERT_TRUE(scratch.isValid());
+    model::Document source;
+    source.undoStack()->push(model::CreatePartCommand::create(source, ellipse(), "blob").release());
+    const QString obj = scratch.filePath(QStringLiteral("blob.obj"));
+    model::exportDocument(source, obj.toStdString(), ExportOptions{});
+    // Messages are read and closed as they come; the offer to rig the
+    // imported mesh is answered "Not Now".
+    QStringList messages;
+    QTimer answerer;
+    answerer.setInterval(10);
+    QObject::connect(&answerer, &QTimer::timeout, [&] {
+        for (QWidget* widget : QApplication::topLevelWidgets()) {
+            auto* box = qobject_cast<QMessageBox*>(widget);
+            if (!box || !box->isVisible())
+                continue;
+            if (box->objectName() == QStringLiteral("offerToRig")) {
+                for (QAbstractButton* button : box->buttons())
+                    if (box->buttonRole(button) == QMessageBox::RejectRole)
+                        button->click();
+                continue;
+            }
+            messages << box->text();
+            box->close();
+        }
+    });
+    answerer.start();
+    const int tabs = window->tabs()->count();
+    widgets::openFromCommandLine(*window, obj);
+    test::waitForJobs();
+    ASSERT_EQ(window->tabs()->count(), tabs + 1) << "a new document";
+    ASSERT_EQ(document()->partCount(), 1) << messages.join(QLatin1Char('\n')).toStdString();
+    EXPECT_EQ(document()->undoStack()->count(), 1);
+    EXPECT_GT(document()->parts().front().part->mesh.vertexCount(), 100);
+    document()->undoStack()->undo();
+    EXPECT_EQ(document()->partCount(), 0);
+
+    const QString missing = scratch.filePath(QStringLiteral("missing.obj"));
+    widgets::openFromCommandLine(*window, missing);
+    test::waitWhile([&] { return messages.isEmpty(); }, 5000);
+    ASSERT_EQ(messages.size(), 1);
+    EXPECT_TRUE(messages.front().contains(missing)) << messages.front().toStdString();
+    EXPECT_EQ(window->tabs()->count(), tabs + 1) << "no document for a missing file";
+
+    const QString junk = scratch.filePath(QStringLiteral("junk.obj"));
+    QFile file(junk);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("this is not a mesh\n");
+    file.close();
+    widgets::openFromCommandLine(*window, junk);
+    test::waitForJobs();
+    test::waitWhile([&] { return messages.size() < 2; }, 10000);
+    answerer.stop();
+    ASSERT_EQ(messages.size(), 2);
+    std::cout << "junk.obj: " << messages.back().toStdString() << std::endl;
+    EXPECT_FALSE(messages.back().isEmpty());
+    EXPECT_EQ(document()->partCount(), 0);
 }
 
 }  // namespace

@@ -80,13 +80,17 @@ QString themeStyleSheet(Theme theme) {
     // Fusion draws a check box in a list or table with an outline a shade
     // darker than the window and fills it with the base colour: on the dark
     // palette both are near black and the box vanishes (the Skin Weights
-    // panel's Lock column). Light outlines, and a filled box when checked.
+    // panel's Lock column). Light outlines, and a light check mark
+    // (resources/icons/check.svg) when checked: a box filled with the
+    // highlight colour, as before, vanished on a selected row, whose
+    // background is that colour (the Outliner's visibility box of the
+    // selected part).
     return theme == Theme::Dark ? QStringLiteral(
                                       "QAbstractItemView::indicator { width: 12px; height: 12px; "
                                       "border: 1px solid #9a9a9a; border-radius: 2px; "
                                       "background: #2a2a2a; } "
-                                      "QAbstractItemView::indicator:checked { background: #4772b3; "
-                                      "border-color: #c8d6ee; }")
+                                      "QAbstractItemView::indicator:checked { "
+                                      "image: url(:/icons/check.svg); border-color: #e0e0e0; }")
                                 : QString();
 }
 

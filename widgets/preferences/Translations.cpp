@@ -64,7 +64,9 @@ QList<StudioLanguage> studioLanguages() {
         QDir(translationsDirectory()).entryList({QStringLiteral("rigmesh_*.qm")}, QDir::Files);
     for (const QString& file : files) {
         const QString code = file.mid(8, file.size() - 8 - 3);  // rigmesh_<code>.qm
-        languages.append({code, nativeName(code)});
+        // rigmesh_en.qm holds English's plural forms only: English is listed.
+        if (code != QLatin1String("en"))
+            languages.append({code, nativeName(code)});
     }
     return languages;
 }
@@ -95,8 +97,13 @@ QLocale studioLocale() {
 bool installTranslations(const QString& code) {
     QCoreApplication::removeTranslator(&studioTranslator());
     QCoreApplication::removeTranslator(&qtTranslator());
-    if (code == QLatin1String("en"))
+    if (code == QLatin1String("en")) {
+        // The sources' "%n bone(s)" in English's own forms ("1 bone", "10
+        // bones"): rigmesh_en.qm has only those; without it the sources show.
+        if (studioTranslator().load(studioTranslationFile(code)))
+            QCoreApplication::installTranslator(&studioTranslator());
         return true;
+    }
     // Qt's own strings, where Qt's translations are installed (Debian:
     // qt6-translations-l10n); the studio works without them.
     if (qtTranslator().load(QStringLiteral("qtbase_") + code,

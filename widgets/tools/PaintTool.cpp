@@ -184,6 +184,11 @@ void PaintTool::release(Viewport& viewport, QMouseEvent*) {
                 if (command->skippedVertices() > 0)
                     message += tr("; %n vertex visit(s) skipped: every other bone there is locked",
                                   nullptr, command->skippedVertices());
+                if (command->unpairedVertices() > 0)
+                    message +=
+                        tr("; %n vertex visit(s) painted on one side only: no mirror "
+                           "partner there",
+                           nullptr, command->unpairedVertices());
                 return command;
             });
             emit status(message);

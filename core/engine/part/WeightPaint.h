@@ -6,17 +6,21 @@
 // bone weighs the vertex (a region one bone leads), the weight given up goes
 // to the parent bone, else the nearest unlocked bone, as Blender's
 // auto-normalise does; locked bones never change, and a vertex whose other
-// bones are all locked is skipped, never divided by zero. X-mirror paints
-// the reflection through the part's left-right mirror plane too
-// (rig/MirrorSymmetry), on the bone's mirror image (the left arm's bone
-// for the right arm's). "Front faces only" leaves out vertices whose normal
-// turns away from the viewer, so a brush never paints through a limb onto
-// its far side (Blender's option of the same name).
+// bones are all locked is skipped, never divided by zero. X-mirror works
+// vertex by vertex, as Blender's does: each vertex the dab changes passes
+// the same change on to its partner across the part's left-right mirror
+// plane (rig/MirrorSymmetry, rig/VertexMirror), on the bone's mirror image
+// (the left arm's bone for the right arm's), so the two sides stay equal
+// even where the surface is not exactly symmetric; a vertex without a
+// partner is painted on its own side only, and counted. "Front faces only"
+// leaves out vertices whose normal turns away from the viewer, so a brush
+// never paints through a limb onto its far side (Blender's option of the
+// same name); their partners follow the vertices painted.
 #pragma once
 
 #include <optional>
 #include <set>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "part/Part.h"
@@ -56,6 +60,10 @@ struct DabResult {
     // Vertex visits left as they were because the part has one bone only
     // (its weight is 1 everywhere).
     int skippedOnlyBone = 0;
+    // X-mirror: vertices the dab changed that have no partner across the
+    // mirror plane (none within vertexMirrorTolerance): painted on their
+    // own side only.
+    int unpaired = 0;
 };
 
 // The brush's strength at distance d (in radii, 0..1) from its centre.
@@ -73,29 +81,38 @@ class WeightPainter {
     // Paints one dab into `part` (its weights only). Throws Error for an
     // unknown or locked bone, a radius or strength out of range, a mirror
     // request on a part without a left-right mirror plane, or a part of
-    // another mesh.
+    // another mesh. With X-mirror, of two partners both within the brush
+    // the one it reaches more strongly leads (its change is the pair's); a
+    // partner on the plane, painted with a bone whose image is another
+    // bone, gets the mean of the two bones' weights on both (Blender's
+    // compromise there); a locked image bone is not painted.
     DabResult paint(Part& part, const WeightDab& dab);
 
   private:
+    // The vertices within the dab's radius (facing the viewer, if asked)
+    // and the brush's strength there, by ascending vertex.
+    using Influence = std::vector<std::pair<int, double>>;
     const std::vector<std::vector<int>>& neighbours();
     const std::vector<Vec3>& normals();
-    // The part's left-right symmetry, found at the first mirrored dab.
+    // The part's left-right symmetry and each vertex's partner across it,
+    // found at the first mirrored dab.
     const PartSymmetry& symmetry(const Part& part);
-    // The vertices within the dab's radius of `centre` (facing
-    // `towardsViewer`, if given) and the brush's strength there, added to
-    // `influence` (the larger strength where both have a vertex).
-    std::unordered_map<int, double> gather(const WeightDab& dab, const Vec3& centre,
-                                           const std::optional<Vec3>& towardsViewer,
-                                           std::unordered_map<int, double> influence);
-    void paintBone(Part& part, const WeightDab& dab, BoneId bone,
-                   const std::unordered_map<int, double>& influence, const LockedBones& locked,
-                   DabResult& result);
+    Influence gather(const WeightDab& dab);
+    // The dab bone's new weight at each vertex of `influence` whose weight
+    // it changes, from the weights as the dab found them.
+    std::vector<std::pair<int, double>> targets(const Part& part, const WeightDab& dab,
+                                                const Influence& influence);
+    void paintBone(Part& part, const WeightDab& dab, const Influence& influence,
+                   const LockedBones& locked, DabResult& result);
+    void paintMirrored(Part& part, const WeightDab& dab, const Influence& influence,
+                       const LockedBones& locked, DabResult& result);
 
     const TriMesh& mesh_;
     std::vector<std::vector<int>> neighbours_;
     std::vector<Vec3> normals_;
     bool symmetrySearched_ = false;
     std::optional<PartSymmetry> symmetry_;
+    std::vector<int> partners_;  // rig/VertexMirror's mirrorVertices
 };
 
 // One dab on its own (builds what it needs each call).

@@ -86,6 +86,7 @@ std::unique_ptr<PaintWeightsCommand> PaintWeightsCommand::create(Document& docum
         changed.insert(changed.end(), result.changed.begin(), result.changed.end());
         command->skipped_ += result.skippedLocked;
         command->skippedOnlyBone_ += result.skippedOnlyBone;
+        command->unpaired_ += result.unpaired;
     }
     std::sort(changed.begin(), changed.end());
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());

@@ -33,6 +33,9 @@ class PaintWeightsCommand : public SkinningEditCommand {
     int skippedVertices() const { return skipped_; }
     // Vertex visits left as they were because the part has only one bone.
     int skippedOnlyBone() const { return skippedOnlyBone_; }
+    // X-mirror: vertex visits changed on one side only, the vertex having no
+    // partner across the mirror plane (DabResult::unpaired).
+    int unpairedVertices() const { return unpaired_; }
 
   private:
     PaintWeightsCommand(Document& document, PartId part)
@@ -41,6 +44,7 @@ class PaintWeightsCommand : public SkinningEditCommand {
 
     int skipped_ = 0;
     int skippedOnlyBone_ = 0;
+    int unpaired_ = 0;
 };
 
 // The recipe's names of brush modes and falloffs ("add", "smooth", ...), and

@@ -77,6 +77,9 @@ StepCommand paintWeights(const Context& c) {
     if (command->skippedOnlyBone() > 0)
         detail << ", " << command->skippedOnlyBone()
                << " left as they were (the part has one bone only)";
+    if (command->unpairedVertices() > 0)
+        detail << ", " << command->unpairedVertices()
+               << " painted on one side only (no mirror partner within half an edge)";
     return {std::move(command), id, detail.str()};
 }
 

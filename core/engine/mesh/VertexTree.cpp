@@ -1,0 +1,69 @@
+#include "mesh/VertexTree.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace rigmesh {
+
+VertexTree::VertexTree(const std::vector<Vec3>& points) : points_(points) {
+    order_.resize(points.size());
+    for (int i = 0; i < static_cast<int>(points.size()); ++i)
+        order_[i] = i;
+    nodes_.reserve(2 * points.size() / kLeafSize + 2);
+    if (!points.empty())
+        build(0, static_cast<int>(points.size()));
+}
+
+int VertexTree::nearest(const Vec3& p) const {
+    int best = -1;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    if (!nodes_.empty())
+        search(0, p, best, bestDistance);
+    return best;
+}
+
+int VertexTree::build(int begin, int end) {
+    const int index = static_cast<int>(nodes_.size());
+    nodes_.push_back({});
+    Eigen::AlignedBox3d box;
+    for (int i = begin; i < end; ++i)
+        box.extend(points_[order_[i]]);
+    nodes_[index].box = box;
+    nodes_[index].begin = begin;
+    nodes_[index].end = end;
+    if (end - begin <= kLeafSize)
+        return index;
+    int axis = 0;
+    box.sizes().maxCoeff(&axis);
+    const int middle = begin + (end - begin) / 2;
+    std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
+                     [&](int a, int b) { return points_[a][axis] < points_[b][axis]; });
+    const int low = build(begin, middle);
+    const int high = build(middle, end);
+    nodes_[index].low = low;
+    nodes_[index].high = high;
+    return index;
+}
+
+void VertexTree::search(int index, const Vec3& p, int& best, double& bestDistance) const {
+    const Node& node = nodes_[index];
+    if (node.box.squaredExteriorDistance(p) >= bestDistance)
+        return;
+    if (node.low < 0) {
+        for (int i = node.begin; i < node.end; ++i) {
+            const double d = (points_[order_[i]] - p).squaredNorm();
+            if (d < bestDistance || (d == bestDistance && order_[i] < best)) {
+                bestDistance = d;
+                best = order_[i];
+            }
+        }
+        return;
+    }
+    // The nearer child first, so that the farther one is often skipped.
+    const bool lowFirst = nodes_[node.low].box.squaredExteriorDistance(p) <=
+                          nodes_[node.high].box.squaredExteriorDistance(p);
+    search(lowFirst ? node.low : node.high, p, best, bestDistance);
+    search(lowFirst ? node.high : node.low, p, best, bestDistance);
+}
+
+}  // namespace rigmesh
