@@ -55,6 +55,23 @@ std::optional<BoneId> firstBoneHangingFromABone(const Skeleton& skeleton) {
     return std::nullopt;
 }
 
+// The imported rig before an edit (a copy: the edit replaces the part), the
+// first bone hanging disconnected from another bone, and that bone.
+struct HangingChain {
+    Skeleton skeleton;
+    BoneId chainRoot = kNoBone;
+    BoneId parent = kNoBone;
+};
+
+HangingChain hangingChainOf(const Document& document) {
+    HangingChain chain{partOf(document).skeleton};
+    if (const std::optional<BoneId> root = firstBoneHangingFromABone(chain.skeleton)) {
+        chain.chainRoot = *root;
+        chain.parent = hangsFrom(chain.skeleton, *root);
+    }
+    return chain;
+}
+
 // What an edit of one bone must keep of an imported rig: a valid part, the
 // surface as it came (still marked as a file's), every other bone's name,
 // every clip, and the chains that hung disconnected still disconnected.
@@ -83,12 +100,8 @@ void expectRigKept(const Document& before, const Document& after, BoneId edited)
 TEST(ImportedRigEdits, SplittingTheBoneAChainHangsFromKeepsTheRigAndTheChainOnTheNearerHalf) {
     Imported imported;
     importWuson(imported);
-    const Skeleton skeleton =
-        partOf(imported.document).skeleton;  // a copy: the edit replaces the part
-    const std::optional<BoneId> disconnected = firstBoneHangingFromABone(skeleton);
-    ASSERT_TRUE(disconnected.has_value());
-    const BoneId chainRoot = *disconnected;
-    const BoneId parent = hangsFrom(skeleton, chainRoot);
+    const auto [skeleton, chainRoot, parent] = hangingChainOf(imported.document);
+    ASSERT_NE(chainRoot, kNoBone);
     const JointId parentTail = skeleton.bone(parent).tail;
 
     runSteps(imported.document, {{{"command", "split_bone"}, {"part", 0}, {"bone", parent}}});
@@ -121,12 +134,8 @@ TEST(ImportedRigEdits, SplittingTheBoneAChainHangsFromKeepsTheRigAndTheChainOnTh
 TEST(ImportedRigEdits, DeletingTheBoneAChainHangsFromHangsItFromTheBoneAbove) {
     Imported imported;
     importWuson(imported);
-    const Skeleton skeleton =
-        partOf(imported.document).skeleton;  // a copy: the edit replaces the part
-    const std::optional<BoneId> disconnected = firstBoneHangingFromABone(skeleton);
-    ASSERT_TRUE(disconnected.has_value());
-    const BoneId chainRoot = *disconnected;
-    const BoneId parent = hangsFrom(skeleton, chainRoot);
+    const auto [skeleton, chainRoot, parent] = hangingChainOf(imported.document);
+    ASSERT_NE(chainRoot, kNoBone);
     const BoneId above = skeleton.parentBone(parent).value_or(kNoBone);
 
     Imported reference;
