@@ -148,9 +148,7 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
         result.part.skeleton = skeletonFromCurve(curve, surface.mainPiece, options.bones);
     } catch (const Error& error) {
         // A blob the flow contracts to a point: a chain along its main axis.
-        const MessageId id = error.message().id;
-        if (id != MessageId::AutoRigSkeletonFailed && id != MessageId::AutoRigFlowGaveNoCurve &&
-            id != MessageId::AutoRigCurveTooShort && id != MessageId::AutoRigFlowContracted)
+        if (!flowGaveNoSkeleton(error.message().id))
             throw;
         result.part.skeleton = mainAxisChain(surface.mainPiece);
     }

@@ -12,7 +12,8 @@
 namespace rigmesh {
 
 // `mesh` must be closed (the joints are pulled inside it). Throws
-// Error(AutoRigSkeletonFailed) for a mesh without extent.
+// Error(AutoRigTooFewVertices) for too few vertices and
+// Error(AutoRigNoExtent) for a mesh without extent.
 Skeleton mainAxisChain(const TriMesh& mesh);
 
 // The largest distance from a vertex of `mesh` to the skeleton's bones (the

@@ -23,7 +23,7 @@ struct CurveSkeleton {
 
 // `mesh` must be closed, manifold and one piece (autorig/MeshRepair).
 // Reports progress between 0 and 1 and throws Error(AutoRigCancelled) when
-// `progress` says stop, Error(AutoRigSkeletonFailed) when the flow gives no
+// `progress` says stop, Error(AutoRigFlowContracted) when the flow gives no
 // curve.
 CurveSkeleton extractCurveSkeleton(const TriMesh& mesh, const RigProgress& progress = {});
 

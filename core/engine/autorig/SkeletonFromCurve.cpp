@@ -483,4 +483,10 @@ Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
     return skeleton;
 }
 
+bool flowGaveNoSkeleton(MessageId id) {
+    // extractCurveSkeleton's and skeletonFromCurve's own refusals above.
+    return id == MessageId::AutoRigFlowContracted || id == MessageId::AutoRigFlowGaveNoCurve ||
+           id == MessageId::AutoRigCurveTooShort || id == MessageId::AutoRigSkeletonFailed;
+}
+
 }  // namespace rigmesh

@@ -20,6 +20,7 @@
 #pragma once
 
 #include "autorig/CurveSkeleton.h"
+#include "base/Message.h"
 #include "rig/Skeleton.h"
 
 namespace rigmesh {
@@ -51,10 +52,15 @@ struct CurveRigOptions {
 };
 
 // `mesh` gives each node its radius (the mean distance to the vertices that
-// contracted onto it). Throws Error(AutoRigSkeletonFailed) when no bone can
-// be made.
+// contracted onto it). Throws Error(AutoRigFlowGaveNoCurve,
+// AutoRigCurveTooShort or AutoRigSkeletonFailed) when no bone can be made.
 Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
                            const CurveRigOptions& options = {});
+
+// Whether `id`, thrown by extractCurveSkeleton or skeletonFromCurve, says the
+// flow gave no usable skeleton (the shape is a blob: autorig/AutoRig falls
+// back to a chain along its main axis). Kept beside the throws it names.
+bool flowGaveNoSkeleton(MessageId id);
 
 // The joints with one bone (the limbs' ends).
 int leafCount(const Skeleton& skeleton);
