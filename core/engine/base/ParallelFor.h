@@ -11,7 +11,7 @@ namespace rigmesh {
 
 // task(begin, end, worker) handles [begin, end); worker is in [0, workers) and
 // identifies per-thread scratch space. Uses min(threads, count) workers (at
-// least one); count <= 0 runs nothing. Throws rigmesh::Error if threads < 1.
+// least one); count <= 0 runs nothing. Throws std::logic_error if threads < 1.
 void parallelFor(int count, int threads,
                  const std::function<void(int begin, int end, int worker)>& task);
 

@@ -7,6 +7,7 @@
 
 #include "autorig/SurfaceProbe.h"
 #include "base/Error.h"
+#include "mesh/MeshChecks.h"
 #include "pose/PoseHierarchy.h"
 
 namespace rigmesh {
@@ -50,10 +51,7 @@ void pullTailsOffSurface(ExportRig& rig, const Part& part, const std::vector<Vec
                                      [](const ExportBoneNode& node) { return node.leaf; });
     if (!anyLeaf || part.mesh.faces.empty())
         return;
-    Eigen::AlignedBox3d box;
-    for (const Vec3& v : part.mesh.vertices)
-        box.extend(v);
-    const double size = box.diagonal().norm();
+    const double size = boundingBox(part.mesh).diagonal().norm();
     const SurfaceProbe surface(part.mesh);
     for (std::size_t i = 0; i < rig.nodes.size(); ++i) {
         ExportBoneNode& node = rig.nodes[i];

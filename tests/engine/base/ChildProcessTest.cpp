@@ -174,6 +174,8 @@ Stopped stopParentDuring(const std::string& script, std::size_t pidCount, int si
     for (const auto until = Clock::now() + std::chrono::seconds(10);
          !std::all_of(started.begin(), started.end(), runsSleep) && Clock::now() < until;)
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_TRUE(std::all_of(started.begin(), started.end(), runsSleep))
+        << "a started process never ran sleep";
     kill(parent, signal);
     int status = 0;
     waitpid(parent, &status, 0);
