@@ -81,7 +81,7 @@ if command -v appstreamcli >/dev/null; then
 else
     fail "appstreamcli is not installed (Debian package appstream; run scripts/setup.sh)"
 fi
-zcat "$root/usr/share/man/man1/rigmesh.1.gz" | grep -q '^\.SH NAME' || fail "rigmesh(1)"
+zcat "$root/usr/share/man/man1/rigmesh.1.gz" | grep '^\.SH NAME' >/dev/null || fail "rigmesh(1)"
 
 echo "== lintian"
 if ! command -v lintian >/dev/null; then

@@ -26,9 +26,12 @@ if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
     packages+=(nodejs npm)
 fi
 
+# `grep >/dev/null`, not `grep -q`, after a pipe: under pipefail grep -q's
+# early exit can kill the writer with SIGPIPE (exit 141) and fail the test
+# (apt-cache policy did, so godot3 was never installed on a fresh machine).
 missing=()
 for package in "${packages[@]}"; do
-    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep "install ok installed" >/dev/null; then
         missing+=("$package")
     fi
 done
@@ -57,8 +60,8 @@ fi
 # machine's architecture (read from the package lists above); elsewhere the
 # check skips and says why.
 if [ "$preset" != "release" ] &&
-    ! dpkg-query -W -f='${Status}' godot3 2>/dev/null | grep -q "install ok installed"; then
-    if apt-cache policy godot3 2>/dev/null | grep -q "Candidate: [0-9]"; then
+    ! dpkg-query -W -f='${Status}' godot3 2>/dev/null | grep "install ok installed" >/dev/null; then
+    if apt-cache policy godot3 2>/dev/null | grep "Candidate: [0-9]" >/dev/null; then
         echo "setup: installing godot3"
         sudo=""
         if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
