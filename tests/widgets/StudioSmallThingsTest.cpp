@@ -9,6 +9,7 @@
 
 #include <QAbstractButton>
 #include <QAction>
+#include <QCheckBox>
 #include <QDateTime>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -429,6 +430,14 @@ TEST_F(StudioSmallThings, AFileNamedOnTheCommandLineIsImportedIntoANewDocument) 
     ASSERT_EQ(document()->partCount(), 1) << messages.join(QLatin1Char('\n')).toStdString();
     EXPECT_EQ(document()->undoStack()->count(), 1);
     EXPECT_GT(document()->parts().front().part->mesh.vertexCount(), 100);
+    // An imported mesh was never smoothed and cannot be rebuilt: its sketch
+    // options are greyed out, and the smoothing box does not claim it was.
+    document()->setSelection({document()->parts().front().id, kNoJoint});
+    QTest::qWait(20);
+    auto* smoothing = window->propertiesPanel()->findChild<QCheckBox*>();
+    ASSERT_NE(smoothing, nullptr);
+    EXPECT_FALSE(smoothing->isEnabled());
+    EXPECT_FALSE(smoothing->isChecked());
     document()->undoStack()->undo();
     EXPECT_EQ(document()->partCount(), 0);
 

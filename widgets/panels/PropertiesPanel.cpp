@@ -142,7 +142,8 @@ void PropertiesPanel::refresh() {
                   "a skeleton and skin weights.")
              : QString()));
     edgeLength_->setValue(node->options.targetEdgeLength);
-    smoothing_->setChecked(node->options.smoothing);
+    // A merged or imported part was not made by this smoothing: unchecked.
+    smoothing_->setChecked(rebuildable && node->options.smoothing);
 }
 
 void PropertiesPanel::refreshPose() {
