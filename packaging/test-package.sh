@@ -69,7 +69,9 @@ done
 echo "== desktop integration"
 desktop="$root/usr/share/applications/rigmesh-studio.desktop"
 grep -q '^Exec=rigmesh-studio %F$' "$desktop" || fail "desktop entry Exec"
-grep -q '^MimeType=application/x-rigmesh;$' "$desktop" || fail "desktop entry MimeType"
+# Its documents, and the meshes it imports when opened with one (widgets/CommandLineFiles).
+grep -q '^MimeType=application/x-rigmesh;model/obj;model/gltf-binary;model/gltf+json;model/stl;$' \
+    "$desktop" || fail "desktop entry MimeType"
 grep -q 'glob pattern="\*.rigmesh"' "$root/usr/share/mime/packages/rigmesh-studio.xml" ||
     fail "MIME glob"
 if command -v desktop-file-validate >/dev/null; then
