@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "base/Error.h"
 #include "io/ColladaXml.h"
@@ -119,21 +120,27 @@ void forEachBlenderTechnique(const tinyxml2::XMLElement& parent, const std::stri
     }
 }
 
-// The same for every visual scene of a COLLADA text (nothing for text that
-// is not XML).
+// The same for every visual scene of a COLLADA document's root element.
 template <typename Visit>
-void forEachBlenderJointTechnique(const std::string& dae, Visit&& visit,
+void forEachBlenderJointTechnique(const tinyxml2::XMLElement& collada, Visit&& visit,
                                   const std::string& profile = "blender") {
-    tinyxml2::XMLDocument document;
-    if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
-        document.RootElement() == nullptr)
-        return;
-    const tinyxml2::XMLElement* scenes =
-        document.RootElement()->FirstChildElement("library_visual_scenes");
+    const tinyxml2::XMLElement* scenes = collada.FirstChildElement("library_visual_scenes");
     for (const tinyxml2::XMLElement* scene =
              scenes != nullptr ? scenes->FirstChildElement("visual_scene") : nullptr;
          scene != nullptr; scene = scene->NextSiblingElement("visual_scene"))
         forEachBlenderTechnique(*scene, profile, visit);
+}
+
+// What `read` gives for the root element of `dae` parsed, or an empty
+// result for text that is not XML.
+template <typename Read>
+auto readParsed(const std::string& dae, Read&& read)
+    -> decltype(read(std::declval<const tinyxml2::XMLElement&>())) {
+    tinyxml2::XMLDocument document;
+    if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
+        document.RootElement() == nullptr)
+        return {};
+    return read(*document.RootElement());
 }
 
 }  // namespace
@@ -153,6 +160,24 @@ void addFbxBoneTails(FbxFile& fbx, const std::vector<ExportRig>& rigs) {
 }
 
 std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae,
+                                                const std::string& profile) {
+    return readParsed(dae, [&](const tinyxml2::XMLElement& collada) {
+        return readColladaBoneTips(collada, profile);
+    });
+}
+
+std::map<std::string, bool> readColladaBoneConnections(const std::string& dae) {
+    return readParsed(dae, [](const tinyxml2::XMLElement& collada) {
+        return readColladaBoneConnections(collada);
+    });
+}
+
+std::map<std::string, std::string> readColladaBoneNames(const std::string& dae) {
+    return readParsed(
+        dae, [](const tinyxml2::XMLElement& collada) { return readColladaBoneNames(collada); });
+}
+
+std::map<std::string, Vec3> readColladaBoneTips(const tinyxml2::XMLElement& dae,
                                                 const std::string& profile) {
     std::map<std::string, Vec3> tips;
     forEachBlenderJointTechnique(
@@ -176,7 +201,7 @@ std::map<std::string, Vec3> readColladaBoneTips(const std::string& dae,
     return tips;
 }
 
-std::map<std::string, bool> readColladaBoneConnections(const std::string& dae) {
+std::map<std::string, bool> readColladaBoneConnections(const tinyxml2::XMLElement& dae) {
     std::map<std::string, bool> connected;
     forEachBlenderJointTechnique(
         dae, [&](const std::string& name, const tinyxml2::XMLElement& technique) {
@@ -191,7 +216,7 @@ std::map<std::string, bool> readColladaBoneConnections(const std::string& dae) {
     return connected;
 }
 
-std::map<std::string, std::string> readColladaBoneNames(const std::string& dae) {
+std::map<std::string, std::string> readColladaBoneNames(const tinyxml2::XMLElement& dae) {
     std::map<std::string, std::string> names;
     forEachBlenderJointTechnique(
         dae,

@@ -22,6 +22,10 @@
 #include "io/ExportRig.h"
 #include "io/FbxRecords.h"
 
+namespace tinyxml2 {
+class XMLElement;
+}
+
 namespace rigmesh {
 
 // The COLLADA text with Blender's tip extra added to every joint node of
@@ -60,5 +64,12 @@ std::map<std::string, bool> readColladaBoneConnections(const std::string& dae);
 // Per joint name: the bone's own name our exporter wrote where the joint had
 // to be named otherwise (`<technique profile="rigmesh">`, kNameMetadataKey).
 std::map<std::string, std::string> readColladaBoneNames(const std::string& dae);
+
+// The same read from a parsed document's root element (io/SceneImport
+// reads all of a file's extras from one parse).
+std::map<std::string, Vec3> readColladaBoneTips(const tinyxml2::XMLElement& collada,
+                                                const std::string& profile = "blender");
+std::map<std::string, bool> readColladaBoneConnections(const tinyxml2::XMLElement& collada);
+std::map<std::string, std::string> readColladaBoneNames(const tinyxml2::XMLElement& collada);
 
 }  // namespace rigmesh

@@ -34,13 +34,16 @@ std::optional<std::string> actionOfChannel(const tinyxml2::XMLElement& animation
 }  // namespace
 
 std::map<std::string, std::string> readColladaActionNames(const std::string& dae) {
-    std::map<std::string, std::string> names;
     tinyxml2::XMLDocument document;
     if (document.Parse(dae.data(), dae.size()) != tinyxml2::XML_SUCCESS ||
         document.RootElement() == nullptr)
-        return names;
-    const tinyxml2::XMLElement* library =
-        document.RootElement()->FirstChildElement("library_animations");
+        return {};
+    return readColladaActionNames(*document.RootElement());
+}
+
+std::map<std::string, std::string> readColladaActionNames(const tinyxml2::XMLElement& collada) {
+    std::map<std::string, std::string> names;
+    const tinyxml2::XMLElement* library = collada.FirstChildElement("library_animations");
     for (const tinyxml2::XMLElement* container =
              library != nullptr ? library->FirstChildElement("animation") : nullptr;
          container != nullptr; container = container->NextSiblingElement("animation")) {

@@ -11,6 +11,10 @@
 #include <map>
 #include <string>
 
+namespace tinyxml2 {
+class XMLElement;
+}
+
 namespace rigmesh {
 
 // Per top-level animation (keyed by its `name`, its `id`, and the name Assimp
@@ -18,5 +22,7 @@ namespace rigmesh {
 // name its channel ids carry. Empty for text that is not XML and for files
 // whose animations do not follow Blender's naming.
 std::map<std::string, std::string> readColladaActionNames(const std::string& dae);
+// The same from a parsed document's root element.
+std::map<std::string, std::string> readColladaActionNames(const tinyxml2::XMLElement& collada);
 
 }  // namespace rigmesh

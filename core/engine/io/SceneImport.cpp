@@ -1,5 +1,7 @@
 #include "io/SceneImport.h"
 
+#include <tinyxml2.h>
+
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -184,12 +186,18 @@ ImportedScene importScene(const std::string& path) {
         for (unsigned c = 0; c < scene.mAnimations[a]->mNumChannels; ++c)
             hints.animatedNodes.insert(scene.mAnimations[a]->mChannels[c]->mNodeName.C_Str());
     if (isCollada(path)) {
+        // One parse for all of Blender's and our extras (Assimp has its own).
         const std::string text = readText(path);
-        hints.colladaTips = readColladaBoneTips(text);
-        hints.colladaExactTips = readColladaBoneTips(text, "rigmesh");
-        hints.colladaConnections = readColladaBoneConnections(text);
-        hints.colladaNames = readColladaBoneNames(text);
-        colladaActions = readColladaActionNames(text);
+        tinyxml2::XMLDocument dae;
+        if (dae.Parse(text.data(), text.size()) == tinyxml2::XML_SUCCESS &&
+            dae.RootElement() != nullptr) {
+            const tinyxml2::XMLElement& collada = *dae.RootElement();
+            hints.colladaTips = readColladaBoneTips(collada);
+            hints.colladaExactTips = readColladaBoneTips(collada, "rigmesh");
+            hints.colladaConnections = readColladaBoneConnections(collada);
+            hints.colladaNames = readColladaBoneNames(collada);
+            colladaActions = readColladaActionNames(collada);
+        }
     }
 
     // Skinned meshes by the skeleton they share, each other mesh alone, in
