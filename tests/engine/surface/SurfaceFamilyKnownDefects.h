@@ -11,7 +11,11 @@
 // tilted against the lobe and the slices that would cross it were dropped;
 // the strip across that gap fans from the small base ring to a tall slice.
 // Least-Squares Meshes now leaves that strip free (surface/SectionGaps.h):
-// 4.1 -> 2.2 and 3.9 -> 2.6 spacings, still above 2. p99, IoU, the
+// 4.1 -> 2.2 and 3.9 -> 2.6 spacings, still above 2. Pairing the cap's
+// sides otherwise (by a blend with their heights over the base chord, or
+// holding one side's end point back where a slice would cross) left the
+// walls as they were or made them worse (stubs 22: 2.18 or 2.50, stubs
+// 35: 2.81 or 3.81 spacings; docs/ARCHITECTURE.md, section 10). p99, IoU, the
 // silhouette and the bulge hold on all. The test
 // holds each listed outline to its recorded figures (none may get worse)
 // and every other outline to the limits.
