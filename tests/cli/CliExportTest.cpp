@@ -240,7 +240,7 @@ TEST(CliExport, EndBonesByDefaultAndNoLeafBonesLeavesThemOut) {
 
     // build and run write them too, and leave them out when told.
     const std::string tubePath = std::string(RIGMESH_SHARED_SKETCHES) + "/tube.json";
-    const std::string tube = quoted(tubePath);
+    const std::string tube = quoted(fs::path(tubePath));
     const fs::path built = scratch("ends_build.glb"), builtWithout = scratch("ends_build_no.glb");
     ASSERT_EQ(runCli("build " + tube + " -o " + quoted(built)).exitCode, 0);
     ASSERT_EQ(runCli("build " + tube + " -o " + quoted(builtWithout) + " --no-leaf-bones").exitCode,
