@@ -2240,8 +2240,8 @@
         <translation>Endknochen hinzufügen (ein Endknochen an jedem Blattende)</translation>
     </message>
     <message>
-        <source>Like Blender&apos;s FBX option: importers then also know how long each leaf bone is</source>
-        <translation>Wie die FBX-Option in Blender: Importprogramme kennen dann auch die Länge jedes Blattknochens</translation>
+        <source>Like Blender&apos;s FBX option: importers then also know how long each leaf bone is (without, Blender gives a leaf its parent&apos;s length)</source>
+        <translation>Wie die FBX-Option in Blender: Importprogramme kennen dann auch die Länge jedes Blattknochens (ohne sie gibt Blender einem Blattknochen die Länge seines Elternknochens)</translation>
     </message>
     <message>
         <source>none</source>

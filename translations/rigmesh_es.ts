@@ -2240,8 +2240,8 @@
         <translation>Añadir huesos finales (un hueso final en la cola de cada hoja)</translation>
     </message>
     <message>
-        <source>Like Blender&apos;s FBX option: importers then also know how long each leaf bone is</source>
-        <translation>Como la opción FBX de Blender: así los importadores también saben cuánto mide cada hueso hoja</translation>
+        <source>Like Blender&apos;s FBX option: importers then also know how long each leaf bone is (without, Blender gives a leaf its parent&apos;s length)</source>
+        <translation>Como la opción FBX de Blender: así los importadores también saben cuánto mide cada hueso hoja (sin ellos, Blender da a un hueso hoja la longitud de su padre)</translation>
     </message>
     <message>
         <source>none</source>

@@ -82,10 +82,11 @@ DebugOverlay skeletonOverlay(const Skeleton& skeleton) {
 }
 
 int runBuild(const std::vector<std::string>& arguments) {
-    CommandLine line(arguments,
-                     {"-o", "--stats", "--debug-svg", "--edge-length", "--rig", "--max-influences",
-                      "--subdivide", "--decimate"},
-                     {"--no-smoothing", "--plain-dp", "--pose-demo", "--leaf-bones"});
+    CommandLine line(
+        arguments,
+        {"-o", "--stats", "--debug-svg", "--edge-length", "--rig", "--max-influences",
+         "--subdivide", "--decimate"},
+        {"--no-smoothing", "--plain-dp", "--pose-demo", "--leaf-bones", "--no-leaf-bones"});
     if (line.positional().size() != 1)
         throw Error("build needs exactly one sketch file (.json or .svg), or 'example'");
     const Sketch sketch = loadSketch(line.positional()[0]);

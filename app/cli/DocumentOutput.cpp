@@ -16,6 +16,15 @@
 
 namespace rigmesh::cli {
 
+bool leafBonesOption(const CommandLine& line) {
+    // As Blender's own FBX exporter ("Add Leaf Bones" on): without end bones
+    // Blender's glTF and FBX importers give a leaf its parent's length
+    // (docs/EXCHANGE.md, "Leaf bones in Blender").
+    if (line.flag("--no-leaf-bones") && line.flag("--leaf-bones"))
+        throw Error("choose one: --leaf-bones or --no-leaf-bones");
+    return !line.flag("--no-leaf-bones");
+}
+
 ExportOptions exportOptions(const CommandLine& line) {
     ExportOptions options;
     if (auto influences = line.number("--max-influences")) {
@@ -28,7 +37,7 @@ ExportOptions exportOptions(const CommandLine& line) {
                 "allows)");
         options.maxInfluences = static_cast<int>(*influences);
     }
-    options.leafBones = line.flag("--leaf-bones");
+    options.leafBones = leafBonesOption(line);
     // The studio's view skinning by default: linear blend, as glTF viewers
     // and Blender deform (docs/EXCHANGE.md, "Skinning in Blender").
     options.skinning = SkinningMethod::LinearBlend;

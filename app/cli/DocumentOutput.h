@@ -18,8 +18,13 @@ class Document;
 
 namespace rigmesh::cli {
 
+// End bones at each leaf's tail (ExportOptions::leafBones) unless
+// --no-leaf-bones; --leaf-bones, the default, is accepted; both at once are
+// refused.
+bool leafBonesOption(const CommandLine& line);
+
 // --max-influences N (a whole number >= 0; 0 = all the format allows);
-// --leaf-bones (an end bone at each leaf's tail); --dual-quaternion (bake
+// leafBonesOption; --dual-quaternion (bake
 // poses with dual quaternion skinning and mark an FBX's skin so; the default,
 // --linear-blend, is linear blend skinning as glTF viewers and Blender
 // deform); --subdivide N (Loop, 0..4) and --decimate FACES (quadric, per part).

@@ -16,7 +16,7 @@ namespace rigmesh::cli {
 int runExport(const std::vector<std::string>& arguments) {
     CommandLine line(arguments, {"-o", "--max-influences", "--subdivide", "--decimate"},
                      {"--current-pose", "--pose-as-key", "--no-animation", "--hidden",
-                      "--leaf-bones", "--linear-blend", "--dual-quaternion"});
+                      "--leaf-bones", "--no-leaf-bones", "--linear-blend", "--dual-quaternion"});
     if (line.positional().size() != 1)
         throw Error("export needs exactly one document (.rigmesh)");
     const std::string documentPath = line.positional()[0];

@@ -30,7 +30,7 @@ std::string proxyPath(const std::string& path, int rig) {
 
 int runRig(const std::vector<std::string>& arguments) {
     CommandLine line(arguments, {"-o", "--max-influences", "--debug-proxy"},
-                     {"--leaf-bones", "--separately"});
+                     {"--leaf-bones", "--no-leaf-bones", "--separately"});
     if (line.positional().size() != 1)
         throw Error("rig needs exactly one mesh file to read");
     const std::optional<std::string> out = line.value("-o");

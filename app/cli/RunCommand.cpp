@@ -18,13 +18,16 @@
 namespace rigmesh::cli {
 
 int runRecipe(const std::vector<std::string>& arguments) {
-    CommandLine line(arguments, {"-o", "--stats"}, {"--compare-global"});
+    CommandLine line(arguments, {"-o", "--stats"},
+                     {"--compare-global", "--leaf-bones", "--no-leaf-bones"});
     if (line.positional().size() != 1)
         throw Error("run needs exactly one recipe file (.json)");
     const std::string recipePath = line.positional()[0];
     const std::optional<std::string> out = line.value("-o");
     if (out)
         checkDocumentOutputPath(*out, true);  // an unknown extension fails before any step runs
+    ExportOptions exportSettings;
+    exportSettings.leafBones = leafBonesOption(line);
     const auto application = ensureCoreApplication();  // the commands translate their texts
 
     const std::optional<std::string> statsPath = line.value("--stats");
@@ -52,7 +55,7 @@ int runRecipe(const std::vector<std::string>& arguments) {
     std::printf("%d step%s, %d part%s\n", steps, steps == 1 ? "" : "s", document.partCount(),
                 document.partCount() == 1 ? "" : "s");
     if (out)
-        writeDocumentOutput(document, *out);
+        writeDocumentOutput(document, *out, exportSettings);
     return 0;
 }
 

@@ -20,7 +20,7 @@ const char* kUsage = R"(usage: rigmesh COMMAND [ARGS]
 
 commands:
   build SKETCH [-o OUT.glb|.gltf|.fbx|.dae|.obj|.ply|.off] [--max-influences N]
-               [--leaf-bones] [--subdivide N] [--decimate FACES]
+               [--no-leaf-bones] [--subdivide N] [--decimate FACES]
                [--pose-demo] [--rig FILE.json] [--stats FILE.json]
                [--debug-svg FILE.svg] [--edge-length L] [--no-smoothing] [--plain-dp]
       Turns a sketched silhouette (.json or .svg) into a rigged part: a closed
@@ -30,10 +30,13 @@ commands:
       .ply is coloured by each vertex's dominant bone. --max-influences N keeps
       at most N weights per vertex (default 4; 0 = all the format allows;
       glTF keeps at most 4). Each bone node's +Y axis runs along its bone, as
-      Blender expects; --leaf-bones adds an end bone `<bone>_end` at each leaf
-      bone's tail (like Blender's "Add Leaf Bones"), so that every importer
-      also knows the leaves' lengths; it points back along its leaf, so that
-      Blender shows it inside the limb. --subdivide N (0-4) refines the written
+      Blender expects. Each leaf bone gets an end bone `<bone>_end` at its
+      tail (like Blender's FBX "Add Leaf Bones", on by default there too), so
+      that every importer also knows the leaves' lengths (Blender's glTF and
+      FBX importers otherwise give a leaf its parent's length); it points back
+      along its leaf, so that Blender shows it inside the limb.
+      --no-leaf-bones leaves them out (--leaf-bones, the default, is
+      accepted). --subdivide N (0-4) refines the written
       surface by N rounds of Loop subdivision, --decimate FACES coarsens it
       to at most FACES triangles (quadric error, every kept vertex an
       original one); skin weights are carried, the rig is unchanged, and
@@ -42,12 +45,12 @@ commands:
       bones and weights as JSON; --plain-dp uses plain Douglas-Peucker
       instead of the paper's CDP.
   run RECIPE.json [-o OUT.rigmesh|.glb|.gltf|.fbx|.dae|.obj] [--stats FILE.json]
-               [--compare-global]
+               [--compare-global] [--no-leaf-bones]
       Replays a recipe (a JSON list of the studio's commands: sketch, merge,
       pose, key, ...; see resources/recipes/camel.json) on a new document,
       prints one line per step and writes the document: .rigmesh natively,
       the other formats as for build: one skinned mesh per part, each with
-      its clip. A bad step stops with "step N (command): reason". --stats
+      its clip, with end bones unless --no-leaf-bones. A bad step stops with "step N (command): reason". --stats
       writes each step's time and, for each merge, the vertices and bones of
       the part and of the local re-skin and its times; --compare-global also
       solves the global re-skin and reports its time and the 90th percentile
@@ -57,7 +60,7 @@ commands:
       and writes its parts as a document. The studio and `run` read imports
       through this command in a separate process with time and memory
       limits, so a broken file cannot take them down.
-  rig MESH -o OUT.rigmesh|.glb|.gltf|.fbx|.dae [--max-influences N] [--leaf-bones]
+  rig MESH -o OUT.rigmesh|.glb|.gltf|.fbx|.dae [--max-influences N] [--no-leaf-bones]
                [--separately] [--debug-proxy PROXY.obj]
       Reads a mesh (.obj, .ply, .off, .stl, .glb, .fbx, ... as import does)
       and rigs its parts without a skeleton as one figure (--separately:
@@ -70,7 +73,7 @@ commands:
       writes the surface the rig was computed on. What the rig worked
       around is listed. Writes the document or an export as for run.
   export DOC.rigmesh -o OUT.glb|.gltf|.fbx|.dae|.obj [--max-influences N]
-               [--current-pose | --pose-as-key] [--no-animation] [--hidden] [--leaf-bones]
+               [--current-pose | --pose-as-key] [--no-animation] [--hidden] [--no-leaf-bones]
                [--subdivide N] [--decimate FACES] [--linear-blend | --dual-quaternion]
       Converts a saved document as the studio's File > Export does: every
       visible part (--hidden: every part) at its placement, each its own
@@ -83,7 +86,7 @@ commands:
       default), as glTF viewers and Blender deform (its Armature's Preserve
       Volume off), or with --dual-quaternion, which an .fbx's skin also
       records (SkinningType, which Maya reads).
-      --max-influences, --leaf-bones, --subdivide and --decimate as for build. A bad document exits 1 with the reason.
+      --max-influences, --no-leaf-bones, --subdivide and --decimate as for build. A bad document exits 1 with the reason.
   example
       Builds the embedded example sketch into a rigged part and prints its figures.
   version

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "CliRunner.h"
 
@@ -163,7 +164,10 @@ TEST(CliExport, LinearBlendByDefaultDualQuaternionsWhenAsked) {
 
 TEST(CliExport, DetailLevelsReachTheExportAndBadOnesAreRefused) {
     const fs::path plain = scratch("plain.glb"), finer = scratch("finer.glb");
-    ASSERT_EQ(runCli("export " + quoted(savedDocument()) + " -o " + quoted(plain)).exitCode, 0);
+    ASSERT_EQ(
+        runCli("export " + quoted(savedDocument()) + " -o " + quoted(plain) + " --no-leaf-bones")
+            .exitCode,
+        0);
     const auto result = runCli("export " + quoted(savedDocument()) + " -o " + quoted(finer) +
                                " --subdivide 1 --leaf-bones");
     ASSERT_EQ(result.exitCode, 0) << result.err;
@@ -182,6 +186,78 @@ TEST(CliExport, DetailLevelsReachTheExportAndBadOnesAreRefused) {
         EXPECT_EQ(bad.exitCode, 1) << option;
         EXPECT_NE(bad.err.find("must be a whole number"), std::string::npos) << bad.err;
     }
+}
+
+// The names of a glb's nodes that end in "_end" (our end bones, ExportRig.h
+// endBoneOf), each checked to be a joint of a skin and the child of the bone
+// it is named after.
+std::vector<std::string> endBones(const json& gltf) {
+    std::vector<std::string> names;
+    for (std::size_t n = 0; n < gltf["nodes"].size(); ++n) {
+        const std::string name = gltf["nodes"][n].value("name", "");
+        if (name.size() < 4 || name.compare(name.size() - 4, 4, "_end") != 0)
+            continue;
+        names.push_back(name);
+        bool under = false;
+        for (const json& node : gltf["nodes"])
+            for (const json& child : node.value("children", json::array()))
+                under = under || (child.get<std::size_t>() == n &&
+                                  node.value("name", "") == name.substr(0, name.size() - 4));
+        EXPECT_TRUE(under) << name << " is not under its leaf";
+        bool joint = false;
+        for (const json& skin : gltf.value("skins", json::array()))
+            for (const json& j : skin["joints"])
+                joint = joint || j.get<std::size_t>() == n;
+        EXPECT_TRUE(joint) << name << " is no joint";
+    }
+    return names;
+}
+
+TEST(CliExport, EndBonesByDefaultAndNoLeafBonesLeavesThemOut) {
+    // Blender's glTF and FBX importers give a leaf without an end bone its
+    // parent's length (docs/EXCHANGE.md, "Leaf bones in Blender"), so every
+    // command that writes a rigged file adds them unless told not to; the
+    // tube has leaves.
+    const fs::path byDefault = scratch("ends_default.glb"), asked = scratch("ends_asked.glb"),
+                   without = scratch("ends_without.glb");
+    const std::string document = quoted(savedDocument());
+    ASSERT_EQ(runCli("export " + document + " -o " + quoted(byDefault)).exitCode, 0);
+    ASSERT_EQ(runCli("export " + document + " -o " + quoted(asked) + " --leaf-bones").exitCode, 0);
+    ASSERT_EQ(runCli("export " + document + " -o " + quoted(without) + " --no-leaf-bones").exitCode,
+              0);
+    const std::vector<std::string> ends = endBones(glbJson(byDefault));
+    EXPECT_FALSE(ends.empty());
+    EXPECT_EQ(endBones(glbJson(asked)), ends);
+    EXPECT_TRUE(endBones(glbJson(without)).empty());
+    EXPECT_EQ(glbJson(without)["nodes"].size() + ends.size(), glbJson(byDefault)["nodes"].size());
+
+    const auto both = runCli("export " + document + " -o " + quoted(scratch("ends_both.glb")) +
+                             " --leaf-bones --no-leaf-bones");
+    EXPECT_EQ(both.exitCode, 1);
+    EXPECT_NE(both.err.find("rigmesh: choose one: --leaf-bones or --no-leaf-bones"),
+              std::string::npos)
+        << both.err;
+
+    // build and run write them too, and leave them out when told.
+    const std::string tubePath = std::string(RIGMESH_SHARED_SKETCHES) + "/tube.json";
+    const std::string tube = quoted(fs::path(tubePath));
+    const fs::path built = scratch("ends_build.glb"), builtWithout = scratch("ends_build_no.glb");
+    ASSERT_EQ(runCli("build " + tube + " -o " + quoted(built)).exitCode, 0);
+    ASSERT_EQ(runCli("build " + tube + " -o " + quoted(builtWithout) + " --no-leaf-bones").exitCode,
+              0);
+    EXPECT_FALSE(endBones(glbJson(built)).empty());
+    EXPECT_TRUE(endBones(glbJson(builtWithout)).empty());
+    const fs::path recipe = scratch("ends_recipe.json"), ran = scratch("ends_run.glb"),
+                   ranWithout = scratch("ends_run_no.glb");
+    writeFile(recipe, R"({"format": "rigmesh-recipe", "version": 1, "steps": [
+        {"command": "sketch", "stroke": ")" +
+                          tubePath + R"(", "name": "tube"}]})");
+    ASSERT_EQ(runCli("run " + quoted(recipe) + " -o " + quoted(ran)).exitCode, 0);
+    ASSERT_EQ(
+        runCli("run " + quoted(recipe) + " -o " + quoted(ranWithout) + " --no-leaf-bones").exitCode,
+        0);
+    EXPECT_EQ(endBones(glbJson(ran)).size(), endBones(glbJson(built)).size());
+    EXPECT_TRUE(endBones(glbJson(ranWithout)).empty());
 }
 
 void expectBadDocument(const std::string& bytes, const std::string& reason) {

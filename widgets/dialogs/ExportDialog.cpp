@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 #include <QStandardItemModel>
 
@@ -28,6 +29,10 @@ constexpr Format kFormats[] = {
     {"dae", QT_TRANSLATE_NOOP("rigmesh::widgets::ExportDialog", "COLLADA (.dae)")},
     {"obj",
      QT_TRANSLATE_NOOP("rigmesh::widgets::ExportDialog", "Wavefront OBJ, static mesh (.obj)")}};
+
+// The last choice of "Add leaf bones", kept in QSettings; on unless unticked
+// (docs/EXCHANGE.md, "Leaf bones in Blender").
+const QString kLeafBonesKey = QStringLiteral("export/leafBones");
 
 }  // namespace
 
@@ -61,7 +66,8 @@ ExportDialog::ExportDialog(const QString& suggestedPath, SkinningMethod viewSkin
     leafBones_ = new QCheckBox(tr("Add leaf bones (an end bone at each leaf's tail)"), this);
     leafBones_->setToolTip(
         tr("Like Blender's FBX option: importers then also know how long "
-           "each leaf bone is"));
+           "each leaf bone is (without, Blender gives a leaf its parent's length)"));
+    leafBones_->setChecked(QSettings().value(kLeafBonesKey, true).toBool());
     subdivide_ = new QSpinBox(this);
     subdivide_->setRange(0, 4);
     subdivide_->setSpecialValueText(tr("none"));
@@ -92,6 +98,8 @@ ExportDialog::ExportDialog(const QString& suggestedPath, SkinningMethod viewSkin
     buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
     form->addRow(buttons);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(this, &QDialog::accepted, this,
+            [this] { QSettings().setValue(kLeafBonesKey, leafBones_->isChecked()); });
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(browse, &QPushButton::clicked, this, &ExportDialog::browse);
     connect(format_, &QComboBox::currentIndexChanged, this, &ExportDialog::formatChanged);

@@ -2,7 +2,8 @@
 // COLLADA, OBJ) and the options the formats offer: influences per vertex,
 // subdivision and decimation, the pose (rest, the current pose as the rest
 // shape, or the current pose as one key), whether to write the animation,
-// and leaf bones.
+// and leaf bones (on unless unticked; the choice is remembered when the
+// dialog is accepted).
 // The file gets the view's skinning (View > Dual Quaternion Skinning) where
 // the format can carry it: baked poses and FBX's skin deformers. One line
 // says when what the file's importers show differs from the view: glTF and

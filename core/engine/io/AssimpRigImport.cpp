@@ -310,7 +310,7 @@ std::string importRig(const aiScene& scene, const std::vector<SkinnedMesh>& grou
         tailBones.push_back(t);
     }
     const double size = diagonal(part.mesh.vertices);
-    const BoneTailsResult tails = guessBoneTails(tailBones, part.mesh.vertices, dominant, size);
+    const BoneTailsResult tails = guessBoneTails(tailBones, part.mesh, dominant, size);
 
     // Joints: a connected bone's head is its parent's tail joint; the heads of
     // a parent's disconnected children at one place share a joint attached

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
+
+#include "autorig/SurfaceProbe.h"
 
 namespace rigmesh {
 namespace {
@@ -18,6 +21,11 @@ constexpr double kAxisShare = 0.75;
 // Where along its line a bone's led vertices end: this quantile of their
 // distances along it.
 constexpr double kVertexReach = 0.9;
+// How far inside a guessed tail that left the surface is put back (times the
+// size): as io/ExportRig's kPullInside, ten times the step
+// check_tails_inside_in_blender.py takes past a hit, far below what a rigger
+// sees.
+constexpr double kPullInside = 1e-4;
 
 Vec3 signedAxis(const Eigen::Matrix3d& axes, int axis) {
     const Vec3 column = axes.col(axis / 2);
@@ -92,11 +100,28 @@ std::optional<Vec3> towardLedVertices(int b, const Vec3& head, const std::vector
     return offset.normalized();
 }
 
+// `tail`, or, when it lies outside `surface` and `head` inside, the point
+// kPullInside of the size before where the bone leaves the surface (at most
+// halfway back to the head; that point if it is not inside, the crossing
+// itself).
+Vec3 keptInside(const Vec3& head, const Vec3& tail, const SurfaceProbe& surface, double size) {
+    if (surface.inside(tail) || !surface.inside(head))
+        return tail;
+    // Inside, within 1e-9 of the bone's length of the surface.
+    const Vec3 leaves = surface.entry(tail, head);
+    const double reach = (leaves - head).norm();
+    const Vec3 pulled =
+        head + std::max(reach - kPullInside * size, 0.5 * reach) * (tail - head).normalized();
+    return surface.inside(pulled) ? pulled : leaves;
+}
+
 }  // namespace
 
-BoneTailsResult guessBoneTails(const std::vector<TailBone>& bones,
-                               const std::vector<Vec3>& vertices,
+BoneTailsResult guessBoneTails(const std::vector<TailBone>& bones, const TriMesh& mesh,
                                const std::vector<int>& dominantBone, double size) {
+    const std::vector<Vec3>& vertices = mesh.vertices;
+    // Built on the first guess that needs it (an AABB tree of the faces).
+    std::unique_ptr<SurfaceProbe> surface;
     const double tolerance = kSamePlace * size;
     const int n = static_cast<int>(bones.size());
     std::vector<std::vector<int>> children(bones.size());
@@ -167,6 +192,13 @@ BoneTailsResult guessBoneTails(const std::vector<TailBone>& bones,
             if (length <= tolerance)
                 length = 0.1 * size;
             tail = bone.head + length * direction;
+            if (!mesh.faces.empty()) {
+                if (!surface)
+                    surface = std::make_unique<SurfaceProbe>(mesh);
+                if (const Vec3 inside = keptInside(bone.head, *tail, *surface, size);
+                    (inside - bone.head).norm() > tolerance)
+                    tail = inside;
+            }
         }
         result.tails[static_cast<std::size_t>(b)] = *tail;
         for (int c : children[static_cast<std::size_t>(b)]) {

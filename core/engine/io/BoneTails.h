@@ -24,7 +24,12 @@
 //     vertices it leads reach along that line (90th percentile), so the
 //     bone lies inside its limb; failing that, as far as its nearest
 //     child, its parent's length (Blender's guess for a leaf), or a tenth of
-//     the mesh's size.
+//     the mesh's size. A guess that leaves the surface (the reach of a
+//     tapering or curving limb's vertices, measured along a straight bone)
+//     while its head is inside is pulled back along the bone to where it
+//     leaves, and 1e-4 of the size further in, so that importers such as
+//     Blender show it inside by ray-cast parity as our own tails are
+//     (docs/EXCHANGE.md, "Leaf bones in Blender").
 // A guessed tail is never on the head: a bone the file gives no length (a
 // glTF leaf, a child at its parent's head) is kept with a guessed one, since
 // Blender cannot hold zero-length bones either.
@@ -38,6 +43,7 @@
 #include <Eigen/Geometry>
 
 #include "base/Types.h"
+#include "mesh/TriMesh.h"
 
 namespace rigmesh {
 
@@ -58,10 +64,11 @@ struct BoneTailsResult {
     int boneAxis = -1;
 };
 
-// `vertices` with `dominantBone` (per vertex, the index of the bone leading
-// it, -1 for none); `size` the mesh's (or skeleton's) diagonal.
-BoneTailsResult guessBoneTails(const std::vector<TailBone>& bones,
-                               const std::vector<Vec3>& vertices,
+// `mesh`'s vertices with `dominantBone` (per vertex, the index of the bone
+// leading it, -1 for none); its faces, if any, are the surface guesses stay
+// inside (inside by generalized winding number, autorig/SurfaceProbe);
+// `size` the mesh's (or skeleton's) diagonal.
+BoneTailsResult guessBoneTails(const std::vector<TailBone>& bones, const TriMesh& mesh,
                                const std::vector<int>& dominantBone, double size);
 
 }  // namespace rigmesh

@@ -1,8 +1,11 @@
 // Tails and connections of imported bones (io/BoneTails.h): from the file's
 // flags and stated tails, the file's bone axis and children, or the
-// vertices each bone leads.
+// vertices each bone leads, a guess kept inside the surface.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "autorig/JointsInside.h"
 #include "io/BoneTails.h"
 
 namespace rigmesh {
@@ -54,7 +57,8 @@ TEST(BoneTails, ALeafFollowsTheVerticesItLeads) {
         vertices.push_back(Vec3(0.05, 1.0 + 0.05 * k, 0));
         dominant.push_back(1);
     }
-    const BoneTailsResult result = guessBoneTails(blenderTorso(), vertices, dominant, 2.0);
+    const BoneTailsResult result =
+        guessBoneTails(blenderTorso(), TriMesh{vertices, {}}, dominant, 2.0);
     // Along the file's axis (+Y of the neck) to the 90th percentile of reach.
     EXPECT_NEAR(result.tails[1].y(), 1.45, 1e-9);
     EXPECT_NEAR(result.tails[1].x(), 0.0, 1e-12);
@@ -103,6 +107,58 @@ TEST(BoneTails, NoTailIsEverOnTheHead) {
     for (std::size_t b = 0; b < bones.size(); ++b)
         EXPECT_GT((result.tails[b] - bones[b].head).norm(), 1e-3) << b;
     EXPECT_FALSE(result.connected[1]);  // it hangs at its parent's head
+}
+
+// A closed box (outward faces) around the segment from `from` along `axis`
+// (unit) `length` long, `halfWidth` each side, its sides along `side` and
+// axis x side.
+TriMesh boxAround(const Vec3& from, const Vec3& axis, const Vec3& side, double length,
+                  double halfWidth) {
+    const Vec3 third = axis.cross(side);
+    TriMesh box;
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i)  // corner i + 2j + 4k
+                box.vertices.push_back(from + i * length * axis + (2 * j - 1) * halfWidth * side +
+                                       (2 * k - 1) * halfWidth * third);
+    box.faces = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
+                 {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
+    return box;
+}
+
+TEST(BoneTails, AGuessedTailStaysInsideTheSurface) {
+    // The neck's limb leans 45 degrees off the neck's +Y (a limb the file's
+    // bone does not follow, as Testwuson's leaves): the reach of the
+    // vertices it leads, measured along +Y, ends far outside the limb.
+    const Vec3 lean = Vec3(1, 1, 0).normalized();
+    const TriMesh limb =
+        boxAround(Vec3(0, 0.9, 0), lean, Vec3(-1, 1, 0).normalized(), std::sqrt(2.0) * 0.8, 0.15);
+    const std::vector<int> dominant(limb.vertices.size(), 1);
+    const double size = 2.0;
+    ASSERT_GT(windingNumber(limb, blenderTorso()[1].head), 0.5);  // the head is inside
+
+    const BoneTailsResult guessed =
+        guessBoneTails(blenderTorso(), TriMesh{limb.vertices, {}}, dominant, size);
+    EXPECT_NEAR(guessed.tails[1].y(), 1.7 + 0.15 / std::sqrt(2.0), 1e-9);  // a far corner
+    EXPECT_LT(windingNumber(limb, guessed.tails[1]), 0.5);  // without the surface: outside
+
+    const BoneTailsResult kept = guessBoneTails(blenderTorso(), limb, dominant, size);
+    const Vec3 tail = kept.tails[1];
+    EXPECT_GT(windingNumber(limb, tail), 0.5);
+    // Along the bone, pulled back to where the +Y line leaves the leaning
+    // box (y = 0.9 + 0.15 sqrt 2), 1e-4 of the size inside.
+    EXPECT_NEAR(tail.x(), 0.0, 1e-12);
+    EXPECT_NEAR(tail.z(), 0.0, 1e-12);
+    const double leaves = 0.9 + 0.15 * std::sqrt(2.0);
+    EXPECT_LT(tail.y(), leaves);
+    EXPECT_NEAR(tail.y(), leaves - 1e-4 * size, 1e-6 * size);
+    // Guesses already inside and the tails the file gives stay as they were.
+    for (int b : {0, 2, 3, 4, 5})
+        EXPECT_LE(
+            (kept.tails[static_cast<std::size_t>(b)] - guessed.tails[static_cast<std::size_t>(b)])
+                .norm(),
+            1e-12)
+            << b;
 }
 
 }  // namespace
