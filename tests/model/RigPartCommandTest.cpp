@@ -169,5 +169,30 @@ TEST(RigPartOpenMesh, ADocumentWithARiggedOpenMeshOpensAgainUnchanged) {
     EXPECT_TRUE(loaded->part(id).part->surfaceFromFile);
 }
 
+// Several imported meshes rigged as one figure (HUMAN.blend of Debian's
+// assimp-testmodels: an open body and a second mesh): the joined part keeps
+// the flag that its surface is the file's, so the saved document opens.
+TEST(RigPartOpenMesh, SeveralOpenMeshesRiggedAsOneOpenAgainUnchanged) {
+    QTemporaryDir folder;
+    ASSERT_TRUE(folder.isValid());
+    Document document;
+    auto import = ImportPartsCommand::create(
+        document, QStringLiteral("/usr/share/assimp/models/BLEND/HUMAN.blend"));
+    const std::vector<PartId> ids = import->partIds();
+    ASSERT_GE(ids.size(), 2u);
+    document.undoStack()->push(import.release());
+    document.undoStack()->push(RigPartCommand::create(document, ids).release());
+    const Part& rigged = *document.part(ids.front()).part;
+    ASSERT_GT(rigged.skeleton.boneCount(), 0);
+    ASSERT_FALSE(rigged.validateSolid().empty()) << "the body should stay open";
+
+    const QString path = folder.filePath(QStringLiteral("human.rigmesh"));
+    DocumentFile::save(document, path);
+    std::unique_ptr<Document> loaded;
+    ASSERT_NO_THROW(loaded = DocumentFile::load(path));
+    EXPECT_EQ(bytesOf(*loaded), bytesOf(document));
+    EXPECT_TRUE(loaded->part(ids.front()).part->surfaceFromFile);
+}
+
 }  // namespace
 }  // namespace rigmesh::model

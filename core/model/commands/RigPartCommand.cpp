@@ -11,10 +11,14 @@ namespace rigmesh::model {
 
 namespace {
 
-// The parts' meshes in the first one's frame, one after another.
+// The parts' meshes in the first one's frame, one after another. Their
+// surface is a file's, maybe open, if any one's is (Part::surfaceFromFile).
 Part joined(const std::vector<RigPartCommand::Source>& parts) {
     Part part;
     part.name = parts.front().part->name;
+    part.surfaceFromFile = std::any_of(
+        parts.begin(), parts.end(),
+        [](const RigPartCommand::Source& source) { return source.part->surfaceFromFile; });
     const Placement& frame = parts.front().placement;
     const Eigen::Quaterniond toFrame = frame.rotation.conjugate();
     for (const RigPartCommand::Source& source : parts) {
