@@ -9,10 +9,11 @@ usage: blender -b --factory-startup --python-exit-code 1 \
 
 EXPORT is a .glb, .gltf, .fbx or .dae written by `rigmesh build`, RIG_JSON
 its `--rig` file. A leaf bone's length reaches Blender only through an end
-bone (`--leaf-bones`, like Blender's own FBX "Add Leaf Bones") or, in
+bone (our exports' default, like Blender's own FBX "Add Leaf Bones") or, in
 COLLADA, through Blender's tip extras, which we always write; without them
-Blender's glTF and FBX importers guess it (the parent's length), so leaf
-lengths are checked for .dae always and for the others with --leaf-bones.
+(`rigmesh build --no-leaf-bones`) Blender's glTF and FBX importers guess it
+(the parent's length), so leaf lengths are checked for .dae always and for
+the others with --leaf-bones (say so for a file with end bones).
 Prints one line per check; exits 1 if any failed (2 on bad arguments).
 """
 

@@ -94,8 +94,8 @@ def mesh_world_positions(obj, mesh):
 def check_bones(report, armature, rig, names, tolerance):
     """Count, names, parents and heads (world space) against our rig.
 
-    With --leaf-bones our exporter adds an end bone `<bone>_end` at the tail
-    of every leaf bone (io/ExportRig.h). Such tips are allowed, and checked:
+    Unless told --no-leaf-bones our exporter adds an end bone `<bone>_end`
+    at the tail of every leaf bone (io/ExportRig.h). Such tips are allowed, and checked:
     child of that leaf bone, head at its tail."""
     bones = armature.data.bones
     ours = rig["bones"]

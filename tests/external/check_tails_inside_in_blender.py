@@ -1,7 +1,8 @@
 """Imports one RigMesh export into an empty Blender scene with the importer's
 default options and checks that every bone's tail, as Blender placed it,
 lies inside the imported meshes: what a rigger sees when a bone pokes out of
-its limb. End bones (`--leaf-bones`) are bones in Blender and are checked too.
+its limb. End bones (written by default; `--no-leaf-bones` leaves them out)
+are bones in Blender and are checked too.
 
 Inside by ray-cast parity: a point is inside when rays from it cross the
 surface an odd number of times; three rays in fixed directions vote, so that
