@@ -14,6 +14,7 @@
 
 #include <QCoreApplication>
 
+#include "CamelLastMerge.h"
 #include "cut/BoneEdits.h"
 #include "cut/CutPart.h"
 #include "merge/MergeParts.h"
@@ -26,51 +27,10 @@
 namespace rigmesh::bench {
 namespace {
 
-struct LastMerge {
-    Part body;  // after the legs and the neck
-    Part head;  // in the body's frame
-    MergeRequest request;
-};
+using LastMerge = testsupport::CamelLastMerge;
 
 const LastMerge& lastMerge() {
-    static const LastMerge merge = [] {
-        const std::string path = std::string(RIGMESH_RESOURCES) + "/recipes/camel.json";
-        const nlohmann::json recipe = model::readRecipeFile(path);
-        model::Document document;
-        model::RecipeRunner runner(document, std::string(RIGMESH_RESOURCES) + "/recipes");
-        const nlohmann::json& steps = model::recipeSteps(recipe);
-        int number = 0;
-        nlohmann::json lastStep;
-        for (const nlohmann::json& step : steps) {
-            if (step["command"] == "merge" && step["part"] == "head") {
-                lastStep = step;
-                break;
-            }
-            runner.apply(step, ++number);
-        }
-        LastMerge m;
-        const model::PartNode& body = document.parts()[0];
-        m.body = *body.part;
-        const model::PartNode* head = nullptr;
-        for (const model::PartNode& node : document.parts())
-            if (node.name == QStringLiteral("head"))
-                head = &node;
-        m.head = *head->part;
-        const Vec3 offset = head->placement.translation - body.placement.translation;
-        for (Vec3& p : m.head.mesh.vertices)
-            p += offset;
-        for (const Joint& joint : std::vector<Joint>(m.head.skeleton.joints()))
-            m.head.skeleton.setJointPosition(joint.id, joint.position + offset);
-        // The recipe's joints: the head's back joint onto the neck's top one.
-        m.request.join.mode = MergeMode::Snap;
-        m.request.join.draggedJoint =
-            lastStep["joint"].is_number() ? lastStep["joint"].get<JointId>() : 1;
-        m.request.join.targetJoint =
-            lastStep["target"].is_number() ? lastStep["target"].get<JointId>() : 11;
-        m.request.edgeLength = body.options.targetEdgeLength;
-        return m;
-    }();
-    return merge;
+    return testsupport::lastCamelMerge();
 }
 
 void unionAndSmoothing(benchmark::State& state) {
@@ -110,11 +70,9 @@ void wholeMerge(benchmark::State& state, Reskin reskin) {
     timeMerges(state, reskin, false);
 }
 
-// The finished camel (about 6k vertices): what cut and bone edits work on.
+// The finished camel: what cut and bone edits work on.
 const Part& mergedCamel() {
-    static const Part camel =
-        mergeParts(lastMerge().body, lastMerge().head, lastMerge().request).part;
-    return camel;
+    return testsupport::finishedCamel();
 }
 
 // Paper 3.1: across the body between the legs (it crosses once).

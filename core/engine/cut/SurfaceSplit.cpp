@@ -3,10 +3,11 @@
 #include <CGAL/Polygon_mesh_processing/clip.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
+#include <algorithm>
+#include <cstring>
 #include <optional>
-#include <unordered_map>
 
-#include "mesh/CgalSurfaceMesh.h"
+#include "cut/CutBand.h"
 #include "mesh/MeshChecks.h"
 
 namespace rigmesh {
@@ -68,6 +69,44 @@ class EdgeCrossings {
     std::vector<Crossing> crossings_;
 };
 
+// The input's vertices by exact position (the lowest index for each): an
+// unchanged vertex of a piece is the input vertex at its position. Open
+// addressing over the bits of the position: a node-based map's allocation
+// per vertex was a fifteenth of a cut (perf on bench_merge).
+class InputPositions {
+  public:
+    explicit InputPositions(const std::vector<Vec3>& points) : points_(points) {
+        std::size_t size = 16;
+        while (size < 2 * points.size())
+            size <<= 1;
+        slots_.assign(size, -1);
+        mask_ = size - 1;
+        for (int v = 0; v < static_cast<int>(points.size()); ++v) {
+            std::size_t i = PointKeyHash{}(keyOf(points[v])) & mask_;
+            while (slots_[i] >= 0 && !sameBits(points[slots_[i]], points[v]))
+                i = (i + 1) & mask_;
+            if (slots_[i] < 0)
+                slots_[i] = v;
+        }
+    }
+
+    // The input vertex at exactly `p`; -1 if there is none.
+    int find(const Vec3& p) const {
+        for (std::size_t i = PointKeyHash{}(keyOf(p)) & mask_; slots_[i] >= 0; i = (i + 1) & mask_)
+            if (sameBits(points_[slots_[i]], p))
+                return slots_[i];
+        return -1;
+    }
+
+  private:
+    static bool sameBits(const Vec3& a, const Vec3& b) {
+        return std::memcmp(a.data(), b.data(), 3 * sizeof(double)) == 0;
+    }
+    const std::vector<Vec3>& points_;
+    std::vector<int> slots_;
+    std::size_t mask_ = 0;
+};
+
 // The side of the cut surface a piece lies on, judged by the vertices next
 // to its holes: a swept surface ends where the stroke was drawn, and beyond
 // its ends side() extends the end segments, so only near the cut is the
@@ -78,27 +117,56 @@ int sideNearHoles(const MeshPiece& piece, const CutSurface& cut) {
     for (const std::vector<int>& loop : piece.holes)
         for (int v : loop)
             onHole[v] = 1;
-    double sum = 0.0, farthest = 0.0;
+    double sum = 0.0;
     for (const auto& face : piece.mesh.faces) {
-        const bool touches = onHole[face[0]] || onHole[face[1]] || onHole[face[2]];
-        for (int v : face) {
-            const double d = cut.side(piece.mesh.vertices[v]);
-            if (touches && !onHole[v])
-                sum += d;
-            if (std::abs(d) > std::abs(farthest))
-                farthest = d;
-        }
+        if (!onHole[face[0]] && !onHole[face[1]] && !onHole[face[2]])
+            continue;
+        for (int v : face)
+            if (!onHole[v])
+                sum += cut.side(piece.mesh.vertices[v]);
     }
-    if (sum == 0.0)
-        sum = farthest;  // no vertex off the holes beside them: a sliver
+    if (sum == 0.0) {
+        // No vertex off the holes beside them (a sliver): the farthest
+        // vertex's side.
+        double farthest = 0.0;
+        for (const auto& face : piece.mesh.faces)
+            for (int v : face) {
+                const double d = cut.side(piece.mesh.vertices[v]);
+                if (std::abs(d) > std::abs(farthest))
+                    farthest = d;
+            }
+        sum = farthest;
+    }
     return sum >= 0.0 ? 1 : -1;
 }
 
-}  // namespace
+// What CGAL's PMP::split(tm, plane) corefines tm with (CGAL 5.5,
+// Polygon_mesh_processing/clip.h): the plane clipped to tm's box, enlarged
+// by 1 (or 1% of its size) each way; for a swept cut, the strip. nullopt:
+// the plane misses the box (PMP::split leaves tm as it is).
+std::optional<SurfaceMesh> splitterOf(const TriMesh& mesh, const SurfaceMesh& surface,
+                                      const CutSurface& cut) {
+    if (!cut.isPlane())
+        return toSurfaceMesh(cut.strip(boundingBox(mesh)), MessageId::CutSurfaceNotManifold);
+    const Vec3& n = cut.planeNormal();
+    const Kernel::Plane_3 plane(n.x(), n.y(), n.z(), -n.dot(cut.planePoint()));
+    CGAL::Bbox_3 box = PMP::bbox(surface);
+    const double xd = std::max(1., 0.01 * (box.xmax() - box.xmin()));
+    const double yd = std::max(1., 0.01 * (box.ymax() - box.ymin()));
+    const double zd = std::max(1., 0.01 * (box.zmax() - box.zmin()));
+    box = CGAL::Bbox_3(box.xmin() - xd, box.ymin() - yd, box.zmin() - zd, box.xmax() + xd,
+                       box.ymax() + yd, box.zmax() + zd);
+    SurfaceMesh splitter;
+    if (PMP::internal::clip_to_bbox(plane, box, splitter, CGAL::parameters::default_values()) !=
+        CGAL::ON_ORIENTED_BOUNDARY)
+        return std::nullopt;
+    return splitter;
+}
 
-std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut) {
-    SurfaceMesh surface =
-        toSurfaceMesh(mesh, MessageId::PartSurfaceNotManifold, MessageId::PartSurfaceHasHole);
+// The whole surface split by CGAL, its pieces copied out by
+// split_connected_components.
+std::vector<SplitComponent> splitWhole(SurfaceMesh& surface, const TriMesh& mesh,
+                                       const CutSurface& cut) {
     if (cut.isPlane()) {
         const Vec3& n = cut.planeNormal();
         PMP::split(surface, Kernel::Plane_3(n.x(), n.y(), n.z(), -n.dot(cut.planePoint())));
@@ -107,38 +175,24 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut
             toSurfaceMesh(cut.strip(boundingBox(mesh)), MessageId::CutSurfaceNotManifold);
         PMP::split(surface, splitter);
     }
-    std::vector<SurfaceMesh> components;
-    PMP::split_connected_components(surface, components);
+    std::vector<SurfaceMesh> meshes;
+    PMP::split_connected_components(surface, meshes);
 
-    std::unordered_map<PointKey, int, PointKeyHash> inputVertex;
-    for (int v = mesh.vertexCount() - 1; v >= 0; --v)
-        inputVertex[keyOf(mesh.vertices[v])] = v;
-    const EdgeCrossings crossings(mesh, cut);
-
-    std::vector<MeshPiece> pieces;
-    for (const SurfaceMesh& component : components) {
-        MeshPiece piece;
+    std::vector<SplitComponent> components;
+    for (const SurfaceMesh& component : meshes) {
+        SplitComponent out;
         std::vector<int> index(
             component.number_of_vertices() + component.number_of_removed_vertices(), -1);
         for (VertexIndex v : component.vertices()) {
-            const Vec3 p = toVec(component.point(v));
-            index[v.idx()] = piece.mesh.vertexCount();
-            piece.mesh.vertices.push_back(p);
-            auto found = inputVertex.find(keyOf(p));
-            if (found != inputVertex.end()) {
-                piece.sources.push_back(VertexSource::vertex(0, found->second));
-            } else if (auto crossing = crossings.sourceOf(p)) {
-                piece.sources.push_back(*crossing);
-            } else {
-                piece.sources.push_back(SourceTriangles({&mesh}).sourceOf(p));
-            }
+            index[v.idx()] = static_cast<int>(out.points.size());
+            out.points.push_back(toVec(component.point(v)));
         }
         for (FaceIndex f : component.faces()) {
             std::array<int, 3> face{};
             int corner = 0;
             for (VertexIndex v : CGAL::vertices_around_face(component.halfedge(f), component))
                 face[corner++] = index[v.idx()];
-            piece.mesh.faces.push_back(face);
+            out.faces.push_back(face);
         }
         // Border halfedges run against the faces; a loop followed by next()
         // on the border is the order a filling patch must use.
@@ -154,8 +208,60 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut
                 loop.push_back(index[component.source(g).idx()]);
                 g = component.next(g);
             } while (g != h);
-            piece.holes.push_back(std::move(loop));
+            out.holes.push_back(std::move(loop));
         }
+        components.push_back(std::move(out));
+    }
+    return components;
+}
+
+}  // namespace
+
+std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut,
+                                      SplitMethod method, SplitReport* report) {
+    SurfaceMesh surface =
+        toSurfaceMesh(mesh, MessageId::PartSurfaceNotManifold, MessageId::PartSurfaceHasHole);
+    SplitReport local;
+    local.faces = mesh.faceCount();
+    std::vector<SplitComponent> components;
+    if (method == SplitMethod::Band) {
+        std::optional<SurfaceMesh> splitter = splitterOf(mesh, surface, cut);
+        if (splitter) {
+            BandOutcome band = splitInBand(surface, *splitter);
+            local.bandFaces = band.bandFaces;
+            if (band.components) {
+                components = std::move(*band.components);
+                local.band = true;
+            } else {
+                local.fallback = band.whyNot;
+            }
+        } else {
+            local.fallback = "the plane misses the part's box";
+        }
+    }
+    if (!local.band)
+        components = splitWhole(surface, mesh, cut);
+    if (report)
+        *report = local;
+
+    const InputPositions inputVertex(mesh.vertices);
+    const EdgeCrossings crossings(mesh, cut);
+
+    std::vector<MeshPiece> pieces;
+    for (SplitComponent& component : components) {
+        MeshPiece piece;
+        piece.mesh.vertices = std::move(component.points);
+        for (const Vec3& p : piece.mesh.vertices) {
+            if (const int found = inputVertex.find(p); found >= 0) {
+                piece.sources.push_back(VertexSource::vertex(0, found));
+            } else if (auto crossing = crossings.sourceOf(p)) {
+                piece.sources.push_back(*crossing);
+            } else {
+                piece.sources.push_back(SourceTriangles({&mesh}).sourceOf(p));
+            }
+        }
+        piece.mesh.faces = std::move(component.faces);
+        piece.holes = std::move(component.holes);
         piece.side = sideNearHoles(piece, cut);
         pieces.push_back(std::move(piece));
     }

@@ -4,6 +4,7 @@
 // vertex says where it came from.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "cut/CutSurface.h"
@@ -23,7 +24,23 @@ struct MeshPiece {
     int side = 0;
 };
 
+// Band: CGAL is given only the faces near the cut surface (cut/CutBand.h)
+// and the rest is stitched back, the same pieces bit for bit; when the band
+// does not hold, the whole surface is split. Whole: the whole surface is
+// always split (what the band is compared with in the tests).
+enum class SplitMethod { Band, Whole };
+
+// How a split went: whether the band was used, its size, and why not.
+struct SplitReport {
+    bool band = false;
+    int bandFaces = 0;
+    int faces = 0;         // of the input
+    std::string fallback;  // why the whole surface was split ("" if it was not)
+};
+
 // Throws Error when the input is not a closed manifold surface.
-std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& surface);
+std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& surface,
+                                      SplitMethod method = SplitMethod::Band,
+                                      SplitReport* report = nullptr);
 
 }  // namespace rigmesh

@@ -3,25 +3,64 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCore>
 
-#include <set>
-
-#include "mesh/MeshAdjacency.h"
+#include <algorithm>
 
 namespace rigmesh {
+
+namespace {
+
+// The rows of the system: every free vertex and its one ring (in order), and
+// the neighbours of each (sorted, each once, as mesh/MeshAdjacency's
+// vertexNeighbours gives them). Two passes over the faces instead of the
+// whole mesh's adjacency: a cut's patch is a small part of its piece.
+struct Rows {
+    std::vector<int> vertices;
+    std::vector<std::vector<int>> neighbours;  // per mesh vertex, filled for the rows only
+};
+
+Rows rowsAround(const TriMesh& mesh, const std::vector<int>& free) {
+    const int n = mesh.vertexCount();
+    std::vector<char> isFree(n, 0), isRow(n, 0);
+    for (int v : free)
+        isFree[v] = 1;
+    for (const auto& face : mesh.faces)
+        if (isFree[face[0]] || isFree[face[1]] || isFree[face[2]])
+            for (int v : face)
+                isRow[v] = 1;
+    for (int v : free)
+        isRow[v] = 1;
+    Rows rows;
+    rows.neighbours.resize(n);
+    for (const auto& face : mesh.faces)
+        for (int c = 0; c < 3; ++c)
+            if (isRow[face[c]]) {
+                rows.neighbours[face[c]].push_back(face[(c + 1) % 3]);
+                rows.neighbours[face[c]].push_back(face[(c + 2) % 3]);
+            }
+    for (int v = 0; v < n; ++v)
+        if (isRow[v]) {
+            std::vector<int>& list = rows.neighbours[v];
+            std::sort(list.begin(), list.end());
+            list.erase(std::unique(list.begin(), list.end()), list.end());
+            rows.vertices.push_back(v);
+        }
+    return rows;
+}
+
+}  // namespace
 
 bool fairValues(const TriMesh& mesh, const std::vector<int>& free, Eigen::MatrixXd& values) {
     if (free.empty())
         return true;
     const int n = mesh.vertexCount();
-    const std::vector<std::vector<int>> neighbours = vertexNeighbours(mesh);
     std::vector<int> unknown(n, -1);
     for (std::size_t i = 0; i < free.size(); ++i)
         unknown[free[i]] = static_cast<int>(i);
     // Rows: the Laplacian at every free vertex and its one ring, so the fill
     // meets the held values with matching slope.
-    std::set<int> rows(free.begin(), free.end());
-    for (int v : free)
-        rows.insert(neighbours[v].begin(), neighbours[v].end());
+    const Rows around = rowsAround(mesh, free);
+    const std::vector<int>& rows = around.vertices;
+    const std::vector<std::vector<int>>& neighbours = around.neighbours;
 
     std::vector<Eigen::Triplet<double>> triplets;
     Eigen::MatrixXd heldPart = Eigen::MatrixXd::Zero(static_cast<int>(rows.size()), values.cols());

@@ -54,21 +54,23 @@ void checkBoneLists(const std::vector<std::vector<std::pair<BoneId, double>>>& l
         return;
     }
     for (int v = 0; v < vertexCount && !problems.full(); ++v) {
-        const std::string where = "The " + what + " of vertex " + std::to_string(v);
+        // Spelled out only for a problem: a string per vertex was most of a
+        // valid part's check.
+        auto where = [&] { return "The " + what + " of vertex " + std::to_string(v); };
         double sum = 0.0;
         bool first = true;
         BoneId previous = 0;
         bool ok = true;
         for (const auto& [bone, value] : lists[v]) {
             if (!skeleton.hasBone(bone)) {
-                problems.add(where + " name bone " + std::to_string(bone) +
+                problems.add(where() + " name bone " + std::to_string(bone) +
                              ", which the skeleton does not have.");
                 ok = false;
             } else if (!first && bone <= previous) {
-                problems.add(where + " are not in bone order.");
+                problems.add(where() + " are not in bone order.");
                 ok = false;
             } else if (!std::isfinite(value) || value < 0.0 || (sumsToOne && value == 0.0)) {
-                problems.add(where + " hold a value that is not finite and positive.");
+                problems.add(where() + " hold a value that is not finite and positive.");
                 ok = false;
             }
             if (!ok)
@@ -78,7 +80,7 @@ void checkBoneLists(const std::vector<std::vector<std::pair<BoneId, double>>>& l
             sum += value;
         }
         if (ok && sumsToOne && std::abs(sum - 1.0) > kWeightSumTolerance)
-            problems.add(where + " sum to " + std::to_string(sum) + ", not 1.");
+            problems.add(where() + " sum to " + std::to_string(sum) + ", not 1.");
     }
 }
 
