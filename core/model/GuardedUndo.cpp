@@ -1,5 +1,6 @@
 #include "model/GuardedUndo.h"
 
+#include <QSignalBlocker>
 #include <algorithm>
 
 namespace rigmesh::model {
@@ -66,13 +67,27 @@ bool stackHolds(const QUndoStack& stack, const QUndoCommand* command) {
     return false;
 }
 
-// Clears the history and keeps the document's modified state.
+// Clears the history and keeps the document's modified state. For a
+// modified document without a word of "clean" in between: clear() alone
+// would announce a clean stack and resetClean() a modified one again (an
+// Autosave discards its recovery file on clean).
 void forgetHistory(Document& document) {
     QUndoStack& stack = *document.undoStack();
-    const bool modified = document.isModified();
-    stack.clear();
-    if (modified)
+    if (!document.isModified()) {
+        stack.clear();
+        return;
+    }
+    {
+        const QSignalBlocker quiet(&stack);
+        stack.clear();
         stack.resetClean();
+    }
+    // What clear() announces, but the clean state.
+    emit stack.indexChanged(0);
+    emit stack.canUndoChanged(false);
+    emit stack.undoTextChanged(QString());
+    emit stack.canRedoChanged(false);
+    emit stack.redoTextChanged(QString());
 }
 
 }  // namespace
