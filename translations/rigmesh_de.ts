@@ -2360,14 +2360,10 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::widgets::JobRunner</name>
+    <name>rigmesh::widgets::HistoryView</name>
     <message>
-        <source>Out of memory.</source>
-        <translation>Nicht genügend Arbeitsspeicher.</translation>
-    </message>
-    <message>
-        <source>Internal error: %1</source>
-        <translation>Interner Fehler: %1</translation>
+        <source>History</source>
+        <translation>Verlauf</translation>
     </message>
 </context>
 <context>
@@ -2769,6 +2765,13 @@
     <message>
         <source>&lt;b&gt;Wheel&lt;/b&gt; zooms, &lt;b&gt;Home&lt;/b&gt; frames everything&lt;br&gt;&lt;small&gt;Click to close; Help &amp;gt; Mouse Gestures shows this again&lt;/small&gt;</source>
         <translation>&lt;b&gt;Mausrad&lt;/b&gt; zoomt, &lt;b&gt;Pos1&lt;/b&gt; zeigt alles&lt;br&gt;&lt;small&gt;Zum Schließen klicken; Hilfe &amp;gt; Mausgesten zeigt dies wieder&lt;/small&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::OutlinerPanel</name>
+    <message>
+        <source>Outliner</source>
+        <translation>Gliederung</translation>
     </message>
 </context>
 <context>
@@ -3524,6 +3527,10 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
         <source>Not pasted: %1</source>
         <translation>Nicht eingefügt: %1</translation>
     </message>
+    <message>
+        <source>Delete Keys</source>
+        <translation>Schlüsselbilder löschen</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::TimelineView</name>
@@ -3539,6 +3546,10 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
         <source>Key at frame %1 (%2 s)</source>
         <translation>Schlüsselbild bei Bild %1 (%2 s)</translation>
     </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Zeitleiste</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::UndoStatus</name>
@@ -3549,6 +3560,25 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
     <message>
         <source>Redone: %1</source>
         <translation>Wiederhergestellt: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::UserAction</name>
+    <message>
+        <source>Internal error: %1</source>
+        <translation>Interner Fehler: %1</translation>
+    </message>
+    <message>
+        <source>%1: internal error (%2)</source>
+        <translation>%1: interner Fehler (%2)</translation>
+    </message>
+    <message>
+        <source>Out of memory.</source>
+        <translation>Nicht genügend Arbeitsspeicher.</translation>
+    </message>
+    <message>
+        <source>%1: out of memory</source>
+        <translation>%1: nicht genügend Arbeitsspeicher</translation>
     </message>
 </context>
 <context>

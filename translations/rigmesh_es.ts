@@ -2360,14 +2360,10 @@
     </message>
 </context>
 <context>
-    <name>rigmesh::widgets::JobRunner</name>
+    <name>rigmesh::widgets::HistoryView</name>
     <message>
-        <source>Out of memory.</source>
-        <translation>Memoria insuficiente.</translation>
-    </message>
-    <message>
-        <source>Internal error: %1</source>
-        <translation>Error interno: %1</translation>
+        <source>History</source>
+        <translation>Historial</translation>
     </message>
 </context>
 <context>
@@ -2769,6 +2765,13 @@
     <message>
         <source>&lt;b&gt;Wheel&lt;/b&gt; zooms, &lt;b&gt;Home&lt;/b&gt; frames everything&lt;br&gt;&lt;small&gt;Click to close; Help &amp;gt; Mouse Gestures shows this again&lt;/small&gt;</source>
         <translation>&lt;b&gt;Rueda&lt;/b&gt; hace zoom, &lt;b&gt;Inicio&lt;/b&gt; encuadra todo&lt;br&gt;&lt;small&gt;Haga clic para cerrar; Ayuda &amp;gt; Gestos del ratón lo vuelve a mostrar&lt;/small&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::OutlinerPanel</name>
+    <message>
+        <source>Outliner</source>
+        <translation>Listado</translation>
     </message>
 </context>
 <context>
@@ -3524,6 +3527,10 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
         <source>Not pasted: %1</source>
         <translation>No se ha pegado: %1</translation>
     </message>
+    <message>
+        <source>Delete Keys</source>
+        <translation>Eliminar claves</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::TimelineView</name>
@@ -3539,6 +3546,10 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
         <source>Key at frame %1 (%2 s)</source>
         <translation>Clave en el fotograma %1 (%2 s)</translation>
     </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Línea de tiempo</translation>
+    </message>
 </context>
 <context>
     <name>rigmesh::widgets::UndoStatus</name>
@@ -3549,6 +3560,25 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
     <message>
         <source>Redone: %1</source>
         <translation>Rehecho: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::UserAction</name>
+    <message>
+        <source>Internal error: %1</source>
+        <translation>Error interno: %1</translation>
+    </message>
+    <message>
+        <source>%1: internal error (%2)</source>
+        <translation>%1: error interno (%2)</translation>
+    </message>
+    <message>
+        <source>Out of memory.</source>
+        <translation>Memoria insuficiente.</translation>
+    </message>
+    <message>
+        <source>%1: out of memory</source>
+        <translation>%1: memoria insuficiente</translation>
     </message>
 </context>
 <context>

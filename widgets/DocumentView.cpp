@@ -5,6 +5,7 @@
 #include <exception>
 #include <optional>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "jobs/JobRunner.h"
 #include "model/ErrorText.h"
@@ -75,14 +76,23 @@ void DocumentView::showSketchBuild(const SketchPreviewBuilder::Outcome& outcome)
         return;
     }
     const SketchPreviewBuilder::Request& request = outcome.request;
-    try {
-        sketchPreview_->preview(std::make_shared<const model::SketchedPart>(
-            model::SketchedPart{request.stroke, request.name, *outcome.built, request.plane}));
-        shown_ = request;
-    } catch (const Error&) {
+    // A refused preview says nothing until release (the build says why); a
+    // failure of any other kind is said now.
+    const auto report = [this](const QString& failure) {
         sketchPreview_->revert();
         shown_.reset();
-    }
+        emit statusMessage(failure, 8000);
+    };
+    runUserAction(tr("Building %1").arg(request.name), report, [&] {
+        try {
+            sketchPreview_->preview(std::make_shared<const model::SketchedPart>(
+                model::SketchedPart{request.stroke, request.name, *outcome.built, request.plane}));
+            shown_ = request;
+        } catch (const Error&) {
+            sketchPreview_->revert();
+            shown_.reset();
+        }
+    });
 }
 
 void DocumentView::createPartFromStroke(const std::vector<Vec2>& stroke,

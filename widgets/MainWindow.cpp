@@ -21,9 +21,11 @@
 #include <tuple>
 
 #include "DocumentView.h"
+#include "HistoryView.h"
 #include "MouseHint.h"
 #include "ShortcutToolTips.h"
 #include "UndoStatus.h"
+#include "UserAction.h"
 #include "base/Error.h"
 #include "controllers/ExchangeController.h"
 #include "controllers/FilesController.h"
@@ -33,6 +35,7 @@
 #include "jobs/JobRunner.h"
 #include "jobs/JobStatus.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/commands/DeletePartCommand.h"
 #include "panels/OutlinerPanel.h"
 #include "panels/PropertiesPanel.h"
@@ -61,7 +64,9 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
       outliner_(new OutlinerPanel(this)),
       properties_(new PropertiesPanel(this)),
       weights_(new WeightsPanel(this)),
-      history_(new QUndoView(&undoGroup_, this)),
+      history_(new HistoryView(
+          &undoGroup_, [this] { return currentDocument(); },
+          [this](const QString& failure) { showStatus(failure, 8000); }, this)),
       timeline_(new TimelineDock(this)),
       tools_(new ToolRegistry(this)) {
     registerIconResources();
@@ -72,6 +77,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
     setCentralWidget(tabs_);
     connect(tabs_, &QTabWidget::currentChanged, this, &MainWindow::currentTabChanged);
     connect(tabs_, &QTabWidget::tabCloseRequested, this, &MainWindow::closeDocument);
+    connect(outliner_, &OutlinerPanel::statusMessage, this, &MainWindow::showStatus);
     connect(properties_, &PropertiesPanel::statusMessage, this, &MainWindow::showStatus);
     connect(weights_, &WeightsPanel::statusMessage, this, &MainWindow::showStatus);
     connect(timeline_, &TimelineDock::statusMessage, this, &MainWindow::showStatus);
@@ -180,11 +186,30 @@ void MainWindow::createActions() {
     add(file, tr("&Quit"), QKeySequence::Quit, &QWidget::close);
 
     auto* edit = menuBar()->addMenu(tr("&Edit"));
+    // The group's actions keep their "Undo <step>" text and enabled state;
+    // a trigger goes through model/GuardedUndo rather than QUndoGroup, so a
+    // step that throws is reported and the document is left as it was.
     QAction* undo = undoGroup_.createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("undoAction"));
     undo->setShortcut(QKeySequence::Undo);
     undo->setIcon(s->standardIcon(QStyle::SP_ArrowBack));
     QAction* redo = undoGroup_.createRedoAction(this, tr("&Redo"));
     redo->setObjectName(QStringLiteral("redoAction"));
+    // Every connection from the actions to the group: their trigger.
+    undo->disconnect(&undoGroup_);
+    redo->disconnect(&undoGroup_);
+    const auto step = [this](const QString& name, void (*move)(model::Document&)) {
+        model::Document* document = currentDocument();
+        if (!document)
+            return;
+        runUserAction(
+            name, [this](const QString& failure) { showStatus(failure, 8000); },
+            [&] { move(*document); });
+    };
+    connect(undo, &QAction::triggered, this,
+            [this, step] { step(tr("&Undo"), model::undoCommand); });
+    connect(redo, &QAction::triggered, this,
+            [this, step] { step(tr("&Redo"), model::redoCommand); });
     // Ctrl+Shift+Z everywhere, plus the platform's own redo key (Ctrl+Y on
     // some); a key listed twice would make the shortcut ambiguous.
     QList<QKeySequence> redoKeys{QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)};
@@ -570,8 +595,15 @@ void MainWindow::deleteSelection() {
         return;
     }
     const model::PartId id = document->selection().part;
-    document->clearSelection();
-    document->undoStack()->push(new model::DeletePartCommand(*document, id));
+    runUserAction(
+        tr("&Delete Part"), [this](const QString& failure) { showStatus(failure, 8000); },
+        [&] {
+            model::changeOrRestore(*document, [&] {
+                document->clearSelection();
+                model::pushCommand(*document,
+                                   std::make_unique<model::DeletePartCommand>(*document, id));
+            });
+        });
 }
 
 }  // namespace rigmesh::widgets

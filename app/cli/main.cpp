@@ -1,17 +1,15 @@
 // rigmesh: the command-line face of RigMesh Studio. It links the engine and
 // the document model only, and runs what the studio runs, headless.
 #include <cstdio>
-#include <exception>
-#include <new>
 #include <string>
 #include <vector>
 
 #include "BuildCommand.h"
+#include "CommandFailure.h"
 #include "ExportCommand.h"
 #include "ImportCommand.h"
 #include "RigCommand.h"
 #include "RunCommand.h"
-#include "base/Error.h"
 #include "model/ModelInfo.h"
 
 namespace {
@@ -123,7 +121,7 @@ int main(int argc, char** argv) {
     if (arguments.empty() || arguments[0] == "--help" || arguments[0] == "-h" ||
         arguments[0] == "help") {
         std::fputs(kUsage, arguments.empty() ? stderr : stdout);
-        return arguments.empty() ? 2 : 0;
+        return arguments.empty() ? rigmesh::cli::kExitUsage : rigmesh::cli::kExitSuccess;
     }
     const std::string command = arguments[0];
     arguments.erase(arguments.begin());
@@ -156,15 +154,8 @@ int main(int argc, char** argv) {
         }
         std::fprintf(stderr, "rigmesh: unknown command '%s' (see rigmesh --help)\n",
                      command.c_str());
-        return 2;
-    } catch (const rigmesh::Error& error) {
-        std::fprintf(stderr, "rigmesh: %s\n", error.what());
-        return 1;
-    } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "rigmesh: out of memory\n");
-        return 1;
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "rigmesh: internal error: %s\n", error.what());
-        return 3;
+        return rigmesh::cli::kExitUsage;
+    } catch (...) {
+        return rigmesh::cli::reportFailure(std::current_exception());
     }
 }

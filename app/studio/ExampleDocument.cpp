@@ -7,6 +7,7 @@
 #include "EmbeddedExamples.h"
 #include "MainWindow.h"
 #include "jobs/JobRunner.h"
+#include "model/GuardedUndo.h"
 #include "model/commands/CreatePartCommand.h"
 #include "model/commands/WeightCleanupCommand.h"
 #include "sketch/Sketch.h"
@@ -51,10 +52,9 @@ std::unique_ptr<model::Document> makeEmptyExampleDocument() {
 }
 
 void addExamplePart(model::Document& document, ExamplePart part) {
-    document.undoStack()->push(model::CreatePartCommand::fromBuilt(document, std::move(part.stroke),
-                                                                   part.name, std::move(part.built),
-                                                                   part.placement)
-                                   .release());
+    model::pushCommand(
+        document, model::CreatePartCommand::fromBuilt(document, std::move(part.stroke), part.name,
+                                                      std::move(part.built), part.placement));
     // An example is a starting point, not an edit: no history, not modified.
     document.undoStack()->clear();
     document.undoStack()->setClean();

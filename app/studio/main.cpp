@@ -13,10 +13,9 @@
 #include "CommandLineFiles.h"
 #include "ExampleDocument.h"
 #include "MainWindow.h"
-#include "base/Error.h"
+#include "UserAction.h"
 #include "controllers/FilesController.h"
 #include "jobs/JobRunner.h"
-#include "model/ErrorText.h"
 #include "preferences/StudioPreferences.h"
 #include "preferences/Translations.h"
 #include "viewport/Viewport.h"
@@ -67,15 +66,17 @@ int main(int argc, char** argv) {
     for (const QString& file : files)
         rigmesh::widgets::openFromCommandLine(window, file);
     if (files.isEmpty()) {
-        try {
+        const bool opened = rigmesh::widgets::runUserAction(
+            {},
+            [&](const QString& failure) {
+                QMessageBox::warning(
+                    &window, QCoreApplication::translate("rigmesh::studio", "RigMesh Studio"),
+                    failure);
+            },
             // Built on the worker thread: the window shows at once.
-            rigmesh::studio::openExample(window);
-        } catch (const rigmesh::Error& error) {
-            QMessageBox::warning(&window,
-                                 QCoreApplication::translate("rigmesh::studio", "RigMesh Studio"),
-                                 rigmesh::model::errorText(error));
+            [&] { rigmesh::studio::openExample(window); });
+        if (!opened)
             window.newDocument();
-        }
     }
     window.show();
     if (parser.isSet(screenshot)) {

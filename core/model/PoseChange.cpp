@@ -3,30 +3,27 @@
 #include <QCoreApplication>
 #include <memory>
 
+#include "model/GuardedUndo.h"
 #include "model/commands/KeyPoseCommand.h"
 
 namespace rigmesh::model {
 
 void pushPoseChange(Document& document, PartId id, QUndoCommand* command) {
     std::unique_ptr<QUndoCommand> owned(command);
-    QUndoStack& stack = *document.undoStack();
     if (!document.autoKey()) {
-        stack.push(owned.release());
+        pushCommand(document, std::move(owned));
         return;
     }
     const QString text = QCoreApplication::translate("rigmesh::model::PoseChange", "%1 and key")
                              .arg(command->text());
-    stack.beginMacro(text);
-    stack.push(owned.release());
-    try {
+    // A key that cannot be made takes the pose change with it: the pose
+    // change alone is not what was asked for.
+    pushMacro(document, text, [&] {
+        pushCommand(document, std::move(owned));
         // Made after the pose command ran, so it keys the new pose.
-        stack.push(new KeyPoseCommand(document, id, document.currentTime()));
-    } catch (...) {
-        stack.endMacro();
-        stack.undo();  // the pose change alone is not what was asked for
-        throw;
-    }
-    stack.endMacro();
+        pushCommand(document,
+                    std::make_unique<KeyPoseCommand>(document, id, document.currentTime()));
+    });
 }
 
 }  // namespace rigmesh::model

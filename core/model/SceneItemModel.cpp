@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "model/GuardedUndo.h"
 #include "model/commands/RenamePartCommand.h"
 #include "model/commands/SetPartVisibleCommand.h"
 
@@ -161,19 +162,30 @@ bool SceneItemModel::setData(const QModelIndex& index, const QVariant& value, in
     const PartNode* part = document_->findPart(node.partId());
     if (!part)
         return false;
-    if (role == Qt::EditRole) {
-        const QString name = value.toString().trimmed();
-        if (name.isEmpty())
-            return false;
-        if (name != part->name)
-            document_->undoStack()->push(new RenamePartCommand(*document_, part->id, name));
-        return true;
-    }
-    if (role == Qt::CheckStateRole) {
-        const bool visible = value.value<Qt::CheckState>() == Qt::Checked;
-        if (visible != part->visible)
-            document_->undoStack()->push(new SetPartVisibleCommand(*document_, part->id, visible));
-        return true;
+    const PartId id = part->id;  // `node` and `part` may go with a failed edit
+    try {
+        if (role == Qt::EditRole) {
+            const QString name = value.toString().trimmed();
+            if (name.isEmpty())
+                return false;
+            if (name != part->name)
+                pushCommand(*document_, std::make_unique<RenamePartCommand>(*document_, id, name));
+            return true;
+        }
+        if (role == Qt::CheckStateRole) {
+            const bool visible = value.value<Qt::CheckState>() == Qt::Checked;
+            if (visible != part->visible)
+                pushCommand(*document_,
+                            std::make_unique<SetPartVisibleCommand>(*document_, id, visible));
+            return true;
+        }
+    } catch (...) {
+        if (editFailed)
+            editFailed(std::current_exception());
+        else
+            qWarning("An edit of part %u failed; the document is unchanged.",
+                     static_cast<unsigned>(id));
+        return false;
     }
     return false;
 }

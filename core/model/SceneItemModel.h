@@ -9,6 +9,8 @@
 
 #include <QAbstractItemModel>
 #include <QPointer>
+#include <exception>
+#include <functional>
 #include <memory>
 
 #include "model/Document.h"
@@ -40,10 +42,17 @@ class SceneItemModel : public QAbstractItemModel {
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
     QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    // Never throws (Qt's item views and delegates call it): what a command
+    // throws goes to editFailed with the document as it was
+    // (model/GuardedUndo.h), and setData returns false.
     bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
     Qt::ItemFlags flags(const QModelIndex& index) const override;
     QVariant headerData(int section, Qt::Orientation orientation,
                         int role = Qt::DisplayRole) const override;
+
+    // Told what a rename or visibility change threw; without it the failure
+    // is only logged (qWarning).
+    std::function<void(std::exception_ptr)> editFailed;
 
   private:
     QModelIndex indexOfNode(const SceneNode* node, int column = NameColumn) const;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "model/GuardedUndo.h"
 #include "model/commands/DeleteKeyCommand.h"
 #include "model/commands/KeyPoseCommand.h"
 #include "model/commands/PasteKeysCommand.h"
@@ -21,13 +22,13 @@ void pushAsOneStep(Document& document, const QString& text, int count, Make make
     if (count == 0)
         return;
     if (count == 1) {
-        document.undoStack()->push(make(nullptr));
+        pushCommand(document, make(nullptr));
         return;
     }
     auto parent = std::make_unique<QUndoCommand>(text);
     for (int i = 0; i < count; ++i)
         make(parent.get());
-    document.undoStack()->push(parent.release());
+    pushCommand(document, std::move(parent));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "DocumentView.h"
+#include "UserAction.h"
 #include "base/Error.h"
 #include "controllers/RigController.h"
 #include "controllers/StudioHost.h"
@@ -15,6 +16,7 @@
 #include "model/Document.h"
 #include "model/DocumentExport.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/ImportReader.h"
 #include "model/commands/ImportPartsCommand.h"
 #include "model/recipe/RecipeFromHistory.h"
@@ -55,13 +57,15 @@ void ExchangeController::importPath(const QString& path) {
             return [=, this]() mutable {
                 if (!document)
                     return;
-                try {
-                    auto command = model::ImportPartsCommand::fromRead(*document, path, nodes);
-                    finishImport(*document, file, std::move(command));
-                } catch (const rigmesh::Error& error) {
-                    QMessageBox::warning(host_.dialogParent(), tr("Cannot import"),
-                                         model::errorText(error));
-                }
+                runUserAction(
+                    tr("Importing %1").arg(file),
+                    [this](const QString& failure) {
+                        QMessageBox::warning(host_.dialogParent(), tr("Cannot import"), failure);
+                    },
+                    [&] {
+                        auto command = model::ImportPartsCommand::fromRead(*document, path, nodes);
+                        finishImport(*document, file, std::move(command));
+                    });
             };
         },
         [this](const QString& reason) {
@@ -73,7 +77,7 @@ void ExchangeController::importPath(const QString& path) {
 void ExchangeController::finishImport(model::Document& document, const QString& file,
                                       std::unique_ptr<model::ImportPartsCommand> command) {
     const auto ids = command->partIds();
-    document.undoStack()->push(command.release());
+    model::pushCommand(document, std::move(command));
     if (!ids.empty())
         document.setSelection({ids.front(), kNoJoint});
     if (host_.currentView() && host_.currentView()->document() == &document)
@@ -102,15 +106,17 @@ void ExchangeController::saveHistoryAsRecipe() {
         tr("RigMesh recipes (*.json)"));
     if (path.isEmpty())
         return;
-    try {
-        model::saveHistoryAsRecipe(*document, path.toStdString());
-        host_.showStatus(tr("Saved the history as %1: replay it with rigmesh run")
-                             .arg(QFileInfo(path).fileName()),
-                         6000);
-    } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(host_.dialogParent(), tr("Cannot save the recipe"),
-                             model::errorText(error));
-    }
+    runUserAction(
+        tr("Save History as Recipe"),
+        [this](const QString& failure) {
+            QMessageBox::warning(host_.dialogParent(), tr("Cannot save the recipe"), failure);
+        },
+        [&] {
+            model::saveHistoryAsRecipe(*document, path.toStdString());
+            host_.showStatus(tr("Saved the history as %1: replay it with rigmesh run")
+                                 .arg(QFileInfo(path).fileName()),
+                             6000);
+        });
 }
 
 void ExchangeController::exportDocument() {
@@ -151,14 +157,15 @@ void ExchangeController::exportTo(const QString& path, const ExportOptions& opti
             auto staged = std::make_shared<model::StagedDocumentExport>(
                 model::stageParts(parts, path.toStdString(), options, true));
             return [=, this]() {
-                try {
-                    staged->files.commit();
-                } catch (const rigmesh::Error& error) {
-                    QMessageBox::warning(
-                        host_.dialogParent(), tr("Cannot export"),
-                        tr("%1 could not be replaced: %2").arg(file, model::errorText(error)));
+                const bool committed = runUserAction(
+                    tr("Exporting %1").arg(file),
+                    [&](const QString& failure) {
+                        QMessageBox::warning(host_.dialogParent(), tr("Cannot export"),
+                                             tr("%1 could not be replaced: %2").arg(file, failure));
+                    },
+                    [&] { staged->files.commit(); });
+                if (!committed)
                     return;
-                }
                 // Animation ticked but nothing keyed: say why the file has
                 // no animation.
                 QStringList warnings = staged->warnings;

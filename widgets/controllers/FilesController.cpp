@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "DocumentView.h"
+#include "UserAction.h"
 #include "base/Error.h"
 #include "controllers/StudioHost.h"
 #include "model/Autosave.h"
@@ -53,31 +54,31 @@ bool FilesController::openFile(const QString& path) {
             host_.setCurrentView(view);
             return true;
         }
-    try {
-        host_.addDocument(model::DocumentFile::load(path));
-        addRecentFile(path);
-        host_.showStatus(tr("Opened %1").arg(QFileInfo(path).fileName()), 4000);
-        return true;
-    } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(host_.dialogParent(), tr("Cannot open document"),
-                             model::errorText(error));
-        return false;
-    }
+    return runUserAction(
+        tr("Open Document"),
+        [this](const QString& failure) {
+            QMessageBox::warning(host_.dialogParent(), tr("Cannot open document"), failure);
+        },
+        [&] {
+            host_.addDocument(model::DocumentFile::load(path));
+            addRecentFile(path);
+            host_.showStatus(tr("Opened %1").arg(QFileInfo(path).fileName()), 4000);
+        });
 }
 
 bool FilesController::saveDocument(DocumentView* view, const QString& path) {
-    try {
-        model::DocumentFile::save(*view->document(), path);
-        if (const auto it = autosaves_.find(view); it != autosaves_.end())
-            it->second->discard();
-        addRecentFile(path);
-        host_.showStatus(tr("Saved %1").arg(QFileInfo(path).fileName()), 4000);
-        return true;
-    } catch (const rigmesh::Error& error) {
-        QMessageBox::warning(host_.dialogParent(), tr("Cannot save document"),
-                             model::errorText(error));
-        return false;
-    }
+    return runUserAction(
+        tr("Save Document"),
+        [this](const QString& failure) {
+            QMessageBox::warning(host_.dialogParent(), tr("Cannot save document"), failure);
+        },
+        [&] {
+            model::DocumentFile::save(*view->document(), path);
+            if (const auto it = autosaves_.find(view); it != autosaves_.end())
+                it->second->discard();
+            addRecentFile(path);
+            host_.showStatus(tr("Saved %1").arg(QFileInfo(path).fileName()), 4000);
+        });
 }
 
 bool FilesController::save() {
@@ -190,20 +191,24 @@ void FilesController::offerRecovery() {
             QMessageBox::question(host_.dialogParent(), tr("Recover unsaved work?"),
                                   recoveryQuestion(file), QMessageBox::Yes | QMessageBox::Discard);
         if (answer == QMessageBox::Yes) {
-            try {
-                auto document =
-                    std::make_unique<model::Document>(model::DocumentFile::read(file.path));
-                // Named as it was: its own file (Save writes there), or its
-                // title, marked recovered.
-                document->setFilePath(file.documentPath);
-                document->setUntitledName(tr("%1 (recovered)").arg(file.name));
-                // Recovered work is unsaved work: mark it modified so closing asks.
-                document->undoStack()->resetClean();
-                host_.addDocument(std::move(document));
-            } catch (const rigmesh::Error& error) {
-                host_.showStatus(tr("Could not recover: %1").arg(model::errorText(error)), 8000);
+            const bool recovered = runUserAction(
+                {},
+                [this](const QString& failure) {
+                    host_.showStatus(tr("Could not recover: %1").arg(failure), 8000);
+                },
+                [&] {
+                    auto document =
+                        std::make_unique<model::Document>(model::DocumentFile::read(file.path));
+                    // Named as it was: its own file (Save writes there), or its
+                    // title, marked recovered.
+                    document->setFilePath(file.documentPath);
+                    document->setUntitledName(tr("%1 (recovered)").arg(file.name));
+                    // Recovered work is unsaved work: mark it modified so closing asks.
+                    document->undoStack()->resetClean();
+                    host_.addDocument(std::move(document));
+                });
+            if (!recovered)
                 continue;
-            }
         }
         // Restored (it lives on in the open document) or discarded: the
         // recovery file and the name beside it go.

@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QMenu>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "controllers/StudioHost.h"
 #include "model/Document.h"
@@ -40,7 +41,9 @@ void PoseController::resetPose() {
         return;
     }
     const model::PartId id = document->selection().part;
-    model::pushPoseChange(*document, id, new model::ResetPoseCommand(*document, id));
+    runUserAction(
+        tr("&Reset Pose"), [this](const QString& failure) { host_.showStatus(failure); },
+        [&] { model::pushPoseChange(*document, id, new model::ResetPoseCommand(*document, id)); });
 }
 
 void PoseController::mirrorPose() {
@@ -64,16 +67,16 @@ void PoseController::mirrorPose() {
             6000);
         return;
     }
-    try {
-        const Pose mirrored = mirroredPose(node.part->skeleton, node.pose, *symmetry);
-        auto* command = new model::SetPoseCommand(*document, id, mirrored, kNoJoint,
-                                                  model::CommandMerging::Never);
-        command->setText(tr("Mirror Pose of %1").arg(node.name));
-        model::pushPoseChange(*document, id, command);
-        host_.showStatus(tr("Mirrored the pose of %1 left to right").arg(node.name), 4000);
-    } catch (const Error& error) {
-        host_.showStatus(model::errorText(error));
-    }
+    runUserAction(
+        tr("&Mirror Pose"), [this](const QString& failure) { host_.showStatus(failure); },
+        [&] {
+            const Pose mirrored = mirroredPose(node.part->skeleton, node.pose, *symmetry);
+            auto* command = new model::SetPoseCommand(*document, id, mirrored, kNoJoint,
+                                                      model::CommandMerging::Never);
+            command->setText(tr("Mirror Pose of %1").arg(node.name));
+            model::pushPoseChange(*document, id, command);
+            host_.showStatus(tr("Mirrored the pose of %1 left to right").arg(node.name), 4000);
+        });
 }
 
 }  // namespace rigmesh::widgets

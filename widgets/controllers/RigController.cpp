@@ -5,11 +5,13 @@
 #include <QPushButton>
 #include <algorithm>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "controllers/StudioHost.h"
 #include "jobs/JobRunner.h"
 #include "model/Document.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/commands/BoneEditCommand.h"
 #include "model/commands/RigPartCommand.h"
 #include "part/BoneConnection.h"
@@ -52,14 +54,17 @@ void RigController::connectSelectedBone() {
         host_.showStatus(tr("The selected joint ends no bone"), 4000);
         return;
     }
-    try {
-        auto command = model::BoneEditCommand::connect(*document, selection.part, *bone);
-        const QString text = command->text();
-        document->undoStack()->push(command.release());
-        host_.showStatus(text, 6000);
-    } catch (const Error& error) {
-        host_.showStatus(tr("Bone not connected: %1").arg(model::errorText(error)), 8000);
-    }
+    runUserAction(
+        {},
+        [this](const QString& failure) {
+            host_.showStatus(tr("Bone not connected: %1").arg(failure), 8000);
+        },
+        [&] {
+            auto command = model::BoneEditCommand::connect(*document, selection.part, *bone);
+            const QString text = command->text();
+            model::pushCommand(*document, std::move(command));
+            host_.showStatus(text, 6000);
+        });
 }
 
 void RigController::rigParts(model::Document* document, std::vector<model::PartId> ids) {
@@ -86,16 +91,19 @@ void RigController::rigParts(model::Document* document, std::vector<model::PartI
             return [=, this] {
                 if (!guarded)
                     return;
-                try {
-                    auto command = model::RigPartCommand::fromRigged(*guarded, ids, *rigged);
-                    const QString summary = command->summary();
-                    guarded->undoStack()->push(command.release());
-                    guarded->setSelection({ids.front(), kNoJoint});
-                    host_.showStatus(summary, 10000);
-                } catch (const Error& error) {
-                    QMessageBox::warning(host_.dialogParent(), tr("Cannot rig %1").arg(name),
-                                         model::errorText(error));
-                }
+                runUserAction(
+                    {},
+                    [this, name](const QString& failure) {
+                        QMessageBox::warning(host_.dialogParent(), tr("Cannot rig %1").arg(name),
+                                             failure);
+                    },
+                    [&] {
+                        auto command = model::RigPartCommand::fromRigged(*guarded, ids, *rigged);
+                        const QString summary = command->summary();
+                        model::pushCommand(*guarded, std::move(command));
+                        guarded->setSelection({ids.front(), kNoJoint});
+                        host_.showStatus(summary, 10000);
+                    });
             };
         },
         [this, name](const QString& reason) {

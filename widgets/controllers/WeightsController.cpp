@@ -6,11 +6,13 @@
 #include <QMessageBox>
 #include <QPointer>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "controllers/StudioHost.h"
 #include "jobs/JobRunner.h"
 #include "model/Document.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/commands/WeightCleanupCommand.h"
 #include "panels/WeightsPanel.h"
 
@@ -27,25 +29,26 @@ WeightsController::WeightsController(StudioHost& host, WeightsPanel* panel, QObj
 
 void WeightsController::addMenu(QMenu* tools) {
     auto* menu = tools->addMenu(tr("Weigh&ts"));
-    auto cleanup = [this](auto make) {
+    auto cleanup = [this](const QString& name, auto make) {
         model::Document* document = host_.currentDocument();
         if (!document || !document->contains(document->selection().part)) {
             host_.showStatus(tr("Select a part first"), 4000);
             return;
         }
-        try {
-            auto command = make(*document, document->selection().part);
-            const QString text = tr("%1: %n vertices changed", nullptr, command->changedVertices())
-                                     .arg(command->text());
-            document->undoStack()->push(command.release());
-            host_.showStatus(text, 6000);
-        } catch (const Error& error) {
-            host_.showStatus(model::errorText(error), 6000);
-        }
+        runUserAction(
+            name, [this](const QString& failure) { host_.showStatus(failure, 6000); },
+            [&] {
+                auto command = make(*document, document->selection().part);
+                const QString text =
+                    tr("%1: %n vertices changed", nullptr, command->changedVertices())
+                        .arg(command->text());
+                model::pushCommand(*document, std::move(command));
+                host_.showStatus(text, 6000);
+            });
     };
     auto add = [&](const QString& text, auto make) {
         QAction* action = menu->addAction(text);
-        connect(action, &QAction::triggered, this, [cleanup, make] { cleanup(make); });
+        connect(action, &QAction::triggered, this, [cleanup, text, make] { cleanup(text, make); });
         return action;
     };
     add(tr("&Normalize All"), [](model::Document& d, model::PartId id) {
@@ -114,17 +117,18 @@ void WeightsController::recomputeWeights() {
             return [=, this] {
                 if (!guarded)
                     return;
-                try {
-                    auto command =
-                        model::WeightCleanupCommand::fromRecomputed(*guarded, id, *result);
-                    const QString text =
-                        tr("%1: %n vertices changed", nullptr, command->changedVertices())
-                            .arg(command->text());
-                    guarded->undoStack()->push(command.release());
-                    host_.showStatus(text, 6000);
-                } catch (const Error& error) {
-                    host_.showStatus(model::errorText(error), 6000);
-                }
+                runUserAction(
+                    tr("&Recompute Weights (Bone Heat)"),
+                    [this](const QString& failure) { host_.showStatus(failure, 6000); },
+                    [&] {
+                        auto command =
+                            model::WeightCleanupCommand::fromRecomputed(*guarded, id, *result);
+                        const QString text =
+                            tr("%1: %n vertices changed", nullptr, command->changedVertices())
+                                .arg(command->text());
+                        model::pushCommand(*guarded, std::move(command));
+                        host_.showStatus(text, 6000);
+                    });
             };
         },
         [this](const QString& reason) {

@@ -10,6 +10,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "model/ErrorText.h"
 
@@ -22,16 +23,23 @@ std::atomic<int> busyRunners{0};
 // The text for the user of the exception `thrown`: an engine Error in the
 // user's language; a programming error (std::logic_error and the like) as
 // an internal error, so that a job reports it instead of ending the program.
+// No action name: every Failed callback says what failed.
 QString failureText(const std::exception_ptr& thrown) {
+    return UserAction::failureText({}, thrown);
+}
+
+// Runs a finished job's apply step (it pushes the job's command) on the
+// GUI thread; what it throws goes to `failed`, never into the event loop.
+// Without a `failed` the exception goes on to the caller.
+void applyGuarded(const JobRunner::Apply& apply, const JobRunner::Failed& failed) {
+    if (!apply)
+        return;
     try {
-        std::rethrow_exception(thrown);
-    } catch (const Error& error) {
-        return model::errorText(error);
-    } catch (const std::bad_alloc&) {
-        return QCoreApplication::translate("rigmesh::widgets::JobRunner", "Out of memory.");
-    } catch (const std::exception& error) {
-        return QCoreApplication::translate("rigmesh::widgets::JobRunner", "Internal error: %1")
-            .arg(QString::fromUtf8(error.what()));
+        apply();
+    } catch (...) {
+        if (!failed)
+            throw;
+        failed(failureText(std::current_exception()));
     }
 }
 
@@ -70,14 +78,13 @@ bool JobRunner::runOn(JobRunner* runner, const QString& title, Work work, Failed
         if (failed)
             failed(model::errorText(error));
         return true;
-    } catch (const std::exception&) {
+    } catch (...) {
         if (!failed)
             throw;
         failed(failureText(std::current_exception()));
         return true;
     }
-    if (apply)
-        apply();
+    applyGuarded(apply, failed);
     return true;
 }
 
@@ -120,7 +127,7 @@ bool JobRunner::run(const QString& title, Work work, Failed failed, Cancelled ca
         setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 5);
         try {
             job->apply = job->work();
-        } catch (const std::exception&) {
+        } catch (...) {
             job->error = failureText(std::current_exception());
         }
         // Back on the GUI thread (qApp outlives every window).
@@ -144,8 +151,12 @@ void JobRunner::finish(const std::shared_ptr<Job>& job) {
             job->failed(job->error);
         return;
     }
-    if (job->apply)
-        job->apply();
+    try {
+        applyGuarded(job->apply, job->failed);
+    } catch (...) {
+        // No one to tell (a job without a Failed): not into the event loop.
+        qWarning("%s", qPrintable(failureText(std::current_exception())));
+    }
 }
 
 void JobRunner::cancel() {

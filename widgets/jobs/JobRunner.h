@@ -8,8 +8,11 @@
 // (commands' create() functions do just that: they run the engine on the
 // immutable parts), touches no widget, and returns the step to apply on the
 // GUI thread. While a job runs the studio is read-only (jobs/JobStatus)
-// so nothing else changes the document under it. A rigmesh::Error thrown by
-// the work becomes the failure message; the document is untouched.
+// so nothing else changes the document under it. An exception thrown by
+// the work, or by the apply step on the GUI thread, becomes the failure
+// message (widgets/UserAction.h: an Error's own text, anything else an
+// internal error); the apply step pushes its command through
+// model/GuardedUndo, so the document is untouched.
 //
 // Cancel gives the studio back at once. Work started with runWithProgress
 // sees it through its JobProgress and may stop early; other work (the

@@ -5,6 +5,7 @@
 #include <QTreeView>
 #include <QVBoxLayout>
 
+#include "UserAction.h"
 #include "model/Document.h"
 #include "model/SceneItemModel.h"
 
@@ -35,6 +36,9 @@ void OutlinerPanel::setDocument(model::Document* document) {
     if (!document_)
         return;
     model_ = std::make_unique<model::SceneItemModel>(document_);
+    model_->editFailed = [this](const std::exception_ptr& thrown) {
+        emit statusMessage(UserAction::failureText(tr("Outliner"), thrown), 8000);
+    };
     view_->setModel(model_.get());
     // Names as wide as they need ("Joint 12 (root)"), the info column takes
     // the rest; a narrow dock scrolls sideways rather than cutting names.

@@ -14,11 +14,13 @@
 #include <cmath>
 #include <memory>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "jobs/JobRunner.h"
 #include "model/CountText.h"
 #include "model/Document.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/PartBuilder.h"
 #include "model/commands/RebuildPartCommand.h"
 #include "model/preview/PosePreview.h"
@@ -179,16 +181,19 @@ void PropertiesPanel::setJointRotation() {
         Eigen::AngleAxisd(euler_[0]->value() * M_PI / 180.0, Vec3::UnitX());
     rigmesh::Pose pose = node->pose;
     pose.setRotation(selection.joint, rotation.normalized());
-    try {
-        // Each typed value is its own undo step, which never merges with
-        // the previous one.
-        model::PosePreview preview(*document_, selection.part);
-        preview.preview(pose);
-        preview.commit(selection.joint);
-    } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not posed: %1").arg(model::errorText(error)), 8000);
-        refreshPose();
-    }
+    runUserAction(
+        {},
+        [this](const QString& failure) {
+            emit statusMessage(tr("Not posed: %1").arg(failure), 8000);
+            refreshPose();
+        },
+        [&] {
+            // Each typed value is its own undo step, which never merges with
+            // the previous one.
+            model::PosePreview preview(*document_, selection.part);
+            preview.preview(pose);
+            preview.commit(selection.joint);
+        });
 }
 
 void PropertiesPanel::rebuild() {
@@ -227,7 +232,7 @@ void PropertiesPanel::rebuild() {
                     return;
                 auto command = model::RebuildPartCommand::fromBuilt(*document, id, part, options);
                 const QString dropped = command->droppedMessage();
-                document->undoStack()->push(command.release());
+                model::pushCommand(*document, std::move(command));
                 emit statusMessage(dropped.isEmpty() ? tr("Rebuilt %1").arg(name)
                                                      : tr("Rebuilt %1; %2").arg(name, dropped),
                                    8000);

@@ -13,10 +13,12 @@
 #include <QVBoxLayout>
 #include <algorithm>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "model/BoneDisplayName.h"
 #include "model/CountText.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/commands/SetBoneLockCommand.h"
 #include "part/BoneWeights.h"
 #include "viewport/Viewport.h"
@@ -241,15 +243,18 @@ void WeightsPanel::boneLockToggled(int row) {
         return;
     const BoneId id = name->data(kBoneIdRole).toUInt();
     const bool locked = lock->checkState() == Qt::Checked;
-    try {
-        auto command = model::SetBoneLockCommand::create(*document_, node->id, id, locked);
-        const QString text = command->text();
-        document_->undoStack()->push(command.release());
-        emit statusMessage(text, 4000);
-    } catch (const Error& error) {
-        emit statusMessage(model::errorText(error), 6000);
-        refreshBones();
-    }
+    runUserAction(
+        tr("Lock"),
+        [this](const QString& failure) {
+            emit statusMessage(failure, 6000);
+            refreshBones();
+        },
+        [&] {
+            auto command = model::SetBoneLockCommand::create(*document_, node->id, id, locked);
+            const QString text = command->text();
+            model::pushCommand(*document_, std::move(command));
+            emit statusMessage(text, 4000);
+        });
 }
 
 void WeightsPanel::checkRig() {

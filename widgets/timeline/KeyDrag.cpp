@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "base/Error.h"
+#include "model/GuardedUndo.h"
 #include "model/commands/MoveKeysCommand.h"
 
 namespace rigmesh::widgets {
@@ -78,7 +79,7 @@ std::map<model::PartId, std::vector<double>> KeyDrag::finish() {
         if (!parent)
             single.reset(command);
     }
-    document_.undoStack()->push(parent ? parent.release() : single.release());
+    model::pushCommand(document_, parent ? std::move(parent) : std::move(single));
     return moved;
 }
 

@@ -11,9 +11,11 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "model/ClipModes.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/PartClips.h"
 #include "model/TimelineItemModel.h"
 #include "model/commands/ClipListCommand.h"
@@ -49,6 +51,7 @@ TimelineDock::TimelineDock(QWidget* parent)
     connect(view_, &TimelineView::deleteRequested, this, &TimelineDock::deleteSelectedKeys);
     connect(view_, &TimelineView::copyRequested, this, &TimelineDock::copySelectedKeys);
     connect(view_, &TimelineView::pasteRequested, this, &TimelineDock::pasteKeys);
+    connect(view_, &TimelineView::statusMessage, this, &TimelineDock::statusMessage);
     connect(playback_, &Playback::playingChanged, this, [this](bool playing) {
         playButton_->setProperty(kTransportIcon, static_cast<int>(playing ? QStyle::SP_MediaPause
                                                                           : QStyle::SP_MediaPlay));
@@ -286,15 +289,18 @@ template <typename Make>
 void TimelineDock::run(const QString& failure, Make make) {
     if (!document_)
         return;
-    try {
-        auto command = make();
-        const QString text = command->text();
-        document_->undoStack()->push(command.release());
-        emit statusMessage(text, 4000);
-    } catch (const rigmesh::Error& error) {
-        emit statusMessage(failure.arg(model::errorText(error)), 8000);
-        refresh();
-    }
+    runUserAction(
+        {},
+        [&](const QString& text) {
+            emit statusMessage(failure.arg(text), 8000);
+            refresh();
+        },
+        [&] {
+            auto command = make();
+            const QString text = command->text();
+            model::pushCommand(*document_, std::move(command));
+            emit statusMessage(text, 4000);
+        });
 }
 
 void TimelineDock::applyTimeline() {
@@ -394,28 +400,34 @@ void TimelineDock::insertKey() {
     const model::PartId part = document_->contains(document_->selection().part)
                                    ? document_->selection().part
                                    : model::kNoPart;
-    try {
-        const int keyed = model::insertKeys(*document_, part);
-        emit statusMessage(
-            keyed == 0
-                ? tr("Nothing to key: no part has a skeleton")
-                : tr("Keyed %n part(s) at frame %1", nullptr, keyed).arg(document_->currentFrame()),
-            4000);
-    } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not keyed: %1").arg(model::errorText(error)), 8000);
-    }
+    runUserAction(
+        {},
+        [this](const QString& failure) {
+            emit statusMessage(tr("Not keyed: %1").arg(failure), 8000);
+        },
+        [&] {
+            const int keyed = model::insertKeys(*document_, part);
+            emit statusMessage(keyed == 0 ? tr("Nothing to key: no part has a skeleton")
+                                          : tr("Keyed %n part(s) at frame %1", nullptr, keyed)
+                                                .arg(document_->currentFrame()),
+                               4000);
+        });
 }
 
 void TimelineDock::deleteSelectedKeys() {
     if (!document_)
         return;
-    const int deleted = model::deleteKeys(*document_, view_->selectedKeys());
-    view_->setSelectedKeys({});
-    emit statusMessage(
-        deleted == 0 ? tr("Select keys to delete") : tr("Deleted %n key(s)", nullptr, deleted),
-        4000);
-    if (deleted > 0)
-        document_->setCurrentFrame(document_->currentFrame());
+    runUserAction(
+        tr("Delete Keys"), [this](const QString& failure) { emit statusMessage(failure, 8000); },
+        [&] {
+            const int deleted = model::deleteKeys(*document_, view_->selectedKeys());
+            view_->setSelectedKeys({});
+            emit statusMessage(deleted == 0 ? tr("Select keys to delete")
+                                            : tr("Deleted %n key(s)", nullptr, deleted),
+                               4000);
+            if (deleted > 0)
+                document_->setCurrentFrame(document_->currentFrame());
+        });
 }
 
 void TimelineDock::copySelectedKeys() {
@@ -440,18 +452,21 @@ void TimelineDock::pasteKeys() {
         emit statusMessage(tr("Copy keys first (Ctrl+C in the timeline)"), 4000);
         return;
     }
-    try {
-        model::KeySelection pasted = model::pasteKeys(*document_, clipboard_, clipPart());
-        if (pasted.empty()) {
-            emit statusMessage(tr("Nothing pasted: the copied parts are gone"), 4000);
-            return;
-        }
-        view_->setSelectedKeys(std::move(pasted));
-        document_->setCurrentFrame(document_->currentFrame());
-        emit statusMessage(tr("Pasted at frame %1").arg(document_->currentFrame()), 4000);
-    } catch (const rigmesh::Error& error) {
-        emit statusMessage(tr("Not pasted: %1").arg(model::errorText(error)), 8000);
-    }
+    runUserAction(
+        {},
+        [this](const QString& failure) {
+            emit statusMessage(tr("Not pasted: %1").arg(failure), 8000);
+        },
+        [&] {
+            model::KeySelection pasted = model::pasteKeys(*document_, clipboard_, clipPart());
+            if (pasted.empty()) {
+                emit statusMessage(tr("Nothing pasted: the copied parts are gone"), 4000);
+                return;
+            }
+            view_->setSelectedKeys(std::move(pasted));
+            document_->setCurrentFrame(document_->currentFrame());
+            emit statusMessage(tr("Pasted at frame %1").arg(document_->currentFrame()), 4000);
+        });
 }
 
 }  // namespace rigmesh::widgets

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "UserAction.h"
 #include "timeline/KeyDrag.h"
 
 namespace rigmesh::widgets {
@@ -494,6 +495,7 @@ void TimelineView::mouseMoveEvent(QMouseEvent* event) {
     if (!model_)
         return;
     const QPointF pos = event->position();
+    const auto report = [this](const QString& failure) { emit statusMessage(failure, 8000); };
     switch (gesture_) {
         case Gesture::Scrub:
             scrubTo(pos.x());
@@ -509,10 +511,17 @@ void TimelineView::mouseMoveEvent(QMouseEvent* event) {
             }
             gesture_ = Gesture::DragKeys;
             [[fallthrough]];
-        case Gesture::DragKeys:
-            drag_->moveTo(
-                static_cast<int>(std::lround((pos.x() - pressPos_.x()) / pixelsPerFrame())));
+        case Gesture::DragKeys: {
+            const int frames =
+                static_cast<int>(std::lround((pos.x() - pressPos_.x()) / pixelsPerFrame()));
+            if (!runUserAction(tr("Timeline"), report, [&] { drag_->moveTo(frames); })) {
+                // The keys go back where the drag found them.
+                runUserAction(tr("Timeline"), report, [&] { drag_->cancel(); });
+                drag_.reset();
+                gesture_ = Gesture::None;
+            }
             break;
+        }
         case Gesture::BoxSelect:
             box_ = QRect(pressPos_.toPoint(), pos.toPoint()).normalized();
             update();
@@ -527,14 +536,19 @@ void TimelineView::mouseReleaseEvent(QMouseEvent* event) {
         return;
     const Gesture gesture = gesture_;
     gesture_ = Gesture::None;
+    const auto report = [this](const QString& failure) { emit statusMessage(failure, 8000); };
     if (gesture == Gesture::DragKeys && drag_) {
         std::unique_ptr<KeyDrag> drag = std::move(drag_);
-        KeySelection moved;
-        for (const auto& [part, times] : drag->finish())
-            moved[part].insert(times.begin(), times.end());
-        setSelectedKeys(std::move(moved));
-        // The clips changed under the current frame: show what they say now.
-        model_->document()->setCurrentFrame(model_->document()->currentFrame());
+        // A move that throws leaves the keys where the drag found them
+        // (KeyDrag::finish pushes through model/GuardedUndo).
+        runUserAction(tr("Timeline"), report, [&] {
+            KeySelection moved;
+            for (const auto& [part, times] : drag->finish())
+                moved[part].insert(times.begin(), times.end());
+            setSelectedKeys(std::move(moved));
+            // The clips changed under the current frame: show what they say now.
+            model_->document()->setCurrentFrame(model_->document()->currentFrame());
+        });
     } else if (gesture == Gesture::BoxSelect) {
         selectInBox(box_, boxAdds_);
         update();

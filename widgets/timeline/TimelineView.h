@@ -64,6 +64,8 @@ class TimelineView : public QWidget {
     void copyRequested();
     void pasteRequested();
     void selectionChanged();
+    // A key drag that failed (widgets/UserAction.h); the keys are as they were.
+    void statusMessage(const QString& message, int timeoutMs = 0);
 
   protected:
     bool event(QEvent* event) override;

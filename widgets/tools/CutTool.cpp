@@ -3,8 +3,10 @@
 #include <Eigen/Geometry>
 #include <map>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/commands/CutPartCommand.h"
 #include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
@@ -99,18 +101,18 @@ void CutTool::release(Viewport& viewport, QMouseEvent* event) {
         spec.viewStroke.emplace_back(p.dot(right), p.dot(spec.viewUp));
     }
     spec.style = (event->modifiers() & Qt::ShiftModifier) ? CutStyle::Sharp : CutStyle::Smooth;
-    try {
-        auto command = model::CutPartCommand::create(document, part, spec);
-        const QString text =
-            tr("%1 in %2 ms (%3)")
-                .arg(command->text())
-                .arg(command->milliseconds(), 0, 'f', 0)
-                .arg(spec.style == CutStyle::Smooth ? tr("smooth face") : tr("flat face"));
-        document.undoStack()->push(command.release());
-        emit status(text);
-    } catch (const Error& error) {
-        emit status(tr("Nothing cut: %1").arg(model::errorText(error)));
-    }
+    runUserAction(
+        {}, [this](const QString& failure) { emit status(tr("Nothing cut: %1").arg(failure)); },
+        [&] {
+            auto command = model::CutPartCommand::create(document, part, spec);
+            const QString text =
+                tr("%1 in %2 ms (%3)")
+                    .arg(command->text())
+                    .arg(command->milliseconds(), 0, 'f', 0)
+                    .arg(spec.style == CutStyle::Smooth ? tr("smooth face") : tr("flat face"));
+            model::pushCommand(document, std::move(command));
+            emit status(text);
+        });
     viewport.update();
 }
 

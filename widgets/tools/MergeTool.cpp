@@ -7,10 +7,13 @@
 #include <memory>
 #include <utility>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "jobs/JobRunner.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/commands/MergePartsCommand.h"
+#include "model/commands/MovePartCommand.h"
 #include "rig/BoneSegment.h"
 #include "viewport/RenderScene.h"
 #include "viewport/ViewMath.h"
@@ -358,21 +361,34 @@ void MergeTool::merge(Viewport& viewport, std::shared_ptr<PartDrag> drag,
             return [=]() {
                 if (!guarded)
                     return;
-                std::unique_ptr<model::MergePartsCommand> merge;
-                try {
-                    merge = model::MergePartsCommand::fromComputed(*guarded, dragged, target,
-                                                                   std::move(*computed));
-                } catch (const Error& error) {
-                    putBackTo(tr("Not merged: %1").arg(model::errorText(error)));
+                QString summary;
+                const bool merged = runUserAction(
+                    {},
+                    [&](const QString& failure) { putBackTo(tr("Not merged: %1").arg(failure)); },
+                    [&] {
+                        auto merge = model::MergePartsCommand::fromComputed(
+                            *guarded, dragged, target, std::move(*computed));
+                        summary = merge->summary();
+                        // The drop and the merge are one step: undo puts both
+                        // parts back where they were before the drag.
+                        // Pushed on the document as it was before the drag,
+                        // where a failure leaves it (the preview put back).
+                        model::PlacementPreview& preview = drag->preview();
+                        const model::Placement from = preview.original();
+                        const model::Placement to = preview.current();
+                        const bool moved = preview.previewing() && !(from == to);
+                        preview.revert();
+                        model::pushMacro(*guarded, merge->text(), [&] {
+                            if (moved)
+                                model::pushCommand(
+                                    *guarded,
+                                    std::make_unique<model::MovePartCommand>(
+                                        *guarded, dragged, from, to, model::CommandMerging::Never));
+                            model::pushCommand(*guarded, std::move(merge));
+                        });
+                    });
+                if (!merged)
                     return;
-                }
-                const QString summary = merge->summary();
-                // The drop and the merge are one step: undo puts both parts
-                // back where they were before the drag.
-                guarded->undoStack()->beginMacro(merge->text());
-                drag->preview().commit();
-                guarded->undoStack()->push(merge.release());
-                guarded->undoStack()->endMacro();
                 guarded->setSelection({target, kNoJoint});
                 if (self)
                     emit self->status(tr("%1 (%2 ms in all)").arg(summary).arg(timer->elapsed()));

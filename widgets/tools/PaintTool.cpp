@@ -6,9 +6,11 @@
 #include <QFormLayout>
 #include <QLabel>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "model/BoneDisplayName.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/commands/PaintWeightsCommand.h"
 #include "part/WeightLists.h"
 #include "viewport/RenderScene.h"
@@ -117,12 +119,10 @@ void PaintTool::dab(Viewport& viewport, const QPointF& pixel) {
     if (dab.towardsViewer)
         partDab.towardsViewer = placement.directionToLocal(*dab.towardsViewer);
     partDab.locked = working_->lockedBones;
-    try {
-        painter_->paint(*working_, partDab);
-    } catch (const Error& error) {
-        emit status(model::errorText(error));
+    if (!runUserAction(
+            name(), [this](const QString& failure) { emit status(failure); },
+            [&] { painter_->paint(*working_, partDab); }))
         return;
-    }
     dabs_.push_back(dab);
     // A live preview; the stroke becomes one command on release.
     stroke_->preview(std::make_shared<const Part>(*working_));
@@ -161,40 +161,43 @@ void PaintTool::release(Viewport& viewport, QMouseEvent*) {
     } else if (document.contains(part)) {
         // The stroke as one command, painted again on the part as the stroke
         // found it.
-        try {
-            QString message;
-            stroke_->commit([&]() -> std::unique_ptr<QUndoCommand> {
-                auto command = model::PaintWeightsCommand::create(document, part, dabs_);
-                const QString name = document.part(part).name;
-                if (command->changedVertices() == 0) {
-                    // Nothing to undo: no step in the history for it.
-                    message =
-                        command->skippedOnlyBone() > 0
-                            ? tr("The stroke changed no weights: %1 has one bone only, whose "
-                                 "weight is 1 everywhere")
-                                  .arg(name)
-                        : command->skippedVertices() > 0
-                            ? tr("The stroke changed no weights: every other bone there is locked")
-                            : tr("The stroke changed no weights: they are already as it paints");
-                    return nullptr;
-                }
-                message = tr("Painted %n dab(s), %1 vertices changed", nullptr,
-                             static_cast<int>(dabs_.size()))
-                              .arg(command->changedVertices());
-                if (command->skippedVertices() > 0)
-                    message += tr("; %n vertex visit(s) skipped: every other bone there is locked",
-                                  nullptr, command->skippedVertices());
-                if (command->unpairedVertices() > 0)
-                    message +=
-                        tr("; %n vertex visit(s) painted on one side only: no mirror "
-                           "partner there",
-                           nullptr, command->unpairedVertices());
-                return command;
+        runUserAction(
+            name(), [this](const QString& failure) { emit status(failure); },
+            [&] {
+                QString message;
+                stroke_->commit([&]() -> std::unique_ptr<QUndoCommand> {
+                    auto command = model::PaintWeightsCommand::create(document, part, dabs_);
+                    const QString name = document.part(part).name;
+                    if (command->changedVertices() == 0) {
+                        // Nothing to undo: no step in the history for it.
+                        message =
+                            command->skippedOnlyBone() > 0
+                                ? tr("The stroke changed no weights: %1 has one bone only, whose "
+                                     "weight is 1 everywhere")
+                                      .arg(name)
+                            : command->skippedVertices() > 0
+                                ? tr("The stroke changed no weights: every other bone there is "
+                                     "locked")
+                                : tr("The stroke changed no weights: they are already as it "
+                                     "paints");
+                        return nullptr;
+                    }
+                    message = tr("Painted %n dab(s), %1 vertices changed", nullptr,
+                                 static_cast<int>(dabs_.size()))
+                                  .arg(command->changedVertices());
+                    if (command->skippedVertices() > 0)
+                        message +=
+                            tr("; %n vertex visit(s) skipped: every other bone there is locked",
+                               nullptr, command->skippedVertices());
+                    if (command->unpairedVertices() > 0)
+                        message +=
+                            tr("; %n vertex visit(s) painted on one side only: no mirror "
+                               "partner there",
+                               nullptr, command->unpairedVertices());
+                    return command;
+                });
+                emit status(message);
             });
-            emit status(message);
-        } catch (const Error& error) {
-            emit status(model::errorText(error));
-        }
     }
     endStroke();
 }

@@ -5,8 +5,10 @@
 #include <QtMath>
 #include <cmath>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/PoseDrag.h"
 #include "model/commands/SetJointPinnedCommand.h"
 #include "pose/InverseKinematics.h"
@@ -57,8 +59,9 @@ void PoseTool::press(Viewport& viewport, QMouseEvent* event) {
     const model::PartNode& node = document.part(hit->part);
     if (event->modifiers() & Qt::ShiftModifier) {
         const bool pinned = node.pinnedJoints.count(hit->joint) > 0;
-        document.undoStack()->push(
-            new model::SetJointPinnedCommand(document, hit->part, hit->joint, !pinned));
+        // What it throws goes to the viewport (widgets/UserAction.h).
+        model::pushCommand(document, std::make_unique<model::SetJointPinnedCommand>(
+                                         document, hit->part, hit->joint, !pinned));
         return;
     }
     Drag drag;
@@ -264,11 +267,9 @@ void PoseTool::release(Viewport&, QMouseEvent*) {
     if (!drag_)
         return;
     // One undo step per drag.
-    try {
-        preview_->commit(drag_->joint);
-    } catch (const Error& error) {
-        emit status(tr("Not posed: %1").arg(model::errorText(error)));
-    }
+    runUserAction(
+        {}, [this](const QString& failure) { emit status(tr("Not posed: %1").arg(failure)); },
+        [&] { preview_->commit(drag_->joint); });
     endDrag();
 }
 

@@ -2,8 +2,10 @@
 
 #include <QMenu>
 
+#include "UserAction.h"
 #include "base/Error.h"
 #include "model/ErrorText.h"
+#include "model/GuardedUndo.h"
 #include "model/commands/BoneEditCommand.h"
 #include "viewport/ViewMath.h"
 #include "viewport/Viewport.h"
@@ -49,15 +51,17 @@ std::optional<BoneUnder> boneUnder(const Viewport& viewport, const QPointF& pixe
 template <typename Make>
 bool pushEdit(Viewport& viewport, Make&& make) {
     model::Document& document = *viewport.document();
-    try {
-        std::unique_ptr<model::BoneEditCommand> command = make(document);
-        const QString summary = command->summary();
-        document.undoStack()->push(command.release());
-        emit viewport.statusMessage(summary);
-    } catch (const Error& error) {
-        emit viewport.statusMessage(
-            Viewport::tr("Bone not changed: %1").arg(model::errorText(error)));
-    }
+    runUserAction(
+        {},
+        [&](const QString& failure) {
+            emit viewport.statusMessage(Viewport::tr("Bone not changed: %1").arg(failure));
+        },
+        [&] {
+            std::unique_ptr<model::BoneEditCommand> command = make(document);
+            const QString summary = command->summary();
+            model::pushCommand(document, std::move(command));
+            emit viewport.statusMessage(summary);
+        });
     viewport.update();
     return true;
 }

@@ -16,6 +16,7 @@
 #include <QWheelEvent>
 #include <limits>
 
+#include "UserAction.h"
 #include "model/OnionSkin.h"
 #include "pose/ForwardKinematics.h"
 #include "viewport/GlobalDifferences.h"
@@ -61,6 +62,20 @@ void setSkinning(RenderPart& item, const PosedSkeleton& posed) {
             item.boneRows.emplace_back(float(r(row, 0)), float(r(row, 1)), float(r(row, 2)),
                                        float(v[row]));
     }
+}
+
+// Runs `handler`, one of `tool`'s event handlers: what it throws (an undo
+// step's redo(), the engine) is said in the status bar (widgets/UserAction.h)
+// and the tool puts back what its drag previewed; the exception never
+// reaches Qt's event loop. The document is as it was: the tools push
+// through model/GuardedUndo.
+template <typename Handler>
+void runTool(Viewport& viewport, ViewportTool* tool, Handler&& handler) {
+    const auto report = [&](const QString& failure) { emit viewport.statusMessage(failure); };
+    if (runUserAction(tool->name(), report, std::forward<Handler>(handler)))
+        return;
+    runUserAction(tool->name(), report, [&] { tool->cancel(viewport); });
+    viewport.update();
 }
 
 }  // namespace
@@ -147,7 +162,7 @@ Viewport::~Viewport() {
 
 void Viewport::setTool(ViewportTool* tool) {
     if (tool_ && tool_ != tool)
-        tool_->cancel(*this);
+        runTool(*this, tool_, [&] { tool_->cancel(*this); });
     tool_ = tool;
     if (tool_)
         emit statusMessage(tool_->hint());
@@ -413,7 +428,7 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
         return;
     }
     if (event->button() == Qt::LeftButton && tool_)
-        tool_->press(*this, event);
+        runTool(*this, tool_, [&] { tool_->press(*this, event); });
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
@@ -443,9 +458,9 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     if (!tool_)
         return;
     if (event->buttons() & Qt::LeftButton)
-        tool_->move(*this, event);
+        runTool(*this, tool_, [&] { tool_->move(*this, event); });
     else
-        tool_->hover(*this, event);
+        runTool(*this, tool_, [&] { tool_->hover(*this, event); });
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
@@ -454,11 +469,14 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
         return;
     }
     if (event->button() == Qt::LeftButton && tool_)
-        tool_->release(*this, event);
+        runTool(*this, tool_, [&] { tool_->release(*this, event); });
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {
-    if (tool_ && tool_->wheel(*this, event))
+    bool used = false;
+    if (tool_)
+        runTool(*this, tool_, [&] { used = tool_->wheel(*this, event); });
+    if (used)
         return;
     camera_.dolly(event->angleDelta().y() / 120.0);
     update();
@@ -511,7 +529,7 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
             emit statusMessage(tr("Point at a bone: K splits it there, Shift+K deletes it"));
     } else if (event->key() == Qt::Key_Escape && tool_) {
         // Esc cuts the tool's drag short: what it previewed is put back.
-        tool_->cancel(*this);
+        runTool(*this, tool_, [&] { tool_->cancel(*this); });
         update();
     } else {
         QOpenGLWidget::keyPressEvent(event);

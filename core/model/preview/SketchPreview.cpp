@@ -1,5 +1,6 @@
 #include "model/preview/SketchPreview.h"
 
+#include "model/GuardedUndo.h"
 #include "model/commands/CreatePartCommand.h"
 
 namespace rigmesh::model {
@@ -42,7 +43,7 @@ PartId SketchPreview::commit(const SketchedPart& sketched) {
     auto command = CreatePartCommand::fromBuilt(*document_, sketched.stroke, sketched.name,
                                                 sketched.built, sketched.placement);
     const PartId id = command->partId();
-    document_->undoStack()->push(command.release());
+    pushCommand(*document_, std::move(command));
     return id;
 }
 

@@ -6,6 +6,7 @@
 
 #include "base/JsonRead.h"
 #include "base/Stopwatch.h"
+#include "model/GuardedUndo.h"
 #include "model/recipe/RecipeFile.h"
 #include "model/recipe/RecipeStepCommands.h"
 
@@ -69,10 +70,8 @@ RecipeStepReport RecipeRunner::apply(const nlohmann::json& step, int number,
     try {
         made = recipe::commandForStep(document_, command, step, baseDirectory_, options);
         text = made.command->text();
-        // The stack takes the command only once its redo() has run; until
-        // then (a redo that throws) the unique_ptr still owns it.
-        document_.undoStack()->push(made.command.get());
-        made.command.release();
+        // A redo() that throws leaves the document as it was (GuardedUndo).
+        pushCommand(document_, std::move(made.command));
     } catch (const RecipeError&) {
         throw;
     } catch (const nlohmann::json::exception& error) {
