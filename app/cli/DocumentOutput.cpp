@@ -25,6 +25,16 @@ bool leafBonesOption(const CommandLine& line) {
     return !line.flag("--no-leaf-bones");
 }
 
+SkinningMethod skinningOption(const CommandLine& line) {
+    // The studio's view skinning by default: linear blend, as glTF viewers
+    // and Blender deform (docs/EXCHANGE.md, "Skinning in Blender").
+    if (!line.flag("--dual-quaternion"))
+        return SkinningMethod::LinearBlend;
+    if (line.flag("--linear-blend"))
+        throw Error("choose one skinning: --linear-blend or --dual-quaternion");
+    return SkinningMethod::DualQuaternion;
+}
+
 ExportOptions exportOptions(const CommandLine& line) {
     ExportOptions options;
     if (auto influences = line.number("--max-influences")) {
@@ -38,14 +48,7 @@ ExportOptions exportOptions(const CommandLine& line) {
         options.maxInfluences = static_cast<int>(*influences);
     }
     options.leafBones = leafBonesOption(line);
-    // The studio's view skinning by default: linear blend, as glTF viewers
-    // and Blender deform (docs/EXCHANGE.md, "Skinning in Blender").
-    options.skinning = SkinningMethod::LinearBlend;
-    if (line.flag("--dual-quaternion")) {
-        if (line.flag("--linear-blend"))
-            throw Error("choose one skinning: --linear-blend or --dual-quaternion");
-        options.skinning = SkinningMethod::DualQuaternion;
-    }
+    options.skinning = skinningOption(line);
     if (auto levels = line.number("--subdivide")) {
         if (*levels < 0 || *levels > 4 || *levels != std::floor(*levels))
             throw Error("--subdivide must be a whole number from 0 to 4");

@@ -23,11 +23,14 @@ namespace rigmesh::cli {
 // refused.
 bool leafBonesOption(const CommandLine& line);
 
+// Linear blend skinning (the studio's view default, as glTF viewers and
+// Blender deform) unless --dual-quaternion; --linear-blend is accepted;
+// both at once are refused.
+SkinningMethod skinningOption(const CommandLine& line);
+
 // --max-influences N (a whole number >= 0; 0 = all the format allows);
-// leafBonesOption; --dual-quaternion (bake
-// poses with dual quaternion skinning and mark an FBX's skin so; the default,
-// --linear-blend, is linear blend skinning as glTF viewers and Blender
-// deform); --subdivide N (Loop, 0..4) and --decimate FACES (quadric, per part).
+// leafBonesOption; skinningOption (how poses are baked and what an FBX's
+// skin is marked with); --subdivide N (Loop, 0..4) and --decimate FACES (quadric, per part).
 ExportOptions exportOptions(const CommandLine& line);
 
 // True for a path ending in .rigmesh (any case).

@@ -19,7 +19,8 @@ namespace rigmesh::cli {
 
 int runRecipe(const std::vector<std::string>& arguments) {
     CommandLine line(arguments, {"-o", "--stats"},
-                     {"--compare-global", "--leaf-bones", "--no-leaf-bones"});
+                     {"--compare-global", "--leaf-bones", "--no-leaf-bones", "--linear-blend",
+                      "--dual-quaternion"});
     if (line.positional().size() != 1)
         throw Error("run needs exactly one recipe file (.json)");
     const std::string recipePath = line.positional()[0];
@@ -28,6 +29,7 @@ int runRecipe(const std::vector<std::string>& arguments) {
         checkDocumentOutputPath(*out, true);  // an unknown extension fails before any step runs
     ExportOptions exportSettings;
     exportSettings.leafBones = leafBonesOption(line);
+    exportSettings.skinning = skinningOption(line);
     const auto application = ensureCoreApplication();  // the commands translate their texts
 
     const std::optional<std::string> statsPath = line.value("--stats");

@@ -43,12 +43,13 @@ commands:
       bones and weights as JSON; --plain-dp uses plain Douglas-Peucker
       instead of the paper's CDP.
   run RECIPE.json [-o OUT.rigmesh|.glb|.gltf|.fbx|.dae|.obj] [--stats FILE.json]
-               [--compare-global] [--no-leaf-bones]
+               [--compare-global] [--no-leaf-bones] [--dual-quaternion]
       Replays a recipe (a JSON list of the studio's commands: sketch, merge,
       pose, key, ...; see resources/recipes/camel.json) on a new document,
       prints one line per step and writes the document: .rigmesh natively,
       the other formats as for build: one skinned mesh per part, each with
-      its clip, with end bones unless --no-leaf-bones. A bad step stops with "step N (command): reason". --stats
+      its clip, with end bones unless --no-leaf-bones, linear blend skinning
+      unless --dual-quaternion. A bad step stops with "step N (command): reason". --stats
       writes each step's time and, for each merge, the vertices and bones of
       the part and of the local re-skin and its times; --compare-global also
       solves the global re-skin and reports its time and the 90th percentile

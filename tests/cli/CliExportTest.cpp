@@ -156,6 +156,16 @@ TEST(CliExport, LinearBlendByDefaultDualQuaternionsWhenAsked) {
     EXPECT_EQ(readWholeFile(fbxLinear).find("DualQuaternion"), std::string::npos);
     EXPECT_NE(readWholeFile(fbxDual).find("DualQuaternion"), std::string::npos);
 
+    // A recipe replayed to FBX says the same (it said DualQuaternion, the
+    // engine's own default, whatever the studio showed).
+    const fs::path runLinear = scratch("run_lbs.fbx"), runDual = scratch("run_dqs.fbx");
+    ASSERT_EQ(runCli("run " + quoted(recipe) + " -o " + quoted(runLinear)).exitCode, 0);
+    ASSERT_EQ(
+        runCli("run " + quoted(recipe) + " -o " + quoted(runDual) + " --dual-quaternion").exitCode,
+        0);
+    EXPECT_EQ(readWholeFile(runLinear).find("DualQuaternion"), std::string::npos);
+    EXPECT_NE(readWholeFile(runDual).find("DualQuaternion"), std::string::npos);
+
     const auto both = runCli("export " + document + " -o " + quoted(scratch("both.fbx")) +
                              " --linear-blend --dual-quaternion");
     EXPECT_EQ(both.exitCode, 1);
