@@ -1,6 +1,8 @@
 #include "timeline/KeyDrag.h"
 
 #include <QCoreApplication>
+#include <QtGlobal>
+#include <exception>
 #include <memory>
 
 #include "base/Error.h"
@@ -13,8 +15,16 @@ KeyDrag::KeyDrag(model::Document& document, std::map<model::PartId, std::vector<
     : document_(document), keys_(std::move(keys)) {}
 
 KeyDrag::~KeyDrag() {
-    if (!done_)
+    if (done_)
+        return;
+    // A destructor must not throw (it would end the program): a revert the
+    // document refuses (Document::editClip) is told on the console, and the
+    // keys stay where the drag left them.
+    try {
         cancel();
+    } catch (const std::exception& error) {
+        qWarning("The key drag could not be taken back: %s", error.what());
+    }
 }
 
 double KeyDrag::seconds(int frames) const {
