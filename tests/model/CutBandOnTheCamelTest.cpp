@@ -34,17 +34,9 @@ TEST(CutBandOnTheCamel, TheBenchmarksCutsUseTheBandAndGiveTheWholeSplitsPieces) 
 }
 
 TEST(CutBandOnTheCamel, CutsAcrossTheCamelGiveTheWholeSplitsPieces) {
-    const Part& camel = testsupport::finishedCamel();
-    int banded = 0, cuts = 0;
-    for (const testsupport::NamedCut& cut : testsupport::cutsAcross(camel.mesh)) {
-        SCOPED_TRACE(cut.name);
-        const testsupport::SplitComparison result =
-            testsupport::compareSplits(camel.mesh, cut.surface);
-        EXPECT_TRUE(result.same) << result.difference;
-        ++cuts;
-        banded += result.report.band;
-        EXPECT_TRUE(testsupport::fallbackIsExpected(result.report)) << result.report.fallback;
-    }
+    const testsupport::BandTally tally =
+        testsupport::expectBandGivesTheWholeSplitAcross(testsupport::finishedCamel().mesh, "camel");
+    const int cuts = tally.cuts, banded = tally.banded;
     EXPECT_GT(banded, cuts * 3 / 4);
     std::printf("band used on %d of %d cuts of the camel\n", banded, cuts);
 }

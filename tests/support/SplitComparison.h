@@ -3,6 +3,8 @@
 // and tilts and bent strokes swept along z.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstring>
@@ -142,6 +144,28 @@ inline SplitComparison compareSplits(const TriMesh& mesh, const CutSurface& surf
         }
     }
     return out;
+}
+
+// How many cuts were compared, and on how many the band held.
+struct BandTally {
+    int cuts = 0;
+    int banded = 0;
+};
+
+// Every cut of cutsAcross(mesh): the band split gives the whole split's
+// pieces bit for bit and falls back only for an expected reason (each
+// failure traced with `label` and the cut's name).
+inline BandTally expectBandGivesTheWholeSplitAcross(const TriMesh& mesh, const std::string& label) {
+    BandTally tally;
+    for (const NamedCut& cut : cutsAcross(mesh)) {
+        SCOPED_TRACE(label + " " + cut.name);
+        const SplitComparison result = compareSplits(mesh, cut.surface);
+        EXPECT_TRUE(result.same) << result.difference;
+        EXPECT_TRUE(fallbackIsExpected(result.report)) << result.report.fallback;
+        ++tally.cuts;
+        tally.banded += result.report.band ? 1 : 0;
+    }
+    return tally;
 }
 
 }  // namespace rigmesh::testsupport

@@ -19,16 +19,10 @@ namespace {
 TEST(SplitBand, GivesTheWholeSplitsPiecesOnEverySharedSketch) {
     int cuts = 0, banded = 0;
     for (const std::string& sketch : testsupport::sharedSketchNames(false)) {
-        const Part& part = testsupport::sharedSketchPart(sketch);
-        for (const testsupport::NamedCut& cut : testsupport::cutsAcross(part.mesh)) {
-            SCOPED_TRACE(sketch + " " + cut.name);
-            const testsupport::SplitComparison result =
-                testsupport::compareSplits(part.mesh, cut.surface);
-            EXPECT_TRUE(result.same) << result.difference;
-            ++cuts;
-            banded += result.report.band;
-            EXPECT_TRUE(testsupport::fallbackIsExpected(result.report)) << result.report.fallback;
-        }
+        const testsupport::BandTally tally = testsupport::expectBandGivesTheWholeSplitAcross(
+            testsupport::sharedSketchPart(sketch).mesh, sketch);
+        cuts += tally.cuts;
+        banded += tally.banded;
     }
     EXPECT_GT(cuts, 500);
     EXPECT_GT(banded, cuts * 2 / 3);
