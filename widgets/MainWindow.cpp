@@ -21,6 +21,7 @@
 #include <tuple>
 
 #include "DocumentView.h"
+#include "GuardedUndoActions.h"
 #include "HistoryView.h"
 #include "MouseHint.h"
 #include "ShortcutToolTips.h"
@@ -58,6 +59,15 @@ static void registerIconResources() {
 
 namespace rigmesh::widgets {
 
+namespace {
+
+// A failure of a user action, shown in the window's status bar for 8 s.
+ReportFailure statusReport(MainWindow& window) {
+    return [&window](const QString& failure) { window.showStatus(failure, 8000); };
+}
+
+}  // namespace
+
 MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
     : QMainWindow(parent),
       tabs_(new QTabWidget(this)),
@@ -65,8 +75,7 @@ MainWindow::MainWindow(const QString& recoveryDirectory, QWidget* parent)
       properties_(new PropertiesPanel(this)),
       weights_(new WeightsPanel(this)),
       history_(new HistoryView(
-          &undoGroup_, [this] { return currentDocument(); },
-          [this](const QString& failure) { showStatus(failure, 8000); }, this)),
+          &undoGroup_, [this] { return currentDocument(); }, statusReport(*this), this)),
       timeline_(new TimelineDock(this)),
       tools_(new ToolRegistry(this)) {
     registerIconResources();
@@ -186,30 +195,15 @@ void MainWindow::createActions() {
     add(file, tr("&Quit"), QKeySequence::Quit, &QWidget::close);
 
     auto* edit = menuBar()->addMenu(tr("&Edit"));
-    // The group's actions keep their "Undo <step>" text and enabled state;
-    // a trigger goes through model/GuardedUndo rather than QUndoGroup, so a
-    // step that throws is reported and the document is left as it was.
     QAction* undo = undoGroup_.createUndoAction(this, tr("&Undo"));
     undo->setObjectName(QStringLiteral("undoAction"));
     undo->setShortcut(QKeySequence::Undo);
     undo->setIcon(s->standardIcon(QStyle::SP_ArrowBack));
     QAction* redo = undoGroup_.createRedoAction(this, tr("&Redo"));
     redo->setObjectName(QStringLiteral("redoAction"));
-    // Every connection from the actions to the group: their trigger.
-    undo->disconnect(&undoGroup_);
-    redo->disconnect(&undoGroup_);
-    const auto step = [this](const QString& name, void (*move)(model::Document&)) {
-        model::Document* document = currentDocument();
-        if (!document)
-            return;
-        runUserAction(
-            name, [this](const QString& failure) { showStatus(failure, 8000); },
-            [&] { move(*document); });
-    };
-    connect(undo, &QAction::triggered, this,
-            [this, step] { step(tr("&Undo"), model::undoCommand); });
-    connect(redo, &QAction::triggered, this,
-            [this, step] { step(tr("&Redo"), model::redoCommand); });
+    guardUndoActions(
+        undoGroup_, undo, tr("&Undo"), redo, tr("&Redo"), [this] { return currentDocument(); },
+        statusReport(*this));
     // Ctrl+Shift+Z everywhere, plus the platform's own redo key (Ctrl+Y on
     // some); a key listed twice would make the shortcut ambiguous.
     QList<QKeySequence> redoKeys{QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)};
@@ -595,15 +589,13 @@ void MainWindow::deleteSelection() {
         return;
     }
     const model::PartId id = document->selection().part;
-    runUserAction(
-        tr("&Delete Part"), [this](const QString& failure) { showStatus(failure, 8000); },
-        [&] {
-            model::changeOrRestore(*document, [&] {
-                document->clearSelection();
-                model::pushCommand(*document,
-                                   std::make_unique<model::DeletePartCommand>(*document, id));
-            });
+    runUserAction(tr("&Delete Part"), statusReport(*this), [&] {
+        model::changeOrRestore(*document, [&] {
+            document->clearSelection();
+            model::pushCommand(*document,
+                               std::make_unique<model::DeletePartCommand>(*document, id));
         });
+    });
 }
 
 }  // namespace rigmesh::widgets
