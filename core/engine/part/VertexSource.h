@@ -23,7 +23,9 @@ struct VertexSource {
     int index = -1;  // vertex or face index in that mesh
     Vec3 barycentric = Vec3::Zero();
 
-    static VertexSource vertex(int mesh, int index) { return {Kind::Vertex, mesh, index, {}}; }
+    static VertexSource vertex(int mesh, int index) {
+        return {Kind::Vertex, mesh, index, Vec3::Zero()};
+    }
     static VertexSource triangle(int mesh, int face, const Vec3& barycentric) {
         return {Kind::Triangle, mesh, face, barycentric};
     }
