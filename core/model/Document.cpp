@@ -190,6 +190,37 @@ void Document::replaceNode(PartId id, PartNode node) {
     emit partChanged(id, what);
 }
 
+void Document::restoreContents(const DocumentContents& contents, const Selection& selection) {
+    auto kept = [&](PartId id) {
+        return std::any_of(contents.parts.begin(), contents.parts.end(),
+                           [&](const PartNode& node) { return node.id == id; });
+    };
+    std::vector<PartId> added;
+    for (const PartNode& node : contents_.parts)
+        if (!kept(node.id))
+            added.push_back(node.id);
+    for (const PartId id : added)
+        removePart(id);
+    for (int i = 0; i < static_cast<int>(contents.parts.size()); ++i) {
+        const PartNode& node = contents.parts[static_cast<std::size_t>(i)];
+        const int at = indexOf(node.id);
+        if (at == i) {
+            replaceNode(node.id, node);
+            continue;
+        }
+        if (at >= 0)
+            removePart(node.id);  // it is after i: the parts before i are in place
+        insertPart(i, node);
+    }
+    contents_.nextPartId = contents.nextPartId;
+    setTimeline(contents.timeline);
+    if (contents_.currentFrame != contents.currentFrame) {
+        contents_.currentFrame = contents.currentFrame;
+        emit currentFrameChanged(contents_.currentFrame);
+    }
+    setSelection(selection);
+}
+
 void Document::setName(PartId id, const QString& name) {
     PartNode& node = mutablePart(id);
     if (node.name == name)

@@ -128,6 +128,13 @@ class Document : public QObject {
     // rigmesh::Error (nothing changed) on another id, or a pose, pins or
     // clips that do not fit the new part's skeleton.
     void replaceNode(PartId id, PartNode node);
+    // Puts back `contents` and `selection` taken from this document earlier
+    // (model/GuardedUndo's snapshot of a change that failed): parts it lacks
+    // go, the others come back in their order with one partChanged each for
+    // what differs (nothing for an equal node), and the part id counter,
+    // timeline and current frame are as they were. The poses come from
+    // `contents`: the frame is set without re-posing from the clips.
+    void restoreContents(const DocumentContents& contents, const Selection& selection);
     void setName(PartId id, const QString& name);
     void setPlacement(PartId id, const Placement& placement);
     void setVisible(PartId id, bool visible);

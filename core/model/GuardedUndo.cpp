@@ -11,47 +11,7 @@ DocumentSnapshot::DocumentSnapshot(const Document& document)
     : contents_(document.contents()), selection_(document.selection()) {}
 
 void DocumentSnapshot::restore(Document& document) const {
-    // Parts that were not there go; the others come back in their order
-    // (replaceNode signals only what differs, nothing for an equal node).
-    std::vector<PartId> added;
-    for (const PartNode& node : document.parts())
-        if (std::none_of(contents_.parts.begin(), contents_.parts.end(),
-                         [&](const PartNode& kept) { return kept.id == node.id; }))
-            added.push_back(node.id);
-    for (const PartId id : added)
-        document.removePart(id);
-    auto putBackParts = [&] {
-        for (int i = 0; i < static_cast<int>(contents_.parts.size()); ++i) {
-            const PartNode& node = contents_.parts[static_cast<std::size_t>(i)];
-            const int at = document.indexOf(node.id);
-            if (at == i) {
-                document.replaceNode(node.id, node);
-                continue;
-            }
-            if (at >= 0)
-                document.removePart(node.id);  // after i: the parts before it are in place
-            document.insertPart(i, node);
-        }
-    };
-    putBackParts();
-    // The counter as it was: ids handed out by the failed change come back
-    // (Document::releasePartId gives back the last one while it is unused).
-    while (document.nextPartId() > contents_.nextPartId) {
-        const PartId last = document.nextPartId() - 1;
-        document.releasePartId(last);
-        if (document.nextPartId() != last)
-            break;
-    }
-    while (document.nextPartId() < contents_.nextPartId)
-        document.allocatePartId();
-    document.setTimeline(contents_.timeline);
-    if (document.currentFrame() != contents_.currentFrame) {
-        // Moving the frame poses every keyed part from its clip: the poses
-        // the parts had come back after it.
-        document.setCurrentFrame(contents_.currentFrame);
-        putBackParts();
-    }
-    document.setSelection(selection_);
+    document.restoreContents(contents_, selection_);
 }
 
 }  // namespace detail
