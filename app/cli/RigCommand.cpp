@@ -3,12 +3,14 @@
 #include <QString>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "CommandLine.h"
 #include "DocumentOutput.h"
 #include "base/Error.h"
 #include "mesh/MeshWriter.h"
 #include "model/Document.h"
+#include "model/GuardedUndo.h"
 #include "model/commands/ImportPartsCommand.h"
 #include "model/commands/RigPartCommand.h"
 
@@ -49,7 +51,7 @@ int runRig(const std::vector<std::string>& arguments) {
     std::vector<model::PartId> unrigged;
     for (const model::PartId id : import->partIds())
         unrigged.push_back(id);
-    document.undoStack()->push(import.release());
+    model::pushCommand(document, std::move(import));
     std::erase_if(unrigged, [&](model::PartId id) {
         return document.part(id).part->skeleton.jointCount() > 0;
     });
@@ -67,7 +69,7 @@ int runRig(const std::vector<std::string>& arguments) {
         std::printf("%s\n", command->summary().toStdString().c_str());
         if (proxy)
             writeMesh(*command->result().rigSurface, proxyPath(*proxy, static_cast<int>(r)));
-        document.undoStack()->push(command.release());
+        model::pushCommand(document, std::move(command));
     }
     writeDocumentOutput(document, *out, options);
     return 0;

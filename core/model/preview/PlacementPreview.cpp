@@ -1,5 +1,6 @@
 #include "model/preview/PlacementPreview.h"
 
+#include "model/GuardedUndo.h"
 #include "model/commands/MovePartCommand.h"
 
 namespace rigmesh::model {
@@ -14,8 +15,10 @@ void PlacementPreview::put(const Placement& placement) {
 bool PlacementPreview::commit() {
     if (!previewing() || current() == original())
         return false;
-    document_->undoStack()->push(
-        new MovePartCommand(*document_, id_, original(), current(), CommandMerging::Never));
+    // Guarded (model/GuardedUndo.h): a redo() that throws leaves the previewed
+    // state on the document and the preview open, for the tool to revert.
+    pushCommand(*document_,
+                new MovePartCommand(*document_, id_, original(), current(), CommandMerging::Never));
     committed();
     return true;
 }

@@ -2,6 +2,7 @@
 
 #include <QUndoStack>
 #include <chrono>
+#include <filesystem>
 #include <utility>
 
 #include "base/JsonRead.h"
@@ -76,9 +77,14 @@ RecipeStepReport RecipeRunner::apply(const nlohmann::json& step, int number,
         throw;
     } catch (const nlohmann::json::exception& error) {
         throw RecipeError(number, command, jsonread::parseErrorReason(error));
-    } catch (const std::exception& error) {
+    } catch (const Error& error) {
+        throw RecipeError(number, command, error.what());
+    } catch (const std::filesystem::filesystem_error& error) {
         throw RecipeError(number, command, error.what());
     }
+    // Anything else (std::logic_error: a programming error; std::bad_alloc)
+    // goes on as it is, so the command line reports it as an internal error or
+    // as out of memory, not as a fault of the recipe (app/cli/CommandFailure.cpp).
     const double milliseconds = millisecondsSince(start);
     return {number, command, summaryOf(document_, command, text, made), milliseconds,
             std::move(made.stats)};
