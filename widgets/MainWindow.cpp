@@ -1,10 +1,8 @@
 #include "MainWindow.h"
 
 #include <QAction>
-#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QComboBox>
 #include <QDockWidget>
 #include <QIcon>
 #include <QLabel>
@@ -27,6 +25,7 @@
 #include "ShortcutToolTips.h"
 #include "UndoStatus.h"
 #include "UserAction.h"
+#include "WeightViewChooser.h"
 #include "base/Error.h"
 #include "controllers/ExchangeController.h"
 #include "controllers/FilesController.h"
@@ -258,30 +257,15 @@ void MainWindow::createActions() {
         if (auto* v = currentView())
             v->viewport()->setDualQuaternionSkinning(on);
     });
-    // Skin weight views, like Blender's weight paint display.
-    auto* weights = viewMenu_->addMenu(tr("&Weights"));
-    weightViewGroup_ = new QActionGroup(this);
-    const std::pair<QString, WeightView> views[] = {
-        {tr("&Off"), WeightView::Off},
-        {tr("&Selected Bone (select its joint)"), WeightView::SelectedBone},
-        {tr("&Dominant Bone"), WeightView::DominantBone},
-        {tr("&Influence Count"), WeightView::Influences},
-        {tr("Difference from &Global Weights"), WeightView::GlobalDifference}};
-    for (const auto& [text, view] : views) {
-        QAction* action = weights->addAction(text);
-        action->setCheckable(true);
-        action->setChecked(view == WeightView::Off);
-        action->setData(static_cast<int>(view));
-        weightViewGroup_->addAction(action);
-        connect(action, &QAction::triggered, this, [this, view = view] {
-            if (auto* v = currentView())
-                v->viewport()->setWeightView(view);
-            if (view == WeightView::SelectedBone)
-                showStatus(tr("Weights of the selected joint's bone: blue 0, green 0.5, red 1, "
-                              "dark blue none"),
-                           6000);
-        });
-    }
+    weightViews_ = new WeightViewChooser(viewMenu_, this);
+    connect(weightViews_, &WeightViewChooser::chosen, this, [this](WeightView view) {
+        if (auto* v = currentView())
+            v->viewport()->setWeightView(view);
+        if (view == WeightView::SelectedBone)
+            showStatus(tr("Weights of the selected joint's bone: blue 0, green 0.5, red 1, "
+                          "dark blue none"),
+                       6000);
+    });
     gridAction_ = viewMenu_->addAction(tr("&Grid"));
     gridAction_->setCheckable(true);
     gridAction_->setChecked(true);
@@ -303,7 +287,6 @@ void MainWindow::createActions() {
         tr("Give the selected part without a skeleton (an imported mesh) a skeleton "
            "from its shape and skin weights"));
     weightsController_->addMenu(tools);
-    createWeightViewBar();
 
     auto* help = menuBar()->addMenu(tr("&Help"));
     add(help, tr("&Mouse Gestures"), QKeySequence(), [this] {
@@ -382,7 +365,7 @@ DocumentView* MainWindow::addDocument(std::unique_ptr<model::Document> document)
             [this](const QString& m) { showStatus(m); });
     connect(view->viewport(), &Viewport::weightViewChanged, this, [this, view](WeightView shown) {
         if (currentView() == view)
-            showWeightView(shown);
+            weightViews_->show(shown);
     });
     auto refreshTab = [this, view] {
         const int index = tabs_->indexOf(view);
@@ -476,7 +459,7 @@ void MainWindow::currentTabChanged(int) {
         view->viewport()->setOnionSkin(timeline_->onionSkin());
         view->viewport()->setMouseBindings(preferences_.mouseBindings);
         view->setDefaultEdgeLength(preferences_.defaultEdgeLength);
-        showWeightView(view->viewport()->weightView());  // each document keeps its own
+        weightViews_->show(view->viewport()->weightView());  // each document keeps its own
     }
     updateTitle();
 }
@@ -549,37 +532,7 @@ void MainWindow::activateTool(ViewportTool* tool) {
     showStatus(tool->hint());
     // Painting shows what it paints: the selected bone's weights.
     if (const std::optional<WeightView> shown = tool->weightView())
-        for (QAction* action : weightViewGroup_->actions())
-            if (static_cast<WeightView>(action->data().toInt()) == *shown)
-                action->trigger();
-}
-
-void MainWindow::showWeightView(WeightView view) {
-    for (QAction* action : weightViewGroup_->actions())
-        if (static_cast<WeightView>(action->data().toInt()) == view)
-            action->setChecked(true);
-    if (weightViewBox_) {
-        const QSignalBlocker block(weightViewBox_);
-        weightViewBox_->setCurrentIndex(weightViewBox_->findData(static_cast<int>(view)));
-    }
-}
-
-void MainWindow::createWeightViewBar() {
-    auto* bar = addToolBar(tr("Weight View"));
-    bar->setObjectName(QStringLiteral("weightViewToolBar"));
-    bar->addWidget(new QLabel(tr(" Weights: "), bar));
-    weightViewBox_ = new QComboBox(bar);
-    weightViewBox_->setObjectName(QStringLiteral("weightViewBox"));
-    weightViewBox_->setToolTip(tr("Colour the surface by its skin weights (View > Weights)"));
-    for (QAction* action : weightViewGroup_->actions())
-        weightViewBox_->addItem(action->text().remove(QLatin1Char('&')), action->data());
-    bar->addWidget(weightViewBox_);
-    connect(weightViewBox_, &QComboBox::activated, this, [this](int index) {
-        const QVariant view = weightViewBox_->itemData(index);
-        for (QAction* action : weightViewGroup_->actions())
-            if (action->data() == view)
-                action->trigger();
-    });
+        weightViews_->choose(*shown);
 }
 
 void MainWindow::deleteSelection() {

@@ -23,8 +23,6 @@ class QStackedWidget;
 class QTabWidget;
 class QUndoView;
 class QMenu;
-class QActionGroup;
-class QComboBox;
 class QToolBar;
 
 namespace rigmesh::model {
@@ -35,6 +33,7 @@ namespace rigmesh::widgets {
 
 class MouseHint;
 enum class WeightView;  // viewport/RenderScene.h
+class WeightViewChooser;
 
 class DocumentView;
 class ExchangeController;
@@ -112,12 +111,6 @@ class MainWindow : public QMainWindow, public StudioHost {
     void createTimelineActions();
     // The tools, their actions in the Tools menu and toolbar, their options.
     void createTools(QMenu* menu, QToolBar* toolbar);
-    // The weight views on a toolbar too: a list beside the tools, in step
-    // with View > Weights.
-    void createWeightViewBar();
-    // The View > Weights choice and the Weight View toolbar follow the
-    // current document's viewport (each document keeps its own view).
-    void showWeightView(WeightView view);
     void currentTabChanged(int index);
     void updateTitle();
     void deleteSelection();
@@ -133,8 +126,7 @@ class MainWindow : public QMainWindow, public StudioHost {
     TimelineDock* timeline_;
     ToolRegistry* tools_;
     QMenu* viewMenu_ = nullptr;
-    QActionGroup* weightViewGroup_ = nullptr;
-    QComboBox* weightViewBox_ = nullptr;
+    WeightViewChooser* weightViews_ = nullptr;
     QAction* wireframeAction_ = nullptr;
     QAction* dqsAction_ = nullptr;
     QAction* gridAction_ = nullptr;
