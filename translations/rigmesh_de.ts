@@ -1599,6 +1599,110 @@
         <source>cannot write %1: the glTF exporter wrote no .bin</source>
         <translation>%1 kann nicht geschrieben werden: der glTF-Exporter hat keine .bin geschrieben</translation>
     </message>
+    <message>
+        <source>Skin weights could not be solved for bone %1; nearest-bone weights are used instead.</source>
+        <translation>Die Skin-Gewichte für Knochen %1 ließen sich nicht lösen; stattdessen werden Gewichte des nächsten Knochens verwendet.</translation>
+    </message>
+    <message>
+        <source>Skin weights could not be solved for bones %1; nearest-bone weights are used instead.</source>
+        <translation>Die Skin-Gewichte für die Knochen %1 ließen sich nicht lösen; stattdessen werden Gewichte des nächsten Knochens verwendet.</translation>
+    </message>
+    <message>
+        <source>The skin weights&apos; heat system could not be factored; every bone uses nearest-bone weights instead.</source>
+        <translation>Das Wärmesystem der Skin-Gewichte ließ sich nicht faktorisieren; jeder Knochen verwendet stattdessen Gewichte des nächsten Knochens.</translation>
+    </message>
+    <message>
+        <source>%1 vertices see no bone from inside the shape and are heated by their nearest bone.</source>
+        <translation>%1 Vertices sehen von innerhalb der Form keinen Knochen und werden vom nächsten Knochen erwärmt.</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: expected a letter in &quot;%4&quot;</source>
+        <translation>Skizze „%1“: das SVG-Attribut „%2“ ist an Zeichen %3 fehlerhaft: Buchstabe erwartet in „%4“</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: expected a name in &quot;%4&quot;</source>
+        <translation>Skizze „%1“: das SVG-Attribut „%2“ ist an Zeichen %3 fehlerhaft: Name erwartet in „%4“</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: expected a number in &quot;%4&quot;</source>
+        <translation>Skizze „%1“: das SVG-Attribut „%2“ ist an Zeichen %3 fehlerhaft: Zahl erwartet in „%4“</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: number out of range in &quot;%4&quot;</source>
+        <translation>Skizze „%1“: das SVG-Attribut „%2“ ist an Zeichen %3 fehlerhaft: Zahl außerhalb des Bereichs in „%4“</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: expected an arc flag (0 or 1) in &quot;%4&quot;</source>
+        <translation>Skizze „%1“: das SVG-Attribut „%2“ ist an Zeichen %3 fehlerhaft: Bogen-Flag (0 oder 1) erwartet in „%4“</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: path data must start with a moveto command (M or m) in &quot;%4&quot;</source>
+        <translation>Skizze „%1“: das SVG-Attribut „%2“ ist an Zeichen %3 fehlerhaft: Pfaddaten müssen mit einem Moveto-Befehl (M oder m) beginnen, in „%4“</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: unknown command &apos;%5&apos; in &quot;%4&quot;</source>
+        <translation>Skizze „%1“: das SVG-Attribut „%2“ ist an Zeichen %3 fehlerhaft: unbekannter Befehl „%5“ in „%4“</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: odd number of coordinates in &quot;%4&quot;</source>
+        <translation>Skizze „%1“: das SVG-Attribut „%2“ ist an Zeichen %3 fehlerhaft: ungerade Anzahl von Koordinaten in „%4“</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: unknown transform &apos;%5&apos; with %6 arguments in &quot;%4&quot;</source>
+        <translation>Skizze „%1“: das SVG-Attribut „%2“ ist an Zeichen %3 fehlerhaft: unbekannte Transformation „%5“ mit %6 Argumenten in „%4“</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: expected &apos;(&apos; after &apos;%5&apos; in &quot;%4&quot;</source>
+        <translation>Skizze „%1“: das SVG-Attribut „%2“ ist an Zeichen %3 fehlerhaft: „(“ erwartet nach „%5“ in „%4“</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: missing &apos;)&apos; after &apos;%5&apos; in &quot;%4&quot;</source>
+        <translation>Skizze „%1“: das SVG-Attribut „%2“ ist an Zeichen %3 fehlerhaft: „)“ fehlt nach „%5“ in „%4“</translation>
+    </message>
+    <message>
+        <source>%1 must be a list of %2 numbers</source>
+        <translation>%1 muss eine Liste von %2 Zahlen sein</translation>
+    </message>
+    <message>
+        <source>%1 must be a list of 4 numbers [w, x, y, z]</source>
+        <translation>%1 muss eine Liste von 4 Zahlen [w, x, y, z] sein</translation>
+    </message>
+    <message>
+        <source>%1 must be an object</source>
+        <translation>%1 muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <source>%1 has an unknown field &quot;%2&quot;</source>
+        <translation>%1 hat ein unbekanntes Feld „%2“</translation>
+    </message>
+    <message>
+        <source>%1 must be a number</source>
+        <translation>%1 muss eine Zahl sein</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number</source>
+        <translation>%1 muss eine endliche Zahl sein</translation>
+    </message>
+    <message>
+        <source>%1 must be true or false</source>
+        <translation>%1 muss true oder false sein</translation>
+    </message>
+    <message>
+        <source>%1 must be text</source>
+        <translation>%1 muss Text sein</translation>
+    </message>
+    <message>
+        <source>%1 is a zero quaternion</source>
+        <translation>%1 ist ein Null-Quaternion</translation>
+    </message>
+    <message>
+        <source>%1 is not a joint id</source>
+        <translation>%1 ist keine Gelenk-ID</translation>
+    </message>
+    <message>
+        <source>%1 must be a joint id (a non-negative integer)</source>
+        <translation>%1 muss eine Gelenk-ID sein (eine nichtnegative ganze Zahl)</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>
@@ -2494,30 +2598,6 @@
         <translation>Aus: lineares Blend-Skinning</translation>
     </message>
     <message>
-        <source>&amp;Weights</source>
-        <translation>&amp;Gewichte</translation>
-    </message>
-    <message>
-        <source>&amp;Off</source>
-        <translation>&amp;Aus</translation>
-    </message>
-    <message>
-        <source>&amp;Selected Bone (select its joint)</source>
-        <translation>&amp;Ausgewählter Knochen (sein Gelenk auswählen)</translation>
-    </message>
-    <message>
-        <source>&amp;Dominant Bone</source>
-        <translation>&amp;Dominanter Knochen</translation>
-    </message>
-    <message>
-        <source>&amp;Influence Count</source>
-        <translation>Anzahl der &amp;Einflüsse</translation>
-    </message>
-    <message>
-        <source>Difference from &amp;Global Weights</source>
-        <translation>Abweichung von den &amp;globalen Gewichten</translation>
-    </message>
-    <message>
         <source>Weights of the selected joint&apos;s bone: blue 0, green 0.5, red 1, dark blue none</source>
         <translation>Gewichte des Knochens am ausgewählten Gelenk: Blau 0, Grün 0,5, Rot 1, Dunkelblau keins</translation>
     </message>
@@ -2648,18 +2728,6 @@
     <message>
         <source>The new language applies when RigMesh Studio starts again.</source>
         <translation>Die neue Sprache gilt ab dem nächsten Start von RigMesh Studio.</translation>
-    </message>
-    <message>
-        <source>Weight View</source>
-        <translation>Gewichtsansicht</translation>
-    </message>
-    <message>
-        <source> Weights: </source>
-        <translation> Gewichte: </translation>
-    </message>
-    <message>
-        <source>Colour the surface by its skin weights (View &gt; Weights)</source>
-        <translation>Oberfläche nach ihren Skin-Gewichten einfärben (Ansicht &gt; Gewichte)</translation>
     </message>
     <message>
         <source>&amp;Auto-Rig Part</source>
@@ -3661,6 +3729,45 @@ Nicht geriggt: als statisches Netz importiert. Werkzeuge &gt; Teil automatisch r
     <message>
         <source>Connect Bone</source>
         <translation>Knochen verbinden</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::WeightViewChooser</name>
+    <message>
+        <source>&amp;Weights</source>
+        <translation>&amp;Gewichte</translation>
+    </message>
+    <message>
+        <source>&amp;Off</source>
+        <translation>&amp;Aus</translation>
+    </message>
+    <message>
+        <source>&amp;Selected Bone (select its joint)</source>
+        <translation>&amp;Ausgewählter Knochen (sein Gelenk auswählen)</translation>
+    </message>
+    <message>
+        <source>&amp;Dominant Bone</source>
+        <translation>&amp;Dominanter Knochen</translation>
+    </message>
+    <message>
+        <source>&amp;Influence Count</source>
+        <translation>Anzahl der &amp;Einflüsse</translation>
+    </message>
+    <message>
+        <source>Difference from &amp;Global Weights</source>
+        <translation>Abweichung von den &amp;globalen Gewichten</translation>
+    </message>
+    <message>
+        <source>Weight View</source>
+        <translation>Gewichtsansicht</translation>
+    </message>
+    <message>
+        <source> Weights: </source>
+        <translation> Gewichte: </translation>
+    </message>
+    <message>
+        <source>Colour the surface by its skin weights (View &gt; Weights)</source>
+        <translation>Oberfläche nach ihren Skin-Gewichten einfärben (Ansicht &gt; Gewichte)</translation>
     </message>
 </context>
 <context>

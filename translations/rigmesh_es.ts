@@ -1599,6 +1599,110 @@
         <source>cannot write %1: the glTF exporter wrote no .bin</source>
         <translation>no se puede escribir %1: el exportador glTF no escribió ningún .bin</translation>
     </message>
+    <message>
+        <source>Skin weights could not be solved for bone %1; nearest-bone weights are used instead.</source>
+        <translation>No se pudieron resolver los pesos de piel del hueso %1; se usan en su lugar los pesos del hueso más cercano.</translation>
+    </message>
+    <message>
+        <source>Skin weights could not be solved for bones %1; nearest-bone weights are used instead.</source>
+        <translation>No se pudieron resolver los pesos de piel de los huesos %1; se usan en su lugar los pesos del hueso más cercano.</translation>
+    </message>
+    <message>
+        <source>The skin weights&apos; heat system could not be factored; every bone uses nearest-bone weights instead.</source>
+        <translation>No se pudo factorizar el sistema de calor de los pesos de piel; cada hueso usa en su lugar los pesos del hueso más cercano.</translation>
+    </message>
+    <message>
+        <source>%1 vertices see no bone from inside the shape and are heated by their nearest bone.</source>
+        <translation>%1 vértices no ven ningún hueso desde dentro de la forma y los calienta su hueso más cercano.</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: expected a letter in &quot;%4&quot;</source>
+        <translation>Boceto «%1»: el atributo SVG «%2» está mal formado en el carácter %3: se esperaba una letra en «%4»</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: expected a name in &quot;%4&quot;</source>
+        <translation>Boceto «%1»: el atributo SVG «%2» está mal formado en el carácter %3: se esperaba un nombre en «%4»</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: expected a number in &quot;%4&quot;</source>
+        <translation>Boceto «%1»: el atributo SVG «%2» está mal formado en el carácter %3: se esperaba un número en «%4»</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: number out of range in &quot;%4&quot;</source>
+        <translation>Boceto «%1»: el atributo SVG «%2» está mal formado en el carácter %3: número fuera de rango en «%4»</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: expected an arc flag (0 or 1) in &quot;%4&quot;</source>
+        <translation>Boceto «%1»: el atributo SVG «%2» está mal formado en el carácter %3: se esperaba un indicador de arco (0 o 1) en «%4»</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: path data must start with a moveto command (M or m) in &quot;%4&quot;</source>
+        <translation>Boceto «%1»: el atributo SVG «%2» está mal formado en el carácter %3: los datos de ruta deben empezar con una orden moveto (M o m) en «%4»</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: unknown command &apos;%5&apos; in &quot;%4&quot;</source>
+        <translation>Boceto «%1»: el atributo SVG «%2» está mal formado en el carácter %3: orden desconocida «%5» en «%4»</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: odd number of coordinates in &quot;%4&quot;</source>
+        <translation>Boceto «%1»: el atributo SVG «%2» está mal formado en el carácter %3: número impar de coordenadas en «%4»</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: unknown transform &apos;%5&apos; with %6 arguments in &quot;%4&quot;</source>
+        <translation>Boceto «%1»: el atributo SVG «%2» está mal formado en el carácter %3: transformación desconocida «%5» con %6 argumentos en «%4»</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: expected &apos;(&apos; after &apos;%5&apos; in &quot;%4&quot;</source>
+        <translation>Boceto «%1»: el atributo SVG «%2» está mal formado en el carácter %3: se esperaba «(» después de «%5» en «%4»</translation>
+    </message>
+    <message>
+        <source>Sketch &quot;%1&quot;: the SVG attribute &quot;%2&quot; is malformed at character %3: missing &apos;)&apos; after &apos;%5&apos; in &quot;%4&quot;</source>
+        <translation>Boceto «%1»: el atributo SVG «%2» está mal formado en el carácter %3: falta «)» después de «%5» en «%4»</translation>
+    </message>
+    <message>
+        <source>%1 must be a list of %2 numbers</source>
+        <translation>%1 debe ser una lista de %2 números</translation>
+    </message>
+    <message>
+        <source>%1 must be a list of 4 numbers [w, x, y, z]</source>
+        <translation>%1 debe ser una lista de 4 números [w, x, y, z]</translation>
+    </message>
+    <message>
+        <source>%1 must be an object</source>
+        <translation>%1 debe ser un objeto</translation>
+    </message>
+    <message>
+        <source>%1 has an unknown field &quot;%2&quot;</source>
+        <translation>%1 tiene un campo desconocido «%2»</translation>
+    </message>
+    <message>
+        <source>%1 must be a number</source>
+        <translation>%1 debe ser un número</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number</source>
+        <translation>%1 debe ser un número finito</translation>
+    </message>
+    <message>
+        <source>%1 must be true or false</source>
+        <translation>%1 debe ser true o false</translation>
+    </message>
+    <message>
+        <source>%1 must be text</source>
+        <translation>%1 debe ser texto</translation>
+    </message>
+    <message>
+        <source>%1 is a zero quaternion</source>
+        <translation>%1 es un cuaternión nulo</translation>
+    </message>
+    <message>
+        <source>%1 is not a joint id</source>
+        <translation>%1 no es un identificador de articulación</translation>
+    </message>
+    <message>
+        <source>%1 must be a joint id (a non-negative integer)</source>
+        <translation>%1 debe ser un identificador de articulación (un entero no negativo)</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>
@@ -2494,30 +2598,6 @@
         <translation>Desactivado: skinning por mezcla lineal</translation>
     </message>
     <message>
-        <source>&amp;Weights</source>
-        <translation>&amp;Pesos</translation>
-    </message>
-    <message>
-        <source>&amp;Off</source>
-        <translation>&amp;Desactivado</translation>
-    </message>
-    <message>
-        <source>&amp;Selected Bone (select its joint)</source>
-        <translation>Hueso &amp;seleccionado (seleccione su articulación)</translation>
-    </message>
-    <message>
-        <source>&amp;Dominant Bone</source>
-        <translation>Hueso &amp;dominante</translation>
-    </message>
-    <message>
-        <source>&amp;Influence Count</source>
-        <translation>Número de &amp;influencias</translation>
-    </message>
-    <message>
-        <source>Difference from &amp;Global Weights</source>
-        <translation>Diferencia con los pesos &amp;globales</translation>
-    </message>
-    <message>
         <source>Weights of the selected joint&apos;s bone: blue 0, green 0.5, red 1, dark blue none</source>
         <translation>Pesos del hueso de la articulación seleccionada: azul 0, verde 0,5, rojo 1, azul oscuro ninguno</translation>
     </message>
@@ -2648,18 +2728,6 @@
     <message>
         <source>The new language applies when RigMesh Studio starts again.</source>
         <translation>El nuevo idioma se aplicará cuando RigMesh Studio se vuelva a iniciar.</translation>
-    </message>
-    <message>
-        <source>Weight View</source>
-        <translation>Vista de pesos</translation>
-    </message>
-    <message>
-        <source> Weights: </source>
-        <translation> Pesos: </translation>
-    </message>
-    <message>
-        <source>Colour the surface by its skin weights (View &gt; Weights)</source>
-        <translation>Colorear la superficie según sus pesos de piel (Vista &gt; Pesos)</translation>
     </message>
     <message>
         <source>&amp;Auto-Rig Part</source>
@@ -3661,6 +3729,45 @@ Sin rig: importada como malla estática. Herramientas &gt; Rig automático de la
     <message>
         <source>Connect Bone</source>
         <translation>Conectar hueso</translation>
+    </message>
+</context>
+<context>
+    <name>rigmesh::widgets::WeightViewChooser</name>
+    <message>
+        <source>&amp;Weights</source>
+        <translation>&amp;Pesos</translation>
+    </message>
+    <message>
+        <source>&amp;Off</source>
+        <translation>&amp;Desactivado</translation>
+    </message>
+    <message>
+        <source>&amp;Selected Bone (select its joint)</source>
+        <translation>Hueso &amp;seleccionado (seleccione su articulación)</translation>
+    </message>
+    <message>
+        <source>&amp;Dominant Bone</source>
+        <translation>Hueso &amp;dominante</translation>
+    </message>
+    <message>
+        <source>&amp;Influence Count</source>
+        <translation>Número de &amp;influencias</translation>
+    </message>
+    <message>
+        <source>Difference from &amp;Global Weights</source>
+        <translation>Diferencia con los pesos &amp;globales</translation>
+    </message>
+    <message>
+        <source>Weight View</source>
+        <translation>Vista de pesos</translation>
+    </message>
+    <message>
+        <source> Weights: </source>
+        <translation> Pesos: </translation>
+    </message>
+    <message>
+        <source>Colour the surface by its skin weights (View &gt; Weights)</source>
+        <translation>Colorear la superficie según sus pesos de piel (Vista &gt; Pesos)</translation>
     </message>
 </context>
 <context>

@@ -135,8 +135,8 @@ int runBuild(const std::vector<std::string>& arguments) {
         writeTextFile(*svg, debugSvg(result.surface, {skeletonOverlay(part.skeleton)}));
     if (auto stats = line.value("--stats"))
         writeTextFile(*stats, statistics.dump(2) + "\n");
-    if (!part.weights.warning.empty())
-        std::fprintf(stderr, "rigmesh: warning: %s\n", part.weights.warning.c_str());
+    for (const Message& warning : part.weights.warnings)
+        std::fprintf(stderr, "rigmesh: warning: %s\n", englishText(warning).c_str());
     std::fputs(buildSummary(statistics).c_str(), stdout);
     return 0;
 }

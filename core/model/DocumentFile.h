@@ -71,8 +71,10 @@ inline constexpr const char* kFormatName = "rigmesh-studio-document";
 // 5: imported rigs kept whole: disconnected bones (skeleton "attachments"),
 // the bones' rest frames ("boneFrames") and a shared skeleton's meshes
 // ("meshPieces"), each written only when present, so older files read as
-// they are (DocumentMigration.h).
-inline constexpr int kFormatVersion = 5;
+// they are (DocumentMigration.h);
+// 6: skin weight notes as message ids and arguments, not English
+// ("warnings"; DocumentMigration.h converts older files' "warning").
+inline constexpr int kFormatVersion = 6;
 inline constexpr const char* kSuffix = "rigmesh";
 
 QByteArray toBytes(const DocumentContents& contents);

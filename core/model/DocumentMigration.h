@@ -13,6 +13,9 @@
 //     optional keys that an older file lacks: its skeletons are connected
 //     trees, which read unchanged. The number says an older studio cannot
 //     read what a version 5 file may hold.
+//   5 -> 6 (weight notes as ids): a part's weights "warning", an English
+//     sentence, becomes "warnings" [{"id", "args"}] (part/PartJson.cpp), so
+//     the studio can show it in the user's language.
 #pragma once
 
 #include <cstdint>

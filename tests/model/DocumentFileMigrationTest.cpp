@@ -129,5 +129,37 @@ TEST_F(VersionOneDocument, SavesAsTheCurrentVersionAndReadsBackExactly) {
     EXPECT_EQ(DocumentFile::toBytes(back), saved);
 }
 
+// Format 5 and older kept the notes of the skin weights as one English
+// sentence (rig/BoneHeatSolver's wording then); they open as ids and
+// arguments, which the studio shows in the user's language.
+TEST(VersionFiveDocument, EnglishWeightNotesOpenAsMessageIds) {
+    const DocumentContents today = DocumentFile::fromBytes(DocumentFile::toBytes(
+        DocumentFile::fromBytes(fileBytes(kFolder + "y_branch_bone_deleted_v1.rigmesh"))));
+    auto asVersionFive = [&](const std::string& sentence) {
+        nlohmann::json root = documentJson(DocumentFile::toBytes(today));
+        root["version"] = 5;
+        nlohmann::json& weights = root["parts"][0]["part"]["weights"];
+        weights.erase("warnings");
+        weights["warning"] = sentence;
+        const DocumentContents read = DocumentFile::fromBytes(documentBytes(root));
+        return read.parts.at(0).part->weights.warnings;
+    };
+    const std::string solved =
+        "Skin weights could not be solved for bones 0, 1; nearest-bone weights are used "
+        "instead. 12 vertices see no bone from inside the shape and are heated by their "
+        "nearest bone.";
+    const std::vector<Message> notes = asVersionFive(solved);
+    EXPECT_EQ(notes, (std::vector<Message>{{MessageId::WeightsBonesUnsolved, {"0, 1"}},
+                                           {MessageId::WeightsVerticesSeeNoBone, {"12"}}}));
+    EXPECT_EQ(englishText(notes), solved) << "the same words as before";
+    EXPECT_EQ(asVersionFive("Skin weights could not be solved for bone 1; nearest-bone weights "
+                            "are used instead."),
+              (std::vector<Message>{{MessageId::WeightsBoneUnsolved, {"1"}}}));
+    EXPECT_EQ(asVersionFive("Skin weights could not be solved for bones 0, 1 (the heat system "
+                            "could not be factored); nearest-bone weights are used instead."),
+              (std::vector<Message>{{MessageId::WeightsNotFactored, {}}}));
+    EXPECT_TRUE(asVersionFive("").empty());
+}
+
 }  // namespace
 }  // namespace rigmesh::model::test

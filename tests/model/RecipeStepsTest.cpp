@@ -256,9 +256,9 @@ TEST(RecipeSteps, ErrorsNameTheStepItsCommandAndTheReason) {
         {{{"command", "sketch"}, {"points", {{0, 0}, {1, 0}}}}, "step 1 (sketch): "},
         {{{"command", "sketch"}}, "step 1 (sketch): the step needs either \"stroke\""},
         {{{"command", "sketch"}, {"points", {{0, 0}, {1}}}},
-         "step 1 (sketch): point 2 of \"points\" must be a list of 2 numbers"},
+         "step 1 (sketch): \"points\" [2] must be a list of 2 numbers"},
         {{{"command", "move"}, {"part", 0}, {"placement", {{"rotation", {0, 0, 0, 0}}}}},
-         "step 1 (move): the placement's \"rotation\" is a zero quaternion"},
+         "step 1 (move): \"placement\" \"rotation\" is a zero quaternion"},
         {{{"command", "rebuild"}, {"part", 0}, {"options", {{"edgeLength", -1}}}},
          "step 1 (rebuild): \"edgeLength\" must be 0 (automatic) or a positive length"},
         {{{"command", "pose"}, {"part", 1}}, "step 1 (pose): the step needs either \"joint\""},
@@ -269,7 +269,7 @@ TEST(RecipeSteps, ErrorsNameTheStepItsCommandAndTheReason) {
         {{{"command", "pose"}, {"part", 1}, {"rotations", {{"424242", {1, 0, 0, 0}}}}},
          "step 1 (pose): part \"arm\" has no joint 424242"},
         {{{"command", "pose"}, {"part", 1}, {"rotations", {{"x", {1, 0, 0, 0}}}}},
-         "step 1 (pose): the joint id \"x\" is not a joint id"},
+         "step 1 (pose): \"rotations\" \"x\" is not a joint id"},
         {{{"command", "key"}, {"part", 1}, {"time", "soon"}},
          "step 1 (key): \"time\" must be a number"},
         {{{"command", "delete_key"}, {"part", 1}, {"time", 3.0}},
@@ -368,7 +368,7 @@ TEST(RecipeSteps, ABadStepLeavesTheDocumentAsAfterThePreviousStep) {
     } catch (const RecipeError& error) {
         EXPECT_EQ(error.step(), 4);
         EXPECT_EQ(error.command(), "move");
-        EXPECT_EQ(error.reason(), "the placement's \"translation\" must be a number");
+        EXPECT_EQ(error.reason(), "\"placement\" \"translation\" must be a number");
     }
     EXPECT_EQ(bytesOf(document), bytesOf(reference));
     EXPECT_EQ(document.undoStack()->count(), reference.undoStack()->count());

@@ -6,6 +6,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QLabel>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QStatusBar>
@@ -111,6 +112,36 @@ TEST_F(WeightsStudio, LockingABoneInTheWeightsPanelStopsItsPaintUntilUnlocked) {
             dock->raise();
     QTest::qWait(50);
     window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_weights_panel.png"));
+}
+
+// The notes the heat solver left with the weights (a bone that fell back to
+// nearest-bone weights) are shown above the bone list, and go with them.
+TEST_F(WeightsStudio, WeightsPanelShowsTheNotesTheWeightsCarry) {
+    const model::PartId biped = addExampleBiped();
+    document()->setSelection({biped, shoulder()});
+    QTest::qWait(20);
+    auto* notes = panel()->findChild<QLabel*>(QStringLiteral("weightNotes"));
+    ASSERT_NE(notes, nullptr);
+    EXPECT_TRUE(notes->isHidden()) << notes->text().toStdString();
+    auto noted = std::make_shared<Part>(part());
+    const Message fellBack{MessageId::WeightsBoneUnsolved, {"2"}};
+    noted->weights.warnings = {fellBack};
+    document()->replaceSkinning(biped, noted);
+    QTest::qWait(20);
+    EXPECT_FALSE(notes->isHidden());
+    EXPECT_EQ(notes->text().toStdString(), englishText(fellBack));
+    // Saved as an id and its arguments, and read back the same.
+    const QByteArray bytes = model::DocumentFile::toBytes(*document());
+    EXPECT_TRUE(bytes.contains("\"boneUnsolved\"")) << "documents keep ids, not English";
+    EXPECT_FALSE(bytes.contains("could not be solved"));
+    const model::DocumentContents read = model::DocumentFile::fromBytes(bytes);
+    EXPECT_EQ(read.parts.front().part->weights.warnings, std::vector<Message>{fellBack});
+    document()->undoStack()->clear();
+    auto clean = std::make_shared<Part>(part());
+    clean->weights.warnings.clear();
+    document()->replaceSkinning(biped, clean);
+    QTest::qWait(20);
+    EXPECT_TRUE(notes->isHidden());
 }
 
 // A stroke with X-mirror on paints the other arm too (the head's bone,

@@ -63,6 +63,12 @@ WeightsPanel::WeightsPanel(QWidget* parent) : QWidget(parent) {
     title_->setStyleSheet(QStringLiteral("font-weight: bold"));
     title_->setWordWrap(true);
     layout->addWidget(title_);
+    notes_ = new QLabel(this);
+    notes_->setObjectName(QStringLiteral("weightNotes"));
+    notes_->setWordWrap(true);
+    notes_->setStyleSheet(QStringLiteral("color: #b35c00"));
+    notes_->hide();
+    layout->addWidget(notes_);
 
     bones_ = makeTable(this, {tr("Bone"), tr("Leads"), tr("Lock")}, "weightBones");
     bones_->setToolTip(
@@ -156,6 +162,7 @@ void WeightsPanel::refreshBones() {
     if (!node || node->part->skeleton.boneCount() == 0) {
         title_->setText(node ? tr("%1 has no skeleton").arg(node->name)
                              : tr("Select a part to see its bones' weights"));
+        notes_->hide();
         refreshing_ = false;
         return;
     }
@@ -167,6 +174,12 @@ void WeightsPanel::refreshBones() {
                         .arg(node->name, model::countText(part.skeleton.boneCount(), tr("1 bone"),
                                                           tr("%1 bones")))
                         .arg(part.lockedBones.size()));
+    // What the solver fell back on (rig/BoneHeatSolver.h), in the user's language.
+    QStringList notes;
+    for (const Message& warning : part.weights.warnings)
+        notes << model::messageText(warning);
+    notes_->setText(notes.join(QLatin1Char('\n')));
+    notes_->setVisible(!notes.isEmpty());
     bones_->setRowCount(part.skeleton.boneCount());
     for (int b = 0; b < part.skeleton.boneCount(); ++b) {
         const BoneId id = part.skeleton.bones()[b].id;

@@ -54,6 +54,7 @@ class WeightsPanel : public QWidget {
     QPointer<model::Document> document_;
     QPointer<Viewport> viewport_;
     QLabel* title_;
+    QLabel* notes_;  // the weights' warnings (a bone that fell back), if any
     QTableWidget* bones_;
     QLabel* vertexTitle_;
     QTableWidget* vertex_;

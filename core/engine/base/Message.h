@@ -328,6 +328,17 @@ enum class MessageId {
     SketchNotSvg,
     SketchNoSvgRoot,
     SketchSvgNoStroke,
+    SvgExpectedLetter,
+    SvgExpectedName,
+    SvgExpectedNumber,
+    SvgNumberOutOfRange,
+    SvgExpectedArcFlag,
+    SvgPathWithoutMoveto,
+    SvgUnknownPathCommand,
+    SvgOddCoordinateCount,
+    SvgUnknownTransform,
+    SvgTransformWithoutOpening,
+    SvgTransformWithoutClosing,
 
     // Exports (io/)
     ExportGltfInvalidJson,
@@ -411,6 +422,23 @@ enum class MessageId {
     RecipePointsList,
     RecipeRotationsObject,
     RecipeRotationsJointTwice,
+    RecipeFieldNumberList,
+    RecipeFieldQuaternionList,
+    RecipeFieldObject,
+    RecipeFieldUnknown,
+    RecipeFieldNumber,
+    RecipeFieldFiniteNumber,
+    RecipeFieldTrueOrFalse,
+    RecipeFieldText,
+    RecipeFieldZeroQuaternion,
+    RecipeFieldNotJointId,
+    RecipeFieldJointIdType,
+
+    // Skin weight notes (rig/BoneHeatSolver): warnings a part keeps with its weights
+    WeightsBoneUnsolved,
+    WeightsBonesUnsolved,
+    WeightsNotFactored,
+    WeightsVerticesSeeNoBone,
 
     Count  // not a message: the number of ids
 };
@@ -419,6 +447,8 @@ enum class MessageId {
 struct Message {
     MessageId id = MessageId::None;
     std::vector<std::string> args;
+
+    friend bool operator==(const Message&, const Message&) = default;
 };
 
 // The English template of `id`, e.g. "The part has no bone %1." (empty for None).
@@ -432,6 +462,8 @@ std::string fillMessage(std::string_view text, const std::vector<std::string>& a
 
 // The English text of `message`.
 std::string englishText(const Message& message);
+// The English texts of `messages` on one line, separated by spaces.
+std::string englishText(const std::vector<Message>& messages);
 
 // A number for a message: three significant digits ("0.000215", "1.5e+06").
 std::string shortNumber(double value);

@@ -170,6 +170,22 @@ const char* messageTemplate(MessageId id) {
                 "EngineMessage",
                 "One part lies entirely inside the other, so merging would only delete it. Drag "
                 "it so that it sticks out of the other part, then merge.");
+        case MessageId::WeightsBoneUnsolved:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Skin weights could not be solved for bone %1; "
+                                        "nearest-bone weights are used instead.");
+        case MessageId::WeightsBonesUnsolved:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Skin weights could not be solved for bones %1; "
+                                        "nearest-bone weights are used instead.");
+        case MessageId::WeightsNotFactored:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "The skin weights' heat system could not be factored; "
+                                        "every bone uses nearest-bone weights instead.");
+        case MessageId::WeightsVerticesSeeNoBone:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "%1 vertices see no bone from inside the shape and are "
+                                        "heated by their nearest bone.");
         case MessageId::LocalWeightsUnsolved:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
@@ -585,6 +601,13 @@ std::string fillMessage(std::string_view text, const std::vector<std::string>& a
 
 std::string englishText(const Message& message) {
     return fillMessage(messageTemplate(message.id), message.args);
+}
+
+std::string englishText(const std::vector<Message>& messages) {
+    std::string text;
+    for (const Message& message : messages)
+        text += (text.empty() ? "" : " ") + englishText(message);
+    return text;
 }
 
 std::string shortNumber(double value) {

@@ -199,6 +199,52 @@ const char* fileMessageTemplate(MessageId id) {
         case MessageId::SketchNoSvgRoot:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage", "Sketch \"%1\" is not an SVG document (no <svg> root element).");
+        case MessageId::SvgExpectedLetter:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Sketch \"%1\": the SVG attribute \"%2\" is malformed at "
+                                        "character %3: expected a letter in \"%4\"");
+        case MessageId::SvgExpectedName:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Sketch \"%1\": the SVG attribute \"%2\" is malformed at "
+                                        "character %3: expected a name in \"%4\"");
+        case MessageId::SvgExpectedNumber:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Sketch \"%1\": the SVG attribute \"%2\" is malformed at "
+                                        "character %3: expected a number in \"%4\"");
+        case MessageId::SvgNumberOutOfRange:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Sketch \"%1\": the SVG attribute \"%2\" is malformed at "
+                                        "character %3: number out of range in \"%4\"");
+        case MessageId::SvgExpectedArcFlag:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Sketch \"%1\": the SVG attribute \"%2\" is malformed at "
+                                        "character %3: expected an arc flag (0 or 1) in \"%4\"");
+        case MessageId::SvgPathWithoutMoveto:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Sketch \"%1\": the SVG attribute \"%2\" is malformed at character %3: path data "
+                "must start with a moveto command (M or m) in \"%4\"");
+        case MessageId::SvgUnknownPathCommand:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Sketch \"%1\": the SVG attribute \"%2\" is malformed at "
+                                        "character %3: unknown command '%5' in \"%4\"");
+        case MessageId::SvgOddCoordinateCount:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Sketch \"%1\": the SVG attribute \"%2\" is malformed at "
+                                        "character %3: odd number of coordinates in \"%4\"");
+        case MessageId::SvgUnknownTransform:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "Sketch \"%1\": the SVG attribute \"%2\" is malformed at character %3: unknown "
+                "transform '%5' with %6 arguments in \"%4\"");
+        case MessageId::SvgTransformWithoutOpening:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Sketch \"%1\": the SVG attribute \"%2\" is malformed at "
+                                        "character %3: expected '(' after '%5' in \"%4\"");
+        case MessageId::SvgTransformWithoutClosing:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Sketch \"%1\": the SVG attribute \"%2\" is malformed at "
+                                        "character %3: missing ')' after '%5' in \"%4\"");
         case MessageId::SketchSvgNoStroke:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",

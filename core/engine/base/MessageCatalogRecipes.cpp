@@ -148,6 +148,30 @@ const char* recipeMessageTemplate(MessageId id) {
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
                 "\"rotations\" must be an object {\"<joint id>\": [w, x, y, z], ...}");
+        case MessageId::RecipeFieldNumberList:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "%1 must be a list of %2 numbers");
+        case MessageId::RecipeFieldQuaternionList:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "%1 must be a list of 4 numbers [w, x, y, z]");
+        case MessageId::RecipeFieldObject:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "%1 must be an object");
+        case MessageId::RecipeFieldUnknown:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "%1 has an unknown field \"%2\"");
+        case MessageId::RecipeFieldNumber:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "%1 must be a number");
+        case MessageId::RecipeFieldFiniteNumber:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "%1 must be a finite number");
+        case MessageId::RecipeFieldTrueOrFalse:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "%1 must be true or false");
+        case MessageId::RecipeFieldText:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "%1 must be text");
+        case MessageId::RecipeFieldZeroQuaternion:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "%1 is a zero quaternion");
+        case MessageId::RecipeFieldNotJointId:
+            return RIGMESH_TRANSLATABLE("EngineMessage", "%1 is not a joint id");
+        case MessageId::RecipeFieldJointIdType:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "%1 must be a joint id (a non-negative integer)");
         case MessageId::RecipeRotationsJointTwice:
             return RIGMESH_TRANSLATABLE("EngineMessage", "\"rotations\" names joint %1 twice");
         default:

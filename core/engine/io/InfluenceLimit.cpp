@@ -47,7 +47,7 @@ template <typename Weights>
 Weights limited(const Weights& weights, int maxInfluences) {
     Weights out;
     out.failedBones = weights.failedBones;
-    out.warning = weights.warning;
+    out.warnings = weights.warnings;
     out.perVertex.reserve(weights.perVertex.size());
     for (const auto& list : weights.perVertex)
         out.perVertex.push_back(limitVertex(list, maxInfluences));

@@ -68,7 +68,8 @@ std::string rigToJson(const Part& part, const std::string& meshFile) {
         rig["weights"].push_back(std::move(influences));
     }
     rig["failed_bones"] = byIndex.failedBones;
-    rig["warning"] = byIndex.warning;
+    // One English line, as the command line prints it (the file is for tools).
+    rig["warning"] = englishText(byIndex.warnings);
     return rig.dump(1) + "\n";
 }
 

@@ -31,7 +31,7 @@ SkinWeightsById weightsById(const Skeleton& skeleton, const SkinWeights& weights
     result.perVertex = listsById(skeleton, weights.perVertex);
     for (int bone : weights.failedBones)
         result.failedBones.push_back(skeleton.bones()[bone].id);
-    result.warning = weights.warning;
+    result.warnings = weights.warnings;
     return result;
 }
 
@@ -54,7 +54,7 @@ SkinWeights weightsByIndex(const Skeleton& skeleton, const SkinWeightsById& weig
     }
     for (BoneId bone : weights.failedBones)
         result.failedBones.push_back(indexOf(bone));
-    result.warning = weights.warning;
+    result.warnings = weights.warnings;
     return result;
 }
 

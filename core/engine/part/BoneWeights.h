@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/Message.h"
 #include "rig/BoneHeatSolver.h"
 #include "rig/Skeleton.h"
 
@@ -27,8 +28,9 @@ struct SkinWeightsById {
     WeightsById perVertex;
     // Bones whose heat solve failed and which use nearest-bone weights instead.
     std::vector<BoneId> failedBones;
-    // A note for the user when anything fell back; empty otherwise.
-    std::string warning;
+    // Notes for the user when anything fell back; empty otherwise. Documents
+    // keep them as ids and arguments (part/PartJson.cpp), never as English.
+    std::vector<Message> warnings;
 
     bool operator==(const SkinWeightsById&) const = default;
 };

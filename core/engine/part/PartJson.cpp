@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 
 #include "base/JsonRead.h"
 #include "base/JsonWrite.h"
@@ -36,6 +37,51 @@ json boneNamesJson(const std::map<BoneId, std::string>& names) {
     json out = json::array();
     for (const auto& [bone, name] : names)
         out.push_back(json::array({bone, name}));
+    return out;
+}
+
+// The weight notes a document may hold, by a name that stays when MessageIds
+// are renumbered: documents keep ids and arguments, and the studio shows the
+// text in the user's language (base/Message.h).
+struct WeightWarningKind {
+    const char* name;
+    MessageId id;
+    std::size_t argumentCount;
+};
+constexpr std::array<WeightWarningKind, 4> kWeightWarnings = {{
+    {"boneUnsolved", MessageId::WeightsBoneUnsolved, 1},
+    {"bonesUnsolved", MessageId::WeightsBonesUnsolved, 1},
+    {"notFactored", MessageId::WeightsNotFactored, 0},
+    {"verticesSeeNoBone", MessageId::WeightsVerticesSeeNoBone, 1},
+}};
+
+json warningsJson(const std::vector<Message>& warnings) {
+    json out = json::array();
+    for (const Message& warning : warnings) {
+        const auto kind = std::find_if(kWeightWarnings.begin(), kWeightWarnings.end(),
+                                       [&](const auto& k) { return k.id == warning.id; });
+        if (kind == kWeightWarnings.end())
+            throw std::logic_error("skin weights hold a warning that documents cannot store");
+        out.push_back({{"id", kind->name}, {"args", warning.args}});
+    }
+    return out;
+}
+
+std::vector<Message> readWarnings(const json& list) {
+    std::vector<Message> out;
+    for (const json& entry : list) {
+        const std::string name = text(field(entry, "id"), "weights warning id");
+        const auto kind = std::find_if(kWeightWarnings.begin(), kWeightWarnings.end(),
+                                       [&](const auto& k) { return name == k.name; });
+        if (kind == kWeightWarnings.end())
+            fail("unknown weights warning \"" + name + "\"");
+        Message warning{kind->id, {}};
+        for (const json& argument : array(entry, "args"))
+            warning.args.push_back(text(argument, "weights warning argument"));
+        if (warning.args.size() != kind->argumentCount)
+            fail("weights warning \"" + name + "\" has the wrong number of arguments");
+        out.push_back(std::move(warning));
+    }
     return out;
 }
 
@@ -101,7 +147,7 @@ json partToJson(const Part& part) {
         {"weights",
          {{"byBoneId", pairs(part.weights.perVertex)},
           {"failedBoneIds", part.weights.failedBones},
-          {"warning", part.weights.warning}}},
+          {"warnings", warningsJson(part.weights.warnings)}}},
         {"knownClosestByBoneId", pairs(part.knownClosestBones)},
         {"boneNames", boneNamesJson(part.boneNames)},
     };
@@ -312,7 +358,7 @@ Part partFromJson(const json& object) {
                                         PairValues::Weights, "skin weights");
     for (const json& b : array(weights, byIndex ? "failedBones" : "failedBoneIds"))
         part->weights.failedBones.push_back(readBone(b, part->skeleton, byIndex, "failed bone"));
-    part->weights.warning = text(field(weights, "warning"), "weights warning");
+    part->weights.warnings = readWarnings(array(weights, "warnings"));
     part->knownClosestBones = readPairs(
         array(object, byIndex ? "knownClosestBones" : "knownClosestByBoneId"), vertexCount,
         part->skeleton, byIndex, PairValues::Distances, "known closest bones");

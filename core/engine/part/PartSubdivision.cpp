@@ -124,7 +124,7 @@ SkinWeightsById carriedWeights(const SkinWeightsById& weights,
         out.perVertex.push_back(std::move(list));
     }
     out.failedBones = weights.failedBones;
-    out.warning = weights.warning;
+    out.warnings = weights.warnings;
     return out;
 }
 

@@ -440,22 +440,19 @@ SkinWeights BoneHeatSolver::solveAll() const {
             result.failedBones.push_back(b);
         }
     }
-    std::ostringstream warning;
-    if (!result.failedBones.empty()) {
-        warning << "Skin weights could not be solved for bone";
-        warning << (result.failedBones.size() > 1 ? "s" : "");
-        for (std::size_t i = 0; i < result.failedBones.size(); ++i) {
-            warning << (i == 0 ? " " : ", ") << result.failedBones[i];
-        }
-        warning << (isFactorized() ? "" : " (the heat system could not be factored)")
-                << "; nearest-bone weights are used instead.";
+    if (!isFactorized()) {
+        result.warnings.push_back({MessageId::WeightsNotFactored, {}});
+    } else if (!result.failedBones.empty()) {
+        std::string bones;
+        for (const int bone : result.failedBones)
+            bones += (bones.empty() ? "" : ", ") + std::to_string(bone);
+        result.warnings.push_back({result.failedBones.size() > 1 ? MessageId::WeightsBonesUnsolved
+                                                                 : MessageId::WeightsBoneUnsolved,
+                                   {bones}});
     }
-    if (impl_->withoutVisible > 0) {
-        warning << (result.failedBones.empty() ? "" : " ") << impl_->withoutVisible
-                << " vertices see no bone from inside the shape and are heated by their "
-                   "nearest bone.";
-    }
-    result.warning = warning.str();
+    if (impl_->withoutVisible > 0)
+        result.warnings.push_back(
+            {MessageId::WeightsVerticesSeeNoBone, {messageArgument(impl_->withoutVisible)}});
     return result;
 }
 

@@ -44,6 +44,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/Message.h"
 #include "mesh/TriMesh.h"
 #include "rig/BoneSegment.h"
 
@@ -90,8 +91,8 @@ struct SkinWeights {
     // Bones whose solve failed (non-finite bone, failed factorisation or
     // non-finite solution) and which use nearest-bone weights instead.
     std::vector<int> failedBones;
-    // A note for the user when anything fell back; empty otherwise.
-    std::string warning;
+    // Notes for the user when anything fell back; empty otherwise.
+    std::vector<Message> warnings;
 };
 
 // A vertex's closest visible bone(s) with their distance.

@@ -5,8 +5,6 @@
 #include <cmath>
 #include <utility>
 
-#include "base/Error.h"
-
 namespace rigmesh {
 
 namespace {
@@ -21,8 +19,8 @@ bool isSeparator(char c) {
 
 }  // namespace
 
-SvgNumberScanner::SvgNumberScanner(std::string_view text, std::string what)
-    : text_(text), what_(std::move(what)) {}
+SvgNumberScanner::SvgNumberScanner(std::string_view text, std::string attribute)
+    : text_(text), attribute_(std::move(attribute)) {}
 
 void SvgNumberScanner::skipSeparators() {
     while (pos_ < text_.size() && isSeparator(text_[pos_])) {
@@ -51,14 +49,14 @@ bool SvgNumberScanner::nextIsLetter() {
 
 char SvgNumberScanner::letter() {
     if (!nextIsLetter()) {
-        fail("expected a letter");
+        fail(MessageId::SvgExpectedLetter);
     }
     return text_[pos_++];
 }
 
 std::string SvgNumberScanner::word() {
     if (!nextIsLetter()) {
-        fail("expected a name");
+        fail(MessageId::SvgExpectedName);
     }
     const std::size_t begin = pos_;
     while (pos_ < text_.size() && std::isalpha(static_cast<unsigned char>(text_[pos_])) != 0) {
@@ -88,7 +86,7 @@ double SvgNumberScanner::number() {
         }
     }
     if (digits == 0) {
-        fail("expected a number");
+        fail(MessageId::SvgExpectedNumber);
     }
     if (end < text_.size() && (text_[end] == 'e' || text_[end] == 'E')) {
         std::size_t exponent = end + 1;
@@ -107,7 +105,7 @@ double SvgNumberScanner::number() {
     double value = 0.0;
     const auto result = std::from_chars(text_.data() + begin, text_.data() + end, value);
     if (result.ec != std::errc() || !std::isfinite(value)) {
-        fail("number out of range");
+        fail(MessageId::SvgNumberOutOfRange);
     }
     pos_ = end;
     return value;
@@ -118,7 +116,7 @@ bool SvgNumberScanner::flag() {
     if (pos_ < text_.size() && (text_[pos_] == '0' || text_[pos_] == '1')) {
         return text_[pos_++] == '1';
     }
-    fail("expected an arc flag (0 or 1)");
+    fail(MessageId::SvgExpectedArcFlag);
 }
 
 bool SvgNumberScanner::accept(char expected) {
@@ -130,10 +128,11 @@ bool SvgNumberScanner::accept(char expected) {
     return false;
 }
 
-void SvgNumberScanner::fail(const std::string& problem) const {
-    throw Error("The SVG " + what_ + " is malformed at character " + std::to_string(pos_ + 1) +
-                ": " + problem + " in \"" + std::string(text_.substr(0, 80)) +
-                (text_.size() > 80 ? "...\"" : "\""));
+void SvgNumberScanner::fail(MessageId problem, std::vector<std::string> details) const {
+    std::string excerpt(text_.substr(0, 80));
+    if (text_.size() > 80)
+        excerpt += "...";
+    throw SvgSyntaxError{problem, attribute_, pos_ + 1, std::move(excerpt), std::move(details)};
 }
 
 }  // namespace rigmesh

@@ -15,7 +15,7 @@ namespace {
 class PathFlattener {
   public:
     PathFlattener(std::string_view pathData, int curveSamples)
-        : scan_(pathData, "path data"), samples_(std::max(1, curveSamples)) {}
+        : scan_(pathData, "d"), samples_(std::max(1, curveSamples)) {}
 
     Polyline2 run() {
         char command = 0;
@@ -23,12 +23,12 @@ class PathFlattener {
             if (scan_.nextIsLetter()) {
                 command = scan_.letter();
             } else if (command == 0) {
-                scan_.fail("path data must start with a moveto command (M or m)");
+                scan_.fail(MessageId::SvgPathWithoutMoveto);
             }
             // Numbers without a letter repeat the previous command; after a
             // moveto they are implicit lineto commands.
             if (points_.empty() && command != 'M' && command != 'm') {
-                scan_.fail("path data must start with a moveto command (M or m)");
+                scan_.fail(MessageId::SvgPathWithoutMoveto);
             }
             if (!step(command)) {
                 break;
@@ -107,7 +107,7 @@ class PathFlattener {
                 return true;
             }
             default:
-                scan_.fail(std::string("unknown command '") + command + "'");
+                scan_.fail(MessageId::SvgUnknownPathCommand, {std::string(1, command)});
         }
     }
 

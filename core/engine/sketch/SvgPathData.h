@@ -11,7 +11,7 @@ namespace rigmesh {
 // coordinates (SVG y-down). Lines contribute their end points; every Bézier
 // segment contributes `curveSamples` points and every elliptical arc about
 // `curveSamples` points per quarter turn. A closing Z adds no point. Throws
-// rigmesh::Error on malformed data.
+// SvgSyntaxError (sketch/SvgNumberScanner.h) on malformed data.
 Polyline2 flattenSvgPathData(std::string_view pathData, int curveSamples = 16);
 
 }  // namespace rigmesh

@@ -27,12 +27,12 @@ bool isNonRendering(std::string_view name) {
 }
 
 Polyline2 pointList(const char* attribute) {
-    SvgNumberScanner scan(attribute == nullptr ? "" : attribute, "points list");
+    SvgNumberScanner scan(attribute == nullptr ? "" : attribute, "points");
     Polyline2 points;
     while (!scan.atEnd()) {
         const double x = scan.number();
         if (scan.atEnd()) {
-            scan.fail("odd number of coordinates");
+            scan.fail(MessageId::SvgOddCoordinateCount);
         }
         points.emplace_back(x, scan.number());
     }
@@ -96,8 +96,12 @@ Sketch parseSketchSvg(const std::string& text, const std::string& sourceName) {
     bool found = false;
     try {
         found = findOutline(*root, Affine2::Identity(), outline);
-    } catch (const Error& error) {
-        throw Error("Sketch \"" + sourceName + "\": " + error.what());
+    } catch (const SvgSyntaxError& error) {
+        Message message{
+            error.problem,
+            {sourceName, error.attribute, messageArgument(error.character), error.excerpt}};
+        message.args.insert(message.args.end(), error.details.begin(), error.details.end());
+        throw Error(std::move(message));
     }
     if (!found) {
         throw Error(MessageId::SketchSvgNoStroke, sourceName);

@@ -51,7 +51,7 @@ Affine2 transformFunction(const std::string& name, const std::vector<double>& ar
     if (name == "skewY" && count == 1) {
         return fromMatrix(1.0, std::tan(radians(args[0])), 0.0, 1.0, 0.0, 0.0);
     }
-    scan.fail("unknown transform '" + name + "' with " + std::to_string(count) + " arguments");
+    scan.fail(MessageId::SvgUnknownTransform, {name, std::to_string(count)});
 }
 
 }  // namespace
@@ -62,12 +62,12 @@ Affine2 parseSvgTransform(std::string_view attribute) {
     while (!scan.atEnd()) {
         const std::string name = scan.word();
         if (!scan.accept('(')) {
-            scan.fail("expected '(' after '" + name + "'");
+            scan.fail(MessageId::SvgTransformWithoutOpening, {name});
         }
         std::vector<double> args;
         while (!scan.accept(')')) {
             if (scan.atEnd()) {
-                scan.fail("missing ')' after '" + name + "'");
+                scan.fail(MessageId::SvgTransformWithoutClosing, {name});
             }
             args.push_back(scan.number());
         }

@@ -13,7 +13,8 @@ using Affine2 = Eigen::Matrix3d;
 
 // Parses a transform list such as "translate(10,20) rotate(30 5 5)": matrix,
 // translate, scale, rotate, skewX and skewY, applied right to left like SVG
-// does. An empty attribute is the identity. Throws rigmesh::Error when malformed.
+// does. An empty attribute is the identity. Throws SvgSyntaxError
+// (sketch/SvgNumberScanner.h) when malformed.
 Affine2 parseSvgTransform(std::string_view attribute);
 
 // Applies `transform` to the point `p`.

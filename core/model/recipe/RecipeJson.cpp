@@ -14,16 +14,16 @@ namespace {
 
 const json& arrayOf(const json& value, std::size_t size, const std::string& what) {
     if (!value.is_array() || value.size() != size)
-        throw Error(what + " must be a list of " + std::to_string(size) + " numbers");
+        throw Error(MessageId::RecipeFieldNumberList, what, size);
     return value;
 }
 
 void checkFields(const json& value, const std::set<std::string>& known, const std::string& what) {
     if (!value.is_object())
-        throw Error(what + " must be an object");
+        throw Error(MessageId::RecipeFieldObject, what);
     for (const auto& [key, field] : value.items()) {
         if (!known.contains(key))
-            throw Error(what + " has an unknown field \"" + key + "\"");
+            throw Error(MessageId::RecipeFieldUnknown, what, key);
     }
 }
 
@@ -64,22 +64,22 @@ json rotationsJson(const rigmesh::Pose& pose) {
 
 double readNumber(const json& value, const std::string& what) {
     if (!value.is_number())
-        throw Error(what + " must be a number");
+        throw Error(MessageId::RecipeFieldNumber, what);
     const double number = value.get<double>();
     if (!std::isfinite(number))
-        throw Error(what + " must be a finite number");
+        throw Error(MessageId::RecipeFieldFiniteNumber, what);
     return number;
 }
 
 bool readBool(const json& value, const std::string& what) {
     if (!value.is_boolean())
-        throw Error(what + " must be true or false");
+        throw Error(MessageId::RecipeFieldTrueOrFalse, what);
     return value.get<bool>();
 }
 
 std::string readText(const json& value, const std::string& what) {
     if (!value.is_string())
-        throw Error(what + " must be text");
+        throw Error(MessageId::RecipeFieldText, what);
     return value.get<std::string>();
 }
 
@@ -89,12 +89,14 @@ Vec3 readVec3(const json& value, const std::string& what) {
 }
 
 Eigen::Quaterniond readQuaternion(const json& value, const std::string& what) {
-    const json& list = arrayOf(value, 4, what + " ([w, x, y, z])");
+    if (!value.is_array() || value.size() != 4)
+        throw Error(MessageId::RecipeFieldQuaternionList, what);
+    const json& list = value;
     const Eigen::Quaterniond q(readNumber(list[0], what), readNumber(list[1], what),
                                readNumber(list[2], what), readNumber(list[3], what));
     const double norm = q.norm();
     if (!(norm > 0))
-        throw Error(what + " is a zero quaternion");
+        throw Error(MessageId::RecipeFieldZeroQuaternion, what);
     return std::abs(norm - 1.0) <= 1e-12 ? q : q.normalized();
 }
 
@@ -102,9 +104,9 @@ Placement readPlacement(const json& value, const Placement& base) {
     checkFields(value, {"translation", "rotation"}, "\"placement\"");
     Placement out = base;
     if (value.contains("translation"))
-        out.translation = readVec3(value["translation"], "the placement's \"translation\"");
+        out.translation = readVec3(value["translation"], "\"placement\" \"translation\"");
     if (value.contains("rotation"))
-        out.rotation = readQuaternion(value["rotation"], "the placement's \"rotation\"");
+        out.rotation = readQuaternion(value["rotation"], "\"placement\" \"rotation\"");
     return out;
 }
 
@@ -129,7 +131,7 @@ std::vector<Vec2> readPoints(const json& value) {
     std::vector<Vec2> out;
     out.reserve(value.size());
     for (const json& point : value) {
-        const std::string what = "point " + std::to_string(out.size() + 1) + " of \"points\"";
+        const std::string what = "\"points\" [" + std::to_string(out.size() + 1) + "]";
         const json& xy = arrayOf(point, 2, what);
         out.emplace_back(readNumber(xy[0], what), readNumber(xy[1], what));
     }
@@ -141,8 +143,8 @@ std::map<JointId, Eigen::Quaterniond> readRotations(const json& value) {
         throw Error(MessageId::RecipeRotationsObject);
     std::map<JointId, Eigen::Quaterniond> out;
     for (const auto& [key, rotation] : value.items()) {
-        const JointId joint = readJointId(json(key), "the joint id \"" + key + "\"");
-        if (!out.emplace(joint, readQuaternion(rotation, "the rotation of joint " + key)).second)
+        const JointId joint = readJointId(json(key), "\"rotations\" \"" + key + "\"");
+        if (!out.emplace(joint, readQuaternion(rotation, "\"rotations\" \"" + key + "\"")).second)
             throw Error(MessageId::RecipeRotationsJointTwice, key);
     }
     return out;
@@ -152,19 +154,19 @@ JointId readJointId(const json& value, const std::string& what) {
     std::uint64_t id = 0;
     if (value.is_number_integer()) {
         if (value.get<std::int64_t>() < 0)
-            throw Error(what + " is not a joint id");
+            throw Error(MessageId::RecipeFieldNotJointId, what);
         id = value.get<std::uint64_t>();
     } else if (value.is_string()) {
         const std::string text = value.get<std::string>();
         if (text.empty() || text.size() > 10 ||
             text.find_first_not_of("0123456789") != std::string::npos)
-            throw Error(what + " is not a joint id");
+            throw Error(MessageId::RecipeFieldNotJointId, what);
         id = std::stoull(text);
     } else {
-        throw Error(what + " must be a joint id (a non-negative integer)");
+        throw Error(MessageId::RecipeFieldJointIdType, what);
     }
     if (id >= std::numeric_limits<JointId>::max())
-        throw Error(what + " is not a joint id");
+        throw Error(MessageId::RecipeFieldNotJointId, what);
     return static_cast<JointId>(id);
 }
 

@@ -28,7 +28,9 @@ nlohmann::json pointsJson(const std::vector<Vec2>& points);
 // {"<joint id>": [w, x, y, z], ...}
 nlohmann::json rotationsJson(const rigmesh::Pose& pose);
 
-// `what` names the value in messages ("\"target\"").
+// `what` names the value in messages by its place in the recipe, in the
+// recipe's own words ("\"target\"", "\"points\" [2]", "\"plane\" \"point\""), so
+// a message reads the same in every language.
 double readNumber(const nlohmann::json& value, const std::string& what);
 bool readBool(const nlohmann::json& value, const std::string& what);
 std::string readText(const nlohmann::json& value, const std::string& what);

@@ -47,8 +47,8 @@ TEST_P(PartWeights, EveryVertexHasNonNegativeWeightsSummingToOne) {
 }
 
 TEST_P(PartWeights, NoBoneFellBack) {
-    EXPECT_TRUE(part().weights.failedBones.empty()) << part().weights.warning;
-    EXPECT_TRUE(part().weights.warning.empty()) << part().weights.warning;
+    EXPECT_TRUE(part().weights.failedBones.empty()) << englishText(part().weights.warnings);
+    EXPECT_TRUE(part().weights.warnings.empty()) << englishText(part().weights.warnings);
 }
 
 TEST_P(PartWeights, DominantBoneIsAClosestVisibleBone) {

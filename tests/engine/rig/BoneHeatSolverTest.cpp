@@ -37,7 +37,7 @@ TEST(BoneHeatSolver, WeightsArePositiveAndSumToOneOnEveryTubeVertex) {
     const SkinWeights weights = computeBoneHeatWeights(tube.mesh, tube.bones);
     expectPartitionOfUnity(weights, tube.mesh.vertexCount(), 2);
     EXPECT_TRUE(weights.failedBones.empty());
-    EXPECT_EQ(weights.warning, "");
+    EXPECT_TRUE(weights.warnings.empty()) << englishText(weights.warnings);
 }
 
 TEST(BoneHeatSolver, WeightsArePositiveAndSumToOneOnEverySphereVertex) {
@@ -175,7 +175,10 @@ TEST(BoneHeatSolver, BoneWithNanEndpointIsReportedAndVerticesStayWeighted) {
     bones.push_back({Vec3(1, 0, 0), Vec3(nan, 0, 0)});
     const SkinWeights weights = computeBoneHeatWeights(tube.mesh, bones);
     EXPECT_EQ(weights.failedBones, std::vector<int>{2});
-    EXPECT_NE(weights.warning.find("bone 2"), std::string::npos) << weights.warning;
+    ASSERT_EQ(weights.warnings.size(), 1u) << englishText(weights.warnings);
+    EXPECT_EQ(weights.warnings[0].id, MessageId::WeightsBoneUnsolved);
+    EXPECT_EQ(weights.warnings[0].args, std::vector<std::string>{"2"});
+    EXPECT_NE(englishText(weights.warnings).find("bone 2"), std::string::npos);
     expectPartitionOfUnity(weights, tube.mesh.vertexCount(), 3);
     for (const auto& list : weights.perVertex) {
         for (const auto& [bone, w] : list) {
