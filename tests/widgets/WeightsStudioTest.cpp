@@ -20,6 +20,7 @@
 #include "PartWeightOf.h"
 #include "StudioPoseFixture.h"
 #include "jobs/JobRunner.h"
+#include "model/BoneDisplayName.h"
 #include "model/DocumentFile.h"
 #include "model/recipe/RecipeRunner.h"
 #include "panels/PropertiesPanel.h"
@@ -130,15 +131,29 @@ TEST_F(WeightsStudio, WeightsPanelShowsTheNotesTheWeightsCarry) {
     QTest::qWait(20);
     EXPECT_FALSE(notes->isHidden());
     EXPECT_EQ(notes->text().toStdString(), englishText(fellBack));
+    for (auto* dock : window->findChildren<QDockWidget*>())
+        if (dock->objectName() == QStringLiteral("weightsDock"))
+            dock->raise();
+    QTest::qWait(50);
+    window->grab().save(QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_weight_notes.png"));
     // Saved as an id and its arguments, and read back the same.
     const QByteArray bytes = model::DocumentFile::toBytes(*document());
-    EXPECT_TRUE(bytes.contains("\"boneUnsolved\"")) << "documents keep ids, not English";
+    EXPECT_TRUE(bytes.contains("boneUnsolved")) << "documents keep ids, not English";
     EXPECT_FALSE(bytes.contains("could not be solved"));
     const model::DocumentContents read = model::DocumentFile::fromBytes(bytes);
     EXPECT_EQ(read.parts.front().part->weights.warnings, std::vector<Message>{fellBack});
+    // A bone the weights list as fallen back is named as the bone list names it.
+    auto failed = std::make_shared<Part>(part());
+    const BoneId second = part().skeleton.bones()[1].id;
+    failed->weights.failedBones = {second};
+    document()->replaceSkinning(biped, failed);
+    QTest::qWait(20);
+    EXPECT_TRUE(notes->text().contains(model::boneDisplayName(part(), second)))
+        << notes->text().toStdString();
     document()->undoStack()->clear();
     auto clean = std::make_shared<Part>(part());
     clean->weights.warnings.clear();
+    clean->weights.failedBones.clear();
     document()->replaceSkinning(biped, clean);
     QTest::qWait(20);
     EXPECT_TRUE(notes->isHidden());

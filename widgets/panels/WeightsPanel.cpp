@@ -176,8 +176,19 @@ void WeightsPanel::refreshBones() {
                         .arg(part.lockedBones.size()));
     // What the solver fell back on (rig/BoneHeatSolver.h), in the user's language.
     QStringList notes;
-    for (const Message& warning : part.weights.warnings)
+    for (Message warning : part.weights.warnings) {
+        // The solver numbers the bones that fell back by position; the
+        // panel names them as its bone list does.
+        const bool namesBones = warning.id == MessageId::WeightsBoneUnsolved ||
+                                warning.id == MessageId::WeightsBonesUnsolved;
+        if (namesBones && !part.weights.failedBones.empty()) {
+            QStringList names;
+            for (const BoneId bone : part.weights.failedBones)
+                names << model::boneDisplayName(part, bone);
+            warning.args = {names.join(QStringLiteral(", ")).toStdString()};
+        }
         notes << model::messageText(warning);
+    }
     notes_->setText(notes.join(QLatin1Char('\n')));
     notes_->setVisible(!notes.isEmpty());
     bones_->setRowCount(part.skeleton.boneCount());
