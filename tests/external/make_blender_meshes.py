@@ -34,6 +34,31 @@ def export_obj(obj, path):
     bpy.ops.wm.obj_export(filepath=path, export_selected_objects=True,
                           export_materials=False, export_uv=False,
                           export_normals=False, export_triangulated_mesh=True)
+    canonical_face_order(path)
+
+
+def canonical_face_order(path):
+    """Blender 3.4 gives the faces of a joined or converted object in an
+    order that changes from run to run (the vertices keep theirs), and the
+    auto-rig's result may depend on face order: the faces are written
+    sorted, each starting at its smallest vertex (orientation kept), so
+    every run checks the same file."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    faces = []
+    others = []
+    for line in lines:
+        if line.startswith("f "):
+            corners = [int(c.split("/")[0]) for c in line.split()[1:]]
+            first = corners.index(min(corners))
+            faces.append(tuple(corners[first:] + corners[:first]))
+        else:
+            others.append(line)
+    with open(path, "w") as f:
+        for line in others:
+            f.write(line + "\n")
+        for face in sorted(faces):
+            f.write("f " + " ".join(str(c) for c in face) + "\n")
 
 
 def figure(out_dir):
