@@ -146,7 +146,7 @@ void mapOriginsToRigRegions(SketchSurface& surface, const Decomposition& surface
     }
 }
 
-void mapOriginsByNearestSection(SketchSurface& surface,
+void mapOriginsByNearestSection(SketchSurface& surface, const Decomposition& surfaceRegions,
                                 const std::vector<CylinderSections>& surfaceCylinders,
                                 const Decomposition& rigRegions,
                                 const std::vector<CylinderSections>& rigCylinders) {
@@ -177,7 +177,8 @@ void mapOriginsByNearestSection(SketchSurface& surface,
                                 false))
                         .first;
             origin = found->second;
-        } else if (origin.kind == RegionKind::Cylindrical || rigRegions.connecting.empty()) {
+        } else if (origin.kind == RegionKind::Cylindrical || rigRegions.connecting.empty() ||
+                   surfaceRegions.connecting[origin.region].junctions.empty()) {
             origin = nearestSection(p, true);
         } else {
             double distance = std::numeric_limits<double>::infinity();

@@ -30,8 +30,9 @@ void mapOriginsToRigRegions(SketchSurface& surface, const Decomposition& surface
 // a ring belongs to the rig section nearest its centre over all cylinders,
 // a tip to the nearest rig section or tip, a patch vertex to the rig's
 // connecting region with the nearest junction (or, without one, to the
-// nearest section).
-void mapOriginsByNearestSection(SketchSurface& surface,
+// nearest section); a vertex of a patch with no junction of its own (a cap
+// built as a patch, surface/CapPatches.h) to the nearest section or tip.
+void mapOriginsByNearestSection(SketchSurface& surface, const Decomposition& surfaceRegions,
                                 const std::vector<CylinderSections>& surfaceCylinders,
                                 const Decomposition& rigRegions,
                                 const std::vector<CylinderSections>& rigCylinders);

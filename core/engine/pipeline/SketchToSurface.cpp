@@ -13,6 +13,7 @@
 #include "sketch/ConcaveCorners.h"
 #include "sketch/ThinPartRefinement.h"
 #include "surface/CapBases.h"
+#include "surface/CapPatches.h"
 #include "surface/EndSectionSnap.h"
 
 namespace rigmesh {
@@ -93,8 +94,7 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
             capBasesMoved = true;
         }
     }
-    const bool split =
-        rounded || capBasesMoved || !sameRegions(surfaceRegions, result.decomposition);
+    bool split = rounded || capBasesMoved || !sameRegions(surfaceRegions, result.decomposition);
     ms.decompose = clock.lap();
     auto sectionsOf = [&](const Decomposition& decomposition) {
         std::vector<CylinderSections> cylinders;
@@ -107,6 +107,11 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     result.cylinders = sectionsOf(result.decomposition);
     std::vector<CylinderSections> surfaceCylinders =
         split ? sectionsOf(surfaceRegions) : result.cylinders;
+    // A cap whose slices cannot follow its outline is a patch on the
+    // surface (CapPatches.h); the rig keeps the cap.
+    if (patchCapsWithGaps(surfaceRegions, surfaceCylinders, surfaceOptions.targetEdgeLength,
+                          options.sections))
+        split = true;
     const Decomposition& builtRegions = split ? surfaceRegions : result.decomposition;
     // The surface's sections near fixed end chords follow the outline
     // (EndSectionSnap.h); the rig's stay as smoothed, so its joints do.
@@ -120,8 +125,8 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     if (surfaceOptions.smooth)
         smoothSurface(result.surface, builtRegions, builtCylinders, surfaceOptions);
     if (rounded)
-        mapOriginsByNearestSection(result.surface, surfaceCylinders, result.decomposition,
-                                   result.cylinders);
+        mapOriginsByNearestSection(result.surface, surfaceRegions, surfaceCylinders,
+                                   result.decomposition, result.cylinders);
     else if (split)
         mapOriginsToRigRegions(result.surface, surfaceRegions, surfaceCylinders,
                                result.decomposition, result.cylinders);

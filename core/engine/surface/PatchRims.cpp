@@ -64,7 +64,7 @@ Field spread(const SketchSurface& surface, const std::vector<std::vector<int>>& 
 
 std::vector<double> inflatePatchRims(SketchSurface& surface, const Decomposition& decomposition,
                                      const std::vector<CylinderSections>& cylinders,
-                                     double rimWeight) {
+                                     double rimWeight, double capPatchWeight) {
     auto& positions = surface.mesh.vertices;
     const auto& origins = surface.origins;
     const int n = static_cast<int>(positions.size());
@@ -112,7 +112,8 @@ std::vector<double> inflatePatchRims(SketchSurface& surface, const Decomposition
             continue;
         const double near =
             portRadius > 0 ? std::clamp(toPort.distance[v] / portRadius - 1.0, 0.0, 1.0) : 1.0;
-        const double w = rimWeight * (1.0 - d / radius) * near;
+        const bool capPatch = decomposition.connecting[origin.region].junctions.empty();
+        const double w = (capPatch ? capPatchWeight : rimWeight) * (1.0 - d / radius) * near;
         if (!(w > 0))
             continue;
         const double z = std::sqrt(d * (2.0 * radius - d));

@@ -20,9 +20,11 @@ namespace rigmesh {
 
 // Lifts the connecting regions' vertices (and their mirror images) and
 // returns their soft anchor weights, at most `rimWeight`, falling to 0 at
-// distance R; other vertices get 0.
+// distance R; other vertices get 0. A region with no junction triangle (a
+// cap built as a patch, CapPatches.h) is held up to `capPatchWeight`: no
+// junction's rings shape it, so its lift is the lobe's whole shape.
 std::vector<double> inflatePatchRims(SketchSurface& surface, const Decomposition& decomposition,
                                      const std::vector<CylinderSections>& cylinders,
-                                     double rimWeight);
+                                     double rimWeight, double capPatchWeight);
 
 }  // namespace rigmesh

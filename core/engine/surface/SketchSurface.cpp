@@ -343,8 +343,8 @@ void smoothSurface(SketchSurface& surface, const Decomposition& decomposition,
                    const std::vector<CylinderSections>& cylinders, const SurfaceOptions& options) {
     constexpr double kOutlineShift = 0.5;  // target edge lengths
     std::vector<double> weights = anchorWeights(surface, decomposition, cylinders, options);
-    const std::vector<double> rims =
-        inflatePatchRims(surface, decomposition, cylinders, options.capAnchorWeight);
+    const std::vector<double> rims = inflatePatchRims(
+        surface, decomposition, cylinders, options.capAnchorWeight, options.maxAnchorWeight);
     for (std::size_t v = 0; v < weights.size(); ++v)
         weights[v] = std::max(weights[v], rims[v]);
     surface.mesh.vertices = leastSquaresMesh(surface.mesh, weights, options.maxAnchorWeight);
