@@ -177,8 +177,9 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     // into it where it has an inside nearby (autorig/BonesInside), before
     // the heat, so the weights follow the bones where they end.
     if (surface.kind == RigSurface::Kind::Proxy)
-        keepJointsInMesh(result.part.skeleton, result.part.mesh, surface.mainPiece, surface.alpha,
-                         minimum);
+        keepJointsInMesh(
+            result.part.skeleton, result.part.mesh, surface.mainPiece,
+            {surface.alpha, minimum, options.bones.coverageFraction * diagonalOf(part.mesh)});
     result.part.skeleton.reorient();
     reportRigProgress(progress, kSkeletonDone);
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "autorig/SurfaceProbe.h"
+#include "rig/BoneSegment.h"
 
 namespace rigmesh {
 
@@ -113,12 +114,36 @@ std::vector<Vec3> sphereDirections(int count) {
     return directions;
 }
 
+// The bones of `skeleton` as segments with `joint` at `p`.
+std::vector<BoneSegment> segmentsWith(const Skeleton& skeleton, JointId joint, const Vec3& p) {
+    std::vector<BoneSegment> segments;
+    for (const Bone& bone : skeleton.bones())
+        segments.push_back({bone.head == joint ? p : skeleton.joint(bone.head).position,
+                            bone.tail == joint ? p : skeleton.joint(bone.tail).position});
+    return segments;
+}
+
+// The farthest of `points` from every bone.
+double farthestFromBones(const Skeleton& skeleton, const std::vector<Vec3>& points) {
+    const std::vector<BoneSegment> segments = segmentsWith(skeleton, kNoJoint, Vec3::Zero());
+    double farthest = 0.0;
+    for (const Vec3& p : points) {
+        double nearest = INFINITY;
+        for (const BoneSegment& segment : segments)
+            nearest = std::min(nearest, pointSegmentDistance(p, segment));
+        farthest = std::max(farthest, nearest);
+    }
+    return farthest;
+}
+
 struct MeshJoints {
     const SurfaceProbe& mesh;
     const SurfaceProbe& surface;
     double clearance;
     double reach;
     double minimumBone;
+    const std::vector<Vec3>& points;
+    double coverage;
 
     bool inMesh(const Vec3& p) const { return mesh.inside(p) && mesh.distance(p) >= clearance; }
 
@@ -134,6 +159,16 @@ struct MeshJoints {
                     return false;
         }
         return true;
+    }
+
+    // With the joint at `p`, every point still within `coverage` of a bone.
+    bool keepsCovered(const Skeleton& skeleton, JointId joint, const Vec3& p) const {
+        const std::vector<BoneSegment> segments = segmentsWith(skeleton, joint, p);
+        return std::all_of(points.begin(), points.end(), [&](const Vec3& point) {
+            return std::any_of(segments.begin(), segments.end(), [&](const BoneSegment& s) {
+                return pointSegmentDistance(point, s) <= coverage;
+            });
+        });
     }
 
     // Places inside the mesh near `p`, nearest entry first: along each
@@ -222,21 +257,27 @@ BonesInsideReport keepBonesInside(Skeleton& skeleton, const TriMesh& surfaceMesh
 }
 
 JointsInMeshReport keepJointsInMesh(Skeleton& skeleton, const TriMesh& mesh, const TriMesh& surface,
-                                    double reach, double minimumBone) {
+                                    const JointsInMeshLimits& limits) {
     JointsInMeshReport report;
     if (mesh.faces.empty() || surface.faces.empty() || skeleton.boneCount() == 0)
         return report;
     const SurfaceProbe meshProbe(mesh, InsideBy::RayParity);
     const SurfaceProbe surfaceProbe(surface);
-    const MeshJoints joints{meshProbe, surfaceProbe, kClearance * meshProbe.size(), reach,
-                            minimumBone};
+    const MeshJoints joints{meshProbe,
+                            surfaceProbe,
+                            kClearance * meshProbe.size(),
+                            limits.reach,
+                            limits.minimumBone,
+                            mesh.vertices,
+                            std::max(limits.coverage, farthestFromBones(skeleton, mesh.vertices))};
     for (int round = 0; round < kMeshRounds; ++round) {
         bool changed = false;
         for (const Joint& joint : std::vector<Joint>(skeleton.joints())) {
             if (joints.inMesh(joint.position))
                 continue;
             for (const auto& [entry, q] : joints.candidates(skeleton, joint.id))
-                if (joints.bonesFit(skeleton, joint.id, q)) {
+                if (joints.bonesFit(skeleton, joint.id, q) &&
+                    joints.keepsCovered(skeleton, joint.id, q)) {
                     skeleton.setJointPosition(joint.id, q);
                     ++report.jointsMoved;
                     changed = true;

@@ -36,14 +36,21 @@ BonesInsideReport keepBonesInside(Skeleton& skeleton, const TriMesh& surface, do
 // it met (a tip may also slide along its bone into the mesh). A move is
 // kept only when every bone at the joint stays inside `surface` (9 points
 // per bone, joints included, by winding number) and no shorter than
-// `minimumBone`; where the mesh has no inside near the joint (a sheet, a
-// wing without thickness) the joint stays. The tree, its leaves and its
-// bones stay as they are; only joints move.
+// `minimumBone`, and every vertex of `mesh` stays within `coverage` of a
+// bone (or within its farthest before, if farther: autorig/BoneCoverage);
+// where the mesh has no inside near the joint (a sheet, a wing without
+// thickness) the joint stays. The tree, its leaves and its bones stay as
+// they are; only joints move.
+struct JointsInMeshLimits {
+    double reach = 0.0;
+    double minimumBone = 0.0;
+    double coverage = 0.0;
+};
 struct JointsInMeshReport {
     int jointsMoved = 0;
     int jointsOutside = 0;  // left outside at the end
 };
 JointsInMeshReport keepJointsInMesh(Skeleton& skeleton, const TriMesh& mesh, const TriMesh& surface,
-                                    double reach, double minimumBone);
+                                    const JointsInMeshLimits& limits);
 
 }  // namespace rigmesh

@@ -71,7 +71,7 @@ TEST(JointsInMesh, JointsOfAThinLimbInAFatProxyMoveIntoTheLimbKeepingTheTree) {
     skeleton.addBone(a, b);
     skeleton.addBone(b, c);
     skeleton.addBone(c, tip);
-    const JointsInMeshReport report = keepJointsInMesh(skeleton, limb, proxy, 0.1, 0.05);
+    const JointsInMeshReport report = keepJointsInMesh(skeleton, limb, proxy, {0.1, 0.05, 1.0});
     EXPECT_EQ(report.jointsMoved, 4);
     EXPECT_EQ(report.jointsOutside, 0);
     const SurfaceProbe parity(limb, InsideBy::RayParity);
@@ -95,7 +95,7 @@ TEST(JointsInMesh, AJointInAnEyeMovesOutOfItIntoTheHead) {
     const JointId eye = skeleton.addJoint(Vec3(0.5, 0, 0));
     const JointId back = skeleton.addJoint(Vec3(-0.5, 0, 0));
     skeleton.addBone(back, eye);
-    const JointsInMeshReport report = keepJointsInMesh(skeleton, head, proxy, 0.1, 0.05);
+    const JointsInMeshReport report = keepJointsInMesh(skeleton, head, proxy, {0.1, 0.05, 2.0});
     EXPECT_EQ(report.jointsMoved, 1);
     EXPECT_EQ(report.jointsOutside, 0);
     const Vec3 p = skeleton.joint(eye).position;
@@ -114,7 +114,7 @@ TEST(JointsInMesh, AJointWhereTheMeshHasNoInsideStays) {
     const JointId a = skeleton.addJoint(Vec3(-0.5, 0, 0.01));
     const JointId b = skeleton.addJoint(Vec3(0.5, 0, 0.01));
     skeleton.addBone(a, b);
-    const JointsInMeshReport report = keepJointsInMesh(skeleton, sheet, proxy, 0.1, 0.05);
+    const JointsInMeshReport report = keepJointsInMesh(skeleton, sheet, proxy, {0.1, 0.05, 2.0});
     EXPECT_EQ(report.jointsMoved, 0);
     EXPECT_EQ(report.jointsOutside, 2);
     EXPECT_EQ(skeleton.joint(a).position, Vec3(-0.5, 0, 0.01));
