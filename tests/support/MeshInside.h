@@ -1,6 +1,7 @@
 // Point-versus-closed-mesh queries written independently of the engine: the
 // generalized winding number (sum of the solid angles the triangles subtend,
-// over 4 pi; Jacobson et al. 2013) and the exact distance to the surface.
+// over 4 pi; Jacobson et al. 2013), the exact distance to the surface, and
+// ray-cast parity as tests/external/check_tails_inside_in_blender.py asks it.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 #include "mesh/TriMesh.h"
 
@@ -76,6 +78,56 @@ inline double distanceToSurface(const TriMesh& mesh, const Vec3& p) {
         best = std::min(best, (p - q).norm());
     }
     return best;
+}
+
+// Where the ray p + t d (t >= 0) meets triangle abc, or -1 (Moller and
+// Trumbore 1997).
+inline double rayHitsTriangle(const Vec3& p, const Vec3& d, const Vec3& a, const Vec3& b,
+                              const Vec3& c) {
+    const Vec3 e1 = b - a;
+    const Vec3 e2 = c - a;
+    const Vec3 h = d.cross(e2);
+    const double det = e1.dot(h);
+    if (std::abs(det) < 1e-300)
+        return -1.0;
+    const Vec3 s = p - a;
+    const double u = s.dot(h) / det;
+    const Vec3 q = s.cross(e1);
+    const double v = d.dot(q) / det;
+    if (u < 0.0 || v < 0.0 || u + v > 1.0)
+        return -1.0;
+    const double t = e2.dot(q) / det;
+    return t >= 0.0 ? t : -1.0;
+}
+
+// Inside by ray-cast parity, as check_tails_inside_in_blender.py decides
+// what Blender shows: three rays in fixed directions each cross the surface
+// (every mesh piece, overlapping or not) an odd or even number of times,
+// crossings closer together than 1e-5 of `size` counting once; inside when
+// most are odd. A point inside an eye inside a head is outside.
+inline bool insideByRayParity(const TriMesh& mesh, const Vec3& p, double size) {
+    const Vec3 rays[] = {Vec3(0.267, 0.534, 0.802).normalized(), Vec3(-0.7, 0.1, 0.3).normalized(),
+                         Vec3(0.2, -0.9, -0.35).normalized()};
+    int odd = 0;
+    for (const Vec3& d : rays) {
+        std::vector<double> hits;
+        for (const auto& f : mesh.faces) {
+            const double t = rayHitsTriangle(p, d, mesh.vertices[f[0]], mesh.vertices[f[1]],
+                                             mesh.vertices[f[2]]);
+            if (t >= 0.0)
+                hits.push_back(t);
+        }
+        std::sort(hits.begin(), hits.end());
+        int crossings = 0;
+        double last = -std::numeric_limits<double>::infinity();
+        for (double t : hits)
+            if (t > last + 1e-5 * size) {
+                ++crossings;
+                last = t;
+            }
+        odd += crossings % 2;
+    }
+    return 2 * odd > 3;
 }
 
 }  // namespace rigmesh::parttest

@@ -172,6 +172,14 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     // move a thin limb's joint out of it: back to the middle of the limb
     // (autorig/BonesInside).
     keepBonesInside(result.part.skeleton, surface.mainPiece, minimum);
+    // A proxy is fatter than the mesh it wraps: joints it holds can lie
+    // outside the mesh the part keeps, and show so in Blender. They move
+    // into it where it has an inside nearby (autorig/BonesInside), before
+    // the heat, so the weights follow the bones where they end.
+    if (surface.kind == RigSurface::Kind::Proxy)
+        keepJointsInMesh(
+            result.part.skeleton, result.part.mesh, surface.mainPiece,
+            {surface.alpha, minimum, options.bones.coverageFraction * diagonalOf(part.mesh)});
     result.part.skeleton.reorient();
     reportRigProgress(progress, kSkeletonDone);
 

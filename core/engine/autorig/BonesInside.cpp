@@ -1,11 +1,14 @@
 #include "autorig/BonesInside.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include "autorig/SurfaceProbe.h"
+#include "rig/BoneSegment.h"
 
 namespace rigmesh {
 
@@ -18,6 +21,13 @@ constexpr int kSamples = 8;
 // A tip outside slides along its bone past where it enters the surface by
 // this fraction of the way to the joint it hangs from.
 constexpr double kTipDepth = 0.15;
+// A joint inside the mesh keeps this fraction of its size from the surface,
+// far above single precision (what Blender keeps of a position).
+constexpr double kClearance = 1e-4;
+// Directions searched from a joint outside the mesh (a Fibonacci sphere).
+constexpr int kSearchRays = 96;
+// Rounds of moving joints into the mesh (a move turns its neighbours' limb).
+constexpr int kMeshRounds = 3;
 
 Vec3 otherEnd(const Skeleton& skeleton, BoneId bone, JointId joint) {
     const Bone& b = skeleton.bone(bone);
@@ -92,6 +102,122 @@ int pointsOutside(const Skeleton& skeleton, const SurfaceProbe& surface) {
     return outside;
 }
 
+// Directions evenly spread over the sphere (a Fibonacci lattice).
+std::vector<Vec3> sphereDirections(int count) {
+    std::vector<Vec3> directions;
+    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+    for (int i = 0; i < count; ++i) {
+        const double z = 1.0 - (2.0 * i + 1.0) / count;
+        const double r = std::sqrt(1.0 - z * z);
+        directions.emplace_back(r * std::cos(golden * i), r * std::sin(golden * i), z);
+    }
+    return directions;
+}
+
+// The bones of `skeleton` as segments with `joint` at `p`.
+std::vector<BoneSegment> segmentsWith(const Skeleton& skeleton, JointId joint, const Vec3& p) {
+    std::vector<BoneSegment> segments;
+    for (const Bone& bone : skeleton.bones())
+        segments.push_back({bone.head == joint ? p : skeleton.joint(bone.head).position,
+                            bone.tail == joint ? p : skeleton.joint(bone.tail).position});
+    return segments;
+}
+
+// The farthest of `points` from every bone.
+double farthestFromBones(const Skeleton& skeleton, const std::vector<Vec3>& points) {
+    const std::vector<BoneSegment> segments = segmentsWith(skeleton, kNoJoint, Vec3::Zero());
+    double farthest = 0.0;
+    for (const Vec3& p : points) {
+        double nearest = INFINITY;
+        for (const BoneSegment& segment : segments)
+            nearest = std::min(nearest, pointSegmentDistance(p, segment));
+        farthest = std::max(farthest, nearest);
+    }
+    return farthest;
+}
+
+struct MeshJoints {
+    const SurfaceProbe& mesh;
+    const SurfaceProbe& surface;
+    double clearance;
+    double reach;
+    double minimumBone;
+    const std::vector<Vec3>& points;
+    double coverage;
+
+    bool inMesh(const Vec3& p) const { return mesh.inside(p) && mesh.distance(p) >= clearance; }
+
+    // Every bone at `joint` with the joint at `p`: long enough, inside the
+    // rig surface at 9 points.
+    bool bonesFit(const Skeleton& skeleton, JointId joint, const Vec3& p) const {
+        for (BoneId bone : skeleton.bonesAt(joint)) {
+            const Vec3 other = otherEnd(skeleton, bone, joint);
+            if ((other - p).norm() < minimumBone)
+                return false;
+            for (int i = 0; i <= kSamples; ++i)
+                if (!surface.inside(p + (other - p) * (i / double(kSamples))))
+                    return false;
+        }
+        return true;
+    }
+
+    // With the joint at `p`, every point still within `coverage` of a bone.
+    bool keepsCovered(const Skeleton& skeleton, JointId joint, const Vec3& p) const {
+        const std::vector<BoneSegment> segments = segmentsWith(skeleton, joint, p);
+        return std::all_of(points.begin(), points.end(), [&](const Vec3& point) {
+            return std::any_of(segments.begin(), segments.end(), [&](const BoneSegment& s) {
+                return pointSegmentDistance(point, s) <= coverage;
+            });
+        });
+    }
+
+    // Places inside the mesh near `p`, nearest entry first: along each
+    // search ray, past every wall within the search radius, halfway to the
+    // next wall (or the radius), after the middle of the cross-section there.
+    std::vector<std::pair<double, Vec3>> candidates(const Skeleton& skeleton, JointId joint) const {
+        const Vec3 p = skeleton.joint(joint).position;
+        const double radius = 2.0 * surface.distance(p) + reach;
+        const Vec3 limb = limbDirection(skeleton, joint);
+        std::vector<std::pair<double, Vec3>> found;
+        // The middle of the limb there first (a sketched part's joints sit
+        // on its chordal axis, paper 2.1), else the point past the wall.
+        const auto add = [&](double entry, const Vec3& q) {
+            if (!inMesh(q))
+                return;
+            const std::optional<Vec3> middle = mesh.middleOfCrossSection(q, limb);
+            if (middle && (*middle - p).norm() <= radius && inMesh(*middle))
+                found.emplace_back(entry, *middle);
+            found.emplace_back(entry, q);
+        };
+        for (const Vec3& ray : sphereDirections(kSearchRays)) {
+            const std::vector<double> walls = mesh.walls(p, ray);
+            for (std::size_t k = 0; k < walls.size() && walls[k] < radius; ++k) {
+                const double next = k + 1 < walls.size() ? walls[k + 1] : radius;
+                add(walls[k], p + ray * (walls[k] + 0.5 * (std::min(next, radius) - walls[k])));
+            }
+        }
+        // A tip slides along its bone into the mesh.
+        const std::vector<BoneId> bones = skeleton.bonesAt(joint);
+        if (bones.size() == 1) {
+            const Vec3 anchor = otherEnd(skeleton, bones.front(), joint);
+            const Vec3 along = (anchor - p).normalized();
+            const std::vector<double> walls = mesh.walls(p, along);
+            if (!walls.empty() && walls.front() < (anchor - p).norm()) {
+                const double entry = walls.front();
+                const double next =
+                    std::min(walls.size() > 1 ? walls[1] : INFINITY, (anchor - p).norm());
+                const double depth =
+                    std::min(kTipDepth * ((anchor - p).norm() - entry), 0.5 * (next - entry));
+                if (inMesh(p + along * (entry + depth)))
+                    found.emplace_back(entry, p + along * (entry + depth));
+            }
+        }
+        std::stable_sort(found.begin(), found.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        return found;
+    }
+};
+
 }  // namespace
 
 BonesInsideReport keepBonesInside(Skeleton& skeleton, const TriMesh& surfaceMesh,
@@ -127,6 +253,42 @@ BonesInsideReport keepBonesInside(Skeleton& skeleton, const TriMesh& surfaceMesh
             break;
     }
     report.pointsOutside = pointsOutside(skeleton, surface);
+    return report;
+}
+
+JointsInMeshReport keepJointsInMesh(Skeleton& skeleton, const TriMesh& mesh, const TriMesh& surface,
+                                    const JointsInMeshLimits& limits) {
+    JointsInMeshReport report;
+    if (mesh.faces.empty() || surface.faces.empty() || skeleton.boneCount() == 0)
+        return report;
+    const SurfaceProbe meshProbe(mesh, InsideBy::RayParity);
+    const SurfaceProbe surfaceProbe(surface);
+    const MeshJoints joints{meshProbe,
+                            surfaceProbe,
+                            kClearance * meshProbe.size(),
+                            limits.reach,
+                            limits.minimumBone,
+                            mesh.vertices,
+                            std::max(limits.coverage, farthestFromBones(skeleton, mesh.vertices))};
+    for (int round = 0; round < kMeshRounds; ++round) {
+        bool changed = false;
+        for (const Joint& joint : std::vector<Joint>(skeleton.joints())) {
+            if (joints.inMesh(joint.position))
+                continue;
+            for (const auto& [entry, q] : joints.candidates(skeleton, joint.id))
+                if (joints.bonesFit(skeleton, joint.id, q) &&
+                    joints.keepsCovered(skeleton, joint.id, q)) {
+                    skeleton.setJointPosition(joint.id, q);
+                    ++report.jointsMoved;
+                    changed = true;
+                    break;
+                }
+        }
+        if (!changed)
+            break;
+    }
+    for (const Joint& joint : skeleton.joints())
+        report.jointsOutside += joints.inMesh(joint.position) ? 0 : 1;
     return report;
 }
 

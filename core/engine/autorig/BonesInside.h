@@ -23,4 +23,34 @@ struct BonesInsideReport {
 // `minimumBone` (rig/ShortBones.h). Topology changes only by splits.
 BonesInsideReport keepBonesInside(Skeleton& skeleton, const TriMesh& surface, double minimumBone);
 
+// A skeleton computed on a proxy wrapped around the mesh (autorig/ProxyWrap)
+// lies inside the proxy, which is fatter than the mesh by at least the
+// wrap's offset and bridges what alpha cannot enter: a joint of a thin limb
+// or a tip can lie outside the mesh the part keeps, and a rigger sees its
+// bone poke out of the limb. Each joint outside `mesh` by ray-cast parity
+// (autorig/SurfaceProbe, InsideBy::RayParity: an eye inside a head is
+// outside, as Blender sees it), or closer to its surface than 1e-4 of its
+// size, moves to the nearest place inside it within twice its depth in the
+// proxy plus `reach` (the wrap's alpha): into the middle of the limb's
+// cross-section there when that is inside, else halfway across the wall
+// it met (a tip may also slide along its bone into the mesh). A move is
+// kept only when every bone at the joint stays inside `surface` (9 points
+// per bone, joints included, by winding number) and no shorter than
+// `minimumBone`, and every vertex of `mesh` stays within `coverage` of a
+// bone (or within its farthest before, if farther: autorig/BoneCoverage);
+// where the mesh has no inside near the joint (a sheet, a wing without
+// thickness) the joint stays. The tree, its leaves and its bones stay as
+// they are; only joints move.
+struct JointsInMeshLimits {
+    double reach = 0.0;
+    double minimumBone = 0.0;
+    double coverage = 0.0;
+};
+struct JointsInMeshReport {
+    int jointsMoved = 0;
+    int jointsOutside = 0;  // left outside at the end
+};
+JointsInMeshReport keepJointsInMesh(Skeleton& skeleton, const TriMesh& mesh, const TriMesh& surface,
+                                    const JointsInMeshLimits& limits);
+
 }  // namespace rigmesh

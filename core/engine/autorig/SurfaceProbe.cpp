@@ -1,7 +1,11 @@
 #include "autorig/SurfaceProbe.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
+#include <list>
 #include <numbers>
 #include <vector>
 
@@ -20,6 +24,19 @@ constexpr int kDirections = 16;
 // A hit this many times the ray's start offset away is a wall; nearer, the
 // ray only left a face it started on (at an edge or a corner) and goes on.
 constexpr double kNearHit = 100.0;
+// Walls closer together along a ray than this fraction of the size count as
+// one (tests/external/check_tails_inside_in_blender.py steps as far past
+// each hit).
+constexpr double kSameWall = 1e-5;
+// The rays of ray-cast parity, in no plane of the axes so that they rarely
+// run along a face: check_tails_inside_in_blender.py's three as they are in
+// Blender's Z-up world, the same three in a Y-up frame (glTF's, which
+// Blender's importer turns up), and one more. Inside only when all agree.
+const std::array<Vec3, 7> kParityRays = {
+    Vec3(0.267, 0.534, 0.802).normalized(), Vec3(-0.7, 0.1, 0.3).normalized(),
+    Vec3(0.2, -0.9, -0.35).normalized(),    Vec3(0.267, 0.802, -0.534).normalized(),
+    Vec3(-0.7, 0.3, -0.1).normalized(),     Vec3(0.2, -0.35, 0.9).normalized(),
+    Vec3(-0.43, -0.61, 0.66).normalized()};
 
 Point point(const Vec3& v) {
     return {v.x(), v.y(), v.z()};
@@ -36,6 +53,7 @@ struct SurfaceProbe::Tree {
     std::vector<Triangle> triangles;
     Aabb aabb;
     double epsilon = 0.0;
+    double size = 0.0;
 
     // The first wall along the ray from `start` (none: the ray leaves).
     std::optional<Vec3> firstWall(const Vec3& start, const Vec3& direction) const {
@@ -57,11 +75,13 @@ struct SurfaceProbe::Tree {
     }
 };
 
-SurfaceProbe::SurfaceProbe(const TriMesh& surface) : mesh_(surface), tree_(new Tree) {
+SurfaceProbe::SurfaceProbe(const TriMesh& surface, InsideBy rule)
+    : mesh_(surface), rule_(rule), tree_(new Tree) {
     Eigen::AlignedBox3d box;
     for (const Vec3& v : surface.vertices)
         box.extend(v);
-    tree_->epsilon = 1e-7 * (box.isEmpty() ? 1.0 : box.diagonal().norm());
+    tree_->size = box.isEmpty() ? 0.0 : box.diagonal().norm();
+    tree_->epsilon = 1e-7 * (box.isEmpty() ? 1.0 : tree_->size);
     for (const auto& [a, b, c] : surface.faces)
         tree_->triangles.emplace_back(point(surface.vertices[a]), point(surface.vertices[b]),
                                       point(surface.vertices[c]));
@@ -72,7 +92,39 @@ SurfaceProbe::SurfaceProbe(const TriMesh& surface) : mesh_(surface), tree_(new T
 SurfaceProbe::~SurfaceProbe() = default;
 
 bool SurfaceProbe::inside(const Vec3& p) const {
-    return windingNumber(mesh_, p) > 0.5;
+    if (rule_ == InsideBy::WindingNumber)
+        return windingNumber(mesh_, p) > 0.5;
+    if (mesh_.faces.empty())
+        return false;
+    return std::all_of(kParityRays.begin(), kParityRays.end(),
+                       [&](const Vec3& ray) { return walls(p, ray).size() % 2 == 1; });
+}
+
+std::vector<double> SurfaceProbe::walls(const Vec3& from, const Vec3& direction) const {
+    using Hit = Tree::Aabb::Intersection_and_primitive_id<Kernel::Ray_3>::Type;
+    const Vec3 d = direction.normalized();
+    std::list<Hit> hits;
+    tree_->aabb.all_intersections(Kernel::Ray_3(point(from), Kernel::Vector_3(d.x(), d.y(), d.z())),
+                                  std::back_inserter(hits));
+    std::vector<double> along;
+    for (const Hit& hit : hits) {
+        // A ray in a face's plane meets it along a segment: its near end.
+        if (const Point* p = boost::get<Point>(&hit.first))
+            along.push_back((cgal::toVec(*p) - from).dot(d));
+        else if (const auto* s = boost::get<Kernel::Segment_3>(&hit.first))
+            along.push_back(std::min((cgal::toVec(s->source()) - from).dot(d),
+                                     (cgal::toVec(s->target()) - from).dot(d)));
+    }
+    std::sort(along.begin(), along.end());
+    std::vector<double> result;
+    for (double t : along)
+        if (t >= 0.0 && (result.empty() || t > result.back() + kSameWall * tree_->size))
+            result.push_back(t);
+    return result;
+}
+
+double SurfaceProbe::size() const {
+    return tree_->size;
 }
 
 double SurfaceProbe::distance(const Vec3& p) const {
