@@ -102,6 +102,25 @@ bool certainlyOutside(const Vec3& a, const Vec3& b, const Vec3& c,
     return false;
 }
 
+// True when the corners of `g` other than its `shared` shared ones (their
+// positions in `g`: `sharedInG`) lie strictly on one side of the plane of
+// `f` (a face with a zero-area triangle has no plane: false).
+bool strictlyBeyondPlane(const std::vector<Point>& points, const std::array<int, 3>& f,
+                         const std::array<int, 3>& g, const std::array<int, 3>& sharedInG,
+                         int shared) {
+    CGAL::Orientation side = CGAL::COPLANAR;
+    for (int j = 0; j < 3; ++j) {
+        if ((shared > 0 && sharedInG[0] == j) || (shared > 1 && sharedInG[1] == j))
+            continue;
+        const CGAL::Orientation o =
+            CGAL::orientation(points[f[0]], points[f[1]], points[f[2]], points[g[j]]);
+        if (o == CGAL::COPLANAR || (side != CGAL::COPLANAR && o != side))
+            return false;
+        side = o;
+    }
+    return side != CGAL::COPLANAR;
+}
+
 // PMP's "does not merely share a vertex or edge" rule, with sharing decided by
 // vertex index so that it works on non-manifold soups.
 bool facesIntersect(const TriMesh& mesh, const std::vector<Point>& points,
@@ -140,6 +159,14 @@ bool facesIntersect(const TriMesh& mesh, const std::vector<Point>& points,
         return CGAL::coplanar(a, b, thirdF, thirdG) &&
                CGAL::coplanar_orientation(a, b, thirdF, thirdG) == CGAL::POSITIVE;
     }
+    // Every corner of one face but the shared ones strictly on one side of
+    // the other's plane (exact predicates, CGAL's static filter decides
+    // nearly all of them in double arithmetic): the faces meet in their
+    // shared vertex at most, which is no intersection. On a smooth surface
+    // this settles most neighbours around a vertex before the tests below.
+    if (strictlyBeyondPlane(points, f, g, sharedInG, shared) ||
+        strictlyBeyondPlane(points, g, f, sharedInF, shared))
+        return false;
     const Triangle tf(p(f[0]), p(f[1]), p(f[2]));
     const Triangle tg(p(g[0]), p(g[1]), p(g[2]));
     if (shared == 1) {
