@@ -180,12 +180,13 @@ struct MeshJoints {
         const Vec3 limb = limbDirection(skeleton, joint);
         std::vector<std::pair<double, Vec3>> found;
         // The middle of the limb there first (a sketched part's joints sit
-        // on its chordal axis, paper 2.1), else the point past the wall.
-        const auto add = [&](double entry, const Vec3& q) {
+        // on its chordal axis, paper 2.1), when it lies within the half
+        // chord the ray measured of `q`, else the point past the wall.
+        const auto add = [&](double entry, const Vec3& q, double halfChord) {
             if (!inMesh(q))
                 return;
             const std::optional<Vec3> middle = mesh.middleOfCrossSection(q, limb);
-            if (middle && (*middle - p).norm() <= radius && inMesh(*middle))
+            if (middle && (*middle - q).norm() <= halfChord && inMesh(*middle))
                 found.emplace_back(entry, *middle);
             found.emplace_back(entry, q);
         };
@@ -193,7 +194,8 @@ struct MeshJoints {
             const std::vector<double> walls = mesh.walls(p, ray);
             for (std::size_t k = 0; k < walls.size() && walls[k] < radius; ++k) {
                 const double next = k + 1 < walls.size() ? walls[k + 1] : radius;
-                add(walls[k], p + ray * (walls[k] + 0.5 * (std::min(next, radius) - walls[k])));
+                const double halfChord = 0.5 * (std::min(next, radius) - walls[k]);
+                add(walls[k], p + ray * (walls[k] + halfChord), halfChord);
             }
         }
         // A tip slides along its bone into the mesh.

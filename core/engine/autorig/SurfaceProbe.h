@@ -11,8 +11,8 @@
 // inside when a ray from it crosses the surface an odd number of times,
 // walls closer together than 1e-5 of the size counting once. So a point
 // inside an eye inside a head is outside (two walls), as Blender sees it.
-// Inside here means every one of several fixed rays says so, so that the
-// answer holds for whatever directions another program casts.
+// Inside here means all but one of seven fixed rays say so, so that any
+// three of them vote inside by majority.
 #pragma once
 
 #include <memory>
