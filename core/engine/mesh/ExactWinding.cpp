@@ -18,9 +18,63 @@ Point3 point3(const Vec3& v) {
     return {v.x(), v.y(), v.z()};
 }
 
-// The projection along x (the ray's direction) onto the (y, z) plane.
-Point2 alongX(const Vec3& v) {
-    return {v.y(), v.z()};
+// The winding number counted along the ray from `point` along axis `k`;
+// empty when the ray meets an edge or a vertex or the point is on a face.
+std::optional<int> windingAlong(const TriMesh& mesh, const Vec3& point, int k) {
+    // The projection along the ray onto the plane of the two other axes,
+    // in cyclic order (i, j, k), so that a left turn there is a face normal
+    // with a positive k component.
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const auto along = [&](const Vec3& v) { return Point2(v[i], v[j]); };
+    const Point2 q = along(point);
+    const Point3 p = point3(point);
+    int winding = 0;
+    for (const auto& face : mesh.faces) {
+        const Vec3& a = mesh.vertices[face[0]];
+        const Vec3& b = mesh.vertices[face[1]];
+        const Vec3& c = mesh.vertices[face[2]];
+        // The ray {point + t e_k, t > 0} cannot meet a face wholly behind
+        // the point or beside the ray.
+        if (std::max({a[k], b[k], c[k]}) < point[k] || std::max({a[i], b[i], c[i]}) < point[i] ||
+            std::min({a[i], b[i], c[i]}) > point[i] || std::max({a[j], b[j], c[j]}) < point[j] ||
+            std::min({a[j], b[j], c[j]}) > point[j])
+            continue;
+        // The ray's line meets the face's interior where the point's
+        // projection lies strictly inside the face's projection; the three
+        // orientations then agree with the sign of the normal's k component.
+        const CGAL::Orientation ab = CGAL::orientation(along(a), along(b), q);
+        const CGAL::Orientation bc = CGAL::orientation(along(b), along(c), q);
+        const CGAL::Orientation ca = CGAL::orientation(along(c), along(a), q);
+        const bool onBorder =
+            ab == CGAL::COLLINEAR || bc == CGAL::COLLINEAR || ca == CGAL::COLLINEAR;
+        if (!onBorder && (ab != bc || bc != ca))
+            continue;  // outside the projection
+        if (onBorder) {
+            // Strictly outside if two corners' orientations disagree anyway;
+            // else the line may graze an edge or a vertex.
+            const bool positive =
+                ab == CGAL::LEFT_TURN || bc == CGAL::LEFT_TURN || ca == CGAL::LEFT_TURN;
+            const bool negative =
+                ab == CGAL::RIGHT_TURN || bc == CGAL::RIGHT_TURN || ca == CGAL::RIGHT_TURN;
+            if (positive && negative)
+                continue;
+            return std::nullopt;
+        }
+        // Inside the projection: the ray meets the face if the point lies
+        // on the side of its plane the ray leaves from. CGAL's orientation
+        // of (a, b, c, p) is the sign of ((b - a) x (c - a)) . (p - a): the
+        // point lies behind a face whose normal runs with the ray (the
+        // projection turns left) when it is negative.
+        const CGAL::Orientation side = CGAL::orientation(point3(a), point3(b), point3(c), p);
+        if (side == CGAL::COPLANAR)
+            return std::nullopt;  // on the face
+        const bool normalAlongRay = ab == CGAL::LEFT_TURN;
+        if (normalAlongRay && side == CGAL::NEGATIVE)
+            ++winding;  // leaves through the face, along its normal
+        else if (!normalAlongRay && side == CGAL::POSITIVE)
+            --winding;  // leaves through the face, against its normal
+    }
+    return winding;
 }
 
 }  // namespace
@@ -65,58 +119,13 @@ bool directedEdgesCancel(const TriMesh& mesh) {
 }
 
 std::optional<int> exactWindingNumber(const TriMesh& mesh, const Vec3& point) {
-    const Point2 q = alongX(point);
-    const Point3 p = point3(point);
-    int winding = 0;
-    for (const auto& face : mesh.faces) {
-        const Vec3& a = mesh.vertices[face[0]];
-        const Vec3& b = mesh.vertices[face[1]];
-        const Vec3& c = mesh.vertices[face[2]];
-        // The ray {point + t x, t > 0} cannot meet a face wholly behind the
-        // point or beside the ray.
-        if (std::max({a.x(), b.x(), c.x()}) < point.x() ||
-            std::max({a.y(), b.y(), c.y()}) < point.y() ||
-            std::min({a.y(), b.y(), c.y()}) > point.y() ||
-            std::max({a.z(), b.z(), c.z()}) < point.z() ||
-            std::min({a.z(), b.z(), c.z()}) > point.z())
-            continue;
-        // The ray's line meets the face's interior where the point's
-        // projection along x lies strictly inside the face's projection;
-        // the three orientations then agree with the sign of the face
-        // normal's x component.
-        const CGAL::Orientation ab = CGAL::orientation(alongX(a), alongX(b), q);
-        const CGAL::Orientation bc = CGAL::orientation(alongX(b), alongX(c), q);
-        const CGAL::Orientation ca = CGAL::orientation(alongX(c), alongX(a), q);
-        const bool onBorder =
-            ab == CGAL::COLLINEAR || bc == CGAL::COLLINEAR || ca == CGAL::COLLINEAR;
-        if (!onBorder && (ab != bc || bc != ca))
-            continue;  // outside the projection
-        if (onBorder) {
-            // Strictly outside if two corners' orientations disagree anyway;
-            // else the line may graze an edge or a vertex.
-            const bool positive =
-                ab == CGAL::LEFT_TURN || bc == CGAL::LEFT_TURN || ca == CGAL::LEFT_TURN;
-            const bool negative =
-                ab == CGAL::RIGHT_TURN || bc == CGAL::RIGHT_TURN || ca == CGAL::RIGHT_TURN;
-            if (positive && negative)
-                continue;
-            return std::nullopt;
-        }
-        // Inside the projection: the ray meets the face if the point lies
-        // on the side of its plane the ray leaves from. CGAL's orientation
-        // of (a, b, c, p) is the sign of ((b - a) x (c - a)) . (p - a): the
-        // point lies behind a face whose normal runs with x (the projection
-        // turns left) when it is negative, and the ray leaves through it.
-        const CGAL::Orientation side = CGAL::orientation(point3(a), point3(b), point3(c), p);
-        if (side == CGAL::COPLANAR)
-            return std::nullopt;  // on the face
-        const bool normalAlongRay = ab == CGAL::LEFT_TURN;
-        if (normalAlongRay && side == CGAL::NEGATIVE)
-            ++winding;  // leaves through the face, along its normal
-        else if (!normalAlongRay && side == CGAL::POSITIVE)
-            --winding;  // leaves through the face, against its normal
-    }
-    return winding;
+    // Along z first: a sketched part lies about the plane z = 0, its joints
+    // in it and its silhouette's edges too, so rays along x or y there run
+    // along edges; then x, then y.
+    for (int k : {2, 0, 1})
+        if (const std::optional<int> winding = windingAlong(mesh, point, k))
+            return winding;
+    return std::nullopt;
 }
 
 }  // namespace rigmesh

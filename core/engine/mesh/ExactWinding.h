@@ -1,5 +1,5 @@
 // The winding number of a closed surface around a point, exactly: the
-// signed count of the surface's crossings by a ray from the point (each face
+// signed count of the surface's crossings by a ray from the point along an axis (each face
 // the ray leaves through along its normal counts +1, enters through -1),
 // decided with exact predicates. For a surface whose directed edges cancel
 // (every edge a->b matched by b->a, a 2-cycle) this is the integer that the
@@ -19,9 +19,10 @@ namespace rigmesh {
 bool directedEdgesCancel(const TriMesh& mesh);
 
 // The winding number of `mesh` (its directed edges must cancel) around
-// `point`, counted along the ray from it in +x; empty when the ray meets an
-// edge or a vertex of a face, or the point lies on a face (then only the
-// solid angles can say, and they are ill-conditioned there).
+// `point`, counted along the ray from it in +z, else +x, else +y; empty
+// when each of those rays meets an edge or a vertex of a face, or the point
+// lies on a face (then only the solid angles can say, and they are
+// ill-conditioned on it).
 std::optional<int> exactWindingNumber(const TriMesh& mesh, const Vec3& point);
 
 }  // namespace rigmesh
