@@ -32,8 +32,9 @@ BonesInsideReport keepBonesInside(Skeleton& skeleton, const TriMesh& surface, do
 // outside, as Blender sees it), or closer to its surface than 1e-4 of its
 // size, moves to the nearest place inside it within twice its depth in the
 // proxy plus `reach` (the wrap's alpha): into the middle of the limb's
-// cross-section there when that is inside, else halfway across the wall
-// it met (a tip may also slide along its bone into the mesh). A move is
+// cross-section there when that is inside and within the half chord the
+// search ray measured, else halfway from the wall it met to the next (a
+// tip may also slide along its bone into the mesh). A move is
 // kept only when every bone at the joint stays inside `surface` (9 points
 // per bone, joints included, by winding number) and no shorter than
 // `minimumBone`, and every vertex of `mesh` stays within `coverage` of a
