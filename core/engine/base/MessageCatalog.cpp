@@ -2,8 +2,8 @@
 // RIGMESH_TRANSLATABLE, which lupdate reads as QT_TRANSLATE_NOOP (see
 // translations/CMakeLists.txt), so the studio's .ts files list them under
 // the context "EngineMessage". This file holds the messages of drawing,
-// building, merging, cutting, posing, painting, writing, importing and
-// rigging; the files named in base/MessageCatalogAreas.h hold the others.
+// building, merging, cutting, posing, painting, writing and importing;
+// the files named in base/MessageCatalogAreas.h hold the others.
 // MessageTest's EveryIdHasATemplateUsingMarkersFromOneUpwards fails for an
 // id that no file has a template for.
 #include "base/Message.h"
@@ -170,22 +170,6 @@ const char* messageTemplate(MessageId id) {
                 "EngineMessage",
                 "One part lies entirely inside the other, so merging would only delete it. Drag "
                 "it so that it sticks out of the other part, then merge.");
-        case MessageId::WeightsBoneUnsolved:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "Skin weights could not be solved for bone %1; "
-                                        "nearest-bone weights are used instead.");
-        case MessageId::WeightsBonesUnsolved:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "Skin weights could not be solved for bones %1; "
-                                        "nearest-bone weights are used instead.");
-        case MessageId::WeightsNotFactored:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "The skin weights' heat system could not be factored; "
-                                        "every bone uses nearest-bone weights instead.");
-        case MessageId::WeightsVerticesSeeNoBone:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "%1 vertices see no bone from inside the shape and are "
-                                        "heated by their nearest bone.");
         case MessageId::LocalWeightsUnsolved:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
@@ -486,98 +470,11 @@ const char* messageTemplate(MessageId id) {
         case MessageId::ImportNoTriangleMesh:
             return RIGMESH_TRANSLATABLE("EngineMessage",
                                         "Cannot import \"%1\": it holds no triangle mesh.");
-
-        case MessageId::AutoRigPartIsRigged:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "%1 already has a skeleton. Rig parts without one (imported meshes); to start "
-                "a sketched part's rig again, use Recompute Weights or Rebuild.");
-        case MessageId::AutoRigNoSurface:
-            return RIGMESH_TRANSLATABLE("EngineMessage", "%1 has no surface to rig.");
-        case MessageId::AutoRigTooFewFaces:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "The mesh has only %1 usable faces; a rig needs a closed surface that bounds a "
-                "volume.");
-        case MessageId::AutoRigOpenBorder:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "the mesh is open (%1 borders, the longest of %2 edges)");
-        case MessageId::AutoRigSeveralPieces:
-            return RIGMESH_TRANSLATABLE("EngineMessage", "the mesh is %1 separate pieces");
-        case MessageId::AutoRigSelfIntersecting:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "%1 pairs of the mesh's faces cross each other");
-        case MessageId::AutoRigNotManifold:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "the mesh is not a manifold (more than two faces meet at an edge)");
-        case MessageId::AutoRigSkeletonFailed:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "No skeleton could be found in the mesh: %1");
-        case MessageId::AutoRigCancelled:
-            return RIGMESH_TRANSLATABLE("EngineMessage", "Rigging was cancelled.");
-        case MessageId::AutoRigBoneTooShort:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "The mesh is too small for a bone: its only bone would be %1 long, "
-                "shorter than the shortest bone allowed (%2).");
-        case MessageId::AutoRigRepairWelded:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage", "joined %1 vertices that sat at the same position (split seams)");
-        case MessageId::AutoRigRepairDegenerate:
-            return RIGMESH_TRANSLATABLE("EngineMessage", "removed %1 degenerate faces (no area)");
-        case MessageId::AutoRigRepairDuplicateFaces:
-            return RIGMESH_TRANSLATABLE("EngineMessage", "removed %1 duplicate faces");
-        case MessageId::AutoRigRepairUnusedVertices:
-            return RIGMESH_TRANSLATABLE("EngineMessage", "removed %1 vertices no face uses");
-        case MessageId::AutoRigRepairNonManifold:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "split %1 vertices where separate sheets touched");
-        case MessageId::AutoRigRepairFlipped:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "turned the faces outward (they faced inward)");
-        case MessageId::AutoRigRepairHoles:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "filled %1 small holes with %2 new vertices");
-        case MessageId::AutoRigNotFinite:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "A vertex of the mesh is not a finite number: the file is corrupt.");
-        case MessageId::AutoRigFaceOutOfRange:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "A face of the mesh names vertex %1, but the mesh has only %2 vertices: the "
-                "file is corrupt.");
-        case MessageId::AutoRigOverMemoryBudget:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "The mesh has %1 faces: rigging it would need more than the %2 MiB of memory "
-                "allowed. Decimate it in your modelling tool (in Blender: the Decimate "
-                "modifier) and import it again.");
-        case MessageId::AutoRigLargeMesh:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "the mesh has %1 vertices, too many to compute the skeleton on directly");
-        case MessageId::AutoRigProxyWrapped:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "the skeleton and weights were computed on a closed proxy of %1 vertices "
-                "wrapped around the mesh's %2 pieces; the mesh itself is kept as it was");
-        case MessageId::AutoRigProxyApart:
-            return RIGMESH_TRANSLATABLE(
-                "EngineMessage",
-                "%1 pieces of the proxy lie apart from the body and follow its nearest bones");
-        case MessageId::AutoRigPiecesFollowBone:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "%1 small pieces (eyes, teeth, buttons) follow bone %2");
-        case MessageId::AutoRigMorePiecesFollowBones:
-            return RIGMESH_TRANSLATABLE("EngineMessage",
-                                        "%1 more small pieces follow one bone each");
         default:
             break;  // an id of another catalogue file
     }
-    for (const auto areaTemplate :
-         {&editingMessageTemplate, &fileMessageTemplate, &recipeMessageTemplate})
+    for (const auto areaTemplate : {&editingMessageTemplate, &fileMessageTemplate,
+                                    &recipeMessageTemplate, &autoRigMessageTemplate})
         if (const char* text = areaTemplate(id))
             return text;
     return "";

@@ -17,5 +17,7 @@ const char* editingMessageTemplate(MessageId id);
 const char* fileMessageTemplate(MessageId id);
 // MessageCatalogRecipes.cpp: recipes.
 const char* recipeMessageTemplate(MessageId id);
+// MessageCatalogAutoRig.cpp: rigging an imported mesh.
+const char* autoRigMessageTemplate(MessageId id);
 
 }  // namespace rigmesh

@@ -9,6 +9,23 @@ namespace rigmesh {
 const char* editingMessageTemplate(MessageId id) {
     switch (id) {
         // Documents, parts and commands (model/, model/commands/)
+        // Skin weight notes (rig/BoneHeatSolver)
+        case MessageId::WeightsBoneUnsolved:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Skin weights could not be solved for bone %1; "
+                                        "nearest-bone weights are used instead.");
+        case MessageId::WeightsBonesUnsolved:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "Skin weights could not be solved for bones %1; "
+                                        "nearest-bone weights are used instead.");
+        case MessageId::WeightsNotFactored:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "The skin weights' heat system could not be factored; "
+                                        "every bone uses nearest-bone weights instead.");
+        case MessageId::WeightsVerticesSeeNoBone:
+            return RIGMESH_TRANSLATABLE("EngineMessage",
+                                        "%1 vertices see no bone from inside the shape and are "
+                                        "heated by their nearest bone.");
         case MessageId::DocumentNoSuchPart:
             return RIGMESH_TRANSLATABLE("EngineMessage", "No part with id %1 in the document.");
         case MessageId::DocumentPartHasNoJoint:
