@@ -1703,6 +1703,194 @@
         <source>%1 must be a joint id (a non-negative integer)</source>
         <translation>%1 muss eine Gelenk-ID sein (eine nichtnegative ganze Zahl)</translation>
     </message>
+    <message>
+        <source>%1</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>expected a map holding %1</source>
+        <translation>erwartet wurde eine Zuordnung mit %1</translation>
+    </message>
+    <message>
+        <source>missing %1</source>
+        <translation>%1 fehlt</translation>
+    </message>
+    <message>
+        <source>%1 is not a list</source>
+        <translation>%1 ist keine Liste</translation>
+    </message>
+    <message>
+        <source>%1 is not a number</source>
+        <translation>%1 ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>%1 holds a value that is not finite</source>
+        <translation>%1 enthält einen Wert, der nicht endlich ist</translation>
+    </message>
+    <message>
+        <source>%1 is not true or false</source>
+        <translation>%1 ist weder true noch false</translation>
+    </message>
+    <message>
+        <source>%1 is not text</source>
+        <translation>%1 ist kein Text</translation>
+    </message>
+    <message>
+        <source>%1 has the wrong length</source>
+        <translation>%1 hat die falsche Länge</translation>
+    </message>
+    <message>
+        <source>%1 is not an integer</source>
+        <translation>%1 ist keine ganze Zahl</translation>
+    </message>
+    <message>
+        <source>%1 is out of range</source>
+        <translation>%1 liegt außerhalb des gültigen Bereichs</translation>
+    </message>
+    <message>
+        <source>it ends too early, at byte %1</source>
+        <translation>es endet zu früh, bei Byte %1</translation>
+    </message>
+    <message>
+        <source>it is malformed at byte %1</source>
+        <translation>es ist bei Byte %1 fehlerhaft</translation>
+    </message>
+    <message>
+        <source>it holds a number too large to read</source>
+        <translation>es enthält eine Zahl, die zu groß zum Lesen ist</translation>
+    </message>
+    <message>
+        <source>a value has the wrong type</source>
+        <translation>ein Wert hat den falschen Typ</translation>
+    </message>
+    <message>
+        <source>it is malformed</source>
+        <translation>es ist fehlerhaft</translation>
+    </message>
+    <message>
+        <source>unknown weights warning %1</source>
+        <translation>unbekannter Gewichtshinweis %1</translation>
+    </message>
+    <message>
+        <source>weights warning %1 has the wrong number of arguments</source>
+        <translation>Gewichtshinweis %1 hat die falsche Anzahl an Argumenten</translation>
+    </message>
+    <message>
+        <source>%1 refers to a missing bone</source>
+        <translation>%1 verweist auf einen fehlenden Knochen</translation>
+    </message>
+    <message>
+        <source>%1 refers to bone %2, which the skeleton does not have</source>
+        <translation>%1 verweist auf Knochen %2, den das Skelett nicht hat</translation>
+    </message>
+    <message>
+        <source>%1 does not have one entry per vertex</source>
+        <translation>%1 hat nicht genau einen Eintrag pro Vertex</translation>
+    </message>
+    <message>
+        <source>%1 has a malformed entry</source>
+        <translation>%1 hat einen fehlerhaften Eintrag</translation>
+    </message>
+    <message>
+        <source>%1 holds a negative value</source>
+        <translation>%1 enthält einen negativen Wert</translation>
+    </message>
+    <message>
+        <source>the skin weights of vertex %1 sum to %2 instead of 1</source>
+        <translation>die Skin-Gewichte von Vertex %1 ergeben zusammen %2 statt 1</translation>
+    </message>
+    <message>
+        <source>joint ids and positions differ in number</source>
+        <translation>Gelenk-IDs und Gelenkpositionen unterscheiden sich in der Anzahl</translation>
+    </message>
+    <message>
+        <source>duplicate or invalid joint id</source>
+        <translation>doppelte oder ungültige Gelenk-ID</translation>
+    </message>
+    <message>
+        <source>bone ids, heads and tails differ in number</source>
+        <translation>Knochen-IDs, -Köpfe und -Enden unterscheiden sich in der Anzahl</translation>
+    </message>
+    <message>
+        <source>duplicate bone id</source>
+        <translation>doppelte Knochen-ID</translation>
+    </message>
+    <message>
+        <source>a bone refers to a missing joint</source>
+        <translation>ein Knochen verweist auf ein fehlendes Gelenk</translation>
+    </message>
+    <message>
+        <source>the skeleton root is not one of its joints</source>
+        <translation>die Wurzel des Skeletts ist keines seiner Gelenke</translation>
+    </message>
+    <message>
+        <source>attached joints and their bones differ in number</source>
+        <translation>angehängte Gelenke und ihre Knochen unterscheiden sich in der Anzahl</translation>
+    </message>
+    <message>
+        <source>an attachment refers to a missing joint or bone, or twice to one joint</source>
+        <translation>eine Anhängung verweist auf ein fehlendes Gelenk oder einen fehlenden Knochen oder zweimal auf ein Gelenk</translation>
+    </message>
+    <message>
+        <source>the skeleton is not a tree: %1</source>
+        <translation>das Skelett ist kein Baum: %1</translation>
+    </message>
+    <message>
+        <source>a face refers to a missing vertex</source>
+        <translation>eine Fläche verweist auf einen fehlenden Vertex</translation>
+    </message>
+    <message>
+        <source>unknown vertex origin kind</source>
+        <translation>unbekannte Art der Vertex-Herkunft</translation>
+    </message>
+    <message>
+        <source>the mirror map refers to a missing vertex</source>
+        <translation>die Spiegelzuordnung verweist auf einen fehlenden Vertex</translation>
+    </message>
+    <message>
+        <source>a rigged part needs skin weights for every vertex</source>
+        <translation>ein geriggtes Teil braucht Skin-Gewichte für jeden Vertex</translation>
+    </message>
+    <message>
+        <source>a bone name is not [bone id, name]</source>
+        <translation>ein Knochenname ist nicht [Knochen-ID, Name]</translation>
+    </message>
+    <message>
+        <source>a bone name refers to a missing bone, or twice to one</source>
+        <translation>ein Knochenname verweist auf einen fehlenden Knochen oder zweimal auf einen</translation>
+    </message>
+    <message>
+        <source>a locked bone refers to a missing bone, or twice to one</source>
+        <translation>ein gesperrter Knochen verweist auf einen fehlenden Knochen oder zweimal auf einen</translation>
+    </message>
+    <message>
+        <source>a bone frame is not [bone id, w, x, y, z]</source>
+        <translation>ein Knochenrahmen ist nicht [Knochen-ID, w, x, y, z]</translation>
+    </message>
+    <message>
+        <source>a bone frame is not a unit rotation of a bone, or names one twice</source>
+        <translation>ein Knochenrahmen ist keine Einheitsdrehung eines Knochens oder nennt einen zweimal</translation>
+    </message>
+    <message>
+        <source>the part fails its own check: %1</source>
+        <translation>das Teil besteht seine eigene Prüfung nicht: %1</translation>
+    </message>
+    <message>
+        <source>step %1 (%2): %3</source>
+        <translation>Schritt %1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>a step must be an object {&quot;command&quot;: ..., ...}</source>
+        <translation>ein Schritt muss ein Objekt {&quot;command&quot;: ..., ...} sein</translation>
+    </message>
+    <message>
+        <source>the step has no &quot;command&quot;</source>
+        <translation>der Schritt hat kein &quot;command&quot;</translation>
+    </message>
+    <message>
+        <source>&quot;command&quot; must be text</source>
+        <translation>&quot;command&quot; muss Text sein</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>
@@ -1960,10 +2148,6 @@
 <context>
     <name>rigmesh::model::DocumentFile</name>
     <message>
-        <source>The document is corrupt: %1.</source>
-        <translation>Das Dokument ist beschädigt: %1.</translation>
-    </message>
-    <message>
         <source>This is not a RigMesh Studio document.</source>
         <translation>Dies ist kein RigMesh-Studio-Dokument.</translation>
     </message>
@@ -1986,6 +2170,106 @@
     <message>
         <source>Cannot open &quot;%1&quot;: %2</source>
         <translation>„%1“ kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>a pose rotation of %1 is not [joint, w, x, y, z]</source>
+        <translation>eine Posendrehung von %1 ist nicht [Gelenk, w, x, y, z]</translation>
+    </message>
+    <message>
+        <source>pose joint %1 of %2 is not a joint of its skeleton</source>
+        <translation>Posengelenk %1 von %2 ist kein Gelenk seines Skeletts</translation>
+    </message>
+    <message>
+        <source>the pose rotation of joint %1 of %2 is not finite or is zero</source>
+        <translation>die Posendrehung von Gelenk %1 von %2 ist nicht endlich oder null</translation>
+    </message>
+    <message>
+        <source>the pose of %1 rotates joint %2 twice</source>
+        <translation>die Pose von %1 dreht Gelenk %2 zweimal</translation>
+    </message>
+    <message>
+        <source>the pose root translation of %1 has the wrong length</source>
+        <translation>die Wurzelverschiebung der Pose von %1 hat die falsche Länge</translation>
+    </message>
+    <message>
+        <source>the pose root translation of %1 is not finite</source>
+        <translation>die Wurzelverschiebung der Pose von %1 ist nicht endlich</translation>
+    </message>
+    <message>
+        <source>the clip frame rate of %1 is not positive</source>
+        <translation>die Bildrate des Clips von %1 ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>a key time of %1 is not finite</source>
+        <translation>eine Keyzeit von %1 ist nicht endlich</translation>
+    </message>
+    <message>
+        <source>the clip of %1 has two keys at one time</source>
+        <translation>der Clip von %1 hat zwei Keys zur selben Zeit</translation>
+    </message>
+    <message>
+        <source>unknown clip interpolation &quot;%1&quot;</source>
+        <translation>unbekannte Clip-Interpolation „%1“</translation>
+    </message>
+    <message>
+        <source>unknown clip playback &quot;%1&quot;</source>
+        <translation>unbekannte Clip-Wiedergabe „%1“</translation>
+    </message>
+    <message>
+        <source>the timeline: %1</source>
+        <translation>die Zeitleiste: %1</translation>
+    </message>
+    <message>
+        <source>pinned joint %1 of %2 is not a joint of its skeleton</source>
+        <translation>angeheftetes Gelenk %1 von %2 ist kein Gelenk seines Skeletts</translation>
+    </message>
+    <message>
+        <source>a joint of %1 is pinned twice</source>
+        <translation>ein Gelenk von %1 ist zweimal angeheftet</translation>
+    </message>
+    <message>
+        <source>a part has no id</source>
+        <translation>ein Teil hat keine ID</translation>
+    </message>
+    <message>
+        <source>a placement has the wrong length</source>
+        <translation>eine Platzierung hat die falsche Länge</translation>
+    </message>
+    <message>
+        <source>the placement rotation of part %1 is not a unit quaternion</source>
+        <translation>die Platzierungsdrehung von Teil %1 ist keine Einheitsquaternion</translation>
+    </message>
+    <message>
+        <source>part %1: %2</source>
+        <translation>Teil %1: %2</translation>
+    </message>
+    <message>
+        <source>a part has no geometry</source>
+        <translation>ein Teil hat keine Geometrie</translation>
+    </message>
+    <message>
+        <source>invalid format version</source>
+        <translation>ungültige Formatversion</translation>
+    </message>
+    <message>
+        <source>two parts have the same id</source>
+        <translation>zwei Teile haben dieselbe ID</translation>
+    </message>
+    <message>
+        <source>the next part id is already in use</source>
+        <translation>die nächste Teil-ID ist bereits vergeben</translation>
+    </message>
+    <message>
+        <source>The document is corrupt: %1.</source>
+        <translation>Das Dokument ist beschädigt: %1.</translation>
+    </message>
+    <message>
+        <source>part %1 (&quot;%2&quot;)</source>
+        <translation>Teil %1 („%2“)</translation>
     </message>
 </context>
 <context>

@@ -1703,6 +1703,194 @@
         <source>%1 must be a joint id (a non-negative integer)</source>
         <translation>%1 debe ser un identificador de articulación (un entero no negativo)</translation>
     </message>
+    <message>
+        <source>%1</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>expected a map holding %1</source>
+        <translation>se esperaba un mapa con %1</translation>
+    </message>
+    <message>
+        <source>missing %1</source>
+        <translation>falta %1</translation>
+    </message>
+    <message>
+        <source>%1 is not a list</source>
+        <translation>%1 no es una lista</translation>
+    </message>
+    <message>
+        <source>%1 is not a number</source>
+        <translation>%1 no es un número</translation>
+    </message>
+    <message>
+        <source>%1 holds a value that is not finite</source>
+        <translation>%1 contiene un valor que no es finito</translation>
+    </message>
+    <message>
+        <source>%1 is not true or false</source>
+        <translation>%1 no es true ni false</translation>
+    </message>
+    <message>
+        <source>%1 is not text</source>
+        <translation>%1 no es texto</translation>
+    </message>
+    <message>
+        <source>%1 has the wrong length</source>
+        <translation>%1 tiene una longitud incorrecta</translation>
+    </message>
+    <message>
+        <source>%1 is not an integer</source>
+        <translation>%1 no es un número entero</translation>
+    </message>
+    <message>
+        <source>%1 is out of range</source>
+        <translation>%1 está fuera de rango</translation>
+    </message>
+    <message>
+        <source>it ends too early, at byte %1</source>
+        <translation>termina demasiado pronto, en el byte %1</translation>
+    </message>
+    <message>
+        <source>it is malformed at byte %1</source>
+        <translation>está mal formado en el byte %1</translation>
+    </message>
+    <message>
+        <source>it holds a number too large to read</source>
+        <translation>contiene un número demasiado grande para leerlo</translation>
+    </message>
+    <message>
+        <source>a value has the wrong type</source>
+        <translation>un valor tiene el tipo incorrecto</translation>
+    </message>
+    <message>
+        <source>it is malformed</source>
+        <translation>está mal formado</translation>
+    </message>
+    <message>
+        <source>unknown weights warning %1</source>
+        <translation>aviso de pesos desconocido %1</translation>
+    </message>
+    <message>
+        <source>weights warning %1 has the wrong number of arguments</source>
+        <translation>el aviso de pesos %1 tiene un número incorrecto de argumentos</translation>
+    </message>
+    <message>
+        <source>%1 refers to a missing bone</source>
+        <translation>%1 se refiere a un hueso que falta</translation>
+    </message>
+    <message>
+        <source>%1 refers to bone %2, which the skeleton does not have</source>
+        <translation>%1 se refiere al hueso %2, que el esqueleto no tiene</translation>
+    </message>
+    <message>
+        <source>%1 does not have one entry per vertex</source>
+        <translation>%1 no tiene una entrada por vértice</translation>
+    </message>
+    <message>
+        <source>%1 has a malformed entry</source>
+        <translation>%1 tiene una entrada mal formada</translation>
+    </message>
+    <message>
+        <source>%1 holds a negative value</source>
+        <translation>%1 contiene un valor negativo</translation>
+    </message>
+    <message>
+        <source>the skin weights of vertex %1 sum to %2 instead of 1</source>
+        <translation>los pesos de piel del vértice %1 suman %2 en lugar de 1</translation>
+    </message>
+    <message>
+        <source>joint ids and positions differ in number</source>
+        <translation>los id y las posiciones de las articulaciones no coinciden en número</translation>
+    </message>
+    <message>
+        <source>duplicate or invalid joint id</source>
+        <translation>id de articulación duplicado o no válido</translation>
+    </message>
+    <message>
+        <source>bone ids, heads and tails differ in number</source>
+        <translation>los id, cabezas y colas de los huesos no coinciden en número</translation>
+    </message>
+    <message>
+        <source>duplicate bone id</source>
+        <translation>id de hueso duplicado</translation>
+    </message>
+    <message>
+        <source>a bone refers to a missing joint</source>
+        <translation>un hueso se refiere a una articulación que falta</translation>
+    </message>
+    <message>
+        <source>the skeleton root is not one of its joints</source>
+        <translation>la raíz del esqueleto no es una de sus articulaciones</translation>
+    </message>
+    <message>
+        <source>attached joints and their bones differ in number</source>
+        <translation>las articulaciones unidas y sus huesos no coinciden en número</translation>
+    </message>
+    <message>
+        <source>an attachment refers to a missing joint or bone, or twice to one joint</source>
+        <translation>una unión se refiere a una articulación o un hueso que falta, o dos veces a una articulación</translation>
+    </message>
+    <message>
+        <source>the skeleton is not a tree: %1</source>
+        <translation>el esqueleto no es un árbol: %1</translation>
+    </message>
+    <message>
+        <source>a face refers to a missing vertex</source>
+        <translation>una cara se refiere a un vértice que falta</translation>
+    </message>
+    <message>
+        <source>unknown vertex origin kind</source>
+        <translation>tipo de origen de vértice desconocido</translation>
+    </message>
+    <message>
+        <source>the mirror map refers to a missing vertex</source>
+        <translation>el mapa de simetría se refiere a un vértice que falta</translation>
+    </message>
+    <message>
+        <source>a rigged part needs skin weights for every vertex</source>
+        <translation>una pieza con rig necesita pesos de piel para cada vértice</translation>
+    </message>
+    <message>
+        <source>a bone name is not [bone id, name]</source>
+        <translation>un nombre de hueso no es [id de hueso, nombre]</translation>
+    </message>
+    <message>
+        <source>a bone name refers to a missing bone, or twice to one</source>
+        <translation>un nombre de hueso se refiere a un hueso que falta, o dos veces a uno</translation>
+    </message>
+    <message>
+        <source>a locked bone refers to a missing bone, or twice to one</source>
+        <translation>un hueso bloqueado se refiere a un hueso que falta, o dos veces a uno</translation>
+    </message>
+    <message>
+        <source>a bone frame is not [bone id, w, x, y, z]</source>
+        <translation>un marco de hueso no es [id de hueso, w, x, y, z]</translation>
+    </message>
+    <message>
+        <source>a bone frame is not a unit rotation of a bone, or names one twice</source>
+        <translation>un marco de hueso no es una rotación unitaria de un hueso, o nombra uno dos veces</translation>
+    </message>
+    <message>
+        <source>the part fails its own check: %1</source>
+        <translation>la pieza no supera su propia comprobación: %1</translation>
+    </message>
+    <message>
+        <source>step %1 (%2): %3</source>
+        <translation>paso %1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>a step must be an object {&quot;command&quot;: ..., ...}</source>
+        <translation>un paso debe ser un objeto {&quot;command&quot;: ..., ...}</translation>
+    </message>
+    <message>
+        <source>the step has no &quot;command&quot;</source>
+        <translation>el paso no tiene &quot;command&quot;</translation>
+    </message>
+    <message>
+        <source>&quot;command&quot; must be text</source>
+        <translation>&quot;command&quot; debe ser texto</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>
@@ -1960,10 +2148,6 @@
 <context>
     <name>rigmesh::model::DocumentFile</name>
     <message>
-        <source>The document is corrupt: %1.</source>
-        <translation>El documento está dañado: %1.</translation>
-    </message>
-    <message>
         <source>This is not a RigMesh Studio document.</source>
         <translation>Esto no es un documento de RigMesh Studio.</translation>
     </message>
@@ -1986,6 +2170,106 @@
     <message>
         <source>Cannot open &quot;%1&quot;: %2</source>
         <translation>No se puede abrir «%1»: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>a pose rotation of %1 is not [joint, w, x, y, z]</source>
+        <translation>una rotación de pose de %1 no es [articulación, w, x, y, z]</translation>
+    </message>
+    <message>
+        <source>pose joint %1 of %2 is not a joint of its skeleton</source>
+        <translation>la articulación de pose %1 de %2 no es una articulación de su esqueleto</translation>
+    </message>
+    <message>
+        <source>the pose rotation of joint %1 of %2 is not finite or is zero</source>
+        <translation>la rotación de pose de la articulación %1 de %2 no es finita o es cero</translation>
+    </message>
+    <message>
+        <source>the pose of %1 rotates joint %2 twice</source>
+        <translation>la pose de %1 rota la articulación %2 dos veces</translation>
+    </message>
+    <message>
+        <source>the pose root translation of %1 has the wrong length</source>
+        <translation>la traslación de raíz de la pose de %1 tiene una longitud incorrecta</translation>
+    </message>
+    <message>
+        <source>the pose root translation of %1 is not finite</source>
+        <translation>la traslación de raíz de la pose de %1 no es finita</translation>
+    </message>
+    <message>
+        <source>the clip frame rate of %1 is not positive</source>
+        <translation>la velocidad de fotogramas del clip de %1 no es positiva</translation>
+    </message>
+    <message>
+        <source>a key time of %1 is not finite</source>
+        <translation>un tiempo de clave de %1 no es finito</translation>
+    </message>
+    <message>
+        <source>the clip of %1 has two keys at one time</source>
+        <translation>el clip de %1 tiene dos claves en el mismo tiempo</translation>
+    </message>
+    <message>
+        <source>unknown clip interpolation &quot;%1&quot;</source>
+        <translation>interpolación de clip desconocida «%1»</translation>
+    </message>
+    <message>
+        <source>unknown clip playback &quot;%1&quot;</source>
+        <translation>reproducción de clip desconocida «%1»</translation>
+    </message>
+    <message>
+        <source>the timeline: %1</source>
+        <translation>la línea de tiempo: %1</translation>
+    </message>
+    <message>
+        <source>pinned joint %1 of %2 is not a joint of its skeleton</source>
+        <translation>la articulación fijada %1 de %2 no es una articulación de su esqueleto</translation>
+    </message>
+    <message>
+        <source>a joint of %1 is pinned twice</source>
+        <translation>una articulación de %1 está fijada dos veces</translation>
+    </message>
+    <message>
+        <source>a part has no id</source>
+        <translation>una pieza no tiene id</translation>
+    </message>
+    <message>
+        <source>a placement has the wrong length</source>
+        <translation>una colocación tiene una longitud incorrecta</translation>
+    </message>
+    <message>
+        <source>the placement rotation of part %1 is not a unit quaternion</source>
+        <translation>la rotación de colocación de la pieza %1 no es un cuaternión unitario</translation>
+    </message>
+    <message>
+        <source>part %1: %2</source>
+        <translation>pieza %1: %2</translation>
+    </message>
+    <message>
+        <source>a part has no geometry</source>
+        <translation>una pieza no tiene geometría</translation>
+    </message>
+    <message>
+        <source>invalid format version</source>
+        <translation>versión de formato no válida</translation>
+    </message>
+    <message>
+        <source>two parts have the same id</source>
+        <translation>dos piezas tienen el mismo id</translation>
+    </message>
+    <message>
+        <source>the next part id is already in use</source>
+        <translation>el siguiente id de pieza ya está en uso</translation>
+    </message>
+    <message>
+        <source>The document is corrupt: %1.</source>
+        <translation>El documento está dañado: %1.</translation>
+    </message>
+    <message>
+        <source>part %1 (&quot;%2&quot;)</source>
+        <translation>pieza %1 («%2»)</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 #include <QSaveFile>
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -17,6 +18,7 @@
 #include "model/ClipModes.h"
 #include "model/DocumentMigration.h"
 #include "model/DocumentNodeJson.h"
+#include "model/ErrorText.h"
 #include "model/PartBuilder.h"
 #include "model/PartClips.h"
 #include "part/PartJson.h"
@@ -41,13 +43,45 @@ constexpr unsigned char kMagic[] = {0xD9, 0xD9, 0xF7};
     throw DocumentFileError(message.toStdString());
 }
 
-[[noreturn]] void corrupt(const std::string& detail) {
-    fail(QCoreApplication::translate("rigmesh::model::DocumentFile", "The document is corrupt: %1.")
-             .arg(QString::fromStdString(detail)));
+// The context of every text here. lupdate reads only literals: each
+// detail names it in QT_TRANSLATE_NOOP, each translate() call in full.
+constexpr const char* kContext = "rigmesh::model::DocumentFile";
+
+QString argumentText(const QString& text) {
+    return text;
+}
+QString argumentText(const std::string& text) {
+    return QString::fromStdString(text);
+}
+template <std::integral Integer>
+QString argumentText(Integer value) {
+    return QString::number(value);
 }
 
-std::string partLabel(const PartNode& node) {
-    return "part " + std::to_string(node.id) + " (\"" + node.name.toStdString() + "\")";
+[[noreturn]] void corrupt(const QString& detail) {
+    fail(QCoreApplication::translate("rigmesh::model::DocumentFile", "The document is corrupt: %1.")
+             .arg(detail));
+}
+
+// "The document is corrupt: " and `detail` translated, its markers filled
+// with `args` in one pass.
+template <class... Args>
+[[noreturn]] void corrupt(const char* detail, const Args&... args) {
+    const QString text = QCoreApplication::translate(kContext, detail);
+    if constexpr (sizeof...(Args) == 0)
+        corrupt(text);
+    else
+        corrupt(text.arg(argumentText(args)...));
+}
+
+// What an engine value's refusal says, translated (model/ErrorText).
+[[noreturn]] void corrupt(const std::exception& error) {
+    corrupt(errorText(error));
+}
+
+QString partLabel(const PartNode& node) {
+    return QCoreApplication::translate("rigmesh::model::DocumentFile", "part %1 (\"%2\")")
+        .arg(QString::number(node.id), node.name);
 }
 
 // Every part keeps Part::validate(); a rigged part whose surface was made
@@ -62,15 +96,20 @@ void checkPartInvariants(const PartNode& node) {
         std::string problem = problems.front();
         if (!problem.empty() && problem.back() == '.')
             problem.pop_back();  // corrupt() ends the sentence
-        corrupt(partLabel(node) + ": " + problem);
+        // Part::validate() speaks English: an invariant's own words.
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "%1: %2"), partLabel(node),
+                problem);
     }
 }
 
-JointId readJointOf(const PartNode& node, const json& value, const char* what) {
-    const auto joint = integer<JointId>(value, what);
+// `path`: the value's place in the file; `notAJoint`: the sentence that
+// names it when it is no joint of the part's skeleton (%1 the joint, %2 the
+// part).
+JointId readJointOf(const PartNode& node, const json& value, const char* path,
+                    const char* notAJoint) {
+    const auto joint = integer<JointId>(value, path);
     if (!node.part->skeleton.hasJoint(joint))
-        corrupt(std::string(what) + " " + std::to_string(joint) + " of " + partLabel(node) +
-                " is not a joint of its skeleton");
+        corrupt(notAJoint, joint, partLabel(node));
     return joint;
 }
 
@@ -78,25 +117,38 @@ rigmesh::Pose readPoseValue(const PartNode& node, const json& pose) {
     rigmesh::Pose out;
     for (const json& entry : array(pose, "rotations")) {
         if (!entry.is_array() || entry.size() != 5)
-            corrupt("a pose rotation of " + partLabel(node) + " is not [joint, w, x, y, z]");
-        const JointId joint = readJointOf(node, entry[0], "pose joint");
-        const Eigen::Quaterniond q(
-            rawNumber(entry[1], "pose rotation"), rawNumber(entry[2], "pose rotation"),
-            rawNumber(entry[3], "pose rotation"), rawNumber(entry[4], "pose rotation"));
+            corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile",
+                                      "a pose rotation of %1 is not [joint, w, x, y, z]"),
+                    partLabel(node));
+        const JointId joint =
+            readJointOf(node, entry[0], R"("pose" "rotations")",
+                        QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile",
+                                          "pose joint %1 of %2 is not a joint of its skeleton"));
+        const Eigen::Quaterniond q(rawNumber(entry[1], R"("pose" "rotations")"),
+                                   rawNumber(entry[2], R"("pose" "rotations")"),
+                                   rawNumber(entry[3], R"("pose" "rotations")"),
+                                   rawNumber(entry[4], R"("pose" "rotations")"));
         if (!q.coeffs().allFinite() || q.coeffs().squaredNorm() == 0.0)
-            corrupt("the pose rotation of joint " + std::to_string(joint) + " of " +
-                    partLabel(node) + " is not finite or is zero");
+            corrupt(
+                QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile",
+                                  "the pose rotation of joint %1 of %2 is not finite or is zero"),
+                joint, partLabel(node));
         if (!out.rotations.emplace(joint, q).second)
-            corrupt("the pose of " + partLabel(node) + " rotates joint " + std::to_string(joint) +
-                    " twice");
+            corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile",
+                                      "the pose of %1 rotates joint %2 twice"),
+                    partLabel(node), joint);
     }
     const std::vector<double> t =
-        numbers(array(pose, "rootTranslation"), 3, "pose root translation", &rawNumber);
+        numbers(array(pose, "rootTranslation"), 3, R"("pose" "rootTranslation")", &rawNumber);
     if (t.size() != 3)
-        corrupt("the pose root translation of " + partLabel(node) + " has the wrong length");
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile",
+                                  "the pose root translation of %1 has the wrong length"),
+                partLabel(node));
     out.rootTranslation = Vec3(t[0], t[1], t[2]);
     if (!out.rootTranslation.allFinite())
-        corrupt("the pose root translation of " + partLabel(node) + " is not finite");
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile",
+                                  "the pose root translation of %1 is not finite"),
+                partLabel(node));
     return out;
 }
 
@@ -107,19 +159,22 @@ rigmesh::Pose readPose(const PartNode& node, const json& object) {
     return readPoseValue(node, field(object, "pose"));
 }
 
+// `unknown`: the sentence naming a name that is no mode (%1 the name).
 template <typename Enum>
-Enum readMode(const json& value, const char* what,
+Enum readMode(const json& value, const char* path, const char* unknown,
               std::optional<Enum> (*fromName)(std::string_view)) {
-    const std::string name = text(value, what);
+    const std::string name = text(value, path);
     if (const std::optional<Enum> mode = fromName(name))
         return *mode;
-    corrupt(std::string("unknown ") + what + " \"" + name + "\"");
+    corrupt(unknown, name);
 }
 
 rigmesh::Clip readClipValue(const PartNode& node, const json& clip) {
-    const double fps = rawNumber(field(clip, "framesPerSecond"), "clip frame rate");
+    const double fps = rawNumber(field(clip, "framesPerSecond"), R"("clip" "framesPerSecond")");
     if (!std::isfinite(fps) || !(fps > 0))
-        corrupt("the clip frame rate of " + partLabel(node) + " is not positive");
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile",
+                                  "the clip frame rate of %1 is not positive"),
+                partLabel(node));
     // Keys go in with a vanishing tolerance, so keys closer than half a frame
     // (left by a frame rate change) come back exactly; the frame rate is set
     // last.
@@ -127,9 +182,11 @@ rigmesh::Clip readClipValue(const PartNode& node, const json& clip) {
     std::vector<std::pair<double, rigmesh::Pose>> keys;
     double start = 0.0;
     for (const json& key : array(clip, "keys")) {
-        const double time = rawNumber(field(key, "time"), "key time");
+        const double time = rawNumber(field(key, "time"), R"("clip" "keys" "time")");
         if (!std::isfinite(time))
-            corrupt("a key time of " + partLabel(node) + " is not finite");
+            corrupt(
+                QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "a key time of %1 is not finite"),
+                partLabel(node));
         start = std::min(start, time);
         keys.emplace_back(time, readPoseValue(node, field(key, "pose")));
     }
@@ -139,14 +196,21 @@ rigmesh::Clip readClipValue(const PartNode& node, const json& clip) {
         const int before = out.keyCount();
         out.setKey(time - start, pose);
         if (out.keyCount() != before + 1)
-            corrupt("the clip of " + partLabel(node) + " has two keys at one time");
+            corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile",
+                                      "the clip of %1 has two keys at one time"),
+                    partLabel(node));
     }
     out.setFramesPerSecond(fps);
-    out.interpolation =
-        readMode(field(clip, "interpolation"), "clip interpolation", &interpolationFromName);
-    out.mode = readMode(field(clip, "playback"), "clip playback", &playbackFromName);
+    out.interpolation = readMode(
+        field(clip, "interpolation"), R"("clip" "interpolation")",
+        QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "unknown clip interpolation \"%1\""),
+        &interpolationFromName);
+    out.mode =
+        readMode(field(clip, "playback"), R"("clip" "playback")",
+                 QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "unknown clip playback \"%1\""),
+                 &playbackFromName);
     if (clip.contains("name"))  // optional: older files lack it
-        out.name = text(field(clip, "name"), "clip name");
+        out.name = text(field(clip, "name"), R"("clip" "name")");
     return out;
 }
 
@@ -165,7 +229,8 @@ std::vector<rigmesh::Clip> readOtherClips(const PartNode& node, const json& obje
     try {
         checkClipNamesUnique(node.clip, out);
     } catch (const Error& e) {
-        corrupt(partLabel(node) + ": " + e.what());
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "%1: %2"), partLabel(node),
+                errorText(e));
     }
     return sortedByName(std::move(out));
 }
@@ -173,15 +238,17 @@ std::vector<rigmesh::Clip> readOtherClips(const PartNode& node, const json& obje
 TimelineSettings readTimeline(const json& root, int& currentFrame) {
     const json& timeline = field(root, "timeline");
     TimelineSettings out;
-    out.startFrame = integer<int>(field(timeline, "startFrame"), "timeline start frame");
-    out.endFrame = integer<int>(field(timeline, "endFrame"), "timeline end frame");
-    out.framesPerSecond = number(field(timeline, "framesPerSecond"), "timeline frame rate");
-    currentFrame = integer<int>(field(timeline, "currentFrame"), "current frame");
+    out.startFrame = integer<int>(field(timeline, "startFrame"), R"("timeline" "startFrame")");
+    out.endFrame = integer<int>(field(timeline, "endFrame"), R"("timeline" "endFrame")");
+    out.framesPerSecond =
+        number(field(timeline, "framesPerSecond"), R"("timeline" "framesPerSecond")");
+    currentFrame = integer<int>(field(timeline, "currentFrame"), R"("timeline" "currentFrame")");
     try {
         checkTimelineSettings(out);
         checkFrame(currentFrame);
     } catch (const Error& e) {
-        corrupt(std::string("the timeline: ") + e.what());
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "the timeline: %1"),
+                errorText(e));
     }
     return out;
 }
@@ -191,45 +258,56 @@ std::set<JointId> readPinned(const PartNode& node, const json& object) {
     if (!object.contains("pinned"))
         return out;
     for (const json& value : array(object, "pinned")) {
-        if (!out.insert(readJointOf(node, value, "pinned joint")).second)
-            corrupt("a joint of " + partLabel(node) + " is pinned twice");
+        if (!out.insert(readJointOf(node, value, R"("pinned")",
+                                    QT_TRANSLATE_NOOP(
+                                        "rigmesh::model::DocumentFile",
+                                        "pinned joint %1 of %2 is not a joint of its skeleton")))
+                 .second)
+            corrupt(
+                QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "a joint of %1 is pinned twice"),
+                partLabel(node));
     }
     return out;
 }
 
 PartNode readNode(const json& object) {
     PartNode node;
-    node.id = integer<PartId>(field(object, "id"), "part id");
+    node.id = integer<PartId>(field(object, "id"), R"("parts" "id")");
     if (node.id == kNoPart)
-        corrupt("a part has no id");
-    node.name = QString::fromStdString(text(field(object, "name"), "part name"));
-    node.visible = boolean(field(object, "visible"), "part visibility");
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "a part has no id"));
+    node.name = QString::fromStdString(text(field(object, "name"), R"("parts" "name")"));
+    node.visible = boolean(field(object, "visible"), R"("parts" "visible")");
     const json& placement = field(object, "placement");
-    const std::vector<double> t = numbers(array(placement, "translation"), 3, "translation");
-    const std::vector<double> r = numbers(array(placement, "rotation"), 4, "rotation");
+    const std::vector<double> t =
+        numbers(array(placement, "translation"), 3, R"("placement" "translation")");
+    const std::vector<double> r =
+        numbers(array(placement, "rotation"), 4, R"("placement" "rotation")");
     if (t.size() != 3 || r.size() != 4)
-        corrupt("a placement has the wrong length");
+        corrupt(
+            QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "a placement has the wrong length"));
     node.placement.translation = Vec3(t[0], t[1], t[2]);
     node.placement.rotation = Eigen::Quaterniond(r[0], r[1], r[2], r[3]);
     if (std::abs(node.placement.rotation.norm() - 1.0) > kUnitTolerance)
-        corrupt("the placement rotation of part " + std::to_string(node.id) +
-                " is not a unit quaternion");
-    node.stroke = readVec2s(field(object, "stroke"), "stroke");
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile",
+                                  "the placement rotation of part %1 is not a unit quaternion"),
+                node.id);
+    node.stroke = readVec2s(field(object, "stroke"), R"("stroke")");
     const json& options = field(object, "options");
     node.options.targetEdgeLength =
-        number(field(options, "targetEdgeLength"), "target edge length");
-    node.options.smoothing = boolean(field(options, "smoothing"), "smoothing");
+        number(field(options, "targetEdgeLength"), R"("options" "targetEdgeLength")");
+    node.options.smoothing = boolean(field(options, "smoothing"), R"("options" "smoothing")");
     // Parts saved before symmetric outlines got mirrored joints rebuild as
     // they were made.
-    node.options.mirrorJoints =
-        options.contains("mirrorJoints") && boolean(options.at("mirrorJoints"), "mirror joints");
+    node.options.mirrorJoints = options.contains("mirrorJoints") &&
+                                boolean(options.at("mirrorJoints"), R"("options" "mirrorJoints")");
     try {
         checkBuildOptions(node.stroke, node.options);
     } catch (const Error& e) {
-        corrupt("part " + std::to_string(node.id) + ": " + e.what());
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "part %1: %2"), node.id,
+                errorText(e));
     }
     if (!object.contains("part"))
-        corrupt("a part has no geometry");
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "a part has no geometry"));
     node.part = std::make_shared<const Part>(partFromJson(object.at("part")));
     checkPartInvariants(node);
     node.pose = readPose(node, object);
@@ -257,7 +335,7 @@ DocumentContents readContents(json root) {
                                          "This is not a RigMesh Studio document."));
     const json& versionField = field(root, "version");
     if (!versionField.is_number_integer() || versionField.get<std::int64_t>() < 1)
-        corrupt("invalid format version");
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "invalid format version"));
     const std::int64_t version = versionField.get<std::int64_t>();
     if (version > DocumentFile::kFormatVersion)
         fail(QCoreApplication::translate(
@@ -275,13 +353,15 @@ DocumentContents readContents(json root) {
     for (const json& node : array(root, "parts")) {
         contents.parts.push_back(readNode(node));
         if (!ids.insert(contents.parts.back().id).second)
-            corrupt("two parts have the same id");
+            corrupt(
+                QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "two parts have the same id"));
         if (version < 2)
             convertJointRotations(contents.parts.back());
     }
-    contents.nextPartId = integer<PartId>(field(root, "nextPartId"), "next part id");
+    contents.nextPartId = integer<PartId>(field(root, "nextPartId"), R"("nextPartId")");
     if (contents.nextPartId == kNoPart || (!ids.empty() && contents.nextPartId <= *ids.rbegin()))
-        corrupt("the next part id is already in use");
+        corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile",
+                                  "the next part id is already in use"));
     return contents;
 }
 
@@ -321,18 +401,18 @@ DocumentContents fromBytes(const QByteArray& bytes) {
     } catch (const json::exception& e) {
         fail(QCoreApplication::translate("rigmesh::model::DocumentFile",
                                          "The document is corrupt or truncated (%1).")
-                 .arg(QString::fromStdString(parseErrorReason(e))));
+                 .arg(messageText(parseErrorReason(e))));
     } catch (const Error& e) {
-        corrupt(e.what());
+        corrupt(e);
     }
     try {
         return readContents(std::move(root));
     } catch (const json::exception& e) {
-        corrupt(parseErrorReason(e));
+        corrupt(messageText(parseErrorReason(e)));
     } catch (const DocumentFileError&) {
         throw;
     } catch (const Error& e) {  // an engine value refused what the file holds
-        corrupt(e.what());
+        corrupt(e);
     }
 }
 

@@ -11,7 +11,10 @@ QString messageText(const Message& message) {
     // under "EngineMessage" (base/MessageCatalog.cpp).
     const QString translated =
         QCoreApplication::translate("EngineMessage", messageTemplate(message.id));
-    return QString::fromStdString(fillMessage(translated.toStdString(), message.args));
+    std::vector<std::string> args = message.args;
+    for (const Message& nested : message.nested)
+        args.push_back(messageText(nested).toStdString());
+    return QString::fromStdString(fillMessage(translated.toStdString(), args));
 }
 
 QString errorText(const std::exception& error) {

@@ -1,7 +1,8 @@
 // The studio in German and Spanish: the translations are
 // compiled into the program, menus, docks and tools speak the language, and
 // a message that comes from the engine (a stroke that crosses itself)
-// reaches the status bar translated, by its id. Screenshots for
+// reaches the status bar translated, by its id, and a damaged document is
+// reported in the language down to what is wrong in it. Screenshots for
 // docs/STUDIO.md.
 #include <gtest/gtest.h>
 
@@ -17,12 +18,16 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <vector>
 
 #include "DocumentView.h"
 #include "MainWindow.h"
 #include "StudioTestSupport.h"
 #include "dialogs/ExportDialog.h"
 #include "dialogs/PreferencesDialog.h"
+#include "model/DocumentFile.h"
 #include "preferences/Translations.h"
 #include "tools/SketchTool.h"
 
@@ -36,6 +41,8 @@ struct Language {
     QString weightsDock;
     QString strokeCrosses;  // the status message of a self-crossing stroke starts so
     QString qtCancel;       // Qt's own "Cancel" (qtbase translations)
+    QString corruptValue;   // a document whose frame rate is not finite
+    QString truncated;      // a document cut short starts so
 };
 
 void PrintTo(const Language& language, std::ostream* out) {
@@ -91,6 +98,30 @@ TEST_P(TranslatedStudio, AnEngineMessageReachesTheStatusBarTranslated) {
     EXPECT_TRUE(message.startsWith(GetParam().strokeCrosses)) << message.toStdString();
     window->grab().save(
         QStringLiteral(RIGMESH_TEST_OUTPUT "/studio_%1.png").arg(QLatin1String(GetParam().code)));
+}
+
+TEST_P(TranslatedStudio, ADamagedDocumentIsReportedWhollyInTheLanguage) {
+    // What is wrong comes from the engine's reader (base/JsonRead, by id)
+    // inside the model's sentence (model/DocumentFile): both translated.
+    const QByteArray good = model::DocumentFile::toBytes(*window->currentDocument());
+    nlohmann::json root =
+        nlohmann::json::from_cbor(std::vector<std::uint8_t>(good.begin() + 3, good.end()));
+    root["timeline"]["framesPerSecond"] = std::numeric_limits<double>::quiet_NaN();
+    std::vector<std::uint8_t> bad = {0xD9, 0xD9, 0xF7};
+    nlohmann::json::to_cbor(root, bad);
+    const auto refusal = [](const QByteArray& bytes) {
+        try {
+            model::DocumentFile::fromBytes(bytes);
+        } catch (const model::DocumentFileError& error) {
+            return QString::fromUtf8(error.what());
+        }
+        return QString();
+    };
+    EXPECT_EQ(refusal(QByteArray(reinterpret_cast<const char*>(bad.data()),
+                                 static_cast<qsizetype>(bad.size()))),
+              GetParam().corruptValue);
+    const QString truncated = refusal(good.left(good.size() / 2));
+    EXPECT_TRUE(truncated.startsWith(GetParam().truncated)) << truncated.toStdString();
 }
 
 // Every label, button and list entry of `dialog`, shown at its own size,
@@ -150,7 +181,11 @@ INSTANTIATE_TEST_SUITE_P(
             QStringLiteral("Zeitleiste"),
             QStringLiteral("Skin-Gewichte"),
             QStringLiteral("Nichts erstellt: Der Strich kreuzt sich beim roten Kreuz selbst"),
-            QStringLiteral("Abbrechen")},
+            QStringLiteral("Abbrechen"),
+            QStringLiteral("Das Dokument ist beschädigt: \"timeline\" \"framesPerSecond\" enthält "
+                           "einen Wert, der nicht endlich ist."),
+            QStringLiteral("Das Dokument ist beschädigt oder abgeschnitten (es endet zu früh, bei "
+                           "Byte ")},
         Language{
             "es",
             {QStringLiteral("&Archivo"), QStringLiteral("&Editar"), QStringLiteral("&Vista"),
@@ -159,7 +194,11 @@ INSTANTIATE_TEST_SUITE_P(
             QStringLiteral("Línea de tiempo"),
             QStringLiteral("Pesos de piel"),
             QStringLiteral("No se creó nada: el trazo se cruza a sí mismo donde está la cruz roja"),
-            QStringLiteral("Cancelar")}),
+            QStringLiteral("Cancelar"),
+            QStringLiteral("El documento está dañado: \"timeline\" \"framesPerSecond\" contiene "
+                           "un valor que no es finito."),
+            QStringLiteral("El documento está dañado o truncado (termina demasiado pronto, en el "
+                           "byte ")}),
     [](const testing::TestParamInfo<Language>& language) {
         return std::string(language.param.code);
     });

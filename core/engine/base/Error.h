@@ -36,4 +36,14 @@ class Error : public std::runtime_error {
     Message message_;
 };
 
+// What `error` says, as a message that can fill another one's marker: an
+// Error's own message, or any other exception's text as it is (a library's
+// English, which no catalogue translates).
+inline Message messageOf(const std::exception& error) {
+    if (const auto* engineError = dynamic_cast<const Error*>(&error))
+        if (engineError->message().id != MessageId::None)
+            return engineError->message();
+    return Message{MessageId::UntranslatedText, {error.what()}, {}};
+}
+
 }  // namespace rigmesh

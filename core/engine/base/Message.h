@@ -440,13 +440,70 @@ enum class MessageId {
     WeightsNotFactored,
     WeightsVerticesSeeNoBone,
 
+    // Reading saved data (base/JsonRead, part/PartJson): what is wrong in a
+    // document, recipe or sketch file. Fields are named by their path in the
+    // file ("skeleton" "joints" "ids"), which reads the same in every language.
+    UntranslatedText,
+    DataNotMap,
+    DataFieldMissing,
+    DataNotList,
+    DataNotNumber,
+    DataNotFinite,
+    DataNotBoolean,
+    DataNotText,
+    DataWrongLength,
+    DataNotInteger,
+    DataOutOfRange,
+    DataEndsEarly,
+    DataMalformedAt,
+    DataNumberTooLarge,
+    DataWrongType,
+    DataMalformed,
+    DataUnknownWeightNote,
+    DataWeightNoteArguments,
+    DataMissingBoneAtIndex,
+    DataMissingBone,
+    DataNotPerVertex,
+    DataMalformedEntry,
+    DataNegative,
+    DataWeightSum,
+    DataJointCountsDiffer,
+    DataJointIdRepeated,
+    DataBoneCountsDiffer,
+    DataBoneIdRepeated,
+    DataBoneMissingJoint,
+    DataRootNotJoint,
+    DataAttachmentCountsDiffer,
+    DataAttachmentMissing,
+    DataSkeletonNotTree,
+    DataFaceMissingVertex,
+    DataUnknownOriginKind,
+    DataMirrorMissingVertex,
+    DataWeightsMissing,
+    DataBoneNameMalformed,
+    DataBoneNameMissingBone,
+    DataLockedBoneMissing,
+    DataBoneFrameMalformed,
+    DataBoneFrameInvalid,
+    DataPartInvalid,
+
+    // Recipe steps (model/recipe/RecipeRunner)
+    RecipeStepFailed,
+    RecipeStepNotObject,
+    RecipeStepNoCommand,
+    RecipeStepCommandNotText,
+
     Count  // not a message: the number of ids
 };
 
-// A message: its id and its arguments, already text.
+// A message: its id and its arguments, already text, and the messages that
+// fill the template's markers after the arguments' own, each put in the
+// reader's language first ("The document is corrupt: %1." with what is wrong
+// as a message of its own).
 struct Message {
     MessageId id = MessageId::None;
     std::vector<std::string> args;
+    std::vector<Message> nested = {};
 
     friend bool operator==(const Message&, const Message&) = default;
 };
@@ -460,7 +517,7 @@ const char* messageTemplate(MessageId id);
 // quoted names elided), whatever the arguments hold.
 std::string fillMessage(std::string_view text, const std::vector<std::string>& args);
 
-// The English text of `message`.
+// The English text of `message`, nested messages included.
 std::string englishText(const Message& message);
 // The English texts of `messages` on one line, separated by spaces.
 std::string englishText(const std::vector<Message>& messages);

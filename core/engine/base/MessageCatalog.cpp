@@ -473,8 +473,9 @@ const char* messageTemplate(MessageId id) {
         default:
             break;  // an id of another catalogue file
     }
-    for (const auto areaTemplate : {&editingMessageTemplate, &fileMessageTemplate,
-                                    &recipeMessageTemplate, &autoRigMessageTemplate})
+    for (const auto areaTemplate :
+         {&editingMessageTemplate, &fileMessageTemplate, &recipeMessageTemplate,
+          &autoRigMessageTemplate, &dataMessageTemplate})
         if (const char* text = areaTemplate(id))
             return text;
     return "";
@@ -497,7 +498,10 @@ std::string fillMessage(std::string_view text, const std::vector<std::string>& a
 }
 
 std::string englishText(const Message& message) {
-    return fillMessage(messageTemplate(message.id), message.args);
+    std::vector<std::string> args = message.args;
+    for (const Message& nested : message.nested)
+        args.push_back(englishText(nested));
+    return fillMessage(messageTemplate(message.id), args);
 }
 
 std::string englishText(const std::vector<Message>& messages) {

@@ -19,5 +19,8 @@ const char* fileMessageTemplate(MessageId id);
 const char* recipeMessageTemplate(MessageId id);
 // MessageCatalogAutoRig.cpp: rigging an imported mesh.
 const char* autoRigMessageTemplate(MessageId id);
+// MessageCatalogData.cpp: what is wrong in saved data (documents, recipes,
+// sketches) and a recipe step's failure.
+const char* dataMessageTemplate(MessageId id);
 
 }  // namespace rigmesh

@@ -60,7 +60,7 @@ json warningsJson(const std::vector<Message>& warnings) {
     for (const Message& warning : warnings) {
         const auto kind = std::find_if(kWeightWarnings.begin(), kWeightWarnings.end(),
                                        [&](const auto& k) { return k.id == warning.id; });
-        if (kind == kWeightWarnings.end())
+        if (kind == kWeightWarnings.end() || !warning.nested.empty())
             throw std::logic_error("skin weights hold a warning that documents cannot store");
         out.push_back({{"id", kind->name}, {"args", warning.args}});
     }
@@ -70,16 +70,16 @@ json warningsJson(const std::vector<Message>& warnings) {
 std::vector<Message> readWarnings(const json& list) {
     std::vector<Message> out;
     for (const json& entry : list) {
-        const std::string name = text(field(entry, "id"), "weights warning id");
+        const std::string name = text(field(entry, "id"), R"("weights" "warnings" "id")");
         const auto kind = std::find_if(kWeightWarnings.begin(), kWeightWarnings.end(),
                                        [&](const auto& k) { return name == k.name; });
         if (kind == kWeightWarnings.end())
-            fail("unknown weights warning \"" + name + "\"");
+            fail(MessageId::DataUnknownWeightNote, quoted(name.c_str()));
         Message warning{kind->id, {}};
         for (const json& argument : array(entry, "args"))
-            warning.args.push_back(text(argument, "weights warning argument"));
+            warning.args.push_back(text(argument, R"("weights" "warnings" "args")"));
         if (warning.args.size() != kind->argumentCount)
-            fail("weights warning \"" + name + "\" has the wrong number of arguments");
+            fail(MessageId::DataWeightNoteArguments, quoted(name.c_str()));
         out.push_back(std::move(warning));
     }
     return out;
@@ -184,13 +184,12 @@ BoneId readBone(const json& value, const Skeleton& skeleton, bool byIndex, const
     if (byIndex) {
         const int index = integer<int>(value, what);
         if (index < 0 || index >= skeleton.boneCount())
-            fail(std::string(what) + " refers to a missing bone");
+            fail(MessageId::DataMissingBoneAtIndex, what);
         return skeleton.bones()[index].id;
     }
     const auto bone = integer<BoneId>(value, what);
     if (!skeleton.hasBone(bone))
-        fail(std::string(what) + " refers to bone " + std::to_string(bone) +
-             ", which the skeleton does not have");
+        fail(MessageId::DataMissingBone, what, bone);
     return bone;
 }
 
@@ -200,18 +199,18 @@ std::vector<std::vector<std::pair<BoneId, double>>> readPairs(const json& list, 
                                                               bool byIndex, PairValues values,
                                                               const char* what) {
     if (!list.is_array() || (list.size() != count && !list.empty()))
-        fail(std::string(what) + " does not have one entry per vertex");
+        fail(MessageId::DataNotPerVertex, what);
     std::vector<std::vector<std::pair<BoneId, double>>> out;
     out.reserve(list.size());
     for (const json& flat : list) {
         if (!flat.is_array() || flat.size() % 2 != 0)
-            fail(std::string(what) + " has a malformed entry");
+            fail(MessageId::DataMalformedEntry, what);
         auto& entry = out.emplace_back();
         for (std::size_t i = 0; i < flat.size(); i += 2) {
             const BoneId bone = readBone(flat[i], skeleton, byIndex, what);
             const double value = number(flat[i + 1], what);
             if (value < 0)
-                fail(std::string(what) + " holds a negative value");
+                fail(MessageId::DataNegative, what);
             entry.emplace_back(bone, value);
         }
         // Bone order is id order (positions and ids may differ in order).
@@ -221,8 +220,7 @@ std::vector<std::vector<std::pair<BoneId, double>>> readPairs(const json& list, 
             for (const auto& pair : entry)
                 sum += pair.second;
             if (std::abs(sum - 1.0) > kWeightSumTolerance)
-                fail(std::string(what) + " of vertex " + std::to_string(out.size() - 1) +
-                     " sum to " + std::to_string(sum) + " instead of 1");
+                fail(MessageId::DataWeightSum, out.size() - 1, std::to_string(sum));
         }
     }
     return out;
@@ -231,15 +229,16 @@ std::vector<std::vector<std::pair<BoneId, double>>> readPairs(const json& list, 
 Skeleton readSkeleton(const json& object) {
     const json& joints = field(object, "joints");
     const json& jointIds = array(joints, "ids");
-    const std::vector<double> positions = numbers(array(joints, "positions"), 3, "joint positions");
+    const std::vector<double> positions =
+        numbers(array(joints, "positions"), 3, R"("skeleton" "joints" "positions")");
     if (positions.size() != 3 * jointIds.size())
-        fail("joint ids and positions differ in number");
+        fail(MessageId::DataJointCountsDiffer);
     std::vector<Joint> jointList;
     std::set<JointId> known;
     for (std::size_t i = 0; i < jointIds.size(); ++i) {
-        const auto id = integer<JointId>(jointIds[i], "joint id");
+        const auto id = integer<JointId>(jointIds[i], R"("skeleton" "joints" "ids")");
         if (id == kNoJoint || !known.insert(id).second)
-            fail("duplicate or invalid joint id");
+            fail(MessageId::DataJointIdRepeated);
         jointList.push_back(
             {id, Vec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2])});
     }
@@ -248,42 +247,43 @@ Skeleton readSkeleton(const json& object) {
     const json& heads = array(bones, "heads");
     const json& tails = array(bones, "tails");
     if (heads.size() != boneIds.size() || tails.size() != boneIds.size())
-        fail("bone ids, heads and tails differ in number");
+        fail(MessageId::DataBoneCountsDiffer);
     std::vector<Bone> boneList;
     std::set<BoneId> knownBones;
     for (std::size_t i = 0; i < boneIds.size(); ++i) {
-        const Bone bone{integer<BoneId>(boneIds[i], "bone id"),
-                        integer<JointId>(heads[i], "bone head"),
-                        integer<JointId>(tails[i], "bone tail")};
+        const Bone bone{integer<BoneId>(boneIds[i], R"("skeleton" "bones" "ids")"),
+                        integer<JointId>(heads[i], R"("skeleton" "bones" "heads")"),
+                        integer<JointId>(tails[i], R"("skeleton" "bones" "tails")")};
         if (!knownBones.insert(bone.id).second)
-            fail("duplicate bone id");
+            fail(MessageId::DataBoneIdRepeated);
         if (!known.contains(bone.head) || !known.contains(bone.tail))
-            fail("a bone refers to a missing joint");
+            fail(MessageId::DataBoneMissingJoint);
         boneList.push_back(bone);
     }
-    const auto root = integer<JointId>(field(object, "root"), "skeleton root");
+    const auto root = integer<JointId>(field(object, "root"), R"("skeleton" "root")");
     if (root != kNoJoint ? !known.contains(root) : !known.empty())
-        fail("the skeleton root is not one of its joints");
+        fail(MessageId::DataRootNotJoint);
     std::map<JointId, BoneId> attachments;
     if (object.contains("attachments")) {  // since format version 5
         const json& attached = field(object, "attachments");
         const json& attachedJoints = array(attached, "joints");
         const json& parents = array(attached, "bones");
         if (attachedJoints.size() != parents.size())
-            fail("attached joints and their bones differ in number");
+            fail(MessageId::DataAttachmentCountsDiffer);
         for (std::size_t i = 0; i < attachedJoints.size(); ++i) {
-            const auto joint = integer<JointId>(attachedJoints[i], "attached joint");
-            const auto bone = integer<BoneId>(parents[i], "attachment bone");
+            const auto joint =
+                integer<JointId>(attachedJoints[i], R"("skeleton" "attachments" "joints")");
+            const auto bone = integer<BoneId>(parents[i], R"("skeleton" "attachments" "bones")");
             if (!known.contains(joint) || (bone != kNoBone && !knownBones.contains(bone)) ||
                 !attachments.emplace(joint, bone).second)
-                fail("an attachment refers to a missing joint or bone, or twice to one joint");
+                fail(MessageId::DataAttachmentMissing);
         }
     }
     Skeleton skeleton =
         Skeleton::restore(std::move(jointList), std::move(boneList), root, std::move(attachments));
     if (skeleton.jointCount() > 0)
         if (const std::vector<std::string> problems = skeleton.validate(); !problems.empty())
-            fail("the skeleton is not a tree: " + problems.front());
+            fail(MessageId::DataSkeletonNotTree, problems.front());
     return skeleton;
 }
 
@@ -292,23 +292,24 @@ Skeleton readSkeleton(const json& object) {
 Part partFromJson(const json& object) {
     Part stored;
     Part* part = &stored;
-    part->name = text(field(object, "name"), "part name");
-    part->outline = readVec2s(field(object, "outline"), "outline");
+    part->name = text(field(object, "name"), R"("part" "name")");
+    part->outline = readVec2s(field(object, "outline"), R"("part" "outline")");
 
     const json& mesh = field(object, "mesh");
-    const std::vector<double> vertices = numbers(array(mesh, "vertices"), 3, "mesh vertices");
+    const std::vector<double> vertices =
+        numbers(array(mesh, "vertices"), 3, R"("mesh" "vertices")");
     for (std::size_t i = 0; i < vertices.size(); i += 3)
         part->mesh.vertices.emplace_back(vertices[i], vertices[i + 1], vertices[i + 2]);
     const int vertexCount = part->mesh.vertexCount();
     const json& faces = array(mesh, "faces");
     if (faces.size() % 3 != 0)
-        fail("mesh faces have the wrong length");
+        fail(MessageId::DataWrongLength, R"("mesh" "faces")");
     for (std::size_t i = 0; i < faces.size(); i += 3) {
         std::array<int, 3> face{};
         for (int k = 0; k < 3; ++k) {
-            face[k] = integer<int>(faces[i + k], "face index");
+            face[k] = integer<int>(faces[i + k], R"("mesh" "faces")");
             if (face[k] < 0 || face[k] >= vertexCount)
-                fail("a face refers to a missing vertex");
+                fail(MessageId::DataFaceMissingVertex);
         }
         part->mesh.faces.push_back(face);
     }
@@ -323,25 +324,26 @@ Part partFromJson(const json& object) {
     if (region.size() != originCount || section.size() != originCount ||
         axis.size() != originCount || outline.size() != originCount ||
         (originCount != 0 && originCount != vertices.size() / 3))
-        fail("vertex origins do not have one entry per vertex");
+        fail(MessageId::DataNotPerVertex, R"("origins")");
     for (std::size_t i = 0; i < originCount; ++i) {
-        const int k = integer<int>(kind[i], "origin kind");
+        const int k = integer<int>(kind[i], R"("origins" "kind")");
         if (k != static_cast<int>(RegionKind::Cylindrical) &&
             k != static_cast<int>(RegionKind::Connecting))
-            fail("unknown vertex origin kind");
-        part->origins.push_back(
-            {static_cast<RegionKind>(k), integer<int>(region[i], "origin region"),
-             integer<int>(section[i], "origin section"), number(axis[i], "origin axis position"),
-             boolean(outline[i], "origin on outline")});
+            fail(MessageId::DataUnknownOriginKind);
+        part->origins.push_back({static_cast<RegionKind>(k),
+                                 integer<int>(region[i], R"("origins" "region")"),
+                                 integer<int>(section[i], R"("origins" "section")"),
+                                 number(axis[i], R"("origins" "axisPosition")"),
+                                 boolean(outline[i], R"("origins" "onOutline")")});
     }
 
     const json& mirror = array(object, "mirror");
     if (!mirror.empty() && static_cast<int>(mirror.size()) != vertexCount)
-        fail("the mirror map does not have one entry per vertex");
+        fail(MessageId::DataNotPerVertex, R"("mirror")");
     for (const json& m : mirror) {
-        const int index = integer<int>(m, "mirror index");
+        const int index = integer<int>(m, R"("mirror")");
         if (index < 0 || index >= vertexCount)
-            fail("the mirror map refers to a missing vertex");
+            fail(MessageId::DataMirrorMissingVertex);
         part->mirror.push_back(index);
     }
 
@@ -353,58 +355,61 @@ Part partFromJson(const json& object) {
     const bool byIndex = !weights.contains("byBoneId");
     const json& perVertex = array(weights, byIndex ? "perVertex" : "byBoneId");
     if (boneCount > 0 && static_cast<int>(perVertex.size()) != vertexCount)
-        fail("a rigged part needs skin weights for every vertex");
-    part->weights.perVertex = readPairs(perVertex, vertexCount, part->skeleton, byIndex,
-                                        PairValues::Weights, "skin weights");
+        fail(MessageId::DataWeightsMissing);
+    part->weights.perVertex =
+        readPairs(perVertex, vertexCount, part->skeleton, byIndex, PairValues::Weights,
+                  byIndex ? R"("weights" "perVertex")" : R"("weights" "byBoneId")");
     for (const json& b : array(weights, byIndex ? "failedBones" : "failedBoneIds"))
-        part->weights.failedBones.push_back(readBone(b, part->skeleton, byIndex, "failed bone"));
+        part->weights.failedBones.push_back(
+            readBone(b, part->skeleton, byIndex, R"("weights" "failedBones")"));
     part->weights.warnings = readWarnings(array(weights, "warnings"));
     part->knownClosestBones = readPairs(
         array(object, byIndex ? "knownClosestBones" : "knownClosestByBoneId"), vertexCount,
-        part->skeleton, byIndex, PairValues::Distances, "known closest bones");
+        part->skeleton, byIndex, PairValues::Distances, R"("knownClosestBones")");
     if (object.contains("boneNames"))  // optional: older files lack it
         for (const json& entry : array(object, "boneNames")) {
             if (!entry.is_array() || entry.size() != 2)
-                fail("a bone name is not [bone id, name]");
-            const auto bone = integer<BoneId>(entry[0], "named bone");
+                fail(MessageId::DataBoneNameMalformed);
+            const auto bone = integer<BoneId>(entry[0], R"("boneNames")");
             if (!part->skeleton.hasBone(bone) || part->boneNames.contains(bone))
-                fail("a bone name refers to a missing bone, or twice to one");
-            part->boneNames[bone] = text(entry[1], "bone name");
+                fail(MessageId::DataBoneNameMissingBone);
+            part->boneNames[bone] = text(entry[1], R"("boneNames")");
         }
     if (object.contains("lockedBones"))  // optional: older files lack it
         for (const json& entry : array(object, "lockedBones")) {
-            const auto bone = integer<BoneId>(entry, "locked bone");
+            const auto bone = integer<BoneId>(entry, R"("lockedBones")");
             if (!part->skeleton.hasBone(bone) || !part->lockedBones.insert(bone).second)
-                fail("a locked bone refers to a missing bone, or twice to one");
+                fail(MessageId::DataLockedBoneMissing);
         }
     if (object.contains("weightsPainted"))  // optional: older files lack it
-        part->weightsPainted = boolean(field(object, "weightsPainted"), "weightsPainted");
+        part->weightsPainted = boolean(field(object, "weightsPainted"), R"("weightsPainted")");
     if (object.contains("boneFrames"))  // since format version 5
         for (const json& entry : array(object, "boneFrames")) {
             if (!entry.is_array() || entry.size() != 5)
-                fail("a bone frame is not [bone id, w, x, y, z]");
-            const auto bone = integer<BoneId>(entry[0], "bone frame");
+                fail(MessageId::DataBoneFrameMalformed);
+            const auto bone = integer<BoneId>(entry[0], R"("boneFrames")");
             const Eigen::Quaterniond q(
-                number(entry[1], "bone frame"), number(entry[2], "bone frame"),
-                number(entry[3], "bone frame"), number(entry[4], "bone frame"));
+                number(entry[1], R"("boneFrames")"), number(entry[2], R"("boneFrames")"),
+                number(entry[3], R"("boneFrames")"), number(entry[4], R"("boneFrames")"));
             if (!part->skeleton.hasBone(bone) || std::abs(q.squaredNorm() - 1.0) > 1e-6 ||
                 !part->boneFrames.emplace(bone, q).second)
-                fail("a bone frame is not a unit rotation of a bone, or names one twice");
+                fail(MessageId::DataBoneFrameInvalid);
         }
     if (object.contains("meshPieces"))  // since format version 5
         for (const json& entry : array(object, "meshPieces"))
-            part->meshPieces.push_back({text(field(entry, "name"), "mesh piece name"),
-                                        integer<int>(field(entry, "vertexCount"), "mesh piece"),
-                                        integer<int>(field(entry, "faceCount"), "mesh piece")});
+            part->meshPieces.push_back(
+                {text(field(entry, "name"), R"("meshPieces" "name")"),
+                 integer<int>(field(entry, "vertexCount"), R"("meshPieces" "vertexCount")"),
+                 integer<int>(field(entry, "faceCount"), R"("meshPieces" "faceCount")")});
     if (!part->meshPieces.empty())
         if (const std::vector<std::string> problems = part->validate(); !problems.empty())
-            fail(problems.front());
+            fail(MessageId::DataPartInvalid, problems.front());
     // Parts written before the flag was stored: a sketch's surface (it keeps
     // its outline) was made here; of the others (merges, cuts, imports) one
     // that is closed, manifold and oriented is treated as made here, so the
     // loader keeps checking it, and any other was an import, kept as it was.
     part->surfaceFromFile = object.contains("surfaceFromFile")
-                                ? boolean(field(object, "surfaceFromFile"), "surfaceFromFile")
+                                ? boolean(field(object, "surfaceFromFile"), R"("surfaceFromFile")")
                                 : part->outline.empty() && !part->validateSolid().empty();
     return stored;
 }

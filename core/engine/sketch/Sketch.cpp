@@ -103,11 +103,12 @@ Sketch parseSketchJson(const std::string& text, const std::string& sourceName) {
     try {
         document = nlohmann::json::parse(quoteNonFiniteTokens(text));
     } catch (const nlohmann::json::parse_error& error) {
-        throw Error(MessageId::SketchNotJson, sourceName, jsonread::parseErrorReason(error));
+        throw Error(
+            Message{MessageId::SketchNotJson, {sourceName}, {jsonread::parseErrorReason(error)}});
     } catch (const nlohmann::json::exception& error) {
         // E.g. out_of_range 406: a number like 1e999 that no double can hold.
-        throw Error(MessageId::SketchNumberOutOfRange, sourceName,
-                    jsonread::parseErrorReason(error));
+        throw Error(Message{
+            MessageId::SketchNumberOutOfRange, {sourceName}, {jsonread::parseErrorReason(error)}});
     }
     if (!document.is_object()) {
         throw Error(MessageId::SketchNotObject, sourceName);

@@ -4,10 +4,10 @@
 
 namespace rigmesh::model {
 
-RecipeError::RecipeError(int step, std::string command, std::string reason)
-    : rigmesh::Error("step " + std::to_string(step) + " (" + command + "): " + reason),
+RecipeError::RecipeError(int step, std::string command, Message reason)
+    : rigmesh::Error(Message{
+          MessageId::RecipeStepFailed, {std::to_string(step), command}, {std::move(reason)}}),
       step_(step),
-      command_(std::move(command)),
-      reason_(std::move(reason)) {}
+      command_(std::move(command)) {}
 
 }  // namespace rigmesh::model

@@ -36,11 +36,12 @@ nlohmann::json parseRecipe(const std::string& text, const std::string& sourceNam
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& error) {
-        throw Error(MessageId::RecipeNotJson, sourceName, jsonread::parseErrorReason(error));
+        throw Error(
+            Message{MessageId::RecipeNotJson, {sourceName}, {jsonread::parseErrorReason(error)}});
     } catch (const nlohmann::json::exception& error) {
         // E.g. out_of_range 406: a number like 1e999 that no double can hold.
-        throw Error(MessageId::RecipeNumberOutOfRange, sourceName,
-                    jsonread::parseErrorReason(error));
+        throw Error(Message{
+            MessageId::RecipeNumberOutOfRange, {sourceName}, {jsonread::parseErrorReason(error)}});
     }
 }
 

@@ -15,14 +15,17 @@ namespace rigmesh::model {
 
 namespace {
 
+// What a step's message names as its command when it has none.
+constexpr const char* kNoCommand = "?";
+
 std::string stepCommandName(const nlohmann::json& step, int number) {
     if (!step.is_object())
-        throw RecipeError(number, "?", "a step must be an object {\"command\": ..., ...}");
+        throw RecipeError(number, kNoCommand, Message{MessageId::RecipeStepNotObject, {}, {}});
     const auto it = step.find("command");
     if (it == step.end())
-        throw RecipeError(number, "?", "the step has no \"command\"");
+        throw RecipeError(number, kNoCommand, Message{MessageId::RecipeStepNoCommand, {}, {}});
     if (!it->is_string())
-        throw RecipeError(number, "?", "\"command\" must be text");
+        throw RecipeError(number, kNoCommand, Message{MessageId::RecipeStepCommandNotText, {}, {}});
     return it->get<std::string>();
 }
 
@@ -78,9 +81,9 @@ RecipeStepReport RecipeRunner::apply(const nlohmann::json& step, int number,
     } catch (const nlohmann::json::exception& error) {
         throw RecipeError(number, command, jsonread::parseErrorReason(error));
     } catch (const Error& error) {
-        throw RecipeError(number, command, error.what());
+        throw RecipeError(number, command, messageOf(error));
     } catch (const std::filesystem::filesystem_error& error) {
-        throw RecipeError(number, command, error.what());
+        throw RecipeError(number, command, messageOf(error));
     }
     // Anything else (std::logic_error: a programming error; std::bad_alloc)
     // goes on as it is, so the command line reports it as an internal error or

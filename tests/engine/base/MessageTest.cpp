@@ -6,9 +6,11 @@
 #include <cmath>
 #include <regex>
 #include <set>
+#include <stdexcept>
 
 #include "base/Error.h"
 #include "base/Message.h"
+#include "sketch/Sketch.h"
 #include "sketch/StrokeCleaner.h"
 
 namespace rigmesh {
@@ -26,6 +28,43 @@ TEST(EngineMessages, ErrorWithoutIdIsItsTextAlone) {
     EXPECT_EQ(error.message().id, MessageId::None);
     EXPECT_TRUE(error.message().args.empty());
     EXPECT_STREQ(error.what(), "cannot export: a part is missing");
+}
+
+TEST(EngineMessages, NestedMessagesFillTheMarkersAfterTheArguments) {
+    const Message stepFailed{MessageId::RecipeStepFailed,
+                             {"3", "pose"},
+                             {Message{MessageId::DataFieldMissing, {"\"rotations\""}}}};
+    EXPECT_EQ(englishText(stepFailed), "step 3 (pose): missing \"rotations\"");
+    // Nested twice: each level is filled in before the one around it.
+    const Message twice{MessageId::RecipeStepFailed, {"1", "sketch"}, {stepFailed}};
+    EXPECT_EQ(englishText(twice), "step 1 (sketch): step 3 (pose): missing \"rotations\"");
+    EXPECT_STREQ(Error(stepFailed).what(), "step 3 (pose): missing \"rotations\"");
+}
+
+TEST(EngineMessages, AnyExceptionBecomesAMessageToNest) {
+    const Error withId(MessageId::PartHasNoBone, 7);
+    EXPECT_EQ(messageOf(withId), withId.message());
+    // A library's own words, or an Error without an id, travel as they are.
+    const Message library = messageOf(std::runtime_error("filesystem error: no such file"));
+    EXPECT_EQ(library.id, MessageId::UntranslatedText);
+    EXPECT_EQ(englishText(library), "filesystem error: no such file");
+    EXPECT_EQ(englishText(messageOf(Error(std::string("plain words")))), "plain words");
+}
+
+TEST(EngineMessages, AFileThatIsNotJsonSaysWhyByIdInsideItsOwnMessage) {
+    try {
+        parseSketchJson("{\"strokes\": [", "cut.json");
+        FAIL() << "half a JSON object is no sketch";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.message().id, MessageId::SketchNotJson);
+        EXPECT_EQ(error.message().args, std::vector<std::string>{"cut.json"});
+        ASSERT_EQ(error.message().nested.size(), 1u);
+        // A JSON text that stops early is a syntax error where it stops
+        // (CBOR's early end is DataEndsEarly: TranslatedStudio's damaged document).
+        EXPECT_EQ(error.message().nested[0].id, MessageId::DataMalformedAt);
+        EXPECT_EQ(std::string(error.what()),
+                  "Sketch \"cut.json\" is not valid JSON: it is malformed at byte 14");
+    }
 }
 
 TEST(EngineMessages, FillingReplacesEachMarkerOnceInOnePass) {
