@@ -22,14 +22,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <exception>
-#include <fstream>
 #include <numeric>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "ToolMain.h"
 #include "io/ExportFormat.h"
 #include "io/InfluenceLimit.h"
 #include "io/SceneExport.h"
@@ -127,22 +126,11 @@ int run(int argc, char** argv) {
         }
     }
     out["model_size"] = (high - low).norm();
-    std::ofstream file(argv[2]);
-    file << out.dump(1) << "\n";
-    if (!file.flush()) {
-        std::fprintf(stderr, "expected_clips: cannot write %s\n", argv[2]);
-        return 1;
-    }
-    return 0;
+    return rigmesh::test::writeJson(out, argv[2], "expected_clips") ? 0 : 1;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "expected_clips: %s\n", error.what());
-        return 1;
-    }
+    return rigmesh::test::runProgram("expected_clips", &run, argc, argv);
 }

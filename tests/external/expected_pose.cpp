@@ -20,14 +20,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <exception>
-#include <fstream>
 #include <numeric>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "ToolMain.h"
 #include "base/Error.h"
 #include "io/ExportFormat.h"
 #include "io/ExportRig.h"
@@ -139,22 +138,11 @@ int run(int argc, char** argv) {
         out["vertices"][extension] = list;
     }
 
-    std::ofstream file(argv[2]);
-    file << out.dump(1) << "\n";
-    if (!file.flush()) {
-        std::fprintf(stderr, "expected_pose: cannot write %s\n", argv[2]);
-        return 1;
-    }
-    return 0;
+    return rigmesh::test::writeJson(out, argv[2], "expected_pose") ? 0 : 1;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "expected_pose: %s\n", error.what());
-        return 1;
-    }
+    return rigmesh::test::runProgram("expected_pose", &run, argc, argv);
 }

@@ -15,6 +15,7 @@
 #include "EmbeddedExamples.h"
 #include "MainWindow.h"
 #include "StudioTestSupport.h"
+#include "SymmetricOutline.h"
 #include "model/Document.h"
 #include "model/commands/CreatePartCommand.h"
 #include "sketch/Sketch.h"
@@ -50,6 +51,18 @@ class StudioFixture : public testing::Test {
             model::CreatePartCommand::create(*document(), sketch.points, "biped").release());
         viewport()->frameAll();
         return document()->parts().back().id;
+    }
+    // The example biped made exactly symmetric (its outline mirrored about
+    // its axis), as the only part: X-mirror finds every bone's image.
+    model::PartId addSymmetricExampleBiped() {
+        addExampleBiped();
+        const std::vector<Vec2> outline =
+            testsupport::symmetricOutline(document()->parts().back().part->outline);
+        document()->undoStack()->undo();
+        document()->undoStack()->push(
+            model::CreatePartCommand::create(*document(), outline, "biped").release());
+        viewport()->frameAll();
+        return document()->parts().front().id;
     }
     // Where a point of the part's rest shape (at its placement) is on screen.
     QPointF onScreen(const Vec3& p) const {

@@ -93,14 +93,7 @@ TEST_F(StudioSymmetry, SubtractOnAOneBoneRegionMovesTheWeightToTheParentBone) {
 // X-mirror is left and right: a stroke on the right forearm with X-mirror
 // on paints the left forearm's bone on the left as much, and undoes exactly.
 TEST_F(StudioSymmetry, XMirrorPaintsTheOtherArmsBoneOnTheOtherSide) {
-    // The example biped made exactly symmetric.
-    addExampleBiped();
-    const std::vector<Vec2> outline = testsupport::symmetricOutline(part().outline);
-    document()->undoStack()->undo();
-    document()->undoStack()->push(
-        model::CreatePartCommand::create(*document(), outline, "biped").release());
-    const model::PartId biped = document()->parts().front().id;
-    viewport()->frameAll();
+    const model::PartId biped = addSymmetricExampleBiped();
     const JointId hand = handOn(1.0);
     const BoneId bone = *boneForJoint(part().skeleton, hand);
     const std::optional<PartSymmetry> symmetry = findPartSymmetry(part());

@@ -164,14 +164,7 @@ TEST_F(WeightsStudio, WeightsPanelShowsTheNotesTheWeightsCarry) {
 // weights bit for bit (the other bones take up the change) and undoes
 // exactly.
 TEST_F(WeightsStudio, MirroredStrokePaintsBothArmsAndLeavesLockedBonesAlone) {
-    // The example biped made exactly symmetric.
-    addExampleBiped();
-    const std::vector<Vec2> outline = testsupport::symmetricOutline(part().outline);
-    document()->undoStack()->undo();
-    document()->undoStack()->push(
-        model::CreatePartCommand::create(*document(), outline, "biped").release());
-    const model::PartId biped = document()->parts().front().id;
-    viewport()->frameAll();
+    const model::PartId biped = addSymmetricExampleBiped();
     const Part rest = part();
     // Lock the upper arm's bone and paint the head's bone (the topmost
     // joint's) onto the arm: the forearm's bone gives way, the locked one
