@@ -97,21 +97,20 @@ std::uint64_t edgeKey(int u, int v) {
 std::vector<Segment> slice(const std::vector<Vec3>& points,
                            const std::vector<std::array<int, 3>>& faces, const Vec3& p,
                            const Vec3& d) {
-    std::vector<double> side(points.size());
-    for (std::size_t v = 0; v < points.size(); ++v)
-        side[v] = (points[v] - p).dot(d);
     std::vector<Segment> segments;
     for (const auto& f : faces) {
+        const std::array<double, 3> side{(points[f[0]] - p).dot(d), (points[f[1]] - p).dot(d),
+                                         (points[f[2]] - p).dot(d)};
         std::array<Vec3, 2> ends;
         std::array<std::uint64_t, 2> keys{};
         int found = 0;
         for (int i = 0; i < 3 && found < 2; ++i) {
-            const int a = f[i], b = f[(i + 1) % 3];
-            if ((side[a] >= 0.0) == (side[b] >= 0.0))
+            const int j = (i + 1) % 3;
+            if ((side[i] >= 0.0) == (side[j] >= 0.0))
                 continue;
-            const double t = side[a] / (side[a] - side[b]);
-            ends[found] = points[a] + t * (points[b] - points[a]);
-            keys[found] = edgeKey(a, b);
+            const double t = side[i] / (side[i] - side[j]);
+            ends[found] = points[f[i]] + t * (points[f[j]] - points[f[i]]);
+            keys[found] = edgeKey(f[i], f[j]);
             ++found;
         }
         if (found == 2)
@@ -201,53 +200,80 @@ double nearestTo(const std::vector<Segment>& segments, const Outline& outline, c
 // The mesh's outlines in the plane through `p` perpendicular to `d`, inside
 // the proxy's outline around p (or, where the chain runs between two of
 // them, the nearest): two comparable ones side by side, or none.
-std::vector<Outline> limbsAt(const Welded& mesh, const Welded& proxy, const Vec3& p,
-                             const Vec3& d) {
-    const Vec3 u = d.unitOrthogonal();
-    const Vec3 v = d.cross(u);
-    const std::vector<Segment> proxyCut = slice(proxy.points, proxy.faces, p, d);
-    std::vector<int> all(proxyCut.size());
-    std::iota(all.begin(), all.end(), 0);
-    std::vector<Outline> proxyOutlines;
-    for (const std::vector<int>& members : outlinesOf(proxyCut, all))
-        proxyOutlines.push_back(outlineFrom(proxyCut, members));
+// The proxy's cut through p perpendicular to d, and its outlines around
+// the chain there: the innermost one around p or, where the chain runs
+// outside the proxy (a straight bone across a gap the proxy has open), the
+// outlines about as near as the nearest.
+struct ProxyCut {
+    Vec3 u, v;
+    std::vector<Segment> segments;
+    std::vector<Outline> outlines;
+    std::vector<int> around;
+
     // Inside the proxy: within an odd number of its outlines (a cavity's
-    // outline lies inside the outer one).
-    const auto insideProxy = [&](const Vec3& q) {
+    // outline lies inside the outer one), and within one around the chain.
+    bool holds(const Vec3& q) const {
         bool odd = false;
-        for (const Outline& outline : proxyOutlines)
-            odd ^= encloses(proxyCut, outline.members, q, u, v);
-        return odd;
-    };
-    // The innermost proxy outline around p; where the chain runs outside
-    // the proxy (a straight bone across a gap the proxy has open), the
-    // outlines about as near as the nearest.
-    std::vector<const Outline*> around;
-    if (insideProxy(p)) {
-        for (const Outline& outline : proxyOutlines)
-            if (encloses(proxyCut, outline.members, p, u, v) &&
-                (around.empty() || outline.length < around.front()->length))
-                around = {&outline};
+        for (const Outline& outline : outlines)
+            odd ^= encloses(segments, outline.members, q, u, v);
+        return odd && std::any_of(around.begin(), around.end(), [&](int o) {
+                   return encloses(segments, outlines[o].members, q, u, v);
+               });
+    }
+    // The farthest point of the outlines around the chain from p.
+    double reach(const Vec3& p) const {
+        double farthest = 0.0;
+        for (int o : around)
+            for (int s : outlines[o].members)
+                farthest =
+                    std::max({farthest, (segments[s].a - p).norm(), (segments[s].b - p).norm()});
+        return farthest;
+    }
+};
+
+ProxyCut proxyCutAt(const Welded& proxy, const Vec3& p, const Vec3& d) {
+    ProxyCut cut;
+    cut.u = d.unitOrthogonal();
+    cut.v = d.cross(cut.u);
+    cut.segments = slice(proxy.points, proxy.faces, p, d);
+    std::vector<int> all(cut.segments.size());
+    std::iota(all.begin(), all.end(), 0);
+    for (const std::vector<int>& members : outlinesOf(cut.segments, all))
+        cut.outlines.push_back(outlineFrom(cut.segments, members));
+    const int count = static_cast<int>(cut.outlines.size());
+    int enclosing = 0;
+    for (const Outline& outline : cut.outlines)
+        enclosing += encloses(cut.segments, outline.members, p, cut.u, cut.v) ? 1 : 0;
+    if (enclosing % 2 == 1) {
+        for (int o = 0; o < count; ++o)
+            if (encloses(cut.segments, cut.outlines[o].members, p, cut.u, cut.v) &&
+                (cut.around.empty() || cut.outlines[o].length < cut.outlines[cut.around[0]].length))
+                cut.around = {o};
     } else {
         double nearest = INFINITY;
-        for (const Outline& outline : proxyOutlines)
-            nearest = std::min(nearest, nearestTo(proxyCut, outline, p));
-        for (const Outline& outline : proxyOutlines)
-            if (nearestTo(proxyCut, outline, p) <= 2.0 * nearest)
-                around.push_back(&outline);
+        for (const Outline& outline : cut.outlines)
+            nearest = std::min(nearest, nearestTo(cut.segments, outline, p));
+        for (int o = 0; o < count; ++o)
+            if (nearestTo(cut.segments, cut.outlines[o], p) <= 2.0 * nearest)
+                cut.around.push_back(o);
     }
-    if (around.empty())
+    return cut;
+}
+
+// The mesh's outlines in the plane through `p` perpendicular to `d`, inside
+// the proxy's outlines around the chain there (`faces`: those of the
+// mesh's that may reach them): those comparable with the longest.
+std::vector<Outline> limbsAt(const Welded& mesh, const std::vector<std::array<int, 3>>& faces,
+                             const ProxyCut& proxyCut, const Vec3& p, const Vec3& d) {
+    const Vec3& u = proxyCut.u;
+    const Vec3& v = proxyCut.v;
+    if (proxyCut.around.empty())
         return {};
-    const std::vector<Segment> meshCut = slice(mesh.points, mesh.faces, p, d);
+    const std::vector<Segment> meshCut = slice(mesh.points, faces, p, d);
     std::vector<int> inside;
-    for (int s = 0; s < static_cast<int>(meshCut.size()); ++s) {
-        const Vec3 middle = 0.5 * (meshCut[s].a + meshCut[s].b);
-        if (insideProxy(middle) &&
-            std::any_of(around.begin(), around.end(), [&](const Outline* outline) {
-                return encloses(proxyCut, outline->members, middle, u, v);
-            }))
+    for (int s = 0; s < static_cast<int>(meshCut.size()); ++s)
+        if (proxyCut.holds(0.5 * (meshCut[s].a + meshCut[s].b)))
             inside.push_back(s);
-    }
     std::vector<Outline> outlines;
     for (const std::vector<int>& members : outlinesOf(meshCut, inside))
         outlines.push_back(outlineFrom(meshCut, members));
@@ -390,13 +416,50 @@ struct Split {
 
 std::optional<Split> findSplit(const Polyline& line, const Welded& mesh, const Welded& proxy) {
     const double step = line.length() / kStations;
-    std::vector<std::vector<Outline>> cuts(kStations);
-    for (int i = 0; i < kStations; ++i) {
+    std::vector<std::optional<ProxyCut>> proxyCuts(kStations);
+    const auto plane = [&](int i) {
         const double arc = (i + 0.5) * step;
-        const Vec3 d = line.at(arc + step) - line.at(arc - step);
-        if (d.norm() > 0.0)
-            cuts[i] = limbsAt(mesh, proxy, line.at(arc), d.normalized());
-    }
+        return std::pair{line.at(arc), Vec3(line.at(arc + step) - line.at(arc - step))};
+    };
+    for (int i = 0; i < kStations; ++i)
+        if (const auto [p, d] = plane(i); d.norm() > 0.0)
+            proxyCuts[i] = proxyCutAt(proxy, p, d.normalized());
+    // Only the mesh's faces that may reach the proxy's outlines around the
+    // given stations are cut: a corner within their reach of the chain, or
+    // within that and the face's longest edge.
+    std::vector<double> fromChain(mesh.points.size(), INFINITY);
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+        for (std::size_t j = 1; j < line.points.size(); ++j)
+            fromChain[v] = std::min(
+                fromChain[v],
+                pointSegmentDistance(mesh.points[v], {line.points[j - 1], line.points[j]}));
+    std::vector<std::vector<Outline>> cuts(kStations);
+    const auto cut = [&](int from, int to) {
+        double reach = 0.0;
+        for (int i = from; i < to; ++i)
+            if (proxyCuts[i])
+                reach = std::max(reach, proxyCuts[i]->reach(plane(i).first));
+        std::vector<std::array<int, 3>> faces;
+        for (const auto& f : mesh.faces) {
+            double longest = 0.0;
+            for (int i = 0; i < 3; ++i)
+                longest =
+                    std::max(longest, (mesh.points[f[i]] - mesh.points[f[(i + 1) % 3]]).norm());
+            if (std::min({fromChain[f[0]], fromChain[f[1]], fromChain[f[2]]}) <= reach + longest)
+                faces.push_back(f);
+        }
+        for (int i = from; i < to; ++i)
+            if (proxyCuts[i]) {
+                const auto [p, d] = plane(i);
+                cuts[i] = limbsAt(mesh, faces, *proxyCuts[i], p, d.normalized());
+            }
+    };
+    // The stations nearest the tip first: most chains are one limb there.
+    cut(kStations - kTipStations, kStations);
+    if (std::none_of(cuts.end() - kTipStations, cuts.end(),
+                     [](const std::vector<Outline>& outlines) { return outlines.size() == 2; }))
+        return std::nullopt;
+    cut(0, kStations - kTipStations);
     // The two limbs followed from the station nearest the tip that has
     // exactly two up the chain: at each station the outline nearest each,
     // when that is another for each and no farther than their distance
