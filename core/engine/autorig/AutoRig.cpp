@@ -10,6 +10,7 @@
 #include "autorig/BoneCoverage.h"
 #include "autorig/BonesInside.h"
 #include "autorig/CurveSkeleton.h"
+#include "autorig/FusedLimbs.h"
 #include "autorig/WeightTransfer.h"
 #include "base/Error.h"
 #include "part/BoneWeights.h"
@@ -142,10 +143,16 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
         static_cast<int>(std::erase_if(result.part.mesh.faces, [](const std::array<int, 3>& f) {
             return f[0] == f[1] || f[1] == f[2] || f[0] == f[2];
         }));
+    FusedLimbsReport fused;
     try {
         const CurveSkeleton curve =
             extractCurveSkeleton(surface.mainPiece, stage(progress, kSurfaceDone, kSkeletonDone));
         result.part.skeleton = skeletonFromCurve(curve, surface.mainPiece, options.bones);
+        // Limbs a small gap apart are one on the proxy (it bridges gaps
+        // narrower than alpha) but two in the mesh: their chain becomes two
+        // (autorig/FusedLimbs).
+        if (surface.kind == RigSurface::Kind::Proxy)
+            fused = splitFusedLimbs(result.part.skeleton, part.mesh, surface.mainPiece);
     } catch (const Error& error) {
         // A blob the flow contracts to a point: a chain along its main axis.
         if (!flowGaveNoSkeleton(error.message().id))
@@ -192,6 +199,8 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     reportRigProgress(progress, kHeatDone);
 
     result.part.weights.perVertex = weightsOfInput(part.mesh, surface, surfaceWeights);
+    // Limbs the proxy fused share its heat; the mesh tells them apart.
+    separateFusedLimbWeights(part.mesh, result.part.skeleton, fused, result.part.weights.perVertex);
     const std::map<BoneId, int> following = followOneBone(
         part.mesh, surface, options.floatingPieceFraction, result.part.weights.perVertex);
     for (const auto& [bone, count] : following)

@@ -1,0 +1,708 @@
+#include "autorig/FusedLimbs.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <optional>
+#include <set>
+#include <unordered_map>
+
+#include "base/DisjointSets.h"
+#include "rig/BoneSegment.h"
+
+namespace rigmesh {
+
+namespace {
+
+// Planes across a leaf chain, evenly along it.
+constexpr int kStations = 24;
+// The chain is two limbs from the highest station whose plane cuts the
+// mesh in two outlines, when this share of the stations from there to the
+// tip do so too (limbs may touch here and there: a knee, the feet) and at
+// least kFewestSplitStations.
+constexpr double kSplitShare = 0.6;
+constexpr int kFewestSplitStations = 4;
+// Two outlines are two limbs when the shorter is at least this share of
+// the longer (a strap or a strand of hair beside a leg is not a limb), and
+// no third outline is as long.
+constexpr double kComparable = 0.35;
+// Two limbs fused along most of their length part within the first
+// quarter of the chain (legs from the hips). A chain that parts lower down
+// is one limb the proxy joined to the end of another (a shin to the other
+// shin, whose thigh has a chain of its own): not taken apart here.
+constexpr int kHighestTop = kStations / 4;
+// Both limbs reach the tip: two outlines among this many stations nearest it.
+constexpr int kTipStations = 3;
+// A limb's outline is followed from station to station while its length
+// changes by less than this factor.
+constexpr double kLengthChange = 1.6;
+// A limb's end gets its tip in its middle when it has at least this many
+// of the mesh's points.
+constexpr int kFewestEndPoints = 4;
+
+struct PositionHash {
+    std::size_t operator()(const Vec3& p) const {
+        std::size_t h = 0;
+        for (int i = 0; i < 3; ++i)
+            h ^= std::hash<double>{}(p[i]) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+        return h;
+    }
+};
+
+// The mesh with coincident vertices joined, so that a plane cuts a seamed
+// limb in one connected outline.
+struct Welded {
+    std::vector<Vec3> points;
+    std::vector<std::array<int, 3>> faces;
+    std::vector<int> of;  // per mesh vertex, its point
+};
+
+Welded weld(const TriMesh& mesh) {
+    Welded welded;
+    std::unordered_map<Vec3, int, PositionHash> index;
+    std::vector<int>& of = welded.of;
+    of.resize(mesh.vertices.size());
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+        const auto [at, added] =
+            index.emplace(mesh.vertices[v], static_cast<int>(welded.points.size()));
+        if (added)
+            welded.points.push_back(mesh.vertices[v]);
+        of[v] = at->second;
+    }
+    const int n = mesh.vertexCount();
+    for (const auto& f : mesh.faces) {
+        if (f[0] < 0 || f[1] < 0 || f[2] < 0 || f[0] >= n || f[1] >= n || f[2] >= n)
+            continue;
+        const std::array<int, 3> w{of[f[0]], of[f[1]], of[f[2]]};
+        if (w[0] != w[1] && w[1] != w[2] && w[0] != w[2])
+            welded.faces.push_back(w);
+    }
+    return welded;
+}
+
+struct Segment {
+    Vec3 a, b;
+    std::uint64_t keyA, keyB;  // the mesh edges its ends lie on
+};
+
+std::uint64_t edgeKey(int u, int v) {
+    if (u > v)
+        std::swap(u, v);
+    return (static_cast<std::uint64_t>(u) << 32) | static_cast<std::uint32_t>(v);
+}
+
+// Where the plane through `p` perpendicular to `d` cuts the triangles.
+std::vector<Segment> slice(const std::vector<Vec3>& points,
+                           const std::vector<std::array<int, 3>>& faces, const Vec3& p,
+                           const Vec3& d) {
+    std::vector<Segment> segments;
+    for (const auto& f : faces) {
+        const std::array<double, 3> side{(points[f[0]] - p).dot(d), (points[f[1]] - p).dot(d),
+                                         (points[f[2]] - p).dot(d)};
+        std::array<Vec3, 2> ends;
+        std::array<std::uint64_t, 2> keys{};
+        int found = 0;
+        for (int i = 0; i < 3 && found < 2; ++i) {
+            const int j = (i + 1) % 3;
+            if ((side[i] >= 0.0) == (side[j] >= 0.0))
+                continue;
+            const double t = side[i] / (side[i] - side[j]);
+            ends[found] = points[f[i]] + t * (points[f[j]] - points[f[i]]);
+            keys[found] = edgeKey(f[i], f[j]);
+            ++found;
+        }
+        if (found == 2)
+            segments.push_back({ends[0], ends[1], keys[0], keys[1]});
+    }
+    return segments;
+}
+
+// The segments' connected outlines (through shared mesh edges).
+std::vector<std::vector<int>> outlinesOf(const std::vector<Segment>& segments,
+                                         const std::vector<int>& chosen) {
+    std::unordered_map<std::uint64_t, int> keyIndex;
+    const auto indexOf = [&](std::uint64_t key) {
+        return keyIndex.emplace(key, static_cast<int>(keyIndex.size())).first->second;
+    };
+    std::vector<std::array<int, 2>> ends;
+    for (int s : chosen)
+        ends.push_back({indexOf(segments[s].keyA), indexOf(segments[s].keyB)});
+    DisjointSets sets(keyIndex.size());
+    for (const auto& [a, b] : ends)
+        sets.unite(a, b);
+    std::unordered_map<std::size_t, int> outlineOf;
+    std::vector<std::vector<int>> outlines;
+    for (std::size_t i = 0; i < chosen.size(); ++i) {
+        const auto [at, added] =
+            outlineOf.emplace(sets.find(ends[i][0]), static_cast<int>(outlines.size()));
+        if (added)
+            outlines.emplace_back();
+        outlines[at->second].push_back(chosen[i]);
+    }
+    return outlines;
+}
+
+// Whether `q` lies inside the closed outline (crossing number in the plane
+// spanned by u and v).
+bool encloses(const std::vector<Segment>& segments, const std::vector<int>& outline, const Vec3& q,
+              const Vec3& u, const Vec3& v) {
+    bool inside = false;
+    for (int s : outline) {
+        const Vec3 a = segments[s].a - q, b = segments[s].b - q;
+        const double ya = a.dot(v), yb = b.dot(v);
+        if ((ya > 0.0) == (yb > 0.0))
+            continue;
+        const double xa = a.dot(u), xb = b.dot(u);
+        if (xa + (0.0 - ya) * (xb - xa) / (yb - ya) > 0.0)
+            inside = !inside;
+    }
+    return inside;
+}
+
+struct Outline {
+    Vec3 centroid = Vec3::Zero();
+    double length = 0.0;
+    std::vector<int> members;  // its segments
+};
+
+Outline outlineFrom(const std::vector<Segment>& segments, const std::vector<int>& members) {
+    Outline outline;
+    outline.members = members;
+    for (int s : members) {
+        const double l = (segments[s].b - segments[s].a).norm();
+        outline.centroid += l * 0.5 * (segments[s].a + segments[s].b);
+        outline.length += l;
+    }
+    if (outline.length > 0.0)
+        outline.centroid /= outline.length;
+    else if (!members.empty())
+        outline.centroid = segments[members.front()].a;
+    return outline;
+}
+
+void merge(Outline& into, const Outline& from) {
+    const double total = into.length + from.length;
+    if (total > 0.0)
+        into.centroid = (into.length * into.centroid + from.length * from.centroid) / total;
+    into.length = total;
+    into.members.insert(into.members.end(), from.members.begin(), from.members.end());
+}
+
+double nearestTo(const std::vector<Segment>& segments, const Outline& outline, const Vec3& p) {
+    double nearest = INFINITY;
+    for (int s : outline.members)
+        nearest = std::min({nearest, (segments[s].a - p).norm(), (segments[s].b - p).norm()});
+    return nearest;
+}
+
+// The mesh's outlines in the plane through `p` perpendicular to `d`, inside
+// the proxy's outline around p (or, where the chain runs between two of
+// them, the nearest): two comparable ones side by side, or none.
+// The proxy's cut through p perpendicular to d, and its outlines around
+// the chain there: the innermost one around p or, where the chain runs
+// outside the proxy (a straight bone across a gap the proxy has open), the
+// outlines about as near as the nearest.
+struct ProxyCut {
+    Vec3 u, v;
+    std::vector<Segment> segments;
+    std::vector<Outline> outlines;
+    std::vector<int> around;
+
+    // Inside the proxy: within an odd number of its outlines (a cavity's
+    // outline lies inside the outer one), and within one around the chain.
+    bool holds(const Vec3& q) const {
+        bool odd = false;
+        for (const Outline& outline : outlines)
+            odd ^= encloses(segments, outline.members, q, u, v);
+        return odd && std::any_of(around.begin(), around.end(), [&](int o) {
+                   return encloses(segments, outlines[o].members, q, u, v);
+               });
+    }
+    // The farthest point of the outlines around the chain from p.
+    double reach(const Vec3& p) const {
+        double farthest = 0.0;
+        for (int o : around)
+            for (int s : outlines[o].members)
+                farthest =
+                    std::max({farthest, (segments[s].a - p).norm(), (segments[s].b - p).norm()});
+        return farthest;
+    }
+};
+
+ProxyCut proxyCutAt(const Welded& proxy, const Vec3& p, const Vec3& d) {
+    ProxyCut cut;
+    cut.u = d.unitOrthogonal();
+    cut.v = d.cross(cut.u);
+    cut.segments = slice(proxy.points, proxy.faces, p, d);
+    std::vector<int> all(cut.segments.size());
+    std::iota(all.begin(), all.end(), 0);
+    for (const std::vector<int>& members : outlinesOf(cut.segments, all))
+        cut.outlines.push_back(outlineFrom(cut.segments, members));
+    const int count = static_cast<int>(cut.outlines.size());
+    int enclosing = 0;
+    for (const Outline& outline : cut.outlines)
+        enclosing += encloses(cut.segments, outline.members, p, cut.u, cut.v) ? 1 : 0;
+    if (enclosing % 2 == 1) {
+        for (int o = 0; o < count; ++o)
+            if (encloses(cut.segments, cut.outlines[o].members, p, cut.u, cut.v) &&
+                (cut.around.empty() || cut.outlines[o].length < cut.outlines[cut.around[0]].length))
+                cut.around = {o};
+    } else {
+        double nearest = INFINITY;
+        for (const Outline& outline : cut.outlines)
+            nearest = std::min(nearest, nearestTo(cut.segments, outline, p));
+        for (int o = 0; o < count; ++o)
+            if (nearestTo(cut.segments, cut.outlines[o], p) <= 2.0 * nearest)
+                cut.around.push_back(o);
+    }
+    return cut;
+}
+
+// The mesh's outlines in the plane through `p` perpendicular to `d`, inside
+// the proxy's outlines around the chain there (`faces`: those of the
+// mesh's that may reach them): those comparable with the longest.
+std::vector<Outline> limbsAt(const Welded& mesh, const std::vector<std::array<int, 3>>& faces,
+                             const ProxyCut& proxyCut, const Vec3& p, const Vec3& d) {
+    const Vec3& u = proxyCut.u;
+    const Vec3& v = proxyCut.v;
+    if (proxyCut.around.empty())
+        return {};
+    const std::vector<Segment> meshCut = slice(mesh.points, faces, p, d);
+    std::vector<int> inside;
+    for (int s = 0; s < static_cast<int>(meshCut.size()); ++s)
+        if (proxyCut.holds(0.5 * (meshCut[s].a + meshCut[s].b)))
+            inside.push_back(s);
+    std::vector<Outline> outlines;
+    for (const std::vector<int>& members : outlinesOf(meshCut, inside))
+        outlines.push_back(outlineFrom(meshCut, members));
+    // Open outlines whose free ends pair with each other's close one loop
+    // (the front and back of a limb made of two sheets, a seam not joined).
+    const auto freeEnds = [&](const Outline& outline) {
+        std::unordered_map<std::uint64_t, std::pair<int, Vec3>> seen;
+        for (int s : outline.members) {
+            auto& a = seen.emplace(meshCut[s].keyA, std::pair{0, meshCut[s].a}).first->second;
+            ++a.first;
+            auto& b = seen.emplace(meshCut[s].keyB, std::pair{0, meshCut[s].b}).first->second;
+            ++b.first;
+        }
+        std::vector<Vec3> ends;
+        for (const auto& [key, use] : seen)
+            if (use.first == 1)
+                ends.push_back(use.second);
+        return ends;
+    };
+    for (bool merged = true; merged;) {
+        merged = false;
+        std::vector<std::vector<Vec3>> ends;
+        for (const Outline& outline : outlines)
+            ends.push_back(freeEnds(outline));
+        // The outline whose free end is nearest each of this one's two.
+        const auto partner = [&](std::size_t i, const Vec3& end) {
+            std::size_t best = i;
+            double nearest = INFINITY;
+            for (std::size_t j = 0; j < outlines.size(); ++j)
+                for (const Vec3& other : j == i ? std::vector<Vec3>{} : ends[j])
+                    if ((other - end).norm() < nearest) {
+                        nearest = (other - end).norm();
+                        best = j;
+                    }
+            return best;
+        };
+        const auto pairedWith = [&](std::size_t i) {
+            if (ends[i].size() != 2)
+                return i;
+            const std::size_t j = partner(i, ends[i][0]);
+            return partner(i, ends[i][1]) == j ? j : i;
+        };
+        for (std::size_t i = 0; i < outlines.size() && !merged; ++i) {
+            const std::size_t j = pairedWith(i);
+            if (j != i && pairedWith(j) == i) {
+                merge(outlines[std::min(i, j)], outlines[std::max(i, j)]);
+                outlines.erase(outlines.begin() + static_cast<long>(std::max(i, j)));
+                merged = true;
+            }
+        }
+    }
+    // An outline inside another (a sleeve around an arm, a boot around a
+    // foot) is the same limb.
+    const auto nested = [&](const Outline& a, const Outline& b) {
+        return encloses(meshCut, a.members, b.centroid, u, v) ||
+               encloses(meshCut, b.members, a.centroid, u, v);
+    };
+    for (bool merged = true; merged;) {
+        merged = false;
+        for (std::size_t i = 0; i < outlines.size() && !merged; ++i)
+            for (std::size_t j = i + 1; j < outlines.size() && !merged; ++j)
+                if (nested(outlines[i], outlines[j])) {
+                    merge(outlines[i], outlines[j]);
+                    outlines.erase(outlines.begin() + static_cast<long>(j));
+                    merged = true;
+                }
+    }
+    std::sort(outlines.begin(), outlines.end(),
+              [](const Outline& a, const Outline& b) { return a.length > b.length; });
+    // Those comparable with the longest (not a strap or a strand of hair).
+    std::erase_if(outlines, [&](const Outline& outline) {
+        return outline.length < kComparable * outlines.front().length;
+    });
+    return outlines;
+}
+
+JointId otherEnd(const Skeleton& skeleton, BoneId bone, JointId from) {
+    const Bone& b = skeleton.bone(bone);
+    return b.head == from ? b.tail : b.head;
+}
+
+// The joints from a junction (first) to the leaf `leaf` (last); empty when
+// the whole skeleton is one chain.
+std::vector<JointId> leafChain(const Skeleton& skeleton, JointId leaf) {
+    std::vector<JointId> chain{leaf};
+    JointId previous = kNoJoint;
+    JointId here = leaf;
+    while (true) {
+        JointId next = kNoJoint;
+        for (BoneId bone : skeleton.bonesAt(here))
+            if (otherEnd(skeleton, bone, here) != previous)
+                next = otherEnd(skeleton, bone, here);
+        if (next == kNoJoint)
+            return {};
+        chain.push_back(next);
+        if (skeleton.degree(next) != 2)
+            break;
+        previous = here;
+        here = next;
+    }
+    std::reverse(chain.begin(), chain.end());
+    return chain;
+}
+
+// A polyline by arc length.
+struct Polyline {
+    std::vector<Vec3> points;
+    std::vector<double> arcs;
+
+    double length() const { return arcs.back(); }
+    Vec3 at(double arc) const {
+        arc = std::clamp(arc, 0.0, length());
+        for (std::size_t i = 1; i < points.size(); ++i)
+            if (arc <= arcs[i] || i + 1 == points.size()) {
+                const double span = arcs[i] - arcs[i - 1];
+                const double t = span > 0.0 ? (arc - arcs[i - 1]) / span : 0.0;
+                return points[i - 1] + std::clamp(t, 0.0, 1.0) * (points[i] - points[i - 1]);
+            }
+        return points.back();
+    }
+};
+
+// Piecewise linear in arc length between known values, held at the ends.
+Vec3 interpolate(const std::vector<double>& arcs, const std::vector<Vec3>& values, double arc) {
+    if (arc <= arcs.front())
+        return values.front();
+    for (std::size_t i = 1; i < arcs.size(); ++i)
+        if (arc <= arcs[i]) {
+            const double t = (arc - arcs[i - 1]) / (arcs[i] - arcs[i - 1]);
+            return values[i - 1] + t * (values[i] - values[i - 1]);
+        }
+    return values.back();
+}
+
+struct Split {
+    double arc = 0.0;                          // where the limbs part
+    std::vector<double> arcs;                  // of the split stations, increasing
+    std::array<std::vector<Vec3>, 2> offsets;  // each limb's middle from the chain
+};
+
+std::optional<Split> findSplit(const Polyline& line, const Welded& mesh, const Welded& proxy) {
+    const double step = line.length() / kStations;
+    std::vector<std::optional<ProxyCut>> proxyCuts(kStations);
+    const auto plane = [&](int i) {
+        const double arc = (i + 0.5) * step;
+        return std::pair{line.at(arc), Vec3(line.at(arc + step) - line.at(arc - step))};
+    };
+    for (int i = 0; i < kStations; ++i)
+        if (const auto [p, d] = plane(i); d.norm() > 0.0)
+            proxyCuts[i] = proxyCutAt(proxy, p, d.normalized());
+    // Only the mesh's faces that may reach the proxy's outlines around the
+    // given stations are cut: a corner within their reach of the chain, or
+    // within that and the face's longest edge.
+    std::vector<double> fromChain(mesh.points.size(), INFINITY);
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+        for (std::size_t j = 1; j < line.points.size(); ++j)
+            fromChain[v] = std::min(
+                fromChain[v],
+                pointSegmentDistance(mesh.points[v], {line.points[j - 1], line.points[j]}));
+    std::vector<std::vector<Outline>> cuts(kStations);
+    const auto cut = [&](int from, int to) {
+        double reach = 0.0;
+        for (int i = from; i < to; ++i)
+            if (proxyCuts[i])
+                reach = std::max(reach, proxyCuts[i]->reach(plane(i).first));
+        std::vector<std::array<int, 3>> faces;
+        for (const auto& f : mesh.faces) {
+            double longest = 0.0;
+            for (int i = 0; i < 3; ++i)
+                longest =
+                    std::max(longest, (mesh.points[f[i]] - mesh.points[f[(i + 1) % 3]]).norm());
+            if (std::min({fromChain[f[0]], fromChain[f[1]], fromChain[f[2]]}) <= reach + longest)
+                faces.push_back(f);
+        }
+        for (int i = from; i < to; ++i)
+            if (proxyCuts[i]) {
+                const auto [p, d] = plane(i);
+                cuts[i] = limbsAt(mesh, faces, *proxyCuts[i], p, d.normalized());
+            }
+    };
+    // The stations nearest the tip first: most chains are one limb there.
+    cut(kStations - kTipStations, kStations);
+    if (std::none_of(cuts.end() - kTipStations, cuts.end(),
+                     [](const std::vector<Outline>& outlines) { return outlines.size() == 2; }))
+        return std::nullopt;
+    cut(0, kStations - kTipStations);
+    // The two limbs followed from the station nearest the tip that has
+    // exactly two up the chain: at each station the outline nearest each,
+    // when that is another for each and no farther than their distance
+    // apart (a third outline, a skirt's flap, is passed by).
+    // Both limbs reach the tip: the two outlines are found among the
+    // stations nearest it.
+    int start = kStations - 1;
+    while (start >= kStations - kTipStations && cuts[start].size() != 2)
+        --start;
+    if (start < kStations - kTipStations)
+        return std::nullopt;
+    std::vector<std::optional<std::array<Vec3, 2>>> limbs(kStations);
+    std::array<Vec3, 2> last{cuts[start][0].centroid, cuts[start][1].centroid};
+    std::array<double, 2> lastLength{cuts[start][0].length, cuts[start][1].length};
+    for (int i = start; i >= 0; --i) {
+        if (cuts[i].size() < 2)
+            continue;
+        const double apart = (last[0] - last[1]).norm();
+        std::array<int, 2> nearest{-1, -1};
+        for (int k = 0; k < 2; ++k) {
+            double best = INFINITY;
+            for (int o = 0; o < static_cast<int>(cuts[i].size()); ++o)
+                if ((cuts[i][o].centroid - last[k]).norm() < best) {
+                    best = (cuts[i][o].centroid - last[k]).norm();
+                    nearest[k] = o;
+                }
+            // A limb's outline moves and changes little from one station
+            // to the next; one that jumps is another part (the torso).
+            if (best > apart + step || cuts[i][nearest[k]].length > kLengthChange * lastLength[k] ||
+                cuts[i][nearest[k]].length * kLengthChange < lastLength[k])
+                nearest[k] = -1;
+        }
+        if (nearest[0] < 0 || nearest[1] < 0 || nearest[0] == nearest[1])
+            continue;
+        last = {cuts[i][nearest[0]].centroid, cuts[i][nearest[1]].centroid};
+        lastLength = {cuts[i][nearest[0]].length, cuts[i][nearest[1]].length};
+        limbs[i] = last;
+    }
+    // The highest station from which most stations to the tip are split.
+    int top = -1, count = 0;
+    for (int i = kStations - 1; i >= 0; --i) {
+        count += limbs[i] ? 1 : 0;
+        if (limbs[i] && count >= kFewestSplitStations && count >= kSplitShare * (kStations - i))
+            top = i;
+    }
+    if (top < 0 || top > kHighestTop)
+        return std::nullopt;
+    Split split;
+    split.arc = top * step;  // halfway to the station above, which is one limb
+    for (int i = top; i < kStations; ++i)
+        if (limbs[i]) {
+            const double arc = (i + 0.5) * step;
+            split.arcs.push_back(arc);
+            for (int k = 0; k < 2; ++k)
+                split.offsets[k].push_back((*limbs[i])[k] - line.at(arc));
+        }
+    return split;
+}
+
+}  // namespace
+
+FusedLimbsReport splitFusedLimbs(Skeleton& skeleton, const TriMesh& mesh, const TriMesh& proxy) {
+    FusedLimbsReport report;
+    const Welded welded = weld(mesh);
+    const Welded proxyWelded{proxy.vertices, proxy.faces, {}};
+    std::vector<JointId> leaves;
+    for (const Joint& joint : skeleton.joints())
+        if (skeleton.degree(joint.id) == 1 && joint.id != skeleton.root())
+            leaves.push_back(joint.id);
+    for (JointId leaf : leaves) {
+        if (!skeleton.hasJoint(leaf) || skeleton.degree(leaf) != 1)
+            continue;
+        const std::vector<JointId> chain = leafChain(skeleton, leaf);
+        if (chain.size() < 2)
+            continue;
+        Polyline line;
+        for (JointId joint : chain) {
+            const Vec3& p = skeleton.joint(joint).position;
+            line.arcs.push_back(
+                line.points.empty() ? 0.0 : line.arcs.back() + (p - line.points.back()).norm());
+            line.points.push_back(p);
+        }
+        if (!(line.length() > 0.0))
+            continue;
+        const std::optional<Split> split = findSplit(line, welded, proxyWelded);
+        if (!split)
+            continue;
+        const double step = line.length() / kStations;
+        // The chain is rebuilt: its joints above the split stay, a joint
+        // where the limbs part (the nearest kept one within half a station),
+        // and each limb gets a joint for each of the chain's joints below,
+        // moved to the middle of its own outline.
+        std::vector<JointId> kept{chain.front()};
+        std::vector<std::pair<double, Vec3>> below;
+        for (std::size_t i = 1; i < chain.size(); ++i) {
+            if (line.arcs[i] > split->arc + 0.5 * step || i + 1 == chain.size())
+                below.emplace_back(line.arcs[i], line.points[i]);
+            else
+                kept.push_back(chain[i]);
+        }
+        for (std::size_t i = 1; i < chain.size(); ++i)
+            if (std::find(kept.begin(), kept.end(), chain[i]) == kept.end())
+                skeleton.removeJoint(chain[i]);
+        JointId parting = kept.back();
+        if (line.arcs[kept.size() - 1] < split->arc - 0.5 * step) {
+            const JointId at = skeleton.addJoint(line.at(split->arc));
+            skeleton.addBone(parting, at);
+            parting = at;
+        }
+        std::array<JointId, 2> tips{};
+        for (int k = 0; k < 2; ++k) {
+            JointId from = parting;
+            for (const auto& [arc, point] : below) {
+                const JointId next =
+                    skeleton.addJoint(point + interpolate(split->arcs, split->offsets[k], arc));
+                skeleton.addBone(from, next);
+                from = next;
+            }
+            tips[k] = from;
+        }
+        // Each tip in the middle of its own end of the mesh: the points
+        // beyond the last split station, each the nearer tip's (the
+        // chain's one tip sat between the two ends the proxy joined).
+        {
+            const double lastArc = split->arcs.back();
+            const Vec3 at = line.at(lastArc);
+            const Vec3 along = (line.at(lastArc + step) - line.at(lastArc - step)).normalized();
+            std::array<Vec3, 2> sums{Vec3::Zero(), Vec3::Zero()};
+            std::array<int, 2> counts{0, 0};
+            const std::array<Vec3, 2> was{skeleton.joint(tips[0]).position,
+                                          skeleton.joint(tips[1]).position};
+            for (const Vec3& p : welded.points)
+                if ((p - at).dot(along) > 0.0 && (p - at).norm() < line.length()) {
+                    const int k = (p - was[0]).norm() <= (p - was[1]).norm() ? 0 : 1;
+                    sums[k] += p;
+                    ++counts[k];
+                }
+            if (counts[0] >= kFewestEndPoints && counts[1] >= kFewestEndPoints)
+                for (int k = 0; k < 2; ++k)
+                    skeleton.setJointPosition(tips[k], sums[k] / counts[k]);
+        }
+        const double topArc = split->arcs.front();
+        report.splits.push_back(
+            {line.at(topArc),
+             (line.at(topArc + step) - line.at(topArc - step)).normalized(),
+             {skeleton.joint(tips[0]).position, skeleton.joint(tips[1]).position}});
+        ++report.chainsSplit;
+    }
+    skeleton.reorient();
+    return report;
+}
+
+namespace {
+
+// The bones from the leaf up to the first branching joint.
+std::vector<BoneId> limbBones(const Skeleton& skeleton, JointId leaf) {
+    std::vector<BoneId> bones;
+    JointId here = leaf;
+    BoneId came = kNoBone;
+    while (true) {
+        BoneId next = kNoBone;
+        for (BoneId bone : skeleton.bonesAt(here))
+            if (bone != came)
+                next = bone;
+        if (next == kNoBone)
+            break;
+        bones.push_back(next);
+        came = next;
+        here = otherEnd(skeleton, next, here);
+        if (skeleton.degree(here) != 2 || here == skeleton.root())
+            break;
+    }
+    return bones;
+}
+
+JointId leafNearest(const Skeleton& skeleton, const Vec3& p) {
+    JointId best = kNoJoint;
+    for (const Joint& joint : skeleton.joints())
+        if (skeleton.degree(joint.id) == 1 && joint.id != skeleton.root() &&
+            (best == kNoJoint ||
+             (joint.position - p).norm() < (skeleton.joint(best).position - p).norm()))
+            best = joint.id;
+    return best;
+}
+
+double distanceToBones(const Skeleton& skeleton, const std::vector<BoneId>& bones, const Vec3& p) {
+    double nearest = INFINITY;
+    for (BoneId bone : bones)
+        nearest = std::min(
+            nearest, pointSegmentDistance(p, {skeleton.joint(skeleton.bone(bone).head).position,
+                                              skeleton.joint(skeleton.bone(bone).tail).position}));
+    return nearest;
+}
+
+}  // namespace
+
+int separateFusedLimbWeights(const TriMesh& mesh, const Skeleton& skeleton,
+                             const FusedLimbsReport& report, WeightsById& weights) {
+    if (report.splits.empty())
+        return 0;
+    int changed = 0;
+    for (const FusedLimbsReport::Split& split : report.splits) {
+        const std::array<JointId, 2> leaves{leafNearest(skeleton, split.tips[0]),
+                                            leafNearest(skeleton, split.tips[1])};
+        if (leaves[0] == kNoJoint || leaves[0] == leaves[1])
+            continue;
+        const std::array<std::vector<BoneId>, 2> limbs{limbBones(skeleton, leaves[0]),
+                                                       limbBones(skeleton, leaves[1])};
+        if (limbs[0].empty() || limbs[1].empty())
+            continue;
+        const std::array<std::set<BoneId>, 2> limbSets{
+            std::set<BoneId>(limbs[0].begin(), limbs[0].end()),
+            std::set<BoneId>(limbs[1].begin(), limbs[1].end())};
+        // Beyond the plane where the limbs part, each vertex is the nearer
+        // limb's: the limbs' bones run through the middles of their own
+        // outlines, so the two sides meet in the gap between them.
+        const int count = std::min(mesh.vertexCount(), static_cast<int>(weights.size()));
+        for (int v = 0; v < count; ++v) {
+            if ((mesh.vertices[v] - split.point).dot(split.normal) <= 0.0)
+                continue;
+            const int k = distanceToBones(skeleton, limbs[0], mesh.vertices[v]) <=
+                                  distanceToBones(skeleton, limbs[1], mesh.vertices[v])
+                              ? 0
+                              : 1;
+            auto& list = weights[v];
+            const auto before = list.size();
+            std::erase_if(
+                list, [&](const auto& weight) { return limbSets[1 - k].contains(weight.first); });
+            if (list.size() == before)
+                continue;
+            if (list.empty()) {
+                BoneId nearest = limbs[k].front();
+                for (BoneId bone : limbs[k])
+                    if (distanceToBones(skeleton, {bone}, mesh.vertices[v]) <
+                        distanceToBones(skeleton, {nearest}, mesh.vertices[v]))
+                        nearest = bone;
+                list = {{nearest, 1.0}};
+            }
+            normaliseWeights(list);
+            ++changed;
+        }
+    }
+    return changed;
+}
+
+}  // namespace rigmesh

@@ -1,0 +1,111 @@
+// Two limbs a small gap apart are one on a proxy, which bridges the gap,
+// and get one chain; the mesh has them apart, so the chain becomes two and
+// each limb's vertices follow only its own bones (autorig/FusedLimbs).
+#include <gtest/gtest.h>
+
+#include "autorig/FusedLimbs.h"
+#include "autorig/SkeletonFromCurve.h"
+#include "mesh/MeshPrimitives.h"
+
+namespace rigmesh {
+namespace {
+
+// A tube along z from `bottom` to `top`, its axis through (x, 0).
+TriMesh tube(double x, double radius, double bottom, double top) {
+    TriMesh mesh = makeCylinderTube(16, 16, radius, top - bottom);
+    for (Vec3& v : mesh.vertices)
+        v += Vec3(x, 0.0, 0.5 * (top + bottom));
+    return mesh;
+}
+
+TriMesh joined(const TriMesh& a, const TriMesh& b) {
+    TriMesh mesh = a;
+    const int offset = mesh.vertexCount();
+    mesh.vertices.insert(mesh.vertices.end(), b.vertices.begin(), b.vertices.end());
+    for (const auto& [p, q, r] : b.faces)
+        mesh.faces.push_back({p + offset, q + offset, r + offset});
+    return mesh;
+}
+
+// A junction with two short arms and one leg chain down the middle of
+// the proxy, as the curve skeleton of a proxy around two legs gives it.
+Skeleton figureWithOneLegChain() {
+    Skeleton skeleton;
+    const JointId junction = skeleton.addJoint(Vec3(0, 0, 2));
+    skeleton.addBone(junction, skeleton.addJoint(Vec3(1, 0, 2.8)));
+    skeleton.addBone(junction, skeleton.addJoint(Vec3(-1, 0, 2.8)));
+    const JointId knee = skeleton.addJoint(Vec3(0, 0, -4.5));
+    skeleton.addBone(junction, knee);
+    skeleton.addBone(knee, skeleton.addJoint(Vec3(0, 0, -9.5)));
+    skeleton.setRoot(junction);
+    skeleton.reorient();
+    return skeleton;
+}
+
+TEST(FusedLimbs, AChainThroughTwoLimbsAGapApartBecomesOneChainPerLimb) {
+    // Legs of radius 0.5 with a gap of 0.2 between them; the proxy is one
+    // tube around both.
+    const TriMesh legs = joined(tube(-0.6, 0.5, -10, 0), tube(0.6, 0.5, -10, 0));
+    const TriMesh proxy = tube(0.0, 1.3, -10.3, 3.3);
+    Skeleton skeleton = figureWithOneLegChain();
+    const FusedLimbsReport report = splitFusedLimbs(skeleton, legs, proxy);
+    EXPECT_EQ(report.chainsSplit, 1);
+    EXPECT_TRUE(skeleton.validate().empty());
+    EXPECT_EQ(leafCount(skeleton), 4);  // two arms, two legs
+    int left = 0, right = 0;
+    for (const Joint& joint : skeleton.joints()) {
+        if (skeleton.degree(joint.id) != 1 || joint.position.z() > 0.0)
+            continue;
+        // Each leg's tip in the middle of its own leg's end.
+        EXPECT_NEAR(std::abs(joint.position.x()), 0.6, 0.1);
+        EXPECT_NEAR(joint.position.y(), 0.0, 0.1);
+        (joint.position.x() < 0.0 ? left : right) += 1;
+    }
+    EXPECT_EQ(left, 1);
+    EXPECT_EQ(right, 1);
+}
+
+TEST(FusedLimbs, EachLimbsVerticesKeepOnlyItsOwnBonesWeights) {
+    const TriMesh legs = joined(tube(-0.6, 0.5, -10, 0), tube(0.6, 0.5, -10, 0));
+    const TriMesh proxy = tube(0.0, 1.3, -10.3, 3.3);
+    Skeleton skeleton = figureWithOneLegChain();
+    const FusedLimbsReport report = splitFusedLimbs(skeleton, legs, proxy);
+    ASSERT_EQ(report.chainsSplit, 1);
+    // The proxy's heat shared between the legs: half to each leg's last bone.
+    BoneId leftBone = kNoBone, rightBone = kNoBone;
+    for (const Bone& bone : skeleton.bones())
+        if (skeleton.degree(bone.tail) == 1 && skeleton.joint(bone.tail).position.z() < 0.0)
+            (skeleton.joint(bone.tail).position.x() < 0.0 ? leftBone : rightBone) = bone.id;
+    ASSERT_NE(leftBone, kNoBone);
+    ASSERT_NE(rightBone, kNoBone);
+    WeightsById weights(legs.vertices.size(), {{leftBone, 0.5}, {rightBone, 0.5}});
+    EXPECT_GT(separateFusedLimbWeights(legs, skeleton, report, weights), 0);
+    for (int v = 0; v < legs.vertexCount(); ++v) {
+        if ((legs.vertices[v] - report.splits.front().point).dot(report.splits.front().normal) <= 0)
+            continue;  // above where the legs part
+        ASSERT_EQ(weights[v].size(), 1u);
+        EXPECT_EQ(weights[v].front().first, legs.vertices[v].x() < 0.0 ? leftBone : rightBone);
+        EXPECT_DOUBLE_EQ(weights[v].front().second, 1.0);
+    }
+}
+
+TEST(FusedLimbs, AChainThroughOneLimbStaysAsItIs) {
+    const TriMesh leg = tube(0.0, 1.1, -10, 0);
+    const TriMesh proxy = tube(0.0, 1.3, -10.3, 3.3);
+    Skeleton skeleton = figureWithOneLegChain();
+    const Skeleton before = skeleton;
+    EXPECT_EQ(splitFusedLimbs(skeleton, leg, proxy).chainsSplit, 0);
+    ASSERT_EQ(skeleton.jointCount(), before.jointCount());
+    ASSERT_EQ(skeleton.boneCount(), before.boneCount());
+    for (int j = 0; j < skeleton.jointCount(); ++j) {
+        EXPECT_EQ(skeleton.joints()[j].id, before.joints()[j].id);
+        EXPECT_EQ(skeleton.joints()[j].position, before.joints()[j].position);
+    }
+    for (int b = 0; b < skeleton.boneCount(); ++b) {
+        EXPECT_EQ(skeleton.bones()[b].head, before.bones()[b].head);
+        EXPECT_EQ(skeleton.bones()[b].tail, before.bones()[b].tail);
+    }
+}
+
+}  // namespace
+}  // namespace rigmesh
