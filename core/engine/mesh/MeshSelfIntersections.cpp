@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <array>
 #include <iterator>
+#include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -197,19 +199,27 @@ bool facesIntersect(const TriMesh& mesh, const std::vector<Point>& points,
 // face index and id is 64 bytes against a pointer's 8 (sorting and swapping
 // boxes was two thirds of this test, and the test a third of a sketch's
 // part, in perf). The pairs are the same: the callback sees every pair of
-// overlapping boxes whatever the tree's shape.
-std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh) {
+// overlapping boxes whatever the tree's shape. `faces`, when given, are the
+// only faces tested (pairs among them, by their indices in the mesh).
+std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh,
+                                            const std::vector<int>* faces = nullptr) {
     using Box =
         CGAL::Box_intersection_d::Box_with_info_d<double, 3, int,
                                                   CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
     const std::vector<Point> points = toPoints(mesh);
     std::vector<Box> boxes;
-    boxes.reserve(mesh.faces.size());
-    for (int i = 0; i < mesh.faceCount(); ++i) {
+    boxes.reserve(faces ? faces->size() : mesh.faces.size());
+    const auto addBox = [&](int i) {
         const auto& [a, b, c] = mesh.faces[i];
         if (!CGAL::collinear(points[a], points[b], points[c]))
             boxes.emplace_back(points[a].bbox() + points[b].bbox() + points[c].bbox(), i);
-    }
+    };
+    if (faces)
+        for (int i : *faces)
+            addBox(i);
+    else
+        for (int i = 0; i < mesh.faceCount(); ++i)
+            addBox(i);
     std::vector<const Box*> handles;
     handles.reserve(boxes.size());
     for (const Box& box : boxes)
@@ -225,6 +235,96 @@ std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh) {
     return pairs;
 }
 
+// The faces that decide whether a surface that is exactly its own mirror
+// image in the plane z = 0 intersects itself, or nothing when it is not
+// exactly that: every vertex v has its image mirror[v] at (x, y, -z) (bit for
+// bit; a vertex on the plane is its own), and every face (a, b, c) has a face
+// on (mirror[a], mirror[b], mirror[c]).
+//
+// Why these suffice. Reflection maps intersecting face pairs to intersecting
+// face pairs: facesIntersect decides with CGAL's exact predicates (its
+// floating-point tests only reject certain misses), and face boxes are
+// exact, so the verdict on a pair is the verdict on its image. Split the
+// faces into U (one face of each pair of images: the higher one), D (their
+// images) and H (faces that are their own image). A pair within D is the
+// image of one within U; a pair (h, d) with h in H, d in D the image of
+// (h, image of d), within U and H. A pair (u, image of v), u and v in U, can
+// only meet where their boxes do: zmin(u) <= zmax(image of v) = -zmin(v).
+// With m the least zmin in U, that needs zmin(u) <= -m and zmin(v) <= -m:
+// both in S, U's faces reaching down to -m. So testing every pair within
+// U, H and the images of S finds an intersection if the whole surface has
+// one. On the sketch surfaces (SketchSurface.h: built as the upper half and
+// mirrored) U is the upper half, m is 0 and S the faces touching the
+// outline: about half the faces to test.
+std::optional<std::vector<int>> mirrorDecidingFaces(const TriMesh& mesh,
+                                                    const std::vector<int>& mirror) {
+    const int n = mesh.vertexCount();
+    if (static_cast<int>(mirror.size()) != n)
+        return std::nullopt;
+    for (int v = 0; v < n; ++v) {
+        const int m = mirror[v];
+        if (m < 0 || m >= n || mirror[m] != v)
+            return std::nullopt;
+        const Vec3& p = mesh.vertices[v];
+        const Vec3& q = mesh.vertices[m];
+        if (!(q.x() == p.x() && q.y() == p.y() && q.z() == -p.z()))
+            return std::nullopt;
+    }
+    // Faces around each vertex, packed, to find each face's image.
+    const int faceTotal = mesh.faceCount();
+    std::vector<int> first(static_cast<std::size_t>(n) + 1, 0);
+    for (const auto& f : mesh.faces)
+        for (int v : f)
+            ++first[v + 1];
+    for (int v = 0; v < n; ++v)
+        first[v + 1] += first[v];
+    std::vector<int> around(first.back());
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for (int i = 0; i < faceTotal; ++i)
+        for (int v : mesh.faces[i])
+            around[fill[v]++] = i;
+    const auto hasCorner = [&](int face, int v) {
+        const auto& f = mesh.faces[face];
+        return f[0] == v || f[1] == v || f[2] == v;
+    };
+    std::vector<int> image(faceTotal, -1);
+    for (int i = 0; i < faceTotal; ++i) {
+        const auto& f = mesh.faces[i];
+        const int a = mirror[f[0]], b = mirror[f[1]], c = mirror[f[2]];
+        for (int k = first[a]; k < first[a + 1] && image[i] < 0; ++k)
+            if (hasCorner(around[k], b) && hasCorner(around[k], c))
+                image[i] = around[k];
+        if (image[i] < 0)
+            return std::nullopt;
+    }
+    const auto zSum = [&](int face) {
+        const auto& f = mesh.faces[face];
+        return mesh.vertices[f[0]].z() + mesh.vertices[f[1]].z() + mesh.vertices[f[2]].z();
+    };
+    const auto zMin = [&](int face) {
+        const auto& f = mesh.faces[face];
+        return std::min(
+            {mesh.vertices[f[0]].z(), mesh.vertices[f[1]].z(), mesh.vertices[f[2]].z()});
+    };
+    std::vector<int> kept;  // U, then H
+    for (int i = 0; i < faceTotal; ++i) {
+        const int j = image[i];
+        if (j == i || zSum(i) > zSum(j) || (zSum(i) == zSum(j) && i < j))
+            kept.push_back(i);
+    }
+    double lowest = std::numeric_limits<double>::infinity();  // m
+    for (int i : kept)
+        if (image[i] != i)
+            lowest = std::min(lowest, zMin(i));
+    const std::size_t keptTotal = kept.size();
+    for (std::size_t k = 0; k < keptTotal; ++k) {
+        const int i = kept[k];
+        if (image[i] != i && zMin(i) <= -lowest)
+            kept.push_back(image[i]);
+    }
+    return kept;
+}
+
 }  // namespace
 
 int countSelfIntersectingFacePairs(const TriMesh& mesh) {
@@ -232,6 +332,14 @@ int countSelfIntersectingFacePairs(const TriMesh& mesh) {
 }
 
 std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh) {
+    return pairsOnSoup(mesh);
+}
+
+std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh,
+                                                          const std::vector<int>& mirror) {
+    const std::optional<std::vector<int>> deciding = mirrorDecidingFaces(mesh, mirror);
+    if (deciding && pairsOnSoup(mesh, &*deciding).empty())
+        return {};
     return pairsOnSoup(mesh);
 }
 
