@@ -1,5 +1,7 @@
 #include "mesh/MeshSelfIntersections.h"
 
+#include "mesh/MeshMirror.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -258,45 +260,11 @@ std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh,
 // outline: about half the faces to test.
 std::optional<std::vector<int>> mirrorDecidingFaces(const TriMesh& mesh,
                                                     const std::vector<int>& mirror) {
-    const int n = mesh.vertexCount();
-    if (static_cast<int>(mirror.size()) != n)
+    const std::optional<std::vector<int>> images = mirrorFaceImages(mesh, mirror);
+    if (!images)
         return std::nullopt;
-    for (int v = 0; v < n; ++v) {
-        const int m = mirror[v];
-        if (m < 0 || m >= n || mirror[m] != v)
-            return std::nullopt;
-        const Vec3& p = mesh.vertices[v];
-        const Vec3& q = mesh.vertices[m];
-        if (!(q.x() == p.x() && q.y() == p.y() && q.z() == -p.z()))
-            return std::nullopt;
-    }
-    // Faces around each vertex, packed, to find each face's image.
+    const std::vector<int>& image = *images;
     const int faceTotal = mesh.faceCount();
-    std::vector<int> first(static_cast<std::size_t>(n) + 1, 0);
-    for (const auto& f : mesh.faces)
-        for (int v : f)
-            ++first[v + 1];
-    for (int v = 0; v < n; ++v)
-        first[v + 1] += first[v];
-    std::vector<int> around(first.back());
-    std::vector<int> fill(first.begin(), first.end() - 1);
-    for (int i = 0; i < faceTotal; ++i)
-        for (int v : mesh.faces[i])
-            around[fill[v]++] = i;
-    const auto hasCorner = [&](int face, int v) {
-        const auto& f = mesh.faces[face];
-        return f[0] == v || f[1] == v || f[2] == v;
-    };
-    std::vector<int> image(faceTotal, -1);
-    for (int i = 0; i < faceTotal; ++i) {
-        const auto& f = mesh.faces[i];
-        const int a = mirror[f[0]], b = mirror[f[1]], c = mirror[f[2]];
-        for (int k = first[a]; k < first[a + 1] && image[i] < 0; ++k)
-            if (hasCorner(around[k], b) && hasCorner(around[k], c))
-                image[i] = around[k];
-        if (image[i] < 0)
-            return std::nullopt;
-    }
     const auto zSum = [&](int face) {
         const auto& f = mesh.faces[face];
         return mesh.vertices[f[0]].z() + mesh.vertices[f[1]].z() + mesh.vertices[f[2]].z();
