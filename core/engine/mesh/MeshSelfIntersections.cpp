@@ -195,26 +195,87 @@ bool facesIntersect(const TriMesh& mesh, const std::vector<Point>& points,
     return CGAL::do_intersect(tf, tg);
 }
 
-// The same test as PMP::self_intersections, run on the soup itself, and
-// like it on pointers to the boxes with a cutoff of 2000 boxes: CGAL's
-// segment tree sorts and partitions what it is given, and a box with its
-// face index and id is 64 bytes against a pointer's 8 (sorting and swapping
-// boxes was two thirds of this test, and the test a third of a sketch's
-// part, in perf). The pairs are the same: the callback sees every pair of
-// overlapping boxes whatever the tree's shape. `faces`, when given, are the
-// only faces tested (pairs among them, by their indices in the mesh).
+// Every pair of overlapping boxes (closed, as CGAL's box intersection takes
+// them), each once, by a sweep along the axis in which the boxes' lower
+// corners spread most: sorted by their lower end there, a box meets a later
+// one in that axis exactly while the later one starts before it ends, and
+// the other two axes are then compared. Nothing (false) when that would
+// compare more than `budget` pairs: a soup bunched along every axis, left to
+// CGAL's segment tree.
+bool sweepOverlappingBoxes(const std::vector<CGAL::Bbox_3>& boxes, std::size_t budget,
+                           std::vector<std::array<int, 2>>& overlapping) {
+    const int count = static_cast<int>(boxes.size());
+    if (count < 2)
+        return true;
+    int axis = 0;
+    double widest = -1;
+    for (int d = 0; d < 3; ++d) {
+        double low = std::numeric_limits<double>::infinity(), high = -low;
+        for (const CGAL::Bbox_3& box : boxes) {
+            low = std::min(low, box.min(d));
+            high = std::max(high, box.min(d));
+        }
+        if (high - low > widest) {
+            widest = high - low;
+            axis = d;
+        }
+    }
+    std::vector<int> order(count);
+    for (int i = 0; i < count; ++i)
+        order[i] = i;
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        return boxes[a].min(axis) < boxes[b].min(axis) ||
+               (boxes[a].min(axis) == boxes[b].min(axis) && a < b);
+    });
+    // The sorted boxes' bounds side by side: the inner loop reads them in order.
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    std::vector<double> low(count), high(count), lowU(count), highU(count), lowV(count),
+        highV(count);
+    for (int k = 0; k < count; ++k) {
+        const CGAL::Bbox_3& box = boxes[order[k]];
+        low[k] = box.min(axis);
+        high[k] = box.max(axis);
+        lowU[k] = box.min(u);
+        highU[k] = box.max(u);
+        lowV[k] = box.min(v);
+        highV[k] = box.max(v);
+    }
+    std::size_t compared = 0;
+    for (int i = 0; i < count; ++i)
+        for (int j = i + 1; j < count && low[j] <= high[i]; ++j) {
+            if (++compared > budget) {
+                overlapping.clear();
+                return false;
+            }
+            if (lowU[j] <= highU[i] && lowU[i] <= highU[j] && lowV[j] <= highV[i] &&
+                lowV[i] <= highV[j])
+                overlapping.push_back({order[i], order[j]});
+        }
+    return true;
+}
+
+// The same test as PMP::self_intersections, run on the soup itself: every
+// pair of faces whose boxes overlap (closed boxes, as PMP's) is tested with
+// facesIntersect. The pairs come from a sweep (sweepOverlappingBoxes: on
+// the sketch surfaces about a fifth of the time of CGAL's segment tree, which
+// was most of this test in perf), or, for a soup the sweep would take
+// quadratic time on, from CGAL's box intersection on pointers to the boxes
+// with PMP's cutoff of 2000 boxes. Both give every overlapping pair, so the
+// pairs found are the same. `faces`, when given, are the only faces tested
+// (pairs among them, by their indices in the mesh).
 std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh,
                                             const std::vector<int>* faces = nullptr) {
-    using Box =
-        CGAL::Box_intersection_d::Box_with_info_d<double, 3, int,
-                                                  CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
     const std::vector<Point> points = toPoints(mesh);
-    std::vector<Box> boxes;
-    boxes.reserve(faces ? faces->size() : mesh.faces.size());
+    std::vector<CGAL::Bbox_3> bounds;
+    std::vector<int> boxFace;
+    bounds.reserve(faces ? faces->size() : mesh.faces.size());
+    boxFace.reserve(bounds.capacity());
     const auto addBox = [&](int i) {
         const auto& [a, b, c] = mesh.faces[i];
-        if (!CGAL::collinear(points[a], points[b], points[c]))
-            boxes.emplace_back(points[a].bbox() + points[b].bbox() + points[c].bbox(), i);
+        if (!CGAL::collinear(points[a], points[b], points[c])) {
+            bounds.push_back(points[a].bbox() + points[b].bbox() + points[c].bbox());
+            boxFace.push_back(i);
+        }
     };
     if (faces)
         for (int i : *faces)
@@ -222,17 +283,33 @@ std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh,
     else
         for (int i = 0; i < mesh.faceCount(); ++i)
             addBox(i);
-    std::vector<const Box*> handles;
-    handles.reserve(boxes.size());
-    for (const Box& box : boxes)
-        handles.push_back(&box);
     std::vector<std::array<int, 2>> pairs;
-    const auto callback = [&](const Box* x, const Box* y) {
-        if (facesIntersect(mesh, points, mesh.faces[x->info()], mesh.faces[y->info()]))
-            pairs.push_back({std::min(x->info(), y->info()), std::max(x->info(), y->info())});
+    const auto test = [&](int x, int y) {
+        if (facesIntersect(mesh, points, mesh.faces[x], mesh.faces[y]))
+            pairs.push_back({std::min(x, y), std::max(x, y)});
     };
-    constexpr std::ptrdiff_t kCutoff = 2000;  // PMP::self_intersections' own
-    CGAL::box_self_intersection_d(handles.begin(), handles.end(), callback, kCutoff);
+    // On a surface of even edges a box meets a few dozen others along the
+    // sweep axis; far more means a soup bunched up in every axis.
+    constexpr std::size_t kSweepComparisonsPerBox = 256;
+    std::vector<std::array<int, 2>> overlapping;
+    if (sweepOverlappingBoxes(bounds, kSweepComparisonsPerBox * bounds.size(), overlapping)) {
+        for (const auto& [x, y] : overlapping)
+            test(boxFace[x], boxFace[y]);
+    } else {
+        using Box = CGAL::Box_intersection_d::Box_with_info_d<
+            double, 3, int, CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
+        std::vector<Box> boxes;
+        boxes.reserve(bounds.size());
+        for (std::size_t k = 0; k < bounds.size(); ++k)
+            boxes.emplace_back(bounds[k], boxFace[k]);
+        std::vector<const Box*> handles;
+        handles.reserve(boxes.size());
+        for (const Box& box : boxes)
+            handles.push_back(&box);
+        const auto callback = [&](const Box* x, const Box* y) { test(x->info(), y->info()); };
+        constexpr std::ptrdiff_t kCutoff = 2000;  // PMP::self_intersections' own
+        CGAL::box_self_intersection_d(handles.begin(), handles.end(), callback, kCutoff);
+    }
     std::sort(pairs.begin(), pairs.end());
     return pairs;
 }
