@@ -1,5 +1,7 @@
 #include "mesh/MeshSelfIntersections.h"
 
+#include "mesh/MeshMirror.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -12,6 +14,8 @@
 #include <algorithm>
 #include <array>
 #include <iterator>
+#include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -191,38 +195,179 @@ bool facesIntersect(const TriMesh& mesh, const std::vector<Point>& points,
     return CGAL::do_intersect(tf, tg);
 }
 
-// The same test as PMP::self_intersections, run on the soup itself, and
-// like it on pointers to the boxes with a cutoff of 2000 boxes: CGAL's
-// segment tree sorts and partitions what it is given, and a box with its
-// face index and id is 64 bytes against a pointer's 8 (sorting and swapping
-// boxes was two thirds of this test, and the test a third of a sketch's
-// part, in perf). The pairs are the same: the callback sees every pair of
-// overlapping boxes whatever the tree's shape.
-std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh) {
-    using Box =
-        CGAL::Box_intersection_d::Box_with_info_d<double, 3, int,
-                                                  CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
-    const std::vector<Point> points = toPoints(mesh);
-    std::vector<Box> boxes;
-    boxes.reserve(mesh.faces.size());
-    for (int i = 0; i < mesh.faceCount(); ++i) {
-        const auto& [a, b, c] = mesh.faces[i];
-        if (!CGAL::collinear(points[a], points[b], points[c]))
-            boxes.emplace_back(points[a].bbox() + points[b].bbox() + points[c].bbox(), i);
+// Every pair of overlapping boxes (closed, as CGAL's box intersection takes
+// them), each once, by a sweep along the axis in which the boxes' lower
+// corners spread most: sorted by their lower end there, a box meets a later
+// one in that axis exactly while the later one starts before it ends, and
+// the other two axes are then compared. Nothing (false) when that would
+// compare more than `budget` pairs: a soup bunched along every axis, left to
+// CGAL's segment tree.
+bool sweepOverlappingBoxes(const std::vector<CGAL::Bbox_3>& boxes, std::size_t budget,
+                           std::vector<std::array<int, 2>>& overlapping) {
+    const int count = static_cast<int>(boxes.size());
+    if (count < 2)
+        return true;
+    int axis = 0;
+    double widest = -1;
+    for (int d = 0; d < 3; ++d) {
+        double low = std::numeric_limits<double>::infinity(), high = -low;
+        for (const CGAL::Bbox_3& box : boxes) {
+            low = std::min(low, box.min(d));
+            high = std::max(high, box.min(d));
+        }
+        if (high - low > widest) {
+            widest = high - low;
+            axis = d;
+        }
     }
-    std::vector<const Box*> handles;
-    handles.reserve(boxes.size());
-    for (const Box& box : boxes)
-        handles.push_back(&box);
-    std::vector<std::array<int, 2>> pairs;
-    const auto callback = [&](const Box* x, const Box* y) {
-        if (facesIntersect(mesh, points, mesh.faces[x->info()], mesh.faces[y->info()]))
-            pairs.push_back({std::min(x->info(), y->info()), std::max(x->info(), y->info())});
+    std::vector<int> order(count);
+    for (int i = 0; i < count; ++i)
+        order[i] = i;
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        return boxes[a].min(axis) < boxes[b].min(axis) ||
+               (boxes[a].min(axis) == boxes[b].min(axis) && a < b);
+    });
+    // The sorted boxes' bounds side by side: the inner loop reads them in order.
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    std::vector<double> low(count), high(count), lowU(count), highU(count), lowV(count),
+        highV(count);
+    for (int k = 0; k < count; ++k) {
+        const CGAL::Bbox_3& box = boxes[order[k]];
+        low[k] = box.min(axis);
+        high[k] = box.max(axis);
+        lowU[k] = box.min(u);
+        highU[k] = box.max(u);
+        lowV[k] = box.min(v);
+        highV[k] = box.max(v);
+    }
+    std::size_t compared = 0;
+    for (int i = 0; i < count; ++i)
+        for (int j = i + 1; j < count && low[j] <= high[i]; ++j) {
+            if (++compared > budget) {
+                overlapping.clear();
+                return false;
+            }
+            if (lowU[j] <= highU[i] && lowU[i] <= highU[j] && lowV[j] <= highV[i] &&
+                lowV[i] <= highV[j])
+                overlapping.push_back({order[i], order[j]});
+        }
+    return true;
+}
+
+// The same test as PMP::self_intersections, run on the soup itself: every
+// pair of faces whose boxes overlap (closed boxes, as PMP's) is tested with
+// facesIntersect. The pairs come from a sweep (sweepOverlappingBoxes: on
+// the sketch surfaces about a fifth of the time of CGAL's segment tree, which
+// was most of this test in perf), or, for a soup the sweep would take
+// quadratic time on, from CGAL's box intersection on pointers to the boxes
+// with PMP's cutoff of 2000 boxes. Both give every overlapping pair, so the
+// pairs found are the same. `faces`, when given, are the only faces tested
+// (pairs among them, by their indices in the mesh).
+std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh,
+                                            const std::vector<int>* faces = nullptr) {
+    const std::vector<Point> points = toPoints(mesh);
+    std::vector<CGAL::Bbox_3> bounds;
+    std::vector<int> boxFace;
+    bounds.reserve(faces ? faces->size() : mesh.faces.size());
+    boxFace.reserve(bounds.capacity());
+    const auto addBox = [&](int i) {
+        const auto& [a, b, c] = mesh.faces[i];
+        if (!CGAL::collinear(points[a], points[b], points[c])) {
+            bounds.push_back(points[a].bbox() + points[b].bbox() + points[c].bbox());
+            boxFace.push_back(i);
+        }
     };
-    constexpr std::ptrdiff_t kCutoff = 2000;  // PMP::self_intersections' own
-    CGAL::box_self_intersection_d(handles.begin(), handles.end(), callback, kCutoff);
+    if (faces)
+        for (int i : *faces)
+            addBox(i);
+    else
+        for (int i = 0; i < mesh.faceCount(); ++i)
+            addBox(i);
+    std::vector<std::array<int, 2>> pairs;
+    const auto test = [&](int x, int y) {
+        if (facesIntersect(mesh, points, mesh.faces[x], mesh.faces[y]))
+            pairs.push_back({std::min(x, y), std::max(x, y)});
+    };
+    // On a surface of even edges a box meets a few dozen others along the
+    // sweep axis; far more means a soup bunched up in every axis.
+    constexpr std::size_t kSweepComparisonsPerBox = 256;
+    std::vector<std::array<int, 2>> overlapping;
+    if (sweepOverlappingBoxes(bounds, kSweepComparisonsPerBox * bounds.size(), overlapping)) {
+        for (const auto& [x, y] : overlapping)
+            test(boxFace[x], boxFace[y]);
+    } else {
+        using Box = CGAL::Box_intersection_d::Box_with_info_d<
+            double, 3, int, CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
+        std::vector<Box> boxes;
+        boxes.reserve(bounds.size());
+        for (std::size_t k = 0; k < bounds.size(); ++k)
+            boxes.emplace_back(bounds[k], boxFace[k]);
+        std::vector<const Box*> handles;
+        handles.reserve(boxes.size());
+        for (const Box& box : boxes)
+            handles.push_back(&box);
+        const auto callback = [&](const Box* x, const Box* y) { test(x->info(), y->info()); };
+        constexpr std::ptrdiff_t kCutoff = 2000;  // PMP::self_intersections' own
+        CGAL::box_self_intersection_d(handles.begin(), handles.end(), callback, kCutoff);
+    }
     std::sort(pairs.begin(), pairs.end());
     return pairs;
+}
+
+// The faces that decide whether a surface that is exactly its own mirror
+// image in the plane z = 0 intersects itself, or nothing when it is not
+// exactly that: every vertex v has its image mirror[v] at (x, y, -z) (bit for
+// bit; a vertex on the plane is its own), and every face (a, b, c) has a face
+// on (mirror[a], mirror[b], mirror[c]).
+//
+// Why these suffice. Reflection maps intersecting face pairs to intersecting
+// face pairs: facesIntersect decides with CGAL's exact predicates (its
+// floating-point tests only reject certain misses), and face boxes are
+// exact, so the verdict on a pair is the verdict on its image. Split the
+// faces into U (one face of each pair of images: the higher one), D (their
+// images) and H (faces that are their own image). A pair within D is the
+// image of one within U; a pair (h, d) with h in H, d in D the image of
+// (h, image of d), within U and H. A pair (u, image of v), u and v in U, can
+// only meet where their boxes do: zmin(u) <= zmax(image of v) = -zmin(v).
+// With m the least zmin in U, that needs zmin(u) <= -m and zmin(v) <= -m:
+// both in S, U's faces reaching down to -m. So testing every pair within
+// U, H and the images of S finds an intersection if the whole surface has
+// one. On the sketch surfaces (SketchSurface.h: built as the upper half and
+// mirrored) U is the upper half, m is 0 and S the faces touching the
+// outline: about half the faces to test.
+std::optional<std::vector<int>> mirrorDecidingFaces(const TriMesh& mesh,
+                                                    const std::vector<int>& mirror) {
+    const std::optional<std::vector<int>> images = mirrorFaceImages(mesh, mirror);
+    if (!images)
+        return std::nullopt;
+    const std::vector<int>& image = *images;
+    const int faceTotal = mesh.faceCount();
+    const auto zSum = [&](int face) {
+        const auto& f = mesh.faces[face];
+        return mesh.vertices[f[0]].z() + mesh.vertices[f[1]].z() + mesh.vertices[f[2]].z();
+    };
+    const auto zMin = [&](int face) {
+        const auto& f = mesh.faces[face];
+        return std::min(
+            {mesh.vertices[f[0]].z(), mesh.vertices[f[1]].z(), mesh.vertices[f[2]].z()});
+    };
+    std::vector<int> kept;  // U, then H
+    for (int i = 0; i < faceTotal; ++i) {
+        const int j = image[i];
+        if (j == i || zSum(i) > zSum(j) || (zSum(i) == zSum(j) && i < j))
+            kept.push_back(i);
+    }
+    double lowest = std::numeric_limits<double>::infinity();  // m
+    for (int i : kept)
+        if (image[i] != i)
+            lowest = std::min(lowest, zMin(i));
+    const std::size_t keptTotal = kept.size();
+    for (std::size_t k = 0; k < keptTotal; ++k) {
+        const int i = kept[k];
+        if (image[i] != i && zMin(i) <= -lowest)
+            kept.push_back(image[i]);
+    }
+    return kept;
 }
 
 }  // namespace
@@ -232,6 +377,14 @@ int countSelfIntersectingFacePairs(const TriMesh& mesh) {
 }
 
 std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh) {
+    return pairsOnSoup(mesh);
+}
+
+std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh,
+                                                          const std::vector<int>& mirror) {
+    const std::optional<std::vector<int>> deciding = mirrorDecidingFaces(mesh, mirror);
+    if (deciding && pairsOnSoup(mesh, &*deciding).empty())
+        return {};
     return pairsOnSoup(mesh);
 }
 

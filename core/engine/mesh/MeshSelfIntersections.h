@@ -22,6 +22,14 @@ int countSelfIntersectingFacePairs(const TriMesh& mesh);
 // they are, for a message that says so.
 std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh);
 
+// The same pairs for a surface that is its own mirror image in the plane
+// z = 0, `mirror` giving each vertex's image (as SketchSurface::mirror does):
+// when the image is exact, whether any pair exists is decided on about half
+// the faces (the upper half and those at the plane), and the pairs are listed
+// only if one does; otherwise all faces are tested.
+std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh,
+                                                          const std::vector<int>& mirror);
+
 // The same count from PMP::self_intersections itself on a CGAL::Surface_mesh
 // (after orienting the soup), or -1 when the soup is not an orientable
 // manifold. Two to three times slower; the reference the soup count is

@@ -212,8 +212,12 @@ SketchToPartResult sketchToPart(const std::vector<Vec2>& stroke, const std::stri
     const ClosestBones closest =
         closestBonesFromConstruction(result.surface.surface, result.surface.cylinders,
                                      result.skeleton, options.weights.tieTolerance);
-    part.weights = weightsById(part.skeleton, computeBoneHeatWeights(part.mesh, part.boneSegments(),
-                                                                     closest, options.weights));
+    // The surface is its own mirror image in the sketch plane and the bones
+    // lie in it: the heat is solved for mirror-symmetric weights on half the
+    // unknowns (rig/BoneHeatSolver.h).
+    part.weights =
+        weightsById(part.skeleton, computeBoneHeatWeights(part.mesh, part.boneSegments(), closest,
+                                                          options.weights, part.mirror));
     part.knownClosestBones = closestById(part.skeleton, closest);
     result.weightsMilliseconds = millisecondsSince(start);
     result.totalMilliseconds = result.surface.milliseconds.total + result.skeletonMilliseconds +

@@ -136,7 +136,7 @@ SketchToSurfaceResult sketchToSurface(const std::vector<Vec2>& stroke,
     ms.smoothing = clock.lap();
 
     mapToWorld(frame, result);
-    checkBuiltMesh(result.surface.mesh);
+    checkBuiltMesh(result.surface.mesh, result.surface.mirror);
     ms.checks = clock.lap();
     ms.total = ms.clean + ms.triangulate + ms.chordalAxis + ms.decompose + ms.crossSections +
                ms.surface + ms.smoothing + ms.checks;

@@ -92,7 +92,7 @@ void checkEdgeLengthBudget(const LocalFrame& frame, const CleanPolygon& localOut
                             edgeLengthFor(kMaxSurfaceVertices, area, outlineLength) * frame.scale));
 }
 
-void checkBuiltMesh(const TriMesh& mesh) {
+void checkBuiltMesh(const TriMesh& mesh, const std::vector<int>& mirror) {
     for (const Vec3& v : mesh.vertices)
         if (!v.allFinite())
             throw Error(MessageId::SurfaceNotFinite);
@@ -101,7 +101,8 @@ void checkBuiltMesh(const TriMesh& mesh) {
         throw Error(MessageId::SurfaceDegenerateFaces, degenerate);
     // A surface crossing itself cannot be merged or cut and its own export
     // would be refused by `rigmesh rig`: refused here, where the sketch is.
-    const std::vector<std::array<int, 2>> crossing = selfIntersectingFacePairs(mesh);
+    const std::vector<std::array<int, 2>> crossing =
+        mirror.empty() ? selfIntersectingFacePairs(mesh) : selfIntersectingFacePairs(mesh, mirror);
     if (!crossing.empty()) {
         const auto& face = mesh.faces[static_cast<std::size_t>(crossing.front()[0])];
         const Vec3 near =

@@ -33,7 +33,10 @@ void checkEdgeLengthBudget(const LocalFrame& frame, const CleanPolygon& localOut
 
 // Refuses a built mesh with a non-finite coordinate, a degenerate face or
 // faces that cross each other (the surface intersects itself: a needle too
-// thin for its edge length), saying where.
-void checkBuiltMesh(const TriMesh& mesh);
+// thin for its edge length), saying where. `mirror`, if given, is each
+// vertex's image in the sketch plane (SketchSurface::mirror): a surface that
+// is exactly its own mirror image is then tested for crossings on about half
+// its faces (mesh/MeshSelfIntersections.h), with the same verdict.
+void checkBuiltMesh(const TriMesh& mesh, const std::vector<int>& mirror = {});
 
 }  // namespace rigmesh

@@ -12,6 +12,7 @@
 
 #include "base/Error.h"
 #include "base/ParallelFor.h"
+#include "mesh/MeshMirror.h"
 #include "rig/BoneVisibility.h"
 #include "rig/HeatTerms.h"
 
@@ -101,6 +102,12 @@ struct BoneHeatSolver::Impl {
     // triangle uses, whose weight is then simply p_i).
     Eigen::VectorXd heat;
     Eigen::SparseMatrix<double> matrix;
+    // With a mirror image (see BoneHeatSolver.h): each vertex's unknown (a
+    // vertex and its image share one), their count, and R^T matrix R (upper
+    // triangle stored). Empty orbit when the full system is solved.
+    std::vector<int> orbit;
+    int orbitCount = 0;
+    Eigen::SparseMatrix<double> reducedMatrix;
     CholmodCommon common;
     cholmod_factor* factor = nullptr;
 
@@ -115,6 +122,8 @@ struct BoneHeatSolver::Impl {
 
     void findClosestBones(const TriMesh& mesh, const ClosestBones& given);
     void assemble(const TriMesh& mesh);
+    void useMirror(const TriMesh& mesh, const std::vector<int>& mirror);
+    void reduce();
     void factorize();
     Eigen::VectorXd rightHandSide(int bone) const;
     Eigen::VectorXd nearestBoneWeights(int bone) const;
@@ -238,6 +247,40 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
     matrix.makeCompressed();
 }
 
+void BoneHeatSolver::Impl::useMirror(const TriMesh& mesh, const std::vector<int>& mirror) {
+    if (mirror.empty() || !mirrorFaceImages(mesh, mirror))
+        return;
+    for (int v = 0; v < vertexCount(); ++v)
+        if (closest[v] != closest[mirror[v]])
+            return;  // the heat or a right-hand side is not mirror-symmetric
+    orbit.assign(positions.size(), -1);
+    orbitCount = 0;
+    for (int v = 0; v < vertexCount(); ++v)
+        if (orbit[v] < 0) {
+            orbit[v] = orbit[mirror[v]] = orbitCount;
+            ++orbitCount;
+        }
+}
+
+// R^T matrix R from the full matrix's upper triangle: entry (i, j) of the
+// full matrix adds to (orbit i, orbit j); an off-diagonal entry joining a
+// vertex to its own image adds twice (as (i, j) and (j, i)) to the diagonal.
+void BoneHeatSolver::Impl::reduce() {
+    std::vector<Eigen::Triplet<double>> triplets;
+    triplets.reserve(matrix.nonZeros());
+    for (int column = 0; column < matrix.outerSize(); ++column)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, column); it; ++it) {
+            const int a = orbit[it.row()], b = orbit[it.col()];
+            if (a == b && it.row() != it.col())
+                triplets.emplace_back(a, a, 2.0 * it.value());
+            else
+                triplets.emplace_back(std::min(a, b), std::max(a, b), it.value());
+        }
+    reducedMatrix.resize(orbitCount, orbitCount);
+    reducedMatrix.setFromTriplets(triplets.begin(), triplets.end());
+    reducedMatrix.makeCompressed();
+}
+
 void BoneHeatSolver::Impl::factorize() {
     cholmod_common* c = common.get();
     // Simplicial LDL^T with AMD: meshes of a few thousand vertices factor in
@@ -245,7 +288,7 @@ void BoneHeatSolver::Impl::factorize() {
     c->supernodal = CHOLMOD_SIMPLICIAL;
     c->nmethods = 1;
     c->method[0].ordering = CHOLMOD_AMD;
-    const Eigen::SparseMatrix<double>& upper = matrix;
+    const Eigen::SparseMatrix<double>& upper = orbit.empty() ? matrix : reducedMatrix;
     cholmod_sparse a = Eigen::viewAsCholmod(upper.selfadjointView<Eigen::Upper>());
     factor = cholmod_analyze(&a, c);
     if (factor == nullptr) {
@@ -307,12 +350,22 @@ bool BoneHeatSolver::Impl::solve(int bone, SolveWorkspace& workspace,
                                  Eigen::Ref<Eigen::VectorXd> out) const {
     if (factor != nullptr && boneIsFinite[bone]) {
         Eigen::VectorXd rhs = rightHandSide(bone);
+        if (!orbit.empty()) {
+            Eigen::VectorXd summed = Eigen::VectorXd::Zero(orbitCount);  // R^T rhs
+            for (int v = 0; v < vertexCount(); ++v)
+                summed[orbit[v]] += rhs[v];
+            rhs = std::move(summed);
+        }
         cholmod_dense b = Eigen::viewAsCholmod(rhs);
         const int ok = cholmod_solve2(CHOLMOD_A, factor, &b, nullptr, &workspace.x, nullptr,
                                       &workspace.y, &workspace.e, workspace.common.get());
         if (ok && workspace.x != nullptr) {
-            out = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(workspace.x->x),
-                                                    vertexCount());
+            const auto* x = static_cast<const double*>(workspace.x->x);
+            if (orbit.empty())
+                out = Eigen::Map<const Eigen::VectorXd>(x, vertexCount());
+            else
+                for (int v = 0; v < vertexCount(); ++v)
+                    out[v] = x[orbit[v]];  // w = R u
             if (out.allFinite()) {
                 return true;
             }
@@ -342,7 +395,8 @@ int BoneHeatSolver::Impl::closestBoneOf(int vertex) const {
 }
 
 BoneHeatSolver::BoneHeatSolver(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
-                               const ClosestBones& closestBones, const BoneHeatOptions& options)
+                               const ClosestBones& closestBones, const BoneHeatOptions& options,
+                               const std::vector<int>& mirror)
     : impl_(std::make_unique<Impl>()) {
     validateInput(mesh, bones, closestBones, options);
     impl_->options = options;
@@ -353,6 +407,9 @@ BoneHeatSolver::BoneHeatSolver(const TriMesh& mesh, const std::vector<BoneSegmen
     }
     impl_->findClosestBones(mesh, closestBones);
     impl_->assemble(mesh);
+    impl_->useMirror(mesh, mirror);
+    if (!impl_->orbit.empty())
+        impl_->reduce();
     impl_->factorize();
 }
 
@@ -368,6 +425,9 @@ int BoneHeatSolver::boneCount() const {
 }
 bool BoneHeatSolver::isFactorized() const {
     return impl_->factor != nullptr;
+}
+bool BoneHeatSolver::solvesMirrorSymmetric() const {
+    return !impl_->orbit.empty();
 }
 const ClosestBones& BoneHeatSolver::closestBones() const {
     return impl_->closest;
@@ -457,9 +517,9 @@ SkinWeights BoneHeatSolver::solveAll() const {
 }
 
 SkinWeights computeBoneHeatWeights(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
-                                   const ClosestBones& closestBones,
-                                   const BoneHeatOptions& options) {
-    return BoneHeatSolver(mesh, bones, closestBones, options).solveAll();
+                                   const ClosestBones& closestBones, const BoneHeatOptions& options,
+                                   const std::vector<int>& mirror) {
+    return BoneHeatSolver(mesh, bones, closestBones, options, mirror).solveAll();
 }
 
 }  // namespace rigmesh

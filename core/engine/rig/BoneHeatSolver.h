@@ -103,10 +103,22 @@ using ClosestBones = std::vector<std::vector<std::pair<int, double>>>;
 // vertex; the caller may fill cylinder vertices from construction bookkeeping
 // (RigMesh section 2.4), and vertices with an empty list are tested with
 // BoneVisibility here.
+//
+// `mirror`, if given, is each vertex's image in the plane z = 0 (as
+// SketchSurface::mirror gives it). When the mesh is exactly its own mirror
+// image (mesh/MeshMirror.h) and every vertex has the closest bones its image
+// has, the system and every right-hand side are mirror-symmetric, and so is
+// every solution: w = R u, with R summing a vertex and its image into one
+// unknown. The solver then factors R^T (L + A H) R, of about half the size,
+// and solves R^T (L + A H) R u = R^T A H p_j. This is the same system
+// restricted to mirror-symmetric weights; the solutions differ from the
+// full system's by its rounding only (the full matrix is symmetric up to the
+// order in which each vertex's sums are added).
 class BoneHeatSolver {
   public:
     BoneHeatSolver(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
-                   const ClosestBones& closestBones = {}, const BoneHeatOptions& options = {});
+                   const ClosestBones& closestBones = {}, const BoneHeatOptions& options = {},
+                   const std::vector<int>& mirror = {});
     ~BoneHeatSolver();
     BoneHeatSolver(BoneHeatSolver&&) noexcept;
     BoneHeatSolver& operator=(BoneHeatSolver&&) noexcept;
@@ -117,6 +129,8 @@ class BoneHeatSolver {
     int boneCount() const;
     // False if CHOLMOD could not factor the system (every bone falls back).
     bool isFactorized() const;
+    // True when the mirror-symmetric system of half the size was factored.
+    bool solvesMirrorSymmetric() const;
     // The closest visible bone(s) of every vertex used for the heat.
     const ClosestBones& closestBones() const;
     // How many tested vertices saw no bone from inside and were heated by
@@ -141,6 +155,7 @@ class BoneHeatSolver {
 // One-shot convenience: factor, solve every bone and normalise.
 SkinWeights computeBoneHeatWeights(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
                                    const ClosestBones& closestBones = {},
-                                   const BoneHeatOptions& options = {});
+                                   const BoneHeatOptions& options = {},
+                                   const std::vector<int>& mirror = {});
 
 }  // namespace rigmesh

@@ -22,7 +22,19 @@ namespace rigmesh {
 
 // Returns the smoothed positions. Throws rigmesh::Error when no vertex is
 // anchored (the system is then singular) or the factorisation fails.
+//
+// `mirror`, if given, is each vertex's image in the plane z = 0 (as
+// SketchSurface::mirror gives it). When the mesh is exactly its own mirror
+// image (mesh/MeshMirror.h) and every vertex has its image's weight, the
+// minimiser is mirror-symmetric: x and y the same at a vertex and its image,
+// z opposite (0 on the plane). It is then found among such positions,
+// x_U = R u, by the normal equations R^T (L_U^T L_U + W_U^2) R u = R^T (...):
+// for x and y with R summing a vertex and its image into one unknown, for z
+// with R taking their difference (the plane's vertices held at 0). Two
+// systems of about half the size, whose solution differs from the full one's
+// by rounding only, and is exactly mirror-symmetric.
 std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double>& anchorWeights,
-                                   double fixedWeight = std::numeric_limits<double>::infinity());
+                                   double fixedWeight = std::numeric_limits<double>::infinity(),
+                                   const std::vector<int>& mirror = {});
 
 }  // namespace rigmesh

@@ -347,7 +347,11 @@ void smoothSurface(SketchSurface& surface, const Decomposition& decomposition,
         surface, decomposition, cylinders, options.capAnchorWeight, options.maxAnchorWeight);
     for (std::size_t v = 0; v < weights.size(); ++v)
         weights[v] = std::max(weights[v], rims[v]);
-    surface.mesh.vertices = leastSquaresMesh(surface.mesh, weights, options.maxAnchorWeight);
+    // The surface and its weights are mirror-symmetric: LSM solves on half
+    // the unknowns (LeastSquaresMesh.h); symmetrize restores the symmetry
+    // where the mesh is not exactly its own image and the full system ran.
+    surface.mesh.vertices =
+        leastSquaresMesh(surface.mesh, weights, options.maxAnchorWeight, surface.mirror);
     symmetrize(surface);
     // LSM bounds no angle between neighbouring faces: the folds it leaves
     // where the surface turns sharply in little room are spread over their
