@@ -6,19 +6,12 @@
 #include <utility>
 
 #include "base/DisjointSets.h"
+#include "mesh/PositionHash.h"
 
 namespace rigmesh {
 
 namespace {
 
-struct PositionHash {
-    std::size_t operator()(const Vec3& p) const {
-        std::size_t h = 0;
-        for (int i = 0; i < 3; ++i)
-            h ^= std::hash<double>{}(p[i]) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-        return h;
-    }
-};
 struct PositionEqual {
     bool operator()(const Vec3& a, const Vec3& b) const { return a == b; }
 };
