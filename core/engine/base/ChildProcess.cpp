@@ -83,12 +83,19 @@ std::string readBack(int fd, std::size_t maxBytes, bool fromStart = false) {
     return text;
 }
 
-int waitInterrupted(pid_t pid, int* status, int options) {
+int waitInterrupted(pid_t pid, int* status, int options, rusage* usage = nullptr) {
     int result;
     do {
-        result = waitpid(pid, status, options);
+        result = wait4(pid, status, options, usage);
     } while (result < 0 && errno == EINTR);
     return result;
+}
+
+double processorSeconds(const rusage& usage) {
+    const auto seconds = [](const timeval& time) {
+        return static_cast<double>(time.tv_sec) + 1e-6 * static_cast<double>(time.tv_usec);
+    };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
 // The child's environment: ours, and under AddressSanitizer (where RLIMIT_AS
@@ -201,8 +208,15 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
         const rlimit noCore{0, 0};
         setrlimit(RLIMIT_CORE, &noCore);
         if (limits.seconds > 0) {
-            // The soft limit's SIGXCPU ends the child (it does not catch it);
-            // the hard one a second later kills it if it does.
+            // The soft limit's SIGXCPU ends the child: its default action,
+            // even where the parent was started with it ignored or blocked
+            // (both survive exec; a CI runner did so). The hard one a second
+            // later kills a child that catches or ignores it all the same.
+            signal(SIGXCPU, SIG_DFL);
+            sigset_t processorSignal;
+            sigemptyset(&processorSignal);
+            sigaddset(&processorSignal, SIGXCPU);
+            sigprocmask(SIG_UNBLOCK, &processorSignal, nullptr);
             const rlim_t cpu = static_cast<rlim_t>(std::ceil(std::min(limits.seconds, 1e7)));
             const rlimit processor{cpu, cpu + 1};
             setrlimit(RLIMIT_CPU, &processor);
@@ -232,6 +246,7 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
     forwarding.emplace(pid);
 
     int status = 0;
+    rusage usage{};
     bool ended = false;
     auto pause = std::chrono::microseconds(500);
     const auto deadline =
@@ -240,7 +255,7 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
             std::chrono::duration<double>(
                 limits.seconds > 0 ? kWallClockFactor * std::min(limits.seconds, 1e7) : 0.0));
     while (!ended) {
-        const int result = waitInterrupted(pid, &status, WNOHANG);
+        const int result = waitInterrupted(pid, &status, WNOHANG, &usage);
         if (result == pid) {
             ended = true;
         } else if (result < 0) {
@@ -280,8 +295,13 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
     } else if (ended && WIFEXITED(status)) {
         outcome.end = ChildOutcome::End::Exited;
         outcome.exitCode = WEXITSTATUS(status);
-    } else if (ended && WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU) {
-        outcome.end = ChildOutcome::End::TimedOut;  // its processor time ran out
+    } else if (ended && WIFSIGNALED(status) &&
+               (WTERMSIG(status) == SIGXCPU ||
+                (WTERMSIG(status) == SIGKILL && limits.seconds > 0 &&
+                 processorSeconds(usage) >= std::ceil(std::min(limits.seconds, 1e7))))) {
+        // Its processor time ran out: the soft limit's SIGXCPU, or the hard
+        // limit's SIGKILL for a child that ignored that.
+        outcome.end = ChildOutcome::End::TimedOut;
     } else if (ended && WIFSIGNALED(status)) {
         outcome.end = ChildOutcome::End::Signalled;
         outcome.signal = WTERMSIG(status);

@@ -68,6 +68,17 @@ TEST(ChildProcess, BusyLoopIsStoppedByItsProcessorTime) {
     EXPECT_LT(outcome.seconds, kWallClockFactor * limits.seconds + 1.0);
 }
 
+// A child that ignores SIGXCPU is killed by the hard limit a second later:
+// still a timeout, not a crash.
+TEST(ChildProcess, BusyLoopIgnoringTheProcessorSignalStillTimesOut) {
+    ChildLimits limits;
+    limits.seconds = 1.0;
+    const ChildOutcome outcome = shell("trap '' XCPU; while :; do :; done", limits);
+    EXPECT_EQ(outcome.end, ChildOutcome::End::TimedOut);
+    EXPECT_GE(outcome.seconds, 1.0);
+    EXPECT_LT(outcome.seconds, kWallClockFactor * limits.seconds + 1.0);
+}
+
 TEST(ChildProcess, MissingProgramFailsToStartWithTheReason) {
     const ChildOutcome outcome = runChildProcess("/nonexistent/rigmesh", {}, {});
     ASSERT_EQ(outcome.end, ChildOutcome::End::FailedToStart);
