@@ -1891,6 +1891,198 @@
         <source>&quot;command&quot; must be text</source>
         <translation>&quot;command&quot; muss Text sein</translation>
     </message>
+    <message>
+        <source>Vertex %1 has a non-finite position.</source>
+        <translation>Vertex %1 hat eine nicht endliche Position.</translation>
+    </message>
+    <message>
+        <source>Face %1 refers to a missing vertex.</source>
+        <translation>Fläche %1 verweist auf einen fehlenden Vertex.</translation>
+    </message>
+    <message>
+        <source>Face %1 repeats a vertex.</source>
+        <translation>Fläche %1 wiederholt einen Vertex.</translation>
+    </message>
+    <message>
+        <source>The outline has a non-finite point.</source>
+        <translation>Der Umriss hat einen nicht endlichen Punkt.</translation>
+    </message>
+    <message>
+        <source>The vertex origins do not have one entry per vertex.</source>
+        <translation>Die Vertex-Herkünfte haben nicht genau einen Eintrag pro Vertex.</translation>
+    </message>
+    <message>
+        <source>The mirror map does not have one entry per vertex.</source>
+        <translation>Die Spiegelzuordnung hat nicht genau einen Eintrag pro Vertex.</translation>
+    </message>
+    <message>
+        <source>The mirror map refers to a missing vertex.</source>
+        <translation>Die Spiegelzuordnung verweist auf einen fehlenden Vertex.</translation>
+    </message>
+    <message>
+        <source>The skin weights do not have one entry per vertex.</source>
+        <translation>Die Skin-Gewichte haben nicht genau einen Eintrag pro Vertex.</translation>
+    </message>
+    <message>
+        <source>The skin weights have %1 entries for %2 vertices.</source>
+        <translation>Die Skin-Gewichte haben %1 Einträge für %2 Vertices.</translation>
+    </message>
+    <message>
+        <source>The skin weights of vertex %1 name bone %2, which the skeleton does not have.</source>
+        <translation>Die Skin-Gewichte von Vertex %1 nennen Knochen %2, den das Skelett nicht hat.</translation>
+    </message>
+    <message>
+        <source>The skin weights of vertex %1 are not in bone order.</source>
+        <translation>Die Skin-Gewichte von Vertex %1 sind nicht nach Knochen geordnet.</translation>
+    </message>
+    <message>
+        <source>The skin weights of vertex %1 hold a value that is not finite and positive.</source>
+        <translation>Die Skin-Gewichte von Vertex %1 enthalten einen Wert, der nicht endlich und positiv ist.</translation>
+    </message>
+    <message>
+        <source>The skin weights of vertex %1 sum to %2, not 1.</source>
+        <translation>Die Skin-Gewichte von Vertex %1 ergeben zusammen %2, nicht 1.</translation>
+    </message>
+    <message>
+        <source>The known closest bones have %1 entries for %2 vertices.</source>
+        <translation>Die bekannten nächsten Knochen haben %1 Einträge für %2 Vertices.</translation>
+    </message>
+    <message>
+        <source>The known closest bones of vertex %1 name bone %2, which the skeleton does not have.</source>
+        <translation>Die bekannten nächsten Knochen von Vertex %1 nennen Knochen %2, den das Skelett nicht hat.</translation>
+    </message>
+    <message>
+        <source>The known closest bones of vertex %1 are not in bone order.</source>
+        <translation>Die bekannten nächsten Knochen von Vertex %1 sind nicht nach Knochen geordnet.</translation>
+    </message>
+    <message>
+        <source>The known closest bones of vertex %1 hold a value that is not finite and positive.</source>
+        <translation>Die bekannten nächsten Knochen von Vertex %1 enthalten einen Wert, der nicht endlich und positiv ist.</translation>
+    </message>
+    <message>
+        <source>The skeleton has bones but no joints.</source>
+        <translation>Das Skelett hat Knochen, aber keine Gelenke.</translation>
+    </message>
+    <message>
+        <source>An unrigged part has skin weights.</source>
+        <translation>Ein Teil ohne Rig hat Skin-Gewichte.</translation>
+    </message>
+    <message>
+        <source>The failed bones name a missing bone.</source>
+        <translation>Die fehlgeschlagenen Knochen nennen einen fehlenden Knochen.</translation>
+    </message>
+    <message>
+        <source>A bone name is empty, repeated or names a missing bone.</source>
+        <translation>Ein Knochenname ist leer, doppelt oder nennt einen fehlenden Knochen.</translation>
+    </message>
+    <message>
+        <source>Bone %1 is locked but the skeleton has no such bone.</source>
+        <translation>Knochen %1 ist gesperrt, aber das Skelett hat keinen solchen Knochen.</translation>
+    </message>
+    <message>
+        <source>A bone frame is not a unit rotation or names a missing bone.</source>
+        <translation>Ein Knochenrahmen ist keine Einheitsdrehung oder nennt einen fehlenden Knochen.</translation>
+    </message>
+    <message>
+        <source>The mesh pieces do not fit the mesh.</source>
+        <translation>Die Netzstücke passen nicht zum Netz.</translation>
+    </message>
+    <message>
+        <source>Mesh piece &apos;%1&apos; uses another piece&apos;s vertex.</source>
+        <translation>Netzstück „%1“ benutzt einen Vertex eines anderen Stücks.</translation>
+    </message>
+    <message>
+        <source>The mesh pieces do not cover the mesh.</source>
+        <translation>Die Netzstücke decken das Netz nicht ab.</translation>
+    </message>
+    <message>
+        <source>The surface has %1 boundary edges.</source>
+        <translation>Die Oberfläche hat %1 Randkanten.</translation>
+    </message>
+    <message>
+        <source>The surface is not a manifold.</source>
+        <translation>Die Oberfläche ist keine Mannigfaltigkeit.</translation>
+    </message>
+    <message>
+        <source>The surface is not consistently oriented.</source>
+        <translation>Die Oberfläche ist nicht einheitlich orientiert.</translation>
+    </message>
+    <message>
+        <source>The skeleton has no joints.</source>
+        <translation>Das Skelett hat keine Gelenke.</translation>
+    </message>
+    <message>
+        <source>Two joints share the id %1.</source>
+        <translation>Zwei Gelenke teilen sich die ID %1.</translation>
+    </message>
+    <message>
+        <source>Joint %1 has a non-finite position.</source>
+        <translation>Gelenk %1 hat eine nicht endliche Position.</translation>
+    </message>
+    <message>
+        <source>Two bones share the id %1.</source>
+        <translation>Zwei Knochen teilen sich die ID %1.</translation>
+    </message>
+    <message>
+        <source>The skeleton has no root joint.</source>
+        <translation>Das Skelett hat kein Wurzelgelenk.</translation>
+    </message>
+    <message>
+        <source>The root is joint %1, which does not exist.</source>
+        <translation>Die Wurzel ist Gelenk %1, das es nicht gibt.</translation>
+    </message>
+    <message>
+        <source>Bone %1 refers to joint %2, which does not exist.</source>
+        <translation>Knochen %1 verweist auf Gelenk %2, das es nicht gibt.</translation>
+    </message>
+    <message>
+        <source>Bone %1 connects joint %2 to itself.</source>
+        <translation>Knochen %1 verbindet Gelenk %2 mit sich selbst.</translation>
+    </message>
+    <message>
+        <source>Bone %1 has zero length.</source>
+        <translation>Knochen %1 hat die Länge null.</translation>
+    </message>
+    <message>
+        <source>The skeleton has a cycle: bone %1 closes a loop.</source>
+        <translation>Das Skelett hat einen Zyklus: Knochen %1 schließt eine Schleife.</translation>
+    </message>
+    <message>
+        <source>Joint %1 hangs from a bone but does not exist.</source>
+        <translation>Gelenk %1 hängt an einem Knochen, existiert aber nicht.</translation>
+    </message>
+    <message>
+        <source>The root joint %1 hangs from a bone.</source>
+        <translation>Das Wurzelgelenk %1 hängt an einem Knochen.</translation>
+    </message>
+    <message>
+        <source>Joint %1 hangs from bone %2, which does not exist.</source>
+        <translation>Gelenk %1 hängt an Knochen %2, den es nicht gibt.</translation>
+    </message>
+    <message>
+        <source>Joints %1 and %2 both hang from bones but are in one chain.</source>
+        <translation>Die Gelenke %1 und %2 hängen beide an Knochen, liegen aber in einer Kette.</translation>
+    </message>
+    <message>
+        <source>Joint %1 hangs from a bone but is connected to the root&apos;s chain.</source>
+        <translation>Gelenk %1 hängt an einem Knochen, ist aber mit der Kette der Wurzel verbunden.</translation>
+    </message>
+    <message>
+        <source>The skeleton is not connected: it has %1 separate components.</source>
+        <translation>Das Skelett ist nicht zusammenhängend: es hat %1 getrennte Teile.</translation>
+    </message>
+    <message>
+        <source>The skeleton is not connected: it has %1 separate components, %2 of them hanging from no bone.</source>
+        <translation>Das Skelett ist nicht zusammenhängend: es hat %1 getrennte Teile, %2 davon hängen an keinem Knochen.</translation>
+    </message>
+    <message>
+        <source>Joint %1 hangs from a bone of its own chain.</source>
+        <translation>Gelenk %1 hängt an einem Knochen seiner eigenen Kette.</translation>
+    </message>
+    <message>
+        <source>The chain of joint %1 hangs from chains that hang from it.</source>
+        <translation>Die Kette von Gelenk %1 hängt an Ketten, die an ihr hängen.</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>

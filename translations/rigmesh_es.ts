@@ -1891,6 +1891,198 @@
         <source>&quot;command&quot; must be text</source>
         <translation>&quot;command&quot; debe ser texto</translation>
     </message>
+    <message>
+        <source>Vertex %1 has a non-finite position.</source>
+        <translation>El vértice %1 tiene una posición no finita.</translation>
+    </message>
+    <message>
+        <source>Face %1 refers to a missing vertex.</source>
+        <translation>La cara %1 se refiere a un vértice que falta.</translation>
+    </message>
+    <message>
+        <source>Face %1 repeats a vertex.</source>
+        <translation>La cara %1 repite un vértice.</translation>
+    </message>
+    <message>
+        <source>The outline has a non-finite point.</source>
+        <translation>El contorno tiene un punto no finito.</translation>
+    </message>
+    <message>
+        <source>The vertex origins do not have one entry per vertex.</source>
+        <translation>Los orígenes de los vértices no tienen una entrada por vértice.</translation>
+    </message>
+    <message>
+        <source>The mirror map does not have one entry per vertex.</source>
+        <translation>El mapa de simetría no tiene una entrada por vértice.</translation>
+    </message>
+    <message>
+        <source>The mirror map refers to a missing vertex.</source>
+        <translation>El mapa de simetría se refiere a un vértice que falta.</translation>
+    </message>
+    <message>
+        <source>The skin weights do not have one entry per vertex.</source>
+        <translation>Los pesos de piel no tienen una entrada por vértice.</translation>
+    </message>
+    <message>
+        <source>The skin weights have %1 entries for %2 vertices.</source>
+        <translation>Los pesos de piel tienen %1 entradas para %2 vértices.</translation>
+    </message>
+    <message>
+        <source>The skin weights of vertex %1 name bone %2, which the skeleton does not have.</source>
+        <translation>Los pesos de piel del vértice %1 nombran el hueso %2, que el esqueleto no tiene.</translation>
+    </message>
+    <message>
+        <source>The skin weights of vertex %1 are not in bone order.</source>
+        <translation>Los pesos de piel del vértice %1 no están en orden de huesos.</translation>
+    </message>
+    <message>
+        <source>The skin weights of vertex %1 hold a value that is not finite and positive.</source>
+        <translation>Los pesos de piel del vértice %1 contienen un valor que no es finito y positivo.</translation>
+    </message>
+    <message>
+        <source>The skin weights of vertex %1 sum to %2, not 1.</source>
+        <translation>Los pesos de piel del vértice %1 suman %2, no 1.</translation>
+    </message>
+    <message>
+        <source>The known closest bones have %1 entries for %2 vertices.</source>
+        <translation>Los huesos más cercanos conocidos tienen %1 entradas para %2 vértices.</translation>
+    </message>
+    <message>
+        <source>The known closest bones of vertex %1 name bone %2, which the skeleton does not have.</source>
+        <translation>Los huesos más cercanos conocidos del vértice %1 nombran el hueso %2, que el esqueleto no tiene.</translation>
+    </message>
+    <message>
+        <source>The known closest bones of vertex %1 are not in bone order.</source>
+        <translation>Los huesos más cercanos conocidos del vértice %1 no están en orden de huesos.</translation>
+    </message>
+    <message>
+        <source>The known closest bones of vertex %1 hold a value that is not finite and positive.</source>
+        <translation>Los huesos más cercanos conocidos del vértice %1 contienen un valor que no es finito y positivo.</translation>
+    </message>
+    <message>
+        <source>The skeleton has bones but no joints.</source>
+        <translation>El esqueleto tiene huesos pero ninguna articulación.</translation>
+    </message>
+    <message>
+        <source>An unrigged part has skin weights.</source>
+        <translation>Una pieza sin rig tiene pesos de piel.</translation>
+    </message>
+    <message>
+        <source>The failed bones name a missing bone.</source>
+        <translation>Los huesos fallidos nombran un hueso que falta.</translation>
+    </message>
+    <message>
+        <source>A bone name is empty, repeated or names a missing bone.</source>
+        <translation>Un nombre de hueso está vacío, repetido o nombra un hueso que falta.</translation>
+    </message>
+    <message>
+        <source>Bone %1 is locked but the skeleton has no such bone.</source>
+        <translation>El hueso %1 está bloqueado pero el esqueleto no tiene ese hueso.</translation>
+    </message>
+    <message>
+        <source>A bone frame is not a unit rotation or names a missing bone.</source>
+        <translation>Un marco de hueso no es una rotación unitaria o nombra un hueso que falta.</translation>
+    </message>
+    <message>
+        <source>The mesh pieces do not fit the mesh.</source>
+        <translation>Los trozos de malla no encajan en la malla.</translation>
+    </message>
+    <message>
+        <source>Mesh piece &apos;%1&apos; uses another piece&apos;s vertex.</source>
+        <translation>El trozo de malla «%1» usa un vértice de otro trozo.</translation>
+    </message>
+    <message>
+        <source>The mesh pieces do not cover the mesh.</source>
+        <translation>Los trozos de malla no cubren la malla.</translation>
+    </message>
+    <message>
+        <source>The surface has %1 boundary edges.</source>
+        <translation>La superficie tiene %1 aristas de borde.</translation>
+    </message>
+    <message>
+        <source>The surface is not a manifold.</source>
+        <translation>La superficie no es una variedad.</translation>
+    </message>
+    <message>
+        <source>The surface is not consistently oriented.</source>
+        <translation>La superficie no está orientada de forma coherente.</translation>
+    </message>
+    <message>
+        <source>The skeleton has no joints.</source>
+        <translation>El esqueleto no tiene articulaciones.</translation>
+    </message>
+    <message>
+        <source>Two joints share the id %1.</source>
+        <translation>Dos articulaciones comparten el id %1.</translation>
+    </message>
+    <message>
+        <source>Joint %1 has a non-finite position.</source>
+        <translation>La articulación %1 tiene una posición no finita.</translation>
+    </message>
+    <message>
+        <source>Two bones share the id %1.</source>
+        <translation>Dos huesos comparten el id %1.</translation>
+    </message>
+    <message>
+        <source>The skeleton has no root joint.</source>
+        <translation>El esqueleto no tiene articulación raíz.</translation>
+    </message>
+    <message>
+        <source>The root is joint %1, which does not exist.</source>
+        <translation>La raíz es la articulación %1, que no existe.</translation>
+    </message>
+    <message>
+        <source>Bone %1 refers to joint %2, which does not exist.</source>
+        <translation>El hueso %1 se refiere a la articulación %2, que no existe.</translation>
+    </message>
+    <message>
+        <source>Bone %1 connects joint %2 to itself.</source>
+        <translation>El hueso %1 une la articulación %2 consigo misma.</translation>
+    </message>
+    <message>
+        <source>Bone %1 has zero length.</source>
+        <translation>El hueso %1 tiene longitud cero.</translation>
+    </message>
+    <message>
+        <source>The skeleton has a cycle: bone %1 closes a loop.</source>
+        <translation>El esqueleto tiene un ciclo: el hueso %1 cierra un bucle.</translation>
+    </message>
+    <message>
+        <source>Joint %1 hangs from a bone but does not exist.</source>
+        <translation>La articulación %1 cuelga de un hueso pero no existe.</translation>
+    </message>
+    <message>
+        <source>The root joint %1 hangs from a bone.</source>
+        <translation>La articulación raíz %1 cuelga de un hueso.</translation>
+    </message>
+    <message>
+        <source>Joint %1 hangs from bone %2, which does not exist.</source>
+        <translation>La articulación %1 cuelga del hueso %2, que no existe.</translation>
+    </message>
+    <message>
+        <source>Joints %1 and %2 both hang from bones but are in one chain.</source>
+        <translation>Las articulaciones %1 y %2 cuelgan ambas de huesos pero están en una misma cadena.</translation>
+    </message>
+    <message>
+        <source>Joint %1 hangs from a bone but is connected to the root&apos;s chain.</source>
+        <translation>La articulación %1 cuelga de un hueso pero está unida a la cadena de la raíz.</translation>
+    </message>
+    <message>
+        <source>The skeleton is not connected: it has %1 separate components.</source>
+        <translation>El esqueleto no es conexo: tiene %1 componentes separados.</translation>
+    </message>
+    <message>
+        <source>The skeleton is not connected: it has %1 separate components, %2 of them hanging from no bone.</source>
+        <translation>El esqueleto no es conexo: tiene %1 componentes separados, %2 de ellos sin colgar de ningún hueso.</translation>
+    </message>
+    <message>
+        <source>Joint %1 hangs from a bone of its own chain.</source>
+        <translation>La articulación %1 cuelga de un hueso de su propia cadena.</translation>
+    </message>
+    <message>
+        <source>The chain of joint %1 hangs from chains that hang from it.</source>
+        <translation>La cadena de la articulación %1 cuelga de cadenas que cuelgan de ella.</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>

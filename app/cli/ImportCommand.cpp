@@ -101,7 +101,7 @@ int runImport(const std::vector<std::string>& arguments) {
     model::DocumentContents contents;
     contents.parts = model::partNodesFromScene(std::move(scene), path);
     for (model::PartNode& node : contents.parts) {
-        const std::vector<std::string> problems = node.part->validate();
+        const std::vector<Message> problems = node.part->validate();
         if (!problems.empty())
             throw Error(MessageId::ImportPartUnusable, path.toStdString(), node.name.toStdString(),
                         problems.front());

@@ -89,14 +89,13 @@ QString partLabel(const PartNode& node) {
 // consistently oriented, which merge and cut rely on (Part::validateSolid).
 void checkPartInvariants(const PartNode& node) {
     const Part& part = *node.part;
-    std::vector<std::string> problems = part.validate();
+    std::vector<Message> problems = part.validate();
     if (problems.empty() && part.skeleton.boneCount() > 0 && !part.surfaceFromFile)
         problems = part.validateSolid();
     if (!problems.empty()) {
-        std::string problem = problems.front();
-        if (!problem.empty() && problem.back() == '.')
-            problem.pop_back();  // corrupt() ends the sentence
-        // Part::validate() speaks English: an invariant's own words.
+        QString problem = messageText(problems.front());
+        if (problem.endsWith(QLatin1Char('.')))
+            problem.chop(1);  // corrupt() ends the sentence
         corrupt(QT_TRANSLATE_NOOP("rigmesh::model::DocumentFile", "%1: %2"), partLabel(node),
                 problem);
     }

@@ -171,7 +171,7 @@ std::vector<PartNode> readImportedParts(const QString& path, const ImportLimits&
     // Whatever came back is checked again: numbers finite, indices in range,
     // weights a partition of unity.
     for (PartNode& node : contents.parts) {
-        const std::vector<std::string> problems = node.part->validate();
+        const std::vector<Message> problems = node.part->validate();
         if (!problems.empty())
             throw Error(MessageId::ImportPartUnusable, fileLabel(path), node.name.toStdString(),
                         problems.front());

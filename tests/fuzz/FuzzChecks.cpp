@@ -28,7 +28,7 @@ std::string partProblem(const Part& part, Topology topology) {
     }
     if (rigged) {
         if (const auto problems = part.skeleton.validate(); !problems.empty())
-            return "the skeleton is not a tree: " + problems.front();
+            return "the skeleton is not a tree: " + englishText(problems.front());
         for (const Joint& joint : part.skeleton.joints())
             if (!joint.position.allFinite())
                 return "a joint position is not finite";

@@ -47,7 +47,7 @@ TEST_F(VersionOneDocument, StoredWeightsNameBonePositionsThatDifferFromTheIds) {
 }
 
 TEST_F(VersionOneDocument, LoadsValidWithEveryWeightOnTheBoneAtItsStoredPosition) {
-    const std::vector<std::string> problems = part->validate();
+    const std::vector<Message> problems = part->validate();
     EXPECT_TRUE(problems.empty()) << problems.front();
     const nlohmann::json& perVertex = stored.at("weights").at("perVertex");
     ASSERT_EQ(perVertex.size(), part->weights.perVertex.size());

@@ -78,7 +78,7 @@ HangingChain hangingChainOf(const Document& document) {
 void expectRigKept(const Document& before, const Document& after, BoneId edited) {
     const Part& was = partOf(before);
     const Part& is = partOf(after);
-    const std::vector<std::string> problems = is.validate();
+    const std::vector<Message> problems = is.validate();
     EXPECT_TRUE(problems.empty()) << problems.front();
     EXPECT_TRUE(is.surfaceFromFile);
     EXPECT_EQ(is.mesh.vertices, was.mesh.vertices);

@@ -58,7 +58,7 @@ TEST_F(StudioImportedRig, EditConnectBoneConnectsTheSelectedDisconnectedBoneInOn
     ASSERT_EQ(document()->undoStack()->count(), steps + 1) << status().toStdString();
     const Part& connected = *document()->parts().front().part;
     EXPECT_TRUE(connected.skeleton.isConnected(*bone));
-    const std::vector<std::string> problems = connected.validate();
+    const std::vector<Message> problems = connected.validate();
     EXPECT_TRUE(problems.empty()) << problems.front();
     // The status and the undo step name the bone as its file did.
     const QString expected = QStringLiteral("Connect Bone %1 of %2")

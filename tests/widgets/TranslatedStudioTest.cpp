@@ -2,7 +2,8 @@
 // compiled into the program, menus, docks and tools speak the language, and
 // a message that comes from the engine (a stroke that crosses itself)
 // reaches the status bar translated, by its id, and a damaged document is
-// reported in the language down to what is wrong in it. Screenshots for
+// reported in the language down to what is wrong in it, a part's own
+// problem included. Screenshots for
 // docs/STUDIO.md.
 #include <gtest/gtest.h>
 
@@ -43,6 +44,10 @@ struct Language {
     QString qtCancel;       // Qt's own "Cancel" (qtbase translations)
     QString corruptValue;   // a document whose frame rate is not finite
     QString truncated;      // a document cut short starts so
+    // A sketched part with a face taken out: the document's sentence, and
+    // the part's own problem (Part::validateSolid) inside it.
+    QString openSurfaceStarts;
+    QString openSurfaceEnds;
 };
 
 void PrintTo(const Language& language, std::ostream* out) {
@@ -124,6 +129,44 @@ TEST_P(TranslatedStudio, ADamagedDocumentIsReportedWhollyInTheLanguage) {
     EXPECT_TRUE(truncated.startsWith(GetParam().truncated)) << truncated.toStdString();
 }
 
+TEST_P(TranslatedStudio, APartsOwnProblemIsReportedInTheLanguage) {
+    // A part sketched here, whose surface then loses a face: the document
+    // names the part and what keeps it from being valid (Part::validateSolid,
+    // by id), both translated.
+    window->activateTool<widgets::SketchTool>();
+    const QPointF centre(viewport()->width() / 2.0, viewport()->height() / 2.0);
+    std::vector<QPointF> ellipse;
+    for (int i = 0; i <= 90; ++i) {
+        const double t = 2.0 * M_PI * i / 90.0;
+        ellipse.emplace_back(centre.x() + 200.0 * std::cos(t), centre.y() + 90.0 * std::sin(t));
+    }
+    drag(viewport(), ellipse);
+    ASSERT_EQ(window->currentDocument()->partCount(), 1);
+    const QByteArray good = model::DocumentFile::toBytes(*window->currentDocument());
+    nlohmann::json root =
+        nlohmann::json::from_cbor(std::vector<std::uint8_t>(good.begin() + 3, good.end()));
+    bool opened = false;
+    for (auto& node : root["parts"])
+        if (node.contains("part")) {
+            auto& corners = node["part"]["mesh"]["faces"];  // three per face
+            corners.erase(corners.begin() + static_cast<std::ptrdiff_t>(corners.size()) - 3,
+                          corners.end());
+            opened = true;
+        }
+    ASSERT_TRUE(opened);
+    std::vector<std::uint8_t> bad = {0xD9, 0xD9, 0xF7};
+    nlohmann::json::to_cbor(root, bad);
+    QString refusal;
+    try {
+        model::DocumentFile::fromBytes(QByteArray(reinterpret_cast<const char*>(bad.data()),
+                                                  static_cast<qsizetype>(bad.size())));
+    } catch (const model::DocumentFileError& error) {
+        refusal = QString::fromUtf8(error.what());
+    }
+    EXPECT_TRUE(refusal.startsWith(GetParam().openSurfaceStarts)) << refusal.toStdString();
+    EXPECT_TRUE(refusal.endsWith(GetParam().openSurfaceEnds)) << refusal.toStdString();
+}
+
 // Every label, button and list entry of `dialog`, shown at its own size,
 // gets the width its translated text asks for: nothing is cut off.
 void expectNothingCutOff(QDialog& dialog, const QString& picture) {
@@ -185,7 +228,9 @@ INSTANTIATE_TEST_SUITE_P(
             QStringLiteral("Das Dokument ist beschädigt: \"timeline\" \"framesPerSecond\" enthält "
                            "einen Wert, der nicht endlich ist."),
             QStringLiteral("Das Dokument ist beschädigt oder abgeschnitten (es endet zu früh, bei "
-                           "Byte ")},
+                           "Byte "),
+            QStringLiteral("Das Dokument ist beschädigt: Teil "),
+            QStringLiteral(": Die Oberfläche hat 3 Randkanten.")},
         Language{
             "es",
             {QStringLiteral("&Archivo"), QStringLiteral("&Editar"), QStringLiteral("&Vista"),
@@ -198,7 +243,9 @@ INSTANTIATE_TEST_SUITE_P(
             QStringLiteral("El documento está dañado: \"timeline\" \"framesPerSecond\" contiene "
                            "un valor que no es finito."),
             QStringLiteral("El documento está dañado o truncado (termina demasiado pronto, en el "
-                           "byte ")}),
+                           "byte "),
+            QStringLiteral("El documento está dañado: pieza "),
+            QStringLiteral(": La superficie tiene 3 aristas de borde.")}),
     [](const testing::TestParamInfo<Language>& language) {
         return std::string(language.param.code);
     });

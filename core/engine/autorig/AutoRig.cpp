@@ -214,7 +214,7 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     notePieces(following, part.name, result.repairs);
     result.rigSurface = std::move(surface.mesh);
     result.surfaceKind = surface.kind;
-    const std::vector<std::string> problems = result.part.validate();
+    const std::vector<Message> problems = result.part.validate();
     if (!problems.empty())
         throw Error(MessageId::AutoRigSkeletonFailed, problems.front());
     reportRigProgress(progress, 1.0);

@@ -477,7 +477,7 @@ Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
                 skeleton = std::move(axis);
         }
     }
-    const std::vector<std::string> problems = skeleton.validate();
+    const std::vector<Message> problems = skeleton.validate();
     if (!problems.empty())
         throw Error(MessageId::AutoRigSkeletonFailed, problems.front());
     return skeleton;

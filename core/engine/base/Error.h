@@ -24,10 +24,9 @@ class Error : public std::runtime_error {
     explicit Error(Message message)
         : std::runtime_error(englishText(message)), message_(std::move(message)) {}
 
-    // E.g. Error(MessageId::PartHasNoBone, bone).
+    // E.g. Error(MessageId::PartHasNoBone, bone); messages nest (makeMessage).
     template <class... Args>
-    explicit Error(MessageId id, const Args&... args)
-        : Error(Message{id, {messageArgument(args)...}}) {}
+    explicit Error(MessageId id, const Args&... args) : Error(makeMessage(id, args...)) {}
 
     // The id (None for a message without one) and the arguments.
     const Message& message() const { return message_; }

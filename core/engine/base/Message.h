@@ -6,8 +6,10 @@
 #pragma once
 
 #include <concepts>
+#include <iosfwd>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace rigmesh {
@@ -493,6 +495,57 @@ enum class MessageId {
     RecipeStepNoCommand,
     RecipeStepCommandNotText,
 
+    // What keeps a part or a skeleton from being valid (part/PartValidate,
+    // rig/SkeletonHierarchy): Part::validate(), Skeleton::validate()
+    PartVertexNotFinite,
+    PartFaceMissingVertex,
+    PartFaceRepeatsVertex,
+    PartOutlineNotFinite,
+    PartOriginsNotPerVertex,
+    PartMirrorNotPerVertex,
+    PartMirrorMissingVertex,
+    PartWeightsNotPerVertex,
+    PartWeightsCount,
+    PartWeightsMissingBone,
+    PartWeightsOutOfOrder,
+    PartWeightsNotPositive,
+    PartWeightsSum,
+    PartClosestBonesCount,
+    PartClosestBonesMissingBone,
+    PartClosestBonesOutOfOrder,
+    PartClosestBonesNotPositive,
+    PartBonesWithoutJoints,
+    PartUnriggedHasWeights,
+    PartFailedBoneMissing,
+    PartBoneNameInvalid,
+    PartLockedBoneMissing,
+    PartBoneFrameInvalid,
+    PartPiecesDoNotFit,
+    PartPieceUsesOthersVertex,
+    PartPiecesDoNotCover,
+    PartSurfaceBoundaryEdges,
+    PartSurfaceNotAManifold,
+    PartSurfaceNotOriented,
+    SkeletonNoJoints,
+    SkeletonJointIdTwice,
+    SkeletonJointNotFinite,
+    SkeletonBoneIdTwice,
+    SkeletonNoRoot,
+    SkeletonRootMissing,
+    SkeletonBoneMissingJoint,
+    SkeletonBoneJoinsItself,
+    SkeletonBoneZeroLength,
+    SkeletonCycle,
+    SkeletonHangingJointMissing,
+    SkeletonRootHangs,
+    SkeletonHangsFromMissingBone,
+    SkeletonOneChainHangsTwice,
+    SkeletonHangsInRootChain,
+    SkeletonNotConnected,
+    SkeletonNotConnectedLoose,
+    SkeletonHangsFromOwnChain,
+    SkeletonChainsHangInALoop,
+
     Count  // not a message: the number of ids
 };
 
@@ -522,6 +575,9 @@ std::string englishText(const Message& message);
 // The English texts of `messages` on one line, separated by spaces.
 std::string englishText(const std::vector<Message>& messages);
 
+// Its English text, e.g. in a test's failure output.
+std::ostream& operator<<(std::ostream& out, const Message& message);
+
 // A number for a message: three significant digits ("0.000215", "1.5e+06").
 std::string shortNumber(double value);
 
@@ -537,6 +593,33 @@ inline std::string messageArgument(const char* text) {
 template <std::integral Integer>
 std::string messageArgument(Integer value) {
     return std::to_string(value);
+}
+
+// A message from its id and arguments, in the template's order: text and
+// integers become arguments; a Message (e.g. a part's first problem inside
+// the refusal it caused) fills a marker after them, in the reader's
+// language, so messages come last.
+template <class... Args>
+constexpr bool messagesComeLast() {
+    bool seenMessage = false, inOrder = true;
+    ((std::is_same_v<Args, Message> ? void(seenMessage = true)
+                                    : void(inOrder = inOrder && !seenMessage)),
+     ...);
+    return inOrder;
+}
+
+template <class... Args>
+Message makeMessage(MessageId id, const Args&... args) {
+    static_assert(messagesComeLast<Args...>(), "nested messages fill the last markers");
+    Message message{id, {}};
+    [[maybe_unused]] const auto add = [&message](const auto& argument) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(argument)>, Message>)
+            message.nested.push_back(argument);
+        else
+            message.args.push_back(messageArgument(argument));
+    };
+    (add(args), ...);
+    return message;
 }
 
 }  // namespace rigmesh

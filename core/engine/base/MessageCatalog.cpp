@@ -475,7 +475,7 @@ const char* messageTemplate(MessageId id) {
     }
     for (const auto areaTemplate :
          {&editingMessageTemplate, &fileMessageTemplate, &recipeMessageTemplate,
-          &autoRigMessageTemplate, &dataMessageTemplate})
+          &autoRigMessageTemplate, &dataMessageTemplate, &validationMessageTemplate})
         if (const char* text = areaTemplate(id))
             return text;
     return "";
@@ -509,6 +509,10 @@ std::string englishText(const std::vector<Message>& messages) {
     for (const Message& message : messages)
         text += (text.empty() ? "" : " ") + englishText(message);
     return text;
+}
+
+std::ostream& operator<<(std::ostream& out, const Message& message) {
+    return out << englishText(message);
 }
 
 std::string shortNumber(double value) {

@@ -22,5 +22,8 @@ const char* autoRigMessageTemplate(MessageId id);
 // MessageCatalogData.cpp: what is wrong in saved data (documents, recipes,
 // sketches) and a recipe step's failure.
 const char* dataMessageTemplate(MessageId id);
+// MessageCatalogValidation.cpp: what keeps a part or a skeleton from being
+// valid (Part::validate, Skeleton::validate).
+const char* validationMessageTemplate(MessageId id);
 
 }  // namespace rigmesh

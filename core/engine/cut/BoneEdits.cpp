@@ -57,7 +57,7 @@ BoneEditResult finish(const Part& part, Skeleton skeleton, const WeightsById& we
     result.bonesInvolved = static_cast<int>(local.bones.size());
     // A bone edit changes no face: an imported surface (Part::surfaceFromFile,
     // possibly open) stays as it came, and only what validate() asks holds.
-    const std::vector<std::string> problems =
+    const std::vector<Message> problems =
         part.surfaceFromFile ? result.part.validate() : result.part.validateSolid();
     if (!problems.empty())
         throw Error(MessageId::BoneEditInvalidResult, problems.front());

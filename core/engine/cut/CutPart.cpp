@@ -235,7 +235,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
     // Each piece's skeleton is rebuilt as one connected tree.
     requireConnectedSkeleton(part);
     // The split and the patches rely on a closed, oriented surface.
-    if (const std::vector<std::string> problems = part.validateSolid(); !problems.empty())
+    if (const std::vector<Message> problems = part.validateSolid(); !problems.empty())
         throw Error(MessageId::CutPartNotSolid, problems.front());
     if (request.stroke.empty() && (!(request.normal.norm() > 0.0) || !request.normal.allFinite() ||
                                    !request.point.allFinite()))
@@ -360,7 +360,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
             carryBoneAnnotations(part, out);
             result.sources[k] = std::move(piece.sources);
             result.sources[k].resize(out.mesh.vertexCount());  // patch vertices: New
-            const std::vector<std::string> problems = out.validateSolid();
+            const std::vector<Message> problems = out.validateSolid();
             if (!problems.empty())
                 throw Error(MessageId::CutInvalidPiece, problems.front());
             result.volumes[k] = signedVolume(out.mesh);

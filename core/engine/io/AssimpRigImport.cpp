@@ -356,9 +356,9 @@ std::string importRig(const aiScene& scene, const std::vector<SkinnedMesh>& grou
     for (std::size_t v = 0; v < weights.size(); ++v)
         for (const auto& [bone, w] : weights[v])
             part.weights.perVertex[v].emplace_back(static_cast<BoneId>(bone), w);
-    const std::vector<std::string> problems = part.skeleton.validate();
+    const std::vector<Message> problems = part.skeleton.validate();
     if (!problems.empty())
-        return "its skeleton is not usable: " + problems.front();
+        return "its skeleton is not usable: " + englishText(problems.front());
     if (unweighted)
         return "some vertices have no skin weights";
     return {};

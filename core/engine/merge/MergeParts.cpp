@@ -150,9 +150,9 @@ std::vector<BoneId> pruneBones(Skeleton& skeleton, WeightsById& weights,
 // when they are made.
 void checkInputsDuring(const Part& target, const Part& dragged,
                        const std::function<void()>& unionStep) {
-    if (const std::vector<std::string> problems = target.validateSolid(); !problems.empty())
+    if (const std::vector<Message> problems = target.validateSolid(); !problems.empty())
         throw Error(MessageId::MergeTargetNotSolid, problems.front());
-    const std::vector<std::string> draggedProblems = dragged.validateSolid();
+    const std::vector<Message> draggedProblems = dragged.validateSolid();
     if (!draggedProblems.empty()) {
         if (const int pairs = countSelfIntersectingFacePairs(target.mesh); pairs > 0)
             throw Error(MessageId::MergeTargetIntersectsItself, pairs);
@@ -327,7 +327,7 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
     result.stats.prunedBones = static_cast<int>(result.prunedBones.size());
     result.stats.smoothedVertices = static_cast<int>(result.movedVertices.size());
 
-    const std::vector<std::string> problems = part.validateSolid();
+    const std::vector<Message> problems = part.validateSolid();
     if (!problems.empty())
         throw Error(MessageId::MergeInvalidResult, problems.front());
 

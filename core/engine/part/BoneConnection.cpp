@@ -76,7 +76,7 @@ Part connectBone(const Part& part, BoneId bone) {
     const std::vector<BoneId> moved = skeleton.childrenOf(head);
     skeleton.mergeJoints(onto, head);
     skeleton.reorient();
-    if (const std::vector<std::string> problems = skeleton.validate(); !problems.empty())
+    if (const std::vector<Message> problems = skeleton.validate(); !problems.empty())
         throw Error(MessageId::BoneEditInvalidResult, problems.front());
     Part out = part;
     out.skeleton = std::move(skeleton);

@@ -92,11 +92,11 @@ struct Part {
     // cover the mesh and keep their faces to their vertices. Every
     // operation that changes a
     // part checks its result with it; so does every reader of untrusted data.
-    std::vector<std::string> validate() const;
+    std::vector<Message> validate() const;
     // validate() plus what every modelling operation (merge, cut, bone edits)
     // must keep: a closed, manifold, consistently oriented surface and a
     // rigged one (imported meshes may be open, so validate() does not ask).
-    std::vector<std::string> validateSolid() const;
+    std::vector<Message> validateSolid() const;
 };
 
 }  // namespace rigmesh

@@ -282,7 +282,7 @@ Skeleton readSkeleton(const json& object) {
     Skeleton skeleton =
         Skeleton::restore(std::move(jointList), std::move(boneList), root, std::move(attachments));
     if (skeleton.jointCount() > 0)
-        if (const std::vector<std::string> problems = skeleton.validate(); !problems.empty())
+        if (const std::vector<Message> problems = skeleton.validate(); !problems.empty())
             fail(MessageId::DataSkeletonNotTree, problems.front());
     return skeleton;
 }
@@ -402,7 +402,7 @@ Part partFromJson(const json& object) {
                  integer<int>(field(entry, "vertexCount"), R"("meshPieces" "vertexCount")"),
                  integer<int>(field(entry, "faceCount"), R"("meshPieces" "faceCount")")});
     if (!part->meshPieces.empty())
-        if (const std::vector<std::string> problems = part->validate(); !problems.empty())
+        if (const std::vector<Message> problems = part->validate(); !problems.empty())
             fail(MessageId::DataPartInvalid, problems.front());
     // Parts written before the flag was stored: a sketch's surface (it keeps
     // its outline) was made here; of the others (merges, cuts, imports) one

@@ -15,62 +15,76 @@ constexpr double kWeightSumTolerance = 1e-6;
 
 class Problems {
   public:
-    void add(std::string text) {
+    template <class... Args>
+    void add(MessageId id, const Args&... args) {
+        add(Message{id, {messageArgument(args)...}});
+    }
+    void add(Message problem) {
         if (list_.size() < kMaxProblems)
-            list_.push_back(std::move(text));
+            list_.push_back(std::move(problem));
     }
     bool full() const { return list_.size() >= kMaxProblems; }
-    std::vector<std::string> take() { return std::move(list_); }
+    std::vector<Message> take() { return std::move(list_); }
 
   private:
-    std::vector<std::string> list_;
+    std::vector<Message> list_;
 };
 
 void checkMesh(const TriMesh& mesh, Problems& problems) {
     for (int v = 0; v < mesh.vertexCount() && !problems.full(); ++v)
         if (!mesh.vertices[v].allFinite())
-            problems.add("Vertex " + std::to_string(v) + " has a non-finite position.");
+            problems.add(MessageId::PartVertexNotFinite, v);
     const int n = mesh.vertexCount();
     for (int f = 0; f < mesh.faceCount() && !problems.full(); ++f) {
         const auto& face = mesh.faces[f];
         if (face[0] < 0 || face[0] >= n || face[1] < 0 || face[1] >= n || face[2] < 0 ||
             face[2] >= n)
-            problems.add("Face " + std::to_string(f) + " refers to a missing vertex.");
+            problems.add(MessageId::PartFaceMissingVertex, f);
         else if (face[0] == face[1] || face[1] == face[2] || face[0] == face[2])
-            problems.add("Face " + std::to_string(f) + " repeats a vertex.");
+            problems.add(MessageId::PartFaceRepeatsVertex, f);
     }
 }
 
+// The words for one kind of per-vertex bone list (skin weights, known
+// closest bones).
+struct BoneListMessages {
+    MessageId count, missingBone, outOfOrder, notPositive, sum;
+};
+
+constexpr BoneListMessages kWeightMessages{
+    MessageId::PartWeightsCount, MessageId::PartWeightsMissingBone,
+    MessageId::PartWeightsOutOfOrder, MessageId::PartWeightsNotPositive, MessageId::PartWeightsSum};
+constexpr BoneListMessages kClosestBoneMessages{
+    MessageId::PartClosestBonesCount, MessageId::PartClosestBonesMissingBone,
+    MessageId::PartClosestBonesOutOfOrder, MessageId::PartClosestBonesNotPositive, MessageId::None};
+
 // A per-vertex list of (bone id, value) pairs: bones the skeleton has, in
-// increasing id order, values finite and positive.
+// increasing id order, values finite and positive; with `sumsToOne` (the
+// skin weights) they also sum to 1.
 void checkBoneLists(const std::vector<std::vector<std::pair<BoneId, double>>>& lists,
-                    int vertexCount, const Skeleton& skeleton, const std::string& what,
-                    bool sumsToOne, Problems& problems) {
+                    int vertexCount, const Skeleton& skeleton, const BoneListMessages& says,
+                    Problems& problems) {
+    const bool sumsToOne = says.sum != MessageId::None;
     if (lists.empty())
         return;
     if (static_cast<int>(lists.size()) != vertexCount) {
-        problems.add("The " + what + " have " + std::to_string(lists.size()) + " entries for " +
-                     std::to_string(vertexCount) + " vertices.");
+        problems.add(says.count, lists.size(), vertexCount);
         return;
     }
     for (int v = 0; v < vertexCount && !problems.full(); ++v) {
-        // Spelled out only for a problem: a string per vertex was most of a
-        // valid part's check.
-        auto where = [&] { return "The " + what + " of vertex " + std::to_string(v); };
         double sum = 0.0;
         bool first = true;
         BoneId previous = 0;
         bool ok = true;
         for (const auto& [bone, value] : lists[v]) {
             if (!skeleton.hasBone(bone)) {
-                problems.add(where() + " name bone " + std::to_string(bone) +
-                             ", which the skeleton does not have.");
+                problems.add(says.missingBone, v, bone);
                 ok = false;
             } else if (!first && bone <= previous) {
-                problems.add(where() + " are not in bone order.");
+                problems.add(says.outOfOrder, v);
                 ok = false;
             } else if (!std::isfinite(value) || value < 0.0 || (sumsToOne && value == 0.0)) {
-                problems.add(where() + " hold a value that is not finite and positive.");
+                problems.add(says.notPositive, v);
                 ok = false;
             }
             if (!ok)
@@ -80,7 +94,7 @@ void checkBoneLists(const std::vector<std::vector<std::pair<BoneId, double>>>& l
             sum += value;
         }
         if (ok && sumsToOne && std::abs(sum - 1.0) > kWeightSumTolerance)
-            problems.add(where() + " sum to " + std::to_string(sum) + ", not 1.");
+            problems.add(says.sum, v, std::to_string(sum));
     }
 }
 
@@ -95,105 +109,104 @@ void checkMeshPieces(const TriMesh& mesh, const std::vector<PartMeshPiece>& piec
         if (piece.vertexCount < 0 || piece.faceCount < 0 ||
             piece.vertexCount > mesh.vertexCount() - firstVertex ||
             piece.faceCount > mesh.faceCount() - firstFace) {
-            problems.add("The mesh pieces do not fit the mesh.");
+            problems.add(MessageId::PartPiecesDoNotFit);
             return;
         }
         for (int f = firstFace; f < firstFace + piece.faceCount; ++f)
             for (int corner : mesh.faces[f])
                 if (corner < firstVertex || corner >= firstVertex + piece.vertexCount) {
-                    problems.add("Mesh piece '" + piece.name + "' uses another piece's vertex.");
+                    problems.add(MessageId::PartPieceUsesOthersVertex, piece.name);
                     return;
                 }
         firstVertex += piece.vertexCount;
         firstFace += piece.faceCount;
     }
     if (firstVertex != mesh.vertexCount() || firstFace != mesh.faceCount())
-        problems.add("The mesh pieces do not cover the mesh.");
+        problems.add(MessageId::PartPiecesDoNotCover);
 }
 
 }  // namespace
 
-std::vector<std::string> Part::validate() const {
+std::vector<Message> Part::validate() const {
     Problems problems;
     for (const Vec2& p : outline)
         if (!p.allFinite()) {
-            problems.add("The outline has a non-finite point.");
+            problems.add(MessageId::PartOutlineNotFinite);
             break;
         }
     checkMesh(mesh, problems);
     const int n = mesh.vertexCount();
     if (!origins.empty() && static_cast<int>(origins.size()) != n)
-        problems.add("The vertex origins do not have one entry per vertex.");
+        problems.add(MessageId::PartOriginsNotPerVertex);
     if (!mirror.empty() && static_cast<int>(mirror.size()) != n)
-        problems.add("The mirror map does not have one entry per vertex.");
+        problems.add(MessageId::PartMirrorNotPerVertex);
     for (int v = 0; v < static_cast<int>(mirror.size()) && v < n; ++v)
         if (mirror[v] < 0 || mirror[v] >= n) {
-            problems.add("The mirror map refers to a missing vertex.");
+            problems.add(MessageId::PartMirrorMissingVertex);
             break;
         }
 
     const int bones = skeleton.boneCount();
     if (skeleton.jointCount() > 0) {
-        for (std::string& problem : skeleton.validate())
+        for (Message& problem : skeleton.validate())
             problems.add(std::move(problem));
         if (bones > 0 && static_cast<int>(weights.perVertex.size()) != n)
-            problems.add("The skin weights do not have one entry per vertex.");
+            problems.add(MessageId::PartWeightsNotPerVertex);
         else
-            checkBoneLists(weights.perVertex, n, skeleton, "skin weights", true, problems);
+            checkBoneLists(weights.perVertex, n, skeleton, kWeightMessages, problems);
     } else {
         // An unrigged part (a static import): no bones, no weights.
         if (bones > 0)
-            problems.add("The skeleton has bones but no joints.");
+            problems.add(MessageId::PartBonesWithoutJoints);
         for (const auto& list : weights.perVertex)
             if (!list.empty()) {
-                problems.add("An unrigged part has skin weights.");
+                problems.add(MessageId::PartUnriggedHasWeights);
                 break;
             }
     }
     for (BoneId bone : weights.failedBones)
         if (!skeleton.hasBone(bone)) {
-            problems.add("The failed bones name a missing bone.");
+            problems.add(MessageId::PartFailedBoneMissing);
             break;
         }
-    checkBoneLists(knownClosestBones, n, skeleton, "known closest bones", false, problems);
+    checkBoneLists(knownClosestBones, n, skeleton, kClosestBoneMessages, problems);
     std::set<std::string> names;
     for (const auto& [bone, name] : boneNames)
         if (!skeleton.hasBone(bone) || name.empty() || !names.insert(name).second) {
-            problems.add("A bone name is empty, repeated or names a missing bone.");
+            problems.add(MessageId::PartBoneNameInvalid);
             break;
         }
     for (BoneId bone : lockedBones)
         if (!skeleton.hasBone(bone)) {
-            problems.add("Bone " + std::to_string(bone) +
-                         " is locked but the skeleton has no such bone.");
+            problems.add(MessageId::PartLockedBoneMissing, bone);
             break;
         }
     for (const auto& [bone, frame] : boneFrames)
         if (!skeleton.hasBone(bone) || !frame.coeffs().allFinite() ||
             std::abs(frame.squaredNorm() - 1.0) > 1e-6) {
-            problems.add("A bone frame is not a unit rotation or names a missing bone.");
+            problems.add(MessageId::PartBoneFrameInvalid);
             break;
         }
     checkMeshPieces(mesh, meshPieces, problems);
     return problems.take();
 }
 
-std::vector<std::string> Part::validateSolid() const {
-    std::vector<std::string> problems = validate();
+std::vector<Message> Part::validateSolid() const {
+    std::vector<Message> problems = validate();
     if (!problems.empty())
         return problems;
     if (skeleton.boneCount() == 0)
-        problems.push_back("The part has no skeleton.");
+        problems.push_back({MessageId::PartHasNoSkeleton, {}});
     // Closed, manifold and oriented are topology: the angles, area and
     // volume analyseMesh also measures are not needed here.
     const MeshReport report = analyseMeshTopology(mesh);
     if (!report.isClosed())
-        problems.push_back("The surface has " + std::to_string(report.boundaryEdges) +
-                           " boundary edges.");
+        problems.push_back(
+            {MessageId::PartSurfaceBoundaryEdges, {std::to_string(report.boundaryEdges)}});
     if (!report.isManifold())
-        problems.push_back("The surface is not a manifold.");
+        problems.push_back({MessageId::PartSurfaceNotAManifold, {}});
     if (report.inconsistentlyOrientedEdges > 0)
-        problems.push_back("The surface is not consistently oriented.");
+        problems.push_back({MessageId::PartSurfaceNotOriented, {}});
     return problems;
 }
 

@@ -28,6 +28,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "base/Message.h"
 #include "base/Types.h"
 
 namespace rigmesh {
@@ -142,14 +143,14 @@ class Skeleton {
     // order forward kinematics needs.
     std::vector<BoneId> bonesInHierarchyOrder() const;
 
-    // Human-readable problems keeping this from being a valid tree of
+    // The problems (base/MessageCatalogValidation.cpp) keeping this from being a valid tree of
     // chains: no joints, missing or duplicate ids, a bad root, non-finite
     // positions, self-loops, zero-length bones (relative to the skeleton's
     // size), cycles, a chain other than the root's hanging from nothing,
     // bad attachments (unknown joint or bone, the root attached, two in one
     // chain, a chain hanging from itself or chains hanging from each other
     // in a loop). Empty means valid.
-    std::vector<std::string> validate() const;
+    std::vector<Message> validate() const;
 
   private:
     void rebuildIndex();

@@ -23,11 +23,10 @@ namespace {
 // counts as zero-length.
 constexpr double kZeroLengthRelative = 1e-9;
 
-std::string jointName(JointId id) {
-    return "joint " + std::to_string(id);
-}
-std::string boneName(BoneId id) {
-    return "bone " + std::to_string(id);
+// One of validate()'s problems: joints and bones by their ids.
+template <class... Args>
+Message problem(MessageId id, const Args&... args) {
+    return Message{id, {messageArgument(args)...}};
 }
 
 // Breadth-first depth of every joint (by dense index) within its chain: 0 at
@@ -102,29 +101,26 @@ Traversal traverseFromRoot(const Skeleton& s) {
 // not attached, exactly one attached joint in every chain but the root's,
 // none hanging from its own chain, no loop of chains hanging from each other.
 // `sets` holds the joints' components.
-void checkChains(const Skeleton& s, DisjointSets& sets, std::vector<std::string>& problems) {
+void checkChains(const Skeleton& s, DisjointSets& sets, std::vector<Message>& problems) {
     std::map<int, JointId> chainRootOf;  // component -> its attached joint
     int loose = 0, components = 0;
     for (const auto& [joint, parent] : s.attachments()) {
         if (!s.hasJoint(joint)) {
-            problems.push_back(jointName(joint) + " hangs from a bone but does not exist.");
+            problems.push_back(problem(MessageId::SkeletonHangingJointMissing, joint));
             continue;
         }
         if (joint == s.root())
-            problems.push_back("The root " + jointName(joint) + " hangs from a bone.");
+            problems.push_back(problem(MessageId::SkeletonRootHangs, joint));
         if (parent != kNoBone && !s.hasBone(parent))
-            problems.push_back(jointName(joint) + " hangs from " + boneName(parent) +
-                               ", which does not exist.");
+            problems.push_back(problem(MessageId::SkeletonHangsFromMissingBone, joint, parent));
         const int component = sets.find(s.indexOfJoint(joint));
         if (const auto [it, added] = chainRootOf.emplace(component, joint); !added)
-            problems.push_back(jointName(it->second) + " and " + jointName(joint) +
-                               " both hang from bones but are in one chain.");
+            problems.push_back(problem(MessageId::SkeletonOneChainHangsTwice, it->second, joint));
     }
     const int rootComponent = s.hasJoint(s.root()) ? sets.find(s.indexOfJoint(s.root())) : -1;
     if (const auto inRoot = chainRootOf.find(rootComponent);
         inRoot != chainRootOf.end() && inRoot->second != s.root()) {
-        problems.push_back(jointName(inRoot->second) +
-                           " hangs from a bone but is connected to the root's chain.");
+        problems.push_back(problem(MessageId::SkeletonHangsInRootChain, inRoot->second));
         chainRootOf.erase(inRoot);
     }
     for (int j = 0; j < s.jointCount(); ++j) {
@@ -135,11 +131,9 @@ void checkChains(const Skeleton& s, DisjointSets& sets, std::vector<std::string>
             ++loose;
     }
     if (loose > 0) {
-        std::string problem = "The skeleton is not connected: it has " +
-                              std::to_string(components) + " separate components";
-        if (!s.attachments().empty())
-            problem += ", " + std::to_string(loose) + " of them hanging from no bone";
-        problems.push_back(problem + ".");
+        problems.push_back(s.attachments().empty()
+                               ? problem(MessageId::SkeletonNotConnected, components)
+                               : problem(MessageId::SkeletonNotConnectedLoose, components, loose));
     }
     // Each chain up through the bones it hangs from must reach the root's.
     for (const auto& [component, joint] : chainRootOf) {
@@ -153,10 +147,10 @@ void checkChains(const Skeleton& s, DisjointSets& sets, std::vector<std::string>
                 break;
             at = sets.find(s.indexOfJoint(s.bone(parent).head));
             if (!seen.insert(at).second) {
-                problems.push_back(at == component && steps == 1
-                                       ? jointName(joint) + " hangs from a bone of its own chain."
-                                       : "The chain of " + jointName(joint) +
-                                             " hangs from chains that hang from it.");
+                problems.push_back(problem(at == component && steps == 1
+                                               ? MessageId::SkeletonHangsFromOwnChain
+                                               : MessageId::SkeletonChainsHangInALoop,
+                                           joint));
                 break;
             }
         }
@@ -199,10 +193,10 @@ std::vector<BoneId> Skeleton::bonesInHierarchyOrder() const {
     return order;
 }
 
-std::vector<std::string> Skeleton::validate() const {
-    std::vector<std::string> problems;
+std::vector<Message> Skeleton::validate() const {
+    std::vector<Message> problems;
     if (joints_.empty()) {
-        problems.push_back("The skeleton has no joints.");
+        problems.push_back(problem(MessageId::SkeletonNoJoints));
         return problems;
     }
 
@@ -210,10 +204,10 @@ std::vector<std::string> Skeleton::validate() const {
     Eigen::AlignedBox3d box;
     for (const Joint& j : joints_) {
         if (!seenJoints.insert(j.id).second) {
-            problems.push_back("Two joints share the id " + std::to_string(j.id) + ".");
+            problems.push_back(problem(MessageId::SkeletonJointIdTwice, j.id));
         }
         if (!j.position.allFinite()) {
-            problems.push_back(jointName(j.id) + " has a non-finite position.");
+            problems.push_back(problem(MessageId::SkeletonJointNotFinite, j.id));
         } else {
             box.extend(j.position);
         }
@@ -221,13 +215,12 @@ std::vector<std::string> Skeleton::validate() const {
     std::unordered_set<BoneId> seenBones;
     for (const Bone& b : bones_) {
         if (!seenBones.insert(b.id).second) {
-            problems.push_back("Two bones share the id " + std::to_string(b.id) + ".");
+            problems.push_back(problem(MessageId::SkeletonBoneIdTwice, b.id));
         }
     }
     if (!hasJoint(root_)) {
-        problems.push_back(root_ == kNoJoint
-                               ? "The skeleton has no root joint."
-                               : "The root is " + jointName(root_) + ", which does not exist.");
+        problems.push_back(root_ == kNoJoint ? problem(MessageId::SkeletonNoRoot)
+                                             : problem(MessageId::SkeletonRootMissing, root_));
     }
 
     const double zeroLength = kZeroLengthRelative * (box.isEmpty() ? 0.0 : box.diagonal().norm());
@@ -236,19 +229,19 @@ std::vector<std::string> Skeleton::validate() const {
         const bool headOk = hasJoint(b.head);
         const bool tailOk = hasJoint(b.tail);
         if (!headOk || !tailOk) {
-            problems.push_back(boneName(b.id) + " refers to " +
-                               jointName(headOk ? b.tail : b.head) + ", which does not exist.");
+            problems.push_back(
+                problem(MessageId::SkeletonBoneMissingJoint, b.id, headOk ? b.tail : b.head));
             continue;
         }
         if (b.head == b.tail) {
-            problems.push_back(boneName(b.id) + " connects " + jointName(b.head) + " to itself.");
+            problems.push_back(problem(MessageId::SkeletonBoneJoinsItself, b.id, b.head));
             continue;
         }
         if (boneLength(b.id) <= zeroLength) {
-            problems.push_back(boneName(b.id) + " has zero length.");
+            problems.push_back(problem(MessageId::SkeletonBoneZeroLength, b.id));
         }
         if (!sets.unite(indexOfJoint(b.head), indexOfJoint(b.tail))) {
-            problems.push_back("The skeleton has a cycle: " + boneName(b.id) + " closes a loop.");
+            problems.push_back(problem(MessageId::SkeletonCycle, b.id));
         }
     }
     checkChains(*this, sets, problems);

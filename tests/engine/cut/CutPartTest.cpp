@@ -63,7 +63,7 @@ TEST_P(CutSharedSketch, GivesTwoValidPiecesOrARefusal) {
         EXPECT_TRUE(report.isOutwardOriented()) << "piece " << k;
         EXPECT_EQ(report.selfIntersectingFacePairs, 0) << "piece " << k;
         const auto problems = piece.validateSolid();
-        EXPECT_TRUE(problems.empty()) << (problems.empty() ? "" : problems.front());
+        EXPECT_TRUE(problems.empty()) << englishText(problems);
         volume += report.volume;
         patchVertices += static_cast<int>(result.patches[k].size());
         // Untouched vertices keep their positions bit for bit.

@@ -34,6 +34,10 @@ TEST(MergeInputs, AnOpenTargetIsRefusedByName) {
     const Error error = mergeError(target, dragged);
     EXPECT_EQ(error.message().id, MessageId::MergeTargetNotSolid) << error.what();
     EXPECT_NE(std::string(error.what()).find("boundary edges"), std::string::npos) << error.what();
+    // The part's own problem keeps its id inside the refusal, so the studio
+    // translates both (Part::validateSolid).
+    const std::vector<Message> expected = {{MessageId::PartSurfaceBoundaryEdges, {"3"}}};
+    EXPECT_EQ(error.message().nested, expected) << error.what();
 }
 
 TEST(MergeInputs, ASelfIntersectingDraggedPartIsRefusedWhereverTheCrossingIs) {

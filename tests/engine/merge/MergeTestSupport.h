@@ -72,7 +72,7 @@ inline void expectValidMergedPart(const Part& part, const std::vector<BoneId>& r
     EXPECT_EQ(report.selfIntersectingFacePairs, 0);
     EXPECT_EQ(report.inconsistentlyOrientedEdges, 0);
     const auto problems = part.validateSolid();
-    EXPECT_TRUE(problems.empty()) << (problems.empty() ? "" : problems.front());
+    EXPECT_TRUE(problems.empty()) << englishText(problems);
     std::map<BoneId, int> leads = leadingVertexCounts(part.weights.perVertex);
     for (const Bone& bone : part.skeleton.bones())
         if (std::find(requested.begin(), requested.end(), bone.id) == requested.end()) {

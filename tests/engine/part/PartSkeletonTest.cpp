@@ -23,7 +23,7 @@ class PartSkeleton : public ::testing::TestWithParam<std::string> {
 
 TEST_P(PartSkeleton, IsAValidTreeWithAtLeastOneBone) {
     const Skeleton& skeleton = part().skeleton;
-    for (const std::string& problem : skeleton.validate())
+    for (const Message& problem : skeleton.validate())
         ADD_FAILURE() << problem;
     EXPECT_GE(skeleton.boneCount(), 1);
 }

@@ -6,17 +6,14 @@
 #include <algorithm>
 #include <string>
 
+#include "ProblemMentions.h"
 #include "SharedSketchPart.h"
 #include "cut/BoneEdits.h"
 
 namespace rigmesh {
 namespace {
 
-bool mentions(const std::vector<std::string>& problems, const std::string& text) {
-    return std::any_of(problems.begin(), problems.end(), [&](const std::string& problem) {
-        return problem.find(text) != std::string::npos;
-    });
-}
+using testsupport::mentions;
 
 // A weighted leaf bone of the y_branch and a vertex it weights.
 struct LeafWeight {
@@ -46,11 +43,11 @@ TEST(PartValidate, AWeightNamingABoneTheSkeletonDoesNotHaveIsReported) {
     // The bone goes but its weights stay: the other bones' weights are
     // untouched (they are keyed by id), and the stale ones are caught.
     part.skeleton.removeJoint(part.skeleton.bone(leaf.bone).tail);
-    const std::vector<std::string> problems = part.validate();
+    const std::vector<Message> problems = part.validate();
     EXPECT_TRUE(mentions(problems, "The skin weights of vertex " + std::to_string(leaf.vertex) +
                                        " name bone " + std::to_string(leaf.bone) +
                                        ", which the skeleton does not have."))
-        << (problems.empty() ? "no problem reported" : problems.front());
+        << englishText(problems);
 }
 
 TEST(PartValidate, AFailedOrKnownClosestBoneTheSkeletonDoesNotHaveIsReported) {

@@ -5,16 +5,14 @@
 #include <algorithm>
 #include <string>
 
+#include "ProblemMentions.h"
 #include "base/Error.h"
 #include "rig/Skeleton.h"
 
 namespace rigmesh {
 namespace {
 
-bool mentions(const std::vector<std::string>& problems, const std::string& word) {
-    return std::any_of(problems.begin(), problems.end(),
-                       [&](const std::string& p) { return p.find(word) != std::string::npos; });
-}
+using testsupport::mentions;
 
 // A spine (root 0 -> 1 -> 2) and a thigh whose head (3) sits beside the
 // spine's root, hanging from the first spine bone, with a shin below it.

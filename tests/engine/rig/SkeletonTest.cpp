@@ -6,15 +6,13 @@
 #include <cmath>
 #include <string>
 
+#include "ProblemMentions.h"
 #include "base/Error.h"
 
 namespace rigmesh {
 namespace {
 
-bool mentions(const std::vector<std::string>& problems, const std::string& word) {
-    return std::any_of(problems.begin(), problems.end(),
-                       [&](const std::string& p) { return p.find(word) != std::string::npos; });
-}
+using testsupport::mentions;
 
 // A chain of `count` joints along x, one unit apart, bones in order.
 Skeleton chain(int count) {
@@ -82,7 +80,7 @@ TEST(Skeleton, ValidateDetectsZeroLengthBoneRelativeToSize) {
     const BoneId tiny = s.addBone(b, c);
     const auto problems = s.validate();
     ASSERT_EQ(problems.size(), 1u);
-    EXPECT_TRUE(mentions(problems, "bone " + std::to_string(tiny) + " has zero length"));
+    EXPECT_TRUE(mentions(problems, "Bone " + std::to_string(tiny) + " has zero length"));
 
     // The same short bone is fine in a skeleton of its own size.
     Skeleton small;
