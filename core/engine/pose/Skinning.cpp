@@ -24,6 +24,35 @@ struct SlotTable {
     bool identity(std::size_t slot) const { return t.isIdentity(slot); }
 };
 
+// The weight lists by slot as the kernels read them. With `check`, every
+// bone is checked against the transforms' skeleton before its slot is read.
+struct ListSource {
+    const WeightsById& lists;
+    const SkinningTransforms* check;
+
+    bool empty(int v) const { return lists[v].empty(); }
+    // The first of the largest weights, as std::max_element finds it.
+    std::size_t pivot(int v) const {
+        const auto& influences = lists[v];
+        if (check)
+            for (const auto& [bone, weight] : influences)
+                skinning::checkBone(*check, bone);
+        std::size_t best = 0;
+        for (std::size_t k = 1; k < influences.size(); ++k)
+            if (influences[best].second < influences[k].second)
+                best = k;
+        return influences[best].first;
+    }
+    template <class F>
+    void forEach(int v, F&& f) const {
+        for (const auto& [bone, weight] : lists[v]) {
+            if (check)
+                skinning::checkBone(*check, bone);
+            f(static_cast<std::size_t>(bone), weight);
+        }
+    }
+};
+
 }  // namespace
 
 SkinningTransforms::SkinningTransforms(const Skeleton& skeleton,
@@ -79,37 +108,12 @@ SkinnedVertices skinVertices(const std::vector<Vec3>& restPositions,
     out.positions.resize(count);
     if (withNormals)
         out.normals.resize(count);
-    const bool dqs = options.method == SkinningMethod::DualQuaternion;
 
     const SlotTable table{transforms};
+    const ListSource source{slotted, transforms.slotsAreIds() ? &transforms : nullptr};
     const auto run = [&](int begin, int end) {
-        for (int v = begin; v < end; ++v) {
-            const auto& influences = slotted[v];
-            const int size = static_cast<int>(influences.size());
-            if (transforms.slotsAreIds())
-                for (const auto& [bone, weight] : influences)
-                    skinning::checkBone(transforms, bone);
-            const auto influence = [&](int k) {
-                return std::pair<std::size_t, double>(influences[k].first, influences[k].second);
-            };
-            const Vec3* n = withNormals ? &restNormals[v] : nullptr;
-            Vec3* nOut = withNormals ? &out.normals[v] : nullptr;
-            if (dqs) {
-                // The dominant bone: the first of the largest weights.
-                std::size_t pivot = size == 0 ? 0 : influences[0].first;
-                for (int k = 1, best = 0; k < size; ++k) {
-                    if (influences[best].second < influences[k].second) {
-                        best = k;
-                        pivot = influences[k].first;
-                    }
-                }
-                skinning::dualQuaternionVertex(table, size, influence, pivot, restPositions[v], n,
-                                               out.positions[v], nOut);
-            } else {
-                skinning::linearBlendVertex(table, size, influence, restPositions[v], n,
-                                            out.positions[v], nOut);
-            }
-        }
+        skinning::skinRange(table, source, options.method, begin, end, restPositions, restNormals,
+                            out);
     };
 
     // Contiguous vertex ranges, one per thread: the split depends on the

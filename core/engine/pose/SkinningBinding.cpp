@@ -32,6 +32,18 @@ struct PackedTable {
     bool identity(std::size_t i) const { return bones[i].identity; }
 };
 
+// The binding's influences as the kernels read them.
+struct BindingSource {
+    const SkinningBinding& binding;
+    bool empty(int v) const { return binding.offset(v) == binding.offset(v + 1); }
+    std::size_t pivot(int v) const { return binding.pivot(v); }
+    template <class F>
+    void forEach(int v, F&& f) const {
+        for (std::uint32_t i = binding.offset(v), end = binding.offset(v + 1); i < end; ++i)
+            f(static_cast<std::size_t>(binding.bone(i)), binding.weight(i));
+    }
+};
+
 }  // namespace
 
 SkinningBinding::SkinningBinding(const WeightsById& weights) {
@@ -104,25 +116,11 @@ void skinVertices(const std::vector<Vec3>& restPositions, const std::vector<Vec3
 
     out.positions.resize(count);
     out.normals.resize(withNormals ? count : 0);
-    const bool dqs = options.method == SkinningMethod::DualQuaternion;
     const PackedTable table{packed};
+    const BindingSource source{binding};
     const auto run = [&](int begin, int end) {
-        for (int v = begin; v < end; ++v) {
-            const std::uint32_t first = binding.offset(v);
-            const int size = static_cast<int>(binding.offset(v + 1) - first);
-            const auto influence = [&](int k) {
-                const std::uint32_t i = first + static_cast<std::uint32_t>(k);
-                return std::pair<std::size_t, double>(binding.bone(i), binding.weight(i));
-            };
-            const Vec3* n = withNormals ? &restNormals[v] : nullptr;
-            Vec3* nOut = withNormals ? &out.normals[v] : nullptr;
-            if (dqs)
-                skinning::dualQuaternionVertex(table, size, influence, binding.pivot(v),
-                                               restPositions[v], n, out.positions[v], nOut);
-            else
-                skinning::linearBlendVertex(table, size, influence, restPositions[v], n,
-                                            out.positions[v], nOut);
-        }
+        skinning::skinRange(table, source, options.method, begin, end, restPositions, restNormals,
+                            out);
     };
     // Contiguous vertex ranges as skinVertices over the lists: the output
     // does not depend on the thread count.

@@ -48,9 +48,9 @@ TEST_P(SkinningBindingOnParts, GivesTheWeightListsResultBitForBit) {
     EXPECT_TRUE(reused.normals.empty());
 }
 
-// The blend is not divided by its norm (pose/SkinningKernel.h): the result
-// is still the unit dual quaternion's rigid transform, checked against
-// Eigen's normalised quaternion of the same blend.
+// The blend, divided by its norm, is applied as a rigid transform: checked
+// against the product of Eigen's quaternions, 2 d conj(q) for the
+// translation, and q's rotation of the point and the normal.
 TEST_P(SkinningBindingOnParts, DualQuaternionsAreTheNormalisedBlendsTransform) {
     const Part& part = sharedPart(GetParam());
     const std::vector<Vec3> normals = vertexNormals(part.mesh);
