@@ -1,6 +1,9 @@
 // Posing benchmarks: DQS and LBS skinning of a long tube (about 6k and 100k
 // vertices) on a 50-bone chain with smooth synthetic weights, on 1 and 2
-// threads, and one IK drag step of the chain's tip.
+// threads, from the weight lists (Skin/DQS, Skin/LBS: what a one-off pose
+// does) and from a SkinningBinding made once into reused buffers
+// (Skin/DQS/bound, Skin/LBS/bound: a caller skinning every frame), making
+// that binding, and one IK drag step of the chain's tip.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -11,6 +14,7 @@
 #include "pose/ForwardKinematics.h"
 #include "pose/InverseKinematics.h"
 #include "pose/Skinning.h"
+#include "pose/SkinningBinding.h"
 #include "pose/VertexNormals.h"
 
 namespace rigmesh {
@@ -120,6 +124,48 @@ void skinArgs(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(dqs)->Name("Skin/DQS")->Apply(skinArgs);
 BENCHMARK(lbs)->Name("Skin/LBS")->Apply(skinArgs);
+
+// The binding is made once, the output's buffers are the last frame's.
+void skinBound(benchmark::State& state, SkinningMethod method) {
+    const Rig& r = rig(static_cast<int>(state.range(0)));
+    const SkinningOptions options{method, static_cast<int>(state.range(1))};
+    const SkinningBinding binding(r.weights);
+    SkinnedVertices out;
+    for (auto _ : state) {
+        const PosedSkeleton posed = forwardKinematics(r.skeleton, r.pose);
+        skinVertices(r.mesh.vertices, r.normals, binding,
+                     SkinningTransforms(r.skeleton, posed.boneTransforms), options, out);
+        benchmark::DoNotOptimize(out.positions.data());
+    }
+    state.counters["vertices"] = r.mesh.vertexCount();
+    state.counters["bones"] = kBones;
+}
+
+void dqsBound(benchmark::State& state) {
+    skinBound(state, SkinningMethod::DualQuaternion);
+}
+void lbsBound(benchmark::State& state) {
+    skinBound(state, SkinningMethod::LinearBlend);
+}
+
+BENCHMARK(dqsBound)->Name("Skin/DQS/bound")->Apply(skinArgs);
+BENCHMARK(lbsBound)->Name("Skin/LBS/bound")->Apply(skinArgs);
+
+// Making the binding from the weight lists (once per part and weights).
+void bind(benchmark::State& state) {
+    const Rig& r = rig(static_cast<int>(state.range(0)));
+    for (auto _ : state) {
+        const SkinningBinding binding(r.weights);
+        benchmark::DoNotOptimize(binding.influenceCount());
+    }
+    state.counters["vertices"] = r.mesh.vertexCount();
+}
+BENCHMARK(bind)
+    ->Name("Skin/bind")
+    ->ArgName("rings")
+    ->Arg(kRings6k)
+    ->Arg(kRings100k)
+    ->Unit(benchmark::kMillisecond);
 
 // One drag step: the tip of the bent 50-bone chain follows a target moving
 // along a circle by a small step each iteration (warm started, as in the

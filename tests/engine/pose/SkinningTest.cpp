@@ -1,3 +1,4 @@
+#include <cstring>
 #include <random>
 #include <stdexcept>
 
@@ -85,6 +86,109 @@ TEST_P(SkinningOnParts, OneAndTwoThreadsGiveIdenticalOutput) {
         EXPECT_EQ(one.positions, two.positions);
         EXPECT_EQ(one.normals, two.normals);
         EXPECT_EQ(one.positions, seven.positions);
+    }
+}
+
+// Saved documents must deform to the same bits as they always did
+// (tests/model/LegacyDocumentTest.cpp compares a posed OBJ byte for byte), so
+// skinning does the arithmetic of the plain per-vertex Eigen formulation
+// below, operation for operation, however it is laid out and vectorised
+// (pose/SkinningKernel.h). Large random rotations, so that some bones' quaternions
+// are flipped into the dominant bone's hemisphere.
+struct PlainSkinning {
+    const Skeleton& skeleton;
+    const std::vector<RigidTransform>& bones;
+
+    Eigen::Quaterniond rotation(BoneId bone) const {
+        return bones[skeleton.indexOfBone(bone)].rotation.normalized();
+    }
+    Vec3 translation(BoneId bone) const { return bones[skeleton.indexOfBone(bone)].translation; }
+    bool atRest(const std::vector<std::pair<BoneId, double>>& list) const {
+        for (const auto& [bone, weight] : list)
+            if (!bones[skeleton.indexOfBone(bone)].isIdentity())
+                return false;
+        return true;
+    }
+    static Vec3 times(const Eigen::Matrix3d& m, const Vec3& x) {
+        return Vec3(m(0, 0) * x[0] + m(0, 1) * x[1] + m(0, 2) * x[2],
+                    m(1, 0) * x[0] + m(1, 1) * x[1] + m(1, 2) * x[2],
+                    m(2, 0) * x[0] + m(2, 1) * x[1] + m(2, 2) * x[2]);
+    }
+    static Vec3 normalisedOr(const Vec3& v, const Vec3& fallback) {
+        const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        return length > 0 ? Vec3(v[0] / length, v[1] / length, v[2] / length) : fallback;
+    }
+
+    void linearBlend(const std::vector<std::pair<BoneId, double>>& list, const Vec3& x,
+                     const Vec3& n, Vec3& xOut, Vec3& nOut) const {
+        Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+        Vec3 t = Vec3::Zero();
+        for (const auto& [bone, weight] : list) {
+            m.noalias() += weight * rotation(bone).toRotationMatrix();
+            t.noalias() += weight * translation(bone);
+        }
+        xOut = times(m, x) + t;
+        nOut = normalisedOr(times(m, n), n);
+    }
+
+    void dualQuaternions(const std::vector<std::pair<BoneId, double>>& list, const Vec3& x,
+                         const Vec3& n, Vec3& xOut, Vec3& nOut) const {
+        const Eigen::Vector4d pivot = rotation(leadingBone(list)).coeffs();
+        Eigen::Vector4d real = Eigen::Vector4d::Zero();
+        Eigen::Vector4d dual = Eigen::Vector4d::Zero();
+        for (const auto& [bone, weight] : list) {
+            const Eigen::Quaterniond q = rotation(bone);
+            const Vec3 tr = translation(bone);
+            const Vec3 dv = 0.5 * (q.w() * tr + tr.cross(q.vec()));
+            const Eigen::Vector4d d(dv.x(), dv.y(), dv.z(), -0.5 * tr.dot(q.vec()));
+            const double w = q.coeffs().dot(pivot) < 0 ? -weight : weight;
+            real.noalias() += w * q.coeffs();
+            dual.noalias() += w * d;
+        }
+        const double norm = real.norm();
+        ASSERT_GT(norm, 0);
+        real /= norm;
+        dual /= norm;
+        const Eigen::Quaterniond q(real[3], real[0], real[1], real[2]);
+        const Vec3 rv = real.head<3>(), dv = dual.head<3>();
+        const Vec3 translation = 2.0 * (real[3] * dv - dual[3] * rv + rv.cross(dv));
+        const Eigen::Matrix3d r = q.toRotationMatrix();
+        xOut = times(r, x) + translation;
+        nOut = normalisedOr(times(r, n), n);
+    }
+};
+
+TEST_P(SkinningOnParts, GivesThePlainEigenFormulationsBitsForBits) {
+    const Part& part = sharedPart(GetParam());
+    const std::vector<Vec3> normals = vertexNormals(part.mesh);
+    std::mt19937 rng(37);
+    for (int k = 0; k < 3; ++k) {
+        const std::vector<RigidTransform> bones =
+            forwardKinematics(part.skeleton, randomPose(part.skeleton, rng, M_PI, 1.0))
+                .boneTransforms;
+        const PlainSkinning plain{part.skeleton, bones};
+        for (SkinningMethod method : kMethods) {
+            const SkinnedVertices skinned =
+                skinVertices(part.mesh.vertices, normals, part.weights.perVertex,
+                             SkinningTransforms(part.skeleton, bones), {method, 2});
+            int differ = 0;
+            for (int v = 0; v < part.mesh.vertexCount(); ++v) {
+                const auto& list = part.weights.perVertex[v];
+                Vec3 x = part.mesh.vertices[v], n = normals[v];
+                if (!list.empty() && !plain.atRest(list)) {
+                    if (method == SkinningMethod::DualQuaternion)
+                        plain.dualQuaternions(list, part.mesh.vertices[v], normals[v], x, n);
+                    else
+                        plain.linearBlend(list, part.mesh.vertices[v], normals[v], x, n);
+                }
+                // Bits, not values: no tolerance, and -0 differs from 0.
+                if (std::memcmp(x.data(), skinned.positions[v].data(), sizeof(Vec3)) != 0 ||
+                    std::memcmp(n.data(), skinned.normals[v].data(), sizeof(Vec3)) != 0)
+                    ++differ;
+            }
+            EXPECT_EQ(differ, 0) << "of " << part.mesh.vertexCount() << " vertices, pose " << k
+                                 << (method == SkinningMethod::DualQuaternion ? ", DQS" : ", LBS");
+        }
     }
 }
 
