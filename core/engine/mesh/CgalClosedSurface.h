@@ -51,28 +51,40 @@ inline std::optional<SurfaceMesh> closedSurfaceMesh(const TriMesh& mesh) {
             return std::nullopt;  // isolated
         outStart[v + 1] += outStart[v];
     }
-    std::vector<int> outgoing(corners);
+    // Each vertex's outgoing halfedges and, beside them, their targets (the
+    // searches below read these runs only).
+    std::vector<int> outgoing(corners), outTarget(corners);
     {
         std::vector<int> fill(outStart.begin(), outStart.end() - 1);
-        for (int slot = 0; slot < corners; ++slot)
-            outgoing[fill[from(slot)]++] = slot;
+        for (int slot = 0; slot < corners; ++slot) {
+            const int k = fill[from(slot)]++;
+            outgoing[k] = slot;
+            outTarget[k] = to(slot);
+        }
     }
     // Each halfedge once, and its opposite there: closed, oriented and
     // manifold at every edge.
+    for (int v = 0; v < n; ++v)
+        for (int k = outStart[v]; k < outStart[v + 1]; ++k)
+            for (int l = k + 1; l < outStart[v + 1]; ++l)
+                if (outTarget[k] == outTarget[l])
+                    return std::nullopt;
     std::vector<int> opposite(corners, -1);
-    for (int slot = 0; slot < corners; ++slot) {
-        const int a = from(slot), b = to(slot);
-        for (int k = outStart[a]; k < outStart[a + 1]; ++k)
-            if (outgoing[k] != slot && to(outgoing[k]) == b)
+    for (int a = 0; a < n; ++a)
+        for (int k = outStart[a]; k < outStart[a + 1]; ++k) {
+            const int slot = outgoing[k];
+            if (opposite[slot] >= 0)
+                continue;
+            const int b = outTarget[k];
+            for (int l = outStart[b]; l < outStart[b + 1]; ++l)
+                if (outTarget[l] == a) {
+                    opposite[slot] = outgoing[l];
+                    opposite[outgoing[l]] = slot;
+                    break;
+                }
+            if (opposite[slot] < 0)
                 return std::nullopt;
-        for (int k = outStart[b]; k < outStart[b + 1]; ++k)
-            if (to(outgoing[k]) == a) {
-                opposite[slot] = outgoing[k];
-                break;
-            }
-        if (opposite[slot] < 0)
-            return std::nullopt;
-    }
+        }
     // Manifold at every vertex: its faces make one fan (turning around it
     // from one outgoing halfedge reaches them all).
     for (int v = 0; v < n; ++v) {
