@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 
@@ -262,8 +263,11 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
     CutResult result;
     // The holes become patches; a smooth cut fairs their interior. The two
     // pieces are independent: one thread each (the first error is rethrown
-    // here).
+    // here). A patch's fairing system is kept for its weights below (the
+    // same connectivity and, unless some cut vertex has no weight, the same
+    // free vertices: one factorisation instead of two).
     std::array<TriMesh, 2> meshes;
+    std::array<std::unique_ptr<FairingSystem>, 2> patchFairing;
     parallelFor(2, 2, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             meshes[k] = std::move(pieces[k].mesh);
@@ -272,8 +276,10 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
                 const std::vector<int> added = fillHole(meshes[k], hole, surface, edge);
                 patch.insert(patch.end(), added.begin(), added.end());
             }
-            if (request.style == CutStyle::Smooth)
-                fairPositions(meshes[k], patch);
+            if (request.style == CutStyle::Smooth) {
+                patchFairing[k] = std::make_unique<FairingSystem>(meshes[k], patch);
+                fairPositions(meshes[k], *patchFairing[k]);
+            }
         }
     });
 
@@ -345,7 +351,10 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
                 for (const auto& [bone, w] : pieceWeights[v])
                     values(v, std::lower_bound(bones.begin(), bones.end(), bone) - bones.begin()) =
                         w;
-            if (!fairValues(out.mesh, unknown, values))
+            const bool solved = patchFairing[k] && unknown == patchFairing[k]->free()
+                                    ? patchFairing[k]->solve(values)
+                                    : fairValues(out.mesh, unknown, values);
+            if (!solved)
                 throw Error(MessageId::CutPatchWeightsUnsolved);
             for (int v : unknown) {
                 pieceWeights[v].clear();

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "cut/CutBand.h"
+#include "mesh/CgalClosedSurface.h"
 #include "mesh/MeshChecks.h"
 
 namespace rigmesh {
@@ -219,8 +220,13 @@ std::vector<SplitComponent> splitWhole(SurfaceMesh& surface, const TriMesh& mesh
 
 std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut,
                                       SplitMethod method, SplitReport* report) {
-    SurfaceMesh surface =
-        toSurfaceMesh(mesh, MessageId::PartSurfaceNotManifold, MessageId::PartSurfaceHasHole);
+    // Built directly when the input is a closed manifold (the same surface as
+    // add_face's, mesh/CgalClosedSurface.h); otherwise add_face names what
+    // it is not.
+    std::optional<SurfaceMesh> closed = closedSurfaceMesh(mesh);
+    SurfaceMesh surface = closed ? std::move(*closed)
+                                 : toSurfaceMesh(mesh, MessageId::PartSurfaceNotManifold,
+                                                 MessageId::PartSurfaceHasHole);
     SplitReport local;
     local.faces = mesh.faceCount();
     std::vector<SplitComponent> components;

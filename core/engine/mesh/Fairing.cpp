@@ -49,9 +49,27 @@ Rows rowsAround(const TriMesh& mesh, const std::vector<int>& free) {
 
 }  // namespace
 
-bool fairValues(const TriMesh& mesh, const std::vector<int>& free, Eigen::MatrixXd& values) {
+struct FairingSystem::Factorised {
+    std::vector<int> free;
+    // The held vertices' terms of each row, in the order the rows add them.
+    struct HeldTerm {
+        int row, vertex;
+        double coefficient;
+    };
+    std::vector<HeldTerm> held;
+    int rows = 0;
+    Eigen::SparseMatrix<double> a;
+    // CHOLMOD, as Least-Squares Meshes (2.2) and bone heat (2.4) use.
+    Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+    bool factorised = false;
+};
+
+FairingSystem::FairingSystem(const TriMesh& mesh, const std::vector<int>& free)
+    : factorised_(std::make_unique<Factorised>()) {
+    Factorised& f = *factorised_;
+    f.free = free;
     if (free.empty())
-        return true;
+        return;
     const int n = mesh.vertexCount();
     std::vector<int> unknown(n, -1);
     for (std::size_t i = 0; i < free.size(); ++i)
@@ -59,13 +77,11 @@ bool fairValues(const TriMesh& mesh, const std::vector<int>& free, Eigen::Matrix
     // Rows: the Laplacian at every free vertex and its one ring, so the fill
     // meets the held values with matching slope.
     const Rows around = rowsAround(mesh, free);
-    const std::vector<int>& rows = around.vertices;
     const std::vector<std::vector<int>>& neighbours = around.neighbours;
 
     std::vector<Eigen::Triplet<double>> triplets;
-    Eigen::MatrixXd heldPart = Eigen::MatrixXd::Zero(static_cast<int>(rows.size()), values.cols());
     int row = 0;
-    for (int v : rows) {
+    for (int v : around.vertices) {
         if (neighbours[v].empty())
             continue;
         const double inverseDegree = 1.0 / static_cast<double>(neighbours[v].size());
@@ -73,37 +89,61 @@ bool fairValues(const TriMesh& mesh, const std::vector<int>& free, Eigen::Matrix
             if (unknown[vertex] >= 0)
                 triplets.emplace_back(row, unknown[vertex], coefficient);
             else
-                heldPart.row(row) += coefficient * values.row(vertex);
+                f.held.push_back({row, vertex, coefficient});
         };
         add(v, 1.0);
         for (int w : neighbours[v])
             add(w, -inverseDegree);
         ++row;
     }
-    Eigen::SparseMatrix<double> a(row, static_cast<int>(free.size()));
-    a.setFromTriplets(triplets.begin(), triplets.end());
-    const Eigen::SparseMatrix<double> normal = a.transpose() * a;
-    // CHOLMOD, as Least-Squares Meshes (2.2) and bone heat (2.4) use.
-    Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
-    if (solver.info() != Eigen::Success)
+    f.rows = row;
+    f.a.resize(row, static_cast<int>(free.size()));
+    f.a.setFromTriplets(triplets.begin(), triplets.end());
+    const Eigen::SparseMatrix<double> normal = f.a.transpose() * f.a;
+    f.solver.compute(normal);
+    f.factorised = f.solver.info() == Eigen::Success;
+}
+
+FairingSystem::~FairingSystem() = default;
+
+const std::vector<int>& FairingSystem::free() const {
+    return factorised_->free;
+}
+
+bool FairingSystem::solve(Eigen::MatrixXd& values) const {
+    const Factorised& f = *factorised_;
+    if (f.free.empty())
+        return true;
+    if (!f.factorised)
         return false;
-    const Eigen::MatrixXd solution = solver.solve(-(a.transpose() * heldPart.topRows(row)));
-    if (solver.info() != Eigen::Success || !solution.allFinite())
+    Eigen::MatrixXd heldPart = Eigen::MatrixXd::Zero(f.rows, values.cols());
+    for (const Factorised::HeldTerm& term : f.held)
+        heldPart.row(term.row) += term.coefficient * values.row(term.vertex);
+    const Eigen::MatrixXd solution = f.solver.solve(-(f.a.transpose() * heldPart));
+    if (f.solver.info() != Eigen::Success || !solution.allFinite())
         return false;
-    for (std::size_t i = 0; i < free.size(); ++i)
-        values.row(free[i]) = solution.row(static_cast<int>(i));
+    for (std::size_t i = 0; i < f.free.size(); ++i)
+        values.row(f.free[i]) = solution.row(static_cast<int>(i));
+    return true;
+}
+
+bool fairValues(const TriMesh& mesh, const std::vector<int>& free, Eigen::MatrixXd& values) {
+    return FairingSystem(mesh, free).solve(values);
+}
+
+bool fairPositions(TriMesh& mesh, const FairingSystem& system) {
+    Eigen::MatrixXd positions(mesh.vertexCount(), 3);
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+        positions.row(v) = mesh.vertices[v].transpose();
+    if (!system.solve(positions))
+        return false;
+    for (int v : system.free())
+        mesh.vertices[v] = positions.row(v).transpose();
     return true;
 }
 
 bool fairPositions(TriMesh& mesh, const std::vector<int>& free) {
-    Eigen::MatrixXd positions(mesh.vertexCount(), 3);
-    for (int v = 0; v < mesh.vertexCount(); ++v)
-        positions.row(v) = mesh.vertices[v].transpose();
-    if (!fairValues(mesh, free, positions))
-        return false;
-    for (int v : free)
-        mesh.vertices[v] = positions.row(v).transpose();
-    return true;
+    return fairPositions(mesh, FairingSystem(mesh, free));
 }
 
 }  // namespace rigmesh
