@@ -207,16 +207,18 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
             close(3);
         const rlimit noCore{0, 0};
         setrlimit(RLIMIT_CORE, &noCore);
+        // A clean signal state: blocked signals and ignored ones survive
+        // exec, and a parent may have been started with some (a CI runner
+        // was). The signals the parent forwards (base/ForwardedSignals) and
+        // the processor limit's SIGXCPU must end the child.
+        for (const int stop : {SIGINT, SIGTERM, SIGHUP, SIGXCPU})
+            signal(stop, SIG_DFL);
+        sigset_t none;
+        sigemptyset(&none);
+        sigprocmask(SIG_SETMASK, &none, nullptr);
         if (limits.seconds > 0) {
-            // The soft limit's SIGXCPU ends the child: its default action,
-            // even where the parent was started with it ignored or blocked
-            // (both survive exec; a CI runner did so). The hard one a second
+            // The soft limit's SIGXCPU ends the child; the hard one a second
             // later kills a child that catches or ignores it all the same.
-            signal(SIGXCPU, SIG_DFL);
-            sigset_t processorSignal;
-            sigemptyset(&processorSignal);
-            sigaddset(&processorSignal, SIGXCPU);
-            sigprocmask(SIG_UNBLOCK, &processorSignal, nullptr);
             const rlim_t cpu = static_cast<rlim_t>(std::ceil(std::min(limits.seconds, 1e7)));
             const rlimit processor{cpu, cpu + 1};
             setrlimit(RLIMIT_CPU, &processor);

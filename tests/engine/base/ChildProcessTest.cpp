@@ -159,9 +159,12 @@ Stopped stopParentDuring(const std::string& script, std::size_t pidCount, int si
     if (parent == 0) {
         setenv("TMPDIR", temporary.c_str(), 1);
         // As a program started from a terminal (a background job of a
-        // script would ignore SIGINT).
+        // script would ignore SIGINT; a test runner may block signals).
         std::signal(SIGINT, SIG_DFL);
         std::signal(SIGTERM, SIG_DFL);
+        sigset_t none;
+        sigemptyset(&none);
+        sigprocmask(SIG_SETMASK, &none, nullptr);
         ChildLimits limits;
         limits.seconds = 60;
         limits.maxResultBytes = 1024;
