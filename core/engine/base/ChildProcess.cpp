@@ -183,6 +183,12 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
     execPipe[1] = highDescriptor(execPipe[1]);
     const int nullFd = highDescriptor(open("/dev/null", O_RDWR | O_CLOEXEC));
     const bool limitAddressSpace = limits.addressSpaceBytes > 0 && addressSpaceLimitsSupported();
+    // With SIGCHLD ignored (a program can be started so; it survives exec)
+    // the kernel reaps the child itself and its exit status is lost.
+    struct sigaction childSignal {};
+    sigaction(SIGCHLD, nullptr, &childSignal);
+    if (childSignal.sa_handler == SIG_IGN)
+        std::signal(SIGCHLD, SIG_DFL);
     const pid_t parent = getpid();
     const auto start = std::chrono::steady_clock::now();
 
@@ -205,8 +211,15 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
             dup2(resultFd, 3);
         else
             close(3);
+        // No core dump: 1 byte, not 0, because a core_pattern that pipes
+        // to a program (apport, systemd-coredump) ignores a limit of 0 and
+        // keeps a dying child waiting on that program for seconds; the
+        // kernel takes 1 as "no dump" there, and less than a page stops a
+        // dump to a file too. 0 where the hard limit is 0 already.
+        const rlimit oneByteCore{1, 1};
         const rlimit noCore{0, 0};
-        setrlimit(RLIMIT_CORE, &noCore);
+        if (setrlimit(RLIMIT_CORE, &oneByteCore) != 0)
+            setrlimit(RLIMIT_CORE, &noCore);
         // A clean signal state: blocked signals and ignored ones survive
         // exec, and a parent may have been started with some (a CI runner
         // was). The signals the parent forwards (base/ForwardedSignals) and
@@ -265,7 +278,7 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
         } else if (std::chrono::steady_clock::now() >= deadline) {
             kill(-pid, SIGKILL);
             kill(pid, SIGKILL);  // in case it had not made its group yet
-            waitInterrupted(pid, &status, 0);
+            waitInterrupted(pid, &status, 0, &usage);
             outcome.end = ChildOutcome::End::TimedOut;
             break;
         } else {
@@ -276,6 +289,7 @@ ChildOutcome runChildProcess(const std::string& program, const std::vector<std::
     forwarding.reset();  // reaped: its group id may be anyone's now
     outcome.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    outcome.processorSeconds = processorSeconds(usage);
 
     int execErrno = 0;
     const bool execFailed = read(execPipe[0], &execErrno, sizeof execErrno) == sizeof execErrno;

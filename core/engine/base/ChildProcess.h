@@ -49,10 +49,11 @@ struct ChildOutcome {
     End end = End::FailedToStart;
     int exitCode = -1;
     int signal = 0;
-    double seconds = 0.0;
-    std::string standardError;    // what the child wrote there, or why it did not start
-    std::string result;           // what it wrote to descriptor 3 (maxResultBytes > 0)
-    bool resultTooLarge = false;  // it wrote more than maxResultBytes there
+    double seconds = 0.0;           // on the wall clock, from start to end
+    double processorSeconds = 0.0;  // the child's own user and system time
+    std::string standardError;      // what the child wrote there, or why it did not start
+    std::string result;             // what it wrote to descriptor 3 (maxResultBytes > 0)
+    bool resultTooLarge = false;    // it wrote more than maxResultBytes there
 };
 
 // `program` is a path (no PATH search); `arguments` exclude argv[0].

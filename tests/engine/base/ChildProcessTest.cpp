@@ -2,6 +2,7 @@
 // limit, missing program) and what it wrote to standard error.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <thread>
 
 #include "base/ChildProcess.h"
@@ -25,6 +27,16 @@ using Clock = std::chrono::steady_clock;
 
 ChildOutcome shell(const std::string& script, ChildLimits limits = {}) {
     return runChildProcess("/bin/sh", {"-c", script}, limits);
+}
+
+// The whole outcome, for a failure message.
+std::string describe(const ChildOutcome& outcome) {
+    static const char* const ends[] = {"exited", "signalled", "timed out", "failed to start"};
+    std::ostringstream text;
+    text << ends[static_cast<int>(outcome.end)] << " (exit code " << outcome.exitCode << ", signal "
+         << outcome.signal << ") after " << outcome.seconds << " s, " << outcome.processorSeconds
+         << " s of processor time; standard error: \"" << outcome.standardError << '"';
+    return text.str();
 }
 
 TEST(ChildProcess, ExitCodeAndStandardErrorComeBack) {
@@ -62,9 +74,11 @@ void expectStoppedByProcessorTime(const std::string& script) {
     ChildLimits limits;
     limits.seconds = 1.0;
     const ChildOutcome outcome = shell(script, limits);
-    EXPECT_EQ(outcome.end, ChildOutcome::End::TimedOut);
-    EXPECT_GE(outcome.seconds, 1.0);
-    EXPECT_LT(outcome.seconds, kWallClockFactor * limits.seconds + 1.0);
+    EXPECT_EQ(outcome.end, ChildOutcome::End::TimedOut) << describe(outcome);
+    EXPECT_GE(outcome.seconds, 1.0) << describe(outcome);
+    EXPECT_LT(outcome.seconds, kWallClockFactor * limits.seconds + 1.0) << describe(outcome);
+    // Never past the hard limit, a second after the soft one.
+    EXPECT_LT(outcome.processorSeconds, limits.seconds + 1.5) << describe(outcome);
 }
 
 // The limit is the child's processor time: a busy loop is stopped once it
@@ -77,6 +91,41 @@ TEST(ChildProcess, BusyLoopIsStoppedByItsProcessorTime) {
 // still a timeout, not a crash.
 TEST(ChildProcess, BusyLoopIgnoringTheProcessorSignalStillTimesOut) {
     expectStoppedByProcessorTime("trap '' XCPU; while :; do :; done");
+}
+
+// A crashing child dumps no core: not to a file, nor to a program that a
+// core_pattern pipes to, which would keep it from ending for seconds. The
+// kernel takes a limit of 1 byte for that (0 is ignored by a pipe).
+TEST(ChildProcess, ChildDumpsNoCoreEvenThroughAPipe) {
+    ChildLimits limits;
+    limits.maxResultBytes = 4096;
+    const ChildOutcome outcome = shell("cat /proc/self/limits > /dev/fd/3", limits);
+    ASSERT_EQ(outcome.end, ChildOutcome::End::Exited) << describe(outcome);
+    std::istringstream lines(outcome.result);
+    std::string line;
+    while (std::getline(lines, line) && line.rfind("Max core file size", 0) != 0) {
+    }
+    std::istringstream values(line.substr(std::string("Max core file size").size()));
+    std::string soft, hard;
+    values >> soft >> hard;
+    // 0 where our own hard limit is 0 already (it cannot be raised).
+    rlimit ours{};
+    getrlimit(RLIMIT_CORE, &ours);
+    const std::string expected = ours.rlim_max == 0 ? "0" : "1";
+    EXPECT_EQ(soft, expected) << line;
+    EXPECT_EQ(hard, expected) << line;
+}
+
+// A program may be started with SIGCHLD ignored (which survives exec); the
+// kernel would then reap the child itself and its exit status be lost.
+TEST(ChildProcess, ExitCodeComesBackWhereChildSignalsWereIgnored) {
+    struct sigaction before {};
+    sigaction(SIGCHLD, nullptr, &before);
+    std::signal(SIGCHLD, SIG_IGN);
+    const ChildOutcome outcome = shell("exit 3");
+    sigaction(SIGCHLD, &before, nullptr);
+    ASSERT_EQ(outcome.end, ChildOutcome::End::Exited) << describe(outcome);
+    EXPECT_EQ(outcome.exitCode, 3);
 }
 
 TEST(ChildProcess, MissingProgramFailsToStartWithTheReason) {
