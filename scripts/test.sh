@@ -3,4 +3,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh dev
-exec ctest --preset dev "$@"
+status=0
+ctest --preset dev "$@" || status=$?
+if [ "$status" -ne 0 ]; then
+    # The failures' own output again, last: with two tests at a time it is
+    # spread through the log, and a report that keeps only its end (as CI's
+    # does) would otherwise say which tests failed but not why.
+    scripts/print-failed-tests.sh build/dev
+fi
+exit "$status"
