@@ -176,6 +176,11 @@ HalfedgeState stateOf(const SurfaceMesh& mesh, HalfedgeIndex h) {
 
 }  // namespace
 
+void splitAlong(SurfaceMesh& tm, SurfaceMesh& splitter) {
+    PMP::split(tm, splitter, CGAL::parameters::default_values(),
+               CGAL::parameters::do_not_modify(true));
+}
+
 BandOutcome splitInBand(const SurfaceMesh& whole, SurfaceMesh& splitter) {
     BandOutcome outcome;
     const int vertexCount = static_cast<int>(whole.num_vertices());
@@ -259,7 +264,7 @@ BandOutcome splitInBand(const SurfaceMesh& whole, SurfaceMesh& splitter) {
     const auto removedHalfedges = band.number_of_removed_halfedges();
     const auto removedFaces = band.number_of_removed_faces();
 
-    PMP::split(band, splitter);
+    splitAlong(band, splitter);
 
     for (const HalfedgeState& s : guarded)
         if (!(stateOf(band, s.h) == s)) {
