@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "cut/CutBand.h"
+#include "cut/SurfaceSplitCgal.h"
 #include "mesh/CgalClosedSurface.h"
 #include "mesh/MeshChecks.h"
 
@@ -217,9 +218,16 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut
     // add_face's, mesh/CgalClosedSurface.h); otherwise add_face names what
     // it is not.
     std::optional<SurfaceMesh> closed = closedSurfaceMesh(mesh);
-    SurfaceMesh surface = closed ? std::move(*closed)
+    return splitBySurface(mesh,
+                          closed ? std::move(*closed)
                                  : toSurfaceMesh(mesh, MessageId::PartSurfaceNotManifold,
-                                                 MessageId::PartSurfaceHasHole);
+                                                 MessageId::PartSurfaceHasHole),
+                          cut, method, report);
+}
+
+std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, SurfaceMesh surface,
+                                      const CutSurface& cut, SplitMethod method,
+                                      SplitReport* report) {
     SplitReport local;
     local.faces = mesh.faceCount();
     std::vector<SplitComponent> components;
