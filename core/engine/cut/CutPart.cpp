@@ -334,18 +334,23 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
                 return std::nullopt;
             };
             WeightsById pieceWeights(out.mesh.vertexCount());
+            // A kept vertex reads its list in place; a new one's is built in
+            // one buffer for all.
+            std::vector<std::pair<BoneId, double>> blended;
             for (int v = 0; v < static_cast<int>(piece.sources.size()); ++v) {
                 const VertexSource& s = piece.sources[v];
-                std::vector<std::pair<BoneId, double>> list;
+                const std::vector<std::pair<BoneId, double>>* list = &blended;
+                blended.clear();
                 if (s.kind == VertexSource::Kind::Vertex) {
-                    list = weights[s.index];
+                    list = &weights[s.index];
                 } else if (s.kind == VertexSource::Kind::Triangle) {
                     const auto& face = part.mesh.faces[s.index];
                     for (int c = 0; c < 3; ++c)
                         for (const auto& [bone, w] : weights[face[c]])
-                            list.emplace_back(bone, s.barycentric[c] * w);
+                            blended.emplace_back(bone, s.barycentric[c] * w);
                 }
-                for (const auto& [bone, w] : list)
+                pieceWeights[v].reserve(list->size());
+                for (const auto& [bone, w] : *list)
                     if (auto id = pieceBone(bone))
                         pieceWeights[v].emplace_back(*id, w);
                 normaliseWeights(pieceWeights[v]);
