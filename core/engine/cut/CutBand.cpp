@@ -83,9 +83,13 @@ std::vector<char> bandFaces(const SurfaceMesh& whole, const SurfaceMesh& splitte
     const int faceCount = static_cast<int>(whole.num_faces());
     std::vector<char> inBand(faceCount, 0);
 
+    // Each vertex's position once (not once per edge and face around it).
+    std::vector<Vec3> position(whole.num_vertices());
     Box wholeBox;
-    for (VertexIndex v : whole.vertices())
-        wholeBox.extend(pointOf(whole, v));
+    for (VertexIndex v : whole.vertices()) {
+        position[v.idx()] = pointOf(whole, v);
+        wholeBox.extend(position[v.idx()]);
+    }
     struct Triangle {
         Box box;
         SidePlane plane;
@@ -117,8 +121,8 @@ std::vector<char> bandFaces(const SurfaceMesh& whole, const SurfaceMesh& splitte
     // The input's edges that may cross a splitter triangle: both their faces.
     for (EdgeIndex e : whole.edges()) {
         const HalfedgeIndex h = whole.halfedge(e);
-        const Vec3 a = pointOf(whole, whole.source(h));
-        const Vec3 b = pointOf(whole, whole.target(h));
+        const Vec3& a = position[whole.source(h).idx()];
+        const Vec3& b = position[whole.target(h).idx()];
         const Box box = boxOf({a, b});
         for (const Triangle& t : triangles)
             if (overlap(box, t.box) && t.plane.mayMeet(a, b)) {
@@ -132,9 +136,9 @@ std::vector<char> bandFaces(const SurfaceMesh& whole, const SurfaceMesh& splitte
         if (inBand[f.idx()])
             continue;
         const HalfedgeIndex h = whole.halfedge(f);
-        const Vec3 a = pointOf(whole, whole.source(h));
-        const Vec3 b = pointOf(whole, whole.target(h));
-        const Vec3 c = pointOf(whole, whole.target(whole.next(h)));
+        const Vec3& a = position[whole.source(h).idx()];
+        const Vec3& b = position[whole.target(h).idx()];
+        const Vec3& c = position[whole.target(whole.next(h)).idx()];
         const Box box = boxOf({a, b, c});
         for (const Segment& s : segments)
             if (overlap(box, s.box) && SidePlane(a, b, c).mayMeet(s.p, s.q)) {
@@ -175,6 +179,11 @@ HalfedgeState stateOf(const SurfaceMesh& mesh, HalfedgeIndex h) {
 }
 
 }  // namespace
+
+void splitAlong(SurfaceMesh& tm, SurfaceMesh& splitter) {
+    PMP::split(tm, splitter, CGAL::parameters::default_values(),
+               CGAL::parameters::do_not_modify(true));
+}
 
 BandOutcome splitInBand(const SurfaceMesh& whole, SurfaceMesh& splitter) {
     BandOutcome outcome;
@@ -259,7 +268,7 @@ BandOutcome splitInBand(const SurfaceMesh& whole, SurfaceMesh& splitter) {
     const auto removedHalfedges = band.number_of_removed_halfedges();
     const auto removedFaces = band.number_of_removed_faces();
 
-    PMP::split(band, splitter);
+    splitAlong(band, splitter);
 
     for (const HalfedgeState& s : guarded)
         if (!(stateOf(band, s.h) == s)) {

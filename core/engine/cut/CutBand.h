@@ -3,7 +3,7 @@
 // only from .cpp files: it brings in CGAL (mesh/CgalSurfaceMesh.h).
 //
 // CGAL's PMP::split(tm, splitter) corefines tm with the splitter and cuts
-// along the intersection; PMP::split_connected_components copies each piece
+// along the intersection (splitAlong below); PMP::split_connected_components copies each piece
 // out. Over the whole part most of that is spent on faces far from the cut
 // (the box intersection sorts every face and edge; every face and edge is
 // copied). Here the band is a copy of the whole surface (same element
@@ -51,8 +51,24 @@ struct BandOutcome {
     std::string whyNot;
 };
 
+// CGAL's PMP::split(tm, splitter) with the splitter left as it is
+// (do_not_modify, CGAL 5.5 Polygon_mesh_processing/clip.h): corefine() then
+// neither splits the splitter's edges nor triangulates its faces around the
+// intersection points (a splitter triangle spans the part and holds hundreds
+// of them): perf on bench_merge's curved camel cut, the split fell from 29%
+// to 18% of cutPart's samples on the benchmark thread. tm is split along the
+// same edges into the same elements at the same indices. CGAL writes a new
+// vertex's position as its lazily exact intersection point rounded from its
+// interval unless an exact predicate has refined it; the splitter's
+// triangulation refined some, so a few of the new positions differ in their
+// last bits (on the shared sketches' 825 test cuts: 12.6% of the new
+// vertices, by at most 1.3e-14, the same links; docs/ARCHITECTURE.md section
+// 10).
+void splitAlong(cgal::SurfaceMesh& tm, cgal::SurfaceMesh& splitter);
+
 // `whole`: the closed input (as mesh/CgalSurfaceMesh's toSurfaceMesh builds
-// it); `splitter`: what PMP::split would corefine it with (it is modified).
+// it); `splitter`: what PMP::split would corefine it with (left as it is,
+// splitAlong).
 BandOutcome splitInBand(const cgal::SurfaceMesh& whole, cgal::SurfaceMesh& splitter);
 
 }  // namespace rigmesh

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "cut/CutBand.h"
+#include "cut/SurfaceSplitCgal.h"
 #include "mesh/CgalClosedSurface.h"
 #include "mesh/MeshChecks.h"
 
@@ -164,18 +165,11 @@ std::optional<SurfaceMesh> splitterOf(const TriMesh& mesh, const SurfaceMesh& su
     return splitter;
 }
 
-// The whole surface split by CGAL, its pieces copied out by
-// split_connected_components.
-std::vector<SplitComponent> splitWhole(SurfaceMesh& surface, const TriMesh& mesh,
-                                       const CutSurface& cut) {
-    if (cut.isPlane()) {
-        const Vec3& n = cut.planeNormal();
-        PMP::split(surface, Kernel::Plane_3(n.x(), n.y(), n.z(), -n.dot(cut.planePoint())));
-    } else {
-        SurfaceMesh splitter =
-            toSurfaceMesh(cut.strip(boundingBox(mesh)), MessageId::CutSurfaceNotManifold);
-        PMP::split(surface, splitter);
-    }
+// The whole surface split by CGAL (nothing to split without a splitter: the
+// plane misses the box), its pieces copied out by split_connected_components.
+std::vector<SplitComponent> splitWhole(SurfaceMesh& surface, std::optional<SurfaceMesh>& splitter) {
+    if (splitter)
+        splitAlong(surface, *splitter);
     std::vector<SurfaceMesh> meshes;
     PMP::split_connected_components(surface, meshes);
 
@@ -224,14 +218,23 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut
     // add_face's, mesh/CgalClosedSurface.h); otherwise add_face names what
     // it is not.
     std::optional<SurfaceMesh> closed = closedSurfaceMesh(mesh);
-    SurfaceMesh surface = closed ? std::move(*closed)
+    return splitBySurface(mesh,
+                          closed ? std::move(*closed)
                                  : toSurfaceMesh(mesh, MessageId::PartSurfaceNotManifold,
-                                                 MessageId::PartSurfaceHasHole);
+                                                 MessageId::PartSurfaceHasHole),
+                          cut, method, report);
+}
+
+std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, SurfaceMesh surface,
+                                      const CutSurface& cut, SplitMethod method,
+                                      SplitReport* report) {
     SplitReport local;
     local.faces = mesh.faceCount();
     std::vector<SplitComponent> components;
+    // Left as it is by the band's split (splitAlong), so the whole split can
+    // use it too.
+    std::optional<SurfaceMesh> splitter = splitterOf(mesh, surface, cut);
     if (method == SplitMethod::Band) {
-        std::optional<SurfaceMesh> splitter = splitterOf(mesh, surface, cut);
         if (splitter) {
             BandOutcome band = splitInBand(surface, *splitter);
             local.bandFaces = band.bandFaces;
@@ -246,7 +249,7 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, const CutSurface& cut
         }
     }
     if (!local.band)
-        components = splitWhole(surface, mesh, cut);
+        components = splitWhole(surface, splitter);
     if (report)
         *report = local;
 

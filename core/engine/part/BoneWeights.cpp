@@ -102,11 +102,30 @@ std::map<BoneId, int> leadingVertexCounts(const WeightsById& weights) {
 }
 
 void normaliseWeights(std::vector<std::pair<BoneId, double>>& weights) {
-    std::map<BoneId, double> merged;
-    for (const auto& [bone, w] : weights)
-        if (w > 0.0)
-            merged[bone] += w;
-    weights.assign(merged.begin(), merged.end());
+    // In place, with what a std::map<BoneId, double> summing the positive
+    // weights would give (each bone's weights added in the order given, the
+    // bones ascending), without its allocation per entry (per-vertex weight
+    // lists in a cut, perf on bench_merge): the lists are a few bones long,
+    // so a stable insertion sort.
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < weights.size(); ++i)
+        if (weights[i].second > 0.0)
+            weights[kept++] = weights[i];
+    for (std::size_t i = 1; i < kept; ++i) {
+        const std::pair<BoneId, double> entry = weights[i];
+        std::size_t j = i;
+        for (; j > 0 && weights[j - 1].first > entry.first; --j)
+            weights[j] = weights[j - 1];
+        weights[j] = entry;
+    }
+    std::size_t merged = 0;
+    for (std::size_t i = 0; i < kept; ++i) {
+        if (merged > 0 && weights[merged - 1].first == weights[i].first)
+            weights[merged - 1].second += weights[i].second;
+        else
+            weights[merged++] = weights[i];
+    }
+    weights.resize(merged);
     double total = 0.0;
     for (const auto& entry : weights)
         total += entry.second;
