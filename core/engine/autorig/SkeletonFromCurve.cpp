@@ -6,12 +6,14 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <optional>
 #include <queue>
 #include <set>
 #include <vector>
 
 #include "autorig/AxisChain.h"
 #include "autorig/JointsInside.h"
+#include "autorig/SurfaceProbe.h"
 #include "base/Error.h"
 #include "rig/DouglasPeucker.h"
 
@@ -366,12 +368,61 @@ std::vector<TubeSample> smoothedTube(const Graph& graph, const std::vector<int>&
     return tube;
 }
 
+// A limb that CDP gives one bone, from the junction it leaves to its tip:
+// that bone would start in the middle of the body part the limb leaves, so
+// turning it would turn that part too. Paper 2.3 (Fig. 6) joins a junction's
+// joint by a bone to the end of each cylindrical region's skeleton, so the
+// limb keeps a joint of its own: at its narrowest cross-section beyond the
+// junction's ball when it widens again past there by more than the CDP
+// threshold (a neck below a head, an ear's base), else where it leaves the
+// ball. The width is the distance to the surface (the radius of the largest
+// ball there, as the chords measure a sketch's width), which the flow's node
+// radii smooth away at a short neck. The tube's sample index, or none (no
+// sample at least `minimumBone` from both ends).
+std::optional<int> limbJoint(const Graph& graph, const std::vector<int>& branch,
+                             const std::vector<TubeSample>& tube, const std::vector<double>& along,
+                             const SurfaceProbe& surface, double threshold, double minimumBone) {
+    const int last = static_cast<int>(tube.size()) - 1;
+    const bool tipFirst = graph.degree(branch.front()) == 1 && graph.degree(branch.back()) >= 3;
+    const bool tipLast = graph.degree(branch.back()) == 1 && graph.degree(branch.front()) >= 3;
+    if (last < 2 || (!tipFirst && !tipLast))
+        return std::nullopt;
+    // From the junction's ball towards the tip.
+    std::vector<int> order;
+    for (int i = 1; i < last; ++i)
+        order.push_back(tipLast ? i : last - i);
+    const auto fits = [&](int k) {
+        return along[k] >= minimumBone && along[last] - along[k] >= minimumBone;
+    };
+    std::vector<double> width(tube.size(), 0.0);
+    for (int k : order)
+        width[k] = surface.distance(tube[k].point);
+    std::optional<int> narrowest;
+    double widerBeyond = 0.0;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const int k = order[i];
+        if (!fits(k))
+            continue;
+        double widest = 0.0;
+        for (std::size_t j = i + 1; j < order.size(); ++j)
+            widest = std::max(widest, width[order[j]]);
+        if (!narrowest || width[k] < width[*narrowest]) {
+            narrowest = k;
+            widerBeyond = widest - width[k];
+        }
+    }
+    if (narrowest && widerBeyond > threshold)
+        return narrowest;
+    const int exit = order.front();
+    return fits(exit) ? std::optional<int>(exit) : std::nullopt;
+}
+
 // The joints of a branch: CDP's kept samples, interior joints closer than
 // the minimum bone merged (as SkeletonFromRegions does along a cylinder).
 // Returns their samples (position and radius), the branch's two ends first
 // and last.
 std::vector<TubeSample> branchJoints(const Graph& graph, const std::vector<int>& branch,
-                                     const CurveRigOptions& options) {
+                                     const SurfaceProbe& surface, const CurveRigOptions& options) {
     const std::vector<int> samples = branchSamples(graph, branch);
     const std::vector<TubeSample> tube =
         smoothedTube(graph, branch, samples, options.smoothingIterations);
@@ -398,6 +449,10 @@ std::vector<TubeSample> branchJoints(const Graph& graph, const std::vector<int>&
             merged.pop_back();
         merged.push_back(kept.back());
     }
+    if (merged.size() == 2)
+        if (const std::optional<int> k = limbJoint(graph, branch, tube, along, surface,
+                                                   options.relativeThreshold * scale, minimumBone))
+            merged.insert(merged.begin() + 1, *k);
     std::vector<TubeSample> joints;
     for (int k : merged)
         joints.push_back(tube[k]);
@@ -436,6 +491,7 @@ Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
     pruneTwigs(graph, options, options.keepReachFraction * diagonal);
     collapseJunctions(graph, options);
 
+    const SurfaceProbe surface(mesh);
     Skeleton skeleton;
     std::map<int, JointId> jointOfNode;
     std::map<JointId, double> radiusOf;
@@ -448,7 +504,7 @@ Skeleton skeletonFromCurve(const CurveSkeleton& curve, const TriMesh& mesh,
         return jointOfNode[node] = joint;
     };
     for (const std::vector<int>& branch : branches(graph)) {
-        const std::vector<TubeSample> joints = branchJoints(graph, branch, options);
+        const std::vector<TubeSample> joints = branchJoints(graph, branch, surface, options);
         JointId previous = jointAt(branch.front());
         for (std::size_t i = 1; i < joints.size(); ++i) {
             JointId next;

@@ -11,6 +11,9 @@
 //    TubeSample), threshold and minimum bone relative to the branch's mean
 //    radius as for sketches; samples inside a junction's ball are left out,
 //    as a sketch's connecting region is (its junction joint stands for them).
+//    A limb CDP gives one bone from its junction keeps a joint where it
+//    leaves the junction (its neck, else the ball's edge), as a sketch's
+//    cylindrical region ends where its connecting region begins (Fig. 6).
 // 5. The root is the thickest branching joint (the torso), else the most
 //    central joint; bones point away from it.
 // A twig that reaches far from its junction is never pruned (a trunk's
