@@ -397,18 +397,19 @@ std::optional<int> limbJoint(const Graph& graph, const std::vector<int>& branch,
     std::vector<double> width(tube.size(), 0.0);
     for (int k : order)
         width[k] = surface.distance(tube[k].point);
+    // widestBeyond[i]: the widest of the samples after order[i] (0 if none).
+    std::vector<double> widestBeyond(order.size(), 0.0);
+    for (std::size_t i = order.size() - 1; i-- > 0;)
+        widestBeyond[i] = std::max(widestBeyond[i + 1], width[order[i + 1]]);
     std::optional<int> narrowest;
     double widerBeyond = 0.0;
     for (std::size_t i = 0; i < order.size(); ++i) {
         const int k = order[i];
         if (!fits(k))
             continue;
-        double widest = 0.0;
-        for (std::size_t j = i + 1; j < order.size(); ++j)
-            widest = std::max(widest, width[order[j]]);
         if (!narrowest || width[k] < width[*narrowest]) {
             narrowest = k;
-            widerBeyond = widest - width[k];
+            widerBeyond = widestBeyond[i] - width[k];
         }
     }
     if (narrowest && widerBeyond > threshold)
