@@ -31,6 +31,19 @@ Eigen::Quaterniond boneFrame(const Vec3& axis, const Vec3& along) {
 // Blender writes along its bones.
 constexpr double kKeptFrameOffBone = M_PI / 180.0;
 
+// The axis of `frame` (+-X, +-Y or +-Z, in global coordinates) nearest the
+// direction `along`.
+Vec3 nearestFrameAxis(const Eigen::Quaterniond& frame, const Vec3& along) {
+    const Vec3 local = frame.conjugate() * along;
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+        if (std::abs(local[k]) > std::abs(local[axis]))
+            axis = k;
+    Vec3 unit = Vec3::Zero();
+    unit[axis] = local[axis] < 0 ? -1.0 : 1.0;
+    return frame * unit;
+}
+
 // Leaf tails on the surface nearer than this (times the part's size) count
 // as on it: a plane cut's vertices lie within 1e-6 of the size of its plane
 // (CutPartTest), and ray-cast parity cannot tell a point there inside.
@@ -143,17 +156,24 @@ ExportRig makeExportRig(const Part& part, const std::string& partName,
             // A frame kept from a file whose bones run along another axis
             // (DirectX's .x) is turned onto the bone by the shortest turn, which
             // keeps its roll: Blender's FBX importer lays every bone along its
-            // node's +Y. Frames Blender wrote (+Y along the bone) stay as read,
-            // and so does every frame in glTF, whose importer in Blender points
-            // a bone at its children whatever its axes (and where our own
-            // glTF round trip of a turned MD5 frame moved a joint by 0.03% of
-            // the size: AssimpModelsRoundTrip).
+            // node's +Y. Frames Blender wrote (+Y along the bone) stay as read.
+            // Blender's glTF importer points a bone at its child bones snapped
+            // to the nearest axis of its frame (docs/EXCHANGE.md rule 22), so
+            // in glTF a frame is turned only where the bone's children all
+            // start at its tail (a leaf's end bone does) and no axis of the
+            // frame runs within a degree of the bone: its nearest axis is
+            // turned onto the bone (rule 27).
             const Vec3 along = node.tail - node.head;
-            if (axes == BoneAxes::PlusY && along.norm() > 0 &&
-                (node.restFrame * Vec3::UnitY()).dot(along.normalized()) <
-                    std::cos(kKeptFrameOffBone))
-                node.restFrame = (boneFrame(node.restFrame * Vec3::UnitY(), along) * node.restFrame)
-                                     .normalized();
+            const bool childrenAtTail = std::all_of(chains.begin(), chains.end(), [&](int chain) {
+                return bonesFrom[chain].empty() ||
+                       hierarchy.restPosition(chain) == hierarchy.restPosition(end);
+            });
+            const Vec3 boneAxis = axes == BoneAxes::PlusY ? Vec3(node.restFrame * Vec3::UnitY())
+                                                          : nearestFrameAxis(node.restFrame, along);
+            const bool turn = axes == BoneAxes::PlusY || childrenAtTail;
+            if (turn && along.norm() > 0 &&
+                boneAxis.dot(along.normalized()) < std::cos(kKeptFrameOffBone))
+                node.restFrame = (boneFrame(boneAxis, along) * node.restFrame).normalized();
         } else {
             const bool minusZ = axes == BoneAxes::GltfRootLeavesMinusZ && parent < 0 && node.leaf;
             node.restFrame = boneFrame(minusZ ? Vec3(-Vec3::UnitZ()) : Vec3(Vec3::UnitY()),

@@ -12,7 +12,8 @@
 // an imported file (Part::boneFrames), so that importers guess from it what
 // they guessed from the file; in FBX and COLLADA (BoneAxes::PlusY) a kept
 // frame whose +Y runs elsewhere than along the bone (a DirectX .x file's) is
-// turned onto the bone, keeping its roll.
+// turned onto the bone, keeping its roll; in glTF one with no axis along the
+// bone has its nearest axis turned onto it (docs/EXCHANGE.md rule 27).
 //
 // Disconnected bones (Skeleton.h): a bone leaving an attached chain's root
 // is a child of the node of the bone the chain hangs from, placed at its own

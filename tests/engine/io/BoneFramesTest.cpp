@@ -143,6 +143,57 @@ INSTANTIATE_TEST_SUITE_P(Formats, BoneFrames,
                                           testing::Values("tube", "y_branch", "biped")),
                          paramName);
 
+// Blender's glTF importer points a bone at its children snapped to the
+// nearest axis of its node's frame (docs/EXCHANGE.md rules 22 and 27): a
+// leaf of an imported rig, whose frame is kept from its file, goes out with
+// one axis of its frame along the bone towards its end bone, so that Blender
+// lays it along the limb. Testwuson.X's leaves Ear_L/R and ForeLeg_L/R_05
+// have no axis within 7 degrees of their bone in the file.
+TEST(KeptFramesInGltf, EveryLeafHasAFrameAxisAlongItsBone) {
+    for (const std::string model : {"X/Testwuson.X", "X/BCN_Epileptic.X", "SMD/WusonSMD.smd"}) {
+        const ImportedScene imported = importScene("/usr/share/assimp/models/" + model);
+        std::vector<ExportPart> items;
+        for (const ImportedPart& part : imported.parts)
+            if (!part.needsRig) {
+                ExportPart item;
+                item.part = &part.part;
+                items.push_back(item);
+            }
+        ASSERT_FALSE(items.empty()) << model << ": " << imported.message;
+        const std::string path = (iotest::scratchFolder() / "kept_frames.glb").string();
+        ExportOptions options;
+        options.leafBones = true;
+        exportScene(items, nullptr, path, options);
+        Assimp::Importer importer;
+        const aiScene* scene = importer.ReadFile(path, 0);
+        ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+        int leaves = 0;
+        std::vector<const aiNode*> nodes{scene->mRootNode};
+        while (!nodes.empty()) {
+            const aiNode* node = nodes.back();
+            nodes.pop_back();
+            for (unsigned c = 0; c < node->mNumChildren; ++c)
+                nodes.push_back(node->mChildren[c]);
+            const std::string name = node->mName.C_Str();
+            if (name.size() < 4 || name.substr(name.size() - 4) != "_end")
+                continue;
+            ++leaves;
+            const Eigen::Affine3d leaf = globalOf(node->mParent);
+            const Vec3 along = (globalOf(node).translation() - leaf.translation()).normalized();
+            double nearest = M_PI;  // the angle of the frame's axis nearest the bone
+            for (int axis = 0; axis < 3; ++axis) {
+                const double cosine = std::abs(leaf.linear().col(axis).normalized().dot(along));
+                nearest = std::min(nearest, std::acos(std::min(1.0, cosine)));
+            }
+            // A degree, within which a kept frame stays as read (ExportRig.cpp),
+            // and single precision.
+            EXPECT_LT(nearest, M_PI / 180.0 + 1e-4)
+                << model << ": " << node->mParent->mName.C_Str();
+        }
+        EXPECT_GT(leaves, 0) << model;
+    }
+}
+
 TEST(GltfScene, SkinnedMeshIsASceneRootAndNoRootNodeIsWritten) {
     const std::string glb = readAll(exportTo("biped", ".glb", false));
     const nlohmann::json gltf = nlohmann::json::parse(glbJson(glb));
