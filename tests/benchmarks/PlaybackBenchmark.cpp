@@ -1,10 +1,14 @@
-// Playback of the timeline: the biped at 10k and 50k vertices with
+// Playback of the timeline: the biped at 10k, 50k and 100k vertices with
 // a three-key smooth clip, one frame after another in a 960x540 viewport as
 // the studio plays it: the clip evaluated at the new frame and the pose set
 // (Document::setCurrentFrame), forward kinematics, GPU skinning and drawing,
 // up to reading the frame back (grabFramebuffer, which waits for the
-// drawing; 2 MB at this size). Frame/... is that whole frame; Evaluate/... the document
-// side alone. Runs under Xvfb (Mesa llvmpipe: the GPU is the CPU here).
+// drawing; 2 MB at this size). Frame/... is that whole frame; Still/... the
+// same drawing and read-back with the frame unchanged; Unskinned/... that
+// drawing of the mesh without its rig (what llvmpipe alone costs for it,
+// the bound any skinning has to live within);
+// Evaluate/... the document side alone. Runs under Xvfb (Mesa llvmpipe: the
+// GPU is the CPU here).
 //
 // usage: xvfb-run -a -s "-screen 0 1400x900x24" bench_playback
 #include <benchmark/benchmark.h>
@@ -28,6 +32,7 @@ namespace {
 
 struct PlaybackCase {
     int targetVertices = 0;
+    bool unskinned = false;  // the same mesh without its rig: llvmpipe's own cost
     std::unique_ptr<model::Document> document;
     std::unique_ptr<widgets::Viewport> viewport;
 };
@@ -64,6 +69,18 @@ void setUp(PlaybackCase& c) {
     if (c.viewport)
         return;
     c.document = keyedBiped(c.targetVertices);
+    if (c.unskinned) {
+        model::DocumentContents contents;
+        model::PartNode node = c.document->parts().front();
+        Part plain = *node.part;
+        plain.skeleton = Skeleton();
+        plain.weights = SkinWeightsById();
+        node.part = std::make_shared<const Part>(std::move(plain));
+        node.clip = Clip();
+        node.pose = Pose();
+        contents.parts.push_back(std::move(node));
+        c.document = std::make_unique<model::Document>(std::move(contents));
+    }
     c.viewport = std::make_unique<widgets::Viewport>(c.document.get());
     c.viewport->resize(960, 540);
     c.viewport->show();
@@ -87,6 +104,18 @@ void benchFrame(benchmark::State& state, PlaybackCase* c) {
         state.SetIterationTime(elapsed.count());
     }
     state.counters["vertices"] = c->document->parts().front().part->mesh.vertexCount();
+}
+
+void benchStill(benchmark::State& state, PlaybackCase* c) {
+    setUp(*c);
+    c->document->setCurrentFrame(6);  // posed: the vertex shader skins every vertex
+    for (auto _ : state) {
+        const auto start = std::chrono::steady_clock::now();
+        c->viewport->update();
+        benchmark::DoNotOptimize(c->viewport->grabFramebuffer());
+        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+        state.SetIterationTime(elapsed.count());
+    }
 }
 
 void benchEvaluate(benchmark::State& state, PlaybackCase* c) {
@@ -124,20 +153,31 @@ void benchRealTime(benchmark::State& state, PlaybackCase* c) {
 }
 
 void registerBenchmarks() {
-    for (const int count : {10000, 50000}) {
+    for (const int count : {10000, 50000, 100000}) {
         cases.push_back(std::make_unique<PlaybackCase>());
         cases.back()->targetVertices = count;
+        PlaybackCase* rigged = cases.back().get();
+        cases.push_back(std::make_unique<PlaybackCase>());
+        cases.back()->targetVertices = count;
+        cases.back()->unskinned = true;
+        PlaybackCase* unskinned = cases.back().get();
         const std::string size = std::to_string(count / 1000) + "k";
-        benchmark::RegisterBenchmark(("Playback/frame/biped/" + size).c_str(), benchFrame,
-                                     cases.back().get())
+        benchmark::RegisterBenchmark(("Playback/frame/biped/" + size).c_str(), benchFrame, rigged)
+            ->UseManualTime()
+            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("Playback/still/biped/" + size).c_str(), benchStill, rigged)
+            ->UseManualTime()
+            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("Playback/unskinned/biped/" + size).c_str(), benchStill,
+                                     unskinned)
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark(("Playback/realtime/biped/" + size).c_str(), benchRealTime,
-                                     cases.back().get())
+                                     rigged)
             ->Iterations(1)
             ->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark(("Playback/evaluate/biped/" + size).c_str(), benchEvaluate,
-                                     cases.back().get())
+                                     rigged)
             ->Unit(benchmark::kMillisecond);
     }
 }
