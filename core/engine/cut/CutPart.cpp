@@ -236,6 +236,14 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
         throw Error(MessageId::CutNeedsRiggedPart);
     // Each piece's skeleton is rebuilt as one connected tree.
     requireConnectedSkeleton(part);
+    // The request's own checks first: they cost nothing, the part's build a
+    // surface.
+    if (request.stroke.empty() && (!(request.normal.norm() > 0.0) || !request.normal.allFinite() ||
+                                   !request.point.allFinite()))
+        throw Error(MessageId::CutNeedsPlane);
+    for (const Vec3& p : request.stroke)
+        if (!p.allFinite())
+            throw Error(MessageId::CutStrokeNotFinite);
     // The split and the patches rely on a closed, oriented surface. The
     // split's surface built directly says the surface is closed, oriented and
     // manifold at every edge and vertex (mesh/CgalClosedSurface.h), which is
@@ -249,12 +257,6 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
             closed && part.mesh.faceCount() > 0 ? part.validate() : part.validateSolid();
         !problems.empty())
         throw Error(MessageId::CutPartNotSolid, problems.front());
-    if (request.stroke.empty() && (!(request.normal.norm() > 0.0) || !request.normal.allFinite() ||
-                                   !request.point.allFinite()))
-        throw Error(MessageId::CutNeedsPlane);
-    for (const Vec3& p : request.stroke)
-        if (!p.allFinite())
-            throw Error(MessageId::CutStrokeNotFinite);
     const CutSurface surface = request.stroke.empty()
                                    ? CutSurface::plane(request.point, request.normal)
                                    : CutSurface::swept(request.stroke, request.sweep);
