@@ -592,6 +592,10 @@
         <translation>das Netz hat %1 Vertices, zu viele, um das Skelett direkt darauf zu berechnen</translation>
     </message>
     <message>
+        <source>the mesh&apos;s edges are long for its size (on average %1% of its diagonal), too coarse to compute the skeleton on directly</source>
+        <translation>die Kanten des Netzes sind für seine Größe lang (im Mittel %1% seiner Diagonale), zu grob, um das Skelett direkt darauf zu berechnen</translation>
+    </message>
+    <message>
         <source>%1 pieces of the proxy lie apart from the body and follow its nearest bones</source>
         <translation>%1 Stücke der Hülle liegen abseits des Körpers und folgen seinen nächsten Knochen</translation>
     </message>

@@ -592,6 +592,10 @@
         <translation>la malla tiene %1 vértices, demasiados para calcular el esqueleto directamente sobre ella</translation>
     </message>
     <message>
+        <source>the mesh&apos;s edges are long for its size (on average %1% of its diagonal), too coarse to compute the skeleton on directly</source>
+        <translation>las aristas de la malla son largas para su tamaño (de media el %1% de su diagonal), demasiado gruesa para calcular el esqueleto directamente sobre ella</translation>
+    </message>
+    <message>
         <source>%1 pieces of the proxy lie apart from the body and follow its nearest bones</source>
         <translation>%1 trozos de la envoltura quedan apartados del cuerpo y siguen sus huesos más cercanos</translation>
     </message>

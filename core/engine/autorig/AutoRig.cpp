@@ -5,6 +5,7 @@
 #include <array>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "autorig/AxisChain.h"
 #include "autorig/BoneCoverage.h"
@@ -164,11 +165,22 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     // lives in the rig surface's main piece, so that is the mesh mirrored.
     symmetrizeSkeleton(result.part.skeleton, surface.mainPiece);
     // No bone shorter than the shortest an edit may make (rig/ShortBones.h):
-    // such a bone joins its neighbour; a mesh with only such a bone is refused.
+    // such a bone joins its neighbour.
     const double minimum = minimumBoneLength(surface.mainPiece);
     collapseShortBones(result.part.skeleton, minimum);
-    if (const auto shortest = shortestBone(result.part.skeleton);
-        shortest && shortest->length < minimum)
+    const auto tooShort = [&] {
+        const auto shortest = shortestBone(result.part.skeleton);
+        return shortest && shortest->length < minimum ? shortest : std::nullopt;
+    };
+    if (tooShort()) {
+        // Only such a bone is left: the flow contracted a blob (a ball, a
+        // box) to a segment shorter than a bone, as it contracts others to a
+        // point. It gets a chain along its main axis likewise.
+        result.part.skeleton = mainAxisChain(surface.mainPiece);
+        symmetrizeSkeleton(result.part.skeleton, surface.mainPiece);
+        collapseShortBones(result.part.skeleton, minimum);
+    }
+    if (const auto shortest = tooShort())
         throw Error(MessageId::AutoRigBoneTooShort, shortNumber(shortest->length),
                     shortNumber(minimum));
     // Every region near a bone (autorig/BoneCoverage): a bone bends or a

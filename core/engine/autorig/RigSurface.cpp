@@ -7,6 +7,7 @@
 #include "autorig/WrapInput.h"
 #include "base/DisjointSets.h"
 #include "base/Error.h"
+#include "mesh/MeshAdjacency.h"
 
 namespace rigmesh {
 
@@ -72,6 +73,16 @@ TriMesh largestPiece(const TriMesh& mesh, int& pieces) {
     return piece;
 }
 
+// `mesh`'s mean edge length over the diagonal of its vertices' bounding box
+// (0 for a mesh without faces or extent).
+double edgeFraction(const TriMesh& mesh) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : mesh.vertices)
+        box.extend(v);
+    const double diagonal = mesh.vertices.empty() ? 0.0 : box.diagonal().norm();
+    return mesh.faceCount() > 0 && diagonal > 0.0 ? meanEdgeLength(mesh) / diagonal : 0.0;
+}
+
 RigSurface fromRepair(RepairedMesh repaired, const WrapInput& input) {
     RigSurface surface;
     surface.kind = repaired.repairs.empty() ? RigSurface::Kind::Input : RigSurface::Kind::Repaired;
@@ -101,7 +112,8 @@ RigSurface rigSurfaceFor(const TriMesh& input, const RigSurfaceOptions& options,
         throw Error(MessageId::AutoRigTooFewFaces, input.faceCount());
 
     Message unfit;
-    if (input.vertexCount() <= options.directVertexLimit) {
+    const bool coarse = edgeFraction(input) > options.coarsestEdgeFraction;
+    if (input.vertexCount() <= options.directVertexLimit && !coarse) {
         if (input.faceCount() >= 4 && fitForRigging(input)) {
             RepairedMesh same;
             same.mesh = input;
@@ -138,6 +150,9 @@ RigSurface rigSurfaceFor(const TriMesh& input, const RigSurfaceOptions& options,
     if (input.vertexCount() > options.directVertexLimit)
         surface.notes.push_back(
             {MessageId::AutoRigLargeMesh, {messageArgument(input.vertexCount())}});
+    else if (coarse)
+        surface.notes.push_back(
+            {MessageId::AutoRigCoarseMesh, {shortNumber(100.0 * edgeFraction(input))}});
 
     ProxyWrapResult wrap = wrapIntoProxy(wrapInput.soup, options.wrap, progress);
     surface.alpha = wrap.alpha;

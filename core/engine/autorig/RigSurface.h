@@ -1,6 +1,6 @@
 // The surface a mesh's rig is computed on. The mesh itself when it is one
-// closed, manifold, self-intersection-free piece small enough for the
-// curve skeleton's flow (whose time grows with the vertex count: 0.7 s at
+// closed, manifold, self-intersection-free piece, fine enough and small
+// enough for the curve skeleton's flow (whose time grows with the vertex count: 0.7 s at
 // 4.5k, 2.6 s at 17.7k); its repair (seams joined, small holes filled) when
 // that makes it one; otherwise a proxy wrapped around all its pieces
 // (autorig/WrapInput, autorig/ProxyWrap). The skeleton and bone heat run on
@@ -22,6 +22,12 @@ struct RigSurfaceOptions {
     // Above this many vertices even a clean mesh is rigged on a proxy, so
     // the flow and the heat run on a bounded surface.
     int directVertexLimit = 6000;
+    // A mesh whose edges are on average longer than this fraction of its
+    // bounding-box diagonal (a box, a tetrahedron, a low-poly blob: fewer
+    // than ten edges across it) is too coarse for the flow, whose skeleton
+    // it contracts to a point or a stub, and for bone heat, which gets a
+    // value per corner: it is rigged on a proxy too.
+    double coarsestEdgeFraction = 0.1;
     MeshRepairOptions repair;
     ProxyWrapOptions wrap;
     // A mesh is refused when rigging it would need more memory than this

@@ -79,6 +79,11 @@ const char* autoRigMessageTemplate(MessageId id) {
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",
                 "the mesh has %1 vertices, too many to compute the skeleton on directly");
+        case MessageId::AutoRigCoarseMesh:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "the mesh's edges are long for its size (on average %1% of "
+                "its diagonal), too coarse to compute the skeleton on directly");
         case MessageId::AutoRigProxyWrapped:
             return RIGMESH_TRANSLATABLE(
                 "EngineMessage",

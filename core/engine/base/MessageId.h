@@ -169,6 +169,7 @@ enum class MessageId {
     AutoRigFaceOutOfRange,
     AutoRigOverMemoryBudget,
     AutoRigLargeMesh,
+    AutoRigCoarseMesh,
     AutoRigProxyWrapped,
     AutoRigProxyApart,
     AutoRigPiecesFollowBone,

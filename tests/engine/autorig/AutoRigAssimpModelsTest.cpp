@@ -158,5 +158,35 @@ INSTANTIATE_TEST_SUITE_P(MadeInBlender, AutoRigCharacter,
                              // arms, head and the trunk down to the open base
                              Character{kBlenderMeshes + "statue.obj", 4}));
 
+// Blobs of assimp-testmodels, no limbs at all, that the auto-rig refused
+// ("too small for a bone") before: a sphere the flow contracts to a stub
+// 8.7e-5 long, and meshes so coarse (a tetrahedron, an octahedron, boxes,
+// a 6-vertex sphere with a hole) that their only bone came out shorter than
+// half their mean edge. Each is rigged now: a chain along its main axis
+// where the flow gives a stub, on a proxy where the mesh is coarse, with
+// weights summing to 1 on every vertex and, where the mesh is one closed
+// piece, every bone inside it.
+TEST(AutoRigBlobs, EveryBlobIsRiggedWithBonesInsideNotRefused) {
+    struct Blob {
+        std::string file;
+        bool closed;  // one closed piece: bones are checked inside it
+    };
+    for (const Blob& blob :
+         {Blob{"AC/SphereWithLight.ac", true}, Blob{"AMF/test1.amf", true},
+          Blob{"NFF/NFF/octahedron.nff", true}, Blob{"BLEND/4Cubes4Mats_248.blend", false},
+          Blob{"STL/sphereWithHole.stl", false}}) {
+        const RiggedCharacter& character = rigged(blob.file);
+        const Part& part = character.rigged.part;
+        ASSERT_GE(part.skeleton.boneCount(), 1) << blob.file;
+        EXPECT_TRUE(part.skeleton.validate().empty()) << blob.file;
+        EXPECT_TRUE(part.validate().empty()) << blob.file;
+        if (blob.closed) {
+            EXPECT_EQ(autorigtest::bonePointsOutside(part), 0) << blob.file;
+        }
+        autorigtest::expectPositiveWeightsSummingToOne(part.weights.perVertex,
+                                                       character.imported.mesh.vertexCount());
+    }
+}
+
 }  // namespace
 }  // namespace rigmesh

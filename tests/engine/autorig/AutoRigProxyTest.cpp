@@ -105,6 +105,35 @@ TEST(AutoRigProxy, ABlobWithoutBranchesGetsOneChainAlongItsMainAxis) {
     EXPECT_GT(high - low, 2.2);  // along at least half of the 4.4-unit egg
 }
 
+// A closed box of 8 corners, 2 x 1 x 1, outward.
+TriMesh box() {
+    TriMesh mesh;
+    for (int i = 0; i < 8; ++i)
+        mesh.vertices.push_back(Vec3(i & 1 ? 2.0 : 0.0, i & 2 ? 1.0 : 0.0, i & 4 ? 1.0 : 0.0));
+    mesh.faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                  {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+    return mesh;
+}
+
+// Meshes so coarse that the flow contracts them to a point or a stub and
+// bone heat has a value per corner only (a box, a tetrahedron: edges longer
+// than a tenth of the diagonal) are rigged on a proxy, said so, and get
+// bones inside them, never a refusal.
+TEST(AutoRigProxy, ACoarseMeshIsRiggedOnAProxyWithBonesInsideAndSaid) {
+    for (const TriMesh& mesh : {box(), testshapes::tetrahedron()}) {
+        const AutoRigResult result = autoRigPart(unrigged(mesh));
+        EXPECT_EQ(result.surfaceKind, RigSurface::Kind::Proxy);
+        EXPECT_TRUE(said(result, MessageId::AutoRigCoarseMesh));
+        EXPECT_EQ(result.part.mesh.vertices, mesh.vertices);
+        const Skeleton& skeleton = result.part.skeleton;
+        ASSERT_GE(skeleton.boneCount(), 1);
+        EXPECT_TRUE(skeleton.validate().empty());
+        EXPECT_EQ(autorigtest::bonePointsOutside(result.part), 0);
+        autorigtest::expectPositiveWeightsSummingToOne(result.part.weights.perVertex,
+                                                       mesh.vertexCount());
+    }
+}
+
 TEST(AutoRigProxy, AMeshOverTheDirectLimitIsRiggedOnAProxyAndSaid) {
     const TriMesh mesh = makeCylinderTube(24, 24, 0.3, 2.0);
     AutoRigOptions options;
