@@ -211,8 +211,18 @@ double reachBeyond(const Graph& graph, const std::vector<int>& branch) {
 // tips. A branch that reaches farther than `keepReach` from its junction
 // stays whatever its length: it is a part of the body (a trunk's base, a
 // fist beside its thumb, a head), not flow noise, and without it those
-// vertices would be far from every bone.
+// vertices would be far from every bone. But not when it is one of two
+// twigs of the same junction whose tips' balls overlap: one fat end that
+// the flow split in two (a spider's head ending in its two fangs). The
+// other twig, reaching as far or farther, stays and ends the limb (its
+// junction becomes a plain node of its branch), its tip beside the pruned
+// one's, so those vertices keep a bone near them.
 void pruneTwigs(Graph& graph, const CurveRigOptions& options, double keepReach) {
+    struct Twig {
+        std::vector<int> branch;
+        double ratio = 0.0;
+        double reach = 0.0;
+    };
     while (true) {
         std::vector<int> tips;
         for (int n : graph.aliveNodes())
@@ -220,25 +230,46 @@ void pruneTwigs(Graph& graph, const CurveRigOptions& options, double keepReach) 
                 tips.push_back(n);
         if (tips.size() <= 2)
             return;
-        std::vector<int> worst;
-        double worstRatio = 1.0;
+        std::vector<Twig> twigs;
         for (int tip : tips) {
-            const std::vector<int> branch = walkBranch(graph, tip, *graph.neighbours[tip].begin());
+            std::vector<int> branch = walkBranch(graph, tip, *graph.neighbours[tip].begin());
             const int junction = branch.back();
             if (graph.degree(junction) < 3)
                 continue;
             const double limit = graph.radii[junction] + options.twigTipFactor * graph.radii[tip];
             const double ratio = limit > 0.0 ? branchLength(graph, branch) / limit : 1.0;
-            if (ratio < worstRatio && reachBeyond(graph, branch) <= keepReach) {
-                worstRatio = ratio;
-                worst = branch;
-            }
+            if (ratio < 1.0)
+                twigs.push_back({std::move(branch), ratio, 0.0});
         }
-        if (worst.empty())
+        for (Twig& twig : twigs)
+            twig.reach = reachBeyond(graph, twig.branch);
+        // Whether `twig` is the lesser half of a fat end split in two.
+        const auto splitHalf = [&](const Twig& twig) {
+            const int tip = twig.branch.front();
+            for (const Twig& other : twigs) {
+                const int otherTip = other.branch.front();
+                if (otherTip == tip || other.branch.back() != twig.branch.back())
+                    continue;
+                const bool overlap =
+                    graph.length(tip, otherTip) < graph.radii[tip] + graph.radii[otherTip];
+                const bool fartherOther =
+                    other.reach > twig.reach || (other.reach == twig.reach && otherTip < tip);
+                if (overlap && fartherOther)
+                    return true;
+            }
+            return false;
+        };
+        const Twig* worst = nullptr;
+        for (const Twig& twig : twigs)
+            if ((!worst || twig.ratio < worst->ratio) &&
+                (twig.reach <= keepReach || splitHalf(twig)))
+                worst = &twig;
+        if (!worst)
             return;
-        const int junction = worst.back();
-        worst.pop_back();  // the junction stays, and takes the twig's vertices
-        for (int n : worst) {
+        std::vector<int> branch = worst->branch;
+        const int junction = branch.back();
+        branch.pop_back();  // the junction stays, and takes the twig's vertices
+        for (int n : branch) {
             auto& into = graph.vertices[junction];
             into.insert(into.end(), graph.vertices[n].begin(), graph.vertices[n].end());
             graph.kill(n);

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <list>
 #include <numbers>
 #include <vector>
@@ -85,9 +86,19 @@ SurfaceProbe::SurfaceProbe(const TriMesh& surface, InsideBy rule)
         box.extend(v);
     tree_->size = box.isEmpty() ? 0.0 : box.diagonal().norm();
     tree_->epsilon = 1e-7 * (box.isEmpty() ? 1.0 : tree_->size);
-    for (const auto& [a, b, c] : surface.faces)
-        tree_->triangles.emplace_back(point(surface.vertices[a]), point(surface.vertices[b]),
-                                      point(surface.vertices[c]));
+    // A face without area (two corners at one place, as a file's split
+    // seams give: the same point under two vertex indices) is no wall: rays
+    // and distances skip it, as Blender's ray casts and
+    // tests/external/check_tails_inside_in_blender.py do. CGAL's ray
+    // intersection takes non-degenerate triangles only: one with two equal
+    // corners gave segment "hits" a ray never crosses, and so a wrong parity.
+    for (const auto& [a, b, c] : surface.faces) {
+        const Point pa = point(surface.vertices[a]);
+        const Point pb = point(surface.vertices[b]);
+        const Point pc = point(surface.vertices[c]);
+        if (!CGAL::collinear(pa, pb, pc))
+            tree_->triangles.emplace_back(pa, pb, pc);
+    }
     tree_->aabb.insert(tree_->triangles.begin(), tree_->triangles.end());
     tree_->aabb.accelerate_distance_queries();
 }
@@ -97,7 +108,7 @@ SurfaceProbe::~SurfaceProbe() = default;
 bool SurfaceProbe::inside(const Vec3& p) const {
     if (rule_ == InsideBy::WindingNumber)
         return windingNumber(mesh_, p) > 0.5;
-    if (mesh_.faces.empty())
+    if (tree_->triangles.empty())
         return false;
     const auto odd = std::count_if(kParityRays.begin(), kParityRays.end(),
                                    [&](const Vec3& ray) { return walls(p, ray).size() % 2 == 1; });
@@ -132,6 +143,8 @@ double SurfaceProbe::size() const {
 }
 
 double SurfaceProbe::distance(const Vec3& p) const {
+    if (tree_->triangles.empty())
+        return std::numeric_limits<double>::infinity();
     return std::sqrt(tree_->aabb.squared_distance(point(p)));
 }
 

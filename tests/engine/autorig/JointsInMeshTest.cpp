@@ -60,6 +60,29 @@ TEST(JointsInMesh, WallsAlongARayCountASeamOnce) {
     EXPECT_EQ(probe.walls(-2.0 * vertex, vertex).size(), 2u);
 }
 
+// A face without area (two corners at one point under two vertex indices,
+// as a file's split seams give) is no wall: Blender's ray casts and
+// check_tails_inside_in_blender.py pass it by. The spider's fang
+// (assimp-testmodels OBJ/spider.obj) has such faces at its tip; CGAL took
+// them for segment hits along rays that pass beside them, and a joint
+// outside the fang counted as inside.
+TEST(JointsInMesh, WallsAlongARaySkipAFaceWithoutArea) {
+    TriMesh mesh = moved(makeIcosphere(2, 1.0), Vec3(-60, 0, -18));  // a piece elsewhere
+    const Vec3 tip(-66.59116, -11.97653, -20.11215);
+    const int first = mesh.vertexCount();
+    mesh.vertices.push_back(tip);
+    mesh.vertices.push_back(Vec3(-67.36116, 2.86621, -14.54599));
+    mesh.vertices.push_back(tip);
+    mesh.faces.push_back({first, first + 1, first + 2});
+    const SurfaceProbe probe(mesh, InsideBy::RayParity);
+    const Vec3 beside(-67.530, -0.156, -18.856);  // 3.0 from that face's segment
+    for (const Vec3& ray :
+         {Vec3(0.267, 0.534, 0.802), Vec3(-0.7, 0.1, 0.3), Vec3(0.2, -0.9, -0.35)})
+        EXPECT_TRUE(probe.walls(beside, ray).empty()) << ray.transpose();
+    EXPECT_FALSE(probe.inside(beside));
+    EXPECT_NEAR(probe.distance(Vec3(-60, 0, -16)), 1.0, 0.05);  // the sphere still counts
+}
+
 TEST(JointsInMesh, JointsOfAThinLimbInAFatProxyMoveIntoTheLimbKeepingTheTree) {
     const TriMesh limb = makeCylinderTube(24, 24, 0.1, 2.0);  // z from -1 to 1
     const TriMesh proxy = makeCylinderTube(24, 24, 0.3, 2.4);
