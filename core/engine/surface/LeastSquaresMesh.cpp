@@ -11,18 +11,41 @@
 namespace rigmesh {
 namespace {
 
-std::vector<std::vector<int>> oneRings(const TriMesh& mesh) {
-    std::vector<std::vector<int>> ring(mesh.vertices.size());
+// The one-rings (sorted neighbour indices) of the vertices marked in
+// `wanted`, as offsets into one array: ring of v = neighbours[start[v] ..
+// start[v + 1]), empty for a vertex not wanted.
+struct OneRings {
+    std::vector<int> start, neighbours;
+    int size(int v) const { return start[v + 1] - start[v]; }
+};
+
+OneRings oneRings(const TriMesh& mesh, const std::vector<char>& wanted) {
+    const int n = mesh.vertexCount();
+    OneRings rings;
+    std::vector<int> capacity(n + 1, 0);
     for (const auto& f : mesh.faces)
-        for (int k = 0; k < 3; ++k) {
-            ring[f[k]].push_back(f[(k + 1) % 3]);
-            ring[f[k]].push_back(f[(k + 2) % 3]);
-        }
-    for (auto& neighbours : ring) {
-        std::sort(neighbours.begin(), neighbours.end());
-        neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+        for (int k = 0; k < 3; ++k)
+            if (wanted[f[k]])
+                capacity[f[k] + 1] += 2;
+    for (int v = 0; v < n; ++v)
+        capacity[v + 1] += capacity[v];
+    std::vector<int> all(capacity[n]);
+    std::vector<int> next(capacity.begin(), capacity.end() - 1);
+    for (const auto& f : mesh.faces)
+        for (int k = 0; k < 3; ++k)
+            if (wanted[f[k]]) {
+                all[next[f[k]]++] = f[(k + 1) % 3];
+                all[next[f[k]]++] = f[(k + 2) % 3];
+            }
+    rings.start.assign(n + 1, 0);
+    rings.neighbours.reserve(all.size());
+    for (int v = 0; v < n; ++v) {
+        const auto begin = all.begin() + capacity[v], end = all.begin() + capacity[v + 1];
+        std::sort(begin, end);
+        rings.neighbours.insert(rings.neighbours.end(), begin, std::unique(begin, end));
+        rings.start[v + 1] = static_cast<int>(rings.neighbours.size());
     }
-    return ring;
+    return rings;
 }
 
 // Solves (A^T A + diag(anchorSquared)) X = rhs with CHOLMOD.
@@ -125,7 +148,14 @@ std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double
 
     // Umbrella operator rows (L x)_i = x_i - mean of the one-ring, split into
     // the columns of unknown vertices (L_U) and the known part L_K x_K.
-    const auto ring = oneRings(mesh);
+    // Only rows with an unknown in them count: those of the vertices of
+    // faces with an unknown corner (any other row of L_U is empty, and
+    // L_K x_K there is never used).
+    std::vector<char> rowUsed(n, 0);
+    for (const auto& f : mesh.faces)
+        if (unknown[f[0]] >= 0 || unknown[f[1]] >= 0 || unknown[f[2]] >= 0)
+            rowUsed[f[0]] = rowUsed[f[1]] = rowUsed[f[2]] = 1;
+    const OneRings ring = oneRings(mesh, rowUsed);
     std::vector<Eigen::Triplet<double>> entries;
     Eigen::MatrixX3d knownPart = Eigen::MatrixX3d::Zero(n, 3);
     auto add = [&](int row, int column, double value) {
@@ -135,11 +165,12 @@ std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double
             knownPart.row(row) += value * mesh.vertices[column].transpose();
     };
     for (int i = 0; i < n; ++i) {
-        if (ring[i].empty())
+        const int size = ring.size(i);
+        if (size == 0)
             continue;
         add(i, i, 1.0);
-        for (int j : ring[i])
-            add(i, j, -1.0 / static_cast<double>(ring[i].size()));
+        for (int k = ring.start[i]; k < ring.start[i + 1]; ++k)
+            add(i, ring.neighbours[k], -1.0 / static_cast<double>(size));
     }
     Eigen::SparseMatrix<double> laplacian(n, unknowns);
     laplacian.setFromTriplets(entries.begin(), entries.end());
