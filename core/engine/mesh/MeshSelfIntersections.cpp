@@ -241,27 +241,94 @@ bool sweepOverlappingBoxes(const std::vector<CGAL::Bbox_3>& boxes, std::size_t b
         high[k] = box.max(axis);
         across[k] = {box.min(u), box.max(u), box.min(v), box.max(v)};
     }
-    // Box i meets, in the sweep axis, the later boxes up to the first that
-    // starts past its end (a binary search: the lower ends are sorted); the
-    // other two axes are then compared without a branch per axis (the
-    // comparisons were most of the self-intersection check's own time in
-    // perf).
-    std::size_t compared = 0;
-    for (int i = 0; i < count; ++i) {
-        const int end = static_cast<int>(std::upper_bound(low.begin() + i + 1, low.end(), high[i]) -
-                                         low.begin());
-        compared += static_cast<std::size_t>(end - i - 1);
-        if (compared > budget) {
-            overlapping.clear();
-            return false;
+    // The boxes also go into cells of a grid across the sweep axis (u, v),
+    // each box into every cell its u and v ranges reach; two boxes
+    // overlapping in u and v both reach the cell of the larger of their lower
+    // ends in each, and only there is the pair reported, so every pair comes
+    // once. A cell's boxes keep the sweep order, and box i meets, in the
+    // sweep axis, the cell's later boxes up to the first that starts past its
+    // end (a binary search: the lower ends are sorted); the other two axes
+    // are then compared without a branch per axis (the comparisons were most
+    // of the self-intersection check's own time in perf). Cells about
+    // kCellBoxes boxes wide: a slab across the sweep axis holds a whole
+    // cross-section of the surface, of which a cell holds a piece.
+    constexpr double kCellBoxes = 2.0;
+    constexpr int kMostCellsPerAxis = 64;
+    struct Grid {
+        double lowest = 0, perSpan = 0;
+        int cells = 1;
+        int of(double x) const {
+            return std::clamp(static_cast<int>((x - lowest) * perSpan), 0, cells - 1);
         }
-        const Across a = across[i];
-        const Across* const others = across.data();
-        for (int j = i + 1; j < end; ++j) {
-            const Across& b = others[j];
-            if ((b.lowU <= a.highU) & (a.lowU <= b.highU) & (b.lowV <= a.highV) &
-                (a.lowV <= b.highV))
-                overlapping.push_back({order[i], order[j]});
+    };
+    const auto gridFor = [&](double Across::*lowOf, double Across::*highOf) {
+        Grid grid;
+        double lowest = std::numeric_limits<double>::infinity(), highest = -lowest, width = 0;
+        for (const Across& a : across) {
+            lowest = std::min(lowest, a.*lowOf);
+            highest = std::max(highest, a.*lowOf);
+            width += a.*highOf - a.*lowOf;
+        }
+        width /= count;
+        const double span = highest - lowest;
+        if (width > 0 && span > 0) {
+            grid.cells = static_cast<int>(std::clamp(span / (kCellBoxes * width), 1.0,
+                                                     static_cast<double>(kMostCellsPerAxis)));
+            grid.lowest = lowest;
+            grid.perSpan = grid.cells / span;
+        }
+        return grid;
+    };
+    const Grid gridU = gridFor(&Across::lowU, &Across::highU);
+    const Grid gridV = gridFor(&Across::lowV, &Across::highV);
+    const int cells = gridU.cells * gridV.cells;
+    const auto forCells = [&](const Across& a, auto&& visit) {
+        const int lastU = gridU.of(a.highU), firstV = gridV.of(a.lowV), lastV = gridV.of(a.highV);
+        for (int cu = gridU.of(a.lowU); cu <= lastU; ++cu)
+            for (int cv = firstV; cv <= lastV; ++cv)
+                visit(cu * gridV.cells + cv);
+    };
+    std::vector<int> cellStart(cells + 1, 0);
+    for (int k = 0; k < count; ++k)
+        forCells(across[k], [&](int cell) { ++cellStart[cell + 1]; });
+    for (int cell = 0; cell < cells; ++cell)
+        cellStart[cell + 1] += cellStart[cell];
+    std::vector<int> member(cellStart[cells]);
+    {
+        std::vector<int> next(cellStart.begin(), cellStart.end() - 1);
+        for (int k = 0; k < count; ++k)
+            forCells(across[k], [&](int cell) { member[next[cell]++] = k; });
+    }
+    std::vector<double> memberLow(member.size());
+    std::vector<Across> memberAcross(member.size());
+    for (std::size_t m = 0; m < member.size(); ++m) {
+        memberLow[m] = low[member[m]];
+        memberAcross[m] = across[member[m]];
+    }
+    std::size_t compared = 0;
+    for (int cell = 0; cell < cells; ++cell) {
+        const int first = cellStart[cell], stop = cellStart[cell + 1];
+        const int cellU = cell / gridV.cells, cellV = cell % gridV.cells;
+        for (int i = first; i < stop; ++i) {
+            const double highI = high[member[i]];
+            const int end = static_cast<int>(
+                std::upper_bound(memberLow.begin() + i + 1, memberLow.begin() + stop, highI) -
+                memberLow.begin());
+            compared += static_cast<std::size_t>(end - i - 1);
+            if (compared > budget) {
+                overlapping.clear();
+                return false;
+            }
+            const Across a = memberAcross[i];
+            const Across* const others = memberAcross.data();
+            for (int j = i + 1; j < end; ++j) {
+                const Across& b = others[j];
+                if ((b.lowU <= a.highU) & (a.lowU <= b.highU) & (b.lowV <= a.highV) &
+                        (a.lowV <= b.highV) &&
+                    (cells == 1 || (gridU.of(std::max(a.lowU, b.lowU)) == cellU &&
+                                    gridV.of(std::max(a.lowV, b.lowV)) == cellV)))
+                    overlapping.push_back({order[member[i]], order[member[j]]});
+            }
         }
     }
     return true;
