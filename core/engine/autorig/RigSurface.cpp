@@ -8,6 +8,7 @@
 #include "base/DisjointSets.h"
 #include "base/Error.h"
 #include "mesh/MeshAdjacency.h"
+#include "mesh/MeshChecks.h"
 
 namespace rigmesh {
 
@@ -76,10 +77,7 @@ TriMesh largestPiece(const TriMesh& mesh, int& pieces) {
 // `mesh`'s mean edge length over the diagonal of its vertices' bounding box
 // (0 for a mesh without faces or extent).
 double edgeFraction(const TriMesh& mesh) {
-    Eigen::AlignedBox3d box;
-    for (const Vec3& v : mesh.vertices)
-        box.extend(v);
-    const double diagonal = mesh.vertices.empty() ? 0.0 : box.diagonal().norm();
+    const double diagonal = mesh.vertices.empty() ? 0.0 : boundingBox(mesh).diagonal().norm();
     return mesh.faceCount() > 0 && diagonal > 0.0 ? meanEdgeLength(mesh) / diagonal : 0.0;
 }
 
@@ -112,7 +110,8 @@ RigSurface rigSurfaceFor(const TriMesh& input, const RigSurfaceOptions& options,
         throw Error(MessageId::AutoRigTooFewFaces, input.faceCount());
 
     Message unfit;
-    const bool coarse = edgeFraction(input) > options.coarsestEdgeFraction;
+    const double edges = edgeFraction(input);
+    const bool coarse = edges > options.coarsestEdgeFraction;
     if (input.vertexCount() <= options.directVertexLimit && !coarse) {
         if (input.faceCount() >= 4 && fitForRigging(input)) {
             RepairedMesh same;
@@ -151,8 +150,7 @@ RigSurface rigSurfaceFor(const TriMesh& input, const RigSurfaceOptions& options,
         surface.notes.push_back(
             {MessageId::AutoRigLargeMesh, {messageArgument(input.vertexCount())}});
     else if (coarse)
-        surface.notes.push_back(
-            {MessageId::AutoRigCoarseMesh, {shortNumber(100.0 * edgeFraction(input))}});
+        surface.notes.push_back({MessageId::AutoRigCoarseMesh, {shortNumber(100.0 * edges)}});
 
     ProxyWrapResult wrap = wrapIntoProxy(wrapInput.soup, options.wrap, progress);
     surface.alpha = wrap.alpha;
