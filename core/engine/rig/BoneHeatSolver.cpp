@@ -172,17 +172,31 @@ void BoneHeatSolver::Impl::findClosestBones(const TriMesh& mesh, const ClosestBo
     }
 }
 
+// The matrix L + A H (upper triangle) written straight into compressed
+// columns. Its entries, in the order they are added: per usable face and
+// corner i the opposite edge (j, k) gets -cot/2 and j, k +cot/2 each, then
+// the uniform weights of the orphans' edges, then each vertex's heat. Each
+// entry is the sum of its terms in that order, the first term taken as it is,
+// which is what Eigen's setFromTriplets on those terms gave (it sums a row's
+// duplicates in insertion order), so the matrix is the same bit for bit;
+// the triplets (about 6 per face) and setFromTriplets' transposed copy were
+// most of this step's time and its page faults in perf.
 void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
     const int n = vertexCount();
+    const int faceTotal = mesh.faceCount();
     Eigen::VectorXd area = Eigen::VectorXd::Zero(n);
     // Per vertex: how many usable triangles it has, and the uniform weights
     // of the edges of its unusable ones (used only if it has no other).
     std::vector<int> goodFaces(n, 0);
     std::vector<char> inAnyFace(n, 0);
-    std::vector<Eigen::Triplet<double>> triplets;
-    triplets.reserve(mesh.faces.size() * 6 + n);
+    // Per usable face its corners' cot/2.
+    std::vector<char> usable(faceTotal, 0);
+    std::vector<double> halfCots(3 * static_cast<std::size_t>(faceTotal));
     std::vector<std::array<int, 3>> degenerate;
-    for (const auto& face : mesh.faces) {
+    // Off-diagonal entries per column (the larger vertex), with repeats.
+    std::vector<int> columnStart(static_cast<std::size_t>(n) + 1, 0);
+    for (int f = 0; f < faceTotal; ++f) {
+        const auto& face = mesh.faces[f];
         for (int corner : face) {
             inAnyFace[corner] = 1;
         }
@@ -191,6 +205,7 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
             degenerate.push_back(face);
             continue;
         }
+        usable[f] = 1;
         for (int c = 0; c < 3; ++c) {
             const int i = face[c];
             const int j = face[(c + 1) % 3];
@@ -200,15 +215,14 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
             // The corner at i weighs the opposite edge (j, k) by cot/2.
             const Vec3 e1 = positions[j] - positions[i];
             const Vec3 e2 = positions[k] - positions[i];
-            const double halfCot = 0.5 * e1.dot(e2) / doubleArea;
-            triplets.emplace_back(std::min(j, k), std::max(j, k), -halfCot);
-            triplets.emplace_back(j, j, halfCot);
-            triplets.emplace_back(k, k, halfCot);
+            halfCots[3 * f + c] = 0.5 * e1.dot(e2) / doubleArea;
+            ++columnStart[std::max(j, k) + 1];
         }
     }
     // A vertex whose every triangle is degenerate (a junction patch can emit
     // such slivers) has no area and no angles: it takes the mean of its
     // neighbours (uniform weights on its edges) instead of being pinned.
+    std::vector<std::array<int, 2>> orphanEdges;
     std::vector<double> orphanDegree(n, 0.0);
     for (const auto& face : degenerate) {
         for (int c = 0; c < 3; ++c) {
@@ -217,9 +231,8 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
             if (a == b || (goodFaces[a] > 0 && goodFaces[b] > 0)) {
                 continue;
             }
-            triplets.emplace_back(std::min(a, b), std::max(a, b), -1.0);
-            triplets.emplace_back(a, a, 1.0);
-            triplets.emplace_back(b, b, 1.0);
+            orphanEdges.push_back({a, b});
+            ++columnStart[std::max(a, b) + 1];
             orphanDegree[a] += 1.0;
             orphanDegree[b] += 1.0;
         }
@@ -240,11 +253,89 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
             }
             heat[v] = heatTerm(area[v], d, options);
         }
-        triplets.emplace_back(v, v, heat[v]);
     }
+
+    // The pattern: each column's rows (the smaller vertices) sorted and
+    // unique, then the diagonal, the column's last row.
+    for (int v = 0; v < n; ++v) {
+        columnStart[v + 1] += columnStart[v];
+    }
+    std::vector<int> rows(columnStart[n]);
+    {
+        std::vector<int> next(columnStart.begin(), columnStart.end() - 1);
+        const auto place = [&](int a, int b) { rows[next[std::max(a, b)]++] = std::min(a, b); };
+        for (int f = 0; f < faceTotal; ++f) {
+            if (!usable[f]) {
+                continue;
+            }
+            const auto& face = mesh.faces[f];
+            for (int c = 0; c < 3; ++c) {
+                place(face[(c + 1) % 3], face[(c + 2) % 3]);
+            }
+        }
+        for (const auto& [a, b] : orphanEdges) {
+            place(a, b);
+        }
+    }
+    std::vector<int> start(static_cast<std::size_t>(n) + 1, 0);  // compressed
+    int entries = 0;
+    for (int v = 0; v < n; ++v) {
+        const auto first = rows.begin() + columnStart[v];
+        const auto last = rows.begin() + columnStart[v + 1];
+        std::sort(first, last);
+        const int unique = static_cast<int>(std::unique(first, last) - first);
+        start[v] = entries;
+        entries += unique + 1;
+    }
+    start[n] = entries;
     matrix.resize(n, n);
-    matrix.setFromTriplets(triplets.begin(), triplets.end());
-    matrix.makeCompressed();
+    matrix.resizeNonZeros(entries);
+    int* const inner = matrix.innerIndexPtr();
+    double* const value = matrix.valuePtr();
+    std::copy(start.begin(), start.end(), matrix.outerIndexPtr());
+    for (int v = 0; v < n; ++v) {
+        const int unique = start[v + 1] - start[v] - 1;
+        std::copy(rows.begin() + columnStart[v], rows.begin() + columnStart[v] + unique,
+                  inner + start[v]);
+        inner[start[v + 1] - 1] = v;
+    }
+    // The values, in the order the terms are added.
+    std::vector<char> written(entries, 0);
+    const auto add = [&](int slot, double term) {
+        value[slot] = written[slot] ? value[slot] + term : term;
+        written[slot] = 1;
+    };
+    const auto offDiagonal = [&](int a, int b) {
+        const int column = std::max(a, b), row = std::min(a, b);
+        int slot = start[column];
+        while (inner[slot] != row) {
+            ++slot;
+        }
+        return slot;
+    };
+    const auto diagonal = [&](int v) { return start[v + 1] - 1; };
+    for (int f = 0; f < faceTotal; ++f) {
+        if (!usable[f]) {
+            continue;
+        }
+        const auto& face = mesh.faces[f];
+        for (int c = 0; c < 3; ++c) {
+            const int j = face[(c + 1) % 3];
+            const int k = face[(c + 2) % 3];
+            const double halfCot = halfCots[3 * f + c];
+            add(offDiagonal(j, k), -halfCot);
+            add(diagonal(j), halfCot);
+            add(diagonal(k), halfCot);
+        }
+    }
+    for (const auto& [a, b] : orphanEdges) {
+        add(offDiagonal(a, b), -1.0);
+        add(diagonal(a), 1.0);
+        add(diagonal(b), 1.0);
+    }
+    for (int v = 0; v < n; ++v) {
+        add(diagonal(v), heat[v]);
+    }
 }
 
 void BoneHeatSolver::Impl::useMirror(const TriMesh& mesh, const std::vector<int>& mirror) {
