@@ -212,13 +212,39 @@ std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double
         if (unknown[f[0]] >= 0 || unknown[f[1]] >= 0 || unknown[f[2]] >= 0)
             rowUsed[f[0]] = rowUsed[f[1]] = rowUsed[f[2]] = 1;
     const OneRings ring = oneRings(mesh, rowUsed);
-    std::vector<Eigen::Triplet<double>> entries;
+    // L_U written straight into compressed columns: the rows are visited in
+    // order, so each column's rows come sorted; a row meeting a column twice
+    // (a face with a repeated corner puts the vertex in its own ring) sums
+    // its entries in the order setFromTriplets did, so L_U is what it was
+    // bit for bit without the triplets and their transposed copy.
+    std::vector<int> columnStart(static_cast<std::size_t>(unknowns) + 1, 0);
+    for (int i = 0; i < n; ++i) {
+        if (ring.size(i) == 0)
+            continue;
+        if (unknown[i] >= 0)
+            ++columnStart[unknown[i] + 1];
+        for (int k = ring.start[i]; k < ring.start[i + 1]; ++k)
+            if (unknown[ring.neighbours[k]] >= 0)
+                ++columnStart[unknown[ring.neighbours[k]] + 1];
+    }
+    for (int u = 0; u < unknowns; ++u)
+        columnStart[u + 1] += columnStart[u];
+    std::vector<int> rows(columnStart[unknowns]);
+    std::vector<double> values(rows.size());
+    std::vector<int> next(columnStart.begin(), columnStart.end() - 1);
+    bool repeated = false;
     Eigen::MatrixX3d knownPart = Eigen::MatrixX3d::Zero(n, 3);
     auto add = [&](int row, int column, double value) {
-        if (unknown[column] >= 0)
-            entries.emplace_back(row, unknown[column], value);
-        else
+        const int u = unknown[column];
+        if (u < 0) {
             knownPart.row(row) += value * mesh.vertices[column].transpose();
+        } else if (next[u] > columnStart[u] && rows[next[u] - 1] == row) {
+            values[next[u] - 1] += value;
+            repeated = true;
+        } else {
+            rows[next[u]] = row;
+            values[next[u]++] = value;
+        }
     };
     for (int i = 0; i < n; ++i) {
         const int size = ring.size(i);
@@ -228,8 +254,23 @@ std::vector<Vec3> leastSquaresMesh(const TriMesh& mesh, const std::vector<double
         for (int k = ring.start[i]; k < ring.start[i + 1]; ++k)
             add(i, ring.neighbours[k], -1.0 / static_cast<double>(size));
     }
+    if (repeated) {  // close the gaps the sums left
+        int written = 0;
+        for (int u = 0; u < unknowns; ++u) {
+            const int from = columnStart[u], to = next[u];
+            columnStart[u] = written;
+            for (int k = from; k < to; ++k, ++written) {
+                rows[written] = rows[k];
+                values[written] = values[k];
+            }
+        }
+        columnStart[unknowns] = written;
+    }
     Eigen::SparseMatrix<double> laplacian(n, unknowns);
-    laplacian.setFromTriplets(entries.begin(), entries.end());
+    laplacian.resizeNonZeros(columnStart[unknowns]);
+    std::copy(columnStart.begin(), columnStart.end(), laplacian.outerIndexPtr());
+    std::copy(rows.begin(), rows.begin() + columnStart[unknowns], laplacian.innerIndexPtr());
+    std::copy(values.begin(), values.begin() + columnStart[unknowns], laplacian.valuePtr());
 
     Eigen::MatrixX3d rhs = -(laplacian.transpose() * knownPart);
     Eigen::VectorXd anchorSquared = Eigen::VectorXd::Zero(unknowns);
