@@ -32,10 +32,13 @@ class VertexTree {
     };
 
     int build(int begin, int end);
-    void search(int index, const Vec3& p, int& best, double& bestDistance) const;
+    // `boxDistance`: the squared distance from p to the node's box.
+    void search(int index, double boxDistance, const Vec3& p, int& best,
+                double& bestDistance) const;
 
     const std::vector<Vec3>& points_;
     std::vector<int> order_;
+    std::vector<Vec3> sorted_;  // points_[order_[i]], side by side in the leaves
     std::vector<Node> nodes_;
 };
 
