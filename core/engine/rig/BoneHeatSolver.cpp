@@ -54,6 +54,55 @@ class SolveWorkspace {
     cholmod_dense* e = nullptr;
 };
 
+// The upper triangle of an n x n matrix from terms (row, column, value),
+// row <= column, that terms(add) passes to add in the same order on every
+// call. Each entry is the sum of its terms in that order, the first taken as
+// it is: Eigen's setFromTriplets on the same terms sums a row's duplicates in
+// insertion order, so the matrix is the same bit for bit, written straight
+// into compressed columns (rows sorted) without the triplets (16 bytes
+// each, about 6 per face) and setFromTriplets' transposed copy, which were
+// most of the assembly's time and its page faults in perf.
+template <typename Terms>
+void upperFromTerms(int n, const Terms& terms, Eigen::SparseMatrix<double>& matrix) {
+    std::vector<int> columnStart(static_cast<std::size_t>(n) + 1, 0);
+    terms([&](int, int column, double) { ++columnStart[column + 1]; });
+    for (int v = 0; v < n; ++v) {
+        columnStart[v + 1] += columnStart[v];
+    }
+    std::vector<int> rows(columnStart[n]);
+    {
+        std::vector<int> next(columnStart.begin(), columnStart.end() - 1);
+        terms([&](int row, int column, double) { rows[next[column]++] = row; });
+    }
+    matrix.resize(n, n);
+    int* const start = matrix.outerIndexPtr();
+    int entries = 0;
+    for (int v = 0; v < n; ++v) {
+        const auto first = rows.begin() + columnStart[v];
+        const auto last = rows.begin() + columnStart[v + 1];
+        std::sort(first, last);
+        start[v] = entries;
+        entries += static_cast<int>(std::unique(first, last) - first);
+    }
+    start[n] = entries;
+    matrix.resizeNonZeros(entries);
+    int* const inner = matrix.innerIndexPtr();
+    for (int v = 0; v < n; ++v) {
+        std::copy(rows.begin() + columnStart[v],
+                  rows.begin() + columnStart[v] + (start[v + 1] - start[v]), inner + start[v]);
+    }
+    double* const value = matrix.valuePtr();
+    std::vector<char> written(entries, 0);
+    terms([&](int row, int column, double term) {
+        int slot = start[column];
+        while (inner[slot] != row) {
+            ++slot;
+        }
+        value[slot] = written[slot] ? value[slot] + term : term;
+        written[slot] = 1;
+    });
+}
+
 void validateInput(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
                    const ClosestBones& closestBones, const BoneHeatOptions& options) {
     if (bones.empty()) {
@@ -172,15 +221,6 @@ void BoneHeatSolver::Impl::findClosestBones(const TriMesh& mesh, const ClosestBo
     }
 }
 
-// The matrix L + A H (upper triangle) written straight into compressed
-// columns. Its entries, in the order they are added: per usable face and
-// corner i the opposite edge (j, k) gets -cot/2 and j, k +cot/2 each, then
-// the uniform weights of the orphans' edges, then each vertex's heat. Each
-// entry is the sum of its terms in that order, the first term taken as it is,
-// which is what Eigen's setFromTriplets on those terms gave (it sums a row's
-// duplicates in insertion order), so the matrix is the same bit for bit;
-// the triplets (about 6 per face) and setFromTriplets' transposed copy were
-// most of this step's time and its page faults in perf.
 void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
     const int n = vertexCount();
     const int faceTotal = mesh.faceCount();
@@ -193,8 +233,6 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
     std::vector<char> usable(faceTotal, 0);
     std::vector<double> halfCots(3 * static_cast<std::size_t>(faceTotal));
     std::vector<std::array<int, 3>> degenerate;
-    // Off-diagonal entries per column (the larger vertex), with repeats.
-    std::vector<int> columnStart(static_cast<std::size_t>(n) + 1, 0);
     for (int f = 0; f < faceTotal; ++f) {
         const auto& face = mesh.faces[f];
         for (int corner : face) {
@@ -216,7 +254,6 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
             const Vec3 e1 = positions[j] - positions[i];
             const Vec3 e2 = positions[k] - positions[i];
             halfCots[3 * f + c] = 0.5 * e1.dot(e2) / doubleArea;
-            ++columnStart[std::max(j, k) + 1];
         }
     }
     // A vertex whose every triangle is degenerate (a junction patch can emit
@@ -232,7 +269,6 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
                 continue;
             }
             orphanEdges.push_back({a, b});
-            ++columnStart[std::max(a, b) + 1];
             orphanDegree[a] += 1.0;
             orphanDegree[b] += 1.0;
         }
@@ -255,87 +291,36 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
         }
     }
 
-    // The pattern: each column's rows (the smaller vertices) sorted and
-    // unique, then the diagonal, the column's last row.
-    for (int v = 0; v < n; ++v) {
-        columnStart[v + 1] += columnStart[v];
-    }
-    std::vector<int> rows(columnStart[n]);
-    {
-        std::vector<int> next(columnStart.begin(), columnStart.end() - 1);
-        const auto place = [&](int a, int b) { rows[next[std::max(a, b)]++] = std::min(a, b); };
-        for (int f = 0; f < faceTotal; ++f) {
-            if (!usable[f]) {
-                continue;
+    // L + A H in the order its terms were added as triplets: per usable
+    // face and corner i the opposite edge (j, k) -cot/2 and j, k +cot/2 each,
+    // then the orphans' edges, then each vertex's heat.
+    upperFromTerms(
+        n,
+        [&](auto&& add) {
+            for (int f = 0; f < faceTotal; ++f) {
+                if (!usable[f]) {
+                    continue;
+                }
+                const auto& face = mesh.faces[f];
+                for (int c = 0; c < 3; ++c) {
+                    const int j = face[(c + 1) % 3];
+                    const int k = face[(c + 2) % 3];
+                    const double halfCot = halfCots[3 * f + c];
+                    add(std::min(j, k), std::max(j, k), -halfCot);
+                    add(j, j, halfCot);
+                    add(k, k, halfCot);
+                }
             }
-            const auto& face = mesh.faces[f];
-            for (int c = 0; c < 3; ++c) {
-                place(face[(c + 1) % 3], face[(c + 2) % 3]);
+            for (const auto& [a, b] : orphanEdges) {
+                add(std::min(a, b), std::max(a, b), -1.0);
+                add(a, a, 1.0);
+                add(b, b, 1.0);
             }
-        }
-        for (const auto& [a, b] : orphanEdges) {
-            place(a, b);
-        }
-    }
-    std::vector<int> start(static_cast<std::size_t>(n) + 1, 0);  // compressed
-    int entries = 0;
-    for (int v = 0; v < n; ++v) {
-        const auto first = rows.begin() + columnStart[v];
-        const auto last = rows.begin() + columnStart[v + 1];
-        std::sort(first, last);
-        const int unique = static_cast<int>(std::unique(first, last) - first);
-        start[v] = entries;
-        entries += unique + 1;
-    }
-    start[n] = entries;
-    matrix.resize(n, n);
-    matrix.resizeNonZeros(entries);
-    int* const inner = matrix.innerIndexPtr();
-    double* const value = matrix.valuePtr();
-    std::copy(start.begin(), start.end(), matrix.outerIndexPtr());
-    for (int v = 0; v < n; ++v) {
-        const int unique = start[v + 1] - start[v] - 1;
-        std::copy(rows.begin() + columnStart[v], rows.begin() + columnStart[v] + unique,
-                  inner + start[v]);
-        inner[start[v + 1] - 1] = v;
-    }
-    // The values, in the order the terms are added.
-    std::vector<char> written(entries, 0);
-    const auto add = [&](int slot, double term) {
-        value[slot] = written[slot] ? value[slot] + term : term;
-        written[slot] = 1;
-    };
-    const auto offDiagonal = [&](int a, int b) {
-        const int column = std::max(a, b), row = std::min(a, b);
-        int slot = start[column];
-        while (inner[slot] != row) {
-            ++slot;
-        }
-        return slot;
-    };
-    const auto diagonal = [&](int v) { return start[v + 1] - 1; };
-    for (int f = 0; f < faceTotal; ++f) {
-        if (!usable[f]) {
-            continue;
-        }
-        const auto& face = mesh.faces[f];
-        for (int c = 0; c < 3; ++c) {
-            const int j = face[(c + 1) % 3];
-            const int k = face[(c + 2) % 3];
-            const double halfCot = halfCots[3 * f + c];
-            add(offDiagonal(j, k), -halfCot);
-            add(diagonal(j), halfCot);
-            add(diagonal(k), halfCot);
-        }
-    }
-    for (const auto& [a, b] : orphanEdges) {
-        add(offDiagonal(a, b), -1.0);
-        add(diagonal(a), 1.0);
-        add(diagonal(b), 1.0);
-    }
-    for (int v = 0; v < n; ++v) {
-        add(diagonal(v), heat[v]);
-    }
+            for (int v = 0; v < n; ++v) {
+                add(v, v, heat[v]);
+            }
+        },
+        matrix);
 }
 
 void BoneHeatSolver::Impl::useMirror(const TriMesh& mesh, const std::vector<int>& mirror) {
@@ -357,19 +342,21 @@ void BoneHeatSolver::Impl::useMirror(const TriMesh& mesh, const std::vector<int>
 // full matrix adds to (orbit i, orbit j); an off-diagonal entry joining a
 // vertex to its own image adds twice (as (i, j) and (j, i)) to the diagonal.
 void BoneHeatSolver::Impl::reduce() {
-    std::vector<Eigen::Triplet<double>> triplets;
-    triplets.reserve(matrix.nonZeros());
-    for (int column = 0; column < matrix.outerSize(); ++column)
-        for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, column); it; ++it) {
-            const int a = orbit[it.row()], b = orbit[it.col()];
-            if (a == b && it.row() != it.col())
-                triplets.emplace_back(a, a, 2.0 * it.value());
-            else
-                triplets.emplace_back(std::min(a, b), std::max(a, b), it.value());
-        }
-    reducedMatrix.resize(orbitCount, orbitCount);
-    reducedMatrix.setFromTriplets(triplets.begin(), triplets.end());
-    reducedMatrix.makeCompressed();
+    upperFromTerms(
+        orbitCount,
+        [&](auto&& add) {
+            for (int column = 0; column < matrix.outerSize(); ++column) {
+                for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, column); it; ++it) {
+                    const int a = orbit[it.row()], b = orbit[it.col()];
+                    if (a == b && it.row() != it.col()) {
+                        add(a, a, 2.0 * it.value());
+                    } else {
+                        add(std::min(a, b), std::max(a, b), it.value());
+                    }
+                }
+            }
+        },
+        reducedMatrix);
 }
 
 void BoneHeatSolver::Impl::factorize() {
