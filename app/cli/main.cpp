@@ -10,6 +10,7 @@
 #include "ImportCommand.h"
 #include "RigCommand.h"
 #include "RunCommand.h"
+#include "base/AllocatorTuning.h"
 #include "model/ModelInfo.h"
 
 namespace {
@@ -118,6 +119,7 @@ std::string commandUsage(const std::string& command) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    rigmesh::tuneAllocatorForEditing();
     std::vector<std::string> arguments(argv + 1, argv + argc);
     if (arguments.empty() || arguments[0] == "--help" || arguments[0] == "-h" ||
         arguments[0] == "help") {

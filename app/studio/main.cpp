@@ -14,6 +14,7 @@
 #include "ExampleDocument.h"
 #include "MainWindow.h"
 #include "UserAction.h"
+#include "base/AllocatorTuning.h"
 #include "controllers/FilesController.h"
 #include "jobs/JobRunner.h"
 #include "preferences/StudioPreferences.h"
@@ -21,6 +22,7 @@
 #include "viewport/Viewport.h"
 
 int main(int argc, char** argv) {
+    rigmesh::tuneAllocatorForEditing();
     // Every GL widget gets a 3.3 core context (Mesa llvmpipe provides 4.5).
     QSurfaceFormat::setDefaultFormat(rigmesh::widgets::Viewport::requiredFormat());
 

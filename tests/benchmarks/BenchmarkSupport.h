@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "base/AllocatorTuning.h"
 #include "pipeline/SketchToSurface.h"
 #include "sketch/Sketch.h"
 
@@ -60,9 +61,11 @@ inline SketchToSurfaceOptions optionsForVertexCount(const std::vector<Vec2>& str
     return options;
 }
 
-// The main() of every benchmark program: register (after Google Benchmark
-// has read its flags), then run what the filter selects.
+// The main() of every benchmark program: malloc as the studio sets it
+// (base/AllocatorTuning.h), register (after Google Benchmark has read its
+// flags), then run what the filter selects.
 inline int runBenchmarks(int argc, char** argv, void (*registerBenchmarks)()) {
+    tuneAllocatorForEditing();
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
         return 1;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <map>
 
+#include "base/AllocatorTuning.h"
 #include "mesh/MeshPrimitives.h"
 #include "pose/ForwardKinematics.h"
 #include "pose/InverseKinematics.h"
@@ -202,4 +203,14 @@ BENCHMARK(ikDragStep)
 }  // namespace
 }  // namespace rigmesh
 
-BENCHMARK_MAIN();
+// malloc as the studio sets it (base/AllocatorTuning.h), then Google
+// Benchmark's own main.
+int main(int argc, char** argv) {
+    rigmesh::tuneAllocatorForEditing();
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
