@@ -87,7 +87,8 @@ def draw(data, png):
                f'{len(data["bones"])} bones, {leaves} leaves (green)</text></svg>')
     with tempfile.NamedTemporaryFile("w", suffix=".svg", delete=False) as f:
         f.write("\n".join(svg))
-    subprocess.run(["convert", f.name, png], check=True)
+    # No date or time chunks: a render of the same rig is the same file.
+    subprocess.run(["convert", f.name, "-define", "png:exclude-chunks=date,time", png], check=True)
     os.unlink(f.name)
 
 

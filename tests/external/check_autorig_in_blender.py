@@ -8,7 +8,8 @@ what an artist sees after a default import of the rigged file.
 - every vertex weighted, its weights summing to 1;
 - turning a leaf bone 45 degrees in pose mode moves its limb and leaves the
   rest where it was: at most MOVED_SHARE of the vertices move, and none of
-  the vertices nearest another leaf bone's tail.
+  the vertices nearest another leaf bone's tail (ten of them, of the piece
+  the nearest one belongs to, nearer to that tail than to any other).
 
 usage: blender -b --factory-startup --python-exit-code 1 \
            --python check_autorig_in_blender.py -- RIGGED.(glb|fbx|dae) LEAVES [PROXY]
@@ -79,10 +80,51 @@ tree = kdtree.KDTree(len(rest))
 for i, p in enumerate(rest):
     tree.insert(p, i)
 tree.balance()
-# The vertices nearest each leaf's tail: the tips of the limbs.
-tips = {b.name: [i for _, i, _ in tree.find_n(rig.matrix_world @ b.tail_local, 10)]
-        for b in leaf_bones}
 size = max((a - b).length for a in rest[:200] for b in rest[:200])
+
+
+def pieces():
+    """Each vertex's piece: connected by edges, over vertices at one place
+    (a file's split seams)."""
+    piece = list(range(len(rest)))
+
+    def find(i):
+        while piece[i] != i:
+            piece[i] = piece[piece[i]]
+            i = piece[i]
+        return i
+
+    def join(a, b):
+        piece[find(a)] = find(b)
+
+    for edge in mesh.data.edges:
+        join(*edge.vertices)
+    for i, p in enumerate(rest):
+        for _, j, _ in tree.find_range(p, 1e-6 * size):
+            join(i, j)
+    return [find(i) for i in range(len(rest))]
+
+
+piece_of = pieces()
+tails = {b.name: rig.matrix_world @ b.tail_local for b in leaf_bones}
+
+
+def nearest_tail(i):
+    return min(tails, key=lambda name: (rest[i] - tails[name]).length)
+
+
+# The tip of each limb: the vertices nearest its leaf's tail, ten of them, of
+# the piece the nearest one belongs to, and each nearer to that tail than to
+# any other leaf's. A limb modelled as a piece of fewer vertices (the
+# faerie's wings are sheets of eight) is its tip whole, and the next
+# vertices nearest its tail belong to another limb; where two tails are
+# close (feet side by side) a vertex among both's ten nearest is the tip of
+# the nearer one only.
+tips = {}
+for b in leaf_bones:
+    nearest = tree.find_n(tails[b.name], 10)
+    tips[b.name] = [i for _, i, _ in nearest
+                    if piece_of[i] == piece_of[nearest[0][1]] and nearest_tail(i) == b.name]
 for bone in leaf_bones:
     pose_bone = rig.pose.bones[bone.name]
     pose_bone.rotation_mode = "XYZ"

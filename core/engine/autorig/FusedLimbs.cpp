@@ -27,7 +27,10 @@ constexpr int kFewestSplitStations = 4;
 // Two limbs fused along most of their length part within the first
 // quarter of the chain (legs from the hips). A chain that parts lower down
 // is one limb the proxy joined to the end of another (a shin to the other
-// shin, whose thigh has a chain of its own): not taken apart here.
+// shin, whose thigh has a chain of its own, cut at the knee where the
+// curve skeleton's loop thigh, shins, thigh was cut: SkeletonFromCurve's
+// spanningTree): the other limb's part continues that chain's leaf when
+// one ends near where it parts, else the chain stays as it is.
 constexpr int kHighestTop = kStations / 4;
 // Both limbs reach the tip: two outlines among this many stations nearest it.
 constexpr int kTipStations = 3;
@@ -97,6 +100,7 @@ Vec3 interpolate(const std::vector<double>& arcs, const std::vector<Vec3>& value
 }
 
 struct Split {
+    bool low = false;                          // parts below kHighestTop
     double arc = 0.0;                          // where the limbs part
     std::vector<double> arcs;                  // of the split stations, increasing
     std::array<std::vector<Vec3>, 2> offsets;  // each limb's middle from the chain
@@ -193,9 +197,10 @@ std::optional<Split> findSplit(const Polyline& line, const Welded& mesh, const W
         if (limbs[i] && count >= kFewestSplitStations && count >= kSplitShare * (kStations - i))
             top = i;
     }
-    if (top < 0 || top > kHighestTop)
+    if (top < 0)
         return std::nullopt;
     Split split;
+    split.low = top > kHighestTop;
     split.arc = top * step;  // halfway to the station above, which is one limb
     for (int i = top; i < kStations; ++i)
         if (limbs[i]) {
@@ -236,6 +241,32 @@ FusedLimbsReport splitFusedLimbs(Skeleton& skeleton, const TriMesh& mesh, const 
         if (!split)
             continue;
         const double step = line.length() / kStations;
+        // A low split: the limb whose top lies nearer another chain's leaf
+        // (within the limbs' distance apart and a station) continues it.
+        int stubLimb = -1;
+        JointId stub = kNoJoint;
+        if (split->low) {
+            const double topArc = split->arcs.front();
+            const std::array<Vec3, 2> tops{line.at(topArc) + split->offsets[0].front(),
+                                           line.at(topArc) + split->offsets[1].front()};
+            const double reach = (tops[0] - tops[1]).norm() + step;
+            double best = INFINITY;
+            for (const Joint& joint : skeleton.joints()) {
+                if (skeleton.degree(joint.id) != 1 || joint.id == skeleton.root() ||
+                    std::find(chain.begin(), chain.end(), joint.id) != chain.end())
+                    continue;
+                const std::array<double, 2> from{(joint.position - tops[0]).norm(),
+                                                 (joint.position - tops[1]).norm()};
+                const int k = from[0] <= from[1] ? 0 : 1;
+                if (from[k] <= reach && from[k] < best) {
+                    best = from[k];
+                    stub = joint.id;
+                    stubLimb = k;
+                }
+            }
+            if (stub == kNoJoint)
+                continue;
+        }
         // The chain is rebuilt: its joints above the split stay, a joint
         // where the limbs part (the nearest kept one within half a station),
         // and each limb gets a joint for each of the chain's joints below,
@@ -259,7 +290,7 @@ FusedLimbsReport splitFusedLimbs(Skeleton& skeleton, const TriMesh& mesh, const 
         }
         std::array<JointId, 2> tips{};
         for (int k = 0; k < 2; ++k) {
-            JointId from = parting;
+            JointId from = k == stubLimb ? stub : parting;
             for (const auto& [arc, point] : below) {
                 const JointId next =
                     skeleton.addJoint(point + interpolate(split->arcs, split->offsets[k], arc));

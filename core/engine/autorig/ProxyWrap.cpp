@@ -6,9 +6,12 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <tuple>
+#include <utility>
 
 #include "base/Error.h"
 #include "mesh/CgalSurfaceMesh.h"
+#include "mesh/MeshTopologyCheck.h"
 
 namespace rigmesh {
 
@@ -86,17 +89,28 @@ std::vector<Point> surfaceSamples(const TriMesh& soup, double spacing) {
 
 // Told of every point the wrap inserts: reports progress against the
 // expected vertex count and stops the wrap when the user cancels.
+// A wrap tried again finer continues the bar from where it stood (`start`).
 struct WrapVisitor : CGAL::Alpha_wraps_3::internal::Wrapping_default_visitor {
     const RigProgress* progress = nullptr;
     double expected = 1.0;
+    double start = 0.0;
     long inserted = 0;
 
     template <typename Wrapper, typename Point3>
     void before_Steiner_point_insertion(const Wrapper&, const Point3&) {
         if (++inserted % 64 == 0)
-            reportRigProgress(*progress, std::min(0.95, inserted / expected));
+            reportRigProgress(*progress, reached());
     }
+    double reached() const { return start + (1.0 - start) * std::min(0.95, inserted / expected); }
 };
+
+// The handles (genus summed over components) of a closed wrap, 2 c - chi =
+// 2 g, and its components.
+std::pair<int, int> handlesAndComponentsOf(const TriMesh& wrap) {
+    const MeshReport report = analyseMeshTopology(wrap);
+    return {std::max(0, (2 * report.components - report.eulerCharacteristic) / 2),
+            report.components};
+}
 
 }  // namespace
 
@@ -108,24 +122,20 @@ double chooseWrapAlpha(const TriMesh& soup, const ProxyWrapOptions& options) {
     return std::clamp(alpha, options.finestAlpha * diagonal, options.coarsestAlpha * diagonal);
 }
 
-ProxyWrapResult wrapIntoProxy(const TriMesh& soup, const ProxyWrapOptions& options,
-                              const RigProgress& progress) {
-    reportRigProgress(progress, 0.0);
+namespace {
+
+// One wrap of `soup` at `alpha` (offset and sampling from the options).
+ProxyWrapResult wrapAt(const TriMesh& soup, double alpha, const ProxyWrapOptions& options,
+                       WrapVisitor& visitor) {
     ProxyWrapResult result;
-    result.alpha = chooseWrapAlpha(soup, options);
-    result.offset = result.alpha * options.offsetFraction;
-    if (!(result.alpha > 0.0))
-        throw Error(MessageId::AutoRigTooFewFaces, soup.faceCount());
-    const std::vector<Point> points = surfaceSamples(soup, result.alpha * options.sampleFraction);
+    result.alpha = alpha;
+    result.offset = alpha * options.offsetFraction;
+    const std::vector<Point> points = surfaceSamples(soup, alpha * options.sampleFraction);
     result.wrappedPoints = static_cast<int>(points.size());
     if (points.size() < 4)
         throw Error(MessageId::AutoRigTooFewFaces, soup.faceCount());
-
-    WrapVisitor visitor;
-    const RigProgress noProgress = [](double) { return true; };
-    visitor.progress = progress ? &progress : &noProgress;
-    visitor.expected =
-        std::max(1.0, kVerticesPerArea * areaOf(soup) / (result.alpha * result.alpha));
+    visitor.inserted = 0;
+    visitor.expected = std::max(1.0, kVerticesPerArea * areaOf(soup) / (alpha * alpha));
     SurfaceMesh wrap;
     CGAL::alpha_wrap_3(points, result.alpha, result.offset, wrap,
                        CGAL::parameters::default_values(), CGAL::parameters::visitor(visitor));
@@ -139,6 +149,41 @@ ProxyWrapResult wrapIntoProxy(const TriMesh& soup, const ProxyWrapOptions& optio
         for (auto v : CGAL::vertices_around_face(wrap.halfedge(f), wrap))
             face[corner++] = static_cast<int>(v.idx());
         result.mesh.faces.push_back(face);
+    }
+    std::tie(result.handles, result.components) = handlesAndComponentsOf(result.mesh);
+    return result;
+}
+
+}  // namespace
+
+ProxyWrapResult wrapIntoProxy(const TriMesh& soup, const ProxyWrapOptions& options,
+                              const RigProgress& progress) {
+    reportRigProgress(progress, 0.0);
+    const double alpha = chooseWrapAlpha(soup, options);
+    if (!(alpha > 0.0))
+        throw Error(MessageId::AutoRigTooFewFaces, soup.faceCount());
+    WrapVisitor visitor;
+    const RigProgress noProgress = [](double) { return true; };
+    visitor.progress = progress ? &progress : &noProgress;
+    ProxyWrapResult result = wrapAt(soup, alpha, options, visitor);
+
+    // A handle the wrap has may be a gap narrower than alpha it bridged: two
+    // legs joined at the soles make a loop leg - body - leg that the input's
+    // pieces do not close. One wrap finer (twice the vertices) is tried, and
+    // kept when it has fewer handles and no more components. A handle of the
+    // shape itself (a torus, a hand on a hip) stays; going finer still costs
+    // a wrap of four times the vertices and more per step, and the spider of
+    // assimp-testmodels, whose first wrap has two handles, came out of those
+    // finer wraps with thinner legs and worse bones (docs/ARCHITECTURE.md 2d).
+    const double finest = options.finestAlpha * boundsOf(soup).diagonal().norm();
+    if (result.handles > 0 && alpha > finest) {
+        visitor.start = visitor.reached();
+        ProxyWrapResult finer =
+            wrapAt(soup, std::max(alpha * options.handleRetryFactor, finest), options, visitor);
+        const bool better = finer.handles < result.handles && finer.components <= result.components;
+        if (better)
+            result = std::move(finer);
+        result.wraps = 2;
     }
     reportRigProgress(progress, 1.0);
     return result;

@@ -7,8 +7,9 @@
 // space from outside: gaps narrower than about alpha are bridged, and the
 // surface lies `offset` outside the input (a sheet gets a volume of twice
 // the offset). The wrap's time follows its output size (about
-// 1.2 area / alpha^2 vertices), so alpha comes from a vertex budget. Only
-// ProxyWrap.cpp sees CGAL.
+// 1.2 area / alpha^2 vertices), so alpha comes from a vertex budget. A
+// wrap with a handle is tried once finer: the handle may be a bridged gap
+// (two soles) rather than the shape's. Only ProxyWrap.cpp sees CGAL.
 #pragma once
 
 #include "autorig/RigProgress.h"
@@ -32,6 +33,9 @@ struct ProxyWrapOptions {
     // The wrap is given points sampled on the input's triangles at most
     // alpha times this apart (see surfaceSamples in the .cpp).
     double sampleFraction = 1.0 / 2.0;
+    // A wrap with a handle is tried once more at alpha times this (not
+    // below the finest), kept when that removes a handle (see wrapIntoProxy).
+    double handleRetryFactor = 0.7;
 };
 
 struct ProxyWrapResult {
@@ -39,6 +43,9 @@ struct ProxyWrapResult {
     double alpha = 0.0;
     double offset = 0.0;
     int wrappedPoints = 0;  // sampled on the input
+    int handles = 0;        // the wrap's genus, summed over its components
+    int components = 0;     // its connected pieces
+    int wraps = 1;          // 2 when a handle was tried finer
 };
 
 // The alpha the options give for `soup` (its area and size).

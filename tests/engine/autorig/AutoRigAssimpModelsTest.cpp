@@ -130,6 +130,25 @@ TEST_P(AutoRigCharacter, EveryOriginalVertexHasPositiveWeightsSummingToOne) {
                                                    character.imported.mesh.vertexCount());
 }
 
+// Sydney's shins touch from the knees down: the proxy joins them, and her
+// right thigh's chain ended at the knee while one chain ran down both
+// shins. Each foot ends a leg of its own now (autorig/FusedLimbs): two
+// leaves in the lowest tenth of her height (y up), one per foot.
+TEST(AutoRigSydney, EachShinEndsALegOfItsOwn) {
+    const AutoRigResult& result = rigged("MD2/sydney.md2").rigged;
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : result.part.mesh.vertices)
+        box.extend(v);
+    const double floor = box.min().y() + 0.1 * box.sizes().y();
+    std::vector<Vec3> feet;
+    for (const Joint& joint : result.part.skeleton.joints())
+        if (result.part.skeleton.degree(joint.id) == 1 && joint.position.y() < floor)
+            feet.push_back(joint.position);
+    ASSERT_EQ(feet.size(), 2u);
+    // Each in its own foot: farther apart than a twentieth of her height.
+    EXPECT_GT((feet[0] - feet[1]).norm(), 0.05 * box.sizes().y());
+}
+
 INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
                          ::testing::Values(
                              // arms, legs, head and four wings

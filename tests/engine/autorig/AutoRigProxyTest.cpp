@@ -6,15 +6,22 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
+#include <iterator>
+#include <map>
+#include <numeric>
 #include <set>
+#include <vector>
 
 #include "AutoRigTestSupport.h"
 #include "TestShapes.h"
 #include "autorig/AutoRig.h"
 #include "autorig/AxisChain.h"
 #include "autorig/ProxyWrap.h"
+#include "io/SceneImport.h"
 #include "mesh/MeshChecks.h"
 #include "mesh/MeshPrimitives.h"
+#include "mesh/MeshTopologyCheck.h"
 
 namespace rigmesh {
 namespace {
@@ -144,6 +151,101 @@ TEST(AutoRigProxy, AMeshOverTheDirectLimitIsRiggedOnAProxyAndSaid) {
     EXPECT_TRUE(said(result, MessageId::AutoRigProxyWrapped));
     EXPECT_EQ(result.part.mesh.vertices, mesh.vertices);
     EXPECT_LE(farthestFromBones(mesh, result.part.skeleton), 0.15 * diagonalOf(mesh));
+}
+
+// The figure made in Blender from crossing primitives (tests/data/autorig,
+// made by tests/external/make_blender_meshes.py): legs of separate
+// cylinders whose soles come within 0.11 of each other, every piece's
+// vertices in the file's order.
+TriMesh blenderPrimitives() {
+    TriMesh joined;
+    for (const ImportedPart& part : importScene(RIGMESH_TEST_DATA "/autorig/primitives.obj").parts)
+        testshapes::append(joined, part.part.mesh);
+    return joined;
+}
+
+// Each vertex's piece: connected by faces over vertices at one place.
+std::vector<int> piecesOf(const TriMesh& mesh) {
+    std::vector<int> piece(mesh.vertices.size());
+    std::iota(piece.begin(), piece.end(), 0);
+    const auto find = [&](int v) {
+        while (piece[v] != v)
+            v = piece[v] = piece[piece[v]];
+        return v;
+    };
+    const auto join = [&](int a, int b) { piece[find(a)] = find(b); };
+    for (const auto& face : mesh.faces) {
+        join(face[0], face[1]);
+        join(face[1], face[2]);
+    }
+    std::map<std::array<double, 3>, int> first;
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+        const Vec3& p = mesh.vertices[v];
+        const auto [at, added] = first.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, v);
+        if (!added)
+            join(v, at->second);
+    }
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+        piece[v] = find(v);
+    return piece;
+}
+
+// A gap narrower than alpha between two pieces joined elsewhere (the soles
+// of two legs hanging from one body) closes a loop the pieces do not: the
+// wrap has a handle. It is wrapped again finer until the handle is gone.
+TEST(ProxyWrap, AHandleAGapBetweenPiecesMadeIsWrappedAwayFiner) {
+    const TriMesh figure = blenderPrimitives();
+    const ProxyWrapResult wrap = wrapIntoProxy(figure);
+    EXPECT_EQ(wrap.handles, 0);
+    EXPECT_EQ(wrap.components, 1);
+    EXPECT_GT(wrap.wraps, 1);
+    EXPECT_LT(wrap.alpha, chooseWrapAlpha(figure, {}));
+    const MeshReport report = analyseMeshTopology(wrap.mesh);
+    EXPECT_TRUE(report.isWatertightGenus0());
+}
+
+// A handle of the shape itself stays at every alpha: the first, coarsest
+// wrap is kept.
+TEST(ProxyWrap, AHandleOfTheShapeItselfKeepsTheFirstAlpha) {
+    const TriMesh ring = testshapes::torus(48, 16, 1.0, 0.3);
+    const ProxyWrapResult wrap = wrapIntoProxy(ring);
+    EXPECT_EQ(wrap.handles, 1);
+    EXPECT_EQ(wrap.components, 1);
+    EXPECT_DOUBLE_EQ(wrap.alpha, chooseWrapAlpha(ring, {}));
+}
+
+// The same figure rigged: each leg's sole is weighted by bones no vertex of
+// the other sole is (on a proxy that bridged the soles, each leg's heat
+// reached the other foot).
+TEST(AutoRigProxy, LegsWhoseSolesAlmostTouchMoveOnlyTheirOwnFoot) {
+    const TriMesh figure = blenderPrimitives();
+    const AutoRigResult result = autoRigPart(unrigged(figure));
+    const std::vector<int> piece = piecesOf(figure);
+    // The two legs: the pieces of the two lowest vertices on either side.
+    std::map<int, double> lowest;  // piece -> its lowest y
+    for (int v = 0; v < figure.vertexCount(); ++v) {
+        const auto [at, added] = lowest.emplace(piece[v], figure.vertices[v].y());
+        if (!added)
+            at->second = std::min(at->second, figure.vertices[v].y());
+    }
+    std::vector<std::pair<double, int>> byLowest;
+    for (const auto& [p, y] : lowest)
+        byLowest.emplace_back(y, p);
+    std::sort(byLowest.begin(), byLowest.end());
+    ASSERT_GE(byLowest.size(), 2u);
+    std::array<std::set<BoneId>, 2> soleBones;
+    for (int leg = 0; leg < 2; ++leg) {
+        const auto [y, p] = byLowest[leg];
+        for (int v = 0; v < figure.vertexCount(); ++v)
+            if (piece[v] == p && figure.vertices[v].y() < y + 0.05)
+                for (const auto& [bone, weight] : result.part.weights.perVertex[v])
+                    soleBones[leg].insert(bone);
+        ASSERT_FALSE(soleBones[leg].empty());
+    }
+    std::vector<BoneId> shared;
+    std::set_intersection(soleBones[0].begin(), soleBones[0].end(), soleBones[1].begin(),
+                          soleBones[1].end(), std::back_inserter(shared));
+    EXPECT_TRUE(shared.empty()) << shared.size() << " bones weight both soles";
 }
 
 }  // namespace

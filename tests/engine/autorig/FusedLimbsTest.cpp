@@ -107,5 +107,57 @@ TEST(FusedLimbs, AChainThroughOneLimbStaysAsItIs) {
     }
 }
 
+// Legs apart down to the knees and touching below: the proxy has each thigh
+// apart and the shins as one (a loop thigh, shins, thigh, as sydney's of
+// assimp-testmodels), and the curve skeleton's tree, cut at the far end of
+// that loop, gives one chain down the left thigh and both shins, and the
+// right thigh a chain ending at its knee.
+TEST(FusedLimbs, AShinTheProxyJoinedToTheOtherShinContinuesItsOwnThighsChain) {
+    const TriMesh legs = joined(tube(-0.6, 0.5, -10, 0), tube(0.6, 0.5, -10, 0));
+    TriMesh proxy = joined(tube(-0.6, 0.55, -5.0, 2.5), tube(0.6, 0.55, -5.0, 2.5));
+    proxy = joined(proxy, tube(0.0, 1.3, -10.3, -4.5));
+    Skeleton skeleton;
+    const JointId junction = skeleton.addJoint(Vec3(0, 0, 2));
+    skeleton.addBone(junction, skeleton.addJoint(Vec3(1, 0, 2.8)));
+    skeleton.addBone(junction, skeleton.addJoint(Vec3(-1, 0, 2.8)));
+    const JointId leftHip = skeleton.addJoint(Vec3(-0.6, 0, 0));
+    skeleton.addBone(junction, leftHip);
+    const JointId leftKnee = skeleton.addJoint(Vec3(-0.6, 0, -4));
+    skeleton.addBone(leftHip, leftKnee);
+    const JointId shins = skeleton.addJoint(Vec3(-0.3, 0, -5));
+    skeleton.addBone(leftKnee, shins);
+    skeleton.addBone(shins, skeleton.addJoint(Vec3(0, 0, -9.5)));
+    const JointId rightHip = skeleton.addJoint(Vec3(0.6, 0, 0));
+    skeleton.addBone(junction, rightHip);
+    const JointId rightKnee = skeleton.addJoint(Vec3(0.6, 0, -4.6));
+    skeleton.addBone(rightHip, rightKnee);
+    skeleton.setRoot(junction);
+    skeleton.reorient();
+
+    const FusedLimbsReport report = splitFusedLimbs(skeleton, legs, proxy);
+    EXPECT_EQ(report.chainsSplit, 1);
+    EXPECT_TRUE(skeleton.validate().empty());
+    EXPECT_EQ(leafCount(skeleton), 4);  // two arms, two legs
+    EXPECT_EQ(skeleton.degree(rightKnee), 2) << "the right thigh's chain goes on down its shin";
+    for (const Joint& joint : skeleton.joints()) {
+        if (skeleton.degree(joint.id) != 1 || joint.position.z() > 0.0)
+            continue;
+        // Each foot in the middle of its own leg's end, reached from the
+        // junction through its own hip.
+        EXPECT_NEAR(std::abs(joint.position.x()), 0.6, 0.1);
+        EXPECT_LT(joint.position.z(), -8.0);
+        const auto parentOf = [&](JointId j) {
+            for (BoneId bone : skeleton.bonesAt(j))
+                if (skeleton.bone(bone).tail == j)
+                    return skeleton.bone(bone).head;
+            return kNoJoint;
+        };
+        JointId up = joint.id;
+        while (parentOf(up) != kNoJoint && parentOf(up) != junction)
+            up = parentOf(up);
+        EXPECT_EQ(up, joint.position.x() < 0.0 ? leftHip : rightHip);
+    }
+}
+
 }  // namespace
 }  // namespace rigmesh
