@@ -1,5 +1,8 @@
 #include "base/AllocatorTuning.h"
 
+// Any C library header defines __GLIBC__ where the library is glibc.
+#include <cstdlib>
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
