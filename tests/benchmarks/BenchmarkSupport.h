@@ -61,9 +61,10 @@ inline SketchToSurfaceOptions optionsForVertexCount(const std::vector<Vec2>& str
     return options;
 }
 
-// The main() of every benchmark program: malloc as the studio sets it
-// (base/AllocatorTuning.h), register (after Google Benchmark has read its
-// flags), then run what the filter selects.
+// The main() of every benchmark program (after a Qt application where one
+// is needed): malloc as the studio sets it (base/AllocatorTuning.h),
+// register (after Google Benchmark has read its flags; benchmarks declared
+// with BENCHMARK register themselves), then run what the filter selects.
 inline int runBenchmarks(int argc, char** argv, void (*registerBenchmarks)()) {
     tuneAllocatorForEditing();
     benchmark::Initialize(&argc, argv);

@@ -14,6 +14,7 @@
 
 #include <QCoreApplication>
 
+#include "BenchmarkSupport.h"
 #include "CamelLastMerge.h"
 #include "cut/BoneEdits.h"
 #include "cut/CutPart.h"
@@ -167,10 +168,5 @@ BENCHMARK_CAPTURE(wholeMerge, global, Reskin::Global)
 
 int main(int argc, char** argv) {
     QCoreApplication application(argc, argv);  // the commands translate their texts
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv))
-        return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return rigmesh::bench::runBenchmarks(argc, argv, [] {});
 }

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <map>
 
-#include "base/AllocatorTuning.h"
+#include "BenchmarkSupport.h"
 #include "mesh/MeshPrimitives.h"
 #include "pose/ForwardKinematics.h"
 #include "pose/InverseKinematics.h"
@@ -203,14 +203,7 @@ BENCHMARK(ikDragStep)
 }  // namespace
 }  // namespace rigmesh
 
-// malloc as the studio sets it (base/AllocatorTuning.h), then Google
-// Benchmark's own main.
+// The benchmarks above register themselves.
 int main(int argc, char** argv) {
-    rigmesh::tuneAllocatorForEditing();
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv))
-        return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return rigmesh::bench::runBenchmarks(argc, argv, [] {});
 }

@@ -90,9 +90,7 @@ BENCHMARK(BM_Frame)
 int main(int argc, char** argv) {
     QSurfaceFormat::setDefaultFormat(rigmesh::widgets::Viewport::requiredFormat());
     QApplication application(argc, argv);
-    benchmark::Initialize(&argc, argv);
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
+    const int result = rigmesh::bench::runBenchmarks(argc, argv, [] {});
     rigmesh::studioSlot().reset();
-    return 0;
+    return result;
 }

@@ -172,8 +172,5 @@ BENCHMARK(BM_SmoothAll)->Name("Weights/smoothAll/biped/50k")->Unit(benchmark::kM
 
 int main(int argc, char** argv) {
     QCoreApplication application(argc, argv);  // the document's undo stack wants one
-    benchmark::Initialize(&argc, argv);
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return rigmesh::bench::runBenchmarks(argc, argv, [] {});
 }
