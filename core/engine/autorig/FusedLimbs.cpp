@@ -241,10 +241,11 @@ FusedLimbsReport splitFusedLimbs(Skeleton& skeleton, const TriMesh& mesh, const 
         if (!split)
             continue;
         const double step = line.length() / kStations;
-        // A low split: the limb whose top lies nearer another chain's leaf
-        // (within the limbs' distance apart and a station) continues it.
-        int stubLimb = -1;
-        JointId stub = kNoJoint;
+        // A low split: the limb whose top lies nearer another chain's leaf,
+        // where the tree cut that chain (within the limbs' distance apart
+        // and a station), continues it.
+        int cutLimb = -1;
+        JointId cutLeaf = kNoJoint;
         if (split->low) {
             const double topArc = split->arcs.front();
             const std::array<Vec3, 2> tops{line.at(topArc) + split->offsets[0].front(),
@@ -260,11 +261,11 @@ FusedLimbsReport splitFusedLimbs(Skeleton& skeleton, const TriMesh& mesh, const 
                 const int k = from[0] <= from[1] ? 0 : 1;
                 if (from[k] <= reach && from[k] < best) {
                     best = from[k];
-                    stub = joint.id;
-                    stubLimb = k;
+                    cutLeaf = joint.id;
+                    cutLimb = k;
                 }
             }
-            if (stub == kNoJoint)
+            if (cutLeaf == kNoJoint)
                 continue;
         }
         // The chain is rebuilt: its joints above the split stay, a joint
@@ -290,7 +291,7 @@ FusedLimbsReport splitFusedLimbs(Skeleton& skeleton, const TriMesh& mesh, const 
         }
         std::array<JointId, 2> tips{};
         for (int k = 0; k < 2; ++k) {
-            JointId from = k == stubLimb ? stub : parting;
+            JointId from = k == cutLimb ? cutLeaf : parting;
             for (const auto& [arc, point] : below) {
                 const JointId next =
                     skeleton.addJoint(point + interpolate(split->arcs, split->offsets[k], arc));

@@ -112,18 +112,6 @@ std::pair<int, int> handlesAndComponentsOf(const TriMesh& wrap) {
             report.components};
 }
 
-}  // namespace
-
-double chooseWrapAlpha(const TriMesh& soup, const ProxyWrapOptions& options) {
-    const Eigen::AlignedBox3d box = boundsOf(soup);
-    const double diagonal = box.isEmpty() ? 0.0 : box.diagonal().norm();
-    const double alpha =
-        std::sqrt(kVerticesPerArea * areaOf(soup) / std::max(1, options.targetVertices));
-    return std::clamp(alpha, options.finestAlpha * diagonal, options.coarsestAlpha * diagonal);
-}
-
-namespace {
-
 // One wrap of `soup` at `alpha` (offset and sampling from the options).
 ProxyWrapResult wrapAt(const TriMesh& soup, double alpha, const ProxyWrapOptions& options,
                        WrapVisitor& visitor) {
@@ -155,6 +143,14 @@ ProxyWrapResult wrapAt(const TriMesh& soup, double alpha, const ProxyWrapOptions
 }
 
 }  // namespace
+
+double chooseWrapAlpha(const TriMesh& soup, const ProxyWrapOptions& options) {
+    const Eigen::AlignedBox3d box = boundsOf(soup);
+    const double diagonal = box.isEmpty() ? 0.0 : box.diagonal().norm();
+    const double alpha =
+        std::sqrt(kVerticesPerArea * areaOf(soup) / std::max(1, options.targetVertices));
+    return std::clamp(alpha, options.finestAlpha * diagonal, options.coarsestAlpha * diagonal);
+}
 
 ProxyWrapResult wrapIntoProxy(const TriMesh& soup, const ProxyWrapOptions& options,
                               const RigProgress& progress) {
