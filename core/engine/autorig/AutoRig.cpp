@@ -190,7 +190,8 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     // Straight bones of a thin, bent limb cut its corners, and mirroring can
     // move a thin limb's joint out of it: back to the middle of the limb
     // (autorig/BonesInside).
-    keepBonesInside(result.part.skeleton, surface.mainPiece, minimum);
+    keepBonesInside(result.part.skeleton, surface.mainPiece, minimum, part.mesh.vertices,
+                    options.bones.coverageFraction * diagonalOf(part.mesh));
     // A proxy is fatter than the mesh it wraps: joints it holds can lie
     // outside the mesh the part keeps, and show so in Blender. They move
     // into it where it has an inside nearby (autorig/BonesInside), before

@@ -6,7 +6,12 @@
 // is inside), and a bone that leaves the surface between its joints is
 // split where it leaves farthest, the new joint at the middle of the
 // cross-section there perpendicular to the bone (autorig/SurfaceProbe).
+// A joint moves only where every point to cover stays as near a bone as
+// before or within `coverage` (in a sheet the cross-section's middle can
+// lie far from the limb; a tip then stays where it slid in).
 #pragma once
+
+#include <vector>
 
 #include "mesh/TriMesh.h"
 #include "rig/Skeleton.h"
@@ -21,7 +26,8 @@ struct BonesInsideReport {
 
 // `surface` closed and outward. No split makes a bone shorter than
 // `minimumBone` (rig/ShortBones.h). Topology changes only by splits.
-BonesInsideReport keepBonesInside(Skeleton& skeleton, const TriMesh& surface, double minimumBone);
+BonesInsideReport keepBonesInside(Skeleton& skeleton, const TriMesh& surface, double minimumBone,
+                                  const std::vector<Vec3>& cover = {}, double coverage = 0.0);
 
 // A skeleton computed on a proxy wrapped around the mesh (autorig/ProxyWrap)
 // lies inside the proxy, which is fatter than the mesh by at least the
