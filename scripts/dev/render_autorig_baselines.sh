@@ -16,6 +16,7 @@ mkdir -p "$out"
 models=/usr/share/assimp/models
 for file in "$models/MD2/faerie.md2" "$models/MD2/sydney.md2" "$models/OBJ/WusonOBJ.obj" \
             "$models/COB/dwarf.cob" "$models/BLEND/HUMAN.blend" "$models/OBJ/spider.obj" \
+            "$models/IQM/mrfixit.iqm" \
             "$root/tests/data/autorig/suzanne.obj" "$root/tests/data/autorig/primitives.obj" \
             "$root/tests/data/autorig/statue.obj"; do
     name="$(basename "${file%.*}")"

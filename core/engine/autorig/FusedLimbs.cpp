@@ -26,11 +26,14 @@ constexpr double kSplitShare = 0.6;
 constexpr int kFewestSplitStations = 4;
 // Two limbs fused along most of their length part within the first
 // quarter of the chain (legs from the hips). A chain that parts lower down
-// is one limb the proxy joined to the end of another (a shin to the other
-// shin, whose thigh has a chain of its own, cut at the knee where the
+// may be one limb the proxy joined to the end of another (a shin to the
+// other shin, whose thigh has a chain of its own, cut at the knee where the
 // curve skeleton's loop thigh, shins, thigh was cut: SkeletonFromCurve's
 // spanningTree): the other limb's part continues that chain's leaf when
-// one ends near where it parts, else the chain stays as it is.
+// one ends near where it parts. Else both limbs leave the parting joint,
+// as from a high split: legs fused from the crotch down have no junction
+// of their own, and their chain runs from the chest (mrfixit of
+// assimp-testmodels, its legs 1.4% of the diagonal apart).
 constexpr int kHighestTop = kStations / 4;
 // Both limbs reach the tip: two outlines among this many stations nearest it.
 constexpr int kTipStations = 3;
@@ -265,8 +268,6 @@ FusedLimbsReport splitFusedLimbs(Skeleton& skeleton, const TriMesh& mesh, const 
                     cutLimb = k;
                 }
             }
-            if (cutLeaf == kNoJoint)
-                continue;
         }
         // The chain is rebuilt: its joints above the split stay, a joint
         // where the limbs part (the nearest kept one within half a station),

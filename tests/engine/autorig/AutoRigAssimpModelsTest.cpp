@@ -169,7 +169,10 @@ INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
                              // arms, legs, head
                              Character{"BLEND/HUMAN.blend", 5},
                              // eight legs, the head's and the abdomen's ends
-                             Character{"OBJ/spider.obj", 10}));
+                             Character{"OBJ/spider.obj", 10},
+                             // arms, legs, head (legs 1.4% of the diagonal
+                             // apart, fused on the proxy: autorig/FusedLimbs)
+                             Character{"IQM/mrfixit.iqm", 5}));
 
 INSTANTIATE_TEST_SUITE_P(MadeInBlender, AutoRigCharacter,
                          ::testing::Values(
@@ -228,10 +231,11 @@ TEST_P(AutoRigWrapFineness, KeepsATreeInsideThatCoversTheBody) {
 
 std::vector<WrapFineness> coarserAndFinerWraps() {
     std::vector<WrapFineness> wraps;
-    for (const std::string& file : std::vector<std::string>{
-             "MD2/faerie.md2", "MD2/sydney.md2", "OBJ/WusonOBJ.obj", "COB/dwarf.cob",
-             "BLEND/HUMAN.blend", "OBJ/spider.obj", kBlenderMeshes + "suzanne.obj",
-             kBlenderMeshes + "primitives.obj", kBlenderMeshes + "statue.obj"})
+    for (const std::string& file :
+         std::vector<std::string>{"MD2/faerie.md2", "MD2/sydney.md2", "OBJ/WusonOBJ.obj",
+                                  "COB/dwarf.cob", "BLEND/HUMAN.blend", "OBJ/spider.obj",
+                                  "IQM/mrfixit.iqm", kBlenderMeshes + "suzanne.obj",
+                                  kBlenderMeshes + "primitives.obj", kBlenderMeshes + "statue.obj"})
         for (int vertices : {1600, 3600})
             wraps.push_back({file, vertices});
     return wraps;
