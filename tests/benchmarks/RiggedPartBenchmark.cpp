@@ -53,9 +53,11 @@ void benchWeights(benchmark::State& state, PartCase* c, bool knownClosestBones) 
     setCounters(state, r.part);
 }
 
-void benchSketchToPart(benchmark::State& state, PartCase* c) {
+void benchSketchToPart(benchmark::State& state, PartCase* c, int threads) {
+    SketchToPartOptions options;
+    options.weights.threads = threads;
     for (auto _ : state)
-        benchmark::DoNotOptimize(sketchToPart(c->stroke, c->name));
+        benchmark::DoNotOptimize(sketchToPart(c->stroke, c->name, options));
     setCounters(state, built(*c).part);
 }
 
@@ -75,7 +77,11 @@ void registerBenchmarks() {
                                      benchWeights, c, false)
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
-        benchmark::RegisterBenchmark(("Part/sketchToPart/" + name).c_str(), benchSketchToPart, c)
+        benchmark::RegisterBenchmark(("Part/sketchToPart/" + name).c_str(), benchSketchToPart, c, 1)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+        benchmark::RegisterBenchmark(("Part/sketchToPartTwoThreads/" + name).c_str(),
+                                     benchSketchToPart, c, 2)
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
     }
