@@ -109,6 +109,32 @@ struct Split {
     std::array<std::vector<Vec3>, 2> offsets;  // each limb's middle from the chain
 };
 
+// Whether limb `k` of `split` already has a chain of its own: at most of
+// the split's stations its middle lies nearer a bone off `chain` than half
+// the two limbs' distance apart. Splitting would give it a second one (the
+// thighs around the stub of a chain the tree cut at the knee, on a coarser
+// wrap, where the other thigh's chain runs down to its foot).
+bool limbHasItsOwnChain(const Skeleton& skeleton, const std::vector<JointId>& chain,
+                        const Polyline& line, const Split& split, int k) {
+    int taken = 0;
+    for (std::size_t s = 0; s < split.arcs.size(); ++s) {
+        const Vec3 at = line.at(split.arcs[s]);
+        const std::array<Vec3, 2> middles{at + split.offsets[0][s], at + split.offsets[1][s]};
+        const double halfApart = 0.5 * (middles[0] - middles[1]).norm();
+        for (const Bone& bone : skeleton.bones()) {
+            const bool onChain = std::find(chain.begin(), chain.end(), bone.head) != chain.end() &&
+                                 std::find(chain.begin(), chain.end(), bone.tail) != chain.end();
+            if (!onChain && pointSegmentDistance(middles[k], {skeleton.joint(bone.head).position,
+                                                              skeleton.joint(bone.tail).position}) <
+                                halfApart) {
+                ++taken;
+                break;
+            }
+        }
+    }
+    return 2 * taken > static_cast<int>(split.arcs.size());
+}
+
 std::optional<Split> findSplit(const Polyline& line, const Welded& mesh, const Welded& proxy) {
     const double step = line.length() / kStations;
     std::vector<std::optional<ProxyCut>> proxyCuts(kStations);
@@ -241,7 +267,8 @@ FusedLimbsReport splitFusedLimbs(Skeleton& skeleton, const TriMesh& mesh, const 
         if (!(line.length() > 0.0))
             continue;
         const std::optional<Split> split = findSplit(line, welded, proxyWelded);
-        if (!split)
+        if (!split || limbHasItsOwnChain(skeleton, chain, line, *split, 0) ||
+            limbHasItsOwnChain(skeleton, chain, line, *split, 1))
             continue;
         const double step = line.length() / kStations;
         // A low split: the limb whose top lies nearer another chain's leaf,

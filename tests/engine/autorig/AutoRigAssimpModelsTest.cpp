@@ -139,19 +139,40 @@ TEST_P(AutoRigCharacter, EveryOriginalVertexHasPositiveWeightsSummingToOne) {
 // right thigh's chain ended at the knee while one chain ran down both
 // shins. Each foot ends a leg of its own now (autorig/FusedLimbs): two
 // leaves in the lowest tenth of her height (y up), one per foot.
+std::vector<Vec3> leavesBelow(const AutoRigResult& result, double share) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : result.part.mesh.vertices)
+        box.extend(v);
+    const double level = box.min().y() + share * box.sizes().y();
+    std::vector<Vec3> leaves;
+    for (const Joint& joint : result.part.skeleton.joints())
+        if (result.part.skeleton.degree(joint.id) == 1 && joint.position.y() < level)
+            leaves.push_back(joint.position);
+    return leaves;
+}
+
 TEST(AutoRigSydney, EachShinEndsALegOfItsOwn) {
     const AutoRigResult& result = rigged("MD2/sydney.md2").rigged;
     Eigen::AlignedBox3d box;
     for (const Vec3& v : result.part.mesh.vertices)
         box.extend(v);
-    const double floor = box.min().y() + 0.1 * box.sizes().y();
-    std::vector<Vec3> feet;
-    for (const Joint& joint : result.part.skeleton.joints())
-        if (result.part.skeleton.degree(joint.id) == 1 && joint.position.y() < floor)
-            feet.push_back(joint.position);
+    const std::vector<Vec3> feet = leavesBelow(result, 0.1);
     ASSERT_EQ(feet.size(), 2u);
     // Each in its own foot: farther apart than a twentieth of her height.
     EXPECT_GT((feet[0] - feet[1]).norm(), 0.05 * box.sizes().y());
+}
+
+// On a coarser wrap her thighs are one on the proxy too, and the tree cut
+// the loop thigh, shins, thigh high in one thigh: that stub's chain has both
+// thighs' outlines around it, one of them the other chain's. It is not
+// split into two limbs (which left a leaf at a knee): a limb that has a
+// chain of its own gets no second one (autorig/FusedLimbs).
+TEST(AutoRigSydney, OnACoarserWrapNoLegEndsAtTheKnee) {
+    const AutoRigResult& result = rigged("MD2/sydney.md2", 1600).rigged;
+    EXPECT_EQ(autorigtest::leafCount(result.part.skeleton), 5);
+    // Her hips at about 45% of her height (y up): every leaf below them a foot.
+    EXPECT_EQ(leavesBelow(result, 0.45).size(), 2u);
+    EXPECT_EQ(leavesBelow(result, 0.1).size(), 2u);
 }
 
 INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
