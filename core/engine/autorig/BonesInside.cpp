@@ -62,29 +62,62 @@ std::vector<BoneSegment> segmentsWith(const Skeleton& skeleton, JointId joint, c
     return segments;
 }
 
-// The farthest of `points` from every bone, with `joint` at `p`.
-double farthestFromBones(const Skeleton& skeleton, const std::vector<Vec3>& points,
-                         JointId joint = kNoJoint, const Vec3& p = Vec3::Zero()) {
-    const std::vector<BoneSegment> segments = segmentsWith(skeleton, joint, p);
+// The farthest of `points` from every bone.
+double farthestFromBones(const Skeleton& skeleton, const std::vector<Vec3>& points) {
+    const std::vector<BoneSegment> segments = segmentsWith(skeleton, kNoJoint, Vec3::Zero());
     double farthest = 0.0;
-    for (const Vec3& point : points) {
+    for (const Vec3& p : points) {
         double nearest = INFINITY;
         for (const BoneSegment& segment : segments)
-            nearest = std::min(nearest, pointSegmentDistance(point, segment));
+            nearest = std::min(nearest, pointSegmentDistance(p, segment));
         farthest = std::max(farthest, nearest);
     }
     return farthest;
 }
 
+// The points a joint's moves must keep near a bone: each within `allowed`
+// of one (the coverage limit, or the farthest point's distance when
+// keepBonesInside began, if farther: autorig/BoneCoverage placed bones to
+// cover them).
+struct Cover {
+    const std::vector<Vec3>& points;
+    double allowed = 0.0;
+
+    // With `joint` at `place`, no point that a bone at the joint covered is
+    // left uncovered. Only such points can lose their cover, and only they
+    // are compared with the other bones: a move costs the points times the
+    // joint's bones, not times all bones (100k-vertex meshes).
+    bool keptWith(const Skeleton& skeleton, JointId joint, const Vec3& place) const {
+        std::vector<BoneSegment> before, after, others;
+        for (const Bone& bone : skeleton.bones()) {
+            const BoneSegment segment{skeleton.joint(bone.head).position,
+                                      skeleton.joint(bone.tail).position};
+            if (bone.head != joint && bone.tail != joint) {
+                others.push_back(segment);
+                continue;
+            }
+            before.push_back(segment);
+            after.push_back({bone.head == joint ? place : segment.head,
+                             bone.tail == joint ? place : segment.tail});
+        }
+        const auto within = [&](const Vec3& p, const std::vector<BoneSegment>& segments) {
+            return std::any_of(segments.begin(), segments.end(), [&](const BoneSegment& s) {
+                return pointSegmentDistance(p, s) <= allowed;
+            });
+        };
+        return std::all_of(points.begin(), points.end(), [&](const Vec3& p) {
+            return !within(p, before) || within(p, after) || within(p, others);
+        });
+    }
+};
+
 // A joint outside: a tip slides along its bone into the surface, and every
 // joint then goes to the middle of its cross-section. In a sheet (a wing
 // wrapped thin) that cross-section runs across the sheet and its middle
-// can lie far from the limb: the middle is taken only when every point of
-// `cover` stays within `coverage` of a bone (or within its farthest before,
-// if farther: autorig/BoneCoverage placed bones to cover them), else the
-// tip stays where it slid in.
+// can lie far from the limb: the middle is taken only when it keeps every
+// point of `cover` covered, else the tip stays where it slid in.
 bool moveJointInside(Skeleton& skeleton, JointId joint, const SurfaceProbe& surface,
-                     const std::vector<Vec3>& cover, double coverage) {
+                     const std::optional<Cover>& cover) {
     Vec3 p = skeleton.joint(joint).position;
     bool slid = false;
     const std::vector<BoneId> bones = skeleton.bonesAt(joint);
@@ -102,16 +135,11 @@ bool moveJointInside(Skeleton& skeleton, JointId joint, const SurfaceProbe& surf
         places.push_back(*middle);
     if (slid)
         places.push_back(p);
+    if (cover)
+        std::erase_if(places,
+                      [&](const Vec3& place) { return !cover->keptWith(skeleton, joint, place); });
     if (places.empty())
         return false;
-    if (!cover.empty()) {
-        const double allowed = std::max(coverage, farthestFromBones(skeleton, cover));
-        std::erase_if(places, [&](const Vec3& place) {
-            return farthestFromBones(skeleton, cover, joint, place) > allowed;
-        });
-        if (places.empty())
-            return false;
-    }
     skeleton.setJointPosition(joint, places.front());
     return true;
 }
@@ -252,11 +280,14 @@ BonesInsideReport keepBonesInside(Skeleton& skeleton, const TriMesh& surfaceMesh
     if (surfaceMesh.faces.empty() || skeleton.boneCount() == 0)
         return report;
     const SurfaceProbe surface(surfaceMesh);
+    std::optional<Cover> guard;
+    if (!cover.empty())
+        guard.emplace(Cover{cover, std::max(coverage, farthestFromBones(skeleton, cover))});
     for (int round = 0; round < kRounds; ++round) {
         bool changed = false;
         for (const Joint& joint : std::vector<Joint>(skeleton.joints()))
             if (!surface.inside(joint.position) &&
-                moveJointInside(skeleton, joint.id, surface, cover, coverage)) {
+                moveJointInside(skeleton, joint.id, surface, guard)) {
                 ++report.jointsMoved;
                 changed = true;
             }

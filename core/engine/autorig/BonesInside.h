@@ -6,9 +6,11 @@
 // is inside), and a bone that leaves the surface between its joints is
 // split where it leaves farthest, the new joint at the middle of the
 // cross-section there perpendicular to the bone (autorig/SurfaceProbe).
-// A joint moves only where every point to cover stays as near a bone as
-// before or within `coverage` (in a sheet the cross-section's middle can
-// lie far from the limb; a tip then stays where it slid in).
+// A joint moves only where no point of `cover` that its bones kept within
+// `coverage` of them (or within the farthest point's distance at the
+// start, if farther) is left farther from every bone (in a sheet the
+// cross-section's middle can lie far from the limb; a tip then stays where
+// it slid in).
 #pragma once
 
 #include <vector>
