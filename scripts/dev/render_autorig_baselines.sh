@@ -16,7 +16,8 @@ mkdir -p "$out"
 models=/usr/share/assimp/models
 for file in "$models/MD2/faerie.md2" "$models/MD2/sydney.md2" "$models/OBJ/WusonOBJ.obj" \
             "$models/COB/dwarf.cob" "$models/BLEND/HUMAN.blend" "$models/OBJ/spider.obj" \
-            "$models/IQM/mrfixit.iqm" \
+            "$models/IQM/mrfixit.iqm" "$models/Collada/human.zae" \
+            "$models/X/fromtruespace_bin32.x" "$models/ASE/MotionCaptureROM.ase" \
             "$root/tests/data/autorig/suzanne.obj" "$root/tests/data/autorig/primitives.obj" \
             "$root/tests/data/autorig/statue.obj"; do
     name="$(basename "${file%.*}")"

@@ -193,7 +193,13 @@ INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
                              Character{"OBJ/spider.obj", 10},
                              // arms, legs, head (legs 1.4% of the diagonal
                              // apart, fused on the proxy: autorig/FusedLimbs)
-                             Character{"IQM/mrfixit.iqm", 5}));
+                             Character{"IQM/mrfixit.iqm", 5},
+                             // arms, legs, head (15.6k vertices, 5 pieces)
+                             Character{"Collada/human.zae", 5},
+                             // a dinosaur: four legs, tail, neck and head
+                             Character{"X/fromtruespace_bin32.x", 6},
+                             // a figure of 26 boxes: arms, legs, head
+                             Character{"ASE/MotionCaptureROM.ase", 5}));
 
 INSTANTIATE_TEST_SUITE_P(MadeInBlender, AutoRigCharacter,
                          ::testing::Values(
@@ -252,11 +258,11 @@ TEST_P(AutoRigWrapFineness, KeepsATreeInsideThatCoversTheBody) {
 
 std::vector<WrapFineness> coarserAndFinerWraps() {
     std::vector<WrapFineness> wraps;
-    for (const std::string& file :
-         std::vector<std::string>{"MD2/faerie.md2", "MD2/sydney.md2", "OBJ/WusonOBJ.obj",
-                                  "COB/dwarf.cob", "BLEND/HUMAN.blend", "OBJ/spider.obj",
-                                  "IQM/mrfixit.iqm", kBlenderMeshes + "suzanne.obj",
-                                  kBlenderMeshes + "primitives.obj", kBlenderMeshes + "statue.obj"})
+    for (const std::string& file : std::vector<std::string>{
+             "MD2/faerie.md2", "MD2/sydney.md2", "OBJ/WusonOBJ.obj", "COB/dwarf.cob",
+             "BLEND/HUMAN.blend", "OBJ/spider.obj", "IQM/mrfixit.iqm", "Collada/human.zae",
+             "X/fromtruespace_bin32.x", "ASE/MotionCaptureROM.ase", kBlenderMeshes + "suzanne.obj",
+             kBlenderMeshes + "primitives.obj", kBlenderMeshes + "statue.obj"})
         for (int vertices : {1600, 3600})
             wraps.push_back({file, vertices});
     return wraps;
