@@ -211,12 +211,13 @@ double reachBeyond(const Graph& graph, const std::vector<int>& branch) {
 // tips. A branch that reaches farther than `keepReach` from its junction
 // stays whatever its length: it is a part of the body (a trunk's base, a
 // fist beside its thumb, a head), not flow noise, and without it those
-// vertices would be far from every bone. But not when it is one of two
-// twigs of the same junction whose tips' balls overlap: one fat end that
-// the flow split in two (a spider's head ending in its two fangs). The
-// other twig, reaching as far or farther, stays and ends the limb (its
-// junction becomes a plain node of its branch), its tip beside the pruned
-// one's, so those vertices keep a bone near them.
+// vertices would be far from every bone. But not when its tip's ball
+// overlaps that of another branch of the same junction, a twig or a
+// longer one, reaching farther: one fat end that the flow split in two (a
+// spider's head ending in its two fangs, sydney's raised hand on a finer
+// wrap). The other branch stays and ends the limb (its junction becomes a
+// plain node of its branch), its tip beside the pruned one's, so those
+// vertices keep a bone near them.
 void pruneTwigs(Graph& graph, const CurveRigOptions& options, double keepReach) {
     struct Twig {
         std::vector<int> branch;
@@ -243,17 +244,23 @@ void pruneTwigs(Graph& graph, const CurveRigOptions& options, double keepReach) 
         }
         for (Twig& twig : twigs)
             twig.reach = reachBeyond(graph, twig.branch);
-        // Whether `twig` is the lesser half of a fat end split in two.
+        // Whether `twig` is the lesser half of a fat end split in two: a
+        // branch of the same junction, twig or not, reaching farther, its
+        // tip's ball overlapping the twig's.
         const auto splitHalf = [&](const Twig& twig) {
             const int tip = twig.branch.front();
-            for (const Twig& other : twigs) {
-                const int otherTip = other.branch.front();
-                if (otherTip == tip || other.branch.back() != twig.branch.back())
+            for (int otherTip : tips) {
+                if (otherTip == tip)
                     continue;
+                const std::vector<int> other =
+                    walkBranch(graph, otherTip, *graph.neighbours[otherTip].begin());
+                if (other.back() != twig.branch.back())
+                    continue;
+                const double otherReach = reachBeyond(graph, other);
                 const bool overlap =
                     graph.length(tip, otherTip) < graph.radii[tip] + graph.radii[otherTip];
                 const bool fartherOther =
-                    other.reach > twig.reach || (other.reach == twig.reach && otherTip < tip);
+                    otherReach > twig.reach || (otherReach == twig.reach && otherTip < tip);
                 if (overlap && fartherOther)
                     return true;
             }

@@ -271,6 +271,17 @@ std::vector<WrapFineness> coarserAndFinerWraps() {
 INSTANTIATE_TEST_SUITE_P(CoarserAndFiner, AutoRigWrapFineness,
                          ::testing::ValuesIn(coarserAndFinerWraps()));
 
+// A limb's end the flow split in two where one half is a twig and the
+// other a longer branch of the same junction, their tips' balls
+// overlapping: one end, one leaf (autorig/SkeletonFromCurve pruneTwigs).
+// Before, only two twigs were taken for such halves: sydney's raised hand
+// on a wrap of 3000 vertices ended in two leaves (6), and one of the
+// faerie's arms on a wrap of 2000 (10).
+TEST(AutoRigSplitEnd, AHalfBesideALongerBranchIsPrunedOnOtherWraps) {
+    EXPECT_EQ(autorigtest::leafCount(rigged("MD2/sydney.md2", 3000).rigged.part.skeleton), 5);
+    EXPECT_EQ(autorigtest::leafCount(rigged("MD2/faerie.md2", 2000).rigged.part.skeleton), 9);
+}
+
 // Blobs of assimp-testmodels, no limbs at all, that the auto-rig refused
 // ("too small for a bone") before: a sphere the flow contracts to a stub
 // 8.7e-5 long, and meshes so coarse (a tetrahedron, an octahedron, boxes,
