@@ -117,18 +117,24 @@ bool bend(Skeleton& skeleton, const SurfaceProbe& surface, const Vec3& far, doub
         const Vec3 tail = skeleton.joint(bone.tail).position;
         const double t = std::clamp(nearest[k].t, kAtEnd, 1.0 - kAtEnd);
         const Vec3 onBone = head + t * (tail - head);
-        const std::optional<Vec3> target = jointFor(surface, far, onBone);
-        if (!target)
-            continue;
-        for (double s : {0.5, 0.75, 1.0}) {
-            const Vec3 bent = onBone + s * (*target - onBone);
-            if ((far - bent).norm() > limit || (bent - head).norm() < minimumBone ||
-                (bent - tail).norm() < minimumBone || !segmentInside(surface, head, bent) ||
-                !segmentInside(surface, bent, tail))
-                continue;
-            skeleton.splitBone(bone.id, bent);
-            return true;
-        }
+        // Towards the middle of the region's cross-section first; where
+        // that lies too deep to cover the point (a hump on a thick body),
+        // towards the point itself, a little inside it.
+        std::vector<Vec3> targets;
+        if (const std::optional<Vec3> middle = jointFor(surface, far, onBone))
+            targets.push_back(*middle);
+        if (const Vec3 near = far + kTipDepth * (onBone - far); surface.inside(near))
+            targets.push_back(near);
+        for (const Vec3& target : targets)
+            for (double s : {0.5, 0.75, 1.0}) {
+                const Vec3 bent = onBone + s * (target - onBone);
+                if ((far - bent).norm() > limit || (bent - head).norm() < minimumBone ||
+                    (bent - tail).norm() < minimumBone || !segmentInside(surface, head, bent) ||
+                    !segmentInside(surface, bent, tail))
+                    continue;
+                skeleton.splitBone(bone.id, bent);
+                return true;
+            }
     }
     return false;
 }

@@ -3,7 +3,9 @@
 // region the curve skeleton left without a bone (a hump over a bull's
 // shoulders, a wing the flow reduced to nothing, a trunk beside its arms)
 // gets one, most often first: the nearest bone bends towards it (a joint
-// inserted and moved into the region, both halves inside the surface),
+// inserted and moved into the region, towards the middle of its
+// cross-section or, where that lies too deep, towards the far point
+// itself, both halves inside the surface),
 // else a tip there reaches on into it, else a new branch leaves the
 // nearest bone for the middle of the region (autorig/SurfaceProbe). A
 // skeleton without branches (a blob's main-axis chain, a rod) is left as

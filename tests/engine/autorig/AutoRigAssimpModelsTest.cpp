@@ -282,6 +282,20 @@ TEST(AutoRigSplitEnd, AHalfBesideALongerBranchIsPrunedOnOtherWraps) {
     EXPECT_EQ(autorigtest::leafCount(rigged("MD2/faerie.md2", 2000).rigged.part.skeleton), 9);
 }
 
+// A region far from every bone on a thick body (the Wuson's hump) gets a
+// bend of the nearest bone towards it, not a branch that would end in a
+// leaf: where the middle of the region's cross-section lies too deep to
+// cover it, the bend goes towards the far point itself
+// (autorig/BoneCoverage). Before, on wraps of 1600 and 2000 vertices, the
+// hump grew a branch and the bull had 7 leaves.
+TEST(AutoRigCoverage, AHumpOnAThickBodyBendsABoneInsteadOfGrowingALeaf) {
+    for (int wrapVertices : {1600, 2000})
+        EXPECT_EQ(
+            autorigtest::leafCount(rigged("OBJ/WusonOBJ.obj", wrapVertices).rigged.part.skeleton),
+            6)
+            << "wrap of " << wrapVertices;
+}
+
 // Blobs of assimp-testmodels, no limbs at all, that the auto-rig refused
 // ("too small for a bone") before: a sphere the flow contracts to a stub
 // 8.7e-5 long, and meshes so coarse (a tetrahedron, an octahedron, boxes,
