@@ -109,8 +109,8 @@ struct Split {
     std::array<std::vector<Vec3>, 2> offsets;  // each limb's middle from the chain
 };
 
-// Whether limb `k` of `split` already has a chain of its own: at most of
-// the split's stations its middle lies nearer a bone off `chain` than half
+// Whether limb `k` of `split` already has a chain of its own: at more than
+// half of the split's stations its middle lies nearer a bone off `chain` than half
 // the two limbs' distance apart. Splitting would give it a second one (the
 // thighs around the stub of a chain the tree cut at the knee, on a coarser
 // wrap, where the other thigh's chain runs down to its foot).

@@ -135,10 +135,7 @@ TEST_P(AutoRigCharacter, EveryOriginalVertexHasPositiveWeightsSummingToOne) {
                                                    character.imported.mesh.vertexCount());
 }
 
-// Sydney's shins touch from the knees down: the proxy joins them, and her
-// right thigh's chain ended at the knee while one chain ran down both
-// shins. Each foot ends a leg of its own now (autorig/FusedLimbs): two
-// leaves in the lowest tenth of her height (y up), one per foot.
+// The leaves below `share` of the figure's height (y up).
 std::vector<Vec3> leavesBelow(const AutoRigResult& result, double share) {
     Eigen::AlignedBox3d box;
     for (const Vec3& v : result.part.mesh.vertices)
@@ -151,6 +148,10 @@ std::vector<Vec3> leavesBelow(const AutoRigResult& result, double share) {
     return leaves;
 }
 
+// Sydney's shins touch from the knees down: the proxy joins them, and her
+// right thigh's chain ended at the knee while one chain ran down both
+// shins. Each foot ends a leg of its own now (autorig/FusedLimbs): two
+// leaves in the lowest tenth of her height (y up), one per foot.
 TEST(AutoRigSydney, EachShinEndsALegOfItsOwn) {
     const AutoRigResult& result = rigged("MD2/sydney.md2").rigged;
     Eigen::AlignedBox3d box;
