@@ -212,14 +212,11 @@ struct MeshJoints {
         return true;
     }
 
-    // With the joint at `p`, every point still within `coverage` of a bone.
+    // With the joint at `p`, every point still within `coverage` of a bone
+    // (all are at the start: coverage is at least the farthest then, and
+    // only joint moves that keep them so are made).
     bool keepsCovered(const Skeleton& skeleton, JointId joint, const Vec3& p) const {
-        const std::vector<BoneSegment> segments = segmentsWith(skeleton, joint, p);
-        return std::all_of(points.begin(), points.end(), [&](const Vec3& point) {
-            return std::any_of(segments.begin(), segments.end(), [&](const BoneSegment& s) {
-                return pointSegmentDistance(point, s) <= coverage;
-            });
-        });
+        return Cover{points, coverage}.keptWith(skeleton, joint, p);
     }
 
     // Places inside the mesh near `p`, nearest entry first: along each
