@@ -176,6 +176,22 @@ TEST(AutoRigSydney, OnACoarserWrapNoLegEndsAtTheKnee) {
     EXPECT_EQ(leavesBelow(result, 0.1).size(), 2u);
 }
 
+// Mr. Fixit's legs are 1.4% of the diagonal apart: the proxy fuses them
+// from the crotch down, and the chain from the chest parts low on them.
+// Both legs leave the parting joint (autorig/FusedLimbs): two leaves in the
+// lowest tenth of his height (y up), one per foot, either side of him.
+TEST(AutoRigMrFixit, EachLegEndsInAFootOfItsOwn) {
+    const AutoRigResult& result = rigged("IQM/mrfixit.iqm").rigged;
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : result.part.mesh.vertices)
+        box.extend(v);
+    const std::vector<Vec3> feet = leavesBelow(result, 0.1);
+    ASSERT_EQ(feet.size(), 2u);
+    EXPECT_GT((feet[0] - feet[1]).norm(), 0.05 * box.sizes().y());
+    // He faces x and is mirrored across z = 0: a foot on each side.
+    EXPECT_LT(feet[0].z() * feet[1].z(), 0.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
                          ::testing::Values(
                              // arms, legs, head and four wings

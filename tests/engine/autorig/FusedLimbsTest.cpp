@@ -3,6 +3,8 @@
 // each limb's vertices follow only its own bones (autorig/FusedLimbs).
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include "autorig/FusedLimbs.h"
 #include "autorig/SkeletonFromCurve.h"
 #include "mesh/MeshPrimitives.h"
@@ -157,6 +159,87 @@ TEST(FusedLimbs, AShinTheProxyJoinedToTheOtherShinContinuesItsOwnThighsChain) {
             up = parentOf(up);
         EXPECT_EQ(up, joint.position.x() < 0.0 ? leftHip : rightHip);
     }
+}
+
+// Legs fused from the crotch down with no hip junction of their own: the
+// chain from the chest runs down the torso and both legs, so the limbs part
+// low on it (past its first quarter), and no other chain ends near where
+// they do. Both legs leave the parting joint (mrfixit of assimp-testmodels,
+// its legs 1.4% of the diagonal apart).
+TEST(FusedLimbs, LegsPartingLowOnAChainFromTheChestBothLeaveWhereTheyPart) {
+    TriMesh mesh = joined(tube(-0.6, 0.5, -10, 0), tube(0.6, 0.5, -10, 0));
+    mesh = joined(mesh, tube(0.0, 1.1, 0.0, 9.0));  // the torso
+    const TriMesh proxy = tube(0.0, 1.3, -10.3, 10.0);
+    Skeleton skeleton;
+    const JointId chest = skeleton.addJoint(Vec3(0, 0, 8));
+    skeleton.addBone(chest, skeleton.addJoint(Vec3(1, 0, 8.8)));
+    skeleton.addBone(chest, skeleton.addJoint(Vec3(-1, 0, 8.8)));
+    const JointId belly = skeleton.addJoint(Vec3(0, 0, 3));
+    skeleton.addBone(chest, belly);
+    const JointId knees = skeleton.addJoint(Vec3(0, 0, -4.5));
+    skeleton.addBone(belly, knees);
+    skeleton.addBone(knees, skeleton.addJoint(Vec3(0, 0, -9.5)));
+    skeleton.setRoot(chest);
+    skeleton.reorient();
+
+    const FusedLimbsReport report = splitFusedLimbs(skeleton, mesh, proxy);
+    EXPECT_EQ(report.chainsSplit, 1);
+    EXPECT_TRUE(skeleton.validate().empty());
+    EXPECT_EQ(leafCount(skeleton), 4);  // two arms, two legs
+    std::vector<JointId> feet;
+    for (const Joint& joint : skeleton.joints())
+        if (skeleton.degree(joint.id) == 1 && joint.position.z() < 0.0)
+            feet.push_back(joint.id);
+    ASSERT_EQ(feet.size(), 2u);
+    const auto parentOf = [&](JointId j) {
+        for (BoneId bone : skeleton.bonesAt(j))
+            if (skeleton.bone(bone).tail == j)
+                return skeleton.bone(bone).head;
+        return kNoJoint;
+    };
+    // Up each leg to where it branches: the same joint, at the crotch.
+    std::array<JointId, 2> parting{};
+    for (int k = 0; k < 2; ++k) {
+        EXPECT_NEAR(std::abs(skeleton.joint(feet[k]).position.x()), 0.6, 0.1);
+        JointId up = parentOf(feet[k]);
+        while (up != kNoJoint && skeleton.degree(up) == 2)
+            up = parentOf(up);
+        ASSERT_NE(up, kNoJoint);
+        parting[k] = up;
+    }
+    EXPECT_EQ(parting[0], parting[1]);
+    EXPECT_NE(parting[0], chest);
+    EXPECT_NEAR(skeleton.joint(parting[0]).position.z(), 0.0, 1.5);
+    EXPECT_LT(skeleton.joint(feet[0]).position.x() * skeleton.joint(feet[1]).position.x(), 0.0);
+}
+
+// Each leg has a chain of its own, but the proxy is one tube around both:
+// a plane across either chain cuts the mesh in two outlines, the other one
+// the other chain's leg. No chain is split (a third leg's chain would lie
+// along one of them).
+TEST(FusedLimbs, ALimbThatHasAChainOfItsOwnGetsNoSecondOne) {
+    const TriMesh legs = joined(tube(-0.6, 0.5, -10, 0), tube(0.6, 0.5, -10, 0));
+    const TriMesh proxy = tube(0.0, 1.3, -10.3, 3.3);
+    Skeleton skeleton;
+    const JointId junction = skeleton.addJoint(Vec3(0, 0, 2));
+    skeleton.addBone(junction, skeleton.addJoint(Vec3(1, 0, 2.8)));
+    skeleton.addBone(junction, skeleton.addJoint(Vec3(-1, 0, 2.8)));
+    for (double x : {-0.6, 0.6}) {
+        const JointId hip = skeleton.addJoint(Vec3(x, 0, 0));
+        skeleton.addBone(junction, hip);
+        const JointId knee = skeleton.addJoint(Vec3(x, 0, -4.5));
+        skeleton.addBone(hip, knee);
+        skeleton.addBone(knee, skeleton.addJoint(Vec3(x, 0, -9.5)));
+    }
+    skeleton.setRoot(junction);
+    skeleton.reorient();
+    const Skeleton before = skeleton;
+
+    EXPECT_EQ(splitFusedLimbs(skeleton, legs, proxy).chainsSplit, 0);
+    EXPECT_EQ(leafCount(skeleton), 4);
+    ASSERT_EQ(skeleton.jointCount(), before.jointCount());
+    for (int j = 0; j < skeleton.jointCount(); ++j)
+        EXPECT_EQ(skeleton.joints()[j].position, before.joints()[j].position);
 }
 
 }  // namespace
