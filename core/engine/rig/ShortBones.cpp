@@ -36,7 +36,12 @@ int collapseShortBones(Skeleton& skeleton, double minimum) {
         ++collapsed;
     }
     if (collapsed > 0) {
-        skeleton.setRoot(chooseCentralRoot(skeleton));
+        // The root stays where the caller put it (the auto-rig's is the
+        // thickest junction, autorig/SkeletonFromCurve; the joint a graph's
+        // centre gives can lie in a long prop, the dwarf's axe-holding
+        // hand), unless it was left a leaf.
+        if (skeleton.degree(skeleton.root()) < 2)
+            skeleton.setRoot(chooseCentralRoot(skeleton));
         skeleton.reorient();
     }
     return collapsed;

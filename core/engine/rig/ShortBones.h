@@ -27,8 +27,9 @@ std::optional<ShortestBone> shortestBone(const Skeleton& skeleton);
 // first: a bone with a leaf end gives up that end (the bone it hangs from
 // reaches as before), a bone between two branching joints becomes one joint
 // at its middle. A skeleton of one bone is left as it is (the caller
-// refuses it). Returns how many bones went; the root and the orientation
-// are chosen again when any did.
+// refuses it). Returns how many bones went. The root stays (a collapsed
+// bone's joint that stays keeps its id), unless it is left a leaf: then
+// the skeleton's most central joint; the bones are oriented from it again.
 int collapseShortBones(Skeleton& skeleton, double minimum);
 
 }  // namespace rigmesh

@@ -13,6 +13,7 @@
 
 #include "AutoRigTestSupport.h"
 #include "autorig/AxisChain.h"
+#include "autorig/SurfaceProbe.h"
 
 namespace rigmesh {
 namespace {
@@ -129,6 +130,13 @@ TEST_P(AutoRigCharacter, LeafCountIsTheLimbsAPersonCounts) {
     EXPECT_EQ(leaves, GetParam().leaves);
 }
 
+// The root sits where the limbs branch (the torso), not partway along a
+// limb: a pose moves the figure from there, as a person's rig does.
+TEST_P(AutoRigCharacter, RootIsABranchingJoint) {
+    const Skeleton& skeleton = rigged(GetParam().file).rigged.part.skeleton;
+    EXPECT_GE(skeleton.degree(skeleton.root()), 3);
+}
+
 TEST_P(AutoRigCharacter, EveryOriginalVertexHasPositiveWeightsSummingToOne) {
     const RiggedCharacter& character = rigged(GetParam().file);
     autorigtest::expectPositiveWeightsSummingToOne(character.rigged.part.weights.perVertex,
@@ -190,6 +198,22 @@ TEST(AutoRigMrFixit, EachLegEndsInAFootOfItsOwn) {
     EXPECT_GT((feet[0] - feet[1]).norm(), 0.05 * box.sizes().y());
     // He faces x and is mirrored across z = 0: a foot on each side.
     EXPECT_LT(feet[0].z() * feet[1].z(), 0.0);
+}
+
+// The dwarf holds a long axe in its left hand: measured along the bones the
+// hand is the skeleton's middle, but the root belongs in the chest, the
+// deepest place of the figure (rig/ShortBones keeps the auto-rig's root,
+// the thickest junction, when it collapses a short bone).
+TEST(AutoRigDwarf, RootIsInTheChestNotTheHandHoldingTheAxe) {
+    const AutoRigResult& result = rigged("COB/dwarf.cob").rigged;
+    const Skeleton& skeleton = result.part.skeleton;
+    const SurfaceProbe probe(result.rigSurface);
+    const double rootDepth = probe.distance(skeleton.joint(skeleton.root()).position);
+    for (const Joint& joint : skeleton.joints()) {
+        if (skeleton.degree(joint.id) >= 3) {
+            EXPECT_GE(rootDepth, probe.distance(joint.position)) << "joint " << joint.id;
+        }
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,

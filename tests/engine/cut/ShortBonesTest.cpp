@@ -173,5 +173,49 @@ TEST(ShortBones, CollapsingMergesShortBonesIntoTheirNeighbours) {
     EXPECT_EQ(collapseShortBones(one, 0.1), 0) << "a lone bone is the caller's to refuse";
 }
 
+// The auto-rig roots its skeleton at the thickest junction (the chest); a
+// long prop in one hand (the dwarf's axe) puts the skeleton's middle, by
+// bone length, at that hand. Collapsing a short bone leaves the root where
+// it was.
+TEST(ShortBones, CollapsingKeepsTheRootTheCallerChose) {
+    Skeleton skeleton;
+    const JointId chest = skeleton.addJoint(Vec3(0, 0, 0));
+    const JointId head = skeleton.addJoint(Vec3(0, 1, 0));
+    const JointId hand = skeleton.addJoint(Vec3(-2, 0, 0));
+    skeleton.addBone(chest, head);
+    skeleton.addBone(chest, skeleton.addJoint(Vec3(2, 0, 0)));
+    skeleton.addBone(chest, hand);
+    // The axe: a long handle and blade beyond the hand, a short stub below.
+    skeleton.addBone(hand, skeleton.addJoint(Vec3(-2, 10, 0)));
+    skeleton.addBone(hand, skeleton.addJoint(Vec3(-2, -0.5, 0)));
+    // A twig at the head, shorter than the minimum.
+    skeleton.addBone(head, skeleton.addJoint(Vec3(0, 1.01, 0)));
+    skeleton.setRoot(chest);
+    skeleton.reorient();
+    ASSERT_EQ(chooseCentralRoot(skeleton), hand) << "the graph's middle is the hand";
+    EXPECT_EQ(collapseShortBones(skeleton, 0.1), 1);
+    EXPECT_EQ(skeleton.root(), chest);
+    EXPECT_TRUE(skeleton.isOrientedFromRoot());
+}
+
+// A root that a collapse leaves as a leaf (its only other bone was short)
+// gives way to the skeleton's most central joint.
+TEST(ShortBones, ARootLeftALeafGivesWayToTheCentralJoint) {
+    Skeleton skeleton;
+    const JointId root = skeleton.addJoint(Vec3(0, 0, 0));
+    const JointId middle = skeleton.addJoint(Vec3(1, 0, 0));
+    const JointId stub = skeleton.addJoint(Vec3(0, 0.01, 0));
+    skeleton.addBone(root, middle);
+    skeleton.addBone(root, stub);
+    skeleton.addBone(middle, skeleton.addJoint(Vec3(2, 0, 0)));
+    skeleton.addBone(middle, skeleton.addJoint(Vec3(1, 1, 0)));
+    skeleton.setRoot(root);
+    skeleton.reorient();
+    EXPECT_EQ(collapseShortBones(skeleton, 0.1), 1);
+    EXPECT_NE(skeleton.degree(skeleton.root()), 1);
+    EXPECT_EQ(skeleton.root(), middle);
+    EXPECT_TRUE(skeleton.isOrientedFromRoot());
+}
+
 }  // namespace
 }  // namespace rigmesh
