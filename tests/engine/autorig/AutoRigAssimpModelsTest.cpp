@@ -272,6 +272,12 @@ void PrintTo(const WrapFineness& wrap, std::ostream* out) {
 
 class AutoRigWrapFineness : public ::testing::TestWithParam<WrapFineness> {};
 
+TEST_P(AutoRigWrapFineness, RootIsABranchingJoint) {
+    const Skeleton& skeleton =
+        rigged(GetParam().file, GetParam().wrapVertices).rigged.part.skeleton;
+    EXPECT_GE(skeleton.degree(skeleton.root()), 3);
+}
+
 TEST_P(AutoRigWrapFineness, KeepsATreeInsideThatCoversTheBody) {
     const RiggedCharacter& character = rigged(GetParam().file, GetParam().wrapVertices);
     const AutoRigResult& result = character.rigged;
