@@ -64,11 +64,15 @@ const RiggedCharacter& rigged(const std::string& file,
     return found->second;
 }
 
-double diagonalOf(const TriMesh& mesh) {
+Eigen::AlignedBox3d boundsOf(const TriMesh& mesh) {
     Eigen::AlignedBox3d box;
     for (const Vec3& v : mesh.vertices)
         box.extend(v);
-    return box.diagonal().norm();
+    return box;
+}
+
+double diagonalOf(const TriMesh& mesh) {
+    return boundsOf(mesh).diagonal().norm();
 }
 
 class AutoRigCharacter : public ::testing::TestWithParam<Character> {};
@@ -145,9 +149,7 @@ TEST_P(AutoRigCharacter, EveryOriginalVertexHasPositiveWeightsSummingToOne) {
 
 // The leaves below `share` of the figure's height (y up).
 std::vector<Vec3> leavesBelow(const AutoRigResult& result, double share) {
-    Eigen::AlignedBox3d box;
-    for (const Vec3& v : result.part.mesh.vertices)
-        box.extend(v);
+    const Eigen::AlignedBox3d box = boundsOf(result.part.mesh);
     const double level = box.min().y() + share * box.sizes().y();
     std::vector<Vec3> leaves;
     for (const Joint& joint : result.part.skeleton.joints())
@@ -162,9 +164,7 @@ std::vector<Vec3> leavesBelow(const AutoRigResult& result, double share) {
 // leaves in the lowest tenth of her height (y up), one per foot.
 TEST(AutoRigSydney, EachShinEndsALegOfItsOwn) {
     const AutoRigResult& result = rigged("MD2/sydney.md2").rigged;
-    Eigen::AlignedBox3d box;
-    for (const Vec3& v : result.part.mesh.vertices)
-        box.extend(v);
+    const Eigen::AlignedBox3d box = boundsOf(result.part.mesh);
     const std::vector<Vec3> feet = leavesBelow(result, 0.1);
     ASSERT_EQ(feet.size(), 2u);
     // Each in its own foot: farther apart than a twentieth of her height.
@@ -190,9 +190,7 @@ TEST(AutoRigSydney, OnACoarserWrapNoLegEndsAtTheKnee) {
 // lowest tenth of his height (y up), one per foot, either side of him.
 TEST(AutoRigMrFixit, EachLegEndsInAFootOfItsOwn) {
     const AutoRigResult& result = rigged("IQM/mrfixit.iqm").rigged;
-    Eigen::AlignedBox3d box;
-    for (const Vec3& v : result.part.mesh.vertices)
-        box.extend(v);
+    const Eigen::AlignedBox3d box = boundsOf(result.part.mesh);
     const std::vector<Vec3> feet = leavesBelow(result, 0.1);
     ASSERT_EQ(feet.size(), 2u);
     EXPECT_GT((feet[0] - feet[1]).norm(), 0.05 * box.sizes().y());

@@ -29,6 +29,14 @@ TriMesh joined(const TriMesh& a, const TriMesh& b) {
     return mesh;
 }
 
+// The joint at the head of the bone that ends at `joint` (none at the root).
+JointId parentOf(const Skeleton& skeleton, JointId joint) {
+    for (BoneId bone : skeleton.bonesAt(joint))
+        if (skeleton.bone(bone).tail == joint)
+            return skeleton.bone(bone).head;
+    return kNoJoint;
+}
+
 // A junction with two short arms and one leg chain down the middle of
 // the proxy, as the curve skeleton of a proxy around two legs gives it.
 Skeleton figureWithOneLegChain() {
@@ -148,15 +156,9 @@ TEST(FusedLimbs, AShinTheProxyJoinedToTheOtherShinContinuesItsOwnThighsChain) {
         // junction through its own hip.
         EXPECT_NEAR(std::abs(joint.position.x()), 0.6, 0.1);
         EXPECT_LT(joint.position.z(), -8.0);
-        const auto parentOf = [&](JointId j) {
-            for (BoneId bone : skeleton.bonesAt(j))
-                if (skeleton.bone(bone).tail == j)
-                    return skeleton.bone(bone).head;
-            return kNoJoint;
-        };
         JointId up = joint.id;
-        while (parentOf(up) != kNoJoint && parentOf(up) != junction)
-            up = parentOf(up);
+        while (parentOf(skeleton, up) != kNoJoint && parentOf(skeleton, up) != junction)
+            up = parentOf(skeleton, up);
         EXPECT_EQ(up, joint.position.x() < 0.0 ? leftHip : rightHip);
     }
 }
@@ -191,19 +193,13 @@ TEST(FusedLimbs, LegsPartingLowOnAChainFromTheChestBothLeaveWhereTheyPart) {
         if (skeleton.degree(joint.id) == 1 && joint.position.z() < 0.0)
             feet.push_back(joint.id);
     ASSERT_EQ(feet.size(), 2u);
-    const auto parentOf = [&](JointId j) {
-        for (BoneId bone : skeleton.bonesAt(j))
-            if (skeleton.bone(bone).tail == j)
-                return skeleton.bone(bone).head;
-        return kNoJoint;
-    };
     // Up each leg to where it branches: the same joint, at the crotch.
     std::array<JointId, 2> parting{};
     for (int k = 0; k < 2; ++k) {
         EXPECT_NEAR(std::abs(skeleton.joint(feet[k]).position.x()), 0.6, 0.1);
-        JointId up = parentOf(feet[k]);
+        JointId up = parentOf(skeleton, feet[k]);
         while (up != kNoJoint && skeleton.degree(up) == 2)
-            up = parentOf(up);
+            up = parentOf(skeleton, up);
         ASSERT_NE(up, kNoJoint);
         parting[k] = up;
     }
