@@ -10,7 +10,12 @@ rigged and writes it as plain OBJ, without a rig:
   without a boolean: a torso, a head, two arms and two legs, each a closed
   piece, crossing each other where they meet;
 - statue.obj: a metaball figure (trunk, head, two arms) standing on the
-  ground and cut open at the bottom, as a statue made to stand on a plinth.
+  ground and cut open at the bottom, as a statue made to stand on a plinth;
+- armed.obj: a metaball figure (trunk, head, arms, legs) holding a spear
+  upright in its right hand, low on the shaft, and a sword pointing forward
+  in its left, each prop its own closed pieces (the sword's grip, crossguard
+  and blade) passing through the fist, as a game character comes with its
+  weapons.
 
 usage: blender -b --factory-startup --python-exit-code 1 \
            --python make_blender_meshes.py -- OUT_DIR
@@ -61,6 +66,16 @@ def canonical_face_order(path):
             f.write("f " + " ".join(str(c) for c in face) + "\n")
 
 
+def metaballs_to_mesh(name, data):
+    """The metaball object made of `data`, converted to a mesh object."""
+    obj = bpy.data.objects.new(name, data)
+    bpy.context.scene.collection.objects.link(obj)
+    bpy.context.view_layer.objects.active = obj
+    obj.select_set(True)
+    bpy.ops.object.convert(target="MESH")
+    return bpy.context.active_object
+
+
 def figure(out_dir):
     bpy.ops.wm.read_factory_settings(use_empty=True)
     data = bpy.data.metaballs.new("Figure")
@@ -80,12 +95,7 @@ def figure(out_dir):
         import mathutils
         limb.rotation = mathutils.Vector((1, 0, 0)).rotation_difference(
             mathutils.Vector((x, 0, z)).normalized())
-    obj = bpy.data.objects.new("Figure", data)
-    bpy.context.scene.collection.objects.link(obj)
-    bpy.context.view_layer.objects.active = obj
-    obj.select_set(True)
-    bpy.ops.object.convert(target="MESH")
-    mesh = bpy.context.active_object
+    mesh = metaballs_to_mesh("Figure", data)
     export_obj(mesh, os.path.join(out_dir, "figure.obj"))
 
 
@@ -133,12 +143,7 @@ def statue(out_dir):
         arm.size_x = 0.45
         arm.rotation = mathutils.Vector((1, 0, 0)).rotation_difference(
             mathutils.Vector((side, 0, -0.6)).normalized())
-    obj = bpy.data.objects.new("Statue", data)
-    bpy.context.scene.collection.objects.link(obj)
-    bpy.context.view_layer.objects.active = obj
-    obj.select_set(True)
-    bpy.ops.object.convert(target="MESH")
-    mesh = bpy.context.active_object
+    mesh = metaballs_to_mesh("Statue", data)
     # Open at the bottom: the faces below the plinth's top are deleted.
     b = bmesh.new()
     b.from_mesh(mesh.data)
@@ -149,6 +154,41 @@ def statue(out_dir):
     export_obj(mesh, os.path.join(out_dir, "statue.obj"))
 
 
+def capsule(data, co, radius, half_length, direction):
+    import mathutils
+    element = data.elements.new(type="CAPSULE")
+    element.co = co
+    element.radius = radius
+    element.size_x = half_length
+    element.rotation = mathutils.Vector((1, 0, 0)).rotation_difference(
+        mathutils.Vector(direction).normalized())
+
+
+def armed(out_dir):
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    data = bpy.data.metaballs.new("Armed")
+    data.resolution = 0.08
+    data.render_resolution = 0.08
+    capsule(data, (0, 0, 1.5), 0.38, 0.45, (0, 0, 1))
+    head = data.elements.new()
+    head.co = (0, 0, 2.45)
+    head.radius = 0.42
+    for side in (1, -1):
+        capsule(data, (side * 0.7, 0, 1.65), 0.18, 0.4, (side, 0, -0.6))
+        capsule(data, (side * 0.25, 0, 0.6), 0.2, 0.5, (0, 0, 1))
+    body = metaballs_to_mesh("Armed", data)
+    # The hands are the arms' far ends, about (+-1.04, 0, 1.44).
+    bpy.ops.mesh.primitive_cylinder_add(radius=0.05, depth=1.9, location=(1.06, 0, 1.99))
+    bpy.ops.mesh.primitive_cylinder_add(radius=0.045, depth=0.42, location=(-1.06, 0.02, 1.44),
+                                        rotation=(1.5708, 0, 0))
+    bpy.ops.mesh.primitive_cube_add(location=(-1.06, 0.25, 1.44), scale=(0.2, 0.03, 0.04))
+    bpy.ops.mesh.primitive_cube_add(location=(-1.06, 0.8, 1.44), scale=(0.06, 0.52, 0.012))
+    bpy.ops.object.select_all(action="SELECT")
+    bpy.context.view_layer.objects.active = body
+    bpy.ops.object.join()
+    export_obj(bpy.context.active_object, os.path.join(out_dir, "armed.obj"))
+
+
 if __name__ == "__main__":
     out = sys.argv[sys.argv.index("--") + 1]
     os.makedirs(out, exist_ok=True)
@@ -156,3 +196,4 @@ if __name__ == "__main__":
     suzanne(out)
     primitives(out)
     statue(out)
+    armed(out)

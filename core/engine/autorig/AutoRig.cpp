@@ -12,6 +12,7 @@
 #include "autorig/BonesInside.h"
 #include "autorig/CurveSkeleton.h"
 #include "autorig/FusedLimbs.h"
+#include "autorig/HeldProps.h"
 #include "autorig/WeightTransfer.h"
 #include "base/Error.h"
 #include "part/BoneWeights.h"
@@ -154,6 +155,10 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
         // (autorig/FusedLimbs).
         if (surface.kind == RigSurface::Kind::Proxy)
             fused = splitFusedLimbs(result.part.skeleton, part.mesh, surface.mainPiece);
+        // A prop gripped in a fist (an axe, a staff) is one chain on from
+        // the hand, not a branch at each of its ends (autorig/HeldProps).
+        pruneHeldProps(result.part.skeleton, part.mesh, surface.pieceOf, surface.pieces,
+                       options.bones.coverageFraction * diagonalOf(part.mesh));
     } catch (const Error& error) {
         // A blob the flow contracts to a point: a chain along its main axis.
         if (!flowGaveNoSkeleton(error.message().id))

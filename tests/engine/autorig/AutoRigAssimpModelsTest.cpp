@@ -214,6 +214,35 @@ TEST(AutoRigDwarf, RootIsInTheChestNotTheHandHoldingTheAxe) {
     }
 }
 
+// The leaves beyond `level` along the x axis, on the side `side` (+1, -1).
+int leavesBeyond(const Skeleton& skeleton, double level, double side) {
+    int leaves = 0;
+    for (const Joint& joint : skeleton.joints())
+        leaves += skeleton.degree(joint.id) == 1 && side * (joint.position.x() - level) > 0 ? 1 : 0;
+    return leaves;
+}
+
+// The axe runs through the dwarf's left fist (x about -20, z up): the
+// handle's end below the fist and the blade's two corners were leaves, the
+// hand none. The arm's chain now runs on from the hand along the axe to
+// the blade (autorig/HeldProps): one leaf on that side, no other limb
+// there.
+TEST(AutoRigHeldProps, TheDwarfsArmAndAxeEndInOneLeaf) {
+    EXPECT_EQ(leavesBeyond(rigged("COB/dwarf.cob").rigged.part.skeleton, -15.0, -1.0), 1);
+}
+
+// The Blender figure holds a spear upright in its right fist (x about
+// 1.06, y up), low on the shaft: the shaft's end below the fist was a
+// leaf beside the spear's top; only the top is one now.
+TEST(AutoRigHeldProps, TheSpearEndsInOneLeafAtItsTop) {
+    const Skeleton& skeleton = rigged(kBlenderMeshes + "armed.obj").rigged.part.skeleton;
+    EXPECT_EQ(leavesBeyond(skeleton, 0.9, 1.0), 1);
+    for (const Joint& joint : skeleton.joints())
+        if (skeleton.degree(joint.id) == 1 && joint.position.x() > 0.9) {
+            EXPECT_GT(joint.position.y(), 2.5);
+        }
+}
+
 INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
                          ::testing::Values(
                              // arms, legs, head and four wings
@@ -224,8 +253,8 @@ INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
                              Character{"OBJ/WusonOBJ.obj", 6},
                              // arms, legs, head; the axe goes with the hand
                              Character{"COB/dwarf.cob", 5,
-                                       "the helmet's horns and the axe's blade corners and "
-                                       "handle end are leaves; head and left hand have none"},
+                                       "the helmet's horns are two leaves and the head has "
+                                       "none"},
                              // arms, legs, head
                              Character{"BLEND/HUMAN.blend", 5},
                              // eight legs, the head's and the abdomen's ends
@@ -247,7 +276,10 @@ INSTANTIATE_TEST_SUITE_P(MadeInBlender, AutoRigCharacter,
                              // arms, legs, head
                              Character{kBlenderMeshes + "primitives.obj", 5},
                              // arms, head and the trunk down to the open base
-                             Character{kBlenderMeshes + "statue.obj", 4}));
+                             Character{kBlenderMeshes + "statue.obj", 4},
+                             // arms, legs, head; the spear and the sword go
+                             // with the hands that hold them
+                             Character{kBlenderMeshes + "armed.obj", 5}));
 
 // The wrap's fineness is the auto-rig's choice (a vertex budget, so a
 // time budget: ProxyWrap.h), not the character's: the same characters on
@@ -307,7 +339,8 @@ std::vector<WrapFineness> coarserAndFinerWraps() {
              "MD2/faerie.md2", "MD2/sydney.md2", "OBJ/WusonOBJ.obj", "COB/dwarf.cob",
              "BLEND/HUMAN.blend", "OBJ/spider.obj", "IQM/mrfixit.iqm", "Collada/human.zae",
              "X/fromtruespace_bin32.x", "ASE/MotionCaptureROM.ase", kBlenderMeshes + "suzanne.obj",
-             kBlenderMeshes + "primitives.obj", kBlenderMeshes + "statue.obj"})
+             kBlenderMeshes + "primitives.obj", kBlenderMeshes + "statue.obj",
+             kBlenderMeshes + "armed.obj"})
         for (int vertices : {1600, 3600})
             wraps.push_back({file, vertices});
     return wraps;
