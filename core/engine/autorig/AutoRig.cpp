@@ -153,12 +153,14 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
         // Limbs a small gap apart are one on the proxy (it bridges gaps
         // narrower than alpha) but two in the mesh: their chain becomes two
         // (autorig/FusedLimbs).
-        if (surface.kind == RigSurface::Kind::Proxy)
+        if (surface.kind == RigSurface::Kind::Proxy) {
             fused = splitFusedLimbs(result.part.skeleton, part.mesh, surface.mainPiece);
-        // A prop gripped in a fist (an axe, a staff) is one chain on from
-        // the hand, not a branch at each of its ends (autorig/HeldProps).
-        pruneHeldProps(result.part.skeleton, part.mesh, surface.pieceOf, surface.pieces,
-                       options.bones.coverageFraction * diagonalOf(part.mesh));
+            // A prop gripped in a fist (an axe, a staff) is one chain on
+            // from the hand, not a branch at each of its ends
+            // (autorig/HeldProps).
+            pruneHeldProps(result.part.skeleton, part.mesh, surface.pieceOf, surface.pieces,
+                           options.bones.coverageFraction * diagonalOf(part.mesh));
+        }
     } catch (const Error& error) {
         // A blob the flow contracts to a point: a chain along its main axis.
         if (!flowGaveNoSkeleton(error.message().id))

@@ -23,6 +23,9 @@ constexpr double kInsideWinding = 0.5;
 constexpr double kCoverageShare = 0.9;
 // Points along a prop's axis tested for lying in the fist.
 constexpr int kAxisSamples = 64;
+// A held prop is long and thin (a handle, a shaft): a piece less elongated
+// (a shoe with toe and heel, a helmet, shorts) is no prop.
+constexpr double kLeastElongation = 3.0;
 
 // The mesh's pieces, each with its own faces and vertices.
 struct Piece {
@@ -30,6 +33,9 @@ struct Piece {
     Eigen::AlignedBox3d box;
     Vec3 centroid = Vec3::Zero();
     Vec3 axis = Vec3::UnitX();  // the main direction of its vertices
+    // The spread along the axis over the spread across it (standard
+    // deviations): a shaft 7 radii long has 3.
+    double elongation = 0.0;
 };
 
 std::vector<Piece> piecesOf(const TriMesh& mesh, const std::vector<int>& pieceOf, int count) {
@@ -57,8 +63,11 @@ std::vector<Piece> piecesOf(const TriMesh& mesh, const std::vector<int>& pieceOf
         for (const Vec3& p : points)
             covariance += (p - piece.centroid) * (p - piece.centroid).transpose();
         // Eigenvalues come in increasing order: the last vector is the axis.
-        piece.axis =
-            Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors().col(2);
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+        piece.axis = solver.eigenvectors().col(2);
+        const double across = std::max(solver.eigenvalues()(1), 0.0);
+        piece.elongation = across > 0.0 ? std::sqrt(solver.eigenvalues()(2) / across)
+                                        : std::numeric_limits<double>::infinity();
     }
     return pieces;
 }
@@ -149,18 +158,6 @@ double reachFrom(const Skeleton& skeleton, const std::vector<JointId>& joints, c
     return reach;
 }
 
-double farthestFrom(const std::vector<Vec3>& points, const Skeleton& skeleton) {
-    const std::vector<BoneSegment> bones = segmentsOf(skeleton);
-    double farthest = 0.0;
-    for (const Vec3& p : points) {
-        double nearest = std::numeric_limits<double>::infinity();
-        for (const BoneSegment& bone : bones)
-            nearest = std::min(nearest, pointSegmentDistance(p, bone));
-        farthest = std::max(farthest, nearest);
-    }
-    return farthest;
-}
-
 // The piece a branch runs in, outside `armPieces`: the one holding most
 // of its joints, at least half of them; -1 for none.
 int branchPiece(const std::vector<JointId>& branch, const std::map<JointId, std::set<int>>& inside,
@@ -203,7 +200,7 @@ std::optional<Grip> findGrip(const Skeleton& skeleton, const Tree& tree,
         for (std::size_t i = 0; i < children.size(); ++i) {
             const std::vector<JointId> first = branchFrom(tree, children[i]);
             const int piece = branchPiece(first, inside, armPieces);
-            if (piece < 0)
+            if (piece < 0 || pieces[piece].elongation < kLeastElongation)
                 continue;
             const Vec3& axis = pieces[piece].axis;
             const double side = (skeleton.joint(first.back()).position - at).dot(axis);
@@ -259,13 +256,64 @@ std::optional<Vec3> gripCentre(const std::vector<Piece>& pieces, int prop, const
     return best;
 }
 
-// Removes `top`'s subtree when the prop's points stay covered without it.
-bool pruneIfCovered(Skeleton& skeleton, const std::vector<JointId>& subtree,
-                    const std::vector<Vec3>& propPoints, double coverage) {
+// The skeleton's bones that carry a prop held at `hand`: those of the
+// chain from the root to the hand and those below the hand.
+std::vector<BoneSegment> carryingBones(const Skeleton& skeleton, JointId hand) {
+    const Tree tree = treeOf(skeleton);
+    std::set<JointId> carrying;
+    for (JointId joint : subtreeOf(tree, hand))
+        carrying.insert(joint);
+    for (JointId joint = tree.parent.at(hand); joint != kNoJoint; joint = tree.parent.at(joint))
+        carrying.insert(joint);
+    std::vector<BoneSegment> bones;
+    for (const Bone& bone : skeleton.bones())
+        if (carrying.contains(bone.head) && carrying.contains(bone.tail))
+            bones.push_back(segmentOf(skeleton, bone));
+    return bones;
+}
+
+double farthestFrom(const std::vector<Vec3>& points, const std::vector<BoneSegment>& bones) {
+    double farthest = 0.0;
+    for (const Vec3& p : points) {
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const BoneSegment& bone : bones)
+            nearest = std::min(nearest, pointSegmentDistance(p, bone));
+        farthest = std::max(farthest, nearest);
+    }
+    return farthest;
+}
+
+// What a removal may take and must keep covered.
+struct Prop {
+    std::set<int> pieces;      // the prop's pieces
+    std::vector<Vec3> points;  // the prop's vertices
+};
+
+// Removes `subtree` (breadth first from its top) when it is the prop's:
+// a plain chain from its top until it enters the prop (the stretch in the
+// fist), every joint from there on in the prop's pieces, and when the
+// prop's points stay covered by the bones that carry it.
+bool pruneIfCovered(Skeleton& skeleton, const Tree& tree, const std::vector<JointId>& subtree,
+                    const Prop& prop, const std::map<JointId, std::set<int>>& inside, JointId hand,
+                    double coverage) {
+    const auto inProp = [&](JointId joint) {
+        const std::set<int>& in = inside.at(joint);
+        return std::any_of(in.begin(), in.end(), [&](int p) { return prop.pieces.contains(p); });
+    };
+    JointId entry = subtree.front();
+    while (!inProp(entry)) {
+        const std::vector<JointId> next = childrenOf(tree, entry);
+        if (next.size() != 1)
+            return false;
+        entry = next.front();
+    }
+    for (JointId joint : subtreeOf(tree, entry))
+        if (!inProp(joint))
+            return false;
     Skeleton pruned = skeleton;
     for (JointId joint : subtree)
         pruned.removeJoint(joint);
-    if (farthestFrom(propPoints, pruned) > kCoverageShare * coverage)
+    if (farthestFrom(prop.points, carryingBones(pruned, hand)) > kCoverageShare * coverage)
         return false;
     skeleton = std::move(pruned);
     return true;
@@ -287,58 +335,60 @@ HeldPropsReport pruneHeldProps(Skeleton& skeleton, const TriMesh& mesh,
         const std::optional<Grip> grip = findGrip(skeleton, tree, meshPieces, inside, done);
         if (!grip)
             break;
-        done.insert(grip->hand);
         ++report.grips;
-        const std::set<int>& armPieces = inside.at(tree.parent.at(grip->hand));
-        const Vec3 flowHand = skeleton.joint(grip->hand).position;
-        // The hand's joint is the grip's pivot: the middle of the stretch
-        // of the prop's axis that the fist holds, the run nearest the joint.
-        const Vec3 hand =
-            gripCentre(meshPieces, grip->piece, armPieces, flowHand).value_or(flowHand);
+        const JointId arm = tree.parent.at(grip->hand);
         // The prop: every piece its branches run in, but the arm's.
         std::array<std::vector<JointId>, 2> subtrees{subtreeOf(tree, grip->ends[0]),
                                                      subtreeOf(tree, grip->ends[1])};
-        std::set<int> propPieces;
+        done.insert(grip->hand);
+        for (const std::vector<JointId>& subtree : subtrees)
+            done.insert(subtree.begin(), subtree.end());
+        Prop prop;
+        const std::set<int>& armPieces = inside.at(arm);
         for (const std::vector<JointId>& subtree : subtrees)
             for (JointId joint : subtree)
                 for (int p : inside.at(joint))
                     if (!armPieces.contains(p))
-                        propPieces.insert(p);
-        std::vector<Vec3> propPoints;
-        for (int p : propPieces)
-            propPoints.insert(propPoints.end(), meshPieces[p].mesh.vertices.begin(),
-                              meshPieces[p].mesh.vertices.end());
+                        prop.pieces.insert(p);
+        for (int p : prop.pieces)
+            prop.points.insert(prop.points.end(), meshPieces[p].mesh.vertices.begin(),
+                               meshPieces[p].mesh.vertices.end());
+        // The hand's joint is the grip's pivot: the middle of the stretch
+        // of the prop's axis that the fist holds (the arm's pieces or the
+        // hand's own), the run nearest the joint.
+        std::set<int> fist = armPieces;
+        fist.insert(inside.at(grip->hand).begin(), inside.at(grip->hand).end());
+        fist.erase(grip->piece);
+        const Vec3 flowHand = skeleton.joint(grip->hand).position;
+        const Vec3 pivot = gripCentre(meshPieces, grip->piece, fist, flowHand).value_or(flowHand);
         // The prop's short end (below the fist) goes first; the chain runs
         // on to the far end.
         const bool firstFarther =
-            reachFrom(skeleton, subtrees[0], hand) >= reachFrom(skeleton, subtrees[1], hand);
+            reachFrom(skeleton, subtrees[0], pivot) >= reachFrom(skeleton, subtrees[1], pivot);
         const std::vector<JointId>& shortEnd = subtrees[firstFarther ? 1 : 0];
         const JointId farEnd = grip->ends[firstFarther ? 0 : 1];
-        skeleton.setJointPosition(grip->hand, hand);
-        if (pruneIfCovered(skeleton, shortEnd, propPoints, coverage))
-            ++report.branchesPruned;
-        else
+        skeleton.setJointPosition(grip->hand, pivot);
+        if (!pruneIfCovered(skeleton, tree, shortEnd, prop, inside, grip->hand, coverage)) {
+            // No grip after all: the skeleton stays as the flow made it.
             skeleton.setJointPosition(grip->hand, flowHand);
-        // Beyond the hand, a prop all outside the arm is one chain: at each
-        // junction the branch reaching farthest from the hand stays.
-        const std::vector<JointId> beyond = subtreeOf(tree, farEnd);
-        if (std::any_of(beyond.begin(), beyond.end(), [&](JointId joint) {
-                return std::any_of(armPieces.begin(), armPieces.end(),
-                                   [&](int p) { return inside.at(joint).contains(p); });
-            }))
             continue;
-        for (JointId junction : beyond) {
+        }
+        ++report.branchesPruned;
+        // Beyond the hand the prop is one chain: at each junction the
+        // branch reaching farthest from the hand stays.
+        for (JointId junction : subtreeOf(tree, farEnd)) {
             if (!skeleton.hasJoint(junction))
                 continue;
             std::vector<JointId> children = childrenOf(tree, junction);
             if (children.size() < 2)
                 continue;
             std::sort(children.begin(), children.end(), [&](JointId a, JointId b) {
-                return reachFrom(skeleton, subtreeOf(tree, a), hand) >
-                       reachFrom(skeleton, subtreeOf(tree, b), hand);
+                return reachFrom(skeleton, subtreeOf(tree, a), pivot) >
+                       reachFrom(skeleton, subtreeOf(tree, b), pivot);
             });
             for (std::size_t i = 1; i < children.size(); ++i)
-                if (pruneIfCovered(skeleton, subtreeOf(tree, children[i]), propPoints, coverage))
+                if (pruneIfCovered(skeleton, tree, subtreeOf(tree, children[i]), prop, inside,
+                                   grip->hand, coverage))
                     ++report.branchesPruned;
         }
     }

@@ -9,16 +9,20 @@
 // A held prop is one rigid object carried by the hand: its chain is the
 // arm's own, continued from the hand along the prop to its far end (a
 // weapon bone), and its other branches go, the short end below the fist and
-// the corners of a blade, as long as every vertex of the prop stays as near
-// a bone as the auto-rig's coverage asks (autorig/BoneCoverage): a staff
-// held in its middle, whose lower half reaches far from the hand, keeps a
-// bone in each half.
+// the corners of a blade. A branch goes only when it is the prop's (a plain
+// chain from the hand into the prop, every joint from there on in the
+// prop's pieces: never a joint of the body) and every vertex of the prop
+// stays as near a bone of the arm's chain or the prop as the auto-rig's
+// coverage asks (autorig/BoneCoverage): a staff held in its middle, whose
+// lower half reaches far from the hand, keeps a bone in each half.
 //
 // A grip is a joint where two branches run into the same piece of the mesh
 // that the chain arriving there (the arm) is not in, on opposite sides of
-// the joint along that piece's main axis. Pieces are the mesh's own (faces
-// connected over coincident vertices, autorig/RigSurface); a joint is in a
-// piece when the piece's winding number there is over a half.
+// the joint along that piece's main axis, the piece long and thin (a
+// handle, a shaft; not a shoe under an ankle or a helmet). Pieces are the
+// mesh's own (faces connected over coincident vertices,
+// autorig/RigSurface); a joint is in a piece when the piece's winding number
+// there is over a half, or, in none, in the piece of its nearest vertex.
 #pragma once
 
 #include <vector>

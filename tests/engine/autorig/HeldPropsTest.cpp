@@ -115,6 +115,72 @@ TEST(HeldProps, BranchesIntoTwoPiecesAreNoGrip) {
     EXPECT_EQ(figure.skeleton.degree(figure.hand), 3);
 }
 
+// Two branches into the staff on the same side of the hand (both up it)
+// are no grip: a fork, not a shaft passing through the fist.
+TEST(HeldProps, TwoBranchesOnOneSideOfTheHandAreNoGrip) {
+    Figure figure = armHoldingStaff(-1.0);
+    Skeleton& skeleton = figure.skeleton;
+    skeleton.removeJoint(figure.staffBottom);
+    const JointId fork = skeleton.addJoint(Vec3(3.8, 0, 1.2));
+    skeleton.addBone(figure.hand, fork);
+    const Skeleton before = skeleton;
+    const HeldPropsReport report =
+        pruneHeldProps(skeleton, figure.mesh, figure.pieceOf, figure.pieces, 1.5);
+    EXPECT_EQ(report.grips, 0);
+    EXPECT_EQ(skeleton.jointCount(), before.jointCount());
+}
+
+// A short, thick piece across the hand (a shoe under an ankle, with toe
+// and heel either side) is no prop: a prop is long and thin.
+TEST(HeldProps, AShortThickPieceIsNoProp) {
+    Figure figure;
+    addPiece(figure, makeCylinderTube(9, 16, 0.5, 4.0),
+             [](const Vec3& v) { return Vec3(v.z() + 2.0, v.y(), -v.x()); });
+    // A shoe 1.6 long and 0.4 thick (radius) along z through the arm's end.
+    addPiece(figure, makeCylinderTube(9, 16, 0.4, 1.6),
+             [](const Vec3& v) { return Vec3(v.x() + 3.8, v.y(), v.z() + 0.1); });
+    Skeleton& skeleton = figure.skeleton;
+    const JointId shoulder = skeleton.addJoint(Vec3(0.2, 0, 0));
+    const JointId ankle = skeleton.addJoint(Vec3(3.6, 0, 0.0));
+    const JointId toe = skeleton.addJoint(Vec3(3.8, 0, 0.8));
+    const JointId heel = skeleton.addJoint(Vec3(3.8, 0, -0.6));
+    skeleton.addBone(shoulder, ankle);
+    skeleton.addBone(ankle, toe);
+    skeleton.addBone(ankle, heel);
+    skeleton.setRoot(shoulder);
+    const HeldPropsReport report =
+        pruneHeldProps(skeleton, figure.mesh, figure.pieceOf, figure.pieces, 1.5);
+    EXPECT_EQ(report.grips, 0);
+    EXPECT_TRUE(skeleton.hasJoint(heel));
+}
+
+// The staff's lower end runs on into the body (a thigh of the arm's own
+// piece, below the fist): removing it would take a joint of the body, so
+// nothing goes and nothing moves.
+TEST(HeldProps, AnEndThatRunsOnIntoTheBodyStays) {
+    Figure figure = armHoldingStaff(-1.0);
+    // The thigh: a cylinder along x at z = -1.5, of the arm's piece (0).
+    const int offset = figure.mesh.vertexCount();
+    const TriMesh thigh = makeCylinderTube(9, 16, 0.3, 2.0);
+    for (const Vec3& v : thigh.vertices) {
+        figure.mesh.vertices.push_back(Vec3(v.z() + 3.5, v.y(), -v.x() - 1.5));
+        figure.pieceOf.push_back(0);
+    }
+    for (const auto& [a, b, c] : thigh.faces)
+        figure.mesh.faces.push_back({a + offset, b + offset, c + offset});
+    Skeleton& skeleton = figure.skeleton;
+    const JointId inThigh = skeleton.addJoint(Vec3(3.8, 0, -1.5));
+    skeleton.addBone(figure.staffBottom, inThigh);
+    const Skeleton before = skeleton;
+    const HeldPropsReport report =
+        pruneHeldProps(skeleton, figure.mesh, figure.pieceOf, figure.pieces, 1.5);
+    EXPECT_EQ(report.branchesPruned, 0);
+    for (const Joint& joint : before.joints()) {
+        ASSERT_TRUE(skeleton.hasJoint(joint.id));
+        EXPECT_EQ(skeleton.joint(joint.id).position, joint.position);
+    }
+}
+
 // An axe: a flat round blade (its own piece) on the staff's top, which the
 // flow splits at its two corners. The prop is one chain: the corner
 // farther from the hand stays.
@@ -125,10 +191,11 @@ TEST(HeldProps, ABladeOnAHeldShaftKeepsOnlyItsFarthestCorner) {
              [](const Vec3& v) { return Vec3(v.x() + 3.8, -v.z(), v.y() + 4.5); });
     Skeleton& skeleton = figure.skeleton;
     skeleton.setJointPosition(figure.staffTop, Vec3(3.8, 0, 4.3));
-    const JointId farCorner = skeleton.addJoint(Vec3(3.3, 0, 4.9));
+    // The near corner first: the rule keeps the farther, not the first.
     const JointId nearCorner = skeleton.addJoint(Vec3(4.4, 0, 4.3));
-    skeleton.addBone(figure.staffTop, farCorner);
+    const JointId farCorner = skeleton.addJoint(Vec3(3.3, 0, 4.9));
     skeleton.addBone(figure.staffTop, nearCorner);
+    skeleton.addBone(figure.staffTop, farCorner);
     const HeldPropsReport report =
         pruneHeldProps(skeleton, figure.mesh, figure.pieceOf, figure.pieces, 1.5);
     EXPECT_EQ(report.grips, 1);
