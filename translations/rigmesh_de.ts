@@ -2087,6 +2087,10 @@
         <source>The chain of joint %1 hangs from chains that hang from it.</source>
         <translation>Die Kette von Gelenk %1 hängt an Ketten, die an ihr hängen.</translation>
     </message>
+    <message>
+        <source>%1 props held in a hand (a handle through the fist) rigged as the arm&apos;s chain on to their far end</source>
+        <translation>%1 in einer Hand gehaltene Gegenstände (ein Griff durch die Faust) als Kette des Arms bis zu ihrem fernen Ende geriggt</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>

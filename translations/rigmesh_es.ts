@@ -2087,6 +2087,10 @@
         <source>The chain of joint %1 hangs from chains that hang from it.</source>
         <translation>La cadena de la articulación %1 cuelga de cadenas que cuelgan de ella.</translation>
     </message>
+    <message>
+        <source>%1 props held in a hand (a handle through the fist) rigged as the arm&apos;s chain on to their far end</source>
+        <translation>%1 objetos sujetos en una mano (un mango a través del puño) riggeados como la cadena del brazo hasta su extremo</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>

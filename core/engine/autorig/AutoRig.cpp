@@ -146,6 +146,7 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
             return f[0] == f[1] || f[1] == f[2] || f[0] == f[2];
         }));
     FusedLimbsReport fused;
+    int propsHeld = 0;
     try {
         const CurveSkeleton curve =
             extractCurveSkeleton(surface.mainPiece, stage(progress, kSurfaceDone, kSkeletonDone));
@@ -158,8 +159,10 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
             // A prop gripped in a fist (an axe, a staff) is one chain on
             // from the hand, not a branch at each of its ends
             // (autorig/HeldProps).
-            pruneHeldProps(result.part.skeleton, part.mesh, surface.pieceOf, surface.pieces,
-                           options.bones.coverageFraction * diagonalOf(part.mesh));
+            propsHeld =
+                pruneHeldProps(result.part.skeleton, part.mesh, surface.pieceOf, surface.pieces,
+                               options.bones.coverageFraction * diagonalOf(part.mesh))
+                    .propsHeld;
         }
     } catch (const Error& error) {
         // A blob the flow contracts to a point: a chain along its main axis.
@@ -232,6 +235,8 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
         result.repairs.push_back(
             {MessageId::AutoRigRepairDegenerate, {messageArgument(repeating)}});
     notePieces(following, part.name, result.repairs);
+    if (propsHeld > 0)
+        result.repairs.push_back({MessageId::AutoRigHeldProps, {messageArgument(propsHeld)}});
     result.rigSurface = std::move(surface.mesh);
     result.surfaceKind = surface.kind;
     const std::vector<Message> problems = result.part.validate();

@@ -373,6 +373,7 @@ HeldPropsReport pruneHeldProps(Skeleton& skeleton, const TriMesh& mesh,
             skeleton.setJointPosition(grip->hand, flowHand);
             continue;
         }
+        ++report.propsHeld;
         ++report.branchesPruned;
         // Beyond the hand the prop is one chain: at each junction the
         // branch reaching farthest from the hand stays.

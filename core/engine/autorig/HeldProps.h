@@ -34,6 +34,7 @@ namespace rigmesh {
 
 struct HeldPropsReport {
     int grips = 0;           // joints found gripping a prop
+    int propsHeld = 0;       // of them, those whose prop became one chain
     int branchesPruned = 0;  // the props' ends and side branches removed
 };
 

@@ -99,6 +99,11 @@ const char* autoRigMessageTemplate(MessageId id) {
         case MessageId::AutoRigMorePiecesFollowBones:
             return RIGMESH_TRANSLATABLE("EngineMessage",
                                         "%1 more small pieces follow one bone each");
+        case MessageId::AutoRigHeldProps:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "%1 props held in a hand (a handle through the fist) rigged as the arm's "
+                "chain on to their far end");
         default:
             return nullptr;
     }

@@ -174,6 +174,7 @@ enum class MessageId {
     AutoRigProxyApart,
     AutoRigPiecesFollowBone,
     AutoRigMorePiecesFollowBones,
+    AutoRigHeldProps,
 
     // Documents, parts and commands (model/, model/commands/)
     DocumentNoSuchPart,
