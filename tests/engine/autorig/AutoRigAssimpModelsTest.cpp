@@ -243,6 +243,23 @@ TEST(AutoRigHeldProps, TheSpearEndsInOneLeafAtItsTop) {
         }
 }
 
+// The user is told what became of a held prop, once per prop; a figure
+// without one is not.
+TEST(AutoRigHeldProps, TheResultSaysWhichPropsAreHeld) {
+    const auto heldProps = [](const AutoRigResult& result) {
+        int notes = 0;
+        for (const Message& note : result.repairs)
+            if (note.id == MessageId::AutoRigHeldProps) {
+                ++notes;
+                EXPECT_EQ(note.args, std::vector<std::string>{"1"});
+            }
+        return notes;
+    };
+    EXPECT_EQ(heldProps(rigged("COB/dwarf.cob").rigged), 1);
+    EXPECT_EQ(heldProps(rigged(kBlenderMeshes + "armed.obj").rigged), 1);
+    EXPECT_EQ(heldProps(rigged("MD2/sydney.md2").rigged), 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
                          ::testing::Values(
                              // arms, legs, head and four wings
