@@ -1,12 +1,12 @@
 #include "autorig/AxisChain.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "autorig/JointsInside.h"
 #include "base/Error.h"
+#include "geometry/PrincipalAxes.h"
 #include "rig/BoneSegment.h"
 
 namespace rigmesh {
@@ -15,15 +15,10 @@ Skeleton mainAxisChain(const TriMesh& mesh) {
     const int n = mesh.vertexCount();
     if (n < 4)
         throw Error(MessageId::AutoRigTooFewVertices);
-    Vec3 centroid = Vec3::Zero();
-    for (const Vec3& v : mesh.vertices)
-        centroid += v;
-    centroid /= n;
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (const Vec3& v : mesh.vertices)
-        covariance += (v - centroid) * (v - centroid).transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-    const Vec3 axis = solver.eigenvectors().col(2).normalized();  // the largest eigenvalue
+    const PrincipalAxes principal = principalAxesOf(mesh.vertices);
+    const Vec3& centroid = principal.centroid;
+    // The largest eigenvalue's.
+    const Vec3 axis = principal.scatter.eigenvectors().col(2).normalized();
     std::vector<double> along(n);
     double radiusSum = 0.0;
     for (int v = 0; v < n; ++v) {

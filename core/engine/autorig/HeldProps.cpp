@@ -1,6 +1,5 @@
 #include "autorig/HeldProps.h"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
@@ -10,6 +9,7 @@
 #include <set>
 
 #include "autorig/JointsInside.h"
+#include "geometry/PrincipalAxes.h"
 #include "rig/BoneSegments.h"
 
 namespace rigmesh {
@@ -56,14 +56,10 @@ std::vector<Piece> piecesOf(const TriMesh& mesh, const std::vector<int>& pieceOf
         const std::vector<Vec3>& points = piece.mesh.vertices;
         if (points.empty())
             continue;
-        for (const Vec3& p : points)
-            piece.centroid += p;
-        piece.centroid /= static_cast<double>(points.size());
-        Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-        for (const Vec3& p : points)
-            covariance += (p - piece.centroid) * (p - piece.centroid).transpose();
         // Eigenvalues come in increasing order: the last vector is the axis.
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+        const PrincipalAxes principal = principalAxesOf(points);
+        const auto& solver = principal.scatter;
+        piece.centroid = principal.centroid;
         piece.axis = solver.eigenvectors().col(2);
         const double across = std::max(solver.eigenvalues()(1), 0.0);
         piece.elongation = across > 0.0 ? std::sqrt(solver.eigenvalues()(2) / across)

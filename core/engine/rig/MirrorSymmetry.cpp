@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/PrincipalAxes.h"
 #include "mesh/VertexTree.h"
 #include "part/Part.h"
 
@@ -183,14 +184,9 @@ std::optional<MirrorFit> findMirrorPlane(const TriMesh& mesh, const MirrorSearch
     const double diagonal = diagonalOf(mesh.vertices);
     if (!(diagonal > 0.0))
         return std::nullopt;
-    Vec3 centroid = Vec3::Zero();
-    for (const Vec3& p : mesh.vertices)
-        centroid += p;
-    centroid /= mesh.vertexCount();
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (const Vec3& p : mesh.vertices)
-        covariance += (p - centroid) * (p - centroid).transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> pca(covariance);
+    const PrincipalAxes principal = principalAxesOf(mesh.vertices);
+    const Vec3& centroid = principal.centroid;
+    const auto& pca = principal.scatter;
 
     const SurfaceDistance distance(mesh);
     const std::vector<int> sample = sampleOf(mesh);
