@@ -34,14 +34,16 @@ const LastMerge& lastMerge() {
     return testsupport::lastCamelMerge();
 }
 
-void unionAndSmoothing(benchmark::State& state) {
+// `Whole` is CGAL's union of the whole surfaces, for comparison with the
+// near union every merge runs (merge/NearOverlapUnion.h).
+void unionAndSmoothing(benchmark::State& state, UnionScope scope) {
     const LastMerge& m = lastMerge();
     const MergeResult reference = mergeParts(m.body, m.head, m.request);
     Part head = m.head;
     for (Vec3& p : head.mesh.vertices)
         p += reference.draggedTranslation;
     for (auto _ : state) {
-        MeshUnionResult merged = unionMeshes(m.body.mesh, head.mesh, m.request.edgeLength);
+        MeshUnionResult merged = unionMeshes(m.body.mesh, head.mesh, m.request.edgeLength, scope);
         benchmark::DoNotOptimize(smoothSeam(merged.mesh, merged.loop));
     }
     state.counters["vertices"] = reference.stats.vertices;
@@ -143,8 +145,11 @@ BENCHMARK_CAPTURE(cutCamel, sharp, CutStyle::Sharp)
 BENCHMARK(splitBone)->Name("Edit/camel/split_bone")->Unit(benchmark::kMillisecond);
 BENCHMARK(deleteBone)->Name("Edit/camel/delete_bone")->Unit(benchmark::kMillisecond);
 
-BENCHMARK(unionAndSmoothing)
+BENCHMARK_CAPTURE(unionAndSmoothing, near, UnionScope::NearOverlap)
     ->Name("Merge/camel_head/union_and_smoothing")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(unionAndSmoothing, whole, UnionScope::Whole)
+    ->Name("Merge/camel_head/union_and_smoothing_whole_union")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(reskinStage, local, Reskin::Local)
     ->Name("Merge/camel_head/local_reskin")

@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <cstring>
 #include <numeric>
+#include <optional>
 #include <tuple>
 #include <unordered_map>
 
 #include "base/Error.h"
+#include "merge/NearOverlapUnion.h"
 #include "mesh/CgalSurfaceMesh.h"
 #include "mesh/MeshChecks.h"
 
@@ -160,9 +162,9 @@ MeshUnionResult canonicalResult(const SurfaceMesh& mesh,
     return canonicalOrder(positions, sources, faces, loop);
 }
 
-}  // namespace
-
-MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double seamEdgeLength) {
+// CGAL's union of the whole surfaces; throws the merge's messages when they
+// do not cross or the result is not a manifold.
+MeshUnionResult wholeUnion(const TriMesh& first, const TriMesh& second) {
     SurfaceMesh a =
         toSurfaceMesh(first, MessageId::TargetSurfaceNotManifold, MessageId::TargetSurfaceHasHole);
     SurfaceMesh b = toSurfaceMesh(second, MessageId::DraggedSurfaceNotManifold,
@@ -203,6 +205,19 @@ MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double 
             throw Error(MessageId::MergePartsApart);
         throw Error(MessageId::MergePartInside);
     }
+    return result;
+}
+
+}  // namespace
+
+MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double seamEdgeLength,
+                            UnionScope scope) {
+    std::optional<UnionSoup> soup;
+    if (scope == UnionScope::NearOverlap)
+        soup = unionNearOverlap(first, second);
+    MeshUnionResult result =
+        soup ? canonicalOrder(soup->positions, soup->sources, soup->faces, soup->loop)
+             : wholeUnion(first, second);
     // The closest input triangle of each new vertex: a loop vertex lies on
     // both inputs, a remeshed one on the submesh below (CGAL projects it
     // there), up to rounding; so only triangles whose boxes meet that

@@ -26,6 +26,12 @@ struct MeshUnionResult {
 // the other), when either is not a closed surface free of self-intersections,
 // or when the union would not be a manifold. `seamEdgeLength` > 0 remeshes the
 // faces within two edges of the loop to that length; 0 keeps the raw seam.
-MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double seamEdgeLength);
+//
+// `NearOverlap` corefines only the faces near the overlap when it can
+// (merge/NearOverlapUnion.h) and CGAL's whole union otherwise; `Whole`
+// always runs the whole union. Both give the same mesh.
+enum class UnionScope { NearOverlap, Whole };
+MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double seamEdgeLength,
+                            UnionScope scope = UnionScope::NearOverlap);
 
 }  // namespace rigmesh

@@ -1,0 +1,51 @@
+// The union of two closed surfaces computed on the faces near their overlap
+// (paper 3.2.1, the same union merge/MeshUnion asks CGAL for). A face whose
+// box misses the other surface's box lies outside that surface, so it is
+// kept as it is; only the faces whose boxes meet the other box are
+// corefined (CGAL's exact corefinement, which splits them along the
+// intersection loops), and each piece they fall into between loops is kept
+// or dropped by which side of the other surface it lies on: pieces joined to
+// the far faces lie outside, crossing a loop changes the side, and a piece
+// out of reach of both is told by a ray cast to the whole other surface.
+// On the camel's head and body this is a fifth of the faces CGAL's whole
+// union corefines and copies.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "mesh/TriMesh.h"
+#include "part/VertexSource.h"
+
+namespace rigmesh {
+
+// The union as a soup: the inputs' kept vertices and the loops' new ones
+// (sources: Vertex for an input vertex, `first` winning where both have one
+// at a position; New for a loop vertex of neither), the kept and split faces,
+// and the loop edges. Faces and loop index `positions`; every position is
+// used by a face.
+struct UnionSoup {
+    std::vector<Vec3> positions;
+    VertexSources sources;
+    std::vector<std::array<int, 3>> faces;
+    std::vector<std::array<int, 2>> loop;
+};
+
+// The union of closed, oriented, manifold `first` and `second`, or nothing
+// when this way cannot answer for sure and CGAL's whole union should: an
+// input that is not a closed oriented manifold, surfaces whose boxes do not
+// overlap or that do not cross, a touching that is not a plain crossing (a
+// vertex on the other surface, coplanar faces), a piece whose side no test
+// settles, or a result that is not a closed oriented manifold whose volume
+// lies between the larger input's and their sum. Throws
+// Error(MergeSelfIntersecting) where CGAL's corefinement finds crossing faces
+// within either input along the loops, as the whole union does.
+std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& second);
+
+// True when every face has three distinct corners in range, every directed
+// edge occurs once with its reverse once, and the faces around each used
+// vertex form one fan: what CGAL's Surface_mesh builds as a closed surface.
+bool isClosedOrientedManifold(const TriMesh& mesh);
+
+}  // namespace rigmesh

@@ -1,0 +1,136 @@
+// The union on the faces near the overlap gives CGAL's whole union bit for
+// bit (positions, faces, sources, loop), or leaves it to the whole union
+// where it cannot answer for sure; a merge's refusals are the same.
+#include <random>
+
+#include "MergeTestSupport.h"
+#include "TestShapes.h"
+#include "UnionComparison.h"
+#include "merge/NearOverlapUnion.h"
+
+namespace rigmesh::mergetest {
+namespace {
+
+using testsupport::expectBothScopesAgree;
+
+// Shared sketch parts turned and placed at random about each other's
+// joints (as MergeRandom places them): every pair that crosses.
+TEST(NearOverlapUnion, RandomPlacementsGiveTheWholeUnionsMesh) {
+    std::mt19937 random(20261129);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const std::vector<std::string> sketches{"biped", "banana", "tube", "y_branch", "camel_leg"};
+    int answered = 0;
+    for (int trial = 0; trial < 20; ++trial) {
+        const Part& target = sharedSketchPart(sketches[trial % sketches.size()]);
+        Part dragged = rotated(sharedSketchPart(sketches[(trial / 2 + 1) % sketches.size()]),
+                               Vec3(unit(random), unit(random), unit(random)), 3.0 * unit(random));
+        const Joint& anchor = target.skeleton.joints()[trial % target.skeleton.jointCount()];
+        dragged = translated(dragged, anchor.position +
+                                          0.3 * Vec3(unit(random), unit(random), unit(random)) -
+                                          dragged.skeleton.joints().front().position);
+        const std::string label = "trial " + std::to_string(trial);
+        expectBothScopesAgree(target.mesh, dragged.mesh, 0.0, label + " raw seam");
+        if (trial % 4 == 0)
+            expectBothScopesAgree(target.mesh, dragged.mesh, 0.1, label + " remeshed seam");
+        if (unionNearOverlap(target.mesh, dragged.mesh))
+            ++answered;
+    }
+    // The near union answers for nearly all of them (else it saves nothing).
+    EXPECT_GE(answered, 16);
+}
+
+TriMesh moved(TriMesh mesh, const Eigen::Matrix3d& turn, const Vec3& offset) {
+    for (Vec3& p : mesh.vertices)
+        p = turn * p + offset;
+    return mesh;
+}
+
+// An axis-aligned box, outward, two triangles a side.
+TriMesh box(const Vec3& low, const Vec3& high) {
+    TriMesh mesh;
+    for (int corner = 0; corner < 8; ++corner)
+        mesh.vertices.emplace_back(corner & 1 ? high.x() : low.x(), corner & 2 ? high.y() : low.y(),
+                                   corner & 4 ? high.z() : low.z());
+    mesh.faces = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                  {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+    return mesh;
+}
+
+const Eigen::Matrix3d kStanding = Eigen::AngleAxisd(0.5 * M_PI, Vec3::UnitX()).toRotationMatrix();
+
+// Two rings standing across each other cross in two loops, each ring's tube
+// cut twice; the pieces inside are reached across the loops.
+TEST(NearOverlapUnion, RingsCrossingInTwoLoopsGiveTheWholeUnionsMesh) {
+    const TriMesh lying = testshapes::torus(48, 16, 1.0, 0.3);
+    const TriMesh standing =
+        moved(testshapes::torus(40, 14, 1.0, 0.3), kStanding, Vec3(0.5, 0.013, 0.007));
+    ASSERT_TRUE(unionNearOverlap(lying, standing));
+    expectBothScopesAgree(lying, standing, 0.0, "rings");
+    expectBothScopesAgree(lying, standing, 0.1, "rings remeshed");
+}
+
+// A small ring within the other's box has no far faces: the side of its
+// pieces comes from a ray cast to the other surface.
+TEST(NearOverlapUnion, APartWithinTheOthersBoxIsToldByARay) {
+    const TriMesh big = testshapes::torus(48, 16, 1.0, 0.4);
+    const TriMesh small = moved(testshapes::torus(24, 10, 0.3, 0.09), Eigen::Matrix3d::Identity(),
+                                Vec3(1.01, 0.02, 0.3));
+    ASSERT_TRUE(boundingBox(big).contains(boundingBox(small)));
+    ASSERT_TRUE(unionNearOverlap(big, small));
+    expectBothScopesAgree(big, small, 0.0, "small in big");
+    expectBothScopesAgree(small, big, 0.0, "big on small");
+}
+
+// Boxes sharing the planes of two sides (coplanar faces) and a box whose
+// edges meet the other's faces on their diagonals: the first is left to the
+// whole union, the second is a plain crossing; both give its mesh.
+TEST(NearOverlapUnion, CoplanarFacesAreLeftToTheWholeUnion) {
+    const TriMesh a = box(Vec3(0, 0, 0), Vec3(2, 2, 2));
+    const TriMesh flush = box(Vec3(1, 1, 0), Vec3(3, 3, 2));
+    EXPECT_FALSE(unionNearOverlap(a, flush));
+    expectBothScopesAgree(a, flush, 0.0, "flush boxes");
+    const TriMesh through = box(Vec3(1, 0.5, 0.5), Vec3(3, 1.5, 1.5));
+    expectBothScopesAgree(a, through, 0.0, "box through a side");
+}
+
+// A part inside the other or apart from it (their boxes overlapping) has no
+// loop: the whole union refuses it, with the same message either way.
+TEST(NearOverlapUnion, APartInsideOrApartIsRefusedAsByTheWholeUnion) {
+    const TriMesh ring = testshapes::torus(48, 16, 1.0, 0.4);
+    const TriMesh inside =
+        moved(testshapes::torus(24, 10, 0.1, 0.05), kStanding, Vec3(1.0, 0.0, 0.0));
+    EXPECT_FALSE(unionNearOverlap(ring, inside));
+    expectBothScopesAgree(ring, inside, 0.0, "inside");
+    const TriMesh inTheHole = testshapes::torus(24, 10, 0.2, 0.1);
+    EXPECT_FALSE(unionNearOverlap(ring, inTheHole));
+    expectBothScopesAgree(ring, inTheHole, 0.0, "apart");
+}
+
+TEST(NearOverlapUnion, OnlyClosedOrientedManifoldsAreTakenForSurfaces) {
+    const TriMesh ring = testshapes::torus(12, 8, 1.0, 0.3);
+    EXPECT_TRUE(isClosedOrientedManifold(ring));
+    EXPECT_TRUE(isClosedOrientedManifold(box(Vec3::Zero(), Vec3::Ones())));
+    TriMesh open = ring;
+    open.faces.pop_back();
+    EXPECT_FALSE(isClosedOrientedManifold(open));
+    TriMesh flipped = ring;
+    std::swap(flipped.faces[3][0], flipped.faces[3][1]);
+    EXPECT_FALSE(isClosedOrientedManifold(flipped));
+    TriMesh repeated = ring;
+    repeated.faces[5][1] = repeated.faces[5][0];
+    EXPECT_FALSE(isClosedOrientedManifold(repeated));
+    // Two boxes sharing one corner: two fans around it.
+    TriMesh pinched = box(Vec3::Zero(), Vec3::Ones());
+    testshapes::append(pinched, box(Vec3::Ones(), Vec3::Constant(2.0)));
+    for (auto& face : pinched.faces)
+        for (int& v : face)
+            if (v == 8)
+                v = 7;
+    EXPECT_FALSE(isClosedOrientedManifold(pinched));
+    TriMesh outOfRange = ring;
+    outOfRange.faces[0][2] = ring.vertexCount();
+    EXPECT_FALSE(isClosedOrientedManifold(outOfRange));
+}
+
+}  // namespace
+}  // namespace rigmesh::mergetest
