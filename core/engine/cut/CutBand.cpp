@@ -94,28 +94,38 @@ std::vector<char> bandFaces(const SurfaceMesh& whole, const SurfaceMesh& splitte
         Box box;
         SidePlane plane;
     };
+    // The splitter's triangles and edges near the input, and the boxes
+    // around all of each: what misses those boxes meets none of them.
     std::vector<Triangle> triangles;
+    Box trianglesBox;
     for (FaceIndex t : splitter.faces()) {
         const HalfedgeIndex h = splitter.halfedge(t);
         const Vec3 a = pointOf(splitter, splitter.source(h));
         const Vec3 b = pointOf(splitter, splitter.target(h));
         const Vec3 c = pointOf(splitter, splitter.target(splitter.next(h)));
         const Box box = boxOf({a, b, c});
-        if (overlap(box, wholeBox))
+        if (overlap(box, wholeBox)) {
             triangles.push_back({box, SidePlane(a, b, c)});
+            trianglesBox.extend(box.lo);
+            trianglesBox.extend(box.hi);
+        }
     }
     struct Segment {
         Box box;
         Vec3 p, q;
     };
     std::vector<Segment> segments;
+    Box segmentsBox;
     for (EdgeIndex e : splitter.edges()) {
         const HalfedgeIndex h = splitter.halfedge(e);
         const Vec3 p = pointOf(splitter, splitter.source(h));
         const Vec3 q = pointOf(splitter, splitter.target(h));
         const Box box = boxOf({p, q});
-        if (overlap(box, wholeBox))
+        if (overlap(box, wholeBox)) {
             segments.push_back({box, p, q});
+            segmentsBox.extend(box.lo);
+            segmentsBox.extend(box.hi);
+        }
     }
 
     // The input's edges that may cross a splitter triangle: both their faces.
@@ -124,6 +134,8 @@ std::vector<char> bandFaces(const SurfaceMesh& whole, const SurfaceMesh& splitte
         const Vec3& a = position[whole.source(h).idx()];
         const Vec3& b = position[whole.target(h).idx()];
         const Box box = boxOf({a, b});
+        if (!overlap(box, trianglesBox))
+            continue;
         for (const Triangle& t : triangles)
             if (overlap(box, t.box) && t.plane.mayMeet(a, b)) {
                 inBand[whole.face(h).idx()] = 1;
@@ -140,6 +152,8 @@ std::vector<char> bandFaces(const SurfaceMesh& whole, const SurfaceMesh& splitte
         const Vec3& b = position[whole.target(h).idx()];
         const Vec3& c = position[whole.target(whole.next(h)).idx()];
         const Box box = boxOf({a, b, c});
+        if (!overlap(box, segmentsBox))
+            continue;
         for (const Segment& s : segments)
             if (overlap(box, s.box) && SidePlane(a, b, c).mayMeet(s.p, s.q)) {
                 inBand[f.idx()] = 1;
