@@ -7,8 +7,8 @@
 // or dropped by which side of the other surface it lies on: pieces joined to
 // the far faces lie outside, crossing a loop changes the side, and a piece
 // out of reach of both is told by a ray cast to the whole other surface.
-// On the camel's head and body this is a fifth of the faces CGAL's whole
-// union corefines and copies.
+// On the camel's last merge that is 980 of the 22,230 faces (616 of the
+// body's, 364 of the head's) that CGAL's whole union boxes and copies.
 #pragma once
 
 #include <array>
