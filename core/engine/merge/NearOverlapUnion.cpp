@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <numeric>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "base/Error.h"
 #include "mesh/CgalSurfaceMesh.h"
@@ -239,6 +240,15 @@ std::optional<std::vector<Side>> faceSides(const NearMesh& near, const TriMesh& 
     return result;
 }
 
+bool hasRepeatedPosition(const TriMesh& mesh) {
+    std::unordered_set<PointKey, PointKeyHash> seen;
+    seen.reserve(mesh.vertices.size());
+    for (const Vec3& p : mesh.vertices)
+        if (!seen.insert(keyOf(p)).second)
+            return true;
+    return false;
+}
+
 double signedVolume(const std::vector<Vec3>& positions,
                     const std::vector<std::array<int, 3>>& faces) {
     double volume = 0.0;
@@ -300,7 +310,11 @@ bool isClosedOrientedManifold(const TriMesh& mesh) {
 
 std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& second) {
     const std::array<const TriMesh*, 2> inputs{&first, &second};
-    if (!isClosedOrientedManifold(first) || !isClosedOrientedManifold(second))
+    // The whole union tells an input vertex by its position (first's before
+    // second's, then the lowest index): two at one position in an input
+    // could be told apart differently here.
+    if (!isClosedOrientedManifold(first) || !isClosedOrientedManifold(second) ||
+        hasRepeatedPosition(first) || hasRepeatedPosition(second))
         return std::nullopt;
     const std::array<Eigen::AlignedBox3d, 2> boxes{boundingBox(first), boundingBox(second)};
     if (!boxes[0].intersects(boxes[1]))
@@ -322,7 +336,12 @@ std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& s
     } catch (const PMP::Corefinement::Self_intersection_exception&) {
         throw Error(MessageId::MergeSelfIntersecting);
     }
-    if (touching)
+    // No loop: one part inside the other or apart, which the whole union
+    // refuses with its own message.
+    const auto onLoop = near[0].onLoop;
+    const auto edges = near[0].surface.edges();
+    if (touching ||
+        std::none_of(edges.begin(), edges.end(), [&](EdgeIndex e) { return onLoop[e]; }))
         return std::nullopt;
     std::array<std::vector<Side>, 2> sides;
     for (int m = 0; m < 2; ++m) {

@@ -34,7 +34,8 @@ struct UnionSoup {
 
 // The union of closed, oriented, manifold `first` and `second`, or nothing
 // when this way cannot answer for sure and CGAL's whole union should: an
-// input that is not a closed oriented manifold, surfaces whose boxes do not
+// input that is not a closed oriented manifold or has two vertices at one
+// position, surfaces whose boxes do not
 // overlap or that do not cross, a touching that is not a plain crossing (a
 // vertex on the other surface, coplanar faces), a piece whose side no test
 // settles, or a result that is not a closed oriented manifold whose volume

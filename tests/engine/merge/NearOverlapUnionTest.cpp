@@ -104,6 +104,30 @@ TEST(NearOverlapUnion, APartInsideOrApartIsRefusedAsByTheWholeUnion) {
     const TriMesh inTheHole = testshapes::torus(24, 10, 0.2, 0.1);
     EXPECT_FALSE(unionNearOverlap(ring, inTheHole));
     expectBothScopesAgree(ring, inTheHole, 0.0, "apart");
+    // A tilted box's faces reach into the boxes of a small one inside it
+    // and of one outside it: near faces on both sides, but no loop.
+    const Eigen::Matrix3d tilt =
+        Eigen::AngleAxisd(0.8, Vec3(1, 1, 1).normalized()).toRotationMatrix();
+    const TriMesh big = moved(box(Vec3::Constant(-2), Vec3::Constant(2)), tilt, Vec3::Zero());
+    const TriMesh small = box(Vec3::Constant(-0.3), Vec3::Constant(0.3));
+    EXPECT_FALSE(unionNearOverlap(big, small));
+    expectBothScopesAgree(big, small, 0.0, "tilted box around a small one");
+    const TriMesh outside = moved(small, Eigen::Matrix3d::Identity(), Vec3(2.83, 1.10, -0.73));
+    ASSERT_TRUE(boundingBox(big).contains(boundingBox(outside)));
+    EXPECT_FALSE(unionNearOverlap(big, outside));
+    expectBothScopesAgree(big, outside, 0.0, "small box beside a tilted one");
+}
+
+// Two vertices at one position (boxes touching at a corner): the whole
+// union tells them by position, so the near union leaves it to that.
+TEST(NearOverlapUnion, TwoVerticesAtOnePositionAreLeftToTheWholeUnion) {
+    TriMesh corner = box(Vec3::Zero(), Vec3::Constant(2));
+    testshapes::append(corner, box(Vec3::Constant(2), Vec3::Constant(3)));
+    const Eigen::Matrix3d tilt =
+        Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+    const TriMesh poking = moved(box(Vec3::Zero(), Vec3::Ones()), tilt, Vec3(-0.3, -0.2, -0.25));
+    EXPECT_FALSE(unionNearOverlap(corner, poking));
+    expectBothScopesAgree(corner, poking, 0.0, "corner");
 }
 
 TEST(NearOverlapUnion, OnlyClosedOrientedManifoldsAreTakenForSurfaces) {
