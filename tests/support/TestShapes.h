@@ -38,6 +38,17 @@ inline TriMesh tetrahedron(const Vec3& origin = Vec3::Zero()) {
     return mesh;
 }
 
+// An axis-aligned box, outward, two triangles a side.
+inline TriMesh box(const Vec3& low, const Vec3& high) {
+    TriMesh mesh;
+    for (int corner = 0; corner < 8; ++corner)
+        mesh.vertices.emplace_back(corner & 1 ? high.x() : low.x(), corner & 2 ? high.y() : low.y(),
+                                   corner & 4 ? high.z() : low.z());
+    mesh.faces = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                  {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+    return mesh;
+}
+
 // Appends `part` to `mesh` as a separate piece of the same soup.
 inline void append(TriMesh& mesh, const TriMesh& part) {
     const int offset = mesh.vertexCount();

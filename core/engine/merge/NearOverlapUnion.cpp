@@ -12,6 +12,7 @@
 #include "base/Error.h"
 #include "mesh/CgalSurfaceMesh.h"
 #include "mesh/MeshChecks.h"
+#include "mesh/MeshTopologyCheck.h"
 
 namespace rigmesh {
 
@@ -258,55 +259,6 @@ double signedVolume(const std::vector<Vec3>& positions,
 }
 
 }  // namespace
-
-bool isClosedOrientedManifold(const TriMesh& mesh) {
-    const int n = mesh.vertexCount();
-    // Each vertex's outgoing edges (to, and the face's third corner).
-    std::vector<int> start(n + 1, 0);
-    for (const auto& face : mesh.faces)
-        for (int v : face) {
-            if (v < 0 || v >= n)
-                return false;
-            ++start[v + 1];
-        }
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    std::vector<int> to(start[n]), third(start[n]), cursor(start.begin(), start.end() - 1);
-    for (const auto& [a, b, c] : mesh.faces) {
-        if (a == b || b == c || c == a)
-            return false;
-        to[cursor[a]] = b, third[cursor[a]++] = c;
-        to[cursor[b]] = c, third[cursor[b]++] = a;
-        to[cursor[c]] = a, third[cursor[c]++] = b;
-    }
-    auto outgoing = [&](int v, int w) {
-        int found = -1;
-        for (int i = start[v]; i < start[v + 1]; ++i)
-            if (to[i] == w) {
-                if (found >= 0)
-                    return -2;  // the same directed edge twice
-                found = i;
-            }
-        return found;
-    };
-    for (int v = 0; v < n; ++v) {
-        const int degree = start[v + 1] - start[v];
-        if (degree == 0)
-            continue;
-        for (int i = start[v]; i < start[v + 1]; ++i)
-            if (outgoing(v, to[i]) != i || outgoing(to[i], v) < 0)
-                return false;
-        // One fan: from face (v, w, x) the next face around v leaves along v -> x.
-        int i = start[v], steps = 0;
-        do {
-            i = outgoing(v, third[i]);
-            if (i < 0 || ++steps > degree)
-                return false;
-        } while (i != start[v]);
-        if (steps != degree)
-            return false;
-    }
-    return true;
-}
 
 std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& second) {
     const std::array<const TriMesh*, 2> inputs{&first, &second};

@@ -44,9 +44,4 @@ struct UnionSoup {
 // within either input along the loops, as the whole union does.
 std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& second);
 
-// True when every face has three distinct corners in range, every directed
-// edge occurs once with its reverse once, and the faces around each used
-// vertex form one fan: what CGAL's Surface_mesh builds as a closed surface.
-bool isClosedOrientedManifold(const TriMesh& mesh);
-
 }  // namespace rigmesh

@@ -198,7 +198,10 @@ std::vector<Message> Part::validateSolid() const {
     if (skeleton.boneCount() == 0)
         problems.push_back({MessageId::PartHasNoSkeleton, {}});
     // Closed, manifold and oriented are topology: the angles, area and
-    // volume analyseMesh also measures are not needed here.
+    // volume analyseMesh also measures are not needed here, and the full
+    // analysis only to say what is wrong.
+    if (isClosedOrientedManifold(mesh))
+        return problems;
     const MeshReport report = analyseMeshTopology(mesh);
     if (!report.isClosed())
         problems.push_back(

@@ -7,6 +7,7 @@
 #include "TestShapes.h"
 #include "UnionComparison.h"
 #include "merge/NearOverlapUnion.h"
+#include "mesh/MeshChecks.h"
 
 namespace rigmesh::mergetest {
 namespace {
@@ -45,17 +46,6 @@ TriMesh moved(TriMesh mesh, const Eigen::Matrix3d& turn, const Vec3& offset) {
     return mesh;
 }
 
-// An axis-aligned box, outward, two triangles a side.
-TriMesh box(const Vec3& low, const Vec3& high) {
-    TriMesh mesh;
-    for (int corner = 0; corner < 8; ++corner)
-        mesh.vertices.emplace_back(corner & 1 ? high.x() : low.x(), corner & 2 ? high.y() : low.y(),
-                                   corner & 4 ? high.z() : low.z());
-    mesh.faces = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                  {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
-    return mesh;
-}
-
 const Eigen::Matrix3d kStanding = Eigen::AngleAxisd(0.5 * M_PI, Vec3::UnitX()).toRotationMatrix();
 
 // Two rings standing across each other cross in two loops, each ring's tube
@@ -85,11 +75,11 @@ TEST(NearOverlapUnion, APartWithinTheOthersBoxIsToldByARay) {
 // edges meet the other's faces on their diagonals: the first is left to the
 // whole union, the second is a plain crossing; both give its mesh.
 TEST(NearOverlapUnion, CoplanarFacesAreLeftToTheWholeUnion) {
-    const TriMesh a = box(Vec3(0, 0, 0), Vec3(2, 2, 2));
-    const TriMesh flush = box(Vec3(1, 1, 0), Vec3(3, 3, 2));
+    const TriMesh a = testshapes::box(Vec3(0, 0, 0), Vec3(2, 2, 2));
+    const TriMesh flush = testshapes::box(Vec3(1, 1, 0), Vec3(3, 3, 2));
     EXPECT_FALSE(unionNearOverlap(a, flush));
     expectBothScopesAgree(a, flush, 0.0, "flush boxes");
-    const TriMesh through = box(Vec3(1, 0.5, 0.5), Vec3(3, 1.5, 1.5));
+    const TriMesh through = testshapes::box(Vec3(1, 0.5, 0.5), Vec3(3, 1.5, 1.5));
     expectBothScopesAgree(a, through, 0.0, "box through a side");
 }
 
@@ -108,8 +98,9 @@ TEST(NearOverlapUnion, APartInsideOrApartIsRefusedAsByTheWholeUnion) {
     // and of one outside it: near faces on both sides, but no loop.
     const Eigen::Matrix3d tilt =
         Eigen::AngleAxisd(0.8, Vec3(1, 1, 1).normalized()).toRotationMatrix();
-    const TriMesh big = moved(box(Vec3::Constant(-2), Vec3::Constant(2)), tilt, Vec3::Zero());
-    const TriMesh small = box(Vec3::Constant(-0.3), Vec3::Constant(0.3));
+    const TriMesh big =
+        moved(testshapes::box(Vec3::Constant(-2), Vec3::Constant(2)), tilt, Vec3::Zero());
+    const TriMesh small = testshapes::box(Vec3::Constant(-0.3), Vec3::Constant(0.3));
     EXPECT_FALSE(unionNearOverlap(big, small));
     expectBothScopesAgree(big, small, 0.0, "tilted box around a small one");
     const TriMesh outside = moved(small, Eigen::Matrix3d::Identity(), Vec3(2.83, 1.10, -0.73));
@@ -121,39 +112,14 @@ TEST(NearOverlapUnion, APartInsideOrApartIsRefusedAsByTheWholeUnion) {
 // Two vertices at one position (boxes touching at a corner): the whole
 // union tells them by position, so the near union leaves it to that.
 TEST(NearOverlapUnion, TwoVerticesAtOnePositionAreLeftToTheWholeUnion) {
-    TriMesh corner = box(Vec3::Zero(), Vec3::Constant(2));
-    testshapes::append(corner, box(Vec3::Constant(2), Vec3::Constant(3)));
+    TriMesh corner = testshapes::box(Vec3::Zero(), Vec3::Constant(2));
+    testshapes::append(corner, testshapes::box(Vec3::Constant(2), Vec3::Constant(3)));
     const Eigen::Matrix3d tilt =
         Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
-    const TriMesh poking = moved(box(Vec3::Zero(), Vec3::Ones()), tilt, Vec3(-0.3, -0.2, -0.25));
+    const TriMesh poking =
+        moved(testshapes::box(Vec3::Zero(), Vec3::Ones()), tilt, Vec3(-0.3, -0.2, -0.25));
     EXPECT_FALSE(unionNearOverlap(corner, poking));
     expectBothScopesAgree(corner, poking, 0.0, "corner");
-}
-
-TEST(NearOverlapUnion, OnlyClosedOrientedManifoldsAreTakenForSurfaces) {
-    const TriMesh ring = testshapes::torus(12, 8, 1.0, 0.3);
-    EXPECT_TRUE(isClosedOrientedManifold(ring));
-    EXPECT_TRUE(isClosedOrientedManifold(box(Vec3::Zero(), Vec3::Ones())));
-    TriMesh open = ring;
-    open.faces.pop_back();
-    EXPECT_FALSE(isClosedOrientedManifold(open));
-    TriMesh flipped = ring;
-    std::swap(flipped.faces[3][0], flipped.faces[3][1]);
-    EXPECT_FALSE(isClosedOrientedManifold(flipped));
-    TriMesh repeated = ring;
-    repeated.faces[5][1] = repeated.faces[5][0];
-    EXPECT_FALSE(isClosedOrientedManifold(repeated));
-    // Two boxes sharing one corner: two fans around it.
-    TriMesh pinched = box(Vec3::Zero(), Vec3::Ones());
-    testshapes::append(pinched, box(Vec3::Ones(), Vec3::Constant(2.0)));
-    for (auto& face : pinched.faces)
-        for (int& v : face)
-            if (v == 8)
-                v = 7;
-    EXPECT_FALSE(isClosedOrientedManifold(pinched));
-    TriMesh outOfRange = ring;
-    outOfRange.faces[0][2] = ring.vertexCount();
-    EXPECT_FALSE(isClosedOrientedManifold(outOfRange));
 }
 
 }  // namespace
