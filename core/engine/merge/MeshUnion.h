@@ -29,7 +29,8 @@ struct MeshUnionResult {
 //
 // `NearOverlap` corefines only the faces near the overlap when it can
 // (merge/NearOverlapUnion.h) and CGAL's whole union otherwise; `Whole`
-// always runs the whole union. Both give the same mesh.
+// always runs the whole union. Both give the same mesh, up to the rounding
+// of edge-on-edge crossing points (merge/NearOverlapUnion.h).
 enum class UnionScope { NearOverlap, Whole };
 MeshUnionResult unionMeshes(const TriMesh& first, const TriMesh& second, double seamEdgeLength,
                             UnionScope scope = UnionScope::NearOverlap);

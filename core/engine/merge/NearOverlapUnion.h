@@ -9,6 +9,15 @@
 // out of reach of both is told by a ray cast to the whole other surface.
 // On the camel's last merge that is 980 of the 22,230 faces (616 of the
 // body's, 364 of the head's) that CGAL's whole union boxes and copies.
+//
+// The result is the whole union's: the same faces, loop and sources, and
+// the same positions but where an edge of one surface crosses an edge of
+// the other (two parts sketched in one plane both have edges in it and
+// cross so there). CGAL rounds such a point from whichever face pair it
+// meets it through first, which differs between the two: such vertices may
+// lie a few units in the last place apart (and, on an edge, name the other
+// triangle beside it as their source). Either way the same input gives the
+// same bytes.
 #pragma once
 
 #include <array>
