@@ -138,6 +138,15 @@ std::vector<BoneId> pruneBones(Skeleton& skeleton, WeightsById& weights,
     return pruned;
 }
 
+// An input's self-intersecting face pairs: decided on about half the faces
+// when it is exactly its own mirror image (mesh/MeshSelfIntersections.h;
+// the pairs are counted in full only if there are any).
+int selfIntersectingPairs(const Part& part) {
+    if (part.mirror.empty())
+        return countSelfIntersectingFacePairs(part.mesh);
+    return static_cast<int>(selfIntersectingFacePairs(part.mesh, part.mirror).size());
+}
+
 // The union needs closed, oriented surfaces that do not cross themselves
 // anywhere (CGAL's corefinement only notices a self-intersection near the
 // other surface): each input is checked and refused by name, the target
@@ -148,15 +157,6 @@ std::vector<BoneId> pruneBones(Skeleton& skeleton, WeightsById& weights,
 // be skipped for parts made here: a merge's smoothed seam, a cut's faired
 // patch and an imported surface are not checked for self-intersections
 // when they are made.
-// An input's self-intersecting face pairs: decided on about half the faces
-// when it is exactly its own mirror image (mesh/MeshSelfIntersections.h;
-// the pairs are counted in full only if there are any).
-int selfIntersectingPairs(const Part& part) {
-    if (part.mirror.empty())
-        return countSelfIntersectingFacePairs(part.mesh);
-    return static_cast<int>(selfIntersectingFacePairs(part.mesh, part.mirror).size());
-}
-
 void checkInputsDuring(const Part& target, const Part& dragged,
                        const std::function<void()>& unionStep) {
     if (const std::vector<Message> problems = target.validateSolid(); !problems.empty())

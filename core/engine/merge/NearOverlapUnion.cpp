@@ -13,6 +13,7 @@
 #include "mesh/CgalSurfaceMesh.h"
 #include "mesh/MeshChecks.h"
 #include "mesh/MeshTopologyCheck.h"
+#include "mesh/MeshVolume.h"
 
 namespace rigmesh {
 
@@ -250,14 +251,6 @@ bool hasRepeatedPosition(const TriMesh& mesh) {
     return false;
 }
 
-double signedVolume(const std::vector<Vec3>& positions,
-                    const std::vector<std::array<int, 3>>& faces) {
-    double volume = 0.0;
-    for (const auto& [a, b, c] : faces)
-        volume += positions[a].dot(positions[b].cross(positions[c]));
-    return volume / 6.0;
-}
-
 }  // namespace
 
 std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& second) {
@@ -265,8 +258,13 @@ std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& s
     // The whole union tells an input vertex by its position (first's before
     // second's, then the lowest index): two at one position in an input
     // could be told apart differently here.
-    if (!isClosedOrientedManifold(first) || !isClosedOrientedManifold(second) ||
-        hasRepeatedPosition(first) || hasRepeatedPosition(second))
+    auto finite = [](const TriMesh& mesh) {
+        return std::all_of(mesh.vertices.begin(), mesh.vertices.end(),
+                           [](const Vec3& p) { return p.allFinite(); });
+    };
+    if (!finite(first) || !finite(second) || !isClosedOrientedManifold(first) ||
+        !isClosedOrientedManifold(second) || hasRepeatedPosition(first) ||
+        hasRepeatedPosition(second))
         return std::nullopt;
     const std::array<Eigen::AlignedBox3d, 2> boxes{boundingBox(first), boundingBox(second)};
     if (!boxes[0].intersects(boxes[1]))
@@ -303,14 +301,15 @@ std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& s
         sides[m] = std::move(*found);
     }
 
-    // Output vertices: both inputs' (second's after first's), then the
-    // loops' new ones; a loop vertex is one output vertex for both meshes.
-    UnionSoup soup;
+    // Candidate vertices: both inputs' (second's after first's), then the
+    // loops' new ones; a loop vertex is one candidate for both meshes. Only
+    // those the kept faces use are output, below.
+    UnionSoup candidates;
     const std::array<int, 2> offset{0, first.vertexCount()};
     for (int m = 0; m < 2; ++m)
         for (int v = 0; v < inputs[m]->vertexCount(); ++v) {
-            soup.positions.push_back(inputs[m]->vertices[v]);
-            soup.sources.push_back(VertexSource::vertex(m, v));
+            candidates.positions.push_back(inputs[m]->vertices[v]);
+            candidates.sources.push_back(VertexSource::vertex(m, v));
         }
     std::unordered_map<PointKey, int, PointKeyHash> loopVertex;
     std::array<std::vector<int>, 2> output;
@@ -331,12 +330,13 @@ std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& s
                     if (input >= 0) {
                         it->second = offset[m] + input;
                     } else {
-                        it->second = static_cast<int>(soup.positions.size());
-                        soup.positions.push_back(p);
-                        soup.sources.push_back(VertexSource{});
+                        it->second = static_cast<int>(candidates.positions.size());
+                        candidates.positions.push_back(p);
+                        candidates.sources.push_back(VertexSource{});
                     }
-                } else if (input >= 0 && soup.sources[it->second].kind == VertexSource::Kind::New) {
-                    soup.sources[it->second] = VertexSource::vertex(m, input);
+                } else if (input >= 0 &&
+                           candidates.sources[it->second].kind == VertexSource::Kind::New) {
+                    candidates.sources[it->second] = VertexSource::vertex(m, input);
                 }
                 output[m][v.idx()] = it->second;
             }
@@ -373,7 +373,7 @@ std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& s
                             output[0][near[0].surface.vertex(e, 1).idx()]});
 
     // Only the vertices the kept faces use.
-    std::vector<int> compact(soup.positions.size(), -1);
+    std::vector<int> compact(candidates.positions.size(), -1);
     for (const auto& face : faces)
         for (int v : face)
             compact[v] = 0;
@@ -382,8 +382,8 @@ std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& s
     for (std::size_t v = 0; v < compact.size(); ++v)
         if (compact[v] == 0) {
             compact[v] = result.vertexCount();
-            result.vertices.push_back(soup.positions[v]);
-            sources.push_back(soup.sources[v]);
+            result.vertices.push_back(candidates.positions[v]);
+            sources.push_back(candidates.sources[v]);
         }
     for (auto& face : faces)
         for (int& v : face)
@@ -395,9 +395,9 @@ std::optional<UnionSoup> unionNearOverlap(const TriMesh& first, const TriMesh& s
 
     // The union's volume lies between the larger input's and their sum; a
     // piece given the wrong side breaks this or the surface.
-    const double volumeFirst = signedVolume(first.vertices, first.faces);
-    const double volumeSecond = signedVolume(second.vertices, second.faces);
-    const double volume = signedVolume(result.vertices, result.faces);
+    const double volumeFirst = signedVolume(first);
+    const double volumeSecond = signedVolume(second);
+    const double volume = signedVolume(result);
     const double slack = 1e-9 * (std::abs(volumeFirst) + std::abs(volumeSecond));
     if (!(volume >= std::max(volumeFirst, volumeSecond) - slack &&
           volume <= volumeFirst + volumeSecond + slack) ||
