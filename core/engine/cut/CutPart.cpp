@@ -87,18 +87,21 @@ std::map<JointId, int> jointPieces(const Skeleton& skeleton, const std::array<Tr
     // by perf) approximates that integer to far better than the 0.5 the
     // decision below needs, so both decide alike. It remains for a joint the
     // ray cannot decide (on a face, or the ray along an edge) and for a
-    // piece that does not bound.
+    // piece that does not bound. All joints' rays go through the faces
+    // once (each face meets the rays within its box only).
     const std::vector<Joint>& joints = skeleton.joints();
     std::array<std::vector<double>, 2> winding;
+    std::vector<Vec3> positions;
+    for (const Joint& joint : joints)
+        positions.push_back(joint.position);
     parallelFor(2, 2, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            const bool bounds = directedEdgesCancel(meshes[k]);
-            for (const Joint& joint : joints) {
-                const std::optional<int> exact =
-                    bounds ? exactWindingNumber(meshes[k], joint.position) : std::nullopt;
-                winding[k].push_back(exact ? double(*exact)
-                                           : windingNumber(meshes[k], joint.position));
-            }
+            const std::vector<std::optional<int>> exact =
+                directedEdgesCancel(meshes[k]) ? exactWindingNumbers(meshes[k], positions)
+                                               : std::vector<std::optional<int>>(positions.size());
+            for (std::size_t j = 0; j < positions.size(); ++j)
+                winding[k].push_back(exact[j] ? double(*exact[j])
+                                              : windingNumber(meshes[k], positions[j]));
         }
     });
     std::map<JointId, int> pieceOf;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "mesh/TriMesh.h"
 
@@ -24,5 +25,10 @@ bool directedEdgesCancel(const TriMesh& mesh);
 // lies on a face (then only the solid angles can say, and they are
 // ill-conditioned on it).
 std::optional<int> exactWindingNumber(const TriMesh& mesh, const Vec3& point);
+
+// The same for many points, in one pass over the faces per axis (each face
+// tested against the points within its box only).
+std::vector<std::optional<int>> exactWindingNumbers(const TriMesh& mesh,
+                                                    const std::vector<Vec3>& points);
 
 }  // namespace rigmesh

@@ -4,6 +4,7 @@
 // directed edges do not cancel are told apart.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -70,6 +71,42 @@ TEST(ExactWinding, GivesNoAnswerOnTheSurfaceAndTriesAnotherAxisAlongAVertex) {
     // vertex: another axis decides.
     const Vec3& v = sphere.vertices[0];
     EXPECT_EQ(exactWindingNumber(sphere, Vec3(v.x(), v.y(), v.z() - 3.0)), 0);
+}
+
+TEST(ExactWinding, GivesEachPointOfABatchWhatItsSolidAnglesOrItsOwnRaysGive) {
+    // Random points with points on a vertex, straight below one (their z ray
+    // meets it), sharing a coordinate with others, and on the plane of many
+    // edges: a point that cannot be decided must not spoil the others.
+    TriMesh nested = torus(24, 12, 1.0, 0.4);
+    append(nested, makeIcosphere(2, 0.3));
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(-1.5, 1.5);
+    std::vector<Vec3> points;
+    for (int i = 0; i < 200; ++i)
+        points.emplace_back(unit(random), unit(random), unit(random));
+    const Vec3 v = nested.vertices[5];
+    points.push_back(v);
+    points.emplace_back(v.x(), v.y(), v.z() - 2.0);
+    points.emplace_back(points[0].x(), points[1].y(), points[2].z());
+    points.emplace_back(points[0].x(), points[0].y(), points[3].z());
+    points.emplace_back(0.0, 0.0, 0.0);
+    const std::vector<std::optional<int>> batch = exactWindingNumbers(nested, points);
+    ASSERT_EQ(batch.size(), points.size());
+    for (std::size_t p = 0; p < points.size(); ++p) {
+        SCOPED_TRACE(points[p].transpose());
+        EXPECT_EQ(batch[p], exactWindingNumber(nested, points[p]));
+        if (batch[p]) {
+            EXPECT_EQ(*batch[p], std::lround(windingNumber(nested, points[p])));
+        }
+    }
+    // Undecided: the point on a vertex, and the centre, whose rays along
+    // every axis meet the inner sphere's vertices on the axes.
+    EXPECT_FALSE(batch[200].has_value());
+    EXPECT_FALSE(batch.back().has_value());
+    const auto decided = std::count_if(batch.begin(), batch.end(),
+                                       [](const std::optional<int>& w) { return w.has_value(); });
+    EXPECT_EQ(decided, static_cast<long>(points.size()) - 2);
+    EXPECT_TRUE(exactWindingNumbers(nested, {}).empty());
 }
 
 TEST(ExactWinding, TellsSurfacesWhoseEdgesDoNotCancel) {
