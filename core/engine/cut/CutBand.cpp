@@ -385,6 +385,7 @@ BandOutcome splitInBand(const SurfaceMesh& whole, SurfaceMesh& splitter) {
         SplitComponent& piece = pieces[vertexLabel[v]];
         outIndex[v] = static_cast<int>(piece.points.size());
         piece.points.push_back(pointOf(band, VertexIndex(v)));
+        piece.wholeVertex.push_back(v);
     }
     for (int v = 0; v < splitVertices; ++v)
         if (vertexLabel[v] >= 0 && outIndex[v] < 0) {
@@ -418,6 +419,7 @@ BandOutcome splitInBand(const SurfaceMesh& whole, SurfaceMesh& splitter) {
         pieces[label[face[h ^ 1]]].holes.push_back(std::move(loop));
     }
     outcome.components = std::move(pieces);
+    outcome.inBand = inBand;
     return outcome;
 }
 

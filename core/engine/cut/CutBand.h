@@ -41,6 +41,9 @@ namespace rigmesh {
 // halfedge) and border loops (each from its first halfedge by index).
 struct SplitComponent {
     std::vector<Vec3> points;
+    // Per point its vertex index on the whole surface (at or past the
+    // whole's vertex count: made by the split); empty when not known.
+    std::vector<int> wholeVertex;
     std::vector<std::array<int, 3>> faces;
     std::vector<std::vector<int>> holes;
 };
@@ -48,6 +51,9 @@ struct SplitComponent {
 struct BandOutcome {
     std::optional<std::vector<SplitComponent>> components;  // nullopt: the band did not hold
     int bandFaces = 0;
+    // Per face of the whole surface: whether it is in the band (every face
+    // the split changed is).
+    std::vector<char> inBand;
     std::string whyNot;
 };
 

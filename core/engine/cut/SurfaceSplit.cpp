@@ -23,14 +23,31 @@ namespace {
 // one of the edge's faces: a new vertex of the split is one of them (CGAL
 // constructs it in its own arithmetic, so the nearest one is taken). A few
 // hundred points, searched linearly: cheaper than a search tree over every
-// triangle.
+// triangle. `faces`, when not empty, marks the only faces whose edges the
+// split may have crossed (the band's, cut/CutBand.h): the cut surface's side
+// (a search along a swept stroke) is then taken at their corners only.
 class EdgeCrossings {
   public:
-    EdgeCrossings(const TriMesh& mesh, const CutSurface& surface) {
-        std::vector<double> side(mesh.vertices.size());
-        for (std::size_t v = 0; v < side.size(); ++v)
-            side[v] = surface.side(mesh.vertices[v]);
+    EdgeCrossings(const TriMesh& mesh, const CutSurface& surface,
+                  const std::vector<char>& faces = {}) {
+        const auto considered = [&](int f) { return faces.empty() || faces[f]; };
+        std::vector<double> side(mesh.vertices.size(), 0.0);
+        if (faces.empty()) {
+            for (std::size_t v = 0; v < side.size(); ++v)
+                side[v] = surface.side(mesh.vertices[v]);
+        } else {
+            std::vector<char> wanted(mesh.vertices.size(), 0);
+            for (int f = 0; f < mesh.faceCount(); ++f)
+                if (considered(f))
+                    for (int v : mesh.faces[f])
+                        wanted[v] = 1;
+            for (std::size_t v = 0; v < side.size(); ++v)
+                if (wanted[v])
+                    side[v] = surface.side(mesh.vertices[v]);
+        }
         for (int f = 0; f < mesh.faceCount(); ++f) {
+            if (!considered(f))
+                continue;
             const auto& face = mesh.faces[f];
             for (int c = 0; c < 3; ++c) {
                 const int a = face[c], b = face[(c + 1) % 3];
@@ -231,6 +248,7 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, SurfaceMesh surface,
     SplitReport local;
     local.faces = mesh.faceCount();
     std::vector<SplitComponent> components;
+    std::vector<char> bandFaces;  // empty: the whole surface was split
     // Left as it is by the band's split (splitAlong), so the whole split can
     // use it too.
     std::optional<SurfaceMesh> splitter = splitterOf(mesh, surface, cut);
@@ -240,6 +258,7 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, SurfaceMesh surface,
             local.bandFaces = band.bandFaces;
             if (band.components) {
                 components = std::move(*band.components);
+                bandFaces = std::move(band.inBand);
                 local.band = true;
             } else {
                 local.fallback = band.whyNot;
@@ -253,15 +272,33 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, SurfaceMesh surface,
     if (report)
         *report = local;
 
-    const InputPositions inputVertex(mesh.vertices);
-    const EdgeCrossings crossings(mesh, cut);
+    // When the split tells each point's vertex on the whole surface (whose
+    // vertex i is the input's vertex i, mesh/CgalClosedSurface.h), an old
+    // vertex at its own position is that input vertex and a new one (past
+    // the input's count) is no input vertex; otherwise the input vertex at
+    // the point's position (the lookup built only then).
+    std::optional<InputPositions> inputVertex;
+    const auto inputVertexAt = [&](const Vec3& p, int wholeVertex) {
+        if (wholeVertex >= mesh.vertexCount())
+            return -1;
+        if (wholeVertex >= 0 &&
+            std::memcmp(mesh.vertices[wholeVertex].data(), p.data(), 3 * sizeof(double)) == 0)
+            return wholeVertex;
+        if (!inputVertex)
+            inputVertex.emplace(mesh.vertices);
+        return inputVertex->find(p);
+    };
+    const EdgeCrossings crossings(mesh, cut, bandFaces);
 
     std::vector<MeshPiece> pieces;
     for (SplitComponent& component : components) {
         MeshPiece piece;
         piece.mesh.vertices = std::move(component.points);
-        for (const Vec3& p : piece.mesh.vertices) {
-            if (const int found = inputVertex.find(p); found >= 0) {
+        for (std::size_t i = 0; i < piece.mesh.vertices.size(); ++i) {
+            const Vec3& p = piece.mesh.vertices[i];
+            const int wholeVertex =
+                i < component.wholeVertex.size() ? component.wholeVertex[i] : -1;
+            if (const int found = inputVertexAt(p, wholeVertex); found >= 0) {
                 piece.sources.push_back(VertexSource::vertex(0, found));
             } else if (auto crossing = crossings.sourceOf(p)) {
                 piece.sources.push_back(*crossing);
