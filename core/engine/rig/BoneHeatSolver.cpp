@@ -111,6 +111,9 @@ struct BoneHeatSolver::Impl {
     Eigen::SparseMatrix<double> reducedMatrix;
     CholmodCommon common;
     cholmod_factor* factor = nullptr;
+    // One bone: its heat is 1 at every vertex (BoneHeatSolver.h), nothing
+    // is factored or solved.
+    bool singleBone = false;
 
     ~Impl() {
         if (factor != nullptr) {
@@ -378,6 +381,10 @@ Eigen::VectorXd BoneHeatSolver::Impl::nearestBoneWeights(int bone) const {
 
 bool BoneHeatSolver::Impl::solve(int bone, SolveWorkspace& workspace,
                                  Eigen::Ref<Eigen::VectorXd> out) const {
+    if (singleBone) {
+        out.setOnes();
+        return true;
+    }
     if (factor != nullptr && boneIsFinite[bone]) {
         Eigen::VectorXd rhs = rightHandSide(bone);
         if (!orbit.empty()) {
@@ -437,6 +444,9 @@ BoneHeatSolver::BoneHeatSolver(const TriMesh& mesh, const std::vector<BoneSegmen
     }
     impl_->findClosestBones(mesh, closestBones);
     impl_->assemble(mesh);
+    impl_->singleBone = bones.size() == 1;  // finite (validateInput)
+    if (impl_->singleBone)
+        return;
     impl_->useMirror(mesh, mirror);
     if (!impl_->orbit.empty())
         impl_->reduce();
@@ -454,7 +464,7 @@ int BoneHeatSolver::boneCount() const {
     return impl_->boneCount();
 }
 bool BoneHeatSolver::isFactorized() const {
-    return impl_->factor != nullptr;
+    return impl_->factor != nullptr || impl_->singleBone;
 }
 bool BoneHeatSolver::solvesMirrorSymmetric() const {
     return !impl_->orbit.empty();

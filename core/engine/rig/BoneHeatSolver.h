@@ -114,6 +114,13 @@ using ClosestBones = std::vector<std::vector<std::pair<int, double>>>;
 // restricted to mirror-symmetric weights; the solutions differ from the
 // full system's by its rounding only (the full matrix is symmetric up to the
 // order in which each vertex's sums are added).
+//
+// A single bone's heat is 1 at every vertex: every vertex's closest bone is
+// that bone, so its right-hand side is A H 1, and L 1 = 0 (each row of the
+// cotangent Laplacian, and of the orphans' uniform one, sums to zero), so
+// (L + A H) 1 = A H 1. The solver then factors nothing and solves nothing;
+// the weights are what the factored system gives up to its rounding, which
+// the normalisation removes (a lone weight w becomes w / w = 1).
 class BoneHeatSolver {
   public:
     BoneHeatSolver(const TriMesh& mesh, const std::vector<BoneSegment>& bones,
@@ -128,8 +135,10 @@ class BoneHeatSolver {
     int vertexCount() const;
     int boneCount() const;
     // False if CHOLMOD could not factor the system (every bone falls back).
+    // A single bone needs no factorisation: true.
     bool isFactorized() const;
-    // True when the mirror-symmetric system of half the size was factored.
+    // True when the mirror-symmetric system of half the size was factored
+    // (never for a single bone).
     bool solvesMirrorSymmetric() const;
     // The closest visible bone(s) of every vertex used for the heat.
     const ClosestBones& closestBones() const;
