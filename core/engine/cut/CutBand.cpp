@@ -2,6 +2,7 @@
 
 #include <CGAL/Polygon_mesh_processing/clip.h>
 
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
@@ -128,35 +129,44 @@ std::vector<char> bandFaces(const SurfaceMesh& whole, const SurfaceMesh& splitte
         }
     }
 
-    // The input's edges that may cross a splitter triangle: both their faces.
-    for (EdgeIndex e : whole.edges()) {
-        const HalfedgeIndex h = whole.halfedge(e);
-        const Vec3& a = position[whole.source(h).idx()];
-        const Vec3& b = position[whole.target(h).idx()];
-        const Box box = boxOf({a, b});
-        if (!overlap(box, trianglesBox))
-            continue;
-        for (const Triangle& t : triangles)
-            if (overlap(box, t.box) && t.plane.mayMeet(a, b)) {
-                inBand[whole.face(h).idx()] = 1;
-                inBand[whole.face(whole.opposite(h)).idx()] = 1;
-                break;
-            }
-    }
-    // The input's faces a splitter edge may cross.
+    // Each face's corners, from the source of its halfedge, read once (the
+    // tests and rings below read these, not the halfedges).
+    std::vector<std::array<int, 3>> corners(faceCount);
     for (FaceIndex f : whole.faces()) {
-        if (inBand[f.idx()])
-            continue;
         const HalfedgeIndex h = whole.halfedge(f);
-        const Vec3& a = position[whole.source(h).idx()];
-        const Vec3& b = position[whole.target(h).idx()];
-        const Vec3& c = position[whole.target(whole.next(h)).idx()];
+        corners[f.idx()] = {static_cast<int>(whole.source(h).idx()),
+                            static_cast<int>(whole.target(h).idx()),
+                            static_cast<int>(whole.target(whole.next(h)).idx())};
+    }
+    // The input's edges that may cross a splitter triangle: both their
+    // faces (each face tests its own three edges; the test is the same
+    // either way along an edge).
+    for (int f = 0; f < faceCount; ++f)
+        for (int k = 0; k < 3 && !inBand[f]; ++k) {
+            const Vec3& a = position[corners[f][k]];
+            const Vec3& b = position[corners[f][(k + 1) % 3]];
+            const Box box = boxOf({a, b});
+            if (!overlap(box, trianglesBox))
+                continue;
+            for (const Triangle& t : triangles)
+                if (overlap(box, t.box) && t.plane.mayMeet(a, b)) {
+                    inBand[f] = 1;
+                    break;
+                }
+        }
+    // The input's faces a splitter edge may cross.
+    for (int f = 0; f < faceCount; ++f) {
+        if (inBand[f])
+            continue;
+        const Vec3& a = position[corners[f][0]];
+        const Vec3& b = position[corners[f][1]];
+        const Vec3& c = position[corners[f][2]];
         const Box box = boxOf({a, b, c});
         if (!overlap(box, segmentsBox))
             continue;
         for (const Segment& s : segments)
             if (overlap(box, s.box) && SidePlane(a, b, c).mayMeet(s.p, s.q)) {
-                inBand[f.idx()] = 1;
+                inBand[f] = 1;
                 break;
             }
     }
@@ -164,17 +174,14 @@ std::vector<char> bandFaces(const SurfaceMesh& whole, const SurfaceMesh& splitte
     // Rings: every face around a vertex of the band joins it.
     std::vector<char> marked(whole.num_vertices(), 0);
     for (int ring = 0; ring < kRings; ++ring) {
-        for (FaceIndex f : whole.faces())
-            if (inBand[f.idx()])
-                for (VertexIndex v : CGAL::vertices_around_face(whole.halfedge(f), whole))
-                    marked[v.idx()] = 1;
-        for (FaceIndex f : whole.faces())
-            if (!inBand[f.idx()])
-                for (VertexIndex v : CGAL::vertices_around_face(whole.halfedge(f), whole))
-                    if (marked[v.idx()]) {
-                        inBand[f.idx()] = 1;
-                        break;
-                    }
+        for (int f = 0; f < faceCount; ++f)
+            if (inBand[f])
+                for (int v : corners[f])
+                    marked[v] = 1;
+        for (int f = 0; f < faceCount; ++f)
+            if (!inBand[f] &&
+                (marked[corners[f][0]] || marked[corners[f][1]] || marked[corners[f][2]]))
+                inBand[f] = 1;
     }
     return inBand;
 }
