@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -112,8 +113,11 @@ struct BoneHeatSolver::Impl {
     CholmodCommon common;
     cholmod_factor* factor = nullptr;
     // One bone: its heat is 1 at every vertex (BoneHeatSolver.h), nothing
-    // is factored or solved.
+    // is factored or solved, and the system is assembled only if asked for
+    // (systemMatrix, rightHandSide), from the faces kept here.
     bool singleBone = false;
+    std::vector<std::array<int, 3>> singleBoneFaces;
+    std::once_flag assembled;
 
     ~Impl() {
         if (factor != nullptr) {
@@ -126,6 +130,8 @@ struct BoneHeatSolver::Impl {
 
     void findClosestBones(const TriMesh& mesh, const ClosestBones& given);
     void assemble(const TriMesh& mesh);
+    // The system of a single bone, assembled on first use.
+    void assembleSingleBone();
     void useMirror(const TriMesh& mesh, const std::vector<int>& mirror);
     void reduce();
     void factorize();
@@ -276,6 +282,15 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
             }
         },
         matrix);
+}
+
+void BoneHeatSolver::Impl::assembleSingleBone() {
+    std::call_once(assembled, [&] {
+        TriMesh mesh;
+        mesh.vertices = positions;
+        mesh.faces = std::move(singleBoneFaces);
+        assemble(mesh);
+    });
 }
 
 void BoneHeatSolver::Impl::useMirror(const TriMesh& mesh, const std::vector<int>& mirror) {
@@ -443,10 +458,12 @@ BoneHeatSolver::BoneHeatSolver(const TriMesh& mesh, const std::vector<BoneSegmen
         impl_->boneIsFinite.push_back(isFinite(bone) ? 1 : 0);
     }
     impl_->findClosestBones(mesh, closestBones);
-    impl_->assemble(mesh);
     impl_->singleBone = bones.size() == 1;  // finite (validateInput)
-    if (impl_->singleBone)
+    if (impl_->singleBone) {
+        impl_->singleBoneFaces = mesh.faces;
         return;
+    }
+    impl_->assemble(mesh);
     impl_->useMirror(mesh, mirror);
     if (!impl_->orbit.empty())
         impl_->reduce();
@@ -476,6 +493,8 @@ int BoneHeatSolver::verticesWithoutVisibleBone() const {
     return impl_->withoutVisible;
 }
 const Eigen::SparseMatrix<double>& BoneHeatSolver::systemMatrix() const {
+    if (impl_->singleBone)
+        impl_->assembleSingleBone();
     return impl_->matrix;
 }
 
@@ -483,6 +502,8 @@ Eigen::VectorXd BoneHeatSolver::rightHandSide(int bone) const {
     if (bone < 0 || bone >= boneCount()) {
         throw std::logic_error("There is no bone with this index.");
     }
+    if (impl_->singleBone)
+        impl_->assembleSingleBone();
     return impl_->rightHandSide(bone);
 }
 

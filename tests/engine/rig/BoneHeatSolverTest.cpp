@@ -52,6 +52,46 @@ TEST(BoneHeatSolver, WeightsArePositiveAndSumToOneOnEverySphereVertex) {
     EXPECT_TRUE(weights.failedBones.empty());
 }
 
+// One bone: the solver factors nothing and gives heat 1 everywhere, which
+// solves the system it would have factored (each Laplacian row, the
+// degenerate faces' uniform ones included, sums to zero); every vertex then
+// weighs 1 on that bone.
+TEST(BoneHeatSolver, ASingleBonesHeatIsOneEverywhereAndSolvesItsSystem) {
+    const TwoBoneTube tube;
+    TriMesh mesh = tube.mesh;
+    const int onRing = 18 * 24 + 3;
+    mesh.faces.push_back({onRing, onRing, onRing + 24});  // a repeated corner
+    const int middle = mesh.vertexCount();                // a vertex on collinear faces only
+    mesh.vertices.push_back(0.5 * (mesh.vertices[onRing] + mesh.vertices[onRing + 1]));
+    mesh.faces.push_back({onRing, middle, onRing + 1});
+    const std::vector<BoneSegment> bone = {{Vec3(0.25, 0, 0), Vec3(3.75, 0, 0)}};
+
+    const BoneHeatSolver solver(mesh, bone);
+    EXPECT_TRUE(solver.isFactorized());
+    EXPECT_FALSE(solver.solvesMirrorSymmetric());
+    const Eigen::VectorXd heat = solver.solveBone(0);
+    EXPECT_EQ(heat, Eigen::VectorXd::Ones(mesh.vertexCount()));
+    // The assembled system (its upper triangle stored) times the heat.
+    const Eigen::SparseMatrix<double> system =
+        solver.systemMatrix().selfadjointView<Eigen::Upper>();
+    ASSERT_EQ(system.rows(), mesh.vertexCount());
+    const Eigen::VectorXd rhs = solver.rightHandSide(0);
+    EXPECT_GT(rhs.minCoeff(), 0.0);
+    EXPECT_LT((system * heat - rhs).lpNorm<Eigen::Infinity>(),
+              1e-12 * rhs.lpNorm<Eigen::Infinity>());
+
+    const SkinWeights weights = solver.solveAll();
+    ASSERT_EQ(weights.perVertex.size(), static_cast<std::size_t>(mesh.vertexCount()));
+    for (const auto& list : weights.perVertex) {
+        ASSERT_EQ(list.size(), 1u);
+        EXPECT_EQ(list.front(), std::make_pair(0, 1.0));
+    }
+    EXPECT_TRUE(weights.failedBones.empty());
+    // The vertex on collinear faces only has no normal to look along.
+    ASSERT_EQ(weights.warnings.size(), 1u) << englishText(weights.warnings);
+    EXPECT_EQ(weights.warnings.front(), (Message{MessageId::WeightsVerticesSeeNoBone, {"1"}}));
+}
+
 TEST(BoneHeatSolver, TubeEndsFollowTheirOwnBone) {
     const TwoBoneTube tube;
     const SkinWeights weights = computeBoneHeatWeights(tube.mesh, tube.bones);
