@@ -23,16 +23,16 @@ namespace {
 // one of the edge's faces: a new vertex of the split is one of them (CGAL
 // constructs it in its own arithmetic, so the nearest one is taken). A few
 // hundred points, searched linearly: cheaper than a search tree over every
-// triangle. `faces`, when not empty, marks the only faces whose edges the
+// triangle. `bandFaces`, when not empty, marks the only faces whose edges the
 // split may have crossed (the band's, cut/CutBand.h): the cut surface's side
 // (a search along a swept stroke) is then taken at their corners only.
 class EdgeCrossings {
   public:
     EdgeCrossings(const TriMesh& mesh, const CutSurface& surface,
-                  const std::vector<char>& faces = {}) {
-        const auto considered = [&](int f) { return faces.empty() || faces[f]; };
+                  const std::vector<char>& bandFaces = {}) {
+        const auto considered = [&](int f) { return bandFaces.empty() || bandFaces[f]; };
         std::vector<double> side(mesh.vertices.size(), 0.0);
-        if (faces.empty()) {
+        if (bandFaces.empty()) {
             for (std::size_t v = 0; v < side.size(); ++v)
                 side[v] = surface.side(mesh.vertices[v]);
         } else {
@@ -92,15 +92,22 @@ class EdgeCrossings {
 // unchanged vertex of a piece is the input vertex at its position. Open
 // addressing over the bits of the position: a node-based map's allocation
 // per vertex was a fifteenth of a cut (perf on bench_merge).
+// `kept`, when not empty, marks the only vertices looked up.
 class InputPositions {
   public:
-    explicit InputPositions(const std::vector<Vec3>& points) : points_(points) {
+    explicit InputPositions(const std::vector<Vec3>& points, const std::vector<char>& kept = {})
+        : points_(points) {
+        const std::size_t count =
+            kept.empty() ? points.size()
+                         : static_cast<std::size_t>(std::count(kept.begin(), kept.end(), 1));
         std::size_t size = 16;
-        while (size < 2 * points.size())
+        while (size < 2 * count)
             size <<= 1;
         slots_.assign(size, -1);
         mask_ = size - 1;
         for (int v = 0; v < static_cast<int>(points.size()); ++v) {
+            if (!kept.empty() && !kept[v])
+                continue;
             std::size_t i = PointKeyHash{}(keyOf(points[v])) & mask_;
             while (slots_[i] >= 0 && !sameBits(points[slots_[i]], points[v]))
                 i = (i + 1) & mask_;
@@ -117,13 +124,55 @@ class InputPositions {
         return -1;
     }
 
-  private:
     static bool sameBits(const Vec3& a, const Vec3& b) {
         return std::memcmp(a.data(), b.data(), 3 * sizeof(double)) == 0;
     }
+
+  private:
     const std::vector<Vec3>& points_;
     std::vector<int> slots_;
     std::size_t mask_ = 0;
+};
+
+// Which input vertex a piece's point is, if any. Without the band: the input
+// vertex at its exact position (the lowest index). With the band's read-off
+// (each point's vertex on the whole surface, whose vertex i is input vertex
+// i, mesh/CgalClosedSurface.h): a vertex the split kept is itself (not the
+// lowest index at its position, where two input vertices share one); a new
+// one is an input vertex only where CGAL copied a vertex lying on the cut
+// (split_along_edges, CGAL 5.5 Polygon_mesh_processing/clip.h) or rounded
+// an intersection onto a corner, both corners of band faces, the only
+// vertices looked up then.
+class InputVertexFinder {
+  public:
+    InputVertexFinder(const TriMesh& mesh, const std::vector<char>& bandFaces)
+        : mesh_(mesh),
+          positions_(mesh.vertices, bandCorners(mesh, bandFaces)),
+          band_(!bandFaces.empty()) {}
+
+    // `wholeVertex`: the point's vertex on the whole surface, or -1.
+    int find(const Vec3& p, int wholeVertex) const {
+        if (band_ && wholeVertex >= 0 && wholeVertex < mesh_.vertexCount() &&
+            InputPositions::sameBits(mesh_.vertices[wholeVertex], p))
+            return wholeVertex;
+        return positions_.find(p);
+    }
+
+  private:
+    static std::vector<char> bandCorners(const TriMesh& mesh, const std::vector<char>& bandFaces) {
+        if (bandFaces.empty())
+            return {};
+        std::vector<char> corner(mesh.vertices.size(), 0);
+        for (int f = 0; f < mesh.faceCount(); ++f)
+            if (bandFaces[f])
+                for (int v : mesh.faces[f])
+                    corner[v] = 1;
+        return corner;
+    }
+
+    const TriMesh& mesh_;
+    InputPositions positions_;
+    bool band_;
 };
 
 // The side of the cut surface a piece lies on, judged by the vertices next
@@ -272,22 +321,7 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, SurfaceMesh surface,
     if (report)
         *report = local;
 
-    // When the split tells each point's vertex on the whole surface (whose
-    // vertex i is the input's vertex i, mesh/CgalClosedSurface.h), an old
-    // vertex at its own position is that input vertex and a new one (past
-    // the input's count) is no input vertex; otherwise the input vertex at
-    // the point's position (the lookup built only then).
-    std::optional<InputPositions> inputVertex;
-    const auto inputVertexAt = [&](const Vec3& p, int wholeVertex) {
-        if (wholeVertex >= mesh.vertexCount())
-            return -1;
-        if (wholeVertex >= 0 &&
-            std::memcmp(mesh.vertices[wholeVertex].data(), p.data(), 3 * sizeof(double)) == 0)
-            return wholeVertex;
-        if (!inputVertex)
-            inputVertex.emplace(mesh.vertices);
-        return inputVertex->find(p);
-    };
+    const InputVertexFinder inputVertex(mesh, bandFaces);
     const EdgeCrossings crossings(mesh, cut, bandFaces);
 
     std::vector<MeshPiece> pieces;
@@ -298,7 +332,7 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, SurfaceMesh surface,
             const Vec3& p = piece.mesh.vertices[i];
             const int wholeVertex =
                 i < component.wholeVertex.size() ? component.wholeVertex[i] : -1;
-            if (const int found = inputVertexAt(p, wholeVertex); found >= 0) {
+            if (const int found = inputVertex.find(p, wholeVertex); found >= 0) {
                 piece.sources.push_back(VertexSource::vertex(0, found));
             } else if (auto crossing = crossings.sourceOf(p)) {
                 piece.sources.push_back(*crossing);
