@@ -140,19 +140,33 @@ std::vector<char> bandFaces(const SurfaceMesh& whole, const SurfaceMesh& splitte
     }
     // The input's edges that may cross a splitter triangle: both their
     // faces (each face tests its own three edges; the test is the same
-    // either way along an edge).
+    // either way along an edge). A vertex's side of a triangle's plane is
+    // taken once (kUnknownSide until then), not once per edge around it.
+    constexpr signed char kUnknownSide = 2;
+    const std::size_t triangleCount = triangles.size();
+    std::vector<signed char> sides(position.size() * triangleCount, kUnknownSide);
+    const auto sideOf = [&](int vertex, std::size_t t) {
+        signed char& side = sides[vertex * triangleCount + t];
+        if (side == kUnknownSide)
+            side = static_cast<signed char>(triangles[t].plane.side(position[vertex]));
+        return side;
+    };
     for (int f = 0; f < faceCount; ++f)
         for (int k = 0; k < 3 && !inBand[f]; ++k) {
-            const Vec3& a = position[corners[f][k]];
-            const Vec3& b = position[corners[f][(k + 1) % 3]];
-            const Box box = boxOf({a, b});
+            const int from = corners[f][k], to = corners[f][(k + 1) % 3];
+            const Box box = boxOf({position[from], position[to]});
             if (!overlap(box, trianglesBox))
                 continue;
-            for (const Triangle& t : triangles)
-                if (overlap(box, t.box) && t.plane.mayMeet(a, b)) {
+            for (std::size_t t = 0; t < triangleCount; ++t) {
+                if (!overlap(box, triangles[t].box))
+                    continue;
+                // SidePlane::mayMeet on the sides kept.
+                const signed char sideFrom = sideOf(from, t);
+                if (sideFrom == 0 || sideFrom != sideOf(to, t)) {
                     inBand[f] = 1;
                     break;
                 }
+            }
         }
     // The input's faces a splitter edge may cross.
     for (int f = 0; f < faceCount; ++f) {
