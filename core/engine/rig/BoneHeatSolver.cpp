@@ -116,7 +116,7 @@ struct BoneHeatSolver::Impl {
     // is factored or solved, and the system is assembled only if asked for
     // (systemMatrix, rightHandSide), from the faces kept here.
     bool singleBone = false;
-    std::vector<std::array<int, 3>> singleBoneFaces;
+    TriMesh singleBoneMesh;
     std::once_flag assembled;
 
     ~Impl() {
@@ -285,12 +285,7 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
 }
 
 void BoneHeatSolver::Impl::assembleSingleBone() {
-    std::call_once(assembled, [&] {
-        TriMesh mesh;
-        mesh.vertices = positions;
-        mesh.faces = std::move(singleBoneFaces);
-        assemble(mesh);
-    });
+    std::call_once(assembled, [&] { assemble(singleBoneMesh); });
 }
 
 void BoneHeatSolver::Impl::useMirror(const TriMesh& mesh, const std::vector<int>& mirror) {
@@ -460,7 +455,7 @@ BoneHeatSolver::BoneHeatSolver(const TriMesh& mesh, const std::vector<BoneSegmen
     impl_->findClosestBones(mesh, closestBones);
     impl_->singleBone = bones.size() == 1;  // finite (validateInput)
     if (impl_->singleBone) {
-        impl_->singleBoneFaces = mesh.faces;
+        impl_->singleBoneMesh = mesh;
         return;
     }
     impl_->assemble(mesh);

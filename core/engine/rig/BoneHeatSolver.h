@@ -116,7 +116,8 @@ using ClosestBones = std::vector<std::vector<std::pair<int, double>>>;
 // order in which each vertex's sums are added).
 //
 // A single bone's heat is 1 at every vertex: every vertex's closest bone is
-// that bone, so its right-hand side is A H 1, and L 1 = 0 (each row of the
+// that bone (the bone is finite, validateInput, and so is every vertex's
+// distance to it), so its right-hand side is A H 1, and L 1 = 0 (each row of the
 // cotangent Laplacian, and of the orphans' uniform one, sums to zero), so
 // (L + A H) 1 = A H 1. The solver then factors nothing and solves nothing;
 // the weights are what the factored system gives up to its rounding, which

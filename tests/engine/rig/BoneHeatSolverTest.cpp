@@ -64,6 +64,7 @@ TEST(BoneHeatSolver, ASingleBonesHeatIsOneEverywhereAndSolvesItsSystem) {
     const int middle = mesh.vertexCount();                // a vertex on collinear faces only
     mesh.vertices.push_back(0.5 * (mesh.vertices[onRing] + mesh.vertices[onRing + 1]));
     mesh.faces.push_back({onRing, middle, onRing + 1});
+    mesh.vertices.push_back(Vec3(2.0, 0.1, 0.0));  // in no face
     const std::vector<BoneSegment> bone = {{Vec3(0.25, 0, 0), Vec3(3.75, 0, 0)}};
 
     const BoneHeatSolver solver(mesh, bone);
@@ -79,17 +80,36 @@ TEST(BoneHeatSolver, ASingleBonesHeatIsOneEverywhereAndSolvesItsSystem) {
     EXPECT_GT(rhs.minCoeff(), 0.0);
     EXPECT_LT((system * heat - rhs).lpNorm<Eigen::Infinity>(),
               1e-12 * rhs.lpNorm<Eigen::Infinity>());
+    // Asked again: the same system.
+    const Eigen::SparseMatrix<double> again = solver.systemMatrix();
+    EXPECT_EQ((again - solver.systemMatrix()).norm(), 0.0);
+    EXPECT_EQ(2 * again.nonZeros(), system.nonZeros() + mesh.vertexCount());  // upper triangle
+    // The factored system gives the same heat up to its rounding: a second,
+    // non-finite bone makes the solver factor it (the bone is left out of
+    // every vertex's closest bones, so the system and bone 0's right-hand
+    // side are the same).
+    const std::vector<BoneSegment> withUnusable = {
+        bone.front(), {Vec3(std::numeric_limits<double>::quiet_NaN(), 0, 0), Vec3(1, 0, 0)}};
+    const BoneHeatSolver factored(mesh, withUnusable);
+    ASSERT_TRUE(factored.isFactorized());
+    EXPECT_LT((factored.solveBone(0) - heat).lpNorm<Eigen::Infinity>(), 1e-9);
+    const SkinWeights factoredWeights = factored.solveAll();
 
     const SkinWeights weights = solver.solveAll();
     ASSERT_EQ(weights.perVertex.size(), static_cast<std::size_t>(mesh.vertexCount()));
-    for (const auto& list : weights.perVertex) {
+    for (std::size_t v = 0; v < weights.perVertex.size(); ++v) {
+        const auto& list = weights.perVertex[v];
         ASSERT_EQ(list.size(), 1u);
         EXPECT_EQ(list.front(), std::make_pair(0, 1.0));
+        EXPECT_EQ(factoredWeights.perVertex[v], list);
     }
     EXPECT_TRUE(weights.failedBones.empty());
-    // The vertex on collinear faces only has no normal to look along.
+    // The vertex on collinear faces only and the one in no face have no
+    // normal to look along; the factored solver says the same (after its
+    // note on the unusable bone).
     ASSERT_EQ(weights.warnings.size(), 1u) << englishText(weights.warnings);
-    EXPECT_EQ(weights.warnings.front(), (Message{MessageId::WeightsVerticesSeeNoBone, {"1"}}));
+    EXPECT_EQ(weights.warnings.front(), (Message{MessageId::WeightsVerticesSeeNoBone, {"2"}}));
+    EXPECT_EQ(factoredWeights.warnings.back(), weights.warnings.front());
 }
 
 TEST(BoneHeatSolver, TubeEndsFollowTheirOwnBone) {
