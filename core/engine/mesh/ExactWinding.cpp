@@ -67,16 +67,16 @@ std::optional<int> crossingOf(const Vec3& a, const Vec3& b, const Vec3& c, const
 }
 
 // The winding numbers counted along the rays from `points[p]` along axis
-// `k`, for the points p in `which`, in one pass over the faces: each face
+// `k`, for the points p in `undecided`, in one pass over the faces: each face
 // meets only the rays whose points lie within its box across the ray (found
 // by a binary search among the points sorted along axis i) and not beyond
 // it along the ray. A point whose ray meets an edge or a vertex, or that
 // lies on a face, gets nullopt.
 void windingsAlong(const TriMesh& mesh, const std::vector<Vec3>& points,
-                   const std::vector<int>& which, int k,
+                   const std::vector<int>& undecided, int k,
                    std::vector<std::optional<int>>& windings) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
-    std::vector<int> order = which;
+    std::vector<int> order = undecided;
     std::sort(order.begin(), order.end(),
               [&](int a, int b) { return points[a][i] < points[b][i]; });
     std::vector<double> sortedI(order.size());
@@ -108,7 +108,7 @@ void windingsAlong(const TriMesh& mesh, const std::vector<Vec3>& points,
                 failed[p] = 1;
         }
     }
-    for (int p : which)
+    for (int p : undecided)
         windings[p] = failed[p] ? std::nullopt : std::optional<int>(winding[p]);
 }
 
