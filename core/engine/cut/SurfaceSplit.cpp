@@ -19,32 +19,36 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 namespace {
 
+// The corners of the faces marked in `faces` (nothing when none are marked
+// at all: the whole surface).
+std::vector<char> cornersOf(const TriMesh& mesh, const std::vector<char>& faces) {
+    if (faces.empty())
+        return {};
+    std::vector<char> corner(mesh.vertices.size(), 0);
+    for (int f = 0; f < mesh.faceCount(); ++f)
+        if (faces[f])
+            for (int v : mesh.faces[f])
+                corner[v] = 1;
+    return corner;
+}
+
 // The points where the plane crosses the input's edges, each as a point on
 // one of the edge's faces: a new vertex of the split is one of them (CGAL
 // constructs it in its own arithmetic, so the nearest one is taken). A few
 // hundred points, searched linearly: cheaper than a search tree over every
 // triangle. `bandFaces`, when not empty, marks the only faces whose edges the
-// split may have crossed (the band's, cut/CutBand.h): the cut surface's side
-// (a search along a swept stroke) is then taken at their corners only.
+// split may have crossed (the band's, cut/CutBand.h), and `bandCorners`
+// their corners: the cut surface's side (a search along a swept stroke) is
+// then taken there only.
 class EdgeCrossings {
   public:
     EdgeCrossings(const TriMesh& mesh, const CutSurface& surface,
-                  const std::vector<char>& bandFaces = {}) {
+                  const std::vector<char>& bandFaces, const std::vector<char>& bandCorners) {
         const auto considered = [&](int f) { return bandFaces.empty() || bandFaces[f]; };
         std::vector<double> side(mesh.vertices.size(), 0.0);
-        if (bandFaces.empty()) {
-            for (std::size_t v = 0; v < side.size(); ++v)
+        for (std::size_t v = 0; v < side.size(); ++v)
+            if (bandCorners.empty() || bandCorners[v])
                 side[v] = surface.side(mesh.vertices[v]);
-        } else {
-            std::vector<char> wanted(mesh.vertices.size(), 0);
-            for (int f = 0; f < mesh.faceCount(); ++f)
-                if (considered(f))
-                    for (int v : mesh.faces[f])
-                        wanted[v] = 1;
-            for (std::size_t v = 0; v < side.size(); ++v)
-                if (wanted[v])
-                    side[v] = surface.side(mesh.vertices[v]);
-        }
         for (int f = 0; f < mesh.faceCount(); ++f) {
             if (!considered(f))
                 continue;
@@ -145,10 +149,9 @@ class InputPositions {
 // vertices looked up then.
 class InputVertexFinder {
   public:
-    InputVertexFinder(const TriMesh& mesh, const std::vector<char>& bandFaces)
-        : mesh_(mesh),
-          positions_(mesh.vertices, bandCorners(mesh, bandFaces)),
-          band_(!bandFaces.empty()) {}
+    // `bandCorners`: the band's corners (cornersOf), empty without the band.
+    InputVertexFinder(const TriMesh& mesh, const std::vector<char>& bandCorners)
+        : mesh_(mesh), positions_(mesh.vertices, bandCorners), band_(!bandCorners.empty()) {}
 
     // `wholeVertex`: the point's vertex on the whole surface, or -1.
     int find(const Vec3& p, int wholeVertex) const {
@@ -159,17 +162,6 @@ class InputVertexFinder {
     }
 
   private:
-    static std::vector<char> bandCorners(const TriMesh& mesh, const std::vector<char>& bandFaces) {
-        if (bandFaces.empty())
-            return {};
-        std::vector<char> corner(mesh.vertices.size(), 0);
-        for (int f = 0; f < mesh.faceCount(); ++f)
-            if (bandFaces[f])
-                for (int v : mesh.faces[f])
-                    corner[v] = 1;
-        return corner;
-    }
-
     const TriMesh& mesh_;
     InputPositions positions_;
     bool band_;
@@ -321,8 +313,9 @@ std::vector<MeshPiece> splitBySurface(const TriMesh& mesh, SurfaceMesh surface,
     if (report)
         *report = local;
 
-    const InputVertexFinder inputVertex(mesh, bandFaces);
-    const EdgeCrossings crossings(mesh, cut, bandFaces);
+    const std::vector<char> bandCorners = cornersOf(mesh, bandFaces);
+    const InputVertexFinder inputVertex(mesh, bandCorners);
+    const EdgeCrossings crossings(mesh, cut, bandFaces, bandCorners);
 
     std::vector<MeshPiece> pieces;
     for (SplitComponent& component : components) {
