@@ -1,6 +1,7 @@
 #include "mesh/MeshSelfIntersections.h"
 
 #include "mesh/MeshMirror.h"
+#include "mesh/MirroredHeightField.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -462,6 +463,12 @@ std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh) {
 
 std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh,
                                                           const std::vector<int>& mirror) {
+    // Sketch surfaces are mostly proven free of crossings by their shape, a
+    // height field over the sketch plane and its image; every crossing pair
+    // lies among the faces over a fold of it, if any.
+    if (const auto suspects = mirroredHeightFieldSuspects(mesh, mirror))
+        return suspects->empty() ? std::vector<std::array<int, 2>>{}
+                                 : pairsOnSoup(mesh, &*suspects);
     const std::optional<std::vector<int>> deciding = mirrorDecidingFaces(mesh, mirror);
     if (deciding && pairsOnSoup(mesh, &*deciding).empty())
         return {};

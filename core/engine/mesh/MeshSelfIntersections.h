@@ -24,9 +24,12 @@ std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh);
 
 // The same pairs for a surface that is its own mirror image in the plane
 // z = 0, `mirror` giving each vertex's image (as SketchSurface::mirror does):
-// when the image is exact, whether any pair exists is decided on about half
-// the faces (the upper half and those at the plane), and the pairs are listed
-// only if one does; otherwise all faces are tested.
+// where the proof of mesh/MirroredHeightField.h applies (each half a height
+// field over the plane but for a few folds), only its suspects, the faces
+// over the folds, are tested, usually none; else, when the image is exact,
+// whether any pair exists is decided on about half the faces (the upper half
+// and those at the plane), and the pairs are listed only if one does;
+// otherwise all faces are tested.
 std::vector<std::array<int, 2>> selfIntersectingFacePairs(const TriMesh& mesh,
                                                           const std::vector<int>& mirror);
 
