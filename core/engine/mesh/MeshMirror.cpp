@@ -1,5 +1,7 @@
 #include "mesh/MeshMirror.h"
 
+#include <array>
+
 namespace rigmesh {
 
 std::optional<std::vector<int>> mirrorFaceImages(const TriMesh& mesh,
@@ -16,34 +18,54 @@ std::optional<std::vector<int>> mirrorFaceImages(const TriMesh& mesh,
         if (!(q.x() == p.x() && q.y() == p.y() && q.z() == -p.z()))
             return std::nullopt;
     }
-    // Faces around each vertex, packed; a face's image is among those
-    // around the image of its first corner.
     const int faceTotal = mesh.faceCount();
-    std::vector<int> first(static_cast<std::size_t>(n) + 1, 0);
     for (const auto& f : mesh.faces)
-        for (int v : f) {
+        for (int v : f)
             if (v < 0 || v >= n)
                 return std::nullopt;
-            ++first[v + 1];
+    const auto isImageOf = [&](int face, const std::array<int, 3>& f) {
+        const auto& g = mesh.faces[face];
+        const auto has = [&](int v) { return g[0] == v || g[1] == v || g[2] == v; };
+        return has(mirror[f[0]]) && has(mirror[f[1]]) && has(mirror[f[2]]);
+    };
+    // A mesh built as a half and its image (surface/SketchSurface.h) lists
+    // the images in the faces' order: the face after the previous face's
+    // image is tried first, then the face half the list away. Else the
+    // faces around each vertex, packed, are searched: a face's image is
+    // among those around the image of its first corner (built on the first
+    // miss only).
+    std::vector<int> first, around;
+    const auto searchAround = [&](const std::array<int, 3>& f) {
+        if (first.empty()) {
+            first.assign(static_cast<std::size_t>(n) + 1, 0);
+            for (const auto& g : mesh.faces)
+                for (int v : g)
+                    ++first[v + 1];
+            for (int v = 0; v < n; ++v)
+                first[v + 1] += first[v];
+            around.resize(first.back());
+            std::vector<int> fill(first.begin(), first.end() - 1);
+            for (int i = 0; i < faceTotal; ++i)
+                for (int v : mesh.faces[i])
+                    around[fill[v]++] = i;
         }
-    for (int v = 0; v < n; ++v)
-        first[v + 1] += first[v];
-    std::vector<int> around(first.back());
-    std::vector<int> fill(first.begin(), first.end() - 1);
-    for (int i = 0; i < faceTotal; ++i)
-        for (int v : mesh.faces[i])
-            around[fill[v]++] = i;
-    const auto hasCorner = [&](int face, int v) {
-        const auto& f = mesh.faces[face];
-        return f[0] == v || f[1] == v || f[2] == v;
+        const int a = mirror[f[0]];
+        for (int k = first[a]; k < first[a + 1]; ++k)
+            if (isImageOf(around[k], f))
+                return around[k];
+        return -1;
     };
     std::vector<int> image(faceTotal, -1);
     for (int i = 0; i < faceTotal; ++i) {
         const auto& f = mesh.faces[i];
-        const int a = mirror[f[0]], b = mirror[f[1]], c = mirror[f[2]];
-        for (int k = first[a]; k < first[a + 1] && image[i] < 0; ++k)
-            if (hasCorner(around[k], b) && hasCorner(around[k], c))
-                image[i] = around[k];
+        const int next = i > 0 ? image[i - 1] + 1 : faceTotal;
+        const int across = (i + faceTotal / 2) % faceTotal;
+        if (next < faceTotal && isImageOf(next, f))
+            image[i] = next;
+        else if (isImageOf(across, f))
+            image[i] = across;
+        else
+            image[i] = searchAround(f);
         if (image[i] < 0)
             return std::nullopt;
     }
