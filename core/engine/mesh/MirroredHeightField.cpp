@@ -154,6 +154,11 @@ std::optional<std::vector<int>> mirroredHeightFieldSuspects(const TriMesh& mesh,
     const std::optional<std::vector<int>> images = mirrorFaceImages(mesh, mirror);
     if (!images)
         return std::nullopt;
+    // Each lower face the image of one upper face and of no other: a second
+    // copy of a face would be no one's image.
+    for (int i = 0; i < mesh.faceCount(); ++i)
+        if ((*images)[(*images)[i]] != i)
+            return std::nullopt;
     const int n = mesh.vertexCount();
     for (int v = 0; v < n; ++v)
         if (mesh.vertices[v].z() == 0 && mirror[v] != v)
@@ -212,8 +217,7 @@ std::optional<std::vector<int>> mirroredHeightFieldSuspects(const TriMesh& mesh,
             suspects.push_back((*images)[i]);
         }
     }
-    std::sort(suspects.begin(), suspects.end());  // two upper faces may share an image
-    suspects.erase(std::unique(suspects.begin(), suspects.end()), suspects.end());
+    std::sort(suspects.begin(), suspects.end());
     return suspects;
 }
 

@@ -21,7 +21,8 @@ namespace rigmesh {
 // mesh/MeshSelfIntersections.h): none when the mesh is proven free of them;
 // nothing at all when the proof does not apply. It applies when the mesh is
 // exactly its own mirror image (mesh/MeshMirror.h: `mirror` gives each
-// vertex's image), a vertex on the plane is its own image, and every face
+// vertex's image, and each face is the image of its image, so no face is
+// there twice), a vertex on the plane is its own image, and every face
 // lies on one side: its corners' heights all >= 0 with one > 0 (the upper
 // faces U), or the same below; no directed edge is in two faces of U, and
 // the edges of U without their reverse in U (its boundary) form one cycle
