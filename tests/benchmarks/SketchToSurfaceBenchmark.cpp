@@ -1,5 +1,6 @@
-// Sketch to surface (paper sections 2.1-2.2), stage by stage and as a whole,
-// on every good shared sketch, plus the whole pipeline on the biped at
+// Sketch to surface (paper sections 2.1-2.2), stage by stage (and the
+// built surface's closing check, with and without its mirror) and as a
+// whole, on every good shared sketch, plus the whole pipeline on the biped at
 // growing mesh resolutions.
 //
 // Benchmarks are registered at start-up but their inputs are built lazily on
@@ -19,6 +20,7 @@
 #include "base/Error.h"
 #include "geometry/ConstrainedTriangulation.h"
 #include "pipeline/SketchToSurface.h"
+#include "pipeline/SurfaceLimits.h"
 #include "sketch/Sketch.h"
 #include "sketch/StrokeCleaner.h"
 #include "surface/CrossSections.h"
@@ -42,7 +44,8 @@ struct SketchData {
     std::string name;
     std::vector<Vec2> stroke;  // read once, at registration
     std::unique_ptr<StageInputs> inputs;
-    std::string error;  // why the stage inputs could not be built
+    std::unique_ptr<SketchSurface> built;  // the pipeline's surface, for its checks
+    std::string error;                     // why the stage inputs could not be built
 };
 
 const StageInputs* stageInputs(SketchData& sketch, benchmark::State& state) {
@@ -184,6 +187,32 @@ void benchSurface(benchmark::State& state, SketchData* sketch, bool smooth) {
     state.counters["faces"] = faces;
 }
 
+// The closing check of the built surface (pipeline/SurfaceLimits.h:
+// checkBuiltMesh): with its mirror, as the pipeline runs it (the height
+// field proof of mesh/MirroredHeightField.h, the faces over its folds tested
+// pairwise), or without, every pair of faces whose boxes meet tested.
+void benchChecks(benchmark::State& state, SketchData* sketch, bool withMirror) {
+    if (!sketch->built && sketch->error.empty()) {
+        try {
+            sketch->built =
+                std::make_unique<SketchSurface>(sketchToSurface(sketch->stroke).surface);
+        } catch (const Error& error) {
+            sketch->error = sketch->name + ": " + error.what();
+        }
+    }
+    if (!sketch->built) {
+        state.SkipWithError(sketch->error.c_str());
+        return;
+    }
+    const SketchSurface& surface = *sketch->built;
+    const std::vector<int> noMirror;
+    for (auto _ : state) {
+        checkBuiltMesh(surface.mesh, withMirror ? surface.mirror : noMirror);
+        benchmark::ClobberMemory();
+    }
+    state.counters["faces"] = surface.mesh.faceCount();
+}
+
 void runPipeline(benchmark::State& state, const std::vector<Vec2>& stroke,
                  const SketchToSurfaceOptions& options) {
     int vertices = 0;
@@ -282,6 +311,11 @@ void registerBenchmarks() {
             ->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark(("Stage/surfaceSmooth/" + name).c_str(), benchSurface, sketch,
                                      true)
+            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("Stage/checks/" + name).c_str(), benchChecks, sketch, true)
+            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("Stage/checksEveryFacePair/" + name).c_str(), benchChecks,
+                                     sketch, false)
             ->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark(("Pipeline/" + name).c_str(), benchPipeline, sketch)
             ->UseRealTime()
