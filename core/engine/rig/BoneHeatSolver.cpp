@@ -116,7 +116,7 @@ struct BoneHeatSolver::Impl {
     // is factored or solved, and the system is assembled only if asked for
     // (systemMatrix, rightHandSide), from the faces kept here.
     bool singleBone = false;
-    TriMesh singleBoneMesh;
+    std::vector<std::array<int, 3>> singleBoneFaces;
     std::once_flag assembled;
 
     ~Impl() {
@@ -129,7 +129,8 @@ struct BoneHeatSolver::Impl {
     int boneCount() const { return static_cast<int>(bones.size()); }
 
     void findClosestBones(const TriMesh& mesh, const ClosestBones& given);
-    void assemble(const TriMesh& mesh);
+    // L + A H over `faces` (of `positions`).
+    void assemble(const std::vector<std::array<int, 3>>& faces);
     // The system of a single bone, assembled on first use.
     void assembleSingleBone();
     void useMirror(const TriMesh& mesh, const std::vector<int>& mirror);
@@ -182,9 +183,9 @@ void BoneHeatSolver::Impl::findClosestBones(const TriMesh& mesh, const ClosestBo
     }
 }
 
-void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
+void BoneHeatSolver::Impl::assemble(const std::vector<std::array<int, 3>>& faces) {
     const int n = vertexCount();
-    const int faceTotal = mesh.faceCount();
+    const int faceTotal = static_cast<int>(faces.size());
     Eigen::VectorXd area = Eigen::VectorXd::Zero(n);
     // Per vertex: how many usable triangles it has, and the uniform weights
     // of the edges of its unusable ones (used only if it has no other).
@@ -195,7 +196,7 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
     std::vector<double> halfCots(3 * static_cast<std::size_t>(faceTotal));
     std::vector<std::array<int, 3>> degenerate;
     for (int f = 0; f < faceTotal; ++f) {
-        const auto& face = mesh.faces[f];
+        const auto& face = faces[f];
         for (int corner : face) {
             inAnyFace[corner] = 1;
         }
@@ -262,7 +263,7 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
                 if (!usable[f]) {
                     continue;
                 }
-                const auto& face = mesh.faces[f];
+                const auto& face = faces[f];
                 for (int c = 0; c < 3; ++c) {
                     const int j = face[(c + 1) % 3];
                     const int k = face[(c + 2) % 3];
@@ -285,7 +286,7 @@ void BoneHeatSolver::Impl::assemble(const TriMesh& mesh) {
 }
 
 void BoneHeatSolver::Impl::assembleSingleBone() {
-    std::call_once(assembled, [&] { assemble(singleBoneMesh); });
+    std::call_once(assembled, [&] { assemble(singleBoneFaces); });
 }
 
 void BoneHeatSolver::Impl::useMirror(const TriMesh& mesh, const std::vector<int>& mirror) {
@@ -455,10 +456,10 @@ BoneHeatSolver::BoneHeatSolver(const TriMesh& mesh, const std::vector<BoneSegmen
     impl_->findClosestBones(mesh, closestBones);
     impl_->singleBone = bones.size() == 1;  // finite (validateInput)
     if (impl_->singleBone) {
-        impl_->singleBoneMesh = mesh;
+        impl_->singleBoneFaces = mesh.faces;
         return;
     }
-    impl_->assemble(mesh);
+    impl_->assemble(mesh.faces);
     impl_->useMirror(mesh, mirror);
     if (!impl_->orbit.empty())
         impl_->reduce();
