@@ -69,6 +69,11 @@ std::optional<std::vector<int>> mirrorFaceImages(const TriMesh& mesh,
         if (image[i] < 0)
             return std::nullopt;
     }
+    // Each face the image of its image: a face listed twice is no one's (a
+    // face's image is one face on its corners' images).
+    for (int i = 0; i < faceTotal; ++i)
+        if (image[image[i]] != i)
+            return std::nullopt;
     return image;
 }
 

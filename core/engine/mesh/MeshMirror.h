@@ -14,7 +14,8 @@ namespace rigmesh {
 // vertex's image, as SketchSurface::mirror gives it) makes the mesh exactly
 // its own mirror image: mirror is an involution, every vertex's image sits at
 // (x, y, -z) bit for bit (a vertex on the plane is its own image), and every
-// face has a face on its corners' images. Otherwise nothing.
+// face has a face on its corners' images whose image it is in turn (so no
+// face is listed twice). Otherwise nothing.
 std::optional<std::vector<int>> mirrorFaceImages(const TriMesh& mesh,
                                                  const std::vector<int>& mirror);
 

@@ -399,7 +399,8 @@ std::vector<std::array<int, 2>> pairsOnSoup(const TriMesh& mesh,
 // image in the plane z = 0 intersects itself, or nothing when it is not
 // exactly that: every vertex v has its image mirror[v] at (x, y, -z) (bit for
 // bit; a vertex on the plane is its own), and every face (a, b, c) has a face
-// on (mirror[a], mirror[b], mirror[c]) whose image it is in turn.
+// on (mirror[a], mirror[b], mirror[c]) whose image it is in turn
+// (mirrorFaceImages: no face listed twice, which the argument would miss).
 //
 // Why these suffice. Reflection maps intersecting face pairs to intersecting
 // face pairs: facesIntersect decides with CGAL's exact predicates (its
@@ -423,11 +424,6 @@ std::optional<std::vector<int>> mirrorDecidingFaces(const TriMesh& mesh,
         return std::nullopt;
     const std::vector<int>& image = *images;
     const int faceTotal = mesh.faceCount();
-    // A face listed twice is no one's image (a face's image is the first
-    // face on its corners' images): the argument below would miss it.
-    for (int i = 0; i < faceTotal; ++i)
-        if (image[image[i]] != i)
-            return std::nullopt;
     const auto zSum = [&](int face) {
         const auto& f = mesh.faces[face];
         return mesh.vertices[f[0]].z() + mesh.vertices[f[1]].z() + mesh.vertices[f[2]].z();

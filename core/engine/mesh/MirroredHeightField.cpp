@@ -152,13 +152,8 @@ constexpr std::size_t kMostFoldedPerFace = 64;
 std::optional<std::vector<int>> mirroredHeightFieldSuspects(const TriMesh& mesh,
                                                             const std::vector<int>& mirror) {
     const std::optional<std::vector<int>> images = mirrorFaceImages(mesh, mirror);
-    if (!images)
+    if (!images)  // also when a face is listed twice (mesh/MeshMirror.h)
         return std::nullopt;
-    // Each lower face the image of one upper face and of no other: a second
-    // copy of a face would be no one's image.
-    for (int i = 0; i < mesh.faceCount(); ++i)
-        if ((*images)[(*images)[i]] != i)
-            return std::nullopt;
     const int n = mesh.vertexCount();
     for (int v = 0; v < n; ++v)
         if (mesh.vertices[v].z() == 0 && mirror[v] != v)

@@ -52,7 +52,7 @@ TEST(MeshMirror, EveryFacesImageIsTheFaceOnItsCornersImagesInOrderOrShuffled) {
     EXPECT_EQ(*shuffledImages, imagesByEveryFace(shuffled, surface.mirror));
 }
 
-TEST(MeshMirror, AMeshWithoutAFacesImageOrWithAVertexOffItsImageHasNone) {
+TEST(MeshMirror, AMeshWithoutAFacesImageOrAFaceTwiceOrAVertexOffItsImageHasNone) {
     const SketchSurface surface =
         sketchToSurface(testsupport::polarOutline(32, [](double) { return 1.0; })).surface;
     ASSERT_TRUE(mirrorFaceImages(surface.mesh, surface.mirror).has_value());
@@ -65,6 +65,9 @@ TEST(MeshMirror, AMeshWithoutAFacesImageOrWithAVertexOffItsImageHasNone) {
         ++above;
     moved.vertices[above].x() += 1e-12;
     EXPECT_FALSE(mirrorFaceImages(moved, surface.mirror).has_value());
+    TriMesh twice = surface.mesh;  // a face listed twice is no face's image
+    twice.faces.push_back(twice.faces.front());
+    EXPECT_FALSE(mirrorFaceImages(twice, surface.mirror).has_value());
     TriMesh outOfRange = surface.mesh;
     outOfRange.faces.front()[0] = outOfRange.vertexCount();
     EXPECT_FALSE(mirrorFaceImages(outOfRange, surface.mirror).has_value());
