@@ -5,7 +5,10 @@ the importer cannot read the file (Assimp's own message: a broken, empty or
 unsupported file; over the import's memory limit), it holds no triangle
 mesh or no face, a non-finite number, every part in it is rigged already. Anything else fails the test: a crash or a
 hang (no exit within TIMEOUT seconds), a refusal for crossing faces, holes,
-pieces or any other reason, a rigged file whose document is not written.
+pieces or any other reason (the rig itself refuses a part that fails
+Part::validate: weights finite, non-negative and summing to 1 on every
+vertex, on bones the skeleton has), a rigged file whose document is not
+written.
 
 usage: python3 rig_every_assimp_model.py RIGMESH MODELS_DIR OUT_DIR
 """
