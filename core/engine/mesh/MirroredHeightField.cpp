@@ -1,7 +1,7 @@
 #include "mesh/MirroredHeightField.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/intersections.h>
+#include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
 #include <array>
@@ -14,7 +14,6 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point2 = Kernel::Point_2;
-using Segment2 = Kernel::Segment_2;
 
 enum class Side { Upper, Lower, Neither };
 
@@ -92,57 +91,6 @@ std::optional<std::vector<int>> boundaryCycle(const TriMesh& mesh, const Directe
     return cycle;
 }
 
-// Whether the closed polygon through `points` is simple (exact predicates):
-// consecutive sides meet in their shared corner only, other sides not at
-// all. Side pairs are found by a sweep along x.
-bool isSimplePolygon(const std::vector<Point2>& points) {
-    const int count = static_cast<int>(points.size());
-    for (int i = 0; i < count; ++i) {
-        const Point2& a = points[i];
-        const Point2& b = points[(i + 1) % count];
-        const Point2& c = points[(i + 2) % count];
-        if (a == b)
-            return false;
-        // A turn back along the same line would overlap the two sides.
-        if (CGAL::collinear(a, b, c) && !CGAL::collinear_are_strictly_ordered_along_line(a, b, c))
-            return false;
-    }
-    std::vector<int> order(count);
-    for (int i = 0; i < count; ++i)
-        order[i] = i;
-    const auto lowX = [&](int i) { return std::min(points[i].x(), points[(i + 1) % count].x()); };
-    const auto highX = [&](int i) { return std::max(points[i].x(), points[(i + 1) % count].x()); };
-    std::sort(order.begin(), order.end(), [&](int i, int j) { return lowX(i) < lowX(j); });
-    for (int k = 0; k < count; ++k) {
-        const int i = order[k];
-        const Segment2 side(points[i], points[(i + 1) % count]);
-        const CGAL::Bbox_2 box = side.bbox();
-        for (int l = k + 1; l < count && lowX(order[l]) <= highX(i); ++l) {
-            const int j = order[l];
-            if ((j + 1) % count == i || (i + 1) % count == j)
-                continue;  // consecutive: checked above
-            const Segment2 other(points[j], points[(j + 1) % count]);
-            if (CGAL::do_overlap(box, other.bbox()) && CGAL::do_intersect(side, other))
-                return false;
-        }
-    }
-    return true;
-}
-
-// The turn of a simple polygon: that at its lowest corner (least x, then
-// least y), which is convex.
-CGAL::Orientation turnOf(const std::vector<Point2>& polygon) {
-    const int count = static_cast<int>(polygon.size());
-    const int lowest = static_cast<int>(
-        std::min_element(polygon.begin(), polygon.end(),
-                         [](const Point2& a, const Point2& b) {
-                             return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-                         }) -
-        polygon.begin());
-    return CGAL::orientation(polygon[(lowest + count - 1) % count], polygon[lowest],
-                             polygon[(lowest + 1) % count]);
-}
-
 // Folds on more than one upper face in this many are left to the pairwise
 // test: each upper face's box is compared with every fold's.
 constexpr std::size_t kMostFoldedPerFace = 64;
@@ -180,12 +128,15 @@ std::optional<std::vector<int>> mirroredHeightFieldSuspects(const TriMesh& mesh,
     outline.reserve(cycle->size());
     for (int v : *cycle)
         outline.push_back(projected[v]);
-    if (!isSimplePolygon(outline))
+    // CGAL's sweep with exact predicates: sides meet only where consecutive
+    // ones share a corner (a repeated corner or a side turning back along
+    // the last one is a crossing).
+    if (!CGAL::is_simple_2(outline.begin(), outline.end(), Kernel()))
         return std::nullopt;
     // The faces turning as the outline does cover its inside once over;
     // the others (the folds) are the suspects, with every upper face whose
     // box in the plane meets one of theirs.
-    const CGAL::Orientation turn = turnOf(outline);
+    const CGAL::Orientation turn = CGAL::orientation_2(outline.begin(), outline.end(), Kernel());
     std::vector<int> folded;
     for (int i : upper) {
         const auto& f = mesh.faces[i];
