@@ -19,8 +19,9 @@ MeshReport analyseMeshTopology(const TriMesh& mesh);
 // faces around each used vertex form one fan: a closed, manifold,
 // consistently oriented surface (what CGAL's Surface_mesh builds as a closed
 // one; analyseMeshTopology finds no boundary, non-manifold or mis-oriented
-// edge and no non-manifold vertex there). Each vertex's edges in one packed
-// array, no sorting: a few times cheaper than analyseMeshTopology.
+// edge and no non-manifold vertex there). Each vertex's corners in one packed
+// array, its fan followed within its own corners (no lookups in other
+// vertices' lists): a few times cheaper than analyseMeshTopology.
 bool isClosedOrientedManifold(const TriMesh& mesh);
 
 }  // namespace rigmesh

@@ -3,6 +3,8 @@
 // and its agreement with analyseMeshTopology.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "TestShapes.h"
 #include "mesh/MeshPrimitives.h"
 #include "mesh/MeshTopologyCheck.h"
@@ -37,11 +39,60 @@ TEST(ClosedOrientedManifold, OnlyClosedOrientedManifoldsAreTakenForSurfaces) {
     EXPECT_FALSE(isClosedOrientedManifold(TriMesh{}));
 }
 
+// A double cone: two apexes with `segments` faces each, more than a
+// vertex's corners are scanned for (MeshTopologyCheck.cpp sorts them).
+TriMesh doubleCone(int segments) {
+    TriMesh cone;
+    for (int k = 0; k < segments; ++k) {
+        const double angle = 2.0 * 3.14159265358979 * k / segments;
+        cone.vertices.emplace_back(std::cos(angle), std::sin(angle), 0.0);
+    }
+    const int top = segments, bottom = segments + 1;
+    cone.vertices.emplace_back(0.0, 0.0, 1.0);
+    cone.vertices.emplace_back(0.0, 0.0, -1.0);
+    for (int k = 0; k < segments; ++k) {
+        const int next = (k + 1) % segments;
+        cone.faces.push_back({k, next, top});
+        cone.faces.push_back({next, k, bottom});
+    }
+    return cone;
+}
+
+TEST(ClosedOrientedManifold, JudgesVerticesWithManyFacesAsFew) {
+    const TriMesh cone = doubleCone(40);
+    EXPECT_TRUE(isClosedOrientedManifold(cone));
+    TriMesh flipped = cone;
+    std::swap(flipped.faces[10][0], flipped.faces[10][1]);
+    EXPECT_FALSE(isClosedOrientedManifold(flipped));
+    TriMesh open = cone;
+    open.faces.erase(open.faces.begin() + 6);
+    EXPECT_FALSE(isClosedOrientedManifold(open));
+    TriMesh doubled = cone;
+    doubled.faces.push_back(doubled.faces[4]);
+    EXPECT_FALSE(isClosedOrientedManifold(doubled));
+    // Two cones whose top apexes are one vertex: two fans of 40 faces there.
+    TriMesh pinched = cone;
+    TriMesh other = cone;
+    for (Vec3& p : other.vertices)
+        p.z() = 2.0 - p.z();
+    for (auto& face : other.faces)
+        std::swap(face[0], face[1]);
+    testshapes::append(pinched, other);
+    const int otherTop = cone.vertexCount() + 40;
+    for (auto& face : pinched.faces)
+        for (int& v : face)
+            if (v == otherTop)
+                v = 40;
+    EXPECT_FALSE(isClosedOrientedManifold(pinched));
+    EXPECT_EQ(analyseMeshTopology(pinched).isManifold(), false);
+}
+
 // Wherever the fast check says yes, the full analysis finds nothing to
 // refuse; wherever the analysis finds something, the fast check says no.
 TEST(ClosedOrientedManifold, AgreesWithTheTopologyAnalysis) {
     std::vector<TriMesh> meshes{testshapes::torus(12, 8, 1.0, 0.3), testshapes::tetrahedron(),
-                                testshapes::box(Vec3::Zero(), Vec3::Ones()), makeIcosphere(3, 1.0)};
+                                testshapes::box(Vec3::Zero(), Vec3::Ones()), makeIcosphere(3, 1.0),
+                                doubleCone(40)};
     const std::size_t closed = meshes.size();
     for (std::size_t m = 0; m < closed; ++m) {
         TriMesh open = meshes[m];
