@@ -16,7 +16,7 @@
 #include "pose/InverseKinematics.h"
 #include "pose/Skinning.h"
 #include "pose/SkinningBinding.h"
-#include "pose/VertexNormals.h"
+#include "mesh/VertexNormals.h"
 
 namespace rigmesh {
 namespace {

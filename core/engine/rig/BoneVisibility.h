@@ -54,4 +54,11 @@ std::vector<std::vector<std::pair<int, double>>> closestVisibleBones(
     const std::vector<int>& verticesToTest, double tieTolerance = 3e-3,
     int* verticesWithoutVisibleBone = nullptr);
 
+// The same with the mesh's unit vertex normals given (mesh/VertexNormals.h),
+// for callers that test the same mesh several times.
+std::vector<std::vector<std::pair<int, double>>> closestVisibleBones(
+    const TriMesh& mesh, const std::vector<Vec3>& normals, const std::vector<BoneSegment>& bones,
+    const BoneVisibility& visibility, const std::vector<int>& verticesToTest,
+    double tieTolerance = 3e-3, int* verticesWithoutVisibleBone = nullptr);
+
 }  // namespace rigmesh

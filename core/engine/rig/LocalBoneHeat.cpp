@@ -13,6 +13,7 @@
 #include "base/Error.h"
 #include "base/ParallelFor.h"
 #include "mesh/MeshAdjacency.h"
+#include "mesh/VertexNormals.h"
 #include "rig/BoneSegments.h"
 #include "rig/BoneVisibility.h"
 #include "rig/HeatTerms.h"
@@ -108,22 +109,26 @@ LocalBoneHeatResult recomputeWeightsLocally(const TriMesh& mesh, const Skeleton&
     const std::vector<BoneSegment> allSegments = segmentsOf(skeleton, allIds);
     // The visibility tree over the whole part (half of a local re-skin at
     // the camel's last merge, measured with perf) is built while the
-    // adjacency is, on a second thread.
+    // adjacency and the normals the visibility tests read are, on a second
+    // thread (the normals once, not at every ring of the search below).
     std::optional<BoneVisibility> visibilityTree;
     std::vector<std::vector<int>> neighbours;
+    std::vector<Vec3> normals;
     parallelFor(2, 2, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            if (k == 0)
+            if (k == 0) {
                 visibilityTree.emplace(mesh);
-            else
+            } else {
                 neighbours = vertexNeighbours(mesh);
+                normals = vertexNormals(mesh);
+            }
         }
     });
     const BoneVisibility& visibility = *visibilityTree;
     auto closestOf = [&](const std::vector<int>& vertices) {
         ClosestBonesById byId(vertices.size());
-        const auto found =
-            closestVisibleBones(mesh, allSegments, visibility, vertices, options.heat.tieTolerance);
+        const auto found = closestVisibleBones(mesh, normals, allSegments, visibility, vertices,
+                                               options.heat.tieTolerance);
         for (std::size_t i = 0; i < vertices.size(); ++i)
             for (const auto& [bone, d] : found[i])
                 byId[i].emplace_back(allIds[bone], d);
@@ -220,8 +225,8 @@ LocalBoneHeatResult recomputeWeightsLocally(const TriMesh& mesh, const Skeleton&
     const std::vector<BoneSegment> involvedSegments = segmentsOf(skeleton, result.bones);
     // Pinocchio's heat sources among the involved bones only ("run on the
     // included vertices and bones").
-    const auto heatSources = closestVisibleBones(mesh, involvedSegments, visibility, unknowns,
-                                                 options.heat.tieTolerance);
+    const auto heatSources = closestVisibleBones(mesh, normals, involvedSegments, visibility,
+                                                 unknowns, options.heat.tieTolerance);
 
     LocalSystem system = assemble(mesh, unknownIndex, m);
     Eigen::VectorXd heat = Eigen::VectorXd::Zero(m);

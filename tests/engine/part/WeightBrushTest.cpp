@@ -12,7 +12,7 @@
 #include "part/RigCheck.h"
 #include "part/WeightCleanup.h"
 #include "part/WeightPaint.h"
-#include "pose/VertexNormals.h"
+#include "mesh/VertexNormals.h"
 #include "rig/LocalBoneHeat.h"
 
 namespace rigmesh {

@@ -4,7 +4,7 @@
 #include "PoseTestSupport.h"
 #include "mesh/MeshPrimitives.h"
 #include "pose/SkinningBinding.h"
-#include "pose/VertexNormals.h"
+#include "mesh/VertexNormals.h"
 
 namespace rigmesh::posetest {
 namespace {

@@ -5,7 +5,7 @@
 #include "PoseTestSupport.h"
 #include "mesh/MeshPrimitives.h"
 #include "pose/Skinning.h"
-#include "pose/VertexNormals.h"
+#include "mesh/VertexNormals.h"
 
 namespace rigmesh::posetest {
 namespace {

@@ -1,5 +1,6 @@
-// Per-vertex unit normals of a triangle mesh, the rest normals skinning
-// deforms.
+// Per-vertex unit normals of a triangle mesh: the rest normals skinning
+// deforms, and the normals bone visibility's cone test reads
+// (rig/BoneVisibility).
 #pragma once
 
 #include <vector>

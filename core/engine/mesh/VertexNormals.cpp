@@ -1,4 +1,4 @@
-#include "pose/VertexNormals.h"
+#include "mesh/VertexNormals.h"
 
 #include <Eigen/Geometry>
 
