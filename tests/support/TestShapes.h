@@ -50,6 +50,25 @@ inline TriMesh box(const Vec3& low, const Vec3& high) {
 }
 
 // Appends `part` to `mesh` as a separate piece of the same soup.
+// Two cones on a unit circle of `segments` vertices, apexes at z = +-1: each
+// apex has `segments` faces around it.
+inline TriMesh doubleCone(int segments) {
+    TriMesh cone;
+    for (int k = 0; k < segments; ++k) {
+        const double angle = 2.0 * std::numbers::pi * k / segments;
+        cone.vertices.emplace_back(std::cos(angle), std::sin(angle), 0.0);
+    }
+    const int top = segments, bottom = segments + 1;
+    cone.vertices.emplace_back(0.0, 0.0, 1.0);
+    cone.vertices.emplace_back(0.0, 0.0, -1.0);
+    for (int k = 0; k < segments; ++k) {
+        const int next = (k + 1) % segments;
+        cone.faces.push_back({k, next, top});
+        cone.faces.push_back({next, k, bottom});
+    }
+    return cone;
+}
+
 inline void append(TriMesh& mesh, const TriMesh& part) {
     const int offset = mesh.vertexCount();
     mesh.vertices.insert(mesh.vertices.end(), part.vertices.begin(), part.vertices.end());

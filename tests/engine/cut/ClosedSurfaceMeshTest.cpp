@@ -12,6 +12,7 @@
 #include <random>
 
 #include "SharedSketchPart.h"
+#include "TestShapes.h"
 #include "mesh/CgalClosedSurface.h"
 #include "mesh/MeshPrimitives.h"
 
@@ -70,6 +71,20 @@ TEST(ClosedSurfaceMesh, GivesEulerAddFacesIndicesAndLinksOnShuffledSpheres) {
             expectSameAsEuler(
                 shuffled(makeIcosphere(subdivisions, 1.0), seed),
                 "icosphere " + std::to_string(subdivisions) + " seed " + std::to_string(seed));
+}
+
+// Apexes of 40 faces: more corners than CgalClosedSurface.h scans, sorted
+// and searched instead.
+TEST(ClosedSurfaceMesh, GivesEulerAddFacesIndicesAndLinksAroundVerticesOfManyFaces) {
+    const TriMesh cone = testshapes::doubleCone(40);
+    expectSameAsEuler(cone, "double cone");
+    expectSameAsEuler(shuffled(cone, 7), "shuffled double cone");
+    TriMesh flipped = cone;
+    std::swap(flipped.faces[10][0], flipped.faces[10][1]);
+    EXPECT_FALSE(cgal::closedSurfaceMesh(flipped));
+    TriMesh doubled = cone;
+    doubled.faces.push_back(doubled.faces[4]);
+    EXPECT_FALSE(cgal::closedSurfaceMesh(doubled));
 }
 
 TEST(ClosedSurfaceMesh, LeavesSurfacesThatAreNotClosedManifoldsToEuler) {

@@ -3,8 +3,6 @@
 // and its agreement with analyseMeshTopology.
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include "TestShapes.h"
 #include "mesh/MeshPrimitives.h"
 #include "mesh/MeshTopologyCheck.h"
@@ -39,27 +37,10 @@ TEST(ClosedOrientedManifold, OnlyClosedOrientedManifoldsAreTakenForSurfaces) {
     EXPECT_FALSE(isClosedOrientedManifold(TriMesh{}));
 }
 
-// A double cone: two apexes with `segments` faces each, more than a
-// vertex's corners are scanned for (MeshTopologyCheck.cpp sorts them).
-TriMesh doubleCone(int segments) {
-    TriMesh cone;
-    for (int k = 0; k < segments; ++k) {
-        const double angle = 2.0 * 3.14159265358979 * k / segments;
-        cone.vertices.emplace_back(std::cos(angle), std::sin(angle), 0.0);
-    }
-    const int top = segments, bottom = segments + 1;
-    cone.vertices.emplace_back(0.0, 0.0, 1.0);
-    cone.vertices.emplace_back(0.0, 0.0, -1.0);
-    for (int k = 0; k < segments; ++k) {
-        const int next = (k + 1) % segments;
-        cone.faces.push_back({k, next, top});
-        cone.faces.push_back({next, k, bottom});
-    }
-    return cone;
-}
-
+// A double cone's apexes have more faces than a vertex's corners are
+// scanned for (MeshTopologyCheck.cpp sorts them).
 TEST(ClosedOrientedManifold, JudgesVerticesWithManyFacesAsFew) {
-    const TriMesh cone = doubleCone(40);
+    const TriMesh cone = testshapes::doubleCone(40);
     EXPECT_TRUE(isClosedOrientedManifold(cone));
     TriMesh flipped = cone;
     std::swap(flipped.faces[10][0], flipped.faces[10][1]);
@@ -92,7 +73,7 @@ TEST(ClosedOrientedManifold, JudgesVerticesWithManyFacesAsFew) {
 TEST(ClosedOrientedManifold, AgreesWithTheTopologyAnalysis) {
     std::vector<TriMesh> meshes{testshapes::torus(12, 8, 1.0, 0.3), testshapes::tetrahedron(),
                                 testshapes::box(Vec3::Zero(), Vec3::Ones()), makeIcosphere(3, 1.0),
-                                doubleCone(40)};
+                                testshapes::doubleCone(40)};
     const std::size_t closed = meshes.size();
     for (std::size_t m = 0; m < closed; ++m) {
         TriMesh open = meshes[m];
