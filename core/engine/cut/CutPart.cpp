@@ -274,7 +274,10 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
     if (pieces[0].side == pieces[1].side)
         throw Error(MessageId::CutPiecesOnOneSide);
 
-    const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(part.mesh);
+    // The part's mean edge, measured once: the patches' edge length unless
+    // the request gives one, and the shortest bone a piece may keep.
+    const double meanEdge = meanEdgeLength(part.mesh);
+    const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdge;
     const WeightsById& weights = part.weights.perVertex;
 
     CutResult result;
@@ -301,7 +304,7 @@ CutResult cutPart(const Part& part, const CutRequest& request) {
     });
 
     std::map<JointId, int> pieceOf = jointPieces(part.skeleton, meshes, surface);
-    const double minimum = minimumBoneLength(part.mesh);
+    const double minimum = minimumBoneLength(meanEdge);
     const SplitSkeleton split = splitCrossingBones(part.skeleton, surface, pieceOf, minimum);
     const std::map<BoneId, BoneId>& tailHalf = split.tailHalf;
 

@@ -222,8 +222,11 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
     MeshUnionResult merged;
     auto stage = Clock::now();
     checkInputsDuring(target, dragged, [&] {
+        // The target's mean edge, measured once: the shortest bone the join
+        // may make and the seam's edge length unless the request gives one.
+        const double meanEdge = meanEdgeLength(target.mesh);
         join = joinSkeletons(target.skeleton, dragged.skeleton, request.join,
-                             minimumBoneLength(target.mesh));
+                             minimumBoneLength(meanEdge));
         result.draggedTranslation = join.draggedTranslation;
         draggedMesh = dragged.mesh;
         for (Vec3& p : draggedMesh.vertices)
@@ -231,8 +234,7 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
 
         // 3.2.1: the union and the seam remeshed at the part's edge length.
         stage = Clock::now();
-        const double edge =
-            request.edgeLength > 0.0 ? request.edgeLength : meanEdgeLength(target.mesh);
+        const double edge = request.edgeLength > 0.0 ? request.edgeLength : meanEdge;
         merged = unionMeshes(target.mesh, draggedMesh, edge);
         result.stats.unionMs = millisecondsSince(stage);
     });

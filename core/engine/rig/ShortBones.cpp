@@ -5,7 +5,11 @@
 namespace rigmesh {
 
 double minimumBoneLength(const TriMesh& mesh) {
-    return mesh.faceCount() > 0 ? 0.5 * meanEdgeLength(mesh) : 0.0;
+    return mesh.faceCount() > 0 ? minimumBoneLength(meanEdgeLength(mesh)) : 0.0;
+}
+
+double minimumBoneLength(double meanEdgeLength) {
+    return 0.5 * meanEdgeLength;
 }
 
 std::optional<ShortestBone> shortestBone(const Skeleton& skeleton) {

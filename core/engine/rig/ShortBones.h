@@ -15,6 +15,8 @@ namespace rigmesh {
 
 // Half the mean edge length of `mesh` (0 for a mesh without faces).
 double minimumBoneLength(const TriMesh& mesh);
+// The same from a mean edge length the caller has already measured.
+double minimumBoneLength(double meanEdgeLength);
 
 // The shortest bone of the skeleton and its length (none: no bones).
 struct ShortestBone {
