@@ -296,7 +296,7 @@ MergeResult mergeParts(const Part& target, const Part& dragged, const MergeReque
         LocalBoneHeatOptions options;
         options.heat = request.heat;
         LocalBoneHeatResult local = recomputeWeightsLocally(
-            merged.mesh, join.skeleton, carried.weights, seeds, unknown, extra, options);
+            merged.mesh, join.skeleton, std::move(carried.weights), seeds, unknown, extra, options);
         weights = std::move(local.weights);
         result.stats.verticesInvolved = local.verticesInvolved();
         result.stats.bonesInvolved = static_cast<int>(local.bones.size());

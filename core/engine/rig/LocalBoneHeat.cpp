@@ -95,13 +95,18 @@ LocalSystem assemble(const TriMesh& mesh, const std::vector<int>& unknownIndex, 
 }  // namespace
 
 LocalBoneHeatResult recomputeWeightsLocally(const TriMesh& mesh, const Skeleton& skeleton,
-                                            const WeightsById& weights,
+                                            WeightsById carriedWeights,
                                             const std::vector<int>& seeds,
                                             const std::vector<int>& unknown,
                                             const std::vector<BoneId>& extraBones,
                                             const LocalBoneHeatOptions& options) {
     if (skeleton.boneCount() == 0)
         throw Error(MessageId::WeightsNeedBone);
+    // The result's table is the carried one, each re-skinned vertex's list
+    // replaced after it has been read (the others are only read).
+    LocalBoneHeatResult result;
+    result.weights = std::move(carriedWeights);
+    const WeightsById& weights = result.weights;
     const int n = mesh.vertexCount();
     std::vector<BoneId> allIds;
     for (const Bone& bone : skeleton.bones())
@@ -137,7 +142,6 @@ LocalBoneHeatResult recomputeWeightsLocally(const TriMesh& mesh, const Skeleton&
 
     // Red: breadth first from the merge boundary while the inclusion test
     // holds (paper 3.2.2); the seeds without weights are in regardless.
-    LocalBoneHeatResult result;
     std::vector<char> state(n, 0);  // 1 tested, 2 red, 3 yellow
     std::vector<double> closestDistance(n, 0.0);
     std::set<BoneId> involved(extraBones.begin(), extraBones.end());
@@ -215,7 +219,6 @@ LocalBoneHeatResult recomputeWeightsLocally(const TriMesh& mesh, const Skeleton&
     unknowns.insert(unknowns.end(), result.transition.begin(), result.transition.end());
     std::sort(unknowns.begin(), unknowns.end());
     result.bones.assign(involved.begin(), involved.end());
-    result.weights = weights;
     if (unknowns.empty())
         return result;
     std::vector<int> unknownIndex(n, -1);

@@ -31,14 +31,15 @@ struct LocalBoneHeatResult {
     int verticesInvolved() const { return static_cast<int>(failedTest.size() + transition.size()); }
 };
 
-// `weights` are the carried weights (an empty list for a vertex without any);
+// `weights` are the carried weights (an empty list for a vertex without any),
+// taken by value: the result's table is them with the re-skinned vertices
+// replaced (a caller done with its table moves it in instead of copying);
 // `seeds` the merge boundary, where the breadth-first inclusion test starts;
 // `unknown` the seeds with no trustworthy weights, included whatever the test
 // says; `extraBones` bones that must take part (a new connecting bone).
 // Throws Error if the skeleton has no bone.
 LocalBoneHeatResult recomputeWeightsLocally(const TriMesh& mesh, const Skeleton& skeleton,
-                                            const WeightsById& weights,
-                                            const std::vector<int>& seeds,
+                                            WeightsById weights, const std::vector<int>& seeds,
                                             const std::vector<int>& unknown,
                                             const std::vector<BoneId>& extraBones = {},
                                             const LocalBoneHeatOptions& options = {});
