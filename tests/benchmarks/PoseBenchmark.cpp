@@ -12,11 +12,11 @@
 
 #include "BenchmarkSupport.h"
 #include "mesh/MeshPrimitives.h"
+#include "mesh/VertexNormals.h"
 #include "pose/ForwardKinematics.h"
 #include "pose/InverseKinematics.h"
 #include "pose/Skinning.h"
 #include "pose/SkinningBinding.h"
-#include "mesh/VertexNormals.h"
 
 namespace rigmesh {
 namespace {

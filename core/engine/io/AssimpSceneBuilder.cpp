@@ -14,8 +14,8 @@
 #include "io/AssimpConversions.h"
 #include "io/ExportRig.h"
 #include "io/InfluenceLimit.h"
-#include "pose/Skinning.h"
 #include "mesh/VertexNormals.h"
+#include "pose/Skinning.h"
 
 namespace rigmesh {
 namespace {

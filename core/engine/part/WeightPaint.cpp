@@ -6,8 +6,8 @@
 
 #include "base/Error.h"
 #include "mesh/MeshAdjacency.h"
-#include "part/WeightLists.h"
 #include "mesh/VertexNormals.h"
+#include "part/WeightLists.h"
 #include "rig/BoneSegments.h"
 #include "rig/VertexMirror.h"
 

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "base/ParallelFor.h"
+#include "mesh/VertexNormals.h"
 #include "pose/ForwardKinematics.h"
 #include "pose/SkinningKernel.h"
-#include "mesh/VertexNormals.h"
 
 namespace rigmesh {
 

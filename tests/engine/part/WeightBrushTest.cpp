@@ -9,10 +9,10 @@
 #include "SharedSketchPart.h"
 #include "base/Error.h"
 #include "mesh/MeshAdjacency.h"
+#include "mesh/VertexNormals.h"
 #include "part/RigCheck.h"
 #include "part/WeightCleanup.h"
 #include "part/WeightPaint.h"
-#include "mesh/VertexNormals.h"
 #include "rig/LocalBoneHeat.h"
 
 namespace rigmesh {

@@ -3,8 +3,8 @@
 
 #include "PoseTestSupport.h"
 #include "mesh/MeshPrimitives.h"
-#include "pose/SkinningBinding.h"
 #include "mesh/VertexNormals.h"
+#include "pose/SkinningBinding.h"
 
 namespace rigmesh::posetest {
 namespace {

@@ -4,8 +4,8 @@
 
 #include "PoseTestSupport.h"
 #include "mesh/MeshPrimitives.h"
-#include "pose/Skinning.h"
 #include "mesh/VertexNormals.h"
+#include "pose/Skinning.h"
 
 namespace rigmesh::posetest {
 namespace {
