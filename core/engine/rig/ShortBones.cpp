@@ -5,7 +5,7 @@
 namespace rigmesh {
 
 double minimumBoneLength(const TriMesh& mesh) {
-    return mesh.faceCount() > 0 ? minimumBoneLength(meanEdgeLength(mesh)) : 0.0;
+    return minimumBoneLength(meanEdgeLength(mesh));  // 0 without faces
 }
 
 double minimumBoneLength(double meanEdgeLength) {
