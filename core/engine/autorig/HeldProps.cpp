@@ -8,16 +8,13 @@
 #include <optional>
 #include <set>
 
-#include "autorig/JointsInside.h"
-#include "geometry/PrincipalAxes.h"
+#include "autorig/SkeletonPieces.h"
 #include "rig/BoneSegments.h"
 
 namespace rigmesh {
 
 namespace {
 
-// A joint is in a piece where the piece's winding number exceeds this.
-constexpr double kInsideWinding = 0.5;
 // A pruned branch's prop vertices must stay within this share of the
 // coverage distance, the share autorig/BoneCoverage brings a far region to.
 constexpr double kCoverageShare = 0.9;
@@ -27,150 +24,11 @@ constexpr int kAxisSamples = 64;
 // (a shoe with toe and heel, a helmet, shorts) is no prop.
 constexpr double kLeastElongation = 3.0;
 
-// The mesh's pieces, each with its own faces and vertices.
-struct Piece {
-    TriMesh mesh;  // compact: only the piece's vertices
-    Eigen::AlignedBox3d box;
-    Vec3 centroid = Vec3::Zero();
-    Vec3 axis = Vec3::UnitX();  // the main direction of its vertices
-    // The spread along the axis over the spread across it (standard
-    // deviations): a shaft 7 radii long has 3.
-    double elongation = 0.0;
-};
-
-std::vector<Piece> piecesOf(const TriMesh& mesh, const std::vector<int>& pieceOf, int count) {
-    std::vector<Piece> pieces(count);
-    std::vector<int> local(mesh.vertices.size(), -1);
-    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-        const int p = pieceOf[v];
-        if (p < 0)
-            continue;
-        local[v] = pieces[p].mesh.vertexCount();
-        pieces[p].mesh.vertices.push_back(mesh.vertices[v]);
-        pieces[p].box.extend(mesh.vertices[v]);
-    }
-    for (const auto& [a, b, c] : mesh.faces)
-        if (pieceOf[a] >= 0 && pieceOf[a] == pieceOf[b] && pieceOf[a] == pieceOf[c])
-            pieces[pieceOf[a]].mesh.faces.push_back({local[a], local[b], local[c]});
-    for (Piece& piece : pieces) {
-        const std::vector<Vec3>& points = piece.mesh.vertices;
-        if (points.empty())
-            continue;
-        // Eigenvalues come in increasing order: the last vector is the axis.
-        const PrincipalAxes principal = principalAxesOf(points);
-        const auto& solver = principal.scatter;
-        piece.centroid = principal.centroid;
-        piece.axis = solver.eigenvectors().col(2);
-        const double across = std::max(solver.eigenvalues()(1), 0.0);
-        piece.elongation = across > 0.0 ? std::sqrt(solver.eigenvalues()(2) / across)
-                                        : std::numeric_limits<double>::infinity();
-    }
-    return pieces;
-}
-
-// The pieces each joint lies in; for a joint in none (the proxy is
-// fatter than the mesh, and the flow's joints lie in the proxy), the piece
-// of the nearest vertex.
-std::map<JointId, std::set<int>> jointPieces(const Skeleton& skeleton, const TriMesh& mesh,
-                                             const std::vector<int>& pieceOf,
-                                             const std::vector<Piece>& pieces) {
-    std::map<JointId, std::set<int>> inside;
-    for (const Joint& joint : skeleton.joints()) {
-        std::set<int>& in = inside[joint.id];
-        for (int p = 0; p < static_cast<int>(pieces.size()); ++p)
-            if (!pieces[p].mesh.faces.empty() && pieces[p].box.contains(joint.position) &&
-                windingNumber(pieces[p].mesh, joint.position) > kInsideWinding)
-                in.insert(p);
-        if (!in.empty())
-            continue;
-        int nearest = -1;
-        double nearestDistance = std::numeric_limits<double>::infinity();
-        for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-            const double d = (mesh.vertices[v] - joint.position).squaredNorm();
-            if (pieceOf[v] >= 0 && d < nearestDistance) {
-                nearestDistance = d;
-                nearest = pieceOf[v];
-            }
-        }
-        if (nearest >= 0)
-            in.insert(nearest);
-    }
-    return inside;
-}
-
-// The skeleton as a tree hanging from its root.
-struct Tree {
-    std::map<JointId, JointId> parent;  // kNoJoint for the root
-    std::map<JointId, std::vector<JointId>> children;
-    std::vector<JointId> order;  // breadth first from the root
-};
-
-Tree treeOf(const Skeleton& skeleton) {
-    Tree tree;
-    tree.parent[skeleton.root()] = kNoJoint;
-    tree.order.push_back(skeleton.root());
-    for (std::size_t i = 0; i < tree.order.size(); ++i) {
-        const JointId here = tree.order[i];
-        for (BoneId bone : skeleton.bonesAt(here)) {
-            const Bone& b = skeleton.bone(bone);
-            const JointId next = b.head == here ? b.tail : b.head;
-            if (tree.parent.contains(next))
-                continue;
-            tree.parent[next] = here;
-            tree.children[here].push_back(next);
-            tree.order.push_back(next);
-        }
-    }
-    return tree;
-}
-
-std::vector<JointId> childrenOf(const Tree& tree, JointId joint) {
-    const auto found = tree.children.find(joint);
-    return found == tree.children.end() ? std::vector<JointId>{} : found->second;
-}
-
-// `top` and every joint below it.
-std::vector<JointId> subtreeOf(const Tree& tree, JointId top) {
-    std::vector<JointId> joints{top};
-    for (std::size_t i = 0; i < joints.size(); ++i)
-        for (JointId child : childrenOf(tree, joints[i]))
-            joints.push_back(child);
-    return joints;
-}
-
-// From `first` down to the next junction or leaf, both included.
-std::vector<JointId> branchFrom(const Tree& tree, JointId first) {
-    std::vector<JointId> branch{first};
-    for (std::vector<JointId> next = childrenOf(tree, first); next.size() == 1;
-         next = childrenOf(tree, branch.back()))
-        branch.push_back(next.front());
-    return branch;
-}
-
 double reachFrom(const Skeleton& skeleton, const std::vector<JointId>& joints, const Vec3& from) {
     double reach = 0.0;
     for (JointId joint : joints)
         reach = std::max(reach, (skeleton.joint(joint).position - from).norm());
     return reach;
-}
-
-// The piece a branch runs in, outside `armPieces`: the one holding most
-// of its joints, at least half of them; -1 for none.
-int branchPiece(const std::vector<JointId>& branch, const std::map<JointId, std::set<int>>& inside,
-                const std::set<int>& armPieces) {
-    std::map<int, int> counts;
-    for (JointId joint : branch)
-        for (int p : inside.at(joint))
-            if (!armPieces.contains(p))
-                ++counts[p];
-    int best = -1;
-    int most = 0;
-    for (const auto& [p, count] : counts)
-        if (count > most) {
-            best = p;
-            most = count;
-        }
-    return 2 * most >= static_cast<int>(branch.size()) ? best : -1;
 }
 
 struct Grip {
@@ -182,9 +40,8 @@ struct Grip {
 // The first joint in breadth-first order, after `done`, where two
 // branches run into one piece the arriving chain is not in, on either side
 // of the joint along the piece's axis.
-std::optional<Grip> findGrip(const Skeleton& skeleton, const Tree& tree,
-                             const std::vector<Piece>& pieces,
-                             const std::map<JointId, std::set<int>>& inside,
+std::optional<Grip> findGrip(const Skeleton& skeleton, const SkeletonTree& tree,
+                             const std::vector<MeshPiece>& pieces, const JointPieces& inside,
                              const std::set<JointId>& done) {
     for (JointId hand : tree.order) {
         const std::vector<JointId> children = childrenOf(tree, hand);
@@ -214,9 +71,9 @@ std::optional<Grip> findGrip(const Skeleton& skeleton, const Tree& tree,
 
 // The middle of the run of the prop's axis inside the arm's pieces
 // nearest `near`; none when the axis does not pass through them.
-std::optional<Vec3> gripCentre(const std::vector<Piece>& pieces, int prop, const std::set<int>& arm,
-                               const Vec3& near) {
-    const Piece& piece = pieces[prop];
+std::optional<Vec3> gripCentre(const std::vector<MeshPiece>& pieces, int prop,
+                               const std::set<int>& arm, const Vec3& near) {
+    const MeshPiece& piece = pieces[prop];
     double low = std::numeric_limits<double>::infinity();
     double high = -low;
     for (const Vec3& v : piece.mesh.vertices) {
@@ -225,10 +82,8 @@ std::optional<Vec3> gripCentre(const std::vector<Piece>& pieces, int prop, const
     }
     const auto pointAt = [&](double t) { return Vec3(piece.centroid + t * piece.axis); };
     const auto held = [&](double t) {
-        return std::any_of(arm.begin(), arm.end(), [&](int p) {
-            return pieces[p].box.contains(pointAt(t)) &&
-                   windingNumber(pieces[p].mesh, pointAt(t)) > kInsideWinding;
-        });
+        return std::any_of(arm.begin(), arm.end(),
+                           [&](int p) { return liesInPiece(pieces[p], pointAt(t)); });
     };
     const double nearT = (near - piece.centroid).dot(piece.axis);
     std::optional<Vec3> best;
@@ -255,7 +110,7 @@ std::optional<Vec3> gripCentre(const std::vector<Piece>& pieces, int prop, const
 // The skeleton's bones that carry a prop held at `hand`: those of the
 // chain from the root to the hand and those below the hand.
 std::vector<BoneSegment> carryingBones(const Skeleton& skeleton, JointId hand) {
-    const Tree tree = treeOf(skeleton);
+    const SkeletonTree tree = treeOf(skeleton);
     std::set<JointId> carrying;
     for (JointId joint : subtreeOf(tree, hand))
         carrying.insert(joint);
@@ -268,17 +123,6 @@ std::vector<BoneSegment> carryingBones(const Skeleton& skeleton, JointId hand) {
     return bones;
 }
 
-double farthestFrom(const std::vector<Vec3>& points, const std::vector<BoneSegment>& bones) {
-    double farthest = 0.0;
-    for (const Vec3& p : points) {
-        double nearest = std::numeric_limits<double>::infinity();
-        for (const BoneSegment& bone : bones)
-            nearest = std::min(nearest, pointSegmentDistance(p, bone));
-        farthest = std::max(farthest, nearest);
-    }
-    return farthest;
-}
-
 // What a removal may take and must keep covered.
 struct Prop {
     std::set<int> pieces;      // the prop's pieces
@@ -289,9 +133,9 @@ struct Prop {
 // a plain chain from its top until it enters the prop (the stretch in the
 // fist), every joint from there on in the prop's pieces, and when the
 // prop's points stay covered by the bones that carry it.
-bool pruneIfCovered(Skeleton& skeleton, const Tree& tree, const std::vector<JointId>& subtree,
-                    const Prop& prop, const std::map<JointId, std::set<int>>& inside, JointId hand,
-                    double coverage) {
+bool pruneIfCovered(Skeleton& skeleton, const SkeletonTree& tree,
+                    const std::vector<JointId>& subtree, const Prop& prop,
+                    const JointPieces& inside, JointId hand, double coverage) {
     const auto inProp = [&](JointId joint) {
         const std::set<int>& in = inside.at(joint);
         return std::any_of(in.begin(), in.end(), [&](int p) { return prop.pieces.contains(p); });
@@ -322,12 +166,11 @@ HeldPropsReport pruneHeldProps(Skeleton& skeleton, const TriMesh& mesh,
     HeldPropsReport report;
     if (pieces < 2 || skeleton.jointCount() < 4)
         return report;
-    const std::vector<Piece> meshPieces = piecesOf(mesh, pieceOf, pieces);
-    const std::map<JointId, std::set<int>> inside =
-        jointPieces(skeleton, mesh, pieceOf, meshPieces);
+    const std::vector<MeshPiece> meshPieces = meshPiecesOf(mesh, pieceOf, pieces);
+    const JointPieces inside = jointPiecesOf(skeleton, mesh, pieceOf, meshPieces);
     std::set<JointId> done;
     while (true) {
-        const Tree tree = treeOf(skeleton);
+        const SkeletonTree tree = treeOf(skeleton);
         const std::optional<Grip> grip = findGrip(skeleton, tree, meshPieces, inside, done);
         if (!grip)
             break;

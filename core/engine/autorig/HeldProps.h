@@ -19,10 +19,8 @@
 // A grip is a joint where two branches run into the same piece of the mesh
 // that the chain arriving there (the arm) is not in, on opposite sides of
 // the joint along that piece's main axis, the piece long and thin (a
-// handle, a shaft; not a shoe under an ankle or a helmet). Pieces are the
-// mesh's own (faces connected over coincident vertices,
-// autorig/RigSurface); a joint is in a piece when the piece's winding number
-// there is over a half, or, in none, in the piece of its nearest vertex.
+// handle, a shaft; not a shoe under an ankle or a helmet). Pieces and the
+// pieces a joint is in as autorig/SkeletonPieces gives them.
 #pragma once
 
 #include <vector>

@@ -6,34 +6,21 @@
 // lower end and one up to its top.
 #include <gtest/gtest.h>
 
-#include <functional>
-
+#include "PiecewiseMesh.h"
 #include "autorig/HeldProps.h"
 #include "mesh/MeshPrimitives.h"
 
 namespace rigmesh {
 namespace {
 
-struct Figure {
-    TriMesh mesh;
-    std::vector<int> pieceOf;
-    int pieces = 0;
+using autorigtest::addPiece;
+
+struct Figure : autorigtest::PiecewiseMesh {
     Skeleton skeleton;
     JointId hand = kNoJoint;
     JointId staffTop = kNoJoint;
     JointId staffBottom = kNoJoint;
 };
-
-void addPiece(Figure& figure, const TriMesh& piece, const std::function<Vec3(const Vec3&)>& place) {
-    const int offset = figure.mesh.vertexCount();
-    for (const Vec3& v : piece.vertices) {
-        figure.mesh.vertices.push_back(place(v));
-        figure.pieceOf.push_back(figure.pieces);
-    }
-    for (const auto& [a, b, c] : piece.faces)
-        figure.mesh.faces.push_back({a + offset, b + offset, c + offset});
-    ++figure.pieces;
-}
 
 // The arm from x = 0 to 4 (radius 0.5); the staff at x = 3.8 from z =
 // `bottom` to z = 5 (radius 0.1), or in two pieces split at the fist.
