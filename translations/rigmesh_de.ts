@@ -2091,6 +2091,10 @@
         <source>%1 props held in a hand (a handle through the fist) rigged as the arm&apos;s chain on to their far end</source>
         <translation>%1 in einer Hand gehaltene Gegenstände (ein Griff durch die Faust) als Kette des Arms bis zu ihrem fernen Ende geriggt</translation>
     </message>
+    <message>
+        <source>%1 pieces worn at a limb&apos;s end (horns on a helmet, a crest) ride on the limb&apos;s last bone</source>
+        <translation>%1 am Ende einer Gliedmaße getragene Teile (Hörner am Helm, ein Kamm) folgen ihrem letzten Knochen</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>

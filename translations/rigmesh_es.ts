@@ -2091,6 +2091,10 @@
         <source>%1 props held in a hand (a handle through the fist) rigged as the arm&apos;s chain on to their far end</source>
         <translation>%1 objetos sujetos en una mano (un mango a través del puño) riggeados como la cadena del brazo hasta su extremo</translation>
     </message>
+    <message>
+        <source>%1 pieces worn at a limb&apos;s end (horns on a helmet, a crest) ride on the limb&apos;s last bone</source>
+        <translation>%1 piezas llevadas al final de una extremidad (cuernos en un casco, una cresta) siguen su último hueso</translation>
+    </message>
 </context>
 <context>
     <name>ImportPartsCommand</name>

@@ -14,6 +14,7 @@
 #include "autorig/FusedLimbs.h"
 #include "autorig/HeldProps.h"
 #include "autorig/WeightTransfer.h"
+#include "autorig/WornPieces.h"
 #include "base/Error.h"
 #include "part/BoneWeights.h"
 #include "rig/ShortBones.h"
@@ -147,6 +148,7 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
         }));
     FusedLimbsReport fused;
     int propsHeld = 0;
+    int piecesWorn = 0;
     try {
         const CurveSkeleton curve =
             extractCurveSkeleton(surface.mainPiece, stage(progress, kSurfaceDone, kSkeletonDone));
@@ -163,6 +165,12 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
                 pruneHeldProps(result.part.skeleton, part.mesh, surface.pieceOf, surface.pieces,
                                options.bones.coverageFraction * diagonalOf(part.mesh))
                     .propsHeld;
+            // Horns on a helmet, a crest: pieces worn at a limb's end ride
+            // on its last bone, not a leaf each (autorig/WornPieces).
+            piecesWorn =
+                pruneWornPieces(result.part.skeleton, part.mesh, surface.pieceOf, surface.pieces,
+                                options.bones.coverageFraction * diagonalOf(part.mesh))
+                    .branchesPruned;
         }
     } catch (const Error& error) {
         // A blob the flow contracts to a point: a chain along its main axis.
@@ -237,6 +245,8 @@ AutoRigResult autoRigPart(const Part& part, const AutoRigOptions& options,
     notePieces(following, part.name, result.repairs);
     if (propsHeld > 0)
         result.repairs.push_back({MessageId::AutoRigHeldProps, {messageArgument(propsHeld)}});
+    if (piecesWorn > 0)
+        result.repairs.push_back({MessageId::AutoRigWornPieces, {messageArgument(piecesWorn)}});
     result.rigSurface = std::move(surface.mesh);
     result.surfaceKind = surface.kind;
     const std::vector<Message> problems = result.part.validate();

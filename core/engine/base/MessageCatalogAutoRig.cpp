@@ -104,6 +104,11 @@ const char* autoRigMessageTemplate(MessageId id) {
                 "EngineMessage",
                 "%1 props held in a hand (a handle through the fist) rigged as the arm's "
                 "chain on to their far end");
+        case MessageId::AutoRigWornPieces:
+            return RIGMESH_TRANSLATABLE(
+                "EngineMessage",
+                "%1 pieces worn at a limb's end (horns on a helmet, a crest) ride on the limb's "
+                "last bone");
         default:
             return nullptr;
     }

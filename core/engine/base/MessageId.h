@@ -175,6 +175,7 @@ enum class MessageId {
     AutoRigPiecesFollowBone,
     AutoRigMorePiecesFollowBones,
     AutoRigHeldProps,
+    AutoRigWornPieces,
 
     // Documents, parts and commands (model/, model/commands/)
     DocumentNoSuchPart,

@@ -260,6 +260,29 @@ TEST(AutoRigHeldProps, TheResultSaysWhichPropsAreHeld) {
     EXPECT_EQ(heldProps(rigged("MD2/sydney.md2").rigged), 0);
 }
 
+// The dwarf's helmet wears two horns (pieces of their own, z up): the flow
+// forked in the middle of the head into a leaf in each horn, and the head
+// had none. The head now ends in one leaf in its middle, below the horns,
+// which ride on its bone (autorig/WornPieces), and the result says so.
+TEST(AutoRigWornPieces, TheDwarfsHeadEndsInOneLeafAndItsHornsRideOnIt) {
+    const AutoRigResult& result = rigged("COB/dwarf.cob").rigged;
+    const Skeleton& skeleton = result.part.skeleton;
+    std::vector<Vec3> aboveShoulders;
+    for (const Joint& joint : skeleton.joints())
+        if (joint.id != skeleton.root() && skeleton.degree(joint.id) == 1 &&
+            joint.position.z() > 55.0)
+            aboveShoulders.push_back(joint.position);
+    ASSERT_EQ(aboveShoulders.size(), 1u);
+    // The horns leave the helmet at |x| 2 to 12 and reach z = 70.
+    EXPECT_LT(std::abs(aboveShoulders.front().x()), 2.0);
+    EXPECT_LT(aboveShoulders.front().z(), 64.5);
+    std::vector<std::vector<std::string>> notes;
+    for (const Message& note : result.repairs)
+        if (note.id == MessageId::AutoRigWornPieces)
+            notes.push_back(note.args);
+    EXPECT_EQ(notes, (std::vector<std::vector<std::string>>{{"2"}}));
+}
+
 INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
                          ::testing::Values(
                              // arms, legs, head and four wings
@@ -268,10 +291,9 @@ INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
                              Character{"MD2/sydney.md2", 5},
                              // a bull: four legs, tail, head
                              Character{"OBJ/WusonOBJ.obj", 6},
-                             // arms, legs, head; the axe goes with the hand
-                             Character{"COB/dwarf.cob", 5,
-                                       "the helmet's horns are two leaves and the head has "
-                                       "none"},
+                             // arms, legs, head; the axe goes with the hand, the
+                             // helmet's horns with the head
+                             Character{"COB/dwarf.cob", 5},
                              // arms, legs, head
                              Character{"BLEND/HUMAN.blend", 5},
                              // eight legs, the head's and the abdomen's ends
