@@ -19,6 +19,7 @@ for file in "$models/MD2/faerie.md2" "$models/MD2/sydney.md2" "$models/OBJ/Wuson
             "$models/IQM/mrfixit.iqm" "$models/Collada/human.zae" \
             "$models/X/fromtruespace_bin32.x" "$models/ASE/MotionCaptureROM.ase" \
             "$root/tests/data/autorig/suzanne.obj" "$root/tests/data/autorig/primitives.obj" \
+            "$root/tests/data/autorig/horned.obj" \
             "$root/tests/data/autorig/statue.obj" "$root/tests/data/autorig/armed.obj"; do
     # The extension is part of the name: BLEND/HUMAN.blend and
     # Collada/human.zae would otherwise collide where case does not count.

@@ -9,6 +9,8 @@ rigged and writes it as plain OBJ, without a rig:
 - primitives.obj: a figure joined (Ctrl J) from overlapping primitives
   without a boolean: a torso, a head, two arms and two legs, each a closed
   piece, crossing each other where they meet;
+- horned.obj: the primitives' figure whose head wears two horns, cones of
+  their own stuck into it, as a helmet's horns come on a character;
 - statue.obj: a metaball figure (trunk, head, two arms) standing on the
   ground and cut open at the bottom, as a statue made to stand on a plinth;
 - armed.obj: a metaball figure (trunk, head, arms, legs) holding a spear
@@ -105,7 +107,8 @@ def suzanne(out_dir):
     export_obj(bpy.context.active_object, os.path.join(out_dir, "suzanne.obj"))
 
 
-def primitives(out_dir):
+def primitives_figure():
+    """A torso, a head, two arms and two legs, each its own object."""
     bpy.ops.wm.read_factory_settings(use_empty=True)
     bpy.ops.mesh.primitive_uv_sphere_add(radius=0.5, location=(0, 0, 1.2), scale=(1, 0.7, 1.4))
     bpy.ops.mesh.primitive_uv_sphere_add(radius=0.32, location=(0, 0, 2.1))
@@ -114,10 +117,28 @@ def primitives(out_dir):
                                (0.25, 0.05, 0.1, 1.3), (-0.25, 0.05, -0.1, 1.3)]:
         bpy.ops.mesh.primitive_cylinder_add(radius=0.13, depth=depth, location=(x, 0, z),
                                             rotation=(0, angle, 0))
+
+
+def primitives(out_dir):
+    primitives_figure()
     bpy.ops.object.select_all(action="SELECT")
     bpy.context.view_layer.objects.active = bpy.context.selected_objects[0]
     bpy.ops.object.join()
     export_obj(bpy.context.active_object, os.path.join(out_dir, "primitives.obj"))
+
+
+def horned(out_dir):
+    """The primitives' figure whose head wears two horns, cones of their own
+    pointing up and out, stuck into the head without a boolean."""
+    primitives_figure()
+    for side in (1, -1):
+        bpy.ops.mesh.primitive_cone_add(radius1=0.09, depth=0.45,
+                                        location=(side * 0.3, 0, 2.4),
+                                        rotation=(0, side * 0.7, 0))
+    bpy.ops.object.select_all(action="SELECT")
+    bpy.context.view_layer.objects.active = bpy.context.selected_objects[0]
+    bpy.ops.object.join()
+    export_obj(bpy.context.active_object, os.path.join(out_dir, "horned.obj"))
 
 
 def statue(out_dir):
@@ -197,3 +218,4 @@ if __name__ == "__main__":
     primitives(out)
     statue(out)
     armed(out)
+    horned(out)

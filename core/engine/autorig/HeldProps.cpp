@@ -41,7 +41,7 @@ struct Grip {
 // branches run into one piece the arriving chain is not in, on either side
 // of the joint along the piece's axis.
 std::optional<Grip> findGrip(const Skeleton& skeleton, const SkeletonTree& tree,
-                             const std::vector<MeshPiece>& pieces, const JointPieces& inside,
+                             const std::vector<FigurePiece>& pieces, const JointPieces& inside,
                              const std::set<JointId>& done) {
     for (JointId hand : tree.order) {
         const std::vector<JointId> children = childrenOf(tree, hand);
@@ -71,9 +71,9 @@ std::optional<Grip> findGrip(const Skeleton& skeleton, const SkeletonTree& tree,
 
 // The middle of the run of the prop's axis inside the arm's pieces
 // nearest `near`; none when the axis does not pass through them.
-std::optional<Vec3> gripCentre(const std::vector<MeshPiece>& pieces, int prop,
+std::optional<Vec3> gripCentre(const std::vector<FigurePiece>& pieces, int prop,
                                const std::set<int>& arm, const Vec3& near) {
-    const MeshPiece& piece = pieces[prop];
+    const FigurePiece& piece = pieces[prop];
     double low = std::numeric_limits<double>::infinity();
     double high = -low;
     for (const Vec3& v : piece.mesh.vertices) {
@@ -166,7 +166,7 @@ HeldPropsReport pruneHeldProps(Skeleton& skeleton, const TriMesh& mesh,
     HeldPropsReport report;
     if (pieces < 2 || skeleton.jointCount() < 4)
         return report;
-    const std::vector<MeshPiece> meshPieces = meshPiecesOf(mesh, pieceOf, pieces);
+    const std::vector<FigurePiece> meshPieces = figurePiecesOf(mesh, pieceOf, pieces);
     const JointPieces inside = jointPiecesOf(skeleton, mesh, pieceOf, meshPieces);
     std::set<JointId> done;
     while (true) {

@@ -16,9 +16,9 @@ constexpr double kInsideWinding = 0.5;
 
 }  // namespace
 
-std::vector<MeshPiece> meshPiecesOf(const TriMesh& mesh, const std::vector<int>& pieceOf,
-                                    int count) {
-    std::vector<MeshPiece> pieces(count);
+std::vector<FigurePiece> figurePiecesOf(const TriMesh& mesh, const std::vector<int>& pieceOf,
+                                        int count) {
+    std::vector<FigurePiece> pieces(count);
     std::vector<int> local(mesh.vertices.size(), -1);
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
         const int p = pieceOf[v];
@@ -31,7 +31,7 @@ std::vector<MeshPiece> meshPiecesOf(const TriMesh& mesh, const std::vector<int>&
     for (const auto& [a, b, c] : mesh.faces)
         if (pieceOf[a] >= 0 && pieceOf[a] == pieceOf[b] && pieceOf[a] == pieceOf[c])
             pieces[pieceOf[a]].mesh.faces.push_back({local[a], local[b], local[c]});
-    for (MeshPiece& piece : pieces) {
+    for (FigurePiece& piece : pieces) {
         const std::vector<Vec3>& points = piece.mesh.vertices;
         if (points.empty())
             continue;
@@ -47,13 +47,13 @@ std::vector<MeshPiece> meshPiecesOf(const TriMesh& mesh, const std::vector<int>&
     return pieces;
 }
 
-bool liesInPiece(const MeshPiece& piece, const Vec3& point) {
+bool liesInPiece(const FigurePiece& piece, const Vec3& point) {
     return !piece.mesh.faces.empty() && piece.box.contains(point) &&
            windingNumber(piece.mesh, point) > kInsideWinding;
 }
 
 JointPieces jointPiecesOf(const Skeleton& skeleton, const TriMesh& mesh,
-                          const std::vector<int>& pieceOf, const std::vector<MeshPiece>& pieces) {
+                          const std::vector<int>& pieceOf, const std::vector<FigurePiece>& pieces) {
     JointPieces inside;
     for (const Joint& joint : skeleton.joints()) {
         std::set<int>& in = inside[joint.id];

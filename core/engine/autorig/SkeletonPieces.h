@@ -20,7 +20,7 @@
 namespace rigmesh {
 
 // One piece of the mesh, with its own faces and vertices.
-struct MeshPiece {
+struct FigurePiece {
     TriMesh mesh;  // compact: only the piece's vertices
     Eigen::AlignedBox3d box;
     Vec3 centroid = Vec3::Zero();
@@ -32,18 +32,18 @@ struct MeshPiece {
 
 // `pieceOf`: each vertex's piece (-1 for a vertex no face uses), `count`
 // their number.
-std::vector<MeshPiece> meshPiecesOf(const TriMesh& mesh, const std::vector<int>& pieceOf,
-                                    int count);
+std::vector<FigurePiece> figurePiecesOf(const TriMesh& mesh, const std::vector<int>& pieceOf,
+                                        int count);
 
 // Whether `point` lies in `piece`: inside its box, and its winding number
 // there over a half.
-bool liesInPiece(const MeshPiece& piece, const Vec3& point);
+bool liesInPiece(const FigurePiece& piece, const Vec3& point);
 
 // The pieces each joint lies in (never none while the mesh has a vertex in
 // a piece).
 using JointPieces = std::map<JointId, std::set<int>>;
 JointPieces jointPiecesOf(const Skeleton& skeleton, const TriMesh& mesh,
-                          const std::vector<int>& pieceOf, const std::vector<MeshPiece>& pieces);
+                          const std::vector<int>& pieceOf, const std::vector<FigurePiece>& pieces);
 
 // The skeleton as a tree hanging from its root.
 struct SkeletonTree {

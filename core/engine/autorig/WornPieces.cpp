@@ -18,6 +18,10 @@ constexpr double kLargestWornShare = 0.25;
 // distance, the share autorig/BoneCoverage brings a far region to (as
 // autorig/HeldProps asks of a prop).
 constexpr double kCoverageShare = 0.9;
+// At most this many pieces are worn at one limb's end (a pair of horns, a
+// crest and its plume): a hand whose fingers are pieces of their own on a
+// glove's has four or five, and they are limbs.
+constexpr std::size_t kMostWornPieces = 3;
 // Steps along the limb's last bone when finding how far the wearing piece
 // reaches.
 constexpr int kReachSamples = 32;
@@ -69,7 +73,8 @@ std::optional<WornEnd> wornEndAt(const SkeletonTree& tree, JointId joint, const 
                                  const std::vector<double>& areas) {
     const std::vector<JointId> children = childrenOf(tree, joint);
     const std::set<int>& wearing = inside.at(joint);
-    if (children.empty() || tree.parent.at(joint) == kNoJoint || wearing.empty())
+    if (children.empty() || children.size() > kMostWornPieces ||
+        tree.parent.at(joint) == kNoJoint || wearing.empty())
         return std::nullopt;
     // The joint ends its limb in the wearing pieces: of the skeleton, only
     // the chain arriving at it lies in them (a head on a neck; not a back
@@ -112,7 +117,7 @@ std::optional<WornEnd> wornEndAt(const SkeletonTree& tree, JointId joint, const 
 // The farthest point from `from` towards `target` that still lies in one of
 // `wearing` (the crown of a head, towards its horns); `from` itself when
 // the next step leaves them.
-Vec3 reachOfWearer(const std::vector<MeshPiece>& pieces, const std::set<int>& wearing,
+Vec3 reachOfWearer(const std::vector<FigurePiece>& pieces, const std::set<int>& wearing,
                    const Vec3& from, const Vec3& target) {
     Vec3 reach = from;
     for (int i = 1; i <= kReachSamples; ++i) {
@@ -133,9 +138,9 @@ WornPiecesReport pruneWornPieces(Skeleton& skeleton, const TriMesh& mesh,
     WornPiecesReport report;
     if (pieces < 2 || skeleton.jointCount() < 3)
         return report;
-    const std::vector<MeshPiece> meshPieces = meshPiecesOf(mesh, pieceOf, pieces);
+    const std::vector<FigurePiece> meshPieces = figurePiecesOf(mesh, pieceOf, pieces);
     std::vector<double> areas;
-    for (const MeshPiece& piece : meshPieces)
+    for (const FigurePiece& piece : meshPieces)
         areas.push_back(surfaceArea(piece.mesh));
     const JointPieces inside = jointPiecesOf(skeleton, mesh, pieceOf, meshPieces);
     const SkeletonTree tree = treeOf(skeleton);

@@ -283,6 +283,22 @@ TEST(AutoRigWornPieces, TheDwarfsHeadEndsInOneLeafAndItsHornsRideOnIt) {
     EXPECT_EQ(notes, (std::vector<std::vector<std::string>>{{"2"}}));
 }
 
+// The same rule on a figure made in Blender (the primitives' figure, y up
+// in the OBJ, its head a sphere of radius 0.32 about y = 2.1 wearing two
+// cones that point up and out to x = +-0.45, y = 2.57): one leaf in the
+// head, none in a horn.
+TEST(AutoRigWornPieces, TheHornsOfAFigureMadeInBlenderRideOnItsHead) {
+    const AutoRigResult& result = rigged(kBlenderMeshes + "horned.obj").rigged;
+    const Skeleton& skeleton = result.part.skeleton;
+    std::vector<Vec3> inHead;
+    for (const Joint& joint : skeleton.joints())
+        if (joint.id != skeleton.root() && skeleton.degree(joint.id) == 1 &&
+            joint.position.y() > 1.8)
+            inHead.push_back(joint.position);
+    ASSERT_EQ(inHead.size(), 1u);
+    EXPECT_LT((inHead.front() - Vec3(0, 2.1, 0)).norm(), 0.32);
+}
+
 INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AutoRigCharacter,
                          ::testing::Values(
                              // arms, legs, head and four wings
@@ -314,6 +330,8 @@ INSTANTIATE_TEST_SUITE_P(MadeInBlender, AutoRigCharacter,
                              Character{kBlenderMeshes + "suzanne.obj", 3},
                              // arms, legs, head
                              Character{kBlenderMeshes + "primitives.obj", 5},
+                             // arms, legs, head; the horns go with the head
+                             Character{kBlenderMeshes + "horned.obj", 5},
                              // arms, head and the trunk down to the open base
                              Character{kBlenderMeshes + "statue.obj", 4},
                              // arms, legs, head; the spear and the sword go
@@ -378,8 +396,8 @@ std::vector<WrapFineness> coarserAndFinerWraps() {
              "MD2/faerie.md2", "MD2/sydney.md2", "OBJ/WusonOBJ.obj", "COB/dwarf.cob",
              "BLEND/HUMAN.blend", "OBJ/spider.obj", "IQM/mrfixit.iqm", "Collada/human.zae",
              "X/fromtruespace_bin32.x", "ASE/MotionCaptureROM.ase", kBlenderMeshes + "suzanne.obj",
-             kBlenderMeshes + "primitives.obj", kBlenderMeshes + "statue.obj",
-             kBlenderMeshes + "armed.obj"})
+             kBlenderMeshes + "primitives.obj", kBlenderMeshes + "horned.obj",
+             kBlenderMeshes + "statue.obj", kBlenderMeshes + "armed.obj"})
         for (int vertices : {1600, 3600})
             wraps.push_back({file, vertices});
     return wraps;

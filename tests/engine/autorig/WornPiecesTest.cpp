@@ -23,8 +23,8 @@ struct Figure : autorigtest::PiecewiseMesh {
     std::vector<JointId> hornTips;
 };
 
-// A horn of length `length` and radius `radius` from `base` along the unit
-// direction (side, 0, 1) / sqrt(2), side = +-1.
+// A horn of length `length` and radius `radius` leaving the head's top at
+// x = 0.8 side along (side, 0, 1), normalised.
 void addHorn(Figure& figure, double side, double length, double radius) {
     const Vec3 base(side * 0.8, 0, 6.6);
     const Vec3 along = Vec3(side, 0, 1).normalized();
@@ -125,6 +125,19 @@ TEST(WornPieces, PiecesOnAPieceThatHoldsTheRootAreLimbs) {
         pruneWornPieces(skeleton, figure.mesh, figure.pieceOf, figure.pieces, 3.0);
     EXPECT_EQ(report.branchesPruned, 0);
     EXPECT_EQ(leafCount(skeleton), 2);
+}
+
+// Five small pieces at one end (a glove's separate fingers) are limbs: no
+// more than three pieces are worn at one end.
+TEST(WornPieces, FiveSmallPiecesAtOneEndAreFingersNotWorn) {
+    Figure figure = hornedHead(1.6);
+    for (double side : {0.5, -0.5, 0.2})
+        addHorn(figure, side, 1.6, 0.1);
+    ASSERT_EQ(leafCount(figure.skeleton), 5);
+    const WornPiecesReport report =
+        pruneWornPieces(figure.skeleton, figure.mesh, figure.pieceOf, figure.pieces, 3.0);
+    EXPECT_EQ(report.branchesPruned, 0);
+    EXPECT_EQ(leafCount(figure.skeleton), 5);
 }
 
 // A fork into a horn and a branch that stays in the head (an ear, a jaw

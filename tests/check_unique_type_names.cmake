@@ -1,0 +1,35 @@
+# Fails when two headers under SOURCE_DIRS define a class or struct of the
+# same name at namespace scope (column 0, as clang-format places them): the
+# project's types all live in one namespace tree, so two such definitions
+# are one name with two layouts, an ODR violation the linker does not
+# report (two `MeshPiece`s, autorig's and cut/SurfaceSplit.h's, once made
+# the linker keep one vector destructor for both, and a cut crashed).
+set(definitions "")
+set(seen_names "")
+foreach(dir IN LISTS SOURCE_DIRS)
+    file(GLOB_RECURSE headers "${dir}/*.h")
+    foreach(header IN LISTS headers)
+        file(STRINGS "${header}" lines REGEX "^(struct|class) [A-Za-z_][A-Za-z0-9_]* *([{:]|final)")
+        foreach(line IN LISTS lines)
+            string(REGEX REPLACE "^(struct|class) ([A-Za-z_][A-Za-z0-9_]*).*" "\\2" name "${line}")
+            list(APPEND seen_names "${name}")
+            string(MAKE_C_IDENTIFIER "${name}" key)
+            list(APPEND where_${key} "${header}")
+        endforeach()
+    endforeach()
+endforeach()
+list(LENGTH seen_names count)
+set(duplicates "${seen_names}")
+list(REMOVE_DUPLICATES duplicates)
+set(offenders "")
+foreach(name IN LISTS duplicates)
+    string(MAKE_C_IDENTIFIER "${name}" key)
+    list(LENGTH where_${key} times)
+    if(times GREATER 1)
+        list(APPEND offenders "${name} (${where_${key}})")
+    endif()
+endforeach()
+if(offenders)
+    message(FATAL_ERROR "Types defined in more than one header: ${offenders}")
+endif()
+message(STATUS "${count} namespace-scope types in headers: each defined once")
