@@ -18,9 +18,11 @@ constexpr double kLargestWornShare = 0.25;
 // distance, the share autorig/BoneCoverage brings a far region to (as
 // autorig/HeldProps asks of a prop).
 constexpr double kCoverageShare = 0.9;
-// At most this many pieces are worn at one limb's end (a pair of horns, a
-// crest and its plume): a hand whose fingers are pieces of their own on a
-// glove's has four or five, and they are limbs.
+// Pieces are worn in twos or threes at one limb's end (a pair of horns,
+// antennae, a crest between two horns): a single piece at a limb's end
+// (a glove, a shoe) is the limb's own hand or foot, and a hand whose fingers
+// are pieces of their own has four or five; those are limbs.
+constexpr std::size_t kFewestWornPieces = 2;
 constexpr std::size_t kMostWornPieces = 3;
 // Steps along the limb's last bone when finding how far the wearing piece
 // reaches.
@@ -43,10 +45,12 @@ struct WornEnd {
     std::vector<int> worn;          // their pieces
 };
 
-// Whether `joint` lies below `top` in the tree.
+// Whether `joint` lies below `top` in the tree (not for a joint the root
+// does not reach).
 bool isBelow(const SkeletonTree& tree, JointId joint, JointId top) {
-    for (JointId j = tree.parent.at(joint); j != kNoJoint; j = tree.parent.at(j))
-        if (j == top)
+    for (auto up = tree.parent.find(joint); up != tree.parent.end() && up->second != kNoJoint;
+         up = tree.parent.find(up->second))
+        if (up->second == top)
             return true;
     return false;
 }
@@ -73,7 +77,7 @@ std::optional<WornEnd> wornEndAt(const SkeletonTree& tree, JointId joint, const 
                                  const std::vector<double>& areas) {
     const std::vector<JointId> children = childrenOf(tree, joint);
     const std::set<int>& wearing = inside.at(joint);
-    if (children.empty() || children.size() > kMostWornPieces ||
+    if (children.size() < kFewestWornPieces || children.size() > kMostWornPieces ||
         tree.parent.at(joint) == kNoJoint || wearing.empty())
         return std::nullopt;
     // The joint ends its limb in the wearing pieces: of the skeleton, only

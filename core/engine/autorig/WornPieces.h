@@ -9,8 +9,8 @@
 // A worn piece rides on what wears it: at a joint (not the root) where
 // every branch on is a plain chain to a leaf that runs from the joint into
 // a piece of its own (each joint from the one where it enters that piece
-// on lies in it, and no other branch enters it), three at most, the joint
-// lies in pieces
+// on lies in it, and no other branch enters it), two or three of them, the
+// joint lies in pieces
 // none of those is, and each such piece is small beside the piece the
 // joint lies in (its surface a quarter of that one's or less), the
 // branches go and the limb ends in one bone from the joint on towards the
@@ -19,8 +19,8 @@
 // auto-rig's coverage asks (autorig/BoneCoverage): else the skeleton stays
 // as it was. Limbs that are pieces of their own on a body (the spider's
 // legs, arms of crossing primitives) leave from joints the body's chain
-// goes on from, and a hand's separate fingers are four or five: neither is
-// worn.
+// goes on from, a glove or a shoe is one piece at its limb's end, and a
+// hand's separate fingers are four or five: none of them is worn.
 //
 // Pieces and the pieces a joint is in as autorig/SkeletonPieces gives them.
 #pragma once

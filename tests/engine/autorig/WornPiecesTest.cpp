@@ -140,6 +140,26 @@ TEST(WornPieces, FiveSmallPiecesAtOneEndAreFingersNotWorn) {
     EXPECT_EQ(leafCount(figure.skeleton), 5);
 }
 
+// One small piece at a limb's end (a glove, a shoe of its own) is the
+// limb's hand or foot: its bone stays.
+TEST(WornPieces, ASinglePieceAtALimbsEndIsItsOwnHandOrFoot) {
+    Figure figure = hornedHead(1.6);
+    Skeleton& skeleton = figure.skeleton;
+    // The second horn's chain goes: one branch is left, into one piece.
+    const JointId tip = figure.hornTips.back();
+    const Bone& last = skeleton.bone(skeleton.bonesAt(tip).front());
+    const JointId middle = last.head == tip ? last.tail : last.head;
+    skeleton.removeJoint(tip);
+    skeleton.removeJoint(middle);
+    ASSERT_EQ(skeleton.degree(figure.head), 2);
+    const Skeleton before = skeleton;
+    const WornPiecesReport report =
+        pruneWornPieces(skeleton, figure.mesh, figure.pieceOf, figure.pieces, 3.0);
+    EXPECT_EQ(report.branchesPruned, 0);
+    EXPECT_EQ(skeleton.jointCount(), before.jointCount());
+    EXPECT_TRUE(skeleton.hasJoint(figure.hornTips.front()));
+}
+
 // A fork into a horn and a branch that stays in the head (an ear, a jaw
 // of the head's own piece) is no limb end wearing pieces.
 TEST(WornPieces, AForkWithABranchOfTheWearingPieceIsLeftAlone) {
