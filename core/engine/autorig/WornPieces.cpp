@@ -6,6 +6,7 @@
 #include <set>
 
 #include "autorig/SkeletonPieces.h"
+#include "mesh/MeshChecks.h"
 #include "rig/BoneSegments.h"
 
 namespace rigmesh {
@@ -28,32 +29,11 @@ constexpr std::size_t kMostWornPieces = 3;
 // reaches.
 constexpr int kReachSamples = 32;
 
-double surfaceArea(const TriMesh& mesh) {
-    double area = 0.0;
-    for (const auto& [a, b, c] : mesh.faces)
-        area +=
-            0.5 *
-            (mesh.vertices[b] - mesh.vertices[a]).cross(mesh.vertices[c] - mesh.vertices[a]).norm();
-    return area;
-}
-
-// A limb's end wearing pieces: the joint, its branches into them, and the
-// pieces.
+// A limb's end wearing pieces: its branches into them, and the pieces.
 struct WornEnd {
-    JointId joint = kNoJoint;
     std::vector<JointId> branches;  // the joint's children
     std::vector<int> worn;          // their pieces
 };
-
-// Whether `joint` lies below `top` in the tree (not for a joint the root
-// does not reach).
-bool isBelow(const SkeletonTree& tree, JointId joint, JointId top) {
-    for (auto up = tree.parent.find(joint); up != tree.parent.end() && up->second != kNoJoint;
-         up = tree.parent.find(up->second))
-        if (up->second == top)
-            return true;
-    return false;
-}
 
 // Whether the branch from `first` is a plain chain that, from the joint
 // where it enters `piece`, lies in it.
@@ -83,19 +63,19 @@ std::optional<WornEnd> wornEndAt(const SkeletonTree& tree, JointId joint, const 
     // The joint ends its limb in the wearing pieces: of the skeleton, only
     // the chain arriving at it lies in them (a head on a neck; not a back
     // whose spine goes on, nor a body holding the root).
+    const std::vector<JointId> subtree = subtreeOf(tree, joint);
+    const std::set<JointId> below(subtree.begin() + 1, subtree.end());
     std::set<JointId> arriving;
     for (JointId j = tree.parent.at(joint); tree.parent.at(j) != kNoJoint; j = tree.parent.at(j))
         arriving.insert(j);
     for (const auto& [j, pieces] : inside)
-        if (j != joint && !arriving.contains(j) &&
-            std::any_of(wearing.begin(), wearing.end(),
-                        [&](int p) { return pieces.contains(p); }) &&
-            !isBelow(tree, j, joint))
+        if (j != joint && !arriving.contains(j) && !below.contains(j) &&
+            std::any_of(wearing.begin(), wearing.end(), [&](int p) { return pieces.contains(p); }))
             return std::nullopt;
     double wearingArea = 0.0;
     for (int p : wearing)
         wearingArea = std::max(wearingArea, areas[p]);
-    WornEnd end{joint, children, {}};
+    WornEnd end{children, {}};
     for (JointId child : children) {
         const int piece = branchPiece(branchFrom(tree, child), inside, wearing);
         if (piece < 0 || areas[piece] > kLargestWornShare * wearingArea ||
@@ -105,11 +85,6 @@ std::optional<WornEnd> wornEndAt(const SkeletonTree& tree, JointId joint, const 
         end.worn.push_back(piece);
     }
     // No other branch of the skeleton enters a worn piece.
-    const std::set<JointId> own(end.branches.begin(), end.branches.end());
-    std::set<JointId> below;
-    for (JointId child : children)
-        for (JointId j : subtreeOf(tree, child))
-            below.insert(j);
     for (const auto& [j, pieces] : inside)
         if (!below.contains(j))
             for (int p : end.worn)

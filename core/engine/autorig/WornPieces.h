@@ -10,9 +10,9 @@
 // every branch on is a plain chain to a leaf that runs from the joint into
 // a piece of its own (each joint from the one where it enters that piece
 // on lies in it, and no other branch enters it), two or three of them, the
-// joint lies in pieces
-// none of those is, and each such piece is small beside the piece the
-// joint lies in (its surface a quarter of that one's or less), the
+// joint lies in pieces none of those is, only the chain arriving at it lies
+// in them (not the root), and each such piece is small beside the piece
+// the joint lies in (its surface a quarter of that one's or less), the
 // branches go and the limb ends in one bone from the joint on towards the
 // worn pieces, as far as the wearing piece reaches (a head bone up to the
 // crown). Only where the worn pieces' vertices stay as near a bone as the

@@ -236,6 +236,13 @@ void analyseGeometry(const TriMesh& mesh, MeshReport& report) {
 
 }  // namespace
 
+double surfaceArea(const TriMesh& mesh) {
+    double area = 0.0;
+    for (const auto& face : mesh.faces)
+        area += faceArea(mesh, face);
+    return area;
+}
+
 Eigen::AlignedBox3d boundingBox(const TriMesh& mesh) {
     Eigen::AlignedBox3d box;
     for (const Vec3& v : mesh.vertices)

@@ -56,6 +56,9 @@ MeshReport analyseMesh(const TriMesh& mesh, bool checkSelfIntersections = true);
 // Throws as analyseMesh does.
 int countDegenerateFaces(const TriMesh& mesh);
 
+// The sum of the faces' areas (MeshReport::area without the analysis).
+double surfaceArea(const TriMesh& mesh);
+
 // The axis-aligned box around the vertices (empty for no vertices).
 Eigen::AlignedBox3d boundingBox(const TriMesh& mesh);
 

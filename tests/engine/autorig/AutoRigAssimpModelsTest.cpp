@@ -7,6 +7,8 @@
 // character (written beside each).
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <Eigen/Geometry>
 #include <map>
 #include <string>
@@ -260,6 +262,16 @@ TEST(AutoRigHeldProps, TheResultSaysWhichPropsAreHeld) {
     EXPECT_EQ(heldProps(rigged("MD2/sydney.md2").rigged), 0);
 }
 
+// The positions of the leaves (not the root) that `where` holds.
+std::vector<Vec3> leavesWhere(const Skeleton& skeleton,
+                              const std::function<bool(const Vec3&)>& where) {
+    std::vector<Vec3> leaves;
+    for (const Joint& joint : skeleton.joints())
+        if (joint.id != skeleton.root() && skeleton.degree(joint.id) == 1 && where(joint.position))
+            leaves.push_back(joint.position);
+    return leaves;
+}
+
 // The dwarf's helmet wears two horns (pieces of their own, z up): the flow
 // forked in the middle of the head into a leaf in each horn, and the head
 // had none. The head now ends in one leaf in its middle, below the horns,
@@ -267,11 +279,8 @@ TEST(AutoRigHeldProps, TheResultSaysWhichPropsAreHeld) {
 TEST(AutoRigWornPieces, TheDwarfsHeadEndsInOneLeafAndItsHornsRideOnIt) {
     const AutoRigResult& result = rigged("COB/dwarf.cob").rigged;
     const Skeleton& skeleton = result.part.skeleton;
-    std::vector<Vec3> aboveShoulders;
-    for (const Joint& joint : skeleton.joints())
-        if (joint.id != skeleton.root() && skeleton.degree(joint.id) == 1 &&
-            joint.position.z() > 55.0)
-            aboveShoulders.push_back(joint.position);
+    const std::vector<Vec3> aboveShoulders =
+        leavesWhere(skeleton, [](const Vec3& p) { return p.z() > 55.0; });
     ASSERT_EQ(aboveShoulders.size(), 1u);
     // The horns leave the helmet at |x| 2 to 12 and reach z = 70.
     EXPECT_LT(std::abs(aboveShoulders.front().x()), 2.0);
@@ -290,11 +299,8 @@ TEST(AutoRigWornPieces, TheDwarfsHeadEndsInOneLeafAndItsHornsRideOnIt) {
 TEST(AutoRigWornPieces, TheHornsOfAFigureMadeInBlenderRideOnItsHead) {
     const AutoRigResult& result = rigged(kBlenderMeshes + "horned.obj").rigged;
     const Skeleton& skeleton = result.part.skeleton;
-    std::vector<Vec3> inHead;
-    for (const Joint& joint : skeleton.joints())
-        if (joint.id != skeleton.root() && skeleton.degree(joint.id) == 1 &&
-            joint.position.y() > 1.8)
-            inHead.push_back(joint.position);
+    const std::vector<Vec3> inHead =
+        leavesWhere(skeleton, [](const Vec3& p) { return p.y() > 1.8; });
     ASSERT_EQ(inHead.size(), 1u);
     EXPECT_LT((inHead.front() - Vec3(0, 2.1, 0)).norm(), 0.32);
 }

@@ -21,6 +21,7 @@
 #include <string>
 
 #include "SurfaceTestSupport.h"
+#include "mesh/MeshChecks.h"
 #include "mesh/SurfaceQuality.h"
 
 namespace rigmesh {
@@ -72,15 +73,6 @@ int smallestRing(const SketchToSurfaceResult& result) {
     const std::vector<int> sizes = surfacetest::ringSizes(result);
     return sizes.empty() ? std::numeric_limits<int>::max()
                          : *std::min_element(sizes.begin(), sizes.end());
-}
-
-double surfaceArea(const TriMesh& mesh) {
-    double area = 0;
-    for (const auto& f : mesh.faces)
-        area += 0.5 * (mesh.vertices[f[1]] - mesh.vertices[f[0]])
-                          .cross(mesh.vertices[f[2]] - mesh.vertices[f[0]])
-                          .norm();
-    return area;
 }
 
 // The surface area each cross section's strip stands for, over its local
